@@ -1,0 +1,21 @@
+#pragma once
+// Subcommand registry: each subcommand lives in its own file and registers a CLI11
+// subcommand plus the function that runs it.
+#include <functional>
+
+#include <CLI/CLI.hpp>
+
+namespace linkage::cli {
+
+/// Adds every subcommand to `app`.
+void register_commands(CLI::App& app);
+/// Runs the subcommand the user chose (after parsing).
+void run_selected(const CLI::App& app);
+
+/// Called by each subcommand's register function.
+void add_runner(CLI::App* subcommand, std::function<void()> run);
+
+// One register function per subcommand file.
+void register_solve(CLI::App& app);
+
+}  // namespace linkage::cli

@@ -1,0 +1,52 @@
+#include "cli/input_options.hpp"
+
+#include <charconv>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "core/number_format.hpp"
+
+namespace linkage::cli {
+
+void add_input_options(CLI::App* sub, InputOptions& options) {
+  sub->add_option("--config", options.config,
+                  "TOML file of inputs (keys: " + input_key_list() + "); flags override it")
+      ->type_name("FILE")
+      ->group("Inputs");
+  const Inputs defaults;
+  for (std::size_t i = 0; i < kInputKeys.size(); ++i) {
+    const InputKey& key = kInputKeys[i];
+    const std::string help = std::string(key.description) + ", " + std::string(key.unit) +
+                             " (default " + format_roundtrip(defaults.value(key)) + ")";
+    options.options[i] = sub->add_option(std::string(key.flag), options.values[i], help)
+                             ->type_name("NUM")
+                             ->group("Inputs");
+  }
+}
+
+double parse_number(const std::string& text, const std::string& origin, const std::string& unit) {
+  double value = 0;
+  const char* first = text.data();
+  const char* last = text.data() + text.size();
+  if (!text.empty() && *first == '+') ++first;
+  const auto [ptr, ec] = std::from_chars(first, last, value);
+  if (text.empty() || ec != std::errc() || ptr != last)
+    throw Error::input(origin + ": '" + text + "' is not a number" + (unit.empty() ? "" : " (" + unit + ")"));
+  if (!std::isfinite(value)) throw Error::input(origin + ": '" + text + "' is not a finite number");
+  return value;
+}
+
+Inputs resolve_inputs(const InputOptions& options) {
+  Inputs inputs;
+  if (!options.config.empty()) inputs.apply_file(options.config);
+  for (std::size_t i = 0; i < kInputKeys.size(); ++i) {
+    if (options.options[i] == nullptr || options.options[i]->count() == 0) continue;
+    const InputKey& key = kInputKeys[i];
+    const std::string flag(key.flag);
+    inputs.set(key, parse_number(options.values[i], flag, std::string(key.unit)), flag);
+  }
+  inputs.validate();
+  return inputs;
+}
+
+}  // namespace linkage::cli

@@ -1,0 +1,28 @@
+#pragma once
+// The parameter and state options shared by solve, simulate and render: one flag per
+// symbol (--L ... --theta2-dot) and --config FILE; flags override the file.
+#include <array>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "model/inputs.hpp"
+
+namespace linkage::cli {
+
+struct InputOptions {
+  std::string config;
+  std::array<std::string, kInputKeys.size()> values;  // as typed, parsed after CLI11
+  std::array<CLI::Option*, kInputKeys.size()> options{};
+};
+
+/// Adds --config and the thirteen symbol flags to `sub`, in an "Inputs" group.
+void add_input_options(CLI::App* sub, InputOptions& options);
+/// The defaults (the spec's example), overridden by --config, then by the flags;
+/// validated. Throws Error::input naming the bad flag or file:line:column.
+[[nodiscard]] Inputs resolve_inputs(const InputOptions& options);
+
+/// Parses a whole-string finite double, or throws Error::input naming `origin`.
+[[nodiscard]] double parse_number(const std::string& text, const std::string& origin, const std::string& unit);
+
+}  // namespace linkage::cli

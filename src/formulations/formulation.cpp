@@ -1,0 +1,82 @@
+#include "formulations/formulation.hpp"
+
+#include <Eigen/SVD>
+
+#include "core/error.hpp"
+#include "core/number_format.hpp"
+#include "formulations/case1.hpp"
+#include "formulations/case2.hpp"
+#include "formulations/case3.hpp"
+#include "formulations/linear_solve.hpp"
+
+namespace linkage {
+namespace {
+
+template <class Case>
+CaseSolution solve_typed(const Params& p, const State& s) {
+  const expr::Env env = make_env(p, s.theta1, s.theta2, s.theta1_dot, s.theta2_dot);
+  const LinearSystem<Case> system = assemble<Case>(env);
+  CaseSolution out;
+  out.id = Case::id;
+  out.title = Case::title;
+  out.unknowns.assign(Case::unknowns.begin(), Case::unknowns.end());
+  out.equations.assign(Case::equations.begin(), Case::equations.end());
+  out.A = system.A;
+  out.B = system.B;
+
+  const Eigen::JacobiSVD<Mat<Case::size>> svd(system.A);
+  const auto& sigma = svd.singularValues();
+  out.condition_number = sigma[Case::size - 1] > 0 ? sigma[0] / sigma[Case::size - 1]
+                                                   : std::numeric_limits<double>::infinity();
+  Vec<Case::size> q;
+  if (!solve_blocks<Case>(system.A, system.B, q) || !(out.condition_number < 1e15))
+    throw Error::diverged("the Case " + std::to_string(Case::id) + " matrix is singular to working precision (condition number " +
+                          format_significant(out.condition_number, 3) + ") at theta1 = " + format_roundtrip(s.theta1) +
+                          ", theta2 = " + format_roundtrip(s.theta2) + "; check m, w and L");
+  out.solution = q;
+  out.residual = (system.A * q - system.B).norm();
+  return out;
+}
+
+template <class Case>
+SymbolicSystem symbolic_typed(expr::Style style) {
+  SymbolicSystem out;
+  out.A = decltype(Case::A)::print(style);
+  for (auto& row : decltype(Case::B)::print(style)) out.B.push_back(row.front());
+  return out;
+}
+
+}  // namespace
+
+CaseSolution solve_case(int id, const Params& p, const State& s) {
+  switch (id) {
+    case 1: return solve_typed<Case1>(p, s);
+    case 2: return solve_typed<Case2>(p, s);
+    case 3: return solve_typed<Case3>(p, s);
+    default: throw Error::input("case " + std::to_string(id) + " does not exist; valid cases: 1, 2, 3");
+  }
+}
+
+SymbolicSystem symbolic_system(int id, expr::Style style) {
+  switch (id) {
+    case 1: return symbolic_typed<Case1>(style);
+    case 2: return symbolic_typed<Case2>(style);
+    case 3: return symbolic_typed<Case3>(style);
+    default: throw Error::input("case " + std::to_string(id) + " does not exist; valid cases: 1, 2, 3");
+  }
+}
+
+double solution_value(const CaseSolution& solution, Unknown u, const Params& p) {
+  for (std::size_t i = 0; i < solution.unknowns.size(); ++i)
+    if (solution.unknowns[i] == u) return solution.solution[static_cast<Eigen::Index>(i)];
+  auto get = [&](Unknown v) { return solution_value(solution, v, p); };
+  switch (u) {
+    case Unknown::F_x: return p.m * get(Unknown::x1_ddot);           // (1.2)
+    case Unknown::F_y: return p.m * (get(Unknown::y1_ddot) + p.g);   // (2.2)
+    case Unknown::x2_ddot: return -get(Unknown::F_x) / p.m;          // (4.1)
+    case Unknown::y2_ddot: return -p.g - get(Unknown::F_y) / p.m;    // (5.1)
+    default: throw Error::failure("unknown missing from a case's solution");
+  }
+}
+
+}  // namespace linkage

@@ -1,0 +1,143 @@
+#include "model/inputs.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <vector>
+
+#include "core/error.hpp"
+#include "core/number_format.hpp"
+#include "model/inputs_toml.hpp"
+
+namespace linkage {
+
+const InputKey* find_input_key(std::string_view key) {
+  for (const auto& k : kInputKeys)
+    if (k.key == key) return &k;
+  return nullptr;
+}
+
+std::string input_key_list() {
+  std::string list;
+  for (const auto& k : kInputKeys) {
+    if (!list.empty()) list += ", ";
+    list += k.key;
+  }
+  return list;
+}
+
+namespace {
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      const bool same = std::tolower(static_cast<unsigned char>(a[i - 1])) == std::tolower(static_cast<unsigned char>(b[j - 1]));
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (same ? 0 : 1)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+std::string toml_type_name(const toml::node& node) {
+  std::ostringstream name;
+  name << node.type();
+  return "a " + name.str();
+}
+
+std::size_t index_of(const InputKey& key) { return static_cast<std::size_t>(&key - kInputKeys.data()); }
+}  // namespace
+
+std::optional<std::string_view> closest_input_key(std::string_view key) {
+  std::optional<std::string_view> best;
+  std::size_t best_distance = std::max<std::size_t>(2, key.size() / 3) + 1;
+  for (const auto& k : kInputKeys) {
+    const std::size_t d = edit_distance(key, k.key);
+    if (d < best_distance) {
+      best_distance = d;
+      best = k.key;
+    }
+  }
+  return best;
+}
+
+std::string source_position(const std::string& file, long line, long column) {
+  return file + ":" + std::to_string(line) + ":" + std::to_string(column);
+}
+
+Inputs::Inputs() { origins_.fill("default"); }
+
+double Inputs::value(const InputKey& key) const {
+  return key.param != nullptr ? params_.*key.param : state_.*key.state;
+}
+
+const std::string& Inputs::origin(const InputKey& key) const { return origins_[index_of(key)]; }
+
+void Inputs::set(const InputKey& key, double value, std::string origin) {
+  if (!std::isfinite(value))
+    throw Error::input(origin + ": " + std::string(key.key) + " = " + format_roundtrip(value) +
+                       " is not a finite number");
+  if (key.param != nullptr)
+    params_.*key.param = value;
+  else
+    state_.*key.state = value;
+  origins_[index_of(key)] = std::move(origin);
+}
+
+void Inputs::validate() const {
+  auto fail = [&](const char* key, const std::string& rule) {
+    const InputKey& k = *find_input_key(key);
+    throw Error::input(origin(k) + ": " + std::string(k.key) + " = " + format_roundtrip(value(k)) + " " + std::string(k.unit) +
+                       " is out of range; " + rule);
+  };
+  if (!(params_.L > 0)) fail("L", "the block length must be > 0");
+  if (!(params_.w > 0)) fail("w", "the block width must be > 0");
+  if (!(params_.m > 0)) fail("m", "the mass must be > 0");
+  if (!(params_.g >= 0)) fail("g", "g must be >= 0 (gravity points along -y)");
+  if (!(params_.b >= 0 && params_.b <= params_.L))
+    fail("b", "b must lie in [0, L] = [0, " + format_roundtrip(params_.L) + "] m");
+}
+
+void Inputs::apply_file(const std::filesystem::path& path) {
+  const toml::table table = parse_toml_file(path.string(), "--config");
+  apply_toml(*this, table, path.string());
+}
+
+void apply_toml(Inputs& inputs, const toml::table& table, const std::string& file) {
+  for (const auto& [name, node] : table) {
+    const auto& where = node.source().begin;
+    const std::string position = source_position(file, where.line, where.column);
+    const InputKey* key = find_input_key(name.str());
+    if (key == nullptr) {
+      std::string message = position + ": unknown key '" + std::string(name.str()) + "'";
+      if (auto close = closest_input_key(name.str())) message += " (did you mean '" + std::string(*close) + "'?)";
+      throw Error::input(message + "; valid keys: " + input_key_list());
+    }
+    std::optional<double> number;
+    if (const auto* f = node.as_floating_point()) number = f->get();
+    if (const auto* i = node.as_integer()) number = static_cast<double>(i->get());
+    if (!number)
+      throw Error::input(position + ": " + std::string(key->key) + " must be a number in " + std::string(key->unit) +
+                         ", got " + toml_type_name(node));
+    inputs.set(*key, *number, position);
+  }
+}
+
+toml::table parse_toml_file(const std::string& path, const std::string& origin) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw Error::input(origin + ": file '" + path + "' does not exist");
+  if (std::filesystem::is_directory(path, ec)) throw Error::input(origin + ": '" + path + "' is a folder, not a file");
+  try {
+    return toml::parse_file(path);
+  } catch (const toml::parse_error& e) {
+    const auto& where = e.source().begin;
+    if (where.line == 0) throw Error::input(origin + ": cannot read '" + path + "': " + std::string(e.description()));
+    throw Error::input(source_position(path, where.line, where.column) + ": " + std::string(e.description()));
+  }
+}
+
+}  // namespace linkage

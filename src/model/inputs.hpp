@@ -1,0 +1,76 @@
+#pragma once
+// The thirteen inputs of the linkage (five parameters, eight state values), where each
+// came from, and their validation. One table drives the CLI flags, the TOML keys, the
+// lesson `set` step and the error messages, so they cannot disagree.
+#include <array>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "model/params.hpp"
+#include "model/state.hpp"
+
+namespace linkage {
+
+struct InputKey {
+  std::string_view key;          // TOML key and JSON name, e.g. "theta1_dot"
+  std::string_view flag;         // CLI flag, e.g. "--theta1-dot"
+  std::string_view unit;         // e.g. "rad/s"
+  std::string_view description;  // e.g. "angular velocity of block 1"
+  double Params::*param = nullptr;
+  double State::*state = nullptr;
+};
+
+inline constexpr std::array<InputKey, 13> kInputKeys{{
+    {"L", "--L", "m", "block length", &Params::L, nullptr},
+    {"w", "--w", "m", "block width", &Params::w, nullptr},
+    {"b", "--b", "m", "pin distance from one end of each block, in [0, L]", &Params::b, nullptr},
+    {"m", "--m", "kg", "mass of each block", &Params::m, nullptr},
+    {"g", "--g", "m/s^2", "gravitational acceleration along -y", &Params::g, nullptr},
+    {"x1", "--x1", "m", "x of block 1's centre of mass", nullptr, &State::x1},
+    {"y1", "--y1", "m", "y of block 1's centre of mass", nullptr, &State::y1},
+    {"theta1", "--theta1", "rad", "angle of block 1 from +x", nullptr, &State::theta1},
+    {"theta2", "--theta2", "rad", "angle of block 2 from +x", nullptr, &State::theta2},
+    {"x1_dot", "--x1-dot", "m/s", "x velocity of block 1's centre of mass", nullptr, &State::x1_dot},
+    {"y1_dot", "--y1-dot", "m/s", "y velocity of block 1's centre of mass", nullptr, &State::y1_dot},
+    {"theta1_dot", "--theta1-dot", "rad/s", "angular velocity of block 1", nullptr, &State::theta1_dot},
+    {"theta2_dot", "--theta2-dot", "rad/s", "angular velocity of block 2", nullptr, &State::theta2_dot},
+}};
+
+/// The input named `key` (TOML spelling), or nullptr.
+[[nodiscard]] const InputKey* find_input_key(std::string_view key);
+/// "L, w, b, m, g, x1, ..." for error messages.
+[[nodiscard]] std::string input_key_list();
+/// The valid key closest to a misspelt one (edit distance), if any is close.
+[[nodiscard]] std::optional<std::string_view> closest_input_key(std::string_view key);
+
+/// Parameters and state together with where each value came from ("default", "--m",
+/// "run.toml:3:5"), so errors can name the source.
+class Inputs {
+ public:
+  Inputs();
+  [[nodiscard]] const Params& params() const { return params_; }
+  [[nodiscard]] const State& state() const { return state_; }
+  [[nodiscard]] double value(const InputKey& key) const;
+  [[nodiscard]] const std::string& origin(const InputKey& key) const;
+
+  /// Sets one value; throws Error::input if it is not finite.
+  void set(const InputKey& key, double value, std::string origin);
+  /// Loads a TOML config file of inputs.
+  void apply_file(const std::filesystem::path& path);
+
+  /// Checks the ranges (m > 0, L > 0, w > 0, 0 <= b <= L, 0 <= g finite); throws
+  /// Error::input naming the first bad value, its origin and the valid range.
+  void validate() const;
+
+ private:
+  Params params_;
+  State state_;
+  std::array<std::string, kInputKeys.size()> origins_;
+};
+
+/// "file:line:column" for a source position.
+[[nodiscard]] std::string source_position(const std::string& file, long line, long column);
+
+}  // namespace linkage

@@ -1,0 +1,20 @@
+#pragma once
+// Inputs from a parsed TOML table: a --config file, or a lesson's parameter table.
+#include <string>
+
+#include <toml++/toml.h>
+
+#include "model/inputs.hpp"
+
+namespace linkage {
+
+/// Applies every key of `table`; an unknown key (with the closest valid one), a value
+/// that is not a number, or a non-finite number is an Error::input naming
+/// file:line:column.
+void apply_toml(Inputs& inputs, const toml::table& table, const std::string& file);
+
+/// Parses a TOML file, turning a syntax error into Error::input with file:line:column
+/// and an unreadable file into Error::input naming `origin`.
+[[nodiscard]] toml::table parse_toml_file(const std::string& path, const std::string& origin);
+
+}  // namespace linkage
