@@ -16,6 +16,8 @@ std::string format_roundtrip(double value) {
 
 std::string format_significant(double value, int digits) {
   if (value == 0.0) return "0";  // also folds -0 to 0
+  if (std::isnan(value)) return "nan";
+  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
   std::array<char, 64> buffer{};
   const double magnitude = std::fabs(value);
   // Plain decimals between 1e-4 and 1e6 read best; outside that, scientific.

@@ -113,7 +113,8 @@ void apply_toml(Inputs& inputs, const toml::table& table, const std::string& fil
     const std::string position = source_position(file, where.line, where.column);
     const InputKey* key = find_input_key(name.str());
     if (key == nullptr) {
-      std::string message = position + ": unknown key '" + std::string(name.str()) + "'";
+      const auto& key_where = name.source().begin;
+      std::string message = source_position(file, key_where.line, key_where.column) + ": unknown key '" + std::string(name.str()) + "'";
       if (auto close = closest_input_key(name.str())) message += " (did you mean '" + std::string(*close) + "'?)";
       throw Error::input(message + "; valid keys: " + input_key_list());
     }
