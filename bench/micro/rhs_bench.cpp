@@ -1,0 +1,112 @@
+// Right-hand-side micro-benchmarks: one evaluation of y' = f(y) per case, and the
+// Case 3 4x4 solve alone, ours (Schur on the block layout) against a generic
+// fixed-size partial-pivot LU. States cycle through a table of random ones so the
+// compiler cannot hoist anything out of the loop.
+#include <benchmark/benchmark.h>
+
+#include <array>
+#include <random>
+
+#include "bench/rhs.hpp"
+#include "formulations/case1.hpp"
+#include "formulations/case2.hpp"
+#include "formulations/case3.hpp"
+#include "formulations/case3_fast.hpp"
+
+namespace linkage::bench {
+namespace {
+
+constexpr std::size_t kStates = 64;
+
+template <int N>
+std::array<Vec<N>, kStates> random_states() {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-3.0, 3.0);
+  std::array<Vec<N>, kStates> out;
+  for (auto& y : out)
+    for (int i = 0; i < N; ++i) y[i] = u(rng);
+  return out;
+}
+
+template <class Case>
+void BM_Rhs(benchmark::State& state) {
+  const Params p;
+  const auto ys = random_states<state_size<Case>>();
+  Vec<state_size<Case>> dy;
+  std::size_t k = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(formulation_rhs<Case>(p, ys[k], dy));
+    benchmark::DoNotOptimize(dy);
+    k = (k + 1) % kStates;
+  }
+}
+BENCHMARK(BM_Rhs<Case1>)->Name("rhs/case1");
+BENCHMARK(BM_Rhs<Case2>)->Name("rhs/case2");
+BENCHMARK(BM_Rhs<Case3>)->Name("rhs/case3");
+
+void BM_RhsCase3UserLu(benchmark::State& state) {
+  const UserConstants c{Params{}};
+  const auto ys = random_states<8>();
+  Vec<8> dy;
+  std::size_t k = 0;
+  for (auto _ : state) {
+    user_case3_rhs(c, ys[k].data(), dy.data());
+    benchmark::DoNotOptimize(dy);
+    k = (k + 1) % kStates;
+  }
+}
+BENCHMARK(BM_RhsCase3UserLu)->Name("rhs/case3_user_partial_piv_lu");
+
+template <class T>
+void BM_RhsCase3Fast(benchmark::State& state) {
+  const Case3Fast<T> f{Params{}};
+  const auto ys = random_states<8>();
+  std::array<Eigen::Matrix<T, 8, 1>, kStates> yt;
+  for (std::size_t i = 0; i < kStates; ++i) yt[i] = ys[i].cast<T>();
+  Eigen::Matrix<T, 8, 1> dy;
+  std::size_t k = 0;
+  for (auto _ : state) {
+    f.rhs(yt[k], dy);
+    benchmark::DoNotOptimize(dy);
+    k = (k + 1) % kStates;
+  }
+}
+BENCHMARK(BM_RhsCase3Fast<double>)->Name("rhs/case3_fast");
+BENCHMARK(BM_RhsCase3Fast<long double>)->Name("rhs/case3_fast_long_double");
+
+// The solve alone, on matrices assembled beforehand.
+std::array<LinearSystem<Case3>, kStates> case3_systems() {
+  const auto ys = random_states<8>();
+  std::array<LinearSystem<Case3>, kStates> out;
+  for (std::size_t i = 0; i < kStates; ++i)
+    out[i] = assemble<Case3>(make_env(Params{}, ys[i][2], ys[i][3], ys[i][6], ys[i][7]));
+  return out;
+}
+
+void BM_SolveCase3Blocks(benchmark::State& state) {
+  const auto systems = case3_systems();
+  Vec<4> q;
+  std::size_t k = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(solve_blocks<Case3>(systems[k].A, systems[k].B, q));
+    benchmark::DoNotOptimize(q);
+    k = (k + 1) % kStates;
+  }
+}
+BENCHMARK(BM_SolveCase3Blocks)->Name("solve/case3_blocks");
+
+void BM_SolveCase3PartialPivLu(benchmark::State& state) {
+  const auto systems = case3_systems();
+  Eigen::Vector4d q;
+  std::size_t k = 0;
+  for (auto _ : state) {
+    const Eigen::Matrix4d A = systems[k].A;
+    q = A.partialPivLu().solve(systems[k].B);
+    benchmark::DoNotOptimize(q);
+    k = (k + 1) % kStates;
+  }
+}
+BENCHMARK(BM_SolveCase3PartialPivLu)->Name("solve/case3_partial_piv_lu");
+
+}  // namespace
+}  // namespace linkage::bench
