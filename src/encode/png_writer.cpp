@@ -1,6 +1,7 @@
 #include "encode/png_writer.hpp"
 
 #include <spng.h>
+#include <zlib.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -100,7 +101,8 @@ void encode_png_file(const std::uint8_t* image, int width, int height, const Png
     header.color_type = options.alpha ? SPNG_COLOR_TYPE_TRUECOLOR_ALPHA : SPNG_COLOR_TYPE_TRUECOLOR;
     check_spng(spng_set_ihdr(context.get(), &header), "header", path);
     check_spng(spng_set_option(context.get(), SPNG_IMG_COMPRESSION_LEVEL, options.compression_level), "level", path);
-    check_spng(spng_set_option(context.get(), SPNG_FILTER_CHOICE, SPNG_FILTER_CHOICE_SUB), "filter", path);
+    check_spng(spng_set_option(context.get(), SPNG_IMG_COMPRESSION_STRATEGY, Z_DEFAULT_STRATEGY), "strategy", path);
+    check_spng(spng_set_option(context.get(), SPNG_FILTER_CHOICE, SPNG_FILTER_CHOICE_NONE), "filter", path);
     check_spng(spng_encode_image(context.get(), image, image_bytes(width, height, options), SPNG_FMT_PNG,
                                  SPNG_ENCODE_FINALIZE),
                "encode", path);

@@ -1,8 +1,10 @@
 #pragma once
-// PNG files from Frames through libspng, tuned for speed: zlib level 1 and the "sub"
-// filter (rendered frames are mostly flat colour, which both compress well), 8-bit
-// RGB (or RGBA with alpha un-premultiplied). No dates or text chunks: identical frames
-// give identical bytes.
+// PNG files from Frames through libspng, tuned for speed: zlib level 1 and no row
+// filter, 8-bit RGB (or RGBA with alpha un-premultiplied). Rendered frames are mostly
+// flat colour, which deflate's fast matcher handles without filtering; on a 1280x720
+// Cairo frame, filter "none" took 11 ms (39 KB), "sub" and "up" 21-26 ms (44 / 19 KB),
+// Cairo's own writer 75 ms (9 KB). No dates or text chunks: identical frames give
+// identical bytes.
 //
 // A numbered sequence (frame_00000.png, frame_00001.png, ...) is compressed by a small
 // pool of worker threads. Its files are written into a hidden staging folder inside

@@ -3,7 +3,8 @@
 // Cairo's premultiplied B,G,R,A pixels (opaque) into yuv420p (BT.709, limited range),
 // libavcodec encodes H.264 (libx264, or another H.264 encoder, or MPEG-4 part 2 as a
 // last resort) and libavformat writes an MP4 with the index (moov) before the media
-// (mdat), so a browser starts playing before the whole file has arrived.
+// (mdat), so a browser starts playing before the whole file has arrived. Frames
+// should be opaque: alpha is ignored, so a translucent pixel shows its colour over black.
 //
 // Frame k is shown at k / fps seconds for 1 / fps seconds; n frames last exactly
 // n / fps seconds. The same frames give byte-identical files: fixed encoder thread

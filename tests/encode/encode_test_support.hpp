@@ -2,6 +2,7 @@
 // Test helpers for the encoders: synthetic frames, an MP4 decoded back through
 // libavformat/libavcodec (independent of the writer's code path), PNG decoding with
 // libspng, and the MP4's top-level atoms.
+#include <gtest/gtest.h>
 #include <spng.h>
 
 #include <algorithm>
@@ -16,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "core/error.hpp"
 #include "core/frame.hpp"
 #include "encode/av_support.hpp"
 
@@ -25,21 +27,12 @@ struct Rgb {
   int r = 0, g = 0, b = 0;
 };
 
-/// Fills `frame` with an opaque colour.
-inline void fill(Frame& frame, Rgb colour) {
+/// Paints an opaque w x h rectangle with top-left corner (x0, y0).
+inline void rect(Frame& frame, int x0, int y0, int w, int h, Rgb colour) {
   const std::uint32_t word = 0xff000000U | static_cast<std::uint32_t>(colour.r) << 16 |
                              static_cast<std::uint32_t>(colour.g) << 8 | static_cast<std::uint32_t>(colour.b);
-  for (int y = 0; y < frame.height; ++y)
-    for (int x = 0; x < frame.width; ++x)
-      std::memcpy(frame.pixels.data() + static_cast<std::ptrdiff_t>(y) * frame.stride + 4 * x, &word, 4);
-}
-
-/// Paints an opaque square of `side` pixels with top-left corner (x0, y0).
-inline void square(Frame& frame, int x0, int y0, int side, Rgb colour) {
-  const std::uint32_t word = 0xff000000U | static_cast<std::uint32_t>(colour.r) << 16 |
-                             static_cast<std::uint32_t>(colour.g) << 8 | static_cast<std::uint32_t>(colour.b);
-  for (int y = y0; y < y0 + side; ++y)
-    for (int x = x0; x < x0 + side; ++x)
+  for (int y = y0; y < y0 + h; ++y)
+    for (int x = x0; x < x0 + w; ++x)
       std::memcpy(frame.pixels.data() + static_cast<std::ptrdiff_t>(y) * frame.stride + 4 * x, &word, 4);
 }
 
@@ -50,8 +43,20 @@ inline constexpr int square_side = 16;
 /// Frame k of a test clip: a blue background with a yellow square moving right by 2
 /// pixels a frame (even positions, so chroma blocks are not split).
 inline void draw_test_frame(Frame& frame, int k) {
-  fill(frame, background);
-  square(frame, (2 * k) % (frame.width - square_side), 8, square_side, square_colour);
+  rect(frame, 0, 0, frame.width, frame.height, background);
+  rect(frame, (2 * k) % (frame.width - square_side), 8, square_side, square_side, square_colour);
+}
+
+/// Expects `call()` to throw linkage::Error with `code` and a message containing `text`.
+template <typename Call>
+void expect_error(Call call, ExitCode code, const std::string& text) {
+  try {
+    call();
+    ADD_FAILURE() << "expected an error containing '" << text << "'";
+  } catch (const Error& error) {
+    EXPECT_EQ(error.code(), code) << error.what();
+    EXPECT_NE(std::string(error.what()).find(text), std::string::npos) << error.what();
+  }
 }
 
 /// An MP4 read back through libavformat and libavcodec.

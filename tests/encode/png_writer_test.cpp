@@ -12,6 +12,7 @@
 
 namespace linkage {
 namespace {
+using test::expect_error;
 using test::TempDir;
 
 constexpr int width = 64, height = 48;
@@ -45,17 +46,6 @@ void expect_same_pixels(const test::DecodedPng& png, const Frame& frame) {
       if (!same && ++mismatches <= 3) ADD_FAILURE() << "pixel (" << x << ", " << y << ") differs";
     }
   EXPECT_EQ(mismatches, 0);
-}
-
-template <typename Call>
-void expect_error(Call call, ExitCode code, const std::string& text) {
-  try {
-    call();
-    ADD_FAILURE() << "expected an error containing '" << text << "'";
-  } catch (const Error& error) {
-    EXPECT_EQ(error.code(), code) << error.what();
-    EXPECT_NE(std::string(error.what()).find(text), std::string::npos) << error.what();
-  }
 }
 
 TEST(PngWriter, StillRoundTripsExactlyAsRgb) {

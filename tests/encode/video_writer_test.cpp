@@ -13,6 +13,7 @@
 
 namespace linkage {
 namespace {
+using test::expect_error;
 using test::TempDir;
 
 constexpr int width = 64, height = 48, fps = 24, frame_count = 36;  // 1.5 s
@@ -35,18 +36,6 @@ EncodeStats write_clip(const std::filesystem::path& target, const VideoOptions& 
   }
   writer.finish();
   return writer.stats();
-}
-
-// Asserts that a call throws linkage::Error with `code` and a message containing `text`.
-template <typename Call>
-void expect_error(Call call, ExitCode code, const std::string& text) {
-  try {
-    call();
-    ADD_FAILURE() << "expected an error containing '" << text << "'";
-  } catch (const Error& error) {
-    EXPECT_EQ(error.code(), code) << error.what();
-    EXPECT_NE(std::string(error.what()).find(text), std::string::npos) << error.what();
-  }
 }
 
 TEST(VideoWriter, DecodesBackAsH264Yuv420pWithExactFrameCountAndDuration) {
