@@ -1,0 +1,127 @@
+#pragma once
+// Two-stage Gauss-Legendre collocation, order 4, implicit, symmetric and symplectic.
+//
+//   1/2 - sqrt3/6 | 1/4             1/4 - sqrt3/6
+//   1/2 + sqrt3/6 | 1/4 + sqrt3/6   1/4
+//   --------------+------------------------------
+//                 | 1/2             1/2
+//
+// The stages are found in increment form, Z_i = Y_i - y:
+//   Z_i = h sum_j a_ij f(t + c_j h, y + Z_j)       i = 1, 2      (2N equations)
+//   y1  = y + sum_i d_i Z_i,  d = b^T A^-1 = (-sqrt3, sqrt3)
+// by simplified Newton iteration with J = df/dy at (t, y) from forward differences:
+//   (I - h A (x) J) dZ = -Z + h (A (x) I) F(Z),    Z <- Z + dZ
+// started from Z_i = c_i h f(t, y). It stops when the update is at the round-off of the
+// residual (eps |Y| propagated through h |J|); it fails (and the step is refused) when
+// the update stops shrinking before that, or after `max_iterations`: h is too large
+// for the problem.
+// Symmetric methods have no systematic energy drift: over long runs the energy error
+// oscillates instead of growing.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <Eigen/LU>
+
+#include "integrate/ode.hpp"
+
+namespace linkage::ode {
+
+template <class Scalar, int N>
+class GaussLegendre2 {
+ public:
+  using Vector = State<Scalar, N>;
+  static constexpr int max_iterations = 20;
+
+  /// Advances y from t to t + h in place; on failure y is unchanged.
+  template <class F>
+    requires Derivative<F, Scalar, N>
+  StepStatus step(F& f, Scalar t, Scalar h, Vector& y) {
+    const Scalar r3 = std::sqrt(Scalar(3));
+    const Scalar c1 = Scalar(0.5) - r3 / 6, c2 = Scalar(0.5) + r3 / 6;
+    const Scalar a11 = Scalar(0.25), a12 = Scalar(0.25) - r3 / 6, a21 = Scalar(0.25) + r3 / 6, a22 = Scalar(0.25);
+
+    f(t, y, f0_);
+    jacobian(f, t, y);
+    counters_.rhs_evaluations += 1 + N;
+    if (!all_finite(f0_) || !jacobian_.allFinite()) return StepStatus::non_finite;
+
+    // Newton matrix I - h A (x) J, factored once per step.
+    newton_.setIdentity();
+    newton_.template topLeftCorner<N, N>() -= h * a11 * jacobian_;
+    newton_.template topRightCorner<N, N>() -= h * a12 * jacobian_;
+    newton_.template bottomLeftCorner<N, N>() -= h * a21 * jacobian_;
+    newton_.template bottomRightCorner<N, N>() -= h * a22 * jacobian_;
+    lu_.compute(newton_);
+
+    z1_ = c1 * h * f0_;
+    z2_ = c2 * h * f0_;
+    const Scalar eps = std::numeric_limits<Scalar>::epsilon();
+    Scalar previous = std::numeric_limits<Scalar>::infinity();
+    for (int iteration = 1; iteration <= max_iterations; ++iteration) {
+      stage_ = y + z1_;
+      f(t + c1 * h, stage_, f1_);
+      stage_ = y + z2_;
+      f(t + c2 * h, stage_, f2_);
+      counters_.rhs_evaluations += 2;
+      ++counters_.newton_iterations;
+      residual_.template head<N>() = -z1_ + h * (a11 * f1_ + a12 * f2_);
+      residual_.template tail<N>() = -z2_ + h * (a21 * f1_ + a22 * f2_);
+      delta_ = lu_.solve(residual_);
+      if (!delta_.allFinite()) return StepStatus::non_finite;
+      z1_ += delta_.template head<N>();
+      z2_ += delta_.template tail<N>();
+
+      // The update in units of the residual's round-off: each stage input Y_j carries
+      // eps |Y_j| of rounding, which reaches component i through h |J_ij|.
+      magnitude_ = y.cwiseAbs() + z1_.cwiseAbs() + z2_.cwiseAbs();
+      noise_ = eps * (magnitude_ + h * (jacobian_.cwiseAbs() * magnitude_));
+      Scalar change = 0;
+      for (int i = 0; i < N; ++i) {
+        const Scalar d = std::max(std::fabs(delta_[i]), std::fabs(delta_[N + i]));
+        if (d > 0) change = std::max(change, d / std::max(noise_[i], std::numeric_limits<Scalar>::min()));
+      }
+      const bool at_round_off = change <= 10;
+      const bool stalled = change >= Scalar(0.9) * previous;
+      if (at_round_off || (stalled && change <= 1000)) {
+        next_ = y + r3 * (z2_ - z1_);
+        if (!all_finite(next_)) return StepStatus::non_finite;
+        y = next_;
+        ++counters_.steps_accepted;
+        return StepStatus::ok;
+      }
+      if (stalled && iteration > 1) return StepStatus::newton_failed;
+      previous = change;
+    }
+    return StepStatus::newton_failed;
+  }
+
+  [[nodiscard]] const Counters& counters() const { return counters_; }
+
+ private:
+  using Matrix = Eigen::Matrix<Scalar, N, N>;
+  using Big = Eigen::Matrix<Scalar, 2 * N, 1>;
+  using BigMatrix = Eigen::Matrix<Scalar, 2 * N, 2 * N>;
+
+  /// Forward differences, one column per state component.
+  template <class F>
+  void jacobian(F& f, Scalar t, const Vector& y) {
+    const Scalar delta0 = std::sqrt(std::numeric_limits<Scalar>::epsilon());
+    for (int j = 0; j < N; ++j) {
+      stage_ = y;
+      const Scalar delta = delta0 * std::max(Scalar(1), std::fabs(y[j]));
+      stage_[j] += delta;
+      f(t, stage_, f1_);
+      jacobian_.col(j) = (f1_ - f0_) / (stage_[j] - y[j]);
+    }
+  }
+
+  Vector f0_, f1_, f2_, z1_, z2_, stage_, next_, magnitude_, noise_;
+  Matrix jacobian_;
+  BigMatrix newton_;
+  Eigen::PartialPivLU<BigMatrix> lu_;
+  Big residual_, delta_;
+  Counters counters_;
+};
+
+}  // namespace linkage::ode
