@@ -1,6 +1,7 @@
 #include "render/plot_data.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -11,6 +12,7 @@ namespace {
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 constexpr double auto_padding = 0.04;  // fraction of the data span added to a free linear limit
 constexpr double thinning = 0.5;       // device units
+constexpr double largest = 1e300;      // larger coordinates count as non-finite: spans would overflow
 
 /// Device coordinates stay far inside what Cairo's 24.8 fixed point can hold, and
 /// clipping never meets an infinity.
@@ -66,6 +68,38 @@ Point device_point(Point p, const Geometry& geometry) {
   return {clamp_device(d.x), clamp_device(d.y)};
 }
 
+/// Device positions of `points`, gaps kept, reduced column by column: of each run of
+/// consecutive points in one device column keep the first, lowest, highest and last,
+/// in their order (the "M4" reduction). A line through the kept points covers the same
+/// pixels, and a million-point series strokes in milliseconds instead of a minute.
+std::vector<Point> reduced_device_points(const std::vector<Point>& points, const Geometry& geometry) {
+  std::vector<Point> device;
+  device.reserve(points.size());
+  for (const Point& p : points) device.push_back(is_gap(p) ? p : device_point(p, geometry));
+  std::vector<Point> kept;
+  kept.reserve(device.size());
+  std::size_t i = 0;
+  while (i < device.size()) {
+    if (is_gap(device[i])) {
+      kept.push_back(device[i++]);
+      continue;
+    }
+    const double column = std::floor(device[i].x);
+    std::size_t end = i + 1;
+    std::size_t lowest = i;
+    std::size_t highest = i;
+    for (; end < device.size() && !is_gap(device[end]) && std::floor(device[end].x) == column; ++end) {
+      if (device[end].y < device[lowest].y) lowest = end;
+      if (device[end].y > device[highest].y) highest = end;
+    }
+    std::array<std::size_t, 4> picks{i, std::min(lowest, highest), std::max(lowest, highest), end - 1};
+    for (std::size_t k = 0; k < picks.size(); ++k)
+      if (k == 0 || picks[k] != picks[k - 1]) kept.push_back(device[picks[k]]);
+    i = end;
+  }
+  return kept;
+}
+
 bool near(Point a, Point b) { return std::fabs(a.x - b.x) < thinning && std::fabs(a.y - b.y) < thinning; }
 
 bool same(Point a, Point b) { return a.x == b.x && a.y == b.y; }
@@ -83,7 +117,7 @@ CleanData clean(const Plot& plot) {
     std::vector<Point>& points = data.series.emplace_back();
     points.reserve(series.points.size());
     for (const Point& p : series.points) {
-      if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
+      if (!(std::fabs(p.x) <= largest) || !(std::fabs(p.y) <= largest)) {
         ++data.skipped_nonfinite;
         points.push_back(gap());
       } else if ((log_x && !(p.x > 0)) || (log_y && !(p.y > 0))) {
@@ -151,13 +185,12 @@ std::vector<std::vector<Point>> device_polylines(const std::vector<Point>& point
     pending.reset();
     open = false;
   };
-  for (const Point& p : points) {
-    if (is_gap(p)) {
+  for (const Point& here : reduced_device_points(points, geometry)) {
+    if (is_gap(here)) {
       close();
       previous.reset();
       continue;
     }
-    const Point here = device_point(p, geometry);
     if (!previous) {
       previous = here;
       continue;

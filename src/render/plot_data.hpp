@@ -12,8 +12,9 @@ namespace linkage::plot::detail {
 [[nodiscard]] Point gap();
 [[nodiscard]] bool is_gap(Point p);
 
-/// The drawable points of every series, in plot order: non-finite points skipped and
-/// points with a non-positive coordinate on a log axis dropped, each replaced by a gap.
+/// The drawable points of every series, in plot order: non-finite points (and those
+/// beyond +-1e300, whose spans would overflow) skipped and points with a non-positive
+/// coordinate on a log axis dropped, each replaced by a gap.
 struct CleanData {
   std::vector<std::vector<Point>> series;
   std::size_t dropped_nonpositive = 0;
@@ -47,9 +48,10 @@ struct Box {
 /// Clips the segment a-b to `box` (Liang-Barsky); false when nothing of it is inside.
 [[nodiscard]] bool clip_segment(Point& a, Point& b, const Box& box);
 
-/// The device-space polylines of a cleaned series, clipped to `box` and thinned:
-/// a vertex closer than half a device unit to the last one kept is dropped, which
-/// keeps a million-point series cheap without visible change.
+/// The device-space polylines of a cleaned series, clipped to `box` and thinned
+/// without visible change: per device column only the first, lowest, highest and last
+/// of consecutive points are kept, and a vertex closer than half a device unit to the
+/// last one kept is dropped. A million-point series draws in milliseconds.
 [[nodiscard]] std::vector<std::vector<Point>> device_polylines(const std::vector<Point>& points,
                                                                const Geometry& geometry, const Box& box);
 

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <sstream>
 #include <vector>
@@ -217,6 +218,32 @@ TEST(PlotData, ThinningKeepsLongSeriesSmall) {
   EXPECT_LT(lines[0].size(), 2000u);
   EXPECT_DOUBLE_EQ(lines[0].front().x, 100);
   EXPECT_NEAR(lines[0].back().x, 900, 1e-9);  // the last point is kept
+}
+
+// A fast oscillation, 125 points per device column: at most four vertices per column,
+// and each column's vertical extent (what the pixels show) is kept.
+TEST(PlotData, ColumnReductionKeepsTheEnvelope) {
+  std::vector<Point> points;
+  for (int i = 0; i <= 100000; ++i) points.push_back({i / 100000.0, std::sin(i * 0.37)});
+  Geometry g;
+  g.x = {Scale::linear, 0, 1, 100, 900};
+  g.y = {Scale::linear, -1, 1, 500, 100};
+  const auto lines = detail::device_polylines(points, g, {0, 0, 1000, 600});
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_LE(lines[0].size(), 4u * 801u);
+  std::map<int, std::pair<double, double>> all;
+  std::map<int, std::pair<double, double>> kept;
+  const auto add = [](std::map<int, std::pair<double, double>>& extent, Point d) {
+    auto [it, added] = extent.try_emplace(static_cast<int>(std::floor(d.x)), d.y, d.y);
+    it->second = {std::min(it->second.first, d.y), std::max(it->second.second, d.y)};
+  };
+  for (const Point& p : points) add(all, g.to_device(p));
+  for (const Point& d : lines[0]) add(kept, d);
+  ASSERT_EQ(kept.size(), all.size());
+  for (const auto& [column, extent] : all) {
+    EXPECT_NEAR(kept[column].first, extent.first, 0.5) << column;
+    EXPECT_NEAR(kept[column].second, extent.second, 0.5) << column;
+  }
 }
 
 // --- files ---------------------------------------------------------------------------
