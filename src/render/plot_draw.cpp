@@ -77,7 +77,12 @@ class Drawing {
     if (legend_place_ == LegendPlace::best && !legend_fits_inside()) {
       legend_place_ = LegendPlace::outside_right;
       lay_out();
+      if (g_.right - g_.left < 0.5 * canvas_.width) {  // a legend this wide overlaps the data instead
+        legend_place_ = LegendPlace::best;
+        lay_out();
+      }
     }
+    require_room_for_data();
     polylines_.clear();
     markers_.clear();
     const Box clip_box{g_.left - 4 * m_.line_width, g_.top - 4 * m_.line_width, g_.right + 4 * m_.line_width,
@@ -160,10 +165,21 @@ class Drawing {
     g_.top = top;
     g_.bottom = bottom;
     g_.y = {plot_.y.scale, limits_.y.min, limits_.y.max, bottom, top};
+  }
+
+  void require_room_for_data() const {
+    const double f = canvas_.font_size;
     if (g_.right - g_.left < 3 * f || g_.bottom - g_.top < 3 * f)
       throw Error::input(origin_ + ": a " + format_significant(canvas_.width, 6) + " x " +
                          format_significant(canvas_.height, 6) + " canvas is too small for this plot's labels at font size " +
                          format_significant(canvas_.font_size, 6));
+  }
+
+  /// `font`, shrunk (to 60 % at most) so that `text` fits in `room`.
+  [[nodiscard]] Font fitted(const Font& font, const std::string& text, double room) const {
+    const double width = measure_text(cr_, text, font).width;
+    if (width <= room) return font;
+    return {font.size * std::max(0.6, room / width), font.bold};
   }
 
   [[nodiscard]] bool x_labels_overlap(const Ticks& ticks) const {
@@ -409,23 +425,29 @@ class Drawing {
     for (const Tick& t : y_ticks_.major)
       draw_text(cr_, t.label, m_.tick_font, g_.left - m_.tick - m_.gap, g_.y(t.value) + cap / 2, Align::end);
     const double middle_x = (g_.left + g_.right) / 2;
+    // Long labels shrink to their axis' length, a long title to the canvas' width.
     if (!plot_.x.label.empty()) {
       const TextExtent tick_label = measure_text(cr_, "10^{8}", m_.tick_font);
+      const Font font = fitted(m_.label_font, plot_.x.label, g_.right - g_.left);
       const TextExtent label = measure_text(cr_, plot_.x.label, m_.label_font);
-      draw_text(cr_, plot_.x.label, m_.label_font, middle_x, x_label_top + tick_label.height() + 0.45 * f + label.ascent,
+      draw_text(cr_, plot_.x.label, font, middle_x, x_label_top + tick_label.height() + 0.45 * f + label.ascent,
                 Align::center);
     }
     if (!plot_.y.label.empty()) {
+      const Font font = fitted(m_.label_font, plot_.y.label, g_.bottom - g_.top);
       const TextExtent label = measure_text(cr_, plot_.y.label, m_.label_font);
       cairo_save(cr_);
       cairo_translate(cr_, m_.pad + label.ascent, (g_.top + g_.bottom) / 2);
       cairo_rotate(cr_, -std::numbers::pi / 2);
-      draw_text(cr_, plot_.y.label, m_.label_font, 0, 0, Align::center);
+      draw_text(cr_, plot_.y.label, font, 0, 0, Align::center);
       cairo_restore(cr_);
     }
     if (!plot_.title.empty()) {
+      const Font font = fitted(m_.title_font, plot_.title, canvas_.width - 2 * m_.pad);
       const TextExtent title = measure_text(cr_, plot_.title, m_.title_font);
-      draw_text(cr_, plot_.title, m_.title_font, middle_x, m_.pad + title.ascent, Align::center);
+      const double half = measure_text(cr_, plot_.title, font).width / 2;
+      const double x = std::max(m_.pad + half, std::min(middle_x, canvas_.width - m_.pad - half));
+      draw_text(cr_, plot_.title, font, x, m_.pad + title.ascent, Align::center);
     }
   }
 

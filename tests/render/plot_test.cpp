@@ -499,6 +499,18 @@ TEST(PlotFile, LegendAvoidsTheData) {
   EXPECT_LT(crowded.geometry.right, wide - 100);
 }
 
+TEST(PlotFile, LongTextFitsASmallCanvas) {
+  Plot plot = sample_plot();
+  plot.title = "Accuracy against cost: Case 1, Case 2 and Case 3 with every integrator and step size";
+  plot.y.label = "final error (largest of |Δx_{1}|, |Δy_{1}|, |Δθ_{1}|, |Δθ_{2}|)";
+  for (Series& s : plot.series) s.name = "a rather long legend entry for " + s.name;
+  const TempDir dir;
+  const Report report = write(plot, dir / "long.png", {640, 400, 12});
+  // Too wide to sit beside the data without halving it: the legend goes in a corner.
+  EXPECT_NE(report.legend, LegendPlace::outside_right);
+  EXPECT_GT(report.geometry.right - report.geometry.left, 0.6 * 640);
+}
+
 TEST(PlotFile, DarkThemeBackground) {
   Plot plot = sample_plot();
   plot.theme = Theme::dark;
