@@ -1,0 +1,200 @@
+#include "report/latex_report.hpp"
+
+#include "report/derivation.hpp"
+#include "report/latex_math.hpp"
+#include "report/notation.hpp"
+
+namespace linkage {
+
+using expr::Style;
+
+namespace {
+
+// "Given: m (--m), ...; the rest are the spec's example." or the all-defaults sentence.
+std::string provenance(const Inputs& inputs) {
+  std::string given;
+  for (const InputKey& key : kInputKeys) {
+    const std::string& origin = inputs.origin(key);
+    if (origin != "default") given += (given.empty() ? "" : ", ") + std::string(key.key) + " (" + origin + ")";
+  }
+  return given.empty() ? "All inputs are the spec's example (the defaults)."
+                       : "Given: " + given + "; the rest are the spec's example.";
+}
+
+std::string residual_line(const CaseSolution& c) {
+  return "\\lVert A q - B \\rVert_2 = " + format_number(c.residual, Style::latex, 2) +
+         ", \\qquad \\kappa_2(A) = " + format_number(c.condition_number, Style::latex, 3);
+}
+
+std::string agreement_cell(const Agreement& a, std::size_t i, int digits, std::string_view mark) {
+  return concat({"$", format_number(a.values[i], Style::latex, digits), "$", a.recovered[i] ? mark : ""});
+}
+
+class LatexWriter {
+ public:
+  LatexWriter(const WorkedSolution& worked, const ReportOptions& options) : w_(worked), digits_(options.digits) {}
+
+  std::string write() {
+    out_ += "% Worked solution of the two-block linkage, from `linkage solve --format latex`.\n";
+    out_ += "% Paste into a document or a slide; needs \\usepackage{amsmath}.\n";
+    inputs();
+    for (const DerivationGroup& group : derivation(w_)) {
+      heading(group.title, group.note);
+      out_ += "\\begin{align*}\n" + derivation_rows(group, digits_, "  ") + "\\end{align*}\n";
+    }
+    for (const CaseSolution& c : w_.cases) one_case(c);
+    if (!w_.agreement.empty()) agreement();
+    return out_;
+  }
+
+ private:
+  const WorkedSolution& w_;
+  int digits_;
+  std::string out_;
+
+  void heading(std::string_view title, std::string_view text) {
+    out_ += "\n% ---- " + std::string(title) + " ----\n";
+    out_ += "\\par\\medskip\\noindent\\textbf{" + latex_escape(title) + ".}";
+    if (!text.empty()) out_ += " " + std::string(text);
+    out_ += "\n";
+  }
+
+  void inputs() {
+    heading("Inputs", latex_escape(provenance(w_.inputs)));
+    out_ += "\\begin{center}\n\\begin{tabular}{llll}\n";
+    for (const InputKey& key : kInputKeys) {
+      const Symbol s = input_symbol(key, w_.inputs);
+      out_ += "  $" + std::string(s.latex) + "$ & $" + format_number(s.value, Style::latex, 0) + "$ & $" +
+              unit_text(key.unit, Style::latex) + "$ & " + latex_escape(key.description) + " \\\\\n";
+    }
+    out_ += "\\end{tabular}\n\\end{center}\n";
+  }
+
+  // A q = B over two lines; narrower column gaps (3pt, from 5pt) so 8 columns fit.
+  void matrix_display(const std::string& equation) {
+    out_ += "\\begin{multline*}\n  \\setlength{\\arraycolsep}{3pt}\n" + equation + "\\end{multline*}\n";
+  }
+
+  void one_case(const CaseSolution& c) {
+    heading(c.title, "The equations, one per row of $A q = B$:");
+    out_ += "\\begin{align*}\n";
+    const std::vector<std::string> rows = equation_rows(c);
+    for (std::size_t r = 0; r < rows.size(); ++r)
+      out_ += "  " + rows[r] + " \\tag{" + std::string(c.equations[r]) + "}" + (r + 1 < rows.size() ? " \\\\\n" : "\n");
+    out_ += "\\end{align*}\n";
+    out_ += "In matrix form, rows in the order of the equations:\n";
+    matrix_display(matrix_equation(c, {false, true, true}, digits_, "  "));
+    out_ += "Numerically:\n";
+    matrix_display(matrix_equation(c, {true, true, true}, digits_, "  "));
+    out_ += "Solution:\n";
+    out_ += "\\begin{equation*}\n" + solution_equation(c, digits_, "  ") + "\\end{equation*}\n";
+    out_ += "\\begin{equation*}\n  " + residual_line(c) + "\n\\end{equation*}\n";
+  }
+
+  void agreement() {
+    heading("The cases agree",
+            "Every unknown from every case; $^{*}$ marks a value the case recovers from the equations it "
+            "eliminated rather than solves for.");
+    out_ += "\\begin{center}\n\\begin{tabular}{l" + std::string(w_.cases.size() + 1, 'r') + "}\n ";
+    for (const CaseSolution& c : w_.cases) out_ += " & Case " + std::to_string(c.id);
+    out_ += " & $\\max|\\Delta|$ \\\\\n  \\hline\n";
+    for (const Agreement& a : w_.agreement) {
+      out_ += "  $" + std::string(unknown_name(a.unknown, Style::latex)) + "$";
+      for (std::size_t i = 0; i < a.values.size(); ++i) out_ += " & " + agreement_cell(a, i, digits_, "$^{*}$");
+      out_ += " & $" + format_number(a.max_abs_difference, Style::latex, 2) + "$ \\\\\n";
+    }
+    out_ += "\\end{tabular}\n\\end{center}\n";
+  }
+};
+
+class MarkdownWriter {
+ public:
+  MarkdownWriter(const WorkedSolution& worked, const ReportOptions& options) : w_(worked), digits_(options.digits) {}
+
+  std::string write() {
+    out_ += "# Worked solution: two blocks joined by a frictionless pin\n";
+    inputs();
+    for (const DerivationGroup& group : derivation(w_)) {
+      heading(group.title);
+      paragraph(std::string(group.note));
+      math("\\begin{aligned}\n" + derivation_rows(group, digits_, "") + "\\end{aligned}\n");
+    }
+    for (const CaseSolution& c : w_.cases) one_case(c);
+    if (!w_.agreement.empty()) agreement();
+    return out_;
+  }
+
+ private:
+  const WorkedSolution& w_;
+  int digits_;
+  std::string out_;
+
+  void heading(std::string_view title) { out_ += "\n## " + std::string(title) + "\n"; }
+  void paragraph(const std::string& text) { out_ += "\n" + text + "\n"; }
+  void math(const std::string& body) { out_ += "\n$$\n" + body + "$$\n"; }
+  [[nodiscard]] std::string number(double v) const { return format_number(v, Style::unicode, digits_); }
+
+  void inputs() {
+    heading("Inputs");
+    out_ += "\n| symbol | value | unit | meaning |\n| :-- | --: | :-- | :-- |\n";
+    for (const InputKey& key : kInputKeys) {
+      const Symbol s = input_symbol(key, w_.inputs);
+      out_ += "| $" + std::string(s.latex) + "$ | " + format_number(s.value, Style::unicode, 0) + " | " +
+              unit_text(key.unit, Style::unicode) + " | " + std::string(key.description) + " |\n";
+    }
+    paragraph(provenance(w_.inputs));
+  }
+
+  void one_case(const CaseSolution& c) {
+    heading(c.title);
+    paragraph("The equations, one per row of $A q = B$:");
+    std::string rows;
+    const std::vector<std::string> eqs = equation_rows(c);
+    for (std::size_t r = 0; r < eqs.size(); ++r)
+      rows += eqs[r] + " && \\text{(" + std::string(c.equations[r]) + ")}" + (r + 1 < eqs.size() ? " \\\\\n" : "\n");
+    math("\\begin{aligned}\n" + rows + "\\end{aligned}\n");
+    paragraph("In matrix form, rows in the order of the equations:");
+    math(matrix_equation(c, {false, false, false}, digits_, ""));
+    paragraph("Numerically:");
+    math(matrix_equation(c, {true, false, false}, digits_, ""));
+    paragraph("Solution:");
+    out_ += "\n| unknown | value | unit | meaning |\n| :-- | --: | :-- | :-- |\n";
+    for (std::size_t i = 0; i < c.unknowns.size(); ++i) {
+      const UnknownInfo& u = info(c.unknowns[i]);
+      out_ += "| $" + std::string(u.latex) + "$ | " + number(c.solution[static_cast<Eigen::Index>(i)]) + " | " +
+              unit_text(u.unit, Style::unicode) + " | " + std::string(u.description) + " |\n";
+    }
+    math(residual_line(c) + "\n");
+  }
+
+  void agreement() {
+    heading("The cases agree");
+    paragraph("Every unknown from every case; \\* marks a value the case recovers from the equations it "
+              "eliminated rather than solves for.");
+    out_ += "\n| unknown |";
+    std::string rule = "| :-- |";
+    for (const CaseSolution& c : w_.cases) {
+      out_ += " Case " + std::to_string(c.id) + " |";
+      rule += " --: |";
+    }
+    out_ += " max \\|Δ\\| |\n" + rule + " --: |\n";
+    for (const Agreement& a : w_.agreement) {
+      out_ += "| $" + std::string(unknown_name(a.unknown, Style::latex)) + "$ |";
+      for (std::size_t i = 0; i < a.values.size(); ++i)
+        out_ += concat({" ", number(a.values[i]), a.recovered[i] ? "\\*" : "", " |"});
+      out_ += concat({" ", format_number(a.max_abs_difference, Style::unicode, 2), " |\n"});
+    }
+  }
+};
+
+}  // namespace
+
+std::string latex_report(const WorkedSolution& worked, const ReportOptions& options) {
+  return LatexWriter(worked, options).write();
+}
+
+std::string markdown_report(const WorkedSolution& worked, const ReportOptions& options) {
+  return MarkdownWriter(worked, options).write();
+}
+
+}  // namespace linkage
