@@ -3,6 +3,7 @@
 #include "report/derivation.hpp"
 #include "report/latex_math.hpp"
 #include "report/notation.hpp"
+#include "report/sections.hpp"
 
 namespace linkage {
 
@@ -34,23 +35,17 @@ class LatexWriter {
  public:
   LatexWriter(const WorkedSolution& worked, const ReportOptions& options) : w_(worked), digits_(options.digits) {}
 
-  std::string write() {
+  void title() {
     out_ += "% Worked solution of the two-block linkage, from `linkage solve --format latex`.\n";
     out_ += "% Paste into a document or a slide; needs \\usepackage{amsmath}.\n";
-    inputs();
-    for (const DerivationGroup& group : derivation(w_)) {
-      heading(group.title, group.note);
-      out_ += "\\begin{align*}\n" + derivation_rows(group, digits_, "  ") + "\\end{align*}\n";
-    }
-    for (const CaseSolution& c : w_.cases) one_case(c);
-    if (!w_.agreement.empty()) agreement();
-    return out_;
   }
 
- private:
-  const WorkedSolution& w_;
-  int digits_;
-  std::string out_;
+  void derivation_group(const DerivationGroup& group) {
+    heading(group.title, group.note);
+    out_ += "\\begin{align*}\n" + derivation_rows(group, digits_, "  ") + "\\end{align*}\n";
+  }
+
+  [[nodiscard]] const std::string& text() const { return out_; }
 
   void heading(std::string_view title, std::string_view text) {
     out_ += "\n% ---- " + std::string(title) + " ----\n";
@@ -105,29 +100,25 @@ class LatexWriter {
     }
     out_ += "\\end{tabular}\n\\end{center}\n";
   }
+ private:
+  const WorkedSolution& w_;
+  int digits_;
+  std::string out_;
 };
 
 class MarkdownWriter {
  public:
   MarkdownWriter(const WorkedSolution& worked, const ReportOptions& options) : w_(worked), digits_(options.digits) {}
 
-  std::string write() {
-    out_ += "# Worked solution: two blocks joined by a frictionless pin\n";
-    inputs();
-    for (const DerivationGroup& group : derivation(w_)) {
-      heading(group.title);
-      paragraph(std::string(group.note));
-      math("\\begin{aligned}\n" + derivation_rows(group, digits_, "") + "\\end{aligned}\n");
-    }
-    for (const CaseSolution& c : w_.cases) one_case(c);
-    if (!w_.agreement.empty()) agreement();
-    return out_;
+  void title() { out_ += "# Worked solution: two blocks joined by a frictionless pin\n"; }
+
+  void derivation_group(const DerivationGroup& group) {
+    heading(group.title);
+    paragraph(std::string(group.note));
+    math("\\begin{aligned}\n" + derivation_rows(group, digits_, "") + "\\end{aligned}\n");
   }
 
- private:
-  const WorkedSolution& w_;
-  int digits_;
-  std::string out_;
+  [[nodiscard]] const std::string& text() const { return out_; }
 
   void heading(std::string_view title) { out_ += "\n## " + std::string(title) + "\n"; }
   void paragraph(const std::string& text) { out_ += "\n" + text + "\n"; }
@@ -185,16 +176,22 @@ class MarkdownWriter {
       out_ += concat({" ", format_number(a.max_abs_difference, Style::unicode, 2), " |\n"});
     }
   }
+ private:
+  const WorkedSolution& w_;
+  int digits_;
+  std::string out_;
 };
 
 }  // namespace
 
 std::string latex_report(const WorkedSolution& worked, const ReportOptions& options) {
-  return LatexWriter(worked, options).write();
+  LatexWriter writer(worked, options);
+  return write_sections(writer, worked);
 }
 
 std::string markdown_report(const WorkedSolution& worked, const ReportOptions& options) {
-  return MarkdownWriter(worked, options).write();
+  MarkdownWriter writer(worked, options);
+  return write_sections(writer, worked);
 }
 
 }  // namespace linkage

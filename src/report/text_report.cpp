@@ -7,6 +7,7 @@
 
 #include "report/derivation.hpp"
 #include "report/notation.hpp"
+#include "report/sections.hpp"
 #include "report/text_layout.hpp"
 
 namespace linkage {
@@ -33,20 +34,8 @@ class TextWriter {
   TextWriter(const WorkedSolution& worked, const ReportOptions& options)
       : w_(worked), o_(options), style_(options.text_style) {}
 
-  std::string write() {
-    heading("Worked solution: two blocks joined by a frictionless pin", '=');
-    inputs();
-    for (const DerivationGroup& group : derivation(w_)) derivation_group(group);
-    for (const CaseSolution& c : w_.cases) one_case(c);
-    if (!w_.agreement.empty()) agreement();
-    return out_;
-  }
-
- private:
-  const WorkedSolution& w_;
-  const ReportOptions& o_;
-  Style style_;
-  std::string out_;
+  void title() { heading("Worked solution: two blocks joined by a frictionless pin", '='); }
+  [[nodiscard]] const std::string& text() const { return out_; }
 
   void line(const std::string& text) { out_ += text + "\n"; }
   void lines(const std::vector<std::string>& text) {
@@ -200,12 +189,18 @@ class TextWriter {
     blank();
     lines(layout_table(table, "    ", o_.width));
   }
+ private:
+  const WorkedSolution& w_;
+  const ReportOptions& o_;
+  Style style_;
+  std::string out_;
 };
 
 }  // namespace
 
 std::string text_report(const WorkedSolution& worked, const ReportOptions& options) {
-  return TextWriter(worked, options).write();
+  TextWriter writer(worked, options);
+  return write_sections(writer, worked);
 }
 
 }  // namespace linkage

@@ -12,13 +12,6 @@
 namespace linkage {
 namespace {
 
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
-
 TEST(SolveOutput, TextFitsEightyColumnsForEveryCaseAndStyle) {
   const std::vector<std::vector<std::string>> inputs = {
       {},
@@ -33,7 +26,8 @@ TEST(SolveOutput, TextFitsEightyColumnsForEveryCaseAndStyle) {
         const test::RunResult r = test::run_linkage(args);
         ASSERT_EQ(r.exit_code, 0) << r.err;
         std::size_t count = 0;
-        for (const std::string& line : lines_of(r.out)) {
+        std::istringstream out(r.out);
+        for (std::string line; std::getline(out, line);) {
           EXPECT_LE(display_width(line), 80u) << "--case " << which << " " << style << ": " << line;
           ++count;
         }

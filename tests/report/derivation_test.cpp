@@ -4,12 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <random>
 
 #include "report/derivation.hpp"
 #include "report/notation.hpp"
 #include "report/text_layout.hpp"
 #include "report/ascii_math.hpp"
+#include "report/random_inputs.hpp"
 
 namespace linkage {
 namespace {
@@ -22,20 +22,8 @@ WorkedSolution worked_at(const Params& p, const State& s) {
 }
 
 std::vector<WorkedSolution> random_worked(int count) {
-  std::mt19937_64 rng(99);
-  auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
   std::vector<WorkedSolution> out;
-  for (int i = 0; i < count; ++i) {
-    Params p;
-    p.m = std::pow(10.0, uniform(-2, 2));
-    p.L = uniform(0.1, 3);
-    p.w = uniform(0.01, 1);
-    p.b = uniform(0, p.L);
-    p.g = uniform(0, 20);
-    const State s{uniform(-5, 5), uniform(-5, 5), uniform(-7, 7), uniform(-7, 7),
-                  uniform(-3, 3), uniform(-3, 3), uniform(-20, 20), uniform(-20, 20)};
-    out.push_back(worked_at(p, s));
-  }
+  for (const test::Sample& x : test::random_samples(count, 99)) out.push_back(worked_at(x.p, x.s));
   return out;
 }
 

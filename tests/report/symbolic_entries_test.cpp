@@ -12,34 +12,13 @@
 #include "report/notation.hpp"
 #include "report/text_layout.hpp"
 #include "report/ascii_math.hpp"
+#include "report/random_inputs.hpp"
 
 namespace linkage {
 namespace {
 
-struct Sample {
-  Params p;
-  State s;
-};
-
-// Random parameters and states: masses over six decades, long and short blocks, the pin
-// anywhere on the block, angles over several turns, fast spins.
-std::vector<Sample> random_samples(int count) {
-  std::mt19937_64 rng(20260521);
-  auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
-  std::vector<Sample> samples;
-  for (int i = 0; i < count; ++i) {
-    Sample x;
-    x.p.m = std::pow(10.0, uniform(-3, 3));
-    x.p.L = uniform(0.05, 5);
-    x.p.w = uniform(0.01, 1);
-    x.p.b = uniform(0, x.p.L);
-    x.p.g = uniform(0, 30);
-    x.s = {uniform(-10, 10), uniform(-10, 10), uniform(-20, 20), uniform(-20, 20),
-           uniform(-5, 5),   uniform(-5, 5),   uniform(-60, 60), uniform(-60, 60)};
-    samples.push_back(x);
-  }
-  return samples;
-}
+using test::Sample;
+using test::random_samples;
 
 std::map<std::string, double> entry_symbols(const Sample& x) {
   return {{"m", x.p.m},         {"I", x.p.inertia_centroidal()}, {"D", x.p.pin_offset()},
@@ -54,7 +33,7 @@ double row_tolerance(const CaseSolution& c, Eigen::Index r) {
 
 TEST(SymbolicEntries, EveryPrintedEntryEvaluatesToTheNumericEntry) {
   int compared = 0;
-  for (const Sample& x : random_samples(200)) {
+  for (const Sample& x : random_samples(200, 20260521)) {
     test::AsciiMath math(entry_symbols(x));
     for (int id : kCaseIds) {
       const CaseSolution c = solve_case(id, x.p, x.s);
@@ -82,7 +61,7 @@ TEST(SymbolicEntries, EveryPrintedEntryEvaluatesToTheNumericEntry) {
 TEST(SymbolicEntries, PrintedEquationsAreTheRowsOfAqEqualsB) {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> unknown(-3, 3);
-  for (const Sample& x : random_samples(50)) {
+  for (const Sample& x : random_samples(50, 20260522)) {
     for (int id : kCaseIds) {
       const CaseSolution c = solve_case(id, x.p, x.s);
       const SymbolicSystem printed = symbolic_system(id, expr::Style::ascii);
