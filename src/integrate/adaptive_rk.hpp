@@ -33,6 +33,9 @@ class AdaptiveRk {
     Tolerances<Scalar> tolerances{};
     Scalar first_step = 0;                                    // 0: choose automatically
     Scalar max_step = std::numeric_limits<Scalar>::infinity();
+    /// Steps are shortened to end exactly here (not past it); the default never
+    /// shortens a step, so output comes from dense() instead.
+    Scalar t_stop = std::numeric_limits<Scalar>::infinity();
   };
 
   explicit AdaptiveRk(const Settings& settings)
@@ -54,8 +57,8 @@ class AdaptiveRk {
     dense_ready_ = step_valid_ = false;
   }
 
-  /// Makes one accepted step from t(). On failure the state is left at the last
-  /// accepted step and the status says why.
+  /// Makes one accepted step from t() (none once t() reaches Settings::t_stop). On
+  /// failure the state is left at the last accepted step and the status says why.
   template <class F>
     requires Derivative<F, Scalar, N>
   StepStatus step(F& f) {
@@ -63,7 +66,9 @@ class AdaptiveRk {
     step_valid_ = false;  // the attempts below overwrite the last step's stages
     dense_ready_ = false;
     for (;;) {
-      const Scalar h = std::min(h_next_, settings_.max_step);
+      if (t_ >= settings_.t_stop) return StepStatus::ok;  // nothing left to do
+      const bool last = t_ + std::min(h_next_, settings_.max_step) >= settings_.t_stop;
+      const Scalar h = last ? settings_.t_stop - t_ : std::min(h_next_, settings_.max_step);
       if (step_underflows(t_, h)) {
         h_next_ = h;
         return last_non_finite ? StepStatus::non_finite : StepStatus::step_underflow;
@@ -78,7 +83,7 @@ class AdaptiveRk {
       if (controller_.decide(err, h, h_next_)) {
         t_old_ = t_;
         y_old_ = y_;
-        t_ = t_old_ + h;
+        t_ = last ? settings_.t_stop : t_old_ + h;
         y_ = y_end_ = stage_;
         f_ = k_[main_stages - 1];
         h_ = h;

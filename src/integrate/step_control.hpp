@@ -59,7 +59,8 @@ class StepController {
       rejected_last_ = true;
       return false;
     }
-    Scalar fac = std::pow(err, exponent_) / std::pow(err_prev_, beta_) / safety_;
+    Scalar fac = std::pow(err, exponent_) / safety_;
+    if (beta_ != 0) fac /= std::pow(err_prev_, beta_);
     fac = std::clamp(fac, Scalar(1) / fac_max_, Scalar(1) / fac_min_);
     h_next = h / fac;
     if (rejected_last_) h_next = std::min(h_next, h);

@@ -9,7 +9,7 @@
 //       | b_1   ...  b_s-1  b_s
 //
 // A tableau is a compile-time value, so its coefficients are constants in the generated
-// code and its zeros cost nothing: `add_weighted` drops zero weights with `if constexpr`.
+// code and its zeros cost nothing: `weighted_sum` drops zero weights at compile time.
 // Coefficients are long double literals (at least 19 significant digits where the
 // method's source gives them), converted once to the Scalar of the run.
 #include <array>
@@ -29,30 +29,32 @@ struct Tableau {
   static constexpr std::size_t stages = S;
 };
 
-namespace detail {
-template <auto W, std::size_t J, class Scalar, int N, std::size_t K>
-inline void add_term(State<Scalar, N>& sum, const std::array<State<Scalar, N>, K>& k) {
-  if constexpr (W[J] != 0) sum.noalias() += static_cast<Scalar>(W[J]) * k[J];
+/// base_i + h sum_j w_j k_j,i over the first W.size() entries of k, for a compile-time
+/// weight row W. Written per component with a scalar accumulator, so it inlines
+/// completely and the compiler vectorizes across components.
+template <auto W, class Scalar, int N, std::size_t K, class Base>
+inline void combine(const Base& base, Scalar h, const std::array<State<Scalar, N>, K>& k, State<Scalar, N>& out) {
+  static_assert(W.size() <= K, "more weights than stages");
+  for (int i = 0; i < N; ++i) {
+    Scalar acc = 0;
+    [&]<std::size_t... J>(std::index_sequence<J...>) {
+      ((W[J] != 0 ? void(acc += static_cast<Scalar>(W[J]) * k[J][i]) : void()), ...);
+    }(std::make_index_sequence<W.size()>{});
+    out[i] = base(i) + h * acc;
+  }
 }
-}  // namespace detail
 
-/// sum_j w_j k_j over the first W.size() entries of k, for a compile-time weight row W.
+/// sum_j w_j k_j for a compile-time weight row W.
 template <auto W, class Scalar, int N, std::size_t K>
 inline void weighted_sum(const std::array<State<Scalar, N>, K>& k, State<Scalar, N>& sum) {
-  static_assert(W.size() <= K, "more weights than stages");
-  sum.setZero();
-  [&]<std::size_t... J>(std::index_sequence<J...>) {
-    (detail::add_term<W, J>(sum, k), ...);
-  }(std::make_index_sequence<W.size()>{});
+  combine<W>([](int) { return Scalar(0); }, Scalar(1), k, sum);
 }
 
 /// out = y + h sum_j w_j k_j for a compile-time weight row W.
 template <auto W, class Scalar, int N, std::size_t K>
 inline void add_weighted(const State<Scalar, N>& y, Scalar h, const std::array<State<Scalar, N>, K>& k,
                          State<Scalar, N>& out) {
-  State<Scalar, N> sum;
-  weighted_sum<W>(k, sum);
-  out = y + h * sum;
+  combine<W>([&](int i) { return y[i]; }, h, k, out);
 }
 
 /// Evaluates stages First..Last-1 of tableau T at (t, y) with step h, given k_0..k_First-1

@@ -1,0 +1,416 @@
+#include "integrate/simulation.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "core/error.hpp"
+#include "core/interrupt.hpp"
+#include "core/number_format.hpp"
+#include "integrate/adaptive_rk.hpp"
+#include "integrate/dop853.hpp"
+#include "integrate/dopri5.hpp"
+#include "integrate/explicit_rk.hpp"
+#include "integrate/gauss_legendre.hpp"
+#include "integrate/linkage_rhs.hpp"
+#include "integrate/projection.hpp"
+#include "integrate/symplectic_euler.hpp"
+
+namespace linkage {
+
+// --- names and option checks -------------------------------------------------------
+
+namespace {
+
+constexpr std::array<IntegratorInfo, 6> kIntegrators{{
+    {IntegratorKind::euler, "euler", "explicit Euler, fixed step, order 1", false, 1},
+    {IntegratorKind::symplectic_euler, "symplectic-euler", "semi-implicit (symplectic) Euler, fixed step, order 1",
+     false, 1},
+    {IntegratorKind::rk4, "rk4", "classical Runge-Kutta, fixed step, order 4", false, 4},
+    {IntegratorKind::dopri5, "dopri5", "Dormand-Prince 5(4), adaptive, dense output of order 4", true, 5},
+    {IntegratorKind::dop853, "dop853", "Dormand-Prince 8(5,3), adaptive, dense output of order 7", true, 8},
+    {IntegratorKind::gauss2, "gauss-legendre",
+     "2-stage Gauss-Legendre, implicit (Newton), symmetric, fixed step, order 4", false, 4},
+}};
+
+constexpr std::array<std::pair<Stabilization, std::string_view>, 3> kStabilizations{{
+    {Stabilization::none, "none"}, {Stabilization::baumgarte, "baumgarte"}, {Stabilization::projection, "projection"}}};
+
+// Limits of the options. Past a million seconds the free fall reaches 5e12 m, where a
+// double keeps only millimetres; below rtol = 1e-14 round-off dominates every step.
+constexpr double kMaxDuration = 1e6;       // s
+constexpr double kMinRtol = 1e-14, kMaxTol = 1.0;
+constexpr double kMinAtol = 1e-20;
+constexpr double kMaxGain = 1e6;           // 1/s
+constexpr double kMaxFixedSteps = 1e9;
+
+std::string num(double v) { return format_roundtrip(v); }
+
+void require(bool ok, const std::string& flag, double value, const std::string& unit, const std::string& range) {
+  if (!ok)
+    throw Error::input(flag + ": " + num(value) + (unit.empty() ? "" : " " + unit) + " is out of range; valid: " + range);
+}
+
+}  // namespace
+
+const std::array<IntegratorInfo, 6>& integrators() { return kIntegrators; }
+
+const IntegratorInfo& info(IntegratorKind kind) {
+  for (const IntegratorInfo& i : kIntegrators)
+    if (i.kind == kind) return i;
+  throw Error::failure("unknown integrator kind");
+}
+
+IntegratorKind parse_integrator(std::string_view name, const std::string& origin) {
+  std::string valid;
+  for (const IntegratorInfo& i : kIntegrators) {
+    if (i.name == name) return i.kind;
+    valid += (valid.empty() ? "" : ", ") + std::string(i.name);
+  }
+  throw Error::input(origin + ": '" + std::string(name) + "' is not an integrator; valid: " + valid);
+}
+
+Stabilization parse_stabilization(std::string_view name, const std::string& origin) {
+  for (const auto& [kind, spelling] : kStabilizations)
+    if (spelling == name) return kind;
+  throw Error::input(origin + ": '" + std::string(name) +
+                     "' is not a stabilization; valid: none, baumgarte, projection");
+}
+
+std::string_view name(Stabilization s) {
+  for (const auto& [kind, spelling] : kStabilizations)
+    if (kind == s) return spelling;
+  return "unknown";
+}
+
+void SimulationOptions::validate() const {
+  if (case_id < 1 || case_id > 3)
+    throw Error::input("--case: " + std::to_string(case_id) + " is not a case; valid: 1, 2, 3");
+  require(std::isfinite(duration) && duration > 0 && duration <= kMaxDuration, "--duration", duration, "s",
+          "0 < duration <= " + num(kMaxDuration) + " s");
+  require(std::isfinite(dt) && dt > 0 && dt <= duration, "--dt", dt, "s",
+          "0 < dt <= duration (" + num(duration) + " s)");
+  if (!info(integrator).adaptive && duration / dt > kMaxFixedSteps)
+    throw Error::input("--dt: " + num(dt) + " s needs " + format_significant(duration / dt, 3) + " steps of " +
+                       std::string(info(integrator).name) + " for --duration " + num(duration) +
+                       " s; the limit is 1e9 steps (use a larger --dt or an adaptive integrator)");
+  require(std::isfinite(rtol) && rtol >= kMinRtol && rtol <= kMaxTol, "--rtol", rtol, "",
+          num(kMinRtol) + " <= rtol <= " + num(kMaxTol) + " (smaller is below double precision)");
+  require(std::isfinite(atol) && atol >= kMinAtol && atol <= kMaxTol, "--atol", atol, "",
+          num(kMinAtol) + " <= atol <= " + num(kMaxTol));
+  require(std::isfinite(baumgarte_alpha) && baumgarte_alpha >= 0 && baumgarte_alpha <= kMaxGain,
+          "--baumgarte-alpha", baumgarte_alpha, "1/s", "0 <= alpha <= " + num(kMaxGain) + " 1/s");
+  require(std::isfinite(baumgarte_beta) && baumgarte_beta >= 0 && baumgarte_beta <= kMaxGain, "--baumgarte-beta",
+          baumgarte_beta, "1/s", "0 <= beta <= " + num(kMaxGain) + " 1/s");
+}
+
+// --- the runs -----------------------------------------------------------------------
+
+namespace {
+
+/// Ends a run that cannot go on: one line naming the time, the step and what to try.
+[[noreturn]] void fail(const SimulationOptions& o, std::string_view what, std::string hint, double t, double h) {
+  if (o.case_id == 1 && o.stabilization != Stabilization::projection) hint += ", or --stabilize projection";
+  throw Error::diverged("the simulation failed at t = " + format_significant(t, 6) + " s with step " +
+                        format_significant(h, 3) + " s (" + std::string(info(o.integrator).name) + ", Case " +
+                        std::to_string(o.case_id) + "): " + std::string(what) + "; " + hint);
+}
+
+[[noreturn]] void fail(const SimulationOptions& o, ode::StepStatus status, double t, double h) {
+  std::string hint;
+  if (status == ode::StepStatus::newton_failed)
+    hint = "try a smaller --dt or an explicit integrator (--integrator dop853)";
+  else if (info(o.integrator).adaptive)
+    hint = "the equations may be singular or stiff here; try looser --rtol/--atol or --case 3";
+  else
+    hint = "try a smaller --dt or an adaptive integrator (--integrator dop853)";
+  fail(o, ode::describe(status), hint, t, h);
+}
+
+/// A run of one case with one integrator; the stepping lives in the two subclasses.
+class Run {
+ public:
+  Run(const Params& p, const State& initial, const SimulationOptions& o)
+      : params(p), options(o), start(body_state(p, initial)) {
+    const Invariants inv = invariants(p, start);
+    energy0 = inv.energy;
+    scale = energy_scale(p, start);
+  }
+  Run(const Run&) = delete;
+  Run& operator=(const Run&) = delete;
+  virtual ~Run() = default;
+
+  /// The state at t >= the last sample's time.
+  virtual BodyState advance(double t) = 0;
+  virtual Dynamics dynamics(const BodyState& s) const = 0;
+  [[nodiscard]] virtual ode::Counters counters() const = 0;
+
+  Params params;
+  SimulationOptions options;
+  BodyState start;
+  double energy0 = 0, scale = 1;
+  double last_t = 0;
+  SimulationStats stats;
+};
+
+/// Everything that depends on the case: its right-hand side, the map between the
+/// integrated vector and BodyState, accelerations and pin force for output.
+template <class Case>
+struct CaseModel;
+
+template <class Case>
+struct GeneralizedModel {
+  using Rhs = GeneralizedRhs<Case>;
+  using Vector = Vec<8>;
+  static constexpr bool can_drift = false;
+  static Rhs make_rhs(const Params& p, const SimulationOptions& /*o*/) { return Rhs(p); }
+  static Vector to_vector(const BodyState& s) { return s.generalized().vector(); }
+  static BodyState to_body(const Params& p, const Vector& y) { return body_state(p, State::from_vector(y)); }
+  static Dynamics dynamics(const Params& p, const Rhs& rhs, const BodyState& s) {
+    const Vec<Case::size> q = rhs.unknowns(to_vector(s));
+    Dynamics d;
+    d.x1_ddot = q[0];
+    d.y1_ddot = q[1];
+    d.theta1_ddot = q[2];
+    d.theta2_ddot = q[3];
+    if constexpr (Case::size == 6) {
+      d.F_x = q[4];
+      d.F_y = q[5];
+    } else {  // Case 3 eliminated the pin force with (1.2), (2.2)
+      d.F_x = p.m * d.x1_ddot;
+      d.F_y = p.m * (d.y1_ddot + p.g);
+    }
+    d.x2_ddot = -d.F_x / p.m;        // (4.1)
+    d.y2_ddot = -p.g - d.F_y / p.m;  // (5.1)
+    return d;
+  }
+};
+
+template <>
+struct CaseModel<Case3> : GeneralizedModel<Case3> {};
+template <>
+struct CaseModel<Case2> : GeneralizedModel<Case2> {};
+
+template <>
+struct CaseModel<Case1> {
+  using Rhs = MaximalRhs;
+  using Vector = Vec<12>;
+  static constexpr bool can_drift = true;
+  static Rhs make_rhs(const Params& p, const SimulationOptions& o) {
+    const bool on = o.stabilization == Stabilization::baumgarte;
+    return Rhs(p, on ? o.baumgarte_alpha : 0.0, on ? o.baumgarte_beta : 0.0);
+  }
+  static Vector to_vector(const BodyState& s) { return s.vector(); }
+  static BodyState to_body(const Params& /*p*/, const Vector& y) { return BodyState::from_vector(y); }
+  static Dynamics dynamics(const Params& /*p*/, const Rhs& rhs, const BodyState& s) {
+    const Vec<8> q = rhs.unknowns(s.vector());
+    return {q[0], q[1], q[2], q[3], q[4], q[5], q[6], q[7]};
+  }
+};
+
+/// The parts of a run shared by fixed-step and adaptive stepping.
+template <class Case>
+class CaseRun : public Run {
+ protected:
+  using Model = CaseModel<Case>;
+  using Vector = typename Model::Vector;
+
+  CaseRun(const Params& p, const State& initial, const SimulationOptions& o)
+      : Run(p, initial, o),
+        rhs_(Model::make_rhs(p, o)),
+        project_(Model::can_drift && o.stabilization == Stabilization::projection) {}
+
+  Dynamics dynamics(const BodyState& s) const override { return Model::dynamics(params, rhs_, s); }
+
+  /// Projects a Case 1 vector onto the constraint when asked to; fails the run if the
+  /// projection does not converge.
+  void stabilize(Vector& y, double t, double h) const {
+    if constexpr (Model::can_drift) {
+      if (project_ && !project_onto_constraint(params, y).converged)
+        fail(options, "the projection onto the pin constraint did not converge",
+             "try a smaller --dt or tighter --rtol/--atol", t, h);
+    }
+  }
+
+  /// Lets Ctrl-C stop long runs between steps.
+  void poll_interrupt() {
+    if ((++poll_ & 4095) == 0) throw_if_interrupted();
+  }
+
+  typename Model::Rhs rhs_;
+  bool project_;
+  unsigned poll_ = 0;
+};
+
+/// Fixed steps on the grid t_k = k dt. A sample between grid points is a shorter step
+/// from the grid point before it, taken on a copy, so the grid run is never disturbed.
+template <class Case, class Stepper>
+class FixedStepRun final : public CaseRun<Case> {
+  using Base = CaseRun<Case>;
+  using typename Base::Model;
+  using typename Base::Vector;
+
+ public:
+  FixedStepRun(const Params& p, const State& initial, const SimulationOptions& o) : Base(p, initial, o) {
+    y_ = Model::to_vector(this->start);
+    this->stabilize(y_, 0, o.dt);
+  }
+
+  BodyState advance(double t) override {
+    const double dt = this->options.dt;
+    const double tolerance = 1e-9 * dt + 8 * std::numeric_limits<double>::epsilon() * t;
+    auto n = static_cast<std::int64_t>(std::llround(t / dt));
+    const bool on_grid = std::fabs(t - static_cast<double>(n) * dt) <= tolerance;
+    if (!on_grid) n = static_cast<std::int64_t>(std::floor(t / dt));
+    while (k_ < n) {
+      take(y_, static_cast<double>(k_) * dt, dt);
+      ++k_;
+      this->poll_interrupt();
+    }
+    if (on_grid) return Model::to_body(this->params, y_);
+    Vector sample = y_;
+    const double t_grid = static_cast<double>(k_) * dt;
+    take(sample, t_grid, t - t_grid);
+    return Model::to_body(this->params, sample);
+  }
+
+  [[nodiscard]] ode::Counters counters() const override { return stepper_.counters(); }
+
+ private:
+  void take(Vector& y, double t, double h) {
+    const ode::StepStatus status = stepper_.step(this->rhs_, t, h, y);
+    if (status != ode::StepStatus::ok) fail(this->options, status, t, h);
+    this->stabilize(y, t + h, h);
+  }
+
+  Stepper stepper_;
+  Vector y_;
+  std::int64_t k_ = 0;
+};
+
+/// Adaptive steps chosen by the error controller; samples come from dense output.
+template <class Case, class Stepper>
+class AdaptiveRun final : public CaseRun<Case> {
+  using Base = CaseRun<Case>;
+  using typename Base::Model;
+  using typename Base::Vector;
+
+ public:
+  AdaptiveRun(const Params& p, const State& initial, const SimulationOptions& o)
+      : Base(p, initial, o), stepper_(settings(o)) {
+    Vector y0 = Model::to_vector(this->start);
+    this->stabilize(y0, 0, o.dt);
+    stepper_.start(this->rhs_, 0.0, y0);
+  }
+
+  BodyState advance(double t) override {
+    while (stepper_.t() < t) {
+      const ode::StepStatus status = stepper_.step(this->rhs_);
+      if (status != ode::StepStatus::ok)
+        fail(this->options, status, stepper_.t(), stepper_.next_step());
+      if (this->project_) {
+        Vector y = stepper_.y();
+        this->stabilize(y, stepper_.t(), stepper_.last_step());
+        stepper_.replace_state(this->rhs_, y);
+      }
+      this->poll_interrupt();
+    }
+    Vector sample;
+    stepper_.dense(this->rhs_, t, sample);
+    if (t != stepper_.t()) this->stabilize(sample, t, stepper_.last_step());
+    return Model::to_body(this->params, sample);
+  }
+
+  [[nodiscard]] ode::Counters counters() const override { return stepper_.counters(); }
+
+ private:
+  static typename Stepper::Settings settings(const SimulationOptions& o) {
+    typename Stepper::Settings s;
+    s.tolerances = {o.rtol, o.atol};
+    s.first_step = o.dt;
+    return s;
+  }
+
+  Stepper stepper_;
+};
+
+template <class Case>
+std::unique_ptr<Run> make_run(const Params& p, const State& initial, const SimulationOptions& o) {
+  constexpr int n = state_size<Case>;
+  switch (o.integrator) {
+    case IntegratorKind::euler:
+      return std::make_unique<FixedStepRun<Case, ode::ExplicitEuler<double, n>>>(p, initial, o);
+    case IntegratorKind::symplectic_euler:
+      return std::make_unique<FixedStepRun<Case, ode::SymplecticEuler<double, n>>>(p, initial, o);
+    case IntegratorKind::rk4: return std::make_unique<FixedStepRun<Case, ode::Rk4<double, n>>>(p, initial, o);
+    case IntegratorKind::gauss2:
+      return std::make_unique<FixedStepRun<Case, ode::GaussLegendre2<double, n>>>(p, initial, o);
+    case IntegratorKind::dopri5: return std::make_unique<AdaptiveRun<Case, ode::Dopri5<double, n>>>(p, initial, o);
+    case IntegratorKind::dop853: return std::make_unique<AdaptiveRun<Case, ode::Dop853<double, n>>>(p, initial, o);
+  }
+  throw Error::failure("unknown integrator kind");
+}
+
+/// Runs a callable and adds its duration to `seconds`.
+template <class F>
+auto timed(double& seconds, F&& f) {
+  const auto start = std::chrono::steady_clock::now();
+  struct Add {
+    double& total;
+    std::chrono::steady_clock::time_point start;
+    ~Add() { total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); }
+  } add{seconds, start};
+  return f();
+}
+
+}  // namespace
+
+struct Simulation::Impl {
+  std::unique_ptr<Run> run;
+};
+
+// --- Simulation ---------------------------------------------------------------------
+
+Simulation::Simulation(const Params& params, const State& initial, const SimulationOptions& options)
+    : impl_(std::make_unique<Impl>()) {
+  options.validate();
+  switch (options.case_id) {
+    case 1: impl_->run = make_run<Case1>(params, initial, options); break;
+    case 2: impl_->run = make_run<Case2>(params, initial, options); break;
+    default: impl_->run = make_run<Case3>(params, initial, options); break;
+  }
+}
+
+Simulation::~Simulation() = default;
+Simulation::Simulation(Simulation&&) noexcept = default;
+Simulation& Simulation::operator=(Simulation&&) noexcept = default;
+
+BodyState Simulation::state_at(double t) {
+  Run& run = *impl_->run;
+  if (!(t >= run.last_t && t <= run.options.duration))
+    throw Error::failure("state_at(" + format_roundtrip(t) + "): times must be non-decreasing and within [0, " +
+                         format_roundtrip(run.options.duration) + "] s");
+  const BodyState s = timed(run.stats.wall_seconds, [&] { return run.advance(t); });
+  run.last_t = t;
+  const ode::Counters c = run.counters();
+  run.stats.steps_accepted = c.steps_accepted;
+  run.stats.steps_rejected = c.steps_rejected;
+  run.stats.rhs_evaluations = c.rhs_evaluations;
+  const double energy_error = std::fabs(invariants(run.params, s).energy - run.energy0) / run.scale;
+  const double constraint = constraint_error(run.params, s).position.norm();
+  run.stats.max_energy_error = std::max(run.stats.max_energy_error, energy_error);
+  run.stats.max_constraint_error = std::max(run.stats.max_constraint_error, constraint);
+  return s;
+}
+
+Dynamics Simulation::dynamics(const BodyState& state) {
+  Run& run = *impl_->run;
+  ++run.stats.force_evaluations;
+  return timed(run.stats.wall_seconds, [&] { return run.dynamics(state); });
+}
+
+const SimulationStats& Simulation::stats() const { return impl_->run->stats; }
+const Params& Simulation::params() const { return impl_->run->params; }
+const SimulationOptions& Simulation::options() const { return impl_->run->options; }
+
+}  // namespace linkage
