@@ -1,0 +1,427 @@
+#include "lesson/markdown.hpp"
+
+#include <array>
+#include <vector>
+
+#include "report/latex_math.hpp"
+#include "report/text_layout.hpp"
+
+namespace linkage::lesson {
+namespace {
+
+// --- blocks ------------------------------------------------------------------------
+
+struct Block {
+  enum class Kind { paragraph, heading, item, quote, code, math, table } kind = Kind::paragraph;
+  std::string text;       // joined lines (paragraph, heading, item, quote) or raw lines (code, math, table)
+  int level = 0;          // heading level, or list nesting (leading spaces / 2)
+  std::string marker;     // "-" or "3." for items
+};
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
+  return s;
+}
+
+std::vector<std::string_view> split_lines(std::string_view text) {
+  std::vector<std::string_view> lines;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t end = text.find('\n', start);
+    if (end == std::string_view::npos) {
+      if (start < text.size()) lines.push_back(text.substr(start));
+      break;
+    }
+    lines.push_back(text.substr(start, end - start));
+    start = end + 1;
+  }
+  return lines;
+}
+
+std::size_t leading_spaces(std::string_view line) {
+  std::size_t n = 0;
+  while (n < line.size() && line[n] == ' ') ++n;
+  return n;
+}
+
+// "- item", "* item", "12. item": the marker and where the text starts.
+bool list_marker(std::string_view line, std::string& marker, std::size_t& text_start) {
+  const std::size_t indent = leading_spaces(line);
+  std::string_view rest = line.substr(indent);
+  if (rest.size() >= 2 && (rest[0] == '-' || rest[0] == '*' || rest[0] == '+') && rest[1] == ' ') {
+    marker = "-";
+    text_start = indent + 2;
+    return true;
+  }
+  std::size_t digits = 0;
+  while (digits < rest.size() && std::isdigit(static_cast<unsigned char>(rest[digits]))) ++digits;
+  if (digits > 0 && digits + 1 < rest.size() && rest[digits] == '.' && rest[digits + 1] == ' ') {
+    marker = std::string(rest.substr(0, digits + 1));
+    text_start = indent + digits + 2;
+    return true;
+  }
+  return false;
+}
+
+std::vector<Block> parse_blocks(std::string_view markdown) {
+  std::vector<Block> blocks;
+  const std::vector<std::string_view> lines = split_lines(markdown);
+  Block* open = nullptr;  // a paragraph, item or quote still taking lines
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const std::string_view line = lines[i];
+    const std::string_view t = trim(line);
+    if (t.empty()) {
+      open = nullptr;
+      continue;
+    }
+    if (t.starts_with("```") || t.starts_with("$$")) {
+      const bool code = t.starts_with("```");
+      Block b{code ? Block::Kind::code : Block::Kind::math, "", 0, ""};
+      const std::string_view fence = code ? "```" : "$$";
+      // A one-line math block: $$ ... $$
+      if (!code && t.size() > 4 && t.ends_with("$$")) {
+        b.text = std::string(trim(t.substr(2, t.size() - 4)));
+      } else {
+        if (!code && t.size() > 2) b.text = std::string(trim(t.substr(2))) + "\n";
+        for (++i; i < lines.size(); ++i) {
+          const std::string_view inner = trim(lines[i]);
+          if (inner.starts_with(fence) || (!code && inner.ends_with("$$"))) {
+            if (!code && inner.size() > 2) b.text += std::string(trim(inner.substr(0, inner.size() - 2))) + "\n";
+            break;
+          }
+          b.text += std::string(lines[i]) + "\n";
+        }
+        while (!b.text.empty() && b.text.back() == '\n') b.text.pop_back();
+      }
+      blocks.push_back(std::move(b));
+      open = nullptr;
+      continue;
+    }
+    if (t.front() == '#') {
+      std::size_t level = 0;
+      while (level < t.size() && t[level] == '#') ++level;
+      blocks.push_back({Block::Kind::heading, std::string(trim(t.substr(level))), static_cast<int>(level), ""});
+      open = nullptr;
+      continue;
+    }
+    if (t.front() == '|') {
+      if (!blocks.empty() && blocks.back().kind == Block::Kind::table && open == &blocks.back())
+        blocks.back().text += "\n" + std::string(t);
+      else
+        blocks.push_back({Block::Kind::table, std::string(t), 0, ""});
+      open = &blocks.back();
+      continue;
+    }
+    if (t.front() == '>') {
+      const std::string_view content = trim(t.substr(1));
+      if (open != nullptr && open->kind == Block::Kind::quote) {
+        open->text += content.empty() ? "\n" : (open->text.empty() || open->text.back() == '\n' ? "" : " ") + std::string(content);
+      } else {
+        blocks.push_back({Block::Kind::quote, std::string(content), 0, ""});
+        open = &blocks.back();
+      }
+      continue;
+    }
+    std::string marker;
+    std::size_t text_start = 0;
+    if (list_marker(line, marker, text_start)) {
+      blocks.push_back({Block::Kind::item, std::string(trim(line.substr(text_start))),
+                        static_cast<int>(leading_spaces(line) / 2), marker});
+      open = &blocks.back();
+      continue;
+    }
+    if (open != nullptr && open->kind != Block::Kind::table) {
+      open->text += " " + std::string(t);
+      continue;
+    }
+    blocks.push_back({Block::Kind::paragraph, std::string(t), 0, ""});
+    open = &blocks.back();
+  }
+  return blocks;
+}
+
+// --- inline markup for a terminal ---------------------------------------------------
+
+std::string inline_text(std::string_view s) {
+  std::string out;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const char c = s[i];
+    if (c == '*' && i + 1 < s.size() && s[i + 1] == '*') { ++i; continue; }
+    if (c == '_' && i + 1 < s.size() && s[i + 1] == '_') { ++i; continue; }
+    if (c == '`') continue;
+    if (c == '$') continue;
+    if (c == '!' && i + 1 < s.size() && s[i + 1] == '[') continue;  // an image reads like a link
+    if (c == '[') {
+      const std::size_t close = s.find("](", i);
+      const std::size_t end = close == std::string_view::npos ? close : s.find(')', close);
+      if (end != std::string_view::npos) {
+        out += inline_text(s.substr(i + 1, close - i - 1)) + " (" + std::string(s.substr(close + 2, end - close - 2)) + ")";
+        i = end;
+        continue;
+      }
+    }
+    out += c;
+  }
+  return out;
+}
+
+void append_lines(std::string& out, const std::vector<std::string>& lines) {
+  for (const std::string& l : lines) out += l + "\n";
+}
+
+// --- inline markup for LaTeX --------------------------------------------------------
+
+// One code point of UTF-8 at s[i]; sets `length`.
+char32_t decode(std::string_view s, std::size_t i, std::size_t& length) {
+  const auto lead = static_cast<unsigned char>(s[i]);
+  length = lead < 0x80 ? 1 : lead < 0xE0 ? 2 : lead < 0xF0 ? 3 : 4;
+  if (i + length > s.size()) {
+    length = 1;
+    return lead;
+  }
+  char32_t c = length == 1 ? lead : length == 2 ? (lead & 0x1Fu) : length == 3 ? (lead & 0x0Fu) : (lead & 0x07u);
+  for (std::size_t k = 1; k < length; ++k) c = (c << 6) | (static_cast<unsigned char>(s[i + k]) & 0x3Fu);
+  return c;
+}
+
+struct MathSymbol {
+  char32_t code;
+  std::string_view latex;
+};
+constexpr std::array<MathSymbol, 33> kGreek{{
+    {U'ẋ', "\\dot{x}"}, {U'ẍ', "\\ddot{x}"}, {U'ẏ', "\\dot{y}"}, {U'ÿ', "\\ddot{y}"},
+    {U'α', "\\alpha"}, {U'β', "\\beta"},   {U'γ', "\\gamma"}, {U'δ', "\\delta"}, {U'ε', "\\varepsilon"},
+    {U'θ', "\\theta"}, {U'λ', "\\lambda"}, {U'μ', "\\mu"},    {U'π', "\\pi"},    {U'ρ', "\\rho"},
+    {U'σ', "\\sigma"}, {U'τ', "\\tau"},    {U'φ', "\\varphi"}, {U'ω', "\\omega"}, {U'Δ', "\\Delta"},
+    {U'Σ', "\\Sigma"}, {U'Ω', "\\Omega"},  {U'×', "\\times"}, {U'−', "-"},      {U'≈', "\\approx"},
+    {U'≤', "\\le"},    {U'≥', "\\ge"},     {U'→', "\\to"},    {U'·', "\\cdot"}, {U'‖', "\\|"},
+    {U'≠', "\\neq"},   {U'∞', "\\infty"},  {U'∝', "\\propto"}, {U'±', "\\pm"},
+}};
+
+std::string_view greek(char32_t c) {
+  for (const MathSymbol& g : kGreek)
+    if (g.code == c) return g.latex;
+  return {};
+}
+
+// Subscript (₀..₉) or superscript (⁰ ¹ ² ³ ⁴..⁹) digit, or -1.
+int script_digit(char32_t c, bool& superscript) {
+  superscript = false;
+  if (c >= U'₀' && c <= U'₉') return static_cast<int>(c - U'₀');
+  superscript = true;
+  if (c == U'⁰') return 0;
+  if (c == U'¹') return 1;
+  if (c == U'²') return 2;
+  if (c == U'³') return 3;
+  if (c >= U'⁴' && c <= U'⁹') return static_cast<int>(c - U'⁴') + 4;
+  return -1;
+}
+
+// Converts plain characters (no markup) to text-mode LaTeX.
+std::string latex_chars(std::string_view s) {
+  std::string out;
+  std::size_t i = 0;
+  while (i < s.size()) {
+    std::size_t length = 0;
+    const char32_t c = decode(s, i, length);
+    std::string base;
+    if (const std::string_view g = greek(c); !g.empty()) base = std::string(g);
+    else if (c < 0x80 && std::isalpha(static_cast<int>(c))) base = std::string(1, static_cast<char>(c));
+    // Accents and scripts that follow the base.
+    std::size_t j = i + length;
+    std::string math = base;
+    bool symbol = !base.empty();
+    while (symbol && j < s.size()) {
+      std::size_t n = 0;
+      const char32_t next = decode(s, j, n);
+      if (next == 0x307) math = "\\dot{" + math + "}";
+      else if (next == 0x308) math = "\\ddot{" + math + "}";
+      else break;
+      j += n;
+    }
+    std::string scripts;
+    while (j < s.size()) {
+      std::size_t n = 0;
+      bool superscript = false;
+      const int digit = script_digit(decode(s, j, n), superscript);
+      if (digit < 0) break;
+      scripts += std::string(superscript ? "^{" : "_{") + std::to_string(digit) + "}";
+      j += n;
+    }
+    const bool needs_math = !greek(c).empty() || math != base || !scripts.empty();
+    if (needs_math) {
+      if (base.empty()) base = "{}";  // a script with nothing before it
+      out += "$" + (math.empty() ? base : math) + scripts + "$";
+      i = j;
+      continue;
+    }
+    if (c < 0x80) out += latex_escape(std::string_view(&s[i], 1));
+    else out += std::string(s.substr(i, length));  // passes through (needs a Unicode engine)
+    i += length;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string inline_latex(std::string_view s) {
+  std::string out;
+  std::size_t plain_start = 0;
+  auto flush = [&](std::size_t end) {
+    out += latex_chars(s.substr(plain_start, end - plain_start));
+  };
+  for (std::size_t i = 0; i < s.size();) {
+    auto closing = [&](std::string_view delimiter, std::size_t from) { return s.find(delimiter, from); };
+    if (s[i] == '$') {
+      const std::size_t end = closing("$", i + 1);
+      if (end != std::string_view::npos) {
+        flush(i);
+        out += std::string(s.substr(i, end - i + 1));
+        i = plain_start = end + 1;
+        continue;
+      }
+    }
+    if (s[i] == '`') {
+      const std::size_t end = closing("`", i + 1);
+      if (end != std::string_view::npos) {
+        flush(i);
+        out += "\\texttt{" + latex_escape(s.substr(i + 1, end - i - 1)) + "}";
+        i = plain_start = end + 1;
+        continue;
+      }
+    }
+    if (s.substr(i, 2) == "**") {
+      const std::size_t end = closing("**", i + 2);
+      if (end != std::string_view::npos) {
+        flush(i);
+        out += "\\textbf{" + inline_latex(s.substr(i + 2, end - i - 2)) + "}";
+        i = plain_start = end + 2;
+        continue;
+      }
+    }
+    if (s[i] == '*' && i + 1 < s.size() && s[i + 1] != ' ') {
+      const std::size_t end = closing("*", i + 1);
+      if (end != std::string_view::npos && s[end - 1] != ' ') {
+        flush(i);
+        out += "\\emph{" + inline_latex(s.substr(i + 1, end - i - 1)) + "}";
+        i = plain_start = end + 1;
+        continue;
+      }
+    }
+    if (s[i] == '[' || (s[i] == '!' && i + 1 < s.size() && s[i + 1] == '[')) {
+      const std::size_t open = s[i] == '!' ? i + 1 : i;
+      const std::size_t mid = closing("](", open);
+      const std::size_t end = mid == std::string_view::npos ? mid : closing(")", mid);
+      if (end != std::string_view::npos) {
+        flush(i);
+        out += "\\href{" + std::string(s.substr(mid + 2, end - mid - 2)) + "}{" +
+               inline_latex(s.substr(open + 1, mid - open - 1)) + "}";
+        i = plain_start = end + 1;
+        continue;
+      }
+    }
+    ++i;
+  }
+  flush(s.size());
+  return out;
+}
+
+std::string markdown_to_text(std::string_view markdown, std::size_t width) {
+  std::string out;
+  bool first = true;
+  Block::Kind previous = Block::Kind::paragraph;
+  for (const Block& b : parse_blocks(markdown)) {
+    // Items of one list stay together; everything else is separated by a blank line.
+    if (!first && !(b.kind == Block::Kind::item && previous == Block::Kind::item)) out += "\n";
+    first = false;
+    previous = b.kind;
+    switch (b.kind) {
+      case Block::Kind::paragraph: append_lines(out, wrap_words(inline_text(b.text), "", width)); break;
+      case Block::Kind::heading: {
+        const std::string title = inline_text(b.text);
+        out += title + "\n" + std::string(display_width(title), b.level <= 1 ? '=' : '-') + "\n";
+        break;
+      }
+      case Block::Kind::item: {
+        const std::string indent(static_cast<std::size_t>(2 * b.level) + b.marker.size() + 3, ' ');
+        std::vector<std::string> lines = wrap_words(inline_text(b.text), indent, width);
+        if (!lines.empty())
+          lines[0] = std::string(static_cast<std::size_t>(2 * b.level) + 2, ' ') + b.marker + " " + lines[0].substr(indent.size());
+        append_lines(out, lines);
+        break;
+      }
+      case Block::Kind::quote: {
+        for (std::string_view paragraph : split_lines(b.text)) append_lines(out, wrap_words(inline_text(paragraph), "  | ", width));
+        break;
+      }
+      case Block::Kind::code:
+      case Block::Kind::math:
+        for (std::string_view line : split_lines(b.text)) out += "    " + std::string(line) + "\n";
+        break;
+      case Block::Kind::table: out += b.text + "\n"; break;
+    }
+  }
+  return out;
+}
+
+std::string markdown_to_latex(std::string_view markdown) {
+  std::string out;
+  const std::vector<Block> blocks = parse_blocks(markdown);
+  for (std::size_t k = 0; k < blocks.size(); ++k) {
+    const Block& b = blocks[k];
+    switch (b.kind) {
+      case Block::Kind::paragraph: out += inline_latex(b.text) + "\n\n"; break;
+      case Block::Kind::heading:
+        out += std::string(b.level <= 1 ? "\\subsection*{" : "\\subsubsection*{") + inline_latex(b.text) + "}\n\n";
+        break;
+      case Block::Kind::item: {
+        const bool numbered = b.marker != "-";
+        const char* env = numbered ? "enumerate" : "itemize";
+        out += std::string("\\begin{") + env + "}\n";
+        for (; k < blocks.size() && blocks[k].kind == Block::Kind::item && (blocks[k].marker != "-") == numbered; ++k)
+          out += "  \\item " + inline_latex(blocks[k].text) + "\n";
+        --k;
+        out += std::string("\\end{") + env + "}\n\n";
+        break;
+      }
+      case Block::Kind::quote: {
+        out += "\\begin{quote}\n";
+        for (std::string_view paragraph : split_lines(b.text)) out += inline_latex(paragraph) + "\n\n";
+        out += "\\end{quote}\n\n";
+        break;
+      }
+      case Block::Kind::code: out += "\\begin{verbatim}\n" + b.text + "\n\\end{verbatim}\n\n"; break;
+      case Block::Kind::math: out += "\\[\n" + b.text + "\n\\]\n\n"; break;
+      case Block::Kind::table: {
+        std::vector<std::vector<std::string>> rows;
+        for (std::string_view line : split_lines(b.text)) {
+          std::string_view t = trim(line);
+          if (t.starts_with('|')) t.remove_prefix(1);
+          if (t.ends_with('|')) t.remove_suffix(1);
+          if (t.find_first_not_of("-:| ") == std::string_view::npos) continue;  // the |---| rule
+          std::vector<std::string> cells;
+          std::size_t start = 0;
+          for (std::size_t bar = t.find('|'); ; bar = t.find('|', start)) {
+            cells.push_back(inline_latex(trim(t.substr(start, bar == std::string_view::npos ? bar : bar - start))));
+            if (bar == std::string_view::npos) break;
+            start = bar + 1;
+          }
+          rows.push_back(std::move(cells));
+        }
+        if (rows.empty()) break;
+        out += "\\begin{tabular}{" + std::string(rows.front().size(), 'l') + "}\n";
+        for (std::size_t r = 0; r < rows.size(); ++r) {
+          for (std::size_t c = 0; c < rows[r].size(); ++c) out += (c > 0 ? " & " : "  ") + rows[r][c];
+          out += " \\\\\n";
+          if (r == 0) out += "  \\hline\n";
+        }
+        out += "\\end{tabular}\n\n";
+        break;
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace linkage::lesson

@@ -1,0 +1,29 @@
+#pragma once
+// Every key a lesson file may hold, per table, with its type, default and meaning. The
+// parser accepts exactly these, and lessons/README.md documents exactly these (a test
+// checks that every key here appears there).
+#include <span>
+#include <string_view>
+
+#include "lesson/toml_reader.hpp"
+
+namespace linkage::lesson {
+
+/// Top-level keys of a lesson file.
+[[nodiscard]] std::span<const KeySpec> lesson_keys();
+/// Keys every step has ("kind", "heading").
+[[nodiscard]] std::span<const KeySpec> common_step_keys();
+/// Keys of a simulation run: allowed on simulate, render, plot and compare steps and in
+/// their `runs` entries (besides the thirteen input names, which override the inputs
+/// for that run only).
+[[nodiscard]] std::span<const KeySpec> run_keys();
+/// Keys only a `runs` entry has ("label", "series").
+[[nodiscard]] std::span<const KeySpec> run_entry_keys();
+/// The keys particular to a kind of step (without the common and run keys).
+[[nodiscard]] std::span<const KeySpec> step_keys(std::string_view kind);
+/// Whether a kind of step takes the run keys.
+[[nodiscard]] bool takes_run_keys(std::string_view kind);
+/// One line saying what a kind of step does.
+[[nodiscard]] std::string_view step_summary(std::string_view kind);
+
+}  // namespace linkage::lesson

@@ -1,0 +1,32 @@
+#pragma once
+// Lesson text with computed values: "{{I_zz_P}}" or "{{1000 * I_zz_P : 4}}" is replaced
+// by the expression's value at the step's inputs, to 6 (or the given number of)
+// significant digits. Lesson Markdown has no other use for "{{", so there is no escape;
+// an unclosed "{{" is an error.
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "lesson/expression.hpp"
+
+namespace linkage::lesson {
+
+class TextTemplate {
+ public:
+  TextTemplate() = default;
+  /// Parses the placeholders of `text`; throws Error::input starting with `origin`.
+  static TextTemplate parse(std::string_view text, const std::string& origin);
+  /// The text with every placeholder replaced by its value at `values`.
+  [[nodiscard]] std::string render(const QuantityValues& values) const;
+  [[nodiscard]] bool empty() const { return parts_.empty(); }
+
+ private:
+  struct Part {
+    std::string literal;             // text before the placeholder
+    std::vector<Expression> value;   // zero or one expression
+    int digits = 6;
+  };
+  std::vector<Part> parts_;
+};
+
+}  // namespace linkage::lesson

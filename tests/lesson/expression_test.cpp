@@ -1,0 +1,101 @@
+// Answer expressions and {{...}} placeholders over the named quantities.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/error.hpp"
+#include "lesson/expression.hpp"
+#include "lesson/text_template.hpp"
+#include "support/test_support.hpp"
+
+namespace linkage::lesson {
+namespace {
+
+double eval(const std::string& text, const Inputs& inputs = Inputs{}) {
+  return Expression::parse(text, "test").evaluate(evaluate_quantities(inputs));
+}
+
+std::string error_of(const std::string& text) {
+  try {
+    (void)Expression::parse(text, "f.toml:3:10: answer");
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::bad_input);
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Expression, ArithmeticFollowsPrecedence) {
+  EXPECT_DOUBLE_EQ(eval("1 + 2 * 3"), 7.0);
+  EXPECT_DOUBLE_EQ(eval("(1 + 2) * 3"), 9.0);
+  EXPECT_DOUBLE_EQ(eval("2 ^ 3 ^ 2"), 512.0);  // right-associative
+  EXPECT_DOUBLE_EQ(eval("-2 ^ 2"), -4.0);      // unary minus binds looser than ^
+  EXPECT_DOUBLE_EQ(eval("8 / 4 / 2"), 1.0);    // left-associative
+  EXPECT_DOUBLE_EQ(eval("1.5e-3 * 2"), 3e-3);
+  EXPECT_DOUBLE_EQ(eval("hypot(3, 4)"), 5.0);
+  EXPECT_DOUBLE_EQ(eval("atan2(1, 1) * 4"), std::acos(-1.0));
+}
+
+TEST(Expression, QuantitiesMatchTheSpecExample) {
+  const auto& derived = test::spec_example()["derived"];
+  const auto& solution = test::spec_example()["solution"];
+  const double tol = 1e-10;
+  EXPECT_NEAR(eval("I_zz_C"), test::number(derived["I_zz_C"]), tol * 1e-3);
+  EXPECT_NEAR(eval("I_zz_P"), test::number(derived["I_zz_P"]), tol * 1e-3);
+  EXPECT_NEAR(eval("x_P"), test::number(derived["x_P"]), tol);
+  EXPECT_NEAR(eval("y2"), test::number(derived["y2"]), tol);
+  EXPECT_NEAR(eval("energy"), test::number(derived["energy"]), tol);
+  EXPECT_NEAR(eval("theta1_ddot") / test::number(solution["theta1_ddot"]), 1.0, 1e-9);
+  EXPECT_NEAR(eval("F_y") / test::number(solution["F_y"]), 1.0, 1e-9);
+  // The parallel-axis theorem, written as a student would.
+  EXPECT_NEAR(eval("I_zz_C + m * (L/2 - b)^2"), eval("I_zz_P"), 1e-18);
+  EXPECT_NEAR(eval("x_com"), (1.0 + test::number(derived["x2"])) / 2, tol);
+}
+
+TEST(Expression, QuantitiesFollowTheInputs) {
+  Inputs inputs;
+  inputs.set(*find_input_key("m"), 0.2, "test");
+  EXPECT_NEAR(eval("I_zz_C", inputs), 0.2 * (0.01 + 0.09) / 12, 1e-15);
+}
+
+TEST(Expression, ConstantAndSingleQuantity) {
+  EXPECT_TRUE(Expression::parse("2 * 3", "t").is_constant());
+  EXPECT_FALSE(Expression::parse("2 * m", "t").is_constant());
+  ASSERT_NE(Expression::parse("I_zz_P", "t").single_quantity(), nullptr);
+  EXPECT_EQ(Expression::parse(" I_zz_P ", "t").single_quantity()->unit, "kg m^2");
+  EXPECT_EQ(Expression::parse("2 * I_zz_P", "t").single_quantity(), nullptr);
+}
+
+TEST(Expression, ErrorsNameThePlaceAndSuggest) {
+  EXPECT_EQ(error_of("I_zzP"), "f.toml:3:10: answer: unknown name 'I_zzP' at character 1 (did you mean 'I_zz_P'?); "
+                               "names: " + [] {
+                                 std::string names;
+                                 for (const auto& q : kQuantities) names += (names.empty() ? "" : ", ") + std::string(q.name);
+                                 return names;
+                               }());
+  EXPECT_NE(error_of("sinn(1)").find("unknown function 'sinn' at character 1 (did you mean 'sin'?)"), std::string::npos);
+  EXPECT_NE(error_of("1 +").find("the expression ends too early at character 4 of '1 +'"), std::string::npos);
+  EXPECT_NE(error_of("(1 + 2").find("expected ')' at character 7"), std::string::npos);
+  EXPECT_NE(error_of("1 2").find("unexpected '2' at character 3"), std::string::npos);
+  EXPECT_NE(error_of("hypot(1)").find("hypot takes 2 arguments, got 1"), std::string::npos);
+  EXPECT_NE(error_of("").find("the expression is empty"), std::string::npos);
+  EXPECT_NE(error_of(std::string(40, '(') + "1" + std::string(40, ')')).find("nested too deeply"), std::string::npos);
+}
+
+TEST(TextTemplate, ReplacesPlaceholdersWithValues) {
+  const QuantityValues v = evaluate_quantities(Inputs{});
+  EXPECT_EQ(TextTemplate::parse("D = {{D}} m", "t").render(v), "D = 0.11 m");
+  EXPECT_EQ(TextTemplate::parse("I = {{ I_zz_P : 5 }} kg m^2", "t").render(v), "I = 0.0020433 kg m^2");
+  EXPECT_EQ(TextTemplate::parse("{{1000*I_zz_C:3}} and {{m}}", "t").render(v), "0.833 and 0.1");
+  EXPECT_EQ(TextTemplate::parse("no placeholders", "t").render(v), "no placeholders");
+}
+
+TEST(TextTemplate, RejectsUnclosedAndBadDigits) {
+  EXPECT_THROW((void)TextTemplate::parse("a {{D", "t"), Error);
+  EXPECT_THROW((void)TextTemplate::parse("a {{D:0}}", "t"), Error);
+  EXPECT_THROW((void)TextTemplate::parse("a {{D:x}}", "t"), Error);
+  EXPECT_THROW((void)TextTemplate::parse("a {{Dx}}", "t"), Error);
+}
+
+}  // namespace
+}  // namespace linkage::lesson

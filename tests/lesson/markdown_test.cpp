@@ -1,0 +1,77 @@
+// Lesson Markdown for a terminal (wrapped) and for LaTeX (compilable by pdflatex).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <sstream>
+
+#include "lesson/markdown.hpp"
+#include "report/text_layout.hpp"
+
+namespace linkage::lesson {
+namespace {
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+TEST(MarkdownText, ParagraphsWrapToTheWidth) {
+  const std::string text =
+      "The two blocks are identical, so their moments of inertia about their own centres of mass are equal: "
+      "**I = m (w² + L²) / 12**, with `m` the mass and θ₁ the angle.";
+  for (std::size_t width : {40u, 60u, 80u}) {
+    const std::string out = markdown_to_text(text, width);
+    for (const std::string& line : lines_of(out)) EXPECT_LE(display_width(line), width) << line;
+    EXPECT_EQ(out.find("**"), std::string::npos);
+    EXPECT_EQ(out.find('`'), std::string::npos);
+    std::string joined = out;
+    std::replace(joined.begin(), joined.end(), '\n', ' ');
+    EXPECT_NE(joined.find("I = m (w² + L²) / 12"), std::string::npos);
+  }
+}
+
+TEST(MarkdownText, ListsQuotesHeadingsAndBlocks) {
+  const std::string out = markdown_to_text(
+      "# Spot the mistake\n\nIntro line\ncontinues here.\n\n- first item that is long enough to wrap around the "
+      "narrow terminal width\n- second\n\n> the text says 2.0433 x 10^-4\n\n```\ncode  stays\n```\n\n$$\nA q = B\n$$\n\n"
+      "See [the spec](spec.txt).",
+      40);
+  const std::vector<std::string> lines = lines_of(out);
+  ASSERT_GE(lines.size(), 10u);
+  EXPECT_EQ(lines[0], "Spot the mistake");
+  EXPECT_EQ(lines[1], "================");
+  EXPECT_EQ(lines[3], "Intro line continues here.");
+  EXPECT_EQ(lines[5].rfind("  - first item", 0), 0u);
+  EXPECT_EQ(lines[6].rfind("    ", 0), 0u);  // hanging indent
+  EXPECT_NE(out.find("  - second\n"), std::string::npos);
+  EXPECT_NE(out.find("  | the text says 2.0433 x 10^-4\n"), std::string::npos);
+  EXPECT_NE(out.find("    code  stays\n"), std::string::npos);
+  EXPECT_NE(out.find("    A q = B\n"), std::string::npos);
+  EXPECT_NE(out.find("See the spec (spec.txt)."), std::string::npos);
+}
+
+TEST(MarkdownLatex, ConvertsMarkupAndSymbols) {
+  EXPECT_EQ(inline_latex("**bold** and *em* and `a_b`"), "\\textbf{bold} and \\emph{em} and \\texttt{a\\_b}");
+  EXPECT_EQ(inline_latex("θ₁ = 0.1 rad"), "$\\theta_{1}$ = 0.1 rad");
+  EXPECT_EQ(inline_latex("θ̈₂ and ẍ₁"), "$\\ddot{\\theta}_{2}$ and $\\ddot{x}_{1}$");
+  EXPECT_EQ(inline_latex("m² × 2 − 1 ≈ 0"), "$m^{2}$ $\\times$ 2 $-$ 1 $\\approx$ 0");
+  EXPECT_EQ(inline_latex("50% of $x_1$ & #3"), "50\\% of $x_1$ \\& \\#3");
+  EXPECT_EQ(inline_latex("[spec](a_b.txt)"), "\\href{a_b.txt}{spec}");
+  EXPECT_EQ(inline_latex("m * D^2"), "m * D\\textasciicircum{}2");
+}
+
+TEST(MarkdownLatex, Blocks) {
+  const std::string out = markdown_to_latex("# Title\n\n- a\n- b\n\n1. one\n2. two\n\n> quote\n\n$$\nx = 1\n$$\n\n"
+                                            "| a | b |\n|---|---|\n| 1 | 2 |\n");
+  EXPECT_NE(out.find("\\subsection*{Title}"), std::string::npos);
+  EXPECT_NE(out.find("\\begin{itemize}\n  \\item a\n  \\item b\n\\end{itemize}"), std::string::npos);
+  EXPECT_NE(out.find("\\begin{enumerate}\n  \\item one\n  \\item two\n\\end{enumerate}"), std::string::npos);
+  EXPECT_NE(out.find("\\begin{quote}\nquote\n"), std::string::npos);
+  EXPECT_NE(out.find("\\[\nx = 1\n\\]"), std::string::npos);
+  EXPECT_NE(out.find("\\begin{tabular}{ll}\n  a & b \\\\\n  \\hline\n  1 & 2 \\\\\n\\end{tabular}"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace linkage::lesson

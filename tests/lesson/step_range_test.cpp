@@ -1,0 +1,34 @@
+// --only ranges.
+#include <gtest/gtest.h>
+
+#include "core/error.hpp"
+#include "lesson/step_range.hpp"
+
+namespace linkage::lesson {
+namespace {
+
+std::vector<bool> only(const std::string& text, std::size_t count = 6) { return parse_step_range(text, count); }
+
+TEST(StepRange, ParsesSinglesRangesAndOpenEnds) {
+  EXPECT_EQ(only("3"), (std::vector<bool>{false, false, true, false, false, false}));
+  EXPECT_EQ(only("2-4"), (std::vector<bool>{false, true, true, true, false, false}));
+  EXPECT_EQ(only("5-"), (std::vector<bool>{false, false, false, false, true, true}));
+  EXPECT_EQ(only("-2"), (std::vector<bool>{true, true, false, false, false, false}));
+  EXPECT_EQ(only("1,4-5"), (std::vector<bool>{true, false, false, true, true, false}));
+}
+
+TEST(StepRange, RejectsBadRanges) {
+  for (const char* bad : {"0", "7", "3-2", "a", "1,,2", "", "2-x", "1-7"}) {
+    SCOPED_TRACE(bad);
+    try {
+      (void)only(bad);
+      ADD_FAILURE();
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), ExitCode::bad_input);
+      EXPECT_EQ(std::string(e.what()).rfind("--only: ", 0), 0u) << e.what();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace linkage::lesson
