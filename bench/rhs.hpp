@@ -1,47 +1,33 @@
 #pragma once
-// Right-hand sides y' = f(y) of the linkage for the benchmarks.
+// Right-hand sides y' = f(y) of the linkage for the benchmarks, beside the ones the
+// integrators use (integrate/linkage_rhs.hpp: GeneralizedRhs<Case>, MaximalRhs, from
+// the one definition of each case).
 //
-// States: Cases 2 and 3 integrate y = (x1, y1, th1, th2, x1', y1', th1', th2') (8);
-// Case 1 integrates y = (x1, y1, th1, x2, y2, th2, and their rates) (12). In both the
-// first half of y' is the second half of y, the second half the accelerations.
-//
-// Two right-hand sides matter for a fair comparison with peer libraries:
-//   - formulation_rhs<Case>: ours, from the one definition in src/formulations (the
-//     matrices' expressions, then the structured Schur solve of linear_solve.hpp);
-//   - user_case3_rhs: what a user of an ODE library would write for Case 3: assemble
-//     the 4x4 A and B by hand into fixed-size Eigen types and call partialPivLu().
+//   - FastCase3Rhs<T>: the closed-form Case 3 (formulations/case3_fast.hpp) as an
+//     integrator's f(t, y, dydt), for double runs and long double references;
+//   - user_case3_rhs: what a user of an ODE library would write for Case 3: the 4x4 A
+//     and B of spec sec. 5 typed in by hand into fixed-size Eigen types, then
+//     partialPivLu(). The peers run with it, and with FastCase3Rhs.
+// State of Cases 2 and 3: y = (x1, y1, th1, th2, x1', y1', th1', th2').
 #include <cmath>
 
 #include <Eigen/Core>
 #include <Eigen/LU>
 
-#include "core/types.hpp"
-#include "formulations/linear_solve.hpp"
+#include "formulations/case3_fast.hpp"
 #include "model/params.hpp"
 
 namespace linkage::bench {
 
-/// Number of coordinates (half the state) a case integrates.
-template <class Case>
-inline constexpr int coordinates = Case::size == 8 ? 6 : 4;
-/// Size of a case's integrated state.
-template <class Case>
-inline constexpr int state_size = 2 * coordinates<Case>;
-
-/// Our right-hand side for any case; returns false when the matrix is singular.
-template <class Case>
-bool formulation_rhs(const Params& p, const Vec<state_size<Case>>& y, Vec<state_size<Case>>& dy) {
-  constexpr int n = coordinates<Case>;
-  // The angles sit at the same place as the unknowns th1'', th2'' in each case.
-  constexpr int th1 = 2, th2 = n - 1;
-  const expr::Env env = make_env(p, y[th1], y[th2], y[n + th1], y[n + th2]);
-  const LinearSystem<Case> system = assemble<Case>(env);
-  Vec<Case::size> q;
-  const bool ok = solve_blocks<Case>(system.A, system.B, q);
-  dy.template head<n>() = y.template tail<n>();
-  dy.template tail<n>() = q.template head<n>();
-  return ok;
-}
+/// Case3Fast as a right-hand side f(t, y, dydt) for the integrators of src/integrate.
+template <class T>
+struct FastCase3Rhs {
+  using Vector = Eigen::Matrix<T, 8, 1>;
+  Case3Fast<T> f;
+  explicit FastCase3Rhs(const Params& p) : f(p) {}
+  explicit FastCase3Rhs(const Case3Fast<T>& closed_form) : f(closed_form) {}
+  void operator()(T /*t*/, const Vector& y, Vector& dydt) const { f.rhs(y, dydt); }
+};
 
 /// The parameters a user would precompute once: m, I_zz^C, D, g.
 struct UserConstants {

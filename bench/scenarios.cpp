@@ -33,7 +33,10 @@ const std::vector<Scenario>& scenarios() {
 
 std::string scenario_names() {
   std::string names;
-  for (const Scenario& s : scenarios()) names += (names.empty() ? "" : ", ") + s.name;
+  for (const Scenario& s : scenarios()) {
+    if (!names.empty()) names += ", ";
+    names += s.name;
+  }
   return names;
 }
 

@@ -8,10 +8,9 @@
 #include <random>
 
 #include "bench/rhs.hpp"
-#include "formulations/case1.hpp"
-#include "formulations/case2.hpp"
-#include "formulations/case3.hpp"
+#include "formulations/linear_solve.hpp"
 #include "formulations/case3_fast.hpp"
+#include "integrate/linkage_rhs.hpp"
 
 namespace linkage::bench {
 namespace {
@@ -28,21 +27,24 @@ std::array<Vec<N>, kStates> random_states() {
   return out;
 }
 
-template <class Case>
-void BM_Rhs(benchmark::State& state) {
-  const Params p;
-  const auto ys = random_states<state_size<Case>>();
-  Vec<state_size<Case>> dy;
+// The right-hand sides the integrators use, from each case's one definition.
+template <int N, class Rhs>
+void rhs_loop(benchmark::State& state, const Rhs& f) {
+  const auto ys = random_states<N>();
+  Vec<N> dy;
   std::size_t k = 0;
   for (auto _ : state) {
-    benchmark::DoNotOptimize(formulation_rhs<Case>(p, ys[k], dy));
+    f(0.0, ys[k], dy);
     benchmark::DoNotOptimize(dy);
     k = (k + 1) % kStates;
   }
 }
-BENCHMARK(BM_Rhs<Case1>)->Name("rhs/case1");
-BENCHMARK(BM_Rhs<Case2>)->Name("rhs/case2");
-BENCHMARK(BM_Rhs<Case3>)->Name("rhs/case3");
+void BM_RhsCase1(benchmark::State& state) { rhs_loop<12>(state, MaximalRhs(Params{}, 0.0, 0.0)); }
+void BM_RhsCase2(benchmark::State& state) { rhs_loop<8>(state, GeneralizedRhs<Case2>(Params{})); }
+void BM_RhsCase3(benchmark::State& state) { rhs_loop<8>(state, GeneralizedRhs<Case3>(Params{})); }
+BENCHMARK(BM_RhsCase1)->Name("rhs/case1");
+BENCHMARK(BM_RhsCase2)->Name("rhs/case2");
+BENCHMARK(BM_RhsCase3)->Name("rhs/case3");
 
 void BM_RhsCase3UserLu(benchmark::State& state) {
   const UserConstants c{Params{}};
@@ -59,14 +61,14 @@ BENCHMARK(BM_RhsCase3UserLu)->Name("rhs/case3_user_partial_piv_lu");
 
 template <class T>
 void BM_RhsCase3Fast(benchmark::State& state) {
-  const Case3Fast<T> f{Params{}};
+  const FastCase3Rhs<T> f{Params{}};
   const auto ys = random_states<8>();
   std::array<Eigen::Matrix<T, 8, 1>, kStates> yt;
-  for (std::size_t i = 0; i < kStates; ++i) yt[i] = ys[i].cast<T>();
+  for (std::size_t i = 0; i < kStates; ++i) yt[i] = ys[i].template cast<T>();
   Eigen::Matrix<T, 8, 1> dy;
   std::size_t k = 0;
   for (auto _ : state) {
-    f.rhs(yt[k], dy);
+    f(T(0), yt[k], dy);
     benchmark::DoNotOptimize(dy);
     k = (k + 1) % kStates;
   }

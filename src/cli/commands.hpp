@@ -17,5 +17,6 @@ void add_runner(CLI::App* subcommand, std::function<void()> run);
 
 // One register function per subcommand file.
 void register_solve(CLI::App& app);
+void register_bench(CLI::App& app);
 
 }  // namespace linkage::cli

@@ -24,11 +24,11 @@ template <class T = double>
 class Case3Fast {
  public:
   explicit Case3Fast(const Params& p)
-      : I_(static_cast<T>(p.m) * (static_cast<T>(p.w) * static_cast<T>(p.w) + static_cast<T>(p.L) * static_cast<T>(p.L)) /
-           T(12)),
-        D_(static_cast<T>(p.L) / T(2) - static_cast<T>(p.b)),
-        k_(static_cast<T>(p.m) * D_ * D_ / T(2)),
-        g_(static_cast<T>(p.g)) {}
+      : Case3Fast(static_cast<T>(p.L), static_cast<T>(p.w), static_cast<T>(p.b), static_cast<T>(p.m),
+                  static_cast<T>(p.g)) {}
+  /// From parameters given in T itself (e.g. long double values of decimal inputs).
+  Case3Fast(T L, T w, T b, T m, T g)
+      : I_(m * (w * w + L * L) / T(12)), D_(L / T(2) - b), k_(m * D_ * D_ / T(2)), g_(g) {}
 
   /// (x1'', y1'', th1'', th2'') into q[0..3].
   void accelerations(T theta1, T theta2, T theta1_dot, T theta2_dot, T* q) const {

@@ -1,0 +1,246 @@
+#include "bench/accuracy.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <set>
+
+#include "bench/accuracy_report.hpp"
+#include "bench/rhs.hpp"
+#include "core/error.hpp"
+#include "core/interrupt.hpp"
+#include "core/progress.hpp"
+#include "formulations/linear_solve.hpp"
+#include "integrate/linkage_rhs.hpp"
+#include "model/kinematics.hpp"
+
+namespace linkage::bench {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// How far a sweep goes (full run / --quick).
+struct SweepLimits {
+  std::vector<double> tolerances;  // adaptive methods, loosest first
+  int max_step_counts;             // fixed-step methods: at most this many doublings
+  double min_time;                 // s of repeats per point
+  double max_run;                  // s: no tighter setting after a run this long
+};
+
+SweepLimits sweep_limits(bool quick) {
+  SweepLimits s;
+  if (quick) {
+    s.tolerances = {1e-3, 1e-5, 1e-7, 1e-9};
+    s.max_step_counts = 4;
+    s.min_time = 0.0;
+    s.max_run = 0.5;
+  } else {
+    for (int k = 0; k <= 20; ++k) s.tolerances.push_back(std::pow(10.0, -3.0 - 0.5 * k));
+    s.max_step_counts = 18;
+    s.min_time = 0.02;
+    s.max_run = 1.0;
+  }
+  return s;
+}
+
+/// The first step count: a power of two giving steps of at most 0.1 s.
+double first_step_count(double duration) {
+  double n = 16;
+  while (duration / n > 0.1) n *= 2;
+  return n;
+}
+
+AccuracyPoint measure(const Method& m, const Scenario& s, const Reference& ref, double knob, double min_time) {
+  AccuracyPoint p;
+  p.method = m.id;
+  p.library = m.library;
+  p.label = m.label;
+  p.case_id = m.case_id;
+  p.rhs = m.rhs;
+  p.adaptive = m.adaptive;
+  p.knob = knob;
+  p.timing = time_repeated([&] { p.outcome = m.run(s, knob); }, min_time);
+  const BodyState& b = p.outcome.final;
+  if (!p.outcome.failure.empty()) {
+    p.error = p.energy_error = p.constraint_error = kNaN;
+    return p;
+  }
+  p.error = final_error(ref, b);
+  const double e0 = invariants(s.params, body_state(s.params, s.initial)).energy;
+  p.energy_error = std::fabs(invariants(s.params, b).energy - e0) / energy_scale(s.params, b);
+  p.constraint_error = m.case_id == 1 ? constraint_error(s.params, b).position.norm() : kNaN;
+  if (!std::isfinite(p.error)) p.outcome.failure = "the final state is not finite";
+  return p;
+}
+
+/// Runs one method over its settings, loosest first, stopping early where tighter
+/// settings cannot tell more (a run over the time cap, a round-off floor).
+void sweep(const Method& m, const Scenario& s, const Reference& ref, const SweepLimits& limits,
+           std::vector<AccuracyPoint>& out, Progress& progress, long& done) {
+  if (m.adaptive) {
+    for (const double tol : limits.tolerances) {
+      throw_if_interrupted();
+      out.push_back(measure(m, s, ref, tol, limits.min_time));
+      progress.update(++done);
+      if (out.back().timing.median_seconds > limits.max_run) break;
+    }
+    return;
+  }
+  double best = std::numeric_limits<double>::infinity();
+  int stalled = 0;
+  double n = first_step_count(s.duration);
+  for (int k = 0; k < limits.max_step_counts; ++k, n *= 2) {
+    throw_if_interrupted();
+    out.push_back(measure(m, s, ref, n, limits.min_time));
+    progress.update(++done);
+    const AccuracyPoint& p = out.back();
+    if (p.error < 0.9 * best) {
+      best = p.error;
+      stalled = 0;
+    } else if (std::isfinite(p.error) && ++stalled >= 2) {
+      break;  // at the round-off floor
+    }
+    if (p.timing.median_seconds * 2 > limits.max_run || best < 1e-13) break;
+  }
+}
+
+// A fixed table of states for the right-hand-side timings: random angles, spins to
+// 40 rad/s, so no branch or value is special.
+template <int N>
+std::vector<Vec<N>> timing_states() {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<Vec<N>> out(64);
+  for (Vec<N>& y : out)
+    for (int i = 0; i < N; ++i) y[i] = 40.0 * u(rng);
+  return out;
+}
+
+template <int N, class F>
+double rhs_ns(const F& f, double min_batch) {
+  const std::vector<Vec<N>> ys = timing_states<N>();
+  Vec<N> dy;
+  double sink = 0;
+  const double ns = nanoseconds_per_call(
+      [&](std::size_t i) {
+        f(0.0, ys[i % ys.size()], dy);
+        sink += dy[N - 1];
+      },
+      min_batch);
+  if (sink == 0.123456789) throw Error::failure("unreachable");  // keeps the calls alive
+  return ns;
+}
+
+RhsTimings measure_rhs(const Params& p, bool quick) {
+  const double batch = quick ? 1e-3 : 20e-3;
+  RhsTimings t;
+  t.case3_fast = rhs_ns<8>(FastCase3Rhs<double>(p), batch);
+  t.case3_definition = rhs_ns<8>(GeneralizedRhs<Case3>(p), batch);
+  const UserConstants user(p);
+  t.case3_user = rhs_ns<8>([&](double, const Vec<8>& y, Vec<8>& dy) { user_case3_rhs(user, y.data(), dy.data()); },
+                           batch);
+  t.case2 = rhs_ns<8>(GeneralizedRhs<Case2>(p), batch);
+  t.case1 = rhs_ns<12>(MaximalRhs(p, 0.0, 0.0), batch);
+
+  // The 4x4 solve alone, on systems assembled beforehand.
+  std::vector<LinearSystem<Case3>> systems;
+  for (const Vec<8>& y : timing_states<8>()) systems.push_back(assemble<Case3>(make_env(p, y[2], y[3], y[6], y[7])));
+  Vec<4> q;
+  double sink = 0;
+  t.solve_blocks = nanoseconds_per_call(
+      [&](std::size_t i) {
+        const LinearSystem<Case3>& s = systems[i % systems.size()];
+        sink += solve_blocks<Case3>(s.A, s.B, q) ? q[3] : 0.0;
+      },
+      batch);
+  t.solve_lu = nanoseconds_per_call(
+      [&](std::size_t i) {
+        const LinearSystem<Case3>& s = systems[i % systems.size()];
+        const Eigen::Matrix4d A = s.A;
+        const Eigen::Vector4d x = A.partialPivLu().solve(s.B);
+        sink += x[3];
+      },
+      batch);
+  if (sink == 0.123456789) throw Error::failure("unreachable");
+  return t;
+}
+
+std::vector<Method> all_methods() {
+  std::vector<Method> out;
+  for (int c : {3, 2, 1})
+    for (Method& m : linkage_methods(c)) out.push_back(std::move(m));
+  for (Method& m : peer_methods()) out.push_back(std::move(m));
+  return out;
+}
+
+void validate(const AccuracyOptions& o) {
+  for (const std::string& s : o.scenarios) (void)find_scenario(s, "--scenario");
+  if (o.scenarios.empty()) throw Error::input("--scenario: no scenario given; valid: " + scenario_names() + ", all");
+  if (o.cases.empty()) throw Error::input("--cases: no case given; valid: 1, 2, 3");
+  for (int c : o.cases)
+    if (c < 1 || c > 3) throw Error::input("--cases: " + std::to_string(c) + " is not a case; valid: 1, 2, 3");
+  const std::vector<std::string> ids = method_ids();
+  for (const std::string& id : o.integrators)
+    if (std::find(ids.begin(), ids.end(), id) == ids.end()) {
+      std::string valid;
+      for (const std::string& v : ids) {
+        if (!valid.empty()) valid += ", ";
+        valid += v;
+      }
+      throw Error::input("--integrators: '" + id + "' is not an integrator; valid: " + valid);
+    }
+  if (o.duration && !(*o.duration > 0 && *o.duration <= 1e4))
+    throw Error::input("--duration: " + std::to_string(*o.duration) + " s is out of range; valid: (0, 10000] s");
+}
+
+}  // namespace
+
+std::vector<std::string> method_ids() {
+  std::vector<std::string> ids;
+  for (const Method& m : all_methods())
+    if (std::find(ids.begin(), ids.end(), m.id) == ids.end()) ids.push_back(m.id);
+  return ids;
+}
+
+std::vector<Method> selected_methods(const AccuracyOptions& o) {
+  std::vector<Method> out;
+  for (Method& m : all_methods()) {
+    const bool case_ok = std::find(o.cases.begin(), o.cases.end(), m.case_id) != o.cases.end();
+    const bool id_ok =
+        o.integrators.empty() || std::find(o.integrators.begin(), o.integrators.end(), m.id) != o.integrators.end();
+    if (case_ok && id_ok) out.push_back(std::move(m));
+  }
+  return out;
+}
+
+AccuracyResult run_accuracy(const AccuracyOptions& options) {
+  validate(options);
+  const std::vector<Method> methods = selected_methods(options);
+  if (methods.empty()) throw Error::input("--integrators: none of the chosen integrators runs the chosen --cases");
+  prepare_output_folder(options.out, "--out");
+  const SweepLimits limits = sweep_limits(options.quick);
+
+  AccuracyResult result;
+  const Scenario& first = find_scenario(options.scenarios.front(), "--scenario");
+  result.rhs = measure_rhs(first.params, options.quick);
+  for (const std::string& name : options.scenarios) {
+    ScenarioResult sr;
+    sr.scenario = find_scenario(name, "--scenario");
+    if (options.duration) sr.scenario.duration = *options.duration;
+    sr.reference = compute_reference(sr.scenario, options.quick);
+    long total = 0;
+    for (const Method& m : methods)
+      total += m.adaptive ? static_cast<long>(limits.tolerances.size()) : limits.max_step_counts;
+    Progress progress("accuracy " + name, total, "runs", options.quiet);
+    long done = 0;
+    for (const Method& m : methods) sweep(m, sr.scenario, sr.reference, limits, sr.points, progress, done);
+    progress.finish();
+    result.scenarios.push_back(std::move(sr));
+  }
+  write_accuracy_report(options, result);
+  return result;
+}
+
+}  // namespace linkage::bench

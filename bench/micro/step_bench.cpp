@@ -1,0 +1,76 @@
+// One step of each of our integrators on Case 3 (closed-form right-hand side, 8 values)
+// and DOP853 on Case 1 (12 values). Fixed-step methods restart from the same state each
+// iteration; adaptive ones step on and restart every 1000 steps, so the step size is the
+// one their controller picks for the scenario `fast` at rtol = atol = 1e-10.
+#include <benchmark/benchmark.h>
+
+#include "bench/rhs.hpp"
+#include "bench/scenarios.hpp"
+#include "integrate/dop853.hpp"
+#include "integrate/dopri5.hpp"
+#include "integrate/explicit_rk.hpp"
+#include "integrate/gauss_legendre.hpp"
+#include "integrate/linkage_rhs.hpp"
+#include "integrate/symplectic_euler.hpp"
+#include "model/kinematics.hpp"
+
+namespace linkage::bench {
+namespace {
+
+const Scenario& fast() { return find_scenario("fast", "micro"); }
+
+template <class Integrator>
+void BM_FixedStep(benchmark::State& state) {
+  FastCase3Rhs<double> f(fast().params);
+  const Vec<8> y0 = fast().initial.vector();
+  Integrator integrator;
+  Vec<8> y;
+  for (auto _ : state) {
+    y = y0;
+    benchmark::DoNotOptimize(integrator.step(f, 0.0, 1e-3, y));
+    benchmark::DoNotOptimize(y);
+  }
+  state.counters["rhs_per_step"] =
+      static_cast<double>(integrator.counters().rhs_evaluations) / static_cast<double>(state.iterations());
+}
+BENCHMARK(BM_FixedStep<ode::ExplicitEuler<double, 8>>)->Name("step/euler");
+BENCHMARK(BM_FixedStep<ode::SymplecticEuler<double, 8>>)->Name("step/symplectic_euler");
+BENCHMARK(BM_FixedStep<ode::Rk4<double, 8>>)->Name("step/rk4");
+BENCHMARK(BM_FixedStep<ode::GaussLegendre2<double, 8>>)->Name("step/gauss_legendre");
+
+template <class Integrator, class F, int N>
+void adaptive_steps(benchmark::State& state, F f, const Vec<N>& y0) {
+  typename Integrator::Settings settings;
+  settings.tolerances = {1e-10, 1e-10};
+  Integrator integrator(settings);
+  integrator.start(f, 0.0, y0);
+  int k = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(integrator.step(f));
+    if (++k == 1000) {
+      state.PauseTiming();
+      integrator.start(f, 0.0, y0);
+      k = 0;
+      state.ResumeTiming();
+    }
+  }
+}
+
+void BM_Dopri5Case3(benchmark::State& state) {
+  adaptive_steps<ode::Dopri5<double, 8>>(state, FastCase3Rhs<double>(fast().params), fast().initial.vector());
+}
+BENCHMARK(BM_Dopri5Case3)->Name("step/dopri5");
+
+void BM_Dop853Case3(benchmark::State& state) {
+  adaptive_steps<ode::Dop853<double, 8>>(state, FastCase3Rhs<double>(fast().params), fast().initial.vector());
+}
+BENCHMARK(BM_Dop853Case3)->Name("step/dop853");
+
+void BM_Dop853Case1(benchmark::State& state) {
+  adaptive_steps<ode::Dop853<double, 12>>(state, MaximalRhs(fast().params, 0.0, 0.0),
+                                          body_state(fast().params, fast().initial).vector());
+}
+BENCHMARK(BM_Dop853Case1)->Name("step/dop853_case1");
+
+}  // namespace
+}  // namespace linkage::bench

@@ -1,0 +1,157 @@
+#include "bench/targets.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/number_format.hpp"
+
+namespace linkage::bench {
+namespace {
+
+std::string ns(double v) { return format_significant(v, 3) + " ns"; }
+std::string ratio(double v) { return format_significant(v, 3) + "x"; }
+std::string seconds(double v) { return format_significant(v * 1e3, 3) + " ms"; }
+
+struct Best {
+  double time = std::numeric_limits<double>::infinity();
+  std::string name;
+};
+
+/// The fastest curve among those `pick` accepts to reach `error`.
+template <class Pick>
+Best best_time(const std::vector<Curve>& all, double error, Pick pick, Clock clock = Clock::wall) {
+  Best best;
+  for (const Curve& c : all) {
+    if (!pick(c)) continue;
+    const std::optional<double> t = time_to_error(c, error, clock);
+    if (t && *t < best.time) best = {*t, c.name()};
+  }
+  return best;
+}
+
+bool is_ours_fastest(const Curve& c) { return c.ours() && c.case_id == 3 && c.rhs == RhsKind::fastest; }
+
+void speed_row(std::vector<TargetRow>& rows, const std::string& what, const Best& peer, const Best& ours,
+               const Best& peer_cpu, const Best& ours_cpu, double goal) {
+  TargetRow row;
+  row.target = what;
+  row.goal = ">= " + format_significant(goal, 2) + "x";
+  if (!std::isfinite(peer.time) || !std::isfinite(ours.time)) {
+    row.measured = "n/a";
+    row.note = !std::isfinite(ours.time) ? "none of our integrators reached the error" : "no peer reached the error";
+  } else {
+    const double r = peer.time / ours.time;
+    row.measured = ratio(r);
+    row.met = r >= goal;
+    row.note = ours.name + " " + seconds(ours.time) + " vs " + peer.name + " " + seconds(peer.time);
+    if (std::isfinite(peer_cpu.time) && std::isfinite(ours_cpu.time))
+      row.note += "; by thread CPU time " + ratio(peer_cpu.time / ours_cpu.time);
+  }
+  rows.push_back(row);
+}
+
+}  // namespace
+
+std::string Curve::name() const {
+  std::string suffix;
+  if (ours()) {
+    suffix = "Case " + std::to_string(case_id);
+    if (case_id == 3 && rhs == RhsKind::definition) suffix += ", definition RHS";
+  } else if (case_id == 1 && rhs == RhsKind::user) {
+    suffix = "Case 1 DAE, user residual";
+  } else {
+    if (case_id != 3) suffix = "Case " + std::to_string(case_id) + ", ";
+    suffix += rhs == RhsKind::user ? "user RHS" : "our RHS";
+  }
+  return label + " (" + suffix + ")";
+}
+
+std::vector<Curve> curves(const ScenarioResult& result) {
+  std::vector<Curve> out;
+  for (const AccuracyPoint& p : result.points) {
+    auto it = std::find_if(out.begin(), out.end(), [&](const Curve& c) {
+      return c.method == p.method && c.case_id == p.case_id && c.rhs == p.rhs;
+    });
+    if (it == out.end()) {
+      out.push_back({p.method, p.library, p.label, p.case_id, p.rhs, {}});
+      it = out.end() - 1;
+    }
+    it->points.push_back(&p);
+  }
+  return out;
+}
+
+std::optional<double> time_to_error(const Curve& curve, double error, Clock clock) {
+  auto time_of = [clock](const AccuracyPoint* p) {
+    return clock == Clock::wall ? p->timing.median_seconds : p->timing.cpu_median_seconds;
+  };
+  const AccuracyPoint* previous = nullptr;
+  for (const AccuracyPoint* p : curve.points) {
+    const bool ok = std::isfinite(p->error);
+    if (ok && p->error <= error) {
+      const double t = time_of(p);
+      if (previous == nullptr || p->error <= 0 || previous->error == p->error || time_of(previous) <= 0 || t <= 0)
+        return t;
+      // log-log interpolation between the setting above the error and this one
+      const double le0 = std::log(previous->error), le1 = std::log(p->error);
+      const double lt0 = std::log(time_of(previous)), lt1 = std::log(t);
+      return std::exp(lt0 + (std::log(error) - le0) * (lt1 - lt0) / (le1 - le0));
+    }
+    previous = ok ? p : nullptr;
+  }
+  return std::nullopt;
+}
+
+std::optional<double> overhead_ns(const Curve& curve, double rhs_ns) {
+  std::vector<double> values;
+  for (const AccuracyPoint* p : curve.points)
+    if (p->outcome.failure.empty() && p->timing.median_seconds >= 0.5e-3 && p->outcome.rhs_evaluations > 0)
+      values.push_back(p->timing.median_seconds * 1e9 / static_cast<double>(p->outcome.rhs_evaluations) - rhs_ns);
+  if (values.empty()) return std::nullopt;
+  return median(values);
+}
+
+std::vector<TargetRow> evaluate_targets(const ScenarioResult& fast, const RhsTimings& rhs) {
+  std::vector<TargetRow> rows;
+  rows.push_back({"Case 3 right-hand side (closed form, incl. 2 sincos)", ns(rhs.case3_fast), "<= 40 ns",
+                  rhs.case3_fast <= 40.0,
+                  "user's Eigen partialPivLu RHS: " + ns(rhs.case3_user) + " (" +
+                      ratio(rhs.case3_user / rhs.case3_fast) + " slower); definition + block solve: " +
+                      ns(rhs.case3_definition)});
+  rows.push_back({"Case 3 4x4 solve alone (block solve)", ns(rhs.solve_blocks), "(info)", std::nullopt,
+                  "Eigen partialPivLu on the same matrices: " + ns(rhs.solve_lu)});
+
+  const std::vector<Curve> all = curves(fast);
+  for (const double error : {1e-8, 1e-10}) {
+    const std::string e = format_significant(error, 1);
+    auto peer_user = [](const Curve& c) { return !c.ours() && c.rhs == RhsKind::user; };
+    auto peer_ours = [](const Curve& c) { return !c.ours() && c.rhs != RhsKind::user; };
+    const Best ours = best_time(all, error, is_ours_fastest);
+    const Best ours_cpu = best_time(all, error, is_ours_fastest, Clock::cpu);
+    speed_row(rows, "time to error " + e + ": best peer with user RHS / our best", best_time(all, error, peer_user), ours,
+              best_time(all, error, peer_user, Clock::cpu), ours_cpu, error == 1e-8 ? 4.0 : 3.0);
+    speed_row(rows, "time to error " + e + ", RHS shared: best peer with our RHS / our best",
+              best_time(all, error, peer_ours), ours, best_time(all, error, peer_ours, Clock::cpu), ours_cpu, 1.0);
+  }
+
+  for (const Curve& c : all) {
+    if (!is_ours_fastest(c)) continue;
+    const std::optional<double> o = overhead_ns(c, rhs.case3_fast);
+    TargetRow row;
+    row.target = "integrator overhead per RHS evaluation, " + c.label;
+    row.goal = "< 15 ns";
+    if (o) {
+      row.measured = ns(*o);
+      row.met = *o < 15.0;
+      row.note = "run time / evaluations - " + ns(rhs.case3_fast) + " (the closed-form RHS), median over runs >= 0.5 ms";
+    } else {
+      row.measured = "n/a";
+      row.note = "no run of 0.5 ms or more";
+    }
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+}  // namespace linkage::bench

@@ -1,0 +1,51 @@
+#pragma once
+// The performance targets of the benchmark issue, evaluated from one accuracy run on
+// the `fast` scenario (error at t = 10 s), as ratios measured in that same run.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bench/accuracy.hpp"
+
+namespace linkage::bench {
+
+/// Points of one curve: one method on one case with one right-hand side, in sweep
+/// order (loosest setting first).
+struct Curve {
+  std::string method;
+  std::string library;
+  std::string label;
+  int case_id = 3;
+  RhsKind rhs = RhsKind::fastest;
+  std::vector<const AccuracyPoint*> points;
+  /// Legend text, e.g. "DOP853 (Case 3)", "Odeint RKF78 (user RHS)".
+  [[nodiscard]] std::string name() const;
+  [[nodiscard]] bool ours() const { return library == "linkage"; }
+};
+
+/// The curves of a scenario's points, in the order their first point appears.
+[[nodiscard]] std::vector<Curve> curves(const ScenarioResult& result);
+
+/// Which time of a point to use.
+enum class Clock { wall, cpu };
+
+/// The run time (s) at which a curve first reaches `error`: interpolated log-log
+/// between the last setting above it and the first at or below it. None if never.
+[[nodiscard]] std::optional<double> time_to_error(const Curve& curve, double error, Clock clock = Clock::wall);
+
+/// Median over a curve's points that ran at least 0.5 ms of (time per evaluation
+/// - the right-hand side's own cost), in ns: what the integrator adds per evaluation.
+[[nodiscard]] std::optional<double> overhead_ns(const Curve& curve, double rhs_ns);
+
+struct TargetRow {
+  std::string target;    // what is measured
+  std::string measured;  // the value, formatted
+  std::string goal;      // e.g. "<= 40 ns", ">= 4x"
+  std::optional<bool> met;  // none when it could not be measured (say why in note)
+  std::string note;      // which methods, or why not measured
+};
+
+/// Evaluates every target on a run of the fast scenario.
+[[nodiscard]] std::vector<TargetRow> evaluate_targets(const ScenarioResult& fast, const RhsTimings& rhs);
+
+}  // namespace linkage::bench

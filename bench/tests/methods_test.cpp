@@ -1,0 +1,106 @@
+// Every method of the study (ours and the peers) solves the spec's example to its
+// tolerance, and agrees with the long double reference; the reference itself agrees
+// with reference-example.json.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "bench/method.hpp"
+#include "bench/reference.hpp"
+#include "bench/rhs.hpp"
+#include "formulations/case3_fast.hpp"
+#include "formulations/linear_solve.hpp"
+#include "formulations/case3.hpp"
+
+namespace linkage::bench {
+namespace {
+
+const Reference& example_reference() {
+  static const Reference ref = compute_reference(find_scenario("example", "test"), false);
+  return ref;
+}
+
+TEST(Reference, MatchesTheSpecsTwentyFiveDigitStates) {
+  const Reference& ref = example_reference();
+  ASSERT_TRUE(ref.spec_difference.has_value()) << "reference-example.json not found beside the checkout";
+  // long double: eps 1.1e-19, |y1| ~ 480 m at t = 10 s
+  EXPECT_LT(*ref.spec_difference, 1e-14);
+  EXPECT_LT(ref.check_difference, 1e-14);
+  EXPECT_GT(ref.digits, 15.0);
+}
+
+TEST(Reference, QuickModeIsLooserButStillFarBeyondDouble) {
+  const Reference quick = compute_reference(find_scenario("fast", "test"), true);
+  EXPECT_LT(quick.check_difference, 1e-10);
+  EXPECT_GT(quick.digits, 11.0);
+}
+
+TEST(UserRhs, MatchesTheDefinition) {
+  const Params p;
+  const UserConstants c(p);
+  const Vec<8> y = (Vec<8>() << 1, 2, 0.7, -2.1, 0.3, -0.2, 20, -35).finished();
+  Vec<8> dy;
+  user_case3_rhs(c, y.data(), dy.data());
+  const LinearSystem<Case3> s = assemble<Case3>(make_env(p, y[2], y[3], y[6], y[7]));
+  Vec<4> q;
+  ASSERT_TRUE(solve_blocks<Case3>(s.A, s.B, q));
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_EQ(dy[i], y[i + 4]);
+    EXPECT_NEAR(dy[i + 4], q[i], 1e-12 * (1 + std::fabs(q[i])));
+  }
+}
+
+/// The error a method may have at a setting on the example over 10 s.
+double allowed_error(const Method& m, double knob) {
+  if (m.adaptive) return 1e4 * knob;  // rtol against |y1| ~ 480 m, plus the methods' own slack
+  // fixed steps: 1024 steps of ~0.01 s
+  return m.order >= 4 ? 1e-6 : 1.0;
+}
+
+void expect_solves_the_example(const Method& m) {
+  const Scenario& s = find_scenario("example", "test");
+  const double knob = m.adaptive ? 1e-8 : 1024;
+  const Outcome out = m.run(s, knob);
+  EXPECT_TRUE(out.failure.empty()) << m.id << ": " << out.failure;
+  const double error = final_error(example_reference(), out.final);
+  EXPECT_LT(error, allowed_error(m, knob)) << m.id << " case " << m.case_id << " rhs " << name(m.rhs);
+  EXPECT_GT(out.rhs_evaluations, 0) << m.id;
+  EXPECT_GT(out.steps, 0) << m.id;
+}
+
+TEST(Methods, OursSolveTheExampleOnEveryCase) {
+  for (int c : {1, 2, 3})
+    for (const Method& m : linkage_methods(c)) expect_solves_the_example(m);
+}
+
+TEST(Methods, PeersSolveTheExampleWithEitherRightHandSide) {
+  const std::vector<Method> peers = peer_methods();
+  EXPECT_EQ(peers.size(), 10u);  // 3 Odeint + CVODE on Case 3, IDA on Case 1; each with 2 RHS
+  for (const Method& m : peers) expect_solves_the_example(m);
+}
+
+TEST(Methods, TighterToleranceGivesSmallerErrorForEveryAdaptiveMethod) {
+  const Scenario& s = find_scenario("example", "test");
+  std::vector<Method> all = peer_methods();
+  for (Method& m : linkage_methods(3)) all.push_back(std::move(m));
+  for (const Method& m : all) {
+    if (!m.adaptive) continue;
+    const double loose = final_error(example_reference(), m.run(s, 1e-4).final);
+    const double tight = final_error(example_reference(), m.run(s, 1e-10).final);
+    EXPECT_LT(tight, 1e-2 * loose) << m.id << " " << name(m.rhs);
+  }
+}
+
+TEST(Methods, EvaluationCountsAreTheMethodsOwn) {
+  const Scenario& s = find_scenario("example", "test");
+  for (const Method& m : linkage_methods(3)) {
+    if (m.id == "rk4") {
+      EXPECT_EQ(m.run(s, 100).rhs_evaluations, 400);
+    } else if (m.id == "euler") {
+      EXPECT_EQ(m.run(s, 100).rhs_evaluations, 100);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace linkage::bench

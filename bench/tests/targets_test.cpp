@@ -1,0 +1,76 @@
+// Pieces of the study's arithmetic: the median, time-to-error interpolation, overhead.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "bench/targets.hpp"
+#include "bench/timing.hpp"
+
+namespace linkage::bench {
+namespace {
+
+AccuracyPoint point(double seconds, double error, std::int64_t evaluations = 1000) {
+  AccuracyPoint p;
+  p.method = std::string("x");
+  p.library = std::string("linkage");
+  p.timing.median_seconds = seconds;
+  p.error = error;
+  p.outcome.rhs_evaluations = evaluations;
+  return p;
+}
+
+TEST(Timing, MedianOfOddAndEvenCounts) {
+  std::vector<double> odd{5, 1, 3};
+  EXPECT_EQ(median(odd), 3);
+  std::vector<double> even{4, 1, 3, 2};
+  EXPECT_EQ(median(even), 2.5);
+  std::vector<double> none;
+  EXPECT_EQ(median(none), 0);
+}
+
+TEST(Timing, RepeatsUntilTheMinimumTotal) {
+  int calls = 0;
+  const Timing t = time_repeated([&] { ++calls; }, 0.0);
+  EXPECT_EQ(calls, 1);
+  EXPECT_EQ(t.repeats, 1);
+  calls = 0;
+  const Timing many = time_repeated([&] { ++calls; }, 1.0, 5);
+  EXPECT_EQ(calls, 5);  // capped
+  EXPECT_LE(many.min_seconds, many.median_seconds);
+}
+
+TEST(TimeToError, InterpolatesLogLogBetweenTheBracketingSettings) {
+  ScenarioResult r;
+  r.points = {point(1e-3, 1e-6), point(1e-2, 1e-10)};
+  const std::vector<Curve> c = curves(r);
+  ASSERT_EQ(c.size(), 1u);
+  // error falls 4 decades while time rises 1: 1e-8 is halfway, at sqrt(1e-3 * 1e-2)
+  EXPECT_NEAR(*time_to_error(c[0], 1e-8), std::sqrt(1e-5), 1e-12);
+  EXPECT_NEAR(*time_to_error(c[0], 1e-6), 1e-3, 1e-15);     // reached by the first setting
+  EXPECT_NEAR(*time_to_error(c[0], 1e-3), 1e-3, 1e-15);     // the first setting already beats it
+  EXPECT_FALSE(time_to_error(c[0], 1e-12).has_value());    // never reached
+}
+
+TEST(TimeToError, SkipsFailedRuns) {
+  ScenarioResult r;
+  r.points = {point(1e-3, std::nan("")), point(2e-3, 1e-9)};
+  EXPECT_NEAR(*time_to_error(curves(r)[0], 1e-8), 2e-3, 1e-15);
+}
+
+TEST(Curves, SplitByMethodCaseAndRightHandSide) {
+  ScenarioResult r;
+  r.points = {point(1, 1), point(1, 1), point(1, 1)};
+  r.points[1].case_id = 2;
+  r.points[2].rhs = RhsKind::definition;
+  EXPECT_EQ(curves(r).size(), 3u);
+}
+
+TEST(Overhead, IsTimePerEvaluationLessTheRightHandSide) {
+  ScenarioResult r;
+  r.points = {point(1e-3, 1e-6, 10000), point(1e-4, 1e-4, 10)};  // the second is too short to count
+  // 1 ms / 10000 = 100 ns per evaluation, 40 of them the right-hand side
+  EXPECT_NEAR(*overhead_ns(curves(r)[0], 40.0), 60.0, 1e-9);
+}
+
+}  // namespace
+}  // namespace linkage::bench

@@ -1,0 +1,157 @@
+// `linkage bench`: measured speed and accuracy. `accuracy` is the work-precision study
+// against a long double reference and the peer libraries (SUNDIALS, Boost.Odeint),
+// `stress` the numerical stability tests, `render` the rendering throughput. The
+// studies live in bench/ (library linkage_bench); a build without it
+// (-DLINKAGE_BUILD_BENCH=OFF) says so.
+#include <cstdio>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "cli/input_options.hpp"
+#include "core/error.hpp"
+
+#ifdef LINKAGE_WITH_BENCH
+#include "bench/accuracy.hpp"
+#include "bench/stress.hpp"
+#include "bench/targets.hpp"
+#endif
+
+namespace linkage::cli {
+namespace {
+
+/// "a,b,c" -> {"a", "b", "c"}; empty items are an error naming `origin`.
+std::vector<std::string> split_list(const std::string& text, const std::string& origin) {
+  std::vector<std::string> out;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ','))
+    if (item.empty()) throw Error::input(origin + ": '" + text + "' has an empty item; give a comma-separated list");
+    else out.push_back(item);
+  if (out.empty()) throw Error::input(origin + ": empty list");
+  return out;
+}
+
+#ifdef LINKAGE_WITH_BENCH
+
+struct AccuracyFlags {
+  std::string scenario = "fast";
+  std::string cases = "1,2,3";
+  std::string integrators = "all";
+  std::string duration;
+  std::string out = "bench-accuracy";
+  bool quick = false;
+  bool quiet = false;
+};
+
+bench::AccuracyOptions accuracy_options(const AccuracyFlags& f) {
+  bench::AccuracyOptions o;
+  o.scenarios.clear();
+  for (const std::string& s : split_list(f.scenario, "--scenario")) {
+    if (s == "all") {
+      for (const bench::Scenario& each : bench::scenarios()) o.scenarios.push_back(each.name);
+    } else {
+      o.scenarios.push_back(s);
+    }
+  }
+  o.cases.clear();
+  for (const std::string& c : split_list(f.cases, "--cases")) {
+    if (c != "1" && c != "2" && c != "3") throw Error::input("--cases: '" + c + "' is not a case; valid: 1, 2, 3");
+    o.cases.push_back(c[0] - '0');
+  }
+  if (f.integrators != "all") o.integrators = split_list(f.integrators, "--integrators");
+  if (!f.duration.empty()) o.duration = parse_number(f.duration, "--duration", "s");
+  o.out = f.out;
+  o.quick = f.quick;
+  o.quiet = f.quiet;
+  return o;
+}
+
+void run_accuracy(const AccuracyFlags& flags) {
+  const bench::AccuracyOptions options = accuracy_options(flags);
+  const bench::AccuracyResult result = bench::run_accuracy(options);
+  std::printf("Right-hand side, ns per evaluation: Case 3 closed form %.1f, Case 3 definition %.1f, "
+              "Case 3 user (Eigen partialPivLu) %.1f, Case 2 %.1f, Case 1 %.1f\n",
+              result.rhs.case3_fast, result.rhs.case3_definition, result.rhs.case3_user, result.rhs.case2,
+              result.rhs.case1);
+  for (const bench::ScenarioResult& s : result.scenarios) {
+    std::printf("Scenario %s (%g s): %zu runs; reference good to %.1f digits (DOP853 vs Dopri5 in long double: %.2g)\n",
+                s.scenario.name.c_str(), s.scenario.duration, s.points.size(), s.reference.digits,
+                s.reference.check_difference);
+    if (s.scenario.name != "fast") continue;
+    for (const bench::TargetRow& row : bench::evaluate_targets(s, result.rhs))
+      std::printf("  %-75s %10s  goal %-8s %s\n", row.target.c_str(), row.measured.c_str(), row.goal.c_str(),
+                  row.met ? (*row.met ? "met" : "MISSED") : "");
+  }
+  for (const auto& file : result.files) std::printf("wrote %s\n", file.string().c_str());
+}
+
+void add_accuracy(CLI::App* bench) {
+  auto flags = std::make_shared<AccuracyFlags>();
+  CLI::App* sub = bench->add_subcommand(
+      "accuracy", "Work-precision study: run time against error for every case and integrator, ours and the peers'");
+  sub->add_option("--scenario", flags->scenario,
+                  "Scenario(s), comma-separated: " + bench::scenario_names() + ", or all (default fast)")
+      ->type_name("LIST");
+  sub->add_option("--cases", flags->cases, "Cases to run, comma-separated (default 1,2,3)")->type_name("LIST");
+  std::string ids;
+  for (const std::string& id : bench::method_ids()) {
+    if (!ids.empty()) ids += ", ";
+    ids += id;
+  }
+  sub->add_option("--integrators", flags->integrators, "Integrators, comma-separated, or all (default): " + ids)
+      ->type_name("LIST");
+  sub->add_option("--duration", flags->duration, "Simulated time in s (default: each scenario's own, 10 s mostly)")
+      ->type_name("T");
+  sub->add_option("--out", flags->out, "Folder for accuracy.csv, accuracy.md and the plots (default bench-accuracy)")
+      ->type_name("DIR");
+  sub->add_flag("--quick", flags->quick, "Few settings, one repeat each: checks the report, not the timings (CI)");
+  sub->add_flag("--quiet", flags->quiet, "No progress line on stderr");
+  add_runner(sub, [flags] { run_accuracy(*flags); });
+}
+
+struct StressFlags {
+  std::string out = "bench-stress";
+  bool quick = false;
+  bool quiet = false;
+};
+
+void add_stress(CLI::App* bench) {
+  auto flags = std::make_shared<StressFlags>();
+  CLI::App* sub = bench->add_subcommand(
+      "stress", "Numerical stability: long runs, largest stable steps, extreme parameters, Case 1 drift");
+  sub->add_option("--out", flags->out, "Folder for stress.md, the CSV files and the plots (default bench-stress)")
+      ->type_name("DIR");
+  sub->add_flag("--quick", flags->quick, "Short runs, few bisection steps: checks the report, not the findings (CI)");
+  sub->add_flag("--quiet", flags->quiet, "No progress line on stderr");
+  add_runner(sub, [flags] {
+    bench::StressOptions options;
+    options.out = flags->out;
+    options.quick = flags->quick;
+    options.quiet = flags->quiet;
+    const bench::StressSummary summary = bench::run_stress(options);
+    for (const std::string& line : summary.lines) std::printf("%s\n", line.c_str());
+    for (const auto& file : summary.files) std::printf("wrote %s\n", file.string().c_str());
+  });
+}
+
+#endif  // LINKAGE_WITH_BENCH
+
+}  // namespace
+
+void register_bench(CLI::App& app) {
+  CLI::App* bench = app.add_subcommand("bench", "Measure speed and accuracy: work-precision, stability, rendering");
+#ifdef LINKAGE_WITH_BENCH
+  bench->require_subcommand(1);
+  add_accuracy(bench);
+  add_stress(bench);
+#else
+  add_runner(bench, [] {
+    throw Error::input("bench: this build has no benchmarks; configure with -DLINKAGE_BUILD_BENCH=ON");
+  });
+#endif
+}
+
+}  // namespace linkage::cli
