@@ -4,8 +4,8 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <random>
-#include <set>
+#include <fstream>
+#include <thread>
 
 #include "bench/accuracy_report.hpp"
 #include "bench/rhs.hpp"
@@ -106,24 +106,25 @@ void sweep(const Method& m, const Scenario& s, const Reference& ref, const Sweep
   }
 }
 
-// A fixed table of states for the right-hand-side timings: random angles, spins to
-// 40 rad/s, so no branch or value is special.
-template <int N>
-std::vector<Vec<N>> timing_states() {
-  std::mt19937_64 rng(11);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  std::vector<Vec<N>> out(64);
-  for (Vec<N>& y : out)
-    for (int i = 0; i < N; ++i) y[i] = 40.0 * u(rng);
+// States for the right-hand-side timings: 64 points along the scenario's motion, so the
+// angles and spins are those the integrators see.
+std::vector<BodyState> timing_states(const Scenario& s) {
+  const std::vector<Method> ours = linkage_methods(3);
+  const auto dop853 = std::find_if(ours.begin(), ours.end(), [](const Method& m) { return m.id == "dop853"; });
+  std::vector<BodyState> out;
+  for (int i = 1; i <= 64; ++i) {
+    Scenario part = s;
+    part.duration = s.duration * i / 64.0;
+    out.push_back(dop853->run(part, 1e-8).final);
+  }
   return out;
 }
 
 template <int N, class F>
-double rhs_ns(const F& f, double min_batch) {
-  const std::vector<Vec<N>> ys = timing_states<N>();
+PerCall rhs_ns(const F& f, const std::vector<Vec<N>>& ys, double min_batch) {
   Vec<N> dy;
   double sink = 0;
-  const double ns = nanoseconds_per_call(
+  const PerCall ns = nanoseconds_per_call(
       [&](std::size_t i) {
         f(0.0, ys[i % ys.size()], dy);
         sink += dy[N - 1];
@@ -133,33 +134,40 @@ double rhs_ns(const F& f, double min_batch) {
   return ns;
 }
 
-RhsTimings measure_rhs(const Params& p, bool quick) {
+RhsTimings measure_rhs(const Scenario& s, bool quick) {
   const double batch = quick ? 1e-3 : 20e-3;
+  const Params& p = s.params;
+  std::vector<Vec<8>> y8;
+  std::vector<Vec<12>> y12;
+  for (const BodyState& b : timing_states(s)) {
+    y8.push_back(b.generalized().vector());
+    y12.push_back(b.vector());
+  }
   RhsTimings t;
-  t.case3_fast = rhs_ns<8>(FastCase3Rhs<double>(p), batch);
-  t.case3_definition = rhs_ns<8>(GeneralizedRhs<Case3>(p), batch);
+  t.case3_fast = rhs_ns<8>(FastCase3Rhs<double>(p), y8, batch);
+  t.case3_definition = rhs_ns<8>(GeneralizedRhs<Case3>(p), y8, batch);
   const UserConstants user(p);
   t.case3_user = rhs_ns<8>([&](double, const Vec<8>& y, Vec<8>& dy) { user_case3_rhs(user, y.data(), dy.data()); },
-                           batch);
-  t.case2 = rhs_ns<8>(GeneralizedRhs<Case2>(p), batch);
-  t.case1 = rhs_ns<12>(MaximalRhs(p, 0.0, 0.0), batch);
+                           y8, batch);
+  t.case2 = rhs_ns<8>(GeneralizedRhs<Case2>(p), y8, batch);
+  t.case1 = rhs_ns<12>(MaximalRhs(p, 0.0, 0.0), y12, batch);
 
   // The 4x4 solve alone, on systems assembled beforehand.
   std::vector<LinearSystem<Case3>> systems;
-  for (const Vec<8>& y : timing_states<8>()) systems.push_back(assemble<Case3>(make_env(p, y[2], y[3], y[6], y[7])));
+  for (const Vec<8>& y : y8) systems.push_back(assemble<Case3>(make_env(p, y[2], y[3], y[6], y[7])));
   Vec<4> q;
   double sink = 0;
   t.solve_blocks = nanoseconds_per_call(
       [&](std::size_t i) {
-        const LinearSystem<Case3>& s = systems[i % systems.size()];
-        sink += solve_blocks<Case3>(s.A, s.B, q) ? q[3] : 0.0;
+        const LinearSystem<Case3>& sys = systems[i % systems.size()];
+        sink += solve_blocks<Case3>(sys.A, sys.B, q) ? q[3] : 0.0;
       },
       batch);
   t.solve_lu = nanoseconds_per_call(
       [&](std::size_t i) {
-        const LinearSystem<Case3>& s = systems[i % systems.size()];
-        const Eigen::Matrix4d A = s.A;
-        const Eigen::Vector4d x = A.partialPivLu().solve(s.B);
+        const LinearSystem<Case3>& sys = systems[i % systems.size()];
+        const Eigen::Matrix4d A = sys.A;
+        const Eigen::Vector4d x = A.partialPivLu().solve(sys.B);
         sink += x[3];
       },
       batch);
@@ -223,8 +231,11 @@ AccuracyResult run_accuracy(const AccuracyOptions& options) {
   const SweepLimits limits = sweep_limits(options.quick);
 
   AccuracyResult result;
-  const Scenario& first = find_scenario(options.scenarios.front(), "--scenario");
-  result.rhs = measure_rhs(first.params, options.quick);
+  result.cores = std::max(1u, std::thread::hardware_concurrency());
+  std::ifstream("/proc/loadavg") >> result.load_average;
+  Scenario first = find_scenario(options.scenarios.front(), "--scenario");
+  if (options.duration) first.duration = *options.duration;
+  result.rhs = measure_rhs(first, options.quick);
   for (const std::string& name : options.scenarios) {
     ScenarioResult sr;
     sr.scenario = find_scenario(name, "--scenario");

@@ -50,20 +50,28 @@ struct ScenarioResult {
   std::vector<AccuracyPoint> points;
 };
 
-/// Nanoseconds per right-hand-side evaluation, measured in the same run.
+/// Cost of one right-hand-side evaluation, measured in the same run on states taken
+/// along the first scenario's motion.
 struct RhsTimings {
-  double case3_fast = 0;        // closed form (ours, fastest)
-  double case3_definition = 0;  // definition's matrices + block solve
-  double case3_user = 0;        // hand-typed 4x4 + Eigen partialPivLu
-  double case2 = 0;
-  double case1 = 0;
-  double solve_blocks = 0;      // the Case 3 4x4 solve alone: our block solve
-  double solve_lu = 0;          //                         and Eigen's partialPivLu
+  PerCall case3_fast;        // closed form (ours, fastest)
+  PerCall case3_definition;  // definition's matrices + block solve
+  PerCall case3_user;        // hand-typed 4x4 + Eigen partialPivLu
+  PerCall case2;
+  PerCall case1;
+  PerCall solve_blocks;      // the Case 3 4x4 solve alone: our block solve
+  PerCall solve_lu;          //                         and Eigen's partialPivLu
 };
 
 struct AccuracyResult {
   std::vector<ScenarioResult> scenarios;
   RhsTimings rhs;
+  /// 1-minute load average when the run started, and the cores there are. On a busy
+  /// machine (load above the cores) other processes take the cores in turns and the
+  /// steady clock counts their time too: the targets are then judged by this thread's
+  /// CPU time, and the report says so.
+  double load_average = 0;
+  unsigned cores = 1;
+  [[nodiscard]] bool busy() const { return load_average > static_cast<double>(cores); }
   std::vector<std::filesystem::path> files;  // written, in order
 };
 

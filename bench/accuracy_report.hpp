@@ -7,6 +7,7 @@
 #include <string>
 
 #include "bench/accuracy.hpp"
+#include "bench/targets.hpp"
 
 namespace linkage::bench {
 
@@ -19,6 +20,9 @@ void prepare_output_folder(const std::filesystem::path& dir, const std::string& 
 
 /// Writes every file into options.out and appends their paths to result.files.
 void write_accuracy_report(const AccuracyOptions& options, AccuracyResult& result);
+
+/// The clock the targets are judged by: the thread's CPU time on a busy machine.
+[[nodiscard]] Clock judging_clock(const AccuracyResult& result);
 
 /// Formats a number for CSV: shortest round-trip text, empty for NaN.
 [[nodiscard]] std::string csv_number(double value);

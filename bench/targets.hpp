@@ -35,7 +35,7 @@ enum class Clock { wall, cpu };
 
 /// Median over a curve's points that ran at least 0.5 ms of (time per evaluation
 /// - the right-hand side's own cost), in ns: what the integrator adds per evaluation.
-[[nodiscard]] std::optional<double> overhead_ns(const Curve& curve, double rhs_ns);
+[[nodiscard]] std::optional<double> overhead_ns(const Curve& curve, double rhs_ns, Clock clock = Clock::wall);
 
 struct TargetRow {
   std::string target;    // what is measured
@@ -45,7 +45,9 @@ struct TargetRow {
   std::string note;      // which methods, or why not measured
 };
 
-/// Evaluates every target on a run of the fast scenario.
-[[nodiscard]] std::vector<TargetRow> evaluate_targets(const ScenarioResult& fast, const RhsTimings& rhs);
+/// Evaluates every target on a run of the fast scenario, judged by `clock` (the other
+/// clock's figure is given in the note).
+[[nodiscard]] std::vector<TargetRow> evaluate_targets(const ScenarioResult& fast, const RhsTimings& rhs,
+                                                      Clock clock = Clock::wall);
 
 }  // namespace linkage::bench

@@ -58,27 +58,35 @@ Timing time_repeated(Work&& work, double min_total, int max_repeats = 1000) {
   return out;
 }
 
+/// Cost of one call, by the steady clock and by this thread's CPU time.
+struct PerCall {
+  double wall_ns = 0;
+  double cpu_ns = 0;
+};
+
 /// Nanoseconds per call of `call(i)` for i = 0, 1, 2, ...: the median over `batches`
 /// batches of calls, each batch running at least `min_batch` seconds.
 template <class Call>
-double nanoseconds_per_call(Call&& call, double min_batch, int batches = 7) {
+PerCall nanoseconds_per_call(Call&& call, double min_batch, int batches = 7) {
   using clock = std::chrono::steady_clock;
-  std::vector<double> per_call;
+  std::vector<double> wall, cpu;
   std::size_t n = 1024;
   std::size_t i = 0;
   for (int b = 0; b < batches; ++b) {
     for (;;) {
+      const double cpu_start = thread_cpu_seconds();
       const auto start = clock::now();
       for (std::size_t k = 0; k < n; ++k) call(i++);
       const double t = std::chrono::duration<double>(clock::now() - start).count();
       if (t >= min_batch || n > (std::size_t{1} << 34)) {
-        per_call.push_back(t * 1e9 / static_cast<double>(n));
+        wall.push_back(t * 1e9 / static_cast<double>(n));
+        cpu.push_back((thread_cpu_seconds() - cpu_start) * 1e9 / static_cast<double>(n));
         break;
       }
       n *= 2;
     }
   }
-  return median(per_call);
+  return {median(wall), median(cpu)};
 }
 
 }  // namespace linkage::bench
