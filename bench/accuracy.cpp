@@ -145,7 +145,7 @@ RhsTimings measure_rhs(const Scenario& s, bool quick) {
   }
   RhsTimings t;
   t.case3_fast = rhs_ns<8>(FastCase3Rhs<double>(p), y8, batch);
-  t.case3_definition = rhs_ns<8>(GeneralizedRhs<Case3>(p), y8, batch);
+  t.case3_definition = rhs_ns<8>(DefinitionCase3Rhs{p}, y8, batch);
   const UserConstants user(p);
   t.case3_user = rhs_ns<8>([&](double, const Vec<8>& y, Vec<8>& dy) { user_case3_rhs(user, y.data(), dy.data()); },
                            y8, batch);

@@ -134,7 +134,7 @@ std::vector<Method> linkage_methods(int case_id) {
     default: {
       std::vector<Method> out =
           methods_on<8>(3, RhsKind::fastest, [](const Params& p) { return FastCase3Rhs<double>(p); }, true);
-      for (Method& m : methods_on<8>(3, RhsKind::definition, [](const Params& p) { return GeneralizedRhs<Case3>(p); },
+      for (Method& m : methods_on<8>(3, RhsKind::definition, [](const Params& p) { return DefinitionCase3Rhs{p}; },
                                      false))
         out.push_back(std::move(m));
       return out;

@@ -15,6 +15,7 @@
 #include <Eigen/LU>
 
 #include "formulations/case3_fast.hpp"
+#include "integrate/linkage_rhs.hpp"
 #include "model/params.hpp"
 
 namespace linkage::bench {
@@ -27,6 +28,17 @@ struct FastCase3Rhs {
   explicit FastCase3Rhs(const Params& p) : f(p) {}
   explicit FastCase3Rhs(const Case3Fast<T>& closed_form) : f(closed_form) {}
   void operator()(T /*t*/, const Vector& y, Vector& dydt) const { f.rhs(y, dydt); }
+};
+
+/// Case 3 through its definition: the matrices' expressions (case3.hpp) and the block
+/// solve, as `linkage solve` does; what the closed form is measured against.
+struct DefinitionCase3Rhs {
+  Params params;
+  void operator()(double /*t*/, const Vec<8>& y, Vec<8>& dydt) const {
+    const Vec<4> q = case_unknowns<Case3>(make_env(params, y[2], y[3], y[6], y[7]));
+    dydt.head<4>() = y.tail<4>();
+    dydt.tail<4>() = q;
+  }
 };
 
 /// The parameters a user would precompute once: m, I_zz^C, D, g.

@@ -42,9 +42,11 @@ void rhs_loop(benchmark::State& state, const Rhs& f) {
 void BM_RhsCase1(benchmark::State& state) { rhs_loop<12>(state, MaximalRhs(Params{}, 0.0, 0.0)); }
 void BM_RhsCase2(benchmark::State& state) { rhs_loop<8>(state, GeneralizedRhs<Case2>(Params{})); }
 void BM_RhsCase3(benchmark::State& state) { rhs_loop<8>(state, GeneralizedRhs<Case3>(Params{})); }
+void BM_RhsCase3Definition(benchmark::State& state) { rhs_loop<8>(state, DefinitionCase3Rhs{Params{}}); }
 BENCHMARK(BM_RhsCase1)->Name("rhs/case1");
 BENCHMARK(BM_RhsCase2)->Name("rhs/case2");
-BENCHMARK(BM_RhsCase3)->Name("rhs/case3");
+BENCHMARK(BM_RhsCase3)->Name("rhs/case3");  // what Simulation steps with: the closed form
+BENCHMARK(BM_RhsCase3Definition)->Name("rhs/case3_definition");
 
 void BM_RhsCase3UserLu(benchmark::State& state) {
   const UserConstants c{Params{}};
