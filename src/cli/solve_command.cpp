@@ -48,6 +48,7 @@ void run_solve(const SolveOptions& options) {
   const std::string& format = options.format;
   if (format != "text" && format != "latex" && format != "markdown" && format != "json")
     throw Error::input("--format: '" + format + "' is not a format; valid: text, latex, markdown, json");
+  if (options.ascii && options.unicode) throw Error::input("--ascii and --unicode exclude each other; give one");
   ReportOptions report;
   report.digits = parse_digits(options.digits);
   report.text_style = options.ascii     ? expr::Style::ascii
@@ -81,10 +82,10 @@ void register_solve(CLI::App& app) {
                   "Significant digits of the numbers in text, latex and markdown, 1 to 17; json always prints "
                   "full precision (default 6)")
       ->type_name("N");
-  CLI::Option* ascii = sub->add_flag("--ascii", options->ascii,
-                                     "Text format in plain ASCII (th1'', x1'') whatever the locale (default: "
-                                     "Unicode symbols when the locale uses UTF-8, else ASCII)");
-  sub->add_flag("--unicode", options->unicode, "Text format with Unicode symbols whatever the locale")->excludes(ascii);
+  sub->add_flag("--ascii", options->ascii,
+                "Text format in plain ASCII (th1'', x1'') whatever the locale (default: Unicode symbols when "
+                "the locale uses UTF-8, else ASCII)");
+  sub->add_flag("--unicode", options->unicode, "Text format with Unicode symbols whatever the locale");
   add_input_options(sub, options->inputs);
   add_runner(sub, [options] { run_solve(*options); });
 }
