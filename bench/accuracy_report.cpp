@@ -77,8 +77,9 @@ std::string reference_text(const ScenarioResult& s) {
   return out.str();
 }
 
-std::string method_table(const ScenarioResult& s) {
+std::string method_table(const ScenarioResult& s, Clock clock) {
   std::ostringstream out;
+  out << "Times by " << (clock == Clock::wall ? "the steady clock" : "thread CPU time") << ".\n\n";
   out << "| curve | library | smallest error | time to 1e-6 | time to 1e-8 | time to 1e-10 | evaluations per ms |\n"
       << "| --- | --- | --- | --- | --- | --- | --- |\n";
   for (const Curve& c : curves(s)) {
@@ -87,10 +88,10 @@ std::string method_table(const ScenarioResult& s) {
     for (const AccuracyPoint* p : c.points) {
       if (std::isfinite(p->error)) best = std::min(best, p->error);
       evals += static_cast<double>(p->outcome.rhs_evaluations);
-      time += p->timing.median_seconds;
+      time += clock == Clock::wall ? p->timing.median_seconds : p->timing.cpu_median_seconds;
     }
     auto t = [&](double e) {
-      const std::optional<double> v = time_to_error(c, e);
+      const std::optional<double> v = time_to_error(c, e, clock);
       return v ? sig(*v * 1e3) + " ms" : std::string("-");
     };
     out << "| " << c.name() << " | " << c.library << " | " << sig(best, 2) << " | " << t(1e-6) << " | " << t(1e-8)
@@ -140,7 +141,7 @@ std::string markdown(const AccuracyOptions& options, const AccuracyResult& resul
         << " s\n\n"
         << reference_text(s) << "\n"
         << "![work-precision](work_precision_" << s.scenario.name << ".svg)\n\n"
-        << method_table(s) << "\n";
+        << method_table(s, judging_clock(result)) << "\n";
     if (s.scenario.name == "fast") out << "### Targets (scenario fast)\n\n" << targets_table(s, result) << "\n";
     std::string failures;
     for (const AccuracyPoint& p : s.points)
