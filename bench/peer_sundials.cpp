@@ -78,6 +78,19 @@ void silent_ida(int, const char*, const char*, char*, void*) {}
 
 constexpr long kMaxSteps = 50'000'000;  // users raise the default of 500 for long runs
 
+/// Records how a solver's run ended and its step counts (CVode*/IDA* getters).
+template <class Getter>
+void record_run(Outcome& out, void* mem, const char* solver, int flag, sunrealtype t, Getter get_steps,
+                Getter get_error_test_fails) {
+  if (flag < 0)
+    out.failure = std::string(solver) + " returned flag " + std::to_string(flag) + " at t = " + std::to_string(t);
+  long steps = 0, fails = 0;
+  check(get_steps(mem, &steps), "getting the step count");
+  check(get_error_test_fails(mem, &fails), "getting the error test failures");
+  out.steps = steps;
+  out.rejected = fails;
+}
+
 // --- CVODE on Case 3 ------------------------------------------------------------------
 struct CvodeData {
   UserConstants user;
@@ -120,12 +133,7 @@ Outcome run_cvode(const Scenario& scenario, double tol, RhsKind rhs) {
     check(CVodeSetNonlinearSolver(mem.get(), nls.get()), "CVodeSetNonlinearSolver");
     sunrealtype t = 0;
     const int flag = CVode(mem.get(), scenario.duration, y.get(), &t, CV_NORMAL);
-    if (flag < 0) out.failure = "CVode returned flag " + std::to_string(flag) + " at t = " + std::to_string(t);
-    long steps = 0, fails = 0;
-    check(CVodeGetNumSteps(mem.get(), &steps), "CVodeGetNumSteps");
-    check(CVodeGetNumErrTestFails(mem.get(), &fails), "CVodeGetNumErrTestFails");
-    out.steps = steps;
-    out.rejected = fails;
+    record_run(out, mem.get(), "CVode", flag, t, CVodeGetNumSteps, CVodeGetNumErrTestFails);
   } catch (const std::exception& e) {
     out.failure = e.what();
   }
@@ -216,12 +224,7 @@ Outcome run_ida(const Scenario& scenario, double tol, RhsKind rhs) {
     check(IDASetLinearSolver(mem.get(), ls.get(), A.get()), "IDASetLinearSolver");
     sunrealtype t = 0;
     const int flag = IDASolve(mem.get(), scenario.duration, &t, yy.get(), yp.get(), IDA_NORMAL);
-    if (flag < 0) out.failure = "IDASolve returned flag " + std::to_string(flag) + " at t = " + std::to_string(t);
-    long steps = 0, fails = 0;
-    check(IDAGetNumSteps(mem.get(), &steps), "IDAGetNumSteps");
-    check(IDAGetNumErrTestFails(mem.get(), &fails), "IDAGetNumErrTestFails");
-    out.steps = steps;
-    out.rejected = fails;
+    record_run(out, mem.get(), "IDASolve", flag, t, IDAGetNumSteps, IDAGetNumErrTestFails);
   } catch (const std::exception& e) {
     out.failure = e.what();
   }
