@@ -25,7 +25,7 @@ const std::vector<Scenario>& scenarios() {
     tiny_mass.m = 1e-6;
     out.push_back({"tiny-mass", "the fast spins with m = 1e-6 kg", tiny_mass, fast, 10.0});
 
-    out.push_back({"long", "the fast scenario over 1000 s", example_params, fast, 1000.0});
+    out.push_back({"long", "the fast scenario over 100 s", example_params, fast, 100.0});
     return out;
   }();
   return list;

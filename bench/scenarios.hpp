@@ -23,7 +23,7 @@ struct Scenario {
 ///   fast       the example spinning fast: theta1' = 20, theta2' = -35 rad/s (10 s)
 ///   near-zero-d  the pin almost at the centres of mass: D = 1e-6 L (10 s)
 ///   tiny-mass  m = 1e-6 kg, the example otherwise (10 s): Case 2 divides by m
-///   long       the fast scenario over 1000 s
+///   long       the fast scenario over 100 s
 [[nodiscard]] const std::vector<Scenario>& scenarios();
 
 /// The scenario named `name`; throws Error::input naming `origin` and the valid names.
