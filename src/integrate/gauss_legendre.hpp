@@ -9,12 +9,18 @@
 // The stages are found in increment form, Z_i = Y_i - y:
 //   Z_i = h sum_j a_ij f(t + c_j h, y + Z_j)       i = 1, 2      (2N equations)
 //   y1  = y + sum_i d_i Z_i,  d = b^T A^-1 = (-sqrt3, sqrt3)
-// by simplified Newton iteration with J = df/dy at (t, y) from forward differences:
+// by simplified Newton iteration with J ~ df/dy from forward differences:
 //   (I - h A (x) J) dZ = -Z + h (A (x) I) F(Z),    Z <- Z + dZ
-// started from Z_i = c_i h f(t, y). It stops when the update is at the round-off of the
-// residual (eps |Y| propagated through h |J|); it fails (and the step is refused) when
-// the update stops shrinking before that, or after `max_iterations`: h is too large
-// for the problem.
+// It stops when the update is at the round-off of the residual (eps |Y| propagated
+// through h |J|); it fails (and the step is refused) when the update stops shrinking
+// before that, or after `max_iterations`: h is too large for the problem.
+//
+// Work saved between steps of equal size that continue each other: the iteration starts
+// from the previous step's collocation polynomial extrapolated over the new step, and
+// the previous J and LU factors are kept while they converge quickly. Should that
+// iteration fail, the step is retried once with a fresh J at (t, y) and the start
+// Z_i = c_i h f(t, y) before a failure is reported.
+//
 // Symmetric methods have no systematic energy drift: over long runs the energy error
 // oscillates instead of growing.
 #include <algorithm>
@@ -32,41 +38,100 @@ class GaussLegendre2 {
  public:
   using Vector = State<Scalar, N>;
   static constexpr int max_iterations = 20;
+  /// A kept Jacobian is trusted for the next step while Newton needs at most this many.
+  static constexpr int fast_convergence = 5;
 
   /// Advances y from t to t + h in place; on failure y is unchanged.
   template <class F>
     requires Derivative<F, Scalar, N>
   StepStatus step(F& f, Scalar t, Scalar h, Vector& y) {
-    const Scalar r3 = std::sqrt(Scalar(3));
-    const Scalar c1 = Scalar(0.5) - r3 / 6, c2 = Scalar(0.5) + r3 / 6;
-    const Scalar a11 = Scalar(0.25), a12 = Scalar(0.25) - r3 / 6, a21 = Scalar(0.25) + r3 / 6, a22 = Scalar(0.25);
+    const bool continues = continuation_ && h == h_ && y == y_end_;
+    StepStatus status = StepStatus::newton_failed;
+    if (continues && keep_jacobian_) {
+      extrapolate();
+      status = iterate(f, t, h, y);
+    }
+    if (status == StepStatus::newton_failed) {
+      f(t, y, f0_);
+      jacobian(f, t, y);
+      counters_.rhs_evaluations += 1 + N;
+      if (!all_finite(f0_) || !jacobian_.allFinite()) return fail(StepStatus::non_finite);
+      factor(h);
+      if (continues) {
+        extrapolate();
+      } else {
+        z1_ = c1() * h * f0_;
+        z2_ = c2() * h * f0_;
+      }
+      status = iterate(f, t, h, y);
+    }
+    if (status != StepStatus::ok) return fail(status);
+    z1_end_ = z1_;
+    z2_end_ = z2_;
+    h_ = h;
+    y_end_ = y;
+    continuation_ = true;
+    ++counters_.steps_accepted;
+    return StepStatus::ok;
+  }
 
-    f(t, y, f0_);
-    jacobian(f, t, y);
-    counters_.rhs_evaluations += 1 + N;
-    if (!all_finite(f0_) || !jacobian_.allFinite()) return StepStatus::non_finite;
+  [[nodiscard]] const Counters& counters() const { return counters_; }
 
-    // Newton matrix I - h A (x) J, factored once per step.
+ private:
+  using Matrix = Eigen::Matrix<Scalar, N, N>;
+  using Big = Eigen::Matrix<Scalar, 2 * N, 1>;
+  using BigMatrix = Eigen::Matrix<Scalar, 2 * N, 2 * N>;
+
+  static Scalar r3() { return std::sqrt(Scalar(3)); }
+  static Scalar c1() { return Scalar(0.5) - r3() / 6; }
+  static Scalar c2() { return Scalar(0.5) + r3() / 6; }
+  static Scalar a12() { return Scalar(0.25) - r3() / 6; }
+  static Scalar a21() { return Scalar(0.25) + r3() / 6; }
+  static constexpr Scalar a11 = Scalar(0.25), a22 = Scalar(0.25);
+
+  StepStatus fail(StepStatus status) {
+    continuation_ = false;
+    return status;
+  }
+
+  /// Newton matrix I - h A (x) J, factored.
+  void factor(Scalar h) {
     newton_.setIdentity();
     newton_.template topLeftCorner<N, N>() -= h * a11 * jacobian_;
-    newton_.template topRightCorner<N, N>() -= h * a12 * jacobian_;
-    newton_.template bottomLeftCorner<N, N>() -= h * a21 * jacobian_;
+    newton_.template topRightCorner<N, N>() -= h * a12() * jacobian_;
+    newton_.template bottomLeftCorner<N, N>() -= h * a21() * jacobian_;
     newton_.template bottomRightCorner<N, N>() -= h * a22 * jacobian_;
     lu_.compute(newton_);
+  }
 
-    z1_ = c1 * h * f0_;
-    z2_ = c2 * h * f0_;
+  /// Z from the last step's collocation polynomial u(tau) (u(0) = 0, u(c_i) = Z_i, tau
+  /// in units of h), continued over the next step: Z_i = u(1 + c_i) - u(1).
+  void extrapolate() {
+    const Scalar p = c1(), q = c2();
+    auto u = [&](Scalar tau, Vector& out) {
+      out = (tau * (tau - q) / (p * (p - q))) * z1_end_ + (tau * (tau - p) / (q * (q - p))) * z2_end_;
+    };
+    u(1, stage_);
+    u(1 + p, z1_);
+    u(1 + q, z2_);
+    z1_ -= stage_;
+    z2_ -= stage_;
+  }
+
+  /// The simplified Newton iteration from the current Z; on success writes y1 into y.
+  template <class F>
+  StepStatus iterate(F& f, Scalar t, Scalar h, Vector& y) {
     const Scalar eps = std::numeric_limits<Scalar>::epsilon();
     Scalar previous = std::numeric_limits<Scalar>::infinity();
     for (int iteration = 1; iteration <= max_iterations; ++iteration) {
       stage_ = y + z1_;
-      f(t + c1 * h, stage_, f1_);
+      f(t + c1() * h, stage_, f1_);
       stage_ = y + z2_;
-      f(t + c2 * h, stage_, f2_);
+      f(t + c2() * h, stage_, f2_);
       counters_.rhs_evaluations += 2;
       ++counters_.newton_iterations;
-      residual_.template head<N>() = -z1_ + h * (a11 * f1_ + a12 * f2_);
-      residual_.template tail<N>() = -z2_ + h * (a21 * f1_ + a22 * f2_);
+      residual_.template head<N>() = -z1_ + h * (a11 * f1_ + a12() * f2_);
+      residual_.template tail<N>() = -z2_ + h * (a21() * f1_ + a22 * f2_);
       delta_ = lu_.solve(residual_);
       if (!delta_.allFinite()) return StepStatus::non_finite;
       z1_ += delta_.template head<N>();
@@ -84,10 +149,10 @@ class GaussLegendre2 {
       const bool at_round_off = change <= 10;
       const bool stalled = change >= Scalar(0.9) * previous;
       if (at_round_off || (stalled && change <= 1000)) {
-        next_ = y + r3 * (z2_ - z1_);
+        next_ = y + r3() * (z2_ - z1_);
         if (!all_finite(next_)) return StepStatus::non_finite;
         y = next_;
-        ++counters_.steps_accepted;
+        keep_jacobian_ = iteration <= fast_convergence;
         return StepStatus::ok;
       }
       if (stalled && iteration > 1) return StepStatus::newton_failed;
@@ -95,13 +160,6 @@ class GaussLegendre2 {
     }
     return StepStatus::newton_failed;
   }
-
-  [[nodiscard]] const Counters& counters() const { return counters_; }
-
- private:
-  using Matrix = Eigen::Matrix<Scalar, N, N>;
-  using Big = Eigen::Matrix<Scalar, 2 * N, 1>;
-  using BigMatrix = Eigen::Matrix<Scalar, 2 * N, 2 * N>;
 
   /// Forward differences, one column per state component.
   template <class F>
@@ -121,6 +179,10 @@ class GaussLegendre2 {
   BigMatrix newton_;
   Eigen::PartialPivLU<BigMatrix> lu_;
   Big residual_, delta_;
+  // The last step, for continuing from it.
+  bool continuation_ = false, keep_jacobian_ = false;
+  Scalar h_ = 0;
+  Vector y_end_, z1_end_, z2_end_;
   Counters counters_;
 };
 
