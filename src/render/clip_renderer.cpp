@@ -1,0 +1,227 @@
+#include "render/clip_renderer.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <utility>
+
+#include "core/error.hpp"
+#include "render/scene_painter.hpp"
+
+namespace linkage {
+namespace {
+
+constexpr std::size_t kMaxTargets = 8;  // frame buffers remembered (a pipeline uses a few)
+
+bool any_arrows(const SceneOptions& options) {
+  return std::any_of(options.arrow_scales.begin(), options.arrow_scales.end(), [](const ArrowScale& s) { return s.drawable(); });
+}
+
+// The camera of the first frame: how far the scene reaches decides the scale.
+Camera first_camera(const Params& p, const Motion& motion, const RenderSettings& settings, const SceneOptions& options) {
+  const double arrows = any_arrows(options) ? default_longest_arrow(p) : 0.0;
+  switch (settings.camera) {
+    case CameraMode::fixed: return {settings.view, settings.width, settings.height};
+    case CameraMode::fit: {
+      Bounds bounds = motion_bounds(p, motion);
+      bounds.min -= Vec2(arrows, arrows);
+      bounds.max += Vec2(arrows, arrows);
+      return {view_of(bounds, 0.04), settings.width, settings.height};
+    }
+    case CameraMode::follow: break;
+  }
+  const double reach = 1.12 * (max_radius_about_com(p, motion) + arrows);
+  return {view_around(system_com(motion.samples.front().state), reach), settings.width, settings.height};
+}
+
+std::string seconds_text(double seconds) {
+  std::array<char, 32> buffer{};
+  std::snprintf(buffer.data(), buffer.size(), "%g s", seconds);
+  return buffer.data();
+}
+
+std::vector<LegendRow> legend_rows(const Theme& theme, const SceneOptions& options, bool follow) {
+  using Glyph = LegendRow::Glyph;
+  const ElementSet& shown = options.elements;
+  const auto scale = [&](ArrowKind kind, std::string_view unit) {
+    return describe_arrow_scale(options.arrow_scales[static_cast<std::size_t>(kind)], unit);
+  };
+  std::vector<LegendRow> rows;
+  if (shown.has(Element::pin_force)) rows.push_back({Glyph::arrow, theme.pin_force, "pin force", scale(ArrowKind::pin_force, "N")});
+  if (shown.has(Element::gravity)) rows.push_back({Glyph::arrow, theme.gravity, "weight", scale(ArrowKind::gravity, "N")});
+  if (shown.has(Element::velocity)) rows.push_back({Glyph::arrow, theme.velocity, "velocity", scale(ArrowKind::velocity, "m/s")});
+  if (shown.has(Element::trail))
+    rows.push_back({Glyph::line, theme.trail, "path of P", "last " + seconds_text(options.trail_seconds)});
+  if (shown.has(Element::com)) rows.push_back({Glyph::com, theme.com, "centres of mass", ""});
+  // Paths and velocities are then relative to G: say so.
+  if (follow) rows.push_back({Glyph::none, theme.text_muted, "the view falls with G, the centre of both", ""});
+  return rows;
+}
+
+}  // namespace
+
+ClipRenderer::ClipRenderer(const Params& params, const Motion& motion, const RenderSettings& settings, Theme theme,
+                           std::string run)
+    : params_(params), motion_(motion), settings_(settings), theme_(std::move(theme)) {
+  if (motion_.samples.empty()) throw Error::failure("nothing to draw: the motion has no samples");
+  style_.theme = &theme_;
+  style_.u = Style::unit_for(settings_.width, settings_.height);
+  const bool follow = settings_.camera == CameraMode::follow;
+  scene_options_ = scene_options_for(params_, motion_, settings_.elements, follow);
+  base_camera_ = first_camera(params_, motion_, settings_, scene_options_);
+  grid_.spacing = grid_spacing_for(base_camera_, settings_.width, settings_.height);
+  grid_.anchor = follow ? base_camera_.centre() : Vec2::Zero();
+  grid_.relative = follow;
+
+  const ElementSet& shown = settings_.elements;
+  if (shown.has(Element::legend)) {
+    legend_ = legend_rows(theme_, scene_options_, follow);
+    scale_label_ = describe_length(grid_.spacing.mantissa, grid_.spacing.exponent);
+    scale_length_px_ = grid_.spacing.metres() * base_camera_.scale();
+  }
+  std::snprintf(hud_.run.data(), hud_.run.size(), "%s", run.c_str());
+
+  // Layout, measured once on a scratch surface (metrics are unhinted, so they hold for
+  // raster and vector output alike).
+  const cairo::SurfacePtr scratch = cairo::image_surface(1, 1);
+  const cairo::ContextPtr cr = cairo::context(scratch.get());
+  if (shown.has(Element::title)) title_layout_ = title_layout(cr.get(), style_, settings_.title, settings_.width);
+  if (shown.has(Element::legend)) {
+    legend_rect_ = legend_rect(cr.get(), style_, legend_, settings_.height);
+    scale_rect_ = scale_bar_rect(cr.get(), style_, scale_label_, scale_length_px_, settings_.width, settings_.height);
+  }
+  if (shown.has(Element::hud)) {
+    HudText widest = hud_;
+    format_hud(widest, -std::max(9.99, motion_.samples.back().t), -8.8e-88, 8.8e-88);
+    hud_rect_ = hud_rect(cr.get(), style_, widest, settings_.width);
+  }
+  targets_.reserve(kMaxTargets);
+  panels_.reserve(3);
+}
+
+ClipRenderer::~ClipRenderer() = default;
+
+Camera ClipRenderer::camera_at(std::size_t index) const {
+  if (settings_.camera != CameraMode::follow) return base_camera_;
+  return base_camera_.centred_at(system_com(motion_.samples[index].state));
+}
+
+ClipRenderer::Target& ClipRenderer::target_for(Frame& frame) {
+  if (frame.width != settings_.width || frame.height != settings_.height)
+    throw Error::failure("frame is " + std::to_string(frame.width) + "x" + std::to_string(frame.height) + ", expected " +
+                         std::to_string(settings_.width) + "x" + std::to_string(settings_.height));
+  for (Target& target : targets_)
+    if (target.pixels == frame.pixels.data()) return target;
+  if (targets_.size() == kMaxTargets) targets_.erase(targets_.begin());  // only when callers keep new buffers coming
+  Target target;
+  target.pixels = frame.pixels.data();
+  target.surface = cairo::surface_for(frame);
+  target.context = cairo::context(target.surface.get());
+  targets_.push_back(std::move(target));
+  return targets_.back();
+}
+
+void ClipRenderer::paint_static_background(cairo_t* cr) const {
+  paint_background(cr, style_, settings_.width, settings_.height);
+  if (settings_.elements.has(Element::grid)) paint_grid(cr, style_, base_camera_, grid_, settings_.width, settings_.height);
+  if (settings_.elements.has(Element::axes))
+    paint_axes(cr, style_, base_camera_, grid_, settings_.width, settings_.height,
+               {title_layout_.rect, legend_rect_, scale_rect_, hud_rect_});
+}
+
+void ClipRenderer::paint_title_panel(cairo_t* cr) const { paint_title(cr, style_, settings_.title, title_layout_); }
+void ClipRenderer::paint_legend_panel(cairo_t* cr) const { paint_legend(cr, style_, legend_, legend_rect_); }
+void ClipRenderer::paint_scale_bar_panel(cairo_t* cr) const {
+  paint_scale_bar(cr, style_, scale_label_, scale_length_px_, scale_rect_);
+}
+
+void ClipRenderer::paint_static_overlays(cairo_t* cr) const {
+  if (!title_layout_.rect.empty()) paint_title_panel(cr);
+  if (!legend_rect_.empty()) paint_legend_panel(cr);
+  if (!scale_rect_.empty()) paint_scale_bar_panel(cr);
+}
+
+ClipRenderer::Panel ClipRenderer::cache_panel(const Rect& rect, void (ClipRenderer::*paint)(cairo_t*) const) {
+  Panel panel;
+  panel.rect = rect;
+  panel.surface = cairo::image_surface(static_cast<int>(rect.width), static_cast<int>(rect.height));
+  const cairo::ContextPtr cr = cairo::context(panel.surface.get());
+  cairo_translate(cr.get(), -rect.x, -rect.y);
+  (this->*paint)(cr.get());
+  cairo::check(cr.get(), "cannot draw a legend or title");
+  cairo_surface_flush(panel.surface.get());
+  ++stats_.static_layer_draws;
+  return panel;
+}
+
+void ClipRenderer::prepare_static_layers() {
+  if (static_ready_) return;
+  background_ = cairo::image_surface(settings_.width, settings_.height);
+  {
+    const cairo::ContextPtr cr = cairo::context(background_.get());
+    paint_static_background(cr.get());
+    cairo::check(cr.get(), "cannot draw the background");
+  }
+  cairo_surface_flush(background_.get());
+  ++stats_.static_layer_draws;
+  if (!title_layout_.rect.empty()) panels_.push_back(cache_panel(title_layout_.rect, &ClipRenderer::paint_title_panel));
+  if (!legend_rect_.empty()) panels_.push_back(cache_panel(legend_rect_, &ClipRenderer::paint_legend_panel));
+  if (!scale_rect_.empty()) panels_.push_back(cache_panel(scale_rect_, &ClipRenderer::paint_scale_bar_panel));
+  static_ready_ = true;
+}
+
+void ClipRenderer::paint_dynamic(std::size_t index, cairo_t* cr) {
+  build_scene(params_, scene_options_, motion_, index, list_);
+  stats_.trail_points_drawn += static_cast<std::int64_t>(list_.trail.size());
+  paint_scene(cr, style_, list_, camera_at(index));
+}
+
+void ClipRenderer::draw(std::size_t index, Frame& frame) {
+  const auto start = std::chrono::steady_clock::now();
+  Target& target = target_for(frame);
+  prepare_static_layers();
+
+  // Start from the cached background (same size and stride), then draw on top.
+  const int stride = cairo_image_surface_get_stride(background_.get());
+  if (stride != frame.stride) throw Error::failure("frame stride differs from the background's");
+  std::memcpy(frame.pixels.data(), cairo_image_surface_get_data(background_.get()),
+              static_cast<std::size_t>(stride) * static_cast<std::size_t>(frame.height));
+  cairo_surface_mark_dirty(target.surface.get());
+
+  cairo_t* cr = target.context.get();
+  cairo_save(cr);
+  paint_dynamic(index, cr);
+  for (const Panel& panel : panels_) {
+    cairo_set_source_surface(cr, panel.surface.get(), panel.rect.x, panel.rect.y);
+    cairo_paint(cr);
+  }
+  if (settings_.elements.has(Element::hud)) {
+    const SampleErrors errors = sample_errors(params_, motion_, index);
+    format_hud(hud_, motion_.samples[index].t, errors.energy, errors.constraint);
+    paint_hud(cr, style_, hud_, hud_rect_);
+  }
+  cairo_restore(cr);
+  cairo::check(cr, "cannot draw a frame");
+  cairo_surface_flush(target.surface.get());
+  ++stats_.frames_drawn;
+  stats_.draw_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void ClipRenderer::draw_vector(std::size_t index, cairo_t* cr) {
+  const auto start = std::chrono::steady_clock::now();
+  cairo_save(cr);
+  paint_static_background(cr);
+  paint_dynamic(index, cr);
+  paint_static_overlays(cr);
+  if (settings_.elements.has(Element::hud)) {
+    const SampleErrors errors = sample_errors(params_, motion_, index);
+    format_hud(hud_, motion_.samples[index].t, errors.energy, errors.constraint);
+    paint_hud(cr, style_, hud_, hud_rect_);
+  }
+  cairo_restore(cr);
+  cairo::check(cr, "cannot draw the figure");
+  ++stats_.frames_drawn;
+  stats_.draw_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace linkage

@@ -1,0 +1,108 @@
+#pragma once
+// Draws the frames of a clip (or one still) from its sampled motion. Everything that
+// is the same in every frame (background, grid, axes, title, legend, scale bar) is
+// drawn once into cached surfaces and copied into each frame; per frame only the scene
+// and the HUD are drawn. Raster frames go into core::Frame buffers (ARGB32); vector
+// stills draw everything straight onto a Cairo context (SVG, PDF).
+#include <chrono>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <cairo.h>
+
+#include "core/frame.hpp"
+#include "model/params.hpp"
+#include "render/cairo_util.hpp"
+#include "render/camera.hpp"
+#include "render/overlays.hpp"
+#include "render/settings.hpp"
+#include "render/style.hpp"
+#include "render/theme.hpp"
+#include "scene/draw_list.hpp"
+#include "scene/motion.hpp"
+#include "scene/scene_builder.hpp"
+
+namespace linkage {
+
+/// Counters and timings of a render, per stage. The renderer fills the drawing fields;
+/// whoever runs the simulation and the encoder fills the others.
+struct RenderStats {
+  std::int64_t frames_drawn = 0;
+  std::int64_t static_layer_draws = 0;  // background+grid+axes, title, legend, scale bar: once each per run
+  std::int64_t trail_points_drawn = 0;  // 0 when the trail is hidden
+  std::int64_t force_evaluations = 0;   // pin-force solves (Simulation::stats)
+  std::int64_t samples = 0;             // states taken from the simulation
+  bool encoder_opened = false;          // an MP4 encoder was opened
+  std::int64_t png_files_written = 0;
+  double simulate_seconds = 0;          // sampling the motion (integration, pin forces)
+  double draw_seconds = 0;              // Cairo drawing into frames
+  double convert_seconds = 0;           // colour conversion for the encoder (libswscale)
+  double encode_seconds = 0;            // video encoding and muxing
+  double png_seconds = 0;               // PNG compression and writing
+};
+
+class ClipRenderer {
+ public:
+  /// `run` is the HUD's second line (e.g. "Case 3 · dop853"). The motion must outlive the
+  /// renderer. Chooses arrow scales from the whole motion and the camera for it.
+  ClipRenderer(const Params& params, const Motion& motion, const RenderSettings& settings, Theme theme, std::string run);
+  ClipRenderer(const ClipRenderer&) = delete;
+  ClipRenderer& operator=(const ClipRenderer&) = delete;
+  ~ClipRenderer();
+
+  /// Draws sample `index` of the motion into `frame` (settings' width x height).
+  void draw(std::size_t index, Frame& frame);
+  /// Draws sample `index` onto a vector surface's context, without any cached bitmap.
+  void draw_vector(std::size_t index, cairo_t* cr);
+
+  /// The camera of sample `index` (follow moves it with G).
+  [[nodiscard]] Camera camera_at(std::size_t index) const;
+  [[nodiscard]] const SceneOptions& scene_options() const { return scene_options_; }
+  [[nodiscard]] const std::vector<LegendRow>& legend() const { return legend_; }
+  [[nodiscard]] const RenderStats& stats() const { return stats_; }
+
+ private:
+  struct Target {  // a Cairo surface and context per frame buffer, made on first use
+    const std::uint8_t* pixels = nullptr;
+    cairo::SurfacePtr surface;
+    cairo::ContextPtr context;
+  };
+  struct Panel {  // a cached static overlay
+    cairo::SurfacePtr surface;
+    Rect rect;
+  };
+  Target& target_for(Frame& frame);
+  void prepare_static_layers();
+  void paint_static_background(cairo_t* cr) const;
+  void paint_dynamic(std::size_t index, cairo_t* cr);
+  void paint_static_overlays(cairo_t* cr) const;
+  Panel cache_panel(const Rect& rect, void (ClipRenderer::*paint)(cairo_t*) const);
+  void paint_title_panel(cairo_t* cr) const;
+  void paint_legend_panel(cairo_t* cr) const;
+  void paint_scale_bar_panel(cairo_t* cr) const;
+
+  Params params_;
+  const Motion& motion_;
+  RenderSettings settings_;
+  Theme theme_;
+  Style style_;
+  SceneOptions scene_options_;
+  Camera base_camera_;
+  GridSpec grid_;
+  std::vector<LegendRow> legend_;
+  std::string scale_label_;
+  double scale_length_px_ = 0;
+  HudText hud_;
+  TitleLayout title_layout_;
+  Rect legend_rect_, scale_rect_, hud_rect_;
+
+  DrawList list_;
+  std::vector<Target> targets_;
+  cairo::SurfacePtr background_;
+  std::vector<Panel> panels_;
+  bool static_ready_ = false;
+  RenderStats stats_;
+};
+
+}  // namespace linkage

@@ -1,0 +1,351 @@
+#include "render/overlays.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <numbers>
+
+#include "render/scene_painter.hpp"
+#include "render/text.hpp"
+
+namespace linkage {
+namespace {
+
+constexpr const char* kMinus = "\u2212";
+
+// A rectangle with whole-pixel corners (so cached copies land exactly on pixels).
+Rect snapped(double x, double y, double width, double height) {
+  const double left = std::floor(x), top = std::floor(y);
+  return {left, top, std::ceil(x + width) - left, std::ceil(y + height) - top};
+}
+
+void rounded_rect(cairo_t* cr, const Rect& r, double radius) {
+  constexpr double quarter = 0.5 * std::numbers::pi;
+  cairo_new_sub_path(cr);
+  cairo_arc(cr, r.x + r.width - radius, r.y + radius, radius, -quarter, 0);
+  cairo_arc(cr, r.x + r.width - radius, r.y + r.height - radius, radius, 0, quarter);
+  cairo_arc(cr, r.x + radius, r.y + r.height - radius, radius, quarter, 2 * quarter);
+  cairo_arc(cr, r.x + radius, r.y + radius, radius, 2 * quarter, 3 * quarter);
+  cairo_close_path(cr);
+}
+
+void paint_panel(cairo_t* cr, const Style& style, const Rect& r) {
+  const Rect inner{r.x + 0.5, r.y + 0.5, r.width - 1, r.height - 1};
+  rounded_rect(cr, inner, 5 * style.u);
+  set_colour(cr, style.theme->panel);
+  cairo_fill_preserve(cr);
+  set_colour(cr, style.theme->panel_edge);
+  cairo_set_line_width(cr, 1.0);
+  cairo_stroke(cr);
+}
+
+// Replaces each ASCII '-' of a NUL-terminated buffer by U+2212 (three bytes), in place.
+template <std::size_t N>
+void use_minus_signs(std::array<char, N>& buffer) {
+  std::array<char, N> copy = buffer;
+  std::size_t out = 0;
+  for (std::size_t in = 0; in < N && copy[in] != '\0' && out + 4 < N; ++in) {
+    if (copy[in] == '-') {
+      std::memcpy(buffer.data() + out, kMinus, 3);
+      out += 3;
+    } else {
+      buffer[out++] = copy[in];
+    }
+  }
+  buffer[out] = '\0';
+}
+
+double grid_line_width(const Style& style) { return std::max(1.0, std::round(style.grid_width())); }
+
+// A pixel coordinate moved to where a line of `width` whole pixels draws crisply.
+double crisp(double pixel, double width) {
+  const double offset = std::fmod(width, 2.0) == 1.0 ? 0.5 : 0.0;
+  return std::round(pixel - offset) + offset;
+}
+
+// Calls line(k, pixel) for every grid line across one axis of the frame.
+template <typename Line>
+void for_each_grid_line(double low, double high, double anchor, double spacing, Line line) {
+  const long first = static_cast<long>(std::ceil((low - anchor) / spacing));
+  const long last = static_cast<long>(std::floor((high - anchor) / spacing));
+  for (long k = first; k <= last && k - first < 1000; ++k) line(k, anchor + static_cast<double>(k) * spacing);
+}
+
+constexpr double kLegendGlyphWidth = 30;  // in units of Style::u
+constexpr double kTitleHalo = 0.3;         // halo width over font size
+
+// The widest glyph-and-name of the legend's rows, over rows with a note (where the
+// notes column starts) or over all rows.
+double legend_names_width(cairo_t* cr, const Style& style, const std::vector<LegendRow>& rows, bool with_notes_only) {
+  const text::Font font{style.text_size(), false};
+  double names = 0;
+  for (const LegendRow& row : rows) {
+    if (with_notes_only && row.note.empty()) continue;
+    const double glyph = row.glyph == LegendRow::Glyph::none ? 0 : (kLegendGlyphWidth + 8) * style.u;
+    names = std::max(names, glyph + text::width(cr, font, row.name.c_str()));
+  }
+  return names;
+}
+
+}  // namespace
+
+RoundLength grid_spacing_for(const Camera& camera, int width, int height) {
+  return round_length_at_least(std::min(width, height) / camera.scale() / 10.0);
+}
+
+void paint_background(cairo_t* cr, const Style& style, int width, int height) {
+  cairo_save(cr);
+  cairo_set_operator(cr, CAIRO_OPERATOR_SOURCE);
+  set_colour(cr, style.theme->background);
+  cairo_rectangle(cr, 0, 0, width, height);
+  cairo_fill(cr);
+  cairo_restore(cr);
+}
+
+void paint_grid(cairo_t* cr, const Style& style, const Camera& camera, const GridSpec& grid, int width, int height) {
+  const View visible = camera.visible();
+  const double spacing = grid.spacing.metres();
+  const double line_width = grid_line_width(style);
+  set_colour(cr, style.theme->grid);
+  cairo_set_line_width(cr, line_width);
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+  for_each_grid_line(visible.xmin, visible.xmax, grid.anchor.x(), spacing, [&](long, double x) {
+    const double px = crisp(camera.to_pixels({x, 0.0}).x(), line_width);
+    cairo_move_to(cr, px, 0);
+    cairo_line_to(cr, px, height);
+  });
+  for_each_grid_line(visible.ymin, visible.ymax, grid.anchor.y(), spacing, [&](long, double y) {
+    const double py = crisp(camera.to_pixels({0.0, y}).y(), line_width);
+    cairo_move_to(cr, 0, py);
+    cairo_line_to(cr, width, py);
+  });
+  cairo_stroke(cr);
+}
+
+void paint_axes(cairo_t* cr, const Style& style, const Camera& camera, const GridSpec& grid, int width, int height,
+                const std::vector<Rect>& avoid) {
+  const View visible = camera.visible();
+  const double spacing = grid.spacing.metres();
+  const int decimals = std::max(0, -grid.spacing.exponent);
+  const text::Font font{style.small_size(), false};
+  const double edge = 0.6 * style.padding();
+  const double gap = 4 * style.u;
+  const text::Metrics m = text::metrics(cr, font);
+
+  struct Tick {
+    double at;     // pixel position along the edge
+    double value;  // metres
+  };
+  // A label's box, and whether it stays clear of the frame's edges and of the panels.
+  const auto box = [&](bool bottom, double at, const char* s) {
+    const double w = text::width(cr, font, s);
+    return bottom ? Rect{at - 0.5 * w, height - edge - m.ascent - m.descent, w, m.ascent + m.descent}
+                  : Rect{edge, at - 0.5 * (m.ascent + m.descent), w, m.ascent + m.descent};
+  };
+  const auto clear = [&](const Rect& r) {
+    if (r.x < edge || r.y < edge || r.x + r.width > width - edge || r.y + r.height > height - edge) return false;
+    return std::none_of(avoid.begin(), avoid.end(), [&](const Rect& o) {
+      return !o.empty() && r.x < o.x + o.width + gap && o.x < r.x + r.width + gap && r.y < o.y + o.height + gap &&
+             o.y < r.y + r.height + gap;
+    });
+  };
+  std::array<char, 64> label{};
+  const auto format = [&](const char* name, double value) {
+    if (std::fabs(value) < 0.5 * spacing) value = 0;  // no "-0.0"
+    if (name == nullptr) std::snprintf(label.data(), label.size(), "%.*f", decimals, value);
+    else std::snprintf(label.data(), label.size(), "%s = %.*f m", name, decimals, value);
+    use_minus_signs(label);
+    return label.data();
+  };
+  const auto draw_axis = [&](bool bottom, const std::vector<Tick>& ticks, const char* name) {
+    // The last tick with room for it names the axis and the unit ("x = 1.2 m"); the
+    // ticks before it show the number alone.
+    std::size_t named = ticks.size();
+    for (std::size_t i = ticks.size(); i-- > 0;)
+      if (clear(box(bottom, ticks[i].at, format(name, ticks[i].value)))) {
+        named = i;
+        break;
+      }
+    for (std::size_t i = 0; i < ticks.size() && i <= named; ++i) {
+      const char* s = format(i == named ? name : nullptr, ticks[i].value);
+      const Rect r = box(bottom, ticks[i].at, s);
+      if (!clear(r)) continue;
+      text::draw_with_halo(cr, font, r.x, r.y + m.ascent, s, style.theme->text_muted, style.theme->background, 0.35 * font.size);
+    }
+  };
+  std::vector<Tick> ticks;
+  for_each_grid_line(visible.xmin, visible.xmax, grid.anchor.x(), spacing, [&](long k, double x) {
+    ticks.push_back({camera.to_pixels({x, 0.0}).x(), grid.relative ? static_cast<double>(k) * spacing : x});
+  });
+  draw_axis(true, ticks, grid.relative ? "\u0394x" : "x");
+  ticks.clear();
+  // Bottom to top, so the named tick is the highest with room.
+  for_each_grid_line(visible.ymin, visible.ymax, grid.anchor.y(), spacing, [&](long k, double y) {
+    ticks.push_back({camera.to_pixels({0.0, y}).y(), grid.relative ? static_cast<double>(k) * spacing : y});
+  });
+  draw_axis(false, ticks, grid.relative ? "\u0394y" : "y");
+}
+
+TitleLayout title_layout(cairo_t* cr, const Style& style, const std::string& title, int width) {
+  if (title.empty()) return {};
+  text::Font font{style.title_size(), true};
+  const double room = 0.6 * width;
+  const double natural = text::width(cr, font, title.c_str());
+  if (natural > room) font.size *= room / natural;
+  const text::Metrics m = text::metrics(cr, font);
+  const double halo = kTitleHalo * font.size;
+  return {snapped(style.padding() - halo, style.padding() - halo, text::width(cr, font, title.c_str()) + 2 * halo,
+                  m.ascent + m.descent + 2 * halo),
+          font.size};
+}
+
+void paint_title(cairo_t* cr, const Style& style, const std::string& title, const TitleLayout& layout) {
+  if (layout.rect.empty()) return;
+  const text::Font font{layout.font_size, true};
+  const text::Metrics m = text::metrics(cr, font);
+  const double halo = kTitleHalo * font.size;
+  text::draw_with_halo(cr, font, style.padding(), style.padding() + m.ascent, title.c_str(), style.theme->text,
+                       style.theme->background, halo);
+}
+
+Rect legend_rect(cairo_t* cr, const Style& style, const std::vector<LegendRow>& rows, int height) {
+  if (rows.empty()) return {};
+  const text::Font font{style.text_size(), false};
+  const double u = style.u;
+  double notes = 0;
+  for (const LegendRow& row : rows) notes = std::max(notes, row.note.empty() ? 0.0 : text::width(cr, font, row.note.c_str()));
+  const double inner_width = std::max(legend_names_width(cr, style, rows, false),
+                                      notes > 0 ? legend_names_width(cr, style, rows, true) + 16 * u + notes : 0.0);
+  const double row_height = 1.6 * font.size;
+  const double box_height = static_cast<double>(rows.size()) * row_height + 2 * 6 * u;
+  return snapped(style.padding(), height - style.padding() - box_height, inner_width + 2 * 10 * u, box_height);
+}
+
+void paint_legend(cairo_t* cr, const Style& style, const std::vector<LegendRow>& rows, const Rect& rect) {
+  if (rect.empty()) return;
+  paint_panel(cr, style, rect);
+  const Theme& theme = *style.theme;
+  const text::Font font{style.text_size(), false};
+  const double u = style.u;
+  const double row_height = 1.6 * font.size;
+  const text::Metrics m = text::metrics(cr, font);
+  const double notes_x = rect.x + 10 * u + legend_names_width(cr, style, rows, true) + 16 * u;
+
+  double y = rect.y + 6 * u;
+  for (const LegendRow& row : rows) {
+    const double centre = y + 0.5 * row_height;
+    const double baseline = centre + 0.5 * (m.ascent - m.descent);
+    double x = rect.x + 10 * u;
+    const double glyph_width = kLegendGlyphWidth * u;
+    switch (row.glyph) {
+      case LegendRow::Glyph::arrow: paint_arrow(cr, style, {x, centre}, {x + glyph_width, centre}, row.colour); break;
+      case LegendRow::Glyph::com: paint_com_symbol(cr, style, {x + 0.5 * glyph_width, centre}, style.com_radius()); break;
+      case LegendRow::Glyph::line: {
+        // Fading like the trail: transparent at its old end.
+        std::unique_ptr<cairo_pattern_t, decltype(&cairo_pattern_destroy)> fade(
+            cairo_pattern_create_linear(x, centre, x + glyph_width, centre), &cairo_pattern_destroy);
+        cairo_pattern_add_color_stop_rgba(fade.get(), 0, row.colour.r, row.colour.g, row.colour.b, 0);
+        cairo_pattern_add_color_stop_rgba(fade.get(), 1, row.colour.r, row.colour.g, row.colour.b, row.colour.a);
+        cairo_set_source(cr, fade.get());
+        cairo_set_line_width(cr, style.trail_width());
+        cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+        cairo_move_to(cr, x, centre);
+        cairo_line_to(cr, x + glyph_width, centre);
+        cairo_stroke(cr);
+        break;
+      }
+      case LegendRow::Glyph::none: break;
+    }
+    if (row.glyph != LegendRow::Glyph::none) x += glyph_width + 8 * u;
+    text::draw(cr, font, x, baseline, row.name.c_str(), row.glyph == LegendRow::Glyph::none ? theme.text_muted : theme.text);
+    if (!row.note.empty()) text::draw(cr, font, notes_x, baseline, row.note.c_str(), theme.text_muted);
+    y += row_height;
+  }
+}
+
+Rect scale_bar_rect(cairo_t* cr, const Style& style, const std::string& label, double length_px, int width, int height) {
+  const text::Font font{style.text_size(), false};
+  const text::Metrics m = text::metrics(cr, font);
+  const double u = style.u;
+  const double inner_width = std::max(length_px, text::width(cr, font, label.c_str()));
+  const double inner_height = m.ascent + m.descent + 4 * u + 6 * u;
+  const double box_width = inner_width + 2 * 10 * u, box_height = inner_height + 2 * 6 * u;
+  return snapped(width - style.padding() - box_width, height - style.padding() - box_height, box_width, box_height);
+}
+
+void paint_scale_bar(cairo_t* cr, const Style& style, const std::string& label, double length_px, const Rect& rect) {
+  paint_panel(cr, style, rect);
+  const text::Font font{style.text_size(), false};
+  const text::Metrics m = text::metrics(cr, font);
+  const double u = style.u;
+  const double centre_x = rect.x + 0.5 * rect.width;
+  text::draw(cr, font, centre_x, rect.y + 6 * u + m.ascent, label.c_str(), style.theme->text, text::Align::centre);
+  // |-----| : the bar with end ticks, exactly length_px long between the tick centres.
+  const double y = rect.y + rect.height - 6 * u - 3 * u;
+  const double left = centre_x - 0.5 * length_px, right = centre_x + 0.5 * length_px;
+  set_colour(cr, style.theme->text);
+  cairo_set_line_width(cr, 1.6 * u);
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+  cairo_move_to(cr, left, y);
+  cairo_line_to(cr, right, y);
+  cairo_move_to(cr, left, y - 3 * u);
+  cairo_line_to(cr, left, y + 3 * u);
+  cairo_move_to(cr, right, y - 3 * u);
+  cairo_line_to(cr, right, y + 3 * u);
+  cairo_stroke(cr);
+}
+
+void format_hud(HudText& hud, double t, double energy_error, double constraint_error) {
+  std::snprintf(hud.time.data(), hud.time.size(), "t = %.2f s", t);
+  if (energy_error == 0.0) std::snprintf(hud.energy.data(), hud.energy.size(), "0");
+  else std::snprintf(hud.energy.data(), hud.energy.size(), "%+.1e", energy_error);
+  if (constraint_error == 0.0) std::snprintf(hud.constraint.data(), hud.constraint.size(), "0 m");
+  else std::snprintf(hud.constraint.data(), hud.constraint.size(), "%.1e m", constraint_error);
+  use_minus_signs(hud.time);
+  use_minus_signs(hud.energy);
+  use_minus_signs(hud.constraint);
+}
+
+namespace {
+constexpr const char* kEnergyLabel = "energy error";
+constexpr const char* kConstraintLabel = "constraint error";
+text::Font hud_time_font(const Style& style) { return {1.25 * style.text_size(), true}; }
+}  // namespace
+
+Rect hud_rect(cairo_t* cr, const Style& style, const HudText& hud, int width) {
+  const text::Font font{style.text_size(), false};
+  const double u = style.u;
+  const double values = std::max(text::width(cr, font, hud.energy.data()), text::width(cr, font, hud.constraint.data()));
+  const double labels = std::max(text::width(cr, font, kEnergyLabel), text::width(cr, font, kConstraintLabel));
+  const double inner_width = std::max({text::width(cr, hud_time_font(style), hud.time.data()),
+                                       text::width(cr, font, hud.run.data()), labels + 14 * u + values});
+  const double inner_height = 1.5 * hud_time_font(style).size + 3 * 1.6 * font.size;
+  const double box_width = inner_width + 2 * 10 * u, box_height = inner_height + 2 * 6 * u;
+  return snapped(width - style.padding() - box_width, style.padding(), box_width, box_height);
+}
+
+void paint_hud(cairo_t* cr, const Style& style, const HudText& hud, const Rect& rect) {
+  paint_panel(cr, style, rect);
+  const Theme& theme = *style.theme;
+  const text::Font font{style.text_size(), false};
+  const text::Font time_font = hud_time_font(style);
+  const double u = style.u;
+  const double left = rect.x + 10 * u, right = rect.x + rect.width - 10 * u;
+  const text::Metrics tm = text::metrics(cr, time_font), m = text::metrics(cr, font);
+  double y = rect.y + 6 * u;
+  text::draw(cr, time_font, left, y + 0.5 * (1.5 * time_font.size + tm.ascent - tm.descent), hud.time.data(), theme.text);
+  y += 1.5 * time_font.size;
+  const double row = 1.6 * font.size;
+  const double offset = 0.5 * (row + m.ascent - m.descent);
+  text::draw(cr, font, left, y + offset, hud.run.data(), theme.text_muted);
+  y += row;
+  text::draw(cr, font, left, y + offset, kEnergyLabel, theme.text_muted);
+  text::draw(cr, font, right, y + offset, hud.energy.data(), theme.text, text::Align::right);
+  y += row;
+  text::draw(cr, font, left, y + offset, kConstraintLabel, theme.text_muted);
+  text::draw(cr, font, right, y + offset, hud.constraint.data(), theme.text, text::Align::right);
+}
+
+}  // namespace linkage

@@ -1,0 +1,124 @@
+#include "render/settings.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <vector>
+
+#include "core/error.hpp"
+#include "core/number_format.hpp"
+
+namespace linkage {
+namespace {
+
+// A whole-string finite double, or Error::input.
+double parse_double(std::string_view text, const std::string& origin, std::string_view whole) {
+  double value = 0;
+  const char* first = text.data();
+  const char* last = text.data() + text.size();
+  if (first != last && *first == '+') ++first;
+  const auto [ptr, ec] = std::from_chars(first, last, value);
+  if (text.empty() || ec != std::errc() || ptr != last || !std::isfinite(value))
+    throw Error::input(origin + ": '" + std::string(whole) + "': '" + std::string(text) + "' is not a finite number");
+  return value;
+}
+
+void check_size(int width, int height, const std::string& origin) {
+  const std::string size = std::to_string(width) + "x" + std::to_string(height);
+  if (width <= 0 || height <= 0) throw Error::input(origin + ": size " + size + " must be positive");
+  if (width % 2 != 0 || height % 2 != 0)
+    throw Error::input(origin + ": size " + size + " must have an even width and height (yuv420p video halves the colour resolution)");
+  if (width > kMaxWidth || height > kMaxHeight)
+    throw Error::input(origin + ": size " + size + " is above the largest, " + std::to_string(kMaxWidth) + "x" +
+                       std::to_string(kMaxHeight));
+}
+
+}  // namespace
+
+long RenderSettings::frame_count() const { return std::lround(duration / speed * fps); }
+
+double RenderSettings::frame_time(long k) const { return static_cast<double>(k) * speed / fps; }
+
+void RenderSettings::validate() const {
+  check_size(width, height, "--size");
+  if (fps < 1 || fps > kMaxFps)
+    throw Error::input("--fps: " + std::to_string(fps) + " is outside 1 .. " + std::to_string(kMaxFps));
+  if (!(speed > 0) || !std::isfinite(speed))
+    throw Error::input("--speed: " + format_significant(speed, 6) + " must be a positive number (simulated seconds per second of video)");
+  if (!(duration > 0) || !std::isfinite(duration))
+    throw Error::input("--duration: " + format_significant(duration, 6) + " s must be positive");
+  if (duration / speed > kMaxVideoSeconds)
+    throw Error::input("--duration: " + format_significant(duration, 6) + " s at --speed " + format_significant(speed, 6) +
+                       " makes " + format_significant(duration / speed, 6) + " s of video; at most " +
+                       format_significant(kMaxVideoSeconds, 6) + " s (an hour)");
+  if (frame_count() < 1)
+    throw Error::input("--duration: " + format_significant(duration, 6) + " s at --speed " + format_significant(speed, 6) +
+                       " and " + std::to_string(fps) + " fps is less than one frame");
+  if (!(at >= 0) || at > kMaxStillTime)
+    throw Error::input("--at: " + format_significant(at, 6) + " s is outside 0 .. " + format_significant(kMaxStillTime, 6) + " s");
+  if (camera == CameraMode::fixed && !(view.xmax > view.xmin && view.ymax > view.ymin))
+    throw Error::input("--view: the fixed camera needs a view with positive width and height");
+}
+
+const Quality& parse_quality(std::string_view name, const std::string& origin) {
+  std::string valid;
+  for (const Quality& q : kQualities) {
+    if (q.name == name) return q;
+    valid += std::string(valid.empty() ? "" : ", ") + std::string(q.name) + " (" + std::to_string(q.width) + "x" +
+             std::to_string(q.height) + "@" + std::to_string(q.fps) + ")";
+  }
+  throw Error::input(origin + ": '" + std::string(name) + "' is not a quality; valid: " + valid);
+}
+
+void parse_size(std::string_view text, const std::string& origin, int& width, int& height) {
+  const std::size_t x = text.find('x');
+  int w = 0, h = 0;
+  const auto whole_int = [](std::string_view part, int& value) {
+    const auto [ptr, ec] = std::from_chars(part.data(), part.data() + part.size(), value);
+    return !part.empty() && ec == std::errc() && ptr == part.data() + part.size();
+  };
+  if (x == std::string_view::npos || !whole_int(text.substr(0, x), w) || !whole_int(text.substr(x + 1), h))
+    throw Error::input(origin + ": '" + std::string(text) + "' is not a size WIDTHxHEIGHT (e.g. 1280x720)");
+  check_size(w, h, origin);
+  width = w;
+  height = h;
+}
+
+CameraMode parse_camera(std::string_view name, const std::string& origin) {
+  if (name == "follow") return CameraMode::follow;
+  if (name == "fixed") return CameraMode::fixed;
+  if (name == "fit") return CameraMode::fit;
+  throw Error::input(origin + ": '" + std::string(name) + "' is not a camera; valid: follow, fixed, fit");
+}
+
+View parse_view(std::string_view text, const std::string& origin) {
+  std::vector<double> values;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', start);
+    values.push_back(parse_double(text.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start),
+                                  origin, text));
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+  if (values.size() != 4)
+    throw Error::input(origin + ": '" + std::string(text) + "' is not xmin,ymin,xmax,ymax (four numbers in metres)");
+  const View view{values[0], values[1], values[2], values[3]};
+  if (!(view.xmax > view.xmin) || !(view.ymax > view.ymin))
+    throw Error::input(origin + ": '" + std::string(text) + "' has zero or negative area; need xmin < xmax and ymin < ymax");
+  return view;
+}
+
+OutputKind output_kind(const std::filesystem::path& file, const std::string& origin) {
+  const std::string extension = file.extension().string();
+  if (extension == ".mp4") return OutputKind::mp4;
+  if (extension == ".png") return OutputKind::png;
+  if (extension == ".svg") return OutputKind::svg;
+  if (extension == ".pdf") return OutputKind::pdf;
+  throw Error::input(origin + ": '" + file.string() + "' has " +
+                     (extension.empty() ? std::string("no extension") : "extension '" + extension + "'") +
+                     "; valid: .mp4 (video), .png (still), .svg or .pdf (vector still)");
+}
+
+bool is_still(OutputKind kind) { return kind != OutputKind::mp4; }
+
+}  // namespace linkage

@@ -1,0 +1,67 @@
+#pragma once
+// What `linkage render` is asked to draw, validated: frame size and rate, the clip's
+// simulated duration and playback speed, the shown elements, camera, theme and title.
+// Frame timing: with duration D, speed S (simulated seconds per video second) and F
+// frames per second, a clip has exactly round(D / S x F) frames and frame k shows the
+// motion at t = k S / F.
+#include <array>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "render/camera.hpp"
+#include "scene/elements.hpp"
+
+namespace linkage {
+
+struct Quality {
+  std::string_view name;
+  int width, height, fps;
+};
+/// --quality presets.
+inline constexpr std::array<Quality, 4> kQualities{{
+    {"low", 854, 480, 30},
+    {"medium", 1280, 720, 30},
+    {"high", 1920, 1080, 60},
+    {"4k", 3840, 2160, 60},
+}};
+
+inline constexpr int kMaxWidth = 7680, kMaxHeight = 4320, kMaxFps = 240;
+inline constexpr double kMaxVideoSeconds = 3600;  // an hour of video
+inline constexpr double kMaxStillTime = 3600;     // s of simulated time before a still
+
+enum class OutputKind { mp4, png, svg, pdf };
+
+struct RenderSettings {
+  int width = 1280, height = 720, fps = 30;  // the "medium" preset
+  double duration = 10;                       // s of simulated time
+  double speed = 1;                           // simulated seconds per video second
+  double at = 0;                              // s, the time a still shows
+  ElementSet elements = ElementSet::defaults();
+  CameraMode camera = CameraMode::follow;
+  View view;                                  // for CameraMode::fixed
+  std::string theme = "light";
+  std::string title = "Two blocks joined by a pin, falling freely";
+
+  /// round(duration / speed x fps).
+  [[nodiscard]] long frame_count() const;
+  /// k x speed / fps.
+  [[nodiscard]] double frame_time(long k) const;
+  /// Throws Error::input naming the flag (--size, --fps, --duration, --speed, --at,
+  /// --view) and the valid range for the first bad value.
+  void validate() const;
+};
+
+/// A --quality preset by name; Error::input naming `origin` and the presets otherwise.
+[[nodiscard]] const Quality& parse_quality(std::string_view name, const std::string& origin);
+/// "WxH" (e.g. "1280x720"), each positive, even and within 7680x4320.
+void parse_size(std::string_view text, const std::string& origin, int& width, int& height);
+[[nodiscard]] CameraMode parse_camera(std::string_view name, const std::string& origin);
+/// "xmin,ymin,xmax,ymax" in metres with xmin < xmax and ymin < ymax.
+[[nodiscard]] View parse_view(std::string_view text, const std::string& origin);
+/// The output kind from a file's extension (.mp4, .png, .svg, .pdf).
+[[nodiscard]] OutputKind output_kind(const std::filesystem::path& file, const std::string& origin);
+[[nodiscard]] bool is_still(OutputKind kind);
+
+}  // namespace linkage

@@ -1,0 +1,125 @@
+#include "render/theme.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <utility>
+
+#include <toml++/toml.h>
+
+#include "core/error.hpp"
+#include "linkage/embedded_themes.hpp"
+
+namespace linkage {
+namespace {
+
+std::string position(const std::string& source, const toml::source_region& region) {
+  return source + ":" + std::to_string(region.begin.line) + ":" + std::to_string(region.begin.column);
+}
+
+int hex_digit(char c) {
+  if (c >= '0' && c <= '9') return c - '0';
+  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+  return -1;
+}
+
+// "#RRGGBB" or "#RRGGBBAA"; false for anything else.
+bool parse_colour(std::string_view text, Rgba& out) {
+  if ((text.size() != 7 && text.size() != 9) || text[0] != '#') return false;
+  std::array<double, 4> channels{0, 0, 0, 1};
+  for (std::size_t i = 0; 1 + 2 * i < text.size(); ++i) {
+    const int high = hex_digit(text[1 + 2 * i]), low = hex_digit(text[2 + 2 * i]);
+    if (high < 0 || low < 0) return false;
+    channels[i] = (16 * high + low) / 255.0;
+  }
+  out = {channels[0], channels[1], channels[2], channels[3]};
+  return true;
+}
+
+// Every key of [colors] and the colour it sets.
+using Accessor = Rgba& (*)(Theme&);
+#define LINKAGE_COLOUR(key, member) {key, [](Theme& t) -> Rgba& { return t.member; }}
+constexpr std::array<std::pair<std::string_view, Accessor>, 17> kColourKeys{{
+    LINKAGE_COLOUR("background", background), LINKAGE_COLOUR("grid", grid),
+    LINKAGE_COLOUR("text", text), LINKAGE_COLOUR("text_muted", text_muted),
+    LINKAGE_COLOUR("panel", panel), LINKAGE_COLOUR("panel_edge", panel_edge),
+    LINKAGE_COLOUR("block1_fill", block_fill[0]), LINKAGE_COLOUR("block1_edge", block_edge[0]),
+    LINKAGE_COLOUR("block2_fill", block_fill[1]), LINKAGE_COLOUR("block2_edge", block_edge[1]),
+    LINKAGE_COLOUR("pin_fill", pin_fill), LINKAGE_COLOUR("pin_edge", pin_edge),
+    LINKAGE_COLOUR("pin_force", pin_force), LINKAGE_COLOUR("gravity", gravity),
+    LINKAGE_COLOUR("velocity", velocity), LINKAGE_COLOUR("trail", trail), LINKAGE_COLOUR("com", com),
+}};
+#undef LINKAGE_COLOUR
+
+std::string all_keys() {
+  std::string list;
+  for (const auto& [key, accessor] : kColourKeys) list += std::string(list.empty() ? "" : ", ") + std::string(key);
+  return list;
+}
+
+}  // namespace
+
+std::string theme_name_list() {
+  std::string list;
+  for (const EmbeddedTheme& theme : kEmbeddedThemes) list += std::string(list.empty() ? "" : ", ") + std::string(theme.name);
+  return list;
+}
+
+Theme parse_theme(std::string_view toml_text, const std::string& name, const std::string& source) {
+  toml::table root;
+  try {
+    root = toml::parse(toml_text, source);
+  } catch (const toml::parse_error& e) {
+    throw Error::input(position(source, e.source()) + ": " + std::string(e.description()));
+  }
+  for (const auto& [key, node] : root)
+    if (key.str() != "colors")
+      throw Error::input(position(source, key.source()) + ": unknown key '" + std::string(key.str()) + "'; a theme has only a [colors] table");
+  const toml::table* colours = root["colors"].as_table();
+  if (colours == nullptr) throw Error::input(source + ": no [colors] table");
+
+  Theme theme;
+  theme.name = name;
+  for (const auto& [key, node] : *colours) {
+    const auto known = std::find_if(kColourKeys.begin(), kColourKeys.end(), [&](const auto& k) { return k.first == key.str(); });
+    if (known == kColourKeys.end())
+      throw Error::input(position(source, key.source()) + ": unknown colour '" + std::string(key.str()) + "'; valid: " + all_keys());
+    const auto* text = node.as_string();
+    if (text == nullptr || !parse_colour(text->get(), known->second(theme)))
+      throw Error::input(position(source, node.source()) + ": " + std::string(key.str()) +
+                         " must be a colour \"#RRGGBB\" or \"#RRGGBBAA\"");
+  }
+  std::string missing;
+  for (const auto& [key, accessor] : kColourKeys)
+    if (!colours->contains(key)) missing += std::string(missing.empty() ? "" : ", ") + std::string(key);
+  if (!missing.empty()) throw Error::input(source + ": [colors] is missing " + missing);
+  return theme;
+}
+
+std::filesystem::path assets_dir(const std::filesystem::path& built_in) {
+  if (const char* from_env = std::getenv("LINKAGE_ASSETS_DIR"); from_env != nullptr && *from_env != '\0') return from_env;
+  std::error_code ec;
+  if (!built_in.empty() && std::filesystem::is_directory(built_in, ec)) return built_in;
+  return {};
+}
+
+Theme load_theme(std::string_view name, const std::filesystem::path& assets, const std::string& origin) {
+  for (const EmbeddedTheme& embedded : kEmbeddedThemes) {
+    if (embedded.name != name) continue;
+    const std::filesystem::path file = assets.empty() ? std::filesystem::path() : assets / "themes" / (std::string(name) + ".toml");
+    std::error_code ec;
+    if (!file.empty() && std::filesystem::is_regular_file(file, ec)) {
+      std::ifstream in(file, std::ios::binary);
+      std::ostringstream text;
+      text << in.rdbuf();
+      if (!in) throw Error::failure("cannot read '" + file.string() + "'");
+      return parse_theme(text.str(), std::string(name), file.string());
+    }
+    return parse_theme(embedded.toml, std::string(name), "embedded themes/" + std::string(name) + ".toml");
+  }
+  throw Error::input(origin + ": '" + std::string(name) + "' is not a theme; valid: " + theme_name_list());
+}
+
+}  // namespace linkage

@@ -1,0 +1,18 @@
+#pragma once
+// A still as a vector figure (SVG or PDF) through Cairo's vector surfaces, for papers
+// and handouts: every line, fill and glyph stays a shape, nothing is a bitmap. The
+// file appears whole or not at all (core/atomic_file.hpp).
+#include <filesystem>
+#include <string>
+
+#include "render/clip_renderer.hpp"
+#include "render/settings.hpp"
+
+namespace linkage {
+
+/// Draws sample `index` of `renderer`'s motion into `target` as `kind` (svg or pdf),
+/// width x height units (SVG pixels, PDF points). `origin` names the flag in errors.
+void write_vector_still(ClipRenderer& renderer, std::size_t index, OutputKind kind, int width, int height,
+                        const std::filesystem::path& target, const std::string& origin);
+
+}  // namespace linkage

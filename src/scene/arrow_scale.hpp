@@ -1,0 +1,41 @@
+#pragma once
+// One length scale per kind of arrow: pin forces are milli-newtons while gravity is
+// about a newton, so a shared scale would hide one or the other. Each scale is a round
+// number of units per world centimetre (1, 1.5, 2, 2.5, 3, 4, 5, 6 or 8 times a power of ten),
+// chosen so the largest arrow over the clip is at most a given length, and stated in
+// the legend
+// ("1 cm = 2 mN").
+#include <string>
+#include <string_view>
+
+namespace linkage {
+
+struct ArrowScale {
+  int mantissa = 0;    // 10, 15, 20, 25, 30, 40, 50, 60 or 80; 0 when there is nothing to draw
+  int exponent = 0;    // units per centimetre = mantissa x 10^exponent
+  double metres_per_unit = 0;
+
+  [[nodiscard]] bool drawable() const { return mantissa != 0; }
+  [[nodiscard]] double units_per_cm() const;
+};
+
+/// The scale at which an arrow of `largest_magnitude` is at most `longest_arrow`
+/// metres long and at least two thirds of that. Not drawable when the magnitude is 0
+/// or not finite.
+[[nodiscard]] ArrowScale choose_arrow_scale(double largest_magnitude, double longest_arrow);
+
+/// "1 cm = 2 mN" for unit "N", with an SI prefix keeping the number in 1 .. 999.
+[[nodiscard]] std::string describe_arrow_scale(const ArrowScale& scale, std::string_view unit);
+
+/// A length in metres as people write it: "5 cm", "1 m", "200 m", "2 mm".
+[[nodiscard]] std::string describe_length(int mantissa, int exponent);
+
+/// The round length (1, 2 or 5 x 10^k metres) nearest above `at_least` metres.
+struct RoundLength {
+  int mantissa = 1;
+  int exponent = 0;
+  [[nodiscard]] double metres() const;
+};
+[[nodiscard]] RoundLength round_length_at_least(double at_least);
+
+}  // namespace linkage

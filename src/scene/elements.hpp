@@ -1,0 +1,81 @@
+#pragma once
+// The parts of a picture a user can show or hide (`linkage render --show/--hide`).
+// The set decides what the scene builds and what the simulation must compute: no pin
+// force arrows means no pin force solves; no trail means no trail points.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace linkage {
+
+enum class Element : std::uint8_t {
+  blocks,     // the two blocks, true size, semi-transparent so their overlap shows
+  pin,        // the pin P
+  pin_force,  // the pin force on block 1 at P and its opposite on block 2
+  gravity,    // m g at each centre of mass
+  velocity,   // velocity of each centre of mass
+  trail,      // the fading path of P
+  com,        // both centres of mass and the system's
+  grid,       // a metric grid
+  axes,       // coordinate ticks in metres along two frame edges
+  hud,        // time, case, integrator, energy and constraint errors
+  legend,     // what each colour is, arrow scales, the grid spacing
+  labels,     // "1", "2" on the blocks and names on the arrows
+  title,      // the title line
+};
+
+struct ElementInfo {
+  Element element;
+  std::string_view name;  // CLI spelling, e.g. "pin-force"
+  bool shown_by_default;
+};
+
+inline constexpr std::array<ElementInfo, 13> kElements{{
+    {Element::blocks, "blocks", true},
+    {Element::pin, "pin", true},
+    {Element::pin_force, "pin-force", true},
+    {Element::gravity, "gravity", true},
+    {Element::velocity, "velocity", false},
+    {Element::trail, "trail", true},
+    {Element::com, "com", true},
+    {Element::grid, "grid", true},
+    {Element::axes, "axes", false},
+    {Element::hud, "hud", true},
+    {Element::legend, "legend", true},
+    {Element::labels, "labels", true},
+    {Element::title, "title", true},
+}};
+
+/// A set of elements (a bit per element).
+class ElementSet {
+ public:
+  /// The defaults: everything a lecture needs (velocity arrows and axes off).
+  [[nodiscard]] static ElementSet defaults();
+  [[nodiscard]] static ElementSet none() { return ElementSet{}; }
+  [[nodiscard]] static ElementSet all();
+
+  [[nodiscard]] bool has(Element e) const { return (bits_ & bit(e)) != 0; }
+  void show(Element e) { bits_ = static_cast<std::uint16_t>(bits_ | bit(e)); }
+  void hide(Element e) { bits_ = static_cast<std::uint16_t>(bits_ & ~bit(e)); }
+  bool operator==(const ElementSet&) const = default;
+
+ private:
+  static std::uint16_t bit(Element e) { return static_cast<std::uint16_t>(1u << static_cast<unsigned>(e)); }
+  std::uint16_t bits_ = 0;
+};
+
+/// The element named `name` (CLI spelling); throws Error::input naming `origin` and
+/// every valid name otherwise.
+[[nodiscard]] Element parse_element(std::string_view name, const std::string& origin);
+[[nodiscard]] std::string_view name(Element e);
+/// "blocks, pin, pin-force, ..." for help and error messages.
+[[nodiscard]] std::string element_name_list();
+
+/// Applies names (each entry may itself be a comma-separated list) to `set`: first
+/// every shown name, then every hidden one, so the order of the flags does not matter.
+/// Throws Error::input naming --show or --hide for an unknown name.
+void apply_show_hide(ElementSet& set, const std::vector<std::string>& show, const std::vector<std::string>& hide);
+
+}  // namespace linkage

@@ -1,0 +1,131 @@
+#include "scene/scene_builder.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "model/kinematics.hpp"
+
+namespace linkage {
+namespace {
+
+Vec2 direction(double theta) { return {std::cos(theta), std::sin(theta)}; }
+
+const ArrowScale& scale_of(const SceneOptions& options, ArrowKind kind) {
+  return options.arrow_scales[static_cast<std::size_t>(kind)];
+}
+
+void add_arrow(DrawList& out, const SceneOptions& options, ArrowKind kind, const Vec2& tail, const Vec2& value,
+               std::string_view tag) {
+  const ArrowScale& scale = scale_of(options, kind);
+  if (!scale.drawable()) return;
+  out.arrows.push_back({kind, tail, value * scale.metres_per_unit, tag});
+}
+
+void add_trail(const Params& p, const SceneOptions& options, const Motion& motion, std::size_t index, DrawList& out) {
+  const MotionSample& now = motion.samples[index];
+  const Vec2 anchor = options.relative_to_com ? system_com(now.state) : Vec2::Zero();
+  const double oldest = now.t - options.trail_seconds;
+  std::size_t first = index;
+  while (first > 0 && motion.samples[first - 1].t >= oldest) --first;
+  for (std::size_t j = first; j <= index; ++j) {
+    const BodyState& s = motion.samples[j].state;
+    Vec2 at = pin_position(p, s.x1, s.y1, s.theta1);
+    if (options.relative_to_com) at += anchor - system_com(s);
+    const double age = now.t - motion.samples[j].t;
+    out.trail.push_back({at, options.trail_seconds > 0 ? 1.0 - age / options.trail_seconds : 1.0});
+  }
+}
+
+Marker marker(MarkerKind kind, const Vec2& at) {
+  Marker m;
+  m.kind = kind;
+  m.at = at;
+  return m;
+}
+
+// Beside the pin, across the pin-force arrows (which lie along F) and on the side away
+// from G, whose symbol is often next to P.
+Vec2 pin_tag_direction(const MotionSample& sample, const Vec2& pin, const Vec2& com) {
+  Vec2 across = Vec2(-1, 1).normalized();
+  if (sample.pin_force.norm() > 0) across = Vec2(-sample.pin_force.y(), sample.pin_force.x()).normalized();
+  const Vec2 away = pin - com;
+  if (away.norm() > 0 ? across.dot(away) < 0 : across.y() < 0) across = -across;
+  return across;
+}
+
+}  // namespace
+
+double default_longest_arrow(const Params& p) {
+  // Pin-force arrows start at P, a distance D from each centre of mass: keeping them
+  // shorter than D keeps their heads off the centre-of-mass symbols.
+  return std::clamp(0.75 * p.pin_offset(), 0.25 * p.L, 0.5 * p.L);
+}
+
+SceneOptions scene_options_for(const Params& p, const Motion& motion, ElementSet elements, bool relative_to_com,
+                               double longest_arrow) {
+  SceneOptions options;
+  options.elements = elements;
+  options.relative_to_com = relative_to_com;
+  if (!(longest_arrow > 0)) longest_arrow = default_longest_arrow(p);
+  const std::array<double, kArrowKinds> maxima = arrow_maxima(p, motion, relative_to_com);
+  const std::array<Element, kArrowKinds> shown_by{Element::pin_force, Element::gravity, Element::velocity};
+  for (std::size_t kind = 0; kind < kArrowKinds; ++kind)
+    if (elements.has(shown_by[kind])) options.arrow_scales[kind] = choose_arrow_scale(maxima[kind], longest_arrow);
+  return options;
+}
+
+void build_scene(const Params& p, const SceneOptions& options, const Motion& motion, std::size_t index, DrawList& out) {
+  out.clear();
+  const ElementSet& shown = options.elements;
+  const MotionSample& sample = motion.samples[index];
+  const BodyState& s = sample.state;
+  const double D = p.pin_offset();
+  const Vec2 c1(s.x1, s.y1), c2(s.x2, s.y2);
+  const Vec2 pin1 = c1 + D * direction(s.theta1);  // P as block 1 has it
+  const Vec2 pin2 = c2 - D * direction(s.theta2);  // P as block 2 has it (differs by Case 1's drift)
+  const Vec2 com = system_com(s);
+
+  if (shown.has(Element::trail)) add_trail(p, options, motion, index, out);
+
+  if (shown.has(Element::blocks)) {
+    out.blocks.push_back({1, block_corners(p, s.x1, s.y1, s.theta1), c1});
+    out.blocks.push_back({2, block_corners(p, s.x2, s.y2, s.theta2), c2});
+  }
+  const bool tags = shown.has(Element::labels);
+  if (shown.has(Element::com)) {
+    out.markers.push_back(marker(MarkerKind::com, c1));
+    out.markers.push_back(marker(MarkerKind::com, c2));
+    out.markers.push_back(marker(MarkerKind::com_system, com));
+  }
+  if (shown.has(Element::pin)) {
+    Marker pin = marker(MarkerKind::pin, pin1);
+    if (tags) {
+      pin.tag = "P";
+      pin.tag_direction = pin_tag_direction(sample, pin1, com);
+    }
+    out.markers.push_back(pin);
+  }
+
+  if (shown.has(Element::gravity)) {
+    const Vec2 weight(0.0, -p.m * p.g);
+    add_arrow(out, options, ArrowKind::gravity, c1, weight, tags ? "mg" : "");
+    add_arrow(out, options, ArrowKind::gravity, c2, weight, tags ? "mg" : "");
+  }
+  if (shown.has(Element::velocity)) {
+    const Vec2 frame_velocity = options.relative_to_com ? system_com_velocity(s) : Vec2::Zero();
+    add_arrow(out, options, ArrowKind::velocity, c1, Vec2(s.x1_dot, s.y1_dot) - frame_velocity, tags ? "v1" : "");
+    add_arrow(out, options, ArrowKind::velocity, c2, Vec2(s.x2_dot, s.y2_dot) - frame_velocity, tags ? "v2" : "");
+  }
+  if (shown.has(Element::pin_force) && motion.has_pin_force) {
+    add_arrow(out, options, ArrowKind::pin_force, pin1, sample.pin_force, tags ? "F" : "");
+    add_arrow(out, options, ArrowKind::pin_force, pin2, -sample.pin_force, tags ? "\u2212F" : "");
+  }
+
+  if (shown.has(Element::labels) && shown.has(Element::blocks)) {
+    // Each number sits halfway between the centre of mass and the block's free end.
+    out.labels.push_back({c1 - 0.25 * p.L * direction(s.theta1), "1", 1});
+    out.labels.push_back({c2 + 0.25 * p.L * direction(s.theta2), "2", 2});
+  }
+}
+
+}  // namespace linkage

@@ -1,0 +1,40 @@
+#pragma once
+// Builds the draw list of one frame from the sampled motion:
+//   blocks   rectangles L x w centred at C1 and C2, turned by theta1 and theta2
+//   pin      P = C1 + D e1 (block 1's pin point)
+//   forces   F on block 1 at P, -F on block 2 at its pin point C2 - D e2
+//   gravity  (0, -m g) at each centre of mass
+//   velocity C1', C2' (minus G' in the frame falling with G)
+//   trail    P over the last `trail_seconds`, fading with age
+// In a frame that follows G (`relative_to_com`) the trail and the velocities are those
+// an observer falling with G sees; the blocks are where they are.
+#include <array>
+#include <cstddef>
+
+#include "model/params.hpp"
+#include "scene/arrow_scale.hpp"
+#include "scene/draw_list.hpp"
+#include "scene/elements.hpp"
+#include "scene/motion.hpp"
+
+namespace linkage {
+
+struct SceneOptions {
+  ElementSet elements = ElementSet::defaults();
+  std::array<ArrowScale, kArrowKinds> arrow_scales{};  // indexed by ArrowKind
+  bool relative_to_com = false;
+  double trail_seconds = 2.0;
+};
+
+/// The longest arrow drawn (metres): 3/4 of D, within L/4 .. L/2.
+[[nodiscard]] double default_longest_arrow(const Params& p);
+
+/// The scene options for a motion: arrow scales from the largest magnitude of each kind
+/// over the motion, each arrow at most `longest_arrow` metres (default_longest_arrow).
+[[nodiscard]] SceneOptions scene_options_for(const Params& p, const Motion& motion, ElementSet elements,
+                                             bool relative_to_com, double longest_arrow = 0);
+
+/// Clears `out` and fills it with what sample `index` of `motion` shows.
+void build_scene(const Params& p, const SceneOptions& options, const Motion& motion, std::size_t index, DrawList& out);
+
+}  // namespace linkage
