@@ -30,6 +30,18 @@
 
 namespace linkage {
 
+/// `base` (m, I, D, g from make_env) at the given angles and rates.
+[[nodiscard]] inline expr::Env with_angles(expr::Env base, double theta1, double theta2, double theta1_dot,
+                                           double theta2_dot) {
+  base.s1 = std::sin(theta1);
+  base.c1 = std::cos(theta1);
+  base.s2 = std::sin(theta2);
+  base.c2 = std::cos(theta2);
+  base.w1 = theta1_dot;
+  base.w2 = theta2_dot;
+  return base;
+}
+
 /// The number of values a case integrates: 8 for Cases 2 and 3, 12 for Case 1.
 template <class Case>
 inline constexpr int state_size = Case::size == 8 ? 12 : 8;
@@ -67,16 +79,7 @@ class GeneralizedRhs {
   }
 
  private:
-  [[nodiscard]] expr::Env env_at(const Vector& y) const {
-    expr::Env env = env_;
-    env.s1 = std::sin(y[2]);
-    env.c1 = std::cos(y[2]);
-    env.s2 = std::sin(y[3]);
-    env.c2 = std::cos(y[3]);
-    env.w1 = y[6];
-    env.w2 = y[7];
-    return env;
-  }
+  [[nodiscard]] expr::Env env_at(const Vector& y) const { return with_angles(env_, y[2], y[3], y[6], y[7]); }
 
   expr::Env env_;  // m, I, D, g fixed; the angle terms are set per call
   Case3Fast<double> fast_;
@@ -115,16 +118,7 @@ class MaximalRhs {
   }
 
  private:
-  [[nodiscard]] expr::Env env_at(const Vector& y) const {
-    expr::Env env = env_;
-    env.s1 = std::sin(y[2]);
-    env.c1 = std::cos(y[2]);
-    env.s2 = std::sin(y[5]);
-    env.c2 = std::cos(y[5]);
-    env.w1 = y[8];
-    env.w2 = y[11];
-    return env;
-  }
+  [[nodiscard]] expr::Env env_at(const Vector& y) const { return with_angles(env_, y[2], y[5], y[8], y[11]); }
 
   expr::Env env_;
   double two_alpha_, beta_squared_;

@@ -196,40 +196,42 @@ TEST(Projection, ReachesRoundOffAndKeepsTheCentreOfMassAndMomentum) {
 
 // --- failures -------------------------------------------------------------------------
 
-// Baumgarte gains of 1e6/s make Case 1 stiff; RK4 at dt = 0.01 s explodes at once.
-TEST(Simulation, DivergenceStopsWithAClearMessage) {
-  SimulationOptions o = options(1, IntegratorKind::rk4);
+/// Runs Case 1 with stiff Baumgarte gains (1e6/s) to 50 s and returns the one-line
+/// message it must stop with (exit code 3).
+std::string stiff_failure(IntegratorKind integrator, double dt) {
+  SimulationOptions o = options(1, integrator);
   o.stabilization = Stabilization::baumgarte;
   o.baumgarte_alpha = o.baumgarte_beta = 1e6;
-  o.dt = 0.01;
-  Simulation sim = reference_run(o);
-  try {
-    for (int k = 0; k <= 100; ++k) (void)sim.state_at(0.1 * k);
-    FAIL() << "expected a divergence";
-  } catch (const Error& e) {
-    EXPECT_EQ(e.code(), ExitCode::diverged);
-    const std::string m = e.what();
-    EXPECT_NE(m.find("t = "), std::string::npos) << m;
-    EXPECT_NE(m.find("step 0.01 s"), std::string::npos) << m;
-    EXPECT_NE(m.find("finite"), std::string::npos) << m;
-    EXPECT_NE(m.find("--dt"), std::string::npos) << m;
-    EXPECT_EQ(m.find('\n'), std::string::npos) << "one line";
-  }
-}
-
-TEST(Simulation, NewtonFailureStopsWithAClearMessage) {
-  SimulationOptions o = options(1, IntegratorKind::gauss2);
-  o.stabilization = Stabilization::baumgarte;
-  o.baumgarte_alpha = o.baumgarte_beta = 1e6;
-  o.dt = 0.5;
+  o.dt = dt;
+  o.duration = 50.0;
   Simulation sim = reference_run(o);
   try {
     for (int k = 0; k <= 100; ++k) (void)sim.state_at(0.5 * k);
-    FAIL() << "expected a failure";
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ExitCode::diverged);
-    EXPECT_NE(std::string(e.what()).find("Newton"), std::string::npos) << e.what();
+    const std::string m = e.what();
+    EXPECT_EQ(m.find('\n'), std::string::npos) << "one line";
+    EXPECT_NE(m.find("t = "), std::string::npos) << m;
+    return m;
   }
+  ADD_FAILURE() << "expected the run to fail";
+  return "";
+}
+
+// RK4 at dt = 0.01 s explodes at once.
+TEST(Simulation, DivergenceStopsWithAClearMessage) {
+  const std::string m = stiff_failure(IntegratorKind::rk4, 0.01);
+  EXPECT_NE(m.find("step 0.01 s"), std::string::npos) << m;
+  EXPECT_NE(m.find("finite"), std::string::npos) << m;
+  EXPECT_NE(m.find("try a smaller --dt"), std::string::npos) << m;
+}
+
+// Gauss-Legendre's Newton iteration cannot converge at dt = 0.5 s.
+TEST(Simulation, NewtonFailureStopsWithAClearMessage) {
+  const std::string m = stiff_failure(IntegratorKind::gauss2, 0.5);
+  EXPECT_NE(m.find("step 0.5 s"), std::string::npos) << m;
+  EXPECT_NE(m.find("Newton"), std::string::npos) << m;
+  EXPECT_NE(m.find("explicit integrator"), std::string::npos) << m;
 }
 
 // --- options -------------------------------------------------------------------------
