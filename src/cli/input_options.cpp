@@ -9,7 +9,7 @@
 namespace linkage::cli {
 
 void add_input_options(CLI::App* sub, InputOptions& options) {
-  sub->add_option("--config", options.config,
+  options.config_option = sub->add_option("--config", options.config,
                   "TOML file of inputs (keys: " + input_key_list() + "); flags override it")
       ->type_name("FILE")
       ->group("Inputs");
@@ -30,15 +30,22 @@ double parse_number(const std::string& text, const std::string& origin, const st
   const char* last = text.data() + text.size();
   if (!text.empty() && *first == '+') ++first;
   const auto [ptr, ec] = std::from_chars(first, last, value);
+  if (ec == std::errc::result_out_of_range && ptr == last)
+    throw Error::input(origin + ": '" + text + "' is outside the range of double precision (about 1e-308 to 1e308)");
   if (text.empty() || ec != std::errc() || ptr != last)
     throw Error::input(origin + ": '" + text + "' is not a number" + (unit.empty() ? "" : " (" + unit + ")"));
-  if (!std::isfinite(value)) throw Error::input(origin + ": '" + text + "' is not a finite number");
+  if (!std::isfinite(value))
+    throw Error::input(origin + ": '" + text + "' is not a finite number; give a finite value" +
+                       (unit.empty() ? "" : " in " + unit));
   return value;
 }
 
 Inputs resolve_inputs(const InputOptions& options) {
   Inputs inputs;
-  if (!options.config.empty()) inputs.apply_file(options.config);
+  if (options.config_option != nullptr && options.config_option->count() > 0) {
+    if (options.config.empty()) throw Error::input("--config: the file name is empty; give a TOML file of inputs");
+    inputs.apply_file(options.config);
+  }
   for (std::size_t i = 0; i < kInputKeys.size(); ++i) {
     if (options.options[i] == nullptr || options.options[i]->count() == 0) continue;
     const InputKey& key = kInputKeys[i];

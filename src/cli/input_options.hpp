@@ -12,6 +12,7 @@ namespace linkage::cli {
 
 struct InputOptions {
   std::string config;
+  CLI::Option* config_option = nullptr;
   std::array<std::string, kInputKeys.size()> values;  // as typed, parsed after CLI11
   std::array<CLI::Option*, kInputKeys.size()> options{};
 };

@@ -131,7 +131,7 @@ struct Mul : ExprTag {
   [[nodiscard]] static constexpr double eval(const Env& env) { return A::eval(env) * B::eval(env); }
   static void print(std::string& out, Style style) {
     detail::print_operand<A>(out, style, Prec::product);
-    out += style == Style::latex ? " " : " ";
+    out += " ";
     detail::print_operand<B>(out, style, Prec::atom);  // a product on the right would re-associate: keep it atomic
   }
 };
