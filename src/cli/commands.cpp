@@ -15,6 +15,7 @@ void add_runner(CLI::App* subcommand, std::function<void()> run) { runners().emp
 
 void register_commands(CLI::App& app) {
   register_solve(app);
+  register_render(app);
   register_bench(app);
 }
 

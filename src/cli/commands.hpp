@@ -17,6 +17,7 @@ void add_runner(CLI::App* subcommand, std::function<void()> run);
 
 // One register function per subcommand file.
 void register_solve(CLI::App& app);
+void register_render(CLI::App& app);
 void register_bench(CLI::App& app);
 
 }  // namespace linkage::cli

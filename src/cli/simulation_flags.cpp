@@ -1,0 +1,82 @@
+#include "cli/simulation_flags.hpp"
+
+#include <cstdio>
+
+#include "cli/input_options.hpp"
+#include "core/error.hpp"
+#include "core/number_format.hpp"
+
+namespace linkage::cli {
+
+void add_simulation_flags(CLI::App* sub, SimulationFlags& o) {
+  const SimulationOptions d;
+  const auto fmt = [](double v) { return format_roundtrip(v); };
+  const std::string group = "Simulation";
+  sub->add_option("--case", o.which_case,
+                  "Formulation: 1 (maximal coordinates, can drift off the pin), 2 or 3 (generalized coordinates) "
+                  "(default " + o.which_case + ")")
+      ->type_name("1|2|3")
+      ->group(group);
+  std::string names;
+  for (const IntegratorInfo& i : integrators()) names += "\n  " + std::string(i.name) + ": " + std::string(i.description);
+  sub->add_option("--integrator", o.integrator, "Integrator (default " + o.integrator + "):" + names)
+      ->type_name("NAME")
+      ->group(group);
+  sub->add_option("--dt", o.dt, "Step of fixed-step integrators, first step of adaptive ones, s (default " + fmt(d.dt) + ")")
+      ->type_name("S")
+      ->group(group);
+  o.rtol_option = sub->add_option("--rtol", o.rtol,
+                                  "Relative tolerance of adaptive integrators, in [1e-14, 1] (default " + fmt(d.rtol) + ")")
+                      ->type_name("NUM")
+                      ->group(group);
+  o.atol_option = sub->add_option("--atol", o.atol,
+                                  "Absolute tolerance of adaptive integrators, in [1e-20, 1], in the state's units "
+                                  "(m, rad, m/s, rad/s) (default " + fmt(d.atol) + ")")
+                      ->type_name("NUM")
+                      ->group(group);
+  sub->add_option("--stabilize", o.stabilize,
+                  "Constraint stabilization of Case 1: none, baumgarte (C'' + 2 alpha C' + beta^2 C = 0) or "
+                  "projection (back onto the pin constraint after every step) (default " + o.stabilize + ")")
+      ->type_name("KIND")
+      ->group(group);
+  o.alpha_option = sub->add_option("--baumgarte-alpha", o.baumgarte_alpha,
+                                   "Baumgarte damping gain alpha, 1/s (default " + fmt(d.baumgarte_alpha) + ")")
+                       ->type_name("NUM")
+                       ->group(group);
+  o.beta_option = sub->add_option("--baumgarte-beta", o.baumgarte_beta,
+                                  "Baumgarte stiffness gain beta, 1/s (default " + fmt(d.baumgarte_beta) +
+                                      "; alpha = beta is critically damped)")
+                      ->type_name("NUM")
+                      ->group(group);
+}
+
+SimulationOptions resolve_simulation_flags(const SimulationFlags& o, double duration) {
+  SimulationOptions s;
+  if (o.which_case == "1" || o.which_case == "2" || o.which_case == "3") s.case_id = o.which_case[0] - '0';
+  else throw Error::input("--case: '" + o.which_case + "' is not a case; valid: 1, 2, 3");
+  s.integrator = parse_integrator(o.integrator, "--integrator");
+  s.stabilization = parse_stabilization(o.stabilize, "--stabilize");
+  s.duration = duration;
+  if (!o.dt.empty()) s.dt = parse_number(o.dt, "--dt", "s");
+  if (!o.rtol.empty()) s.rtol = parse_number(o.rtol, "--rtol", "");
+  if (!o.atol.empty()) s.atol = parse_number(o.atol, "--atol", "");
+  if (!o.baumgarte_alpha.empty()) s.baumgarte_alpha = parse_number(o.baumgarte_alpha, "--baumgarte-alpha", "1/s");
+  if (!o.baumgarte_beta.empty()) s.baumgarte_beta = parse_number(o.baumgarte_beta, "--baumgarte-beta", "1/s");
+  s.validate();
+  return s;
+}
+
+void note_ignored_simulation_flags(const SimulationFlags& o, const SimulationOptions& s) {
+  const auto note = [](const std::string& text) { std::fprintf(stderr, "linkage: note: %s\n", text.c_str()); };
+  if (s.case_id != 1 && s.stabilization != Stabilization::none)
+    note("Case " + std::to_string(s.case_id) +
+         " integrates (x1, y1, theta1, theta2), so the pin constraint holds by construction; --stabilize " +
+         std::string(name(s.stabilization)) + " has nothing to do");
+  if (s.stabilization != Stabilization::baumgarte && (o.alpha_option->count() > 0 || o.beta_option->count() > 0))
+    note("--baumgarte-alpha/--baumgarte-beta apply only with --stabilize baumgarte");
+  if (!info(s.integrator).adaptive && (o.rtol_option->count() > 0 || o.atol_option->count() > 0))
+    note("--rtol/--atol apply only to adaptive integrators (dopri5, dop853); " + std::string(info(s.integrator).name) +
+         " takes fixed steps of --dt");
+}
+
+}  // namespace linkage::cli

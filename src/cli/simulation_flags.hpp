@@ -1,0 +1,32 @@
+#pragma once
+// The simulation options shared by commands that run the motion (render; simulate has
+// the same flags): --case, --integrator, --dt, --rtol, --atol, --stabilize and the
+// Baumgarte gains, with the same help and checks.
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "integrate/simulation.hpp"
+
+namespace linkage::cli {
+
+struct SimulationFlags {
+  std::string which_case = "3";
+  std::string integrator = "dop853";
+  std::string dt, rtol, atol, baumgarte_alpha, baumgarte_beta;
+  std::string stabilize = "none";
+  CLI::Option* rtol_option = nullptr;
+  CLI::Option* atol_option = nullptr;
+  CLI::Option* alpha_option = nullptr;
+  CLI::Option* beta_option = nullptr;
+};
+
+/// Adds the flags to `sub` in a "Simulation" group.
+void add_simulation_flags(CLI::App* sub, SimulationFlags& flags);
+/// The options the flags give, with `duration`; validated (Error::input naming the flag).
+[[nodiscard]] SimulationOptions resolve_simulation_flags(const SimulationFlags& flags, double duration);
+/// Notes on stderr for flags that do nothing in this configuration (e.g. --stabilize
+/// with Case 3, --rtol with a fixed-step integrator).
+void note_ignored_simulation_flags(const SimulationFlags& flags, const SimulationOptions& options);
+
+}  // namespace linkage::cli

@@ -1,0 +1,114 @@
+// Every bad input of `linkage render`: a non-zero exit (2 for input, 3 for a diverging
+// simulation), one line naming the flag, the value and what is allowed, and nothing
+// left on disk.
+#include <gtest/gtest.h>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "support/test_support.hpp"
+
+namespace linkage::test {
+namespace {
+
+struct BadInput {
+  std::vector<std::string> args;  // "{dir}" is replaced by the test's folder
+  std::string expected;           // a part of the one-line message
+  int exit_code = 2;
+};
+
+class RenderBadInput : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(RenderBadInput, IsOneLineAndLeavesNothing) {
+  TempDir dir;
+  std::filesystem::create_directory(dir / "frames");
+  write_text(dir / "plain", "not a folder");
+  const auto in_dir = [&](std::string text) {
+    if (const auto at = text.find("{dir}"); at != std::string::npos) text.replace(at, 5, dir.path().string());
+    return text;
+  };
+  // Small defaults for the flags the case does not set itself.
+  std::vector<std::string> args{"render", "--quiet"};
+  const auto given = [&](const std::string& flag) {
+    return std::find(GetParam().args.begin(), GetParam().args.end(), flag) != GetParam().args.end();
+  };
+  if (!given("--size")) args.insert(args.end(), {"--size", "64x36"});
+  if (!given("--duration")) args.insert(args.end(), {"--duration", "0.2"});
+  if (!given("--out")) args.insert(args.end(), {"--out", (dir / "clip.mp4").string()});
+  for (const std::string& a : GetParam().args) args.push_back(in_dir(a));
+  const RunResult r = run_linkage(args);
+  EXPECT_EQ(r.exit_code, GetParam().exit_code) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find(in_dir(GetParam().expected)), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty());
+  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"frames", "plain"}));
+  EXPECT_TRUE(std::filesystem::is_empty(dir / "frames"));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Flags, RenderBadInput,
+    ::testing::Values(
+        BadInput{{"--size", "0x36"}, "--size: size 0x36 must be positive"},
+        BadInput{{"--size", "-64x36"}, "--size: size -64x36 must be positive"},
+        BadInput{{"--size", "65x36"}, "must have an even width and height"},
+        BadInput{{"--size", "7682x4320"}, "is above the largest, 7680x4320"},
+        BadInput{{"--size", "7680x4322"}, "is above the largest, 7680x4320"},
+        BadInput{{"--size", "640*360"}, "--size: '640*360' is not a size WIDTHxHEIGHT"},
+        BadInput{{"--quality", "ultra"}, "--quality: 'ultra' is not a quality; valid: low (854x480@30)"},
+        BadInput{{"--fps", "0"}, "--fps: 0 is outside 1 .. 240"},
+        BadInput{{"--fps", "241"}, "--fps: 241 is outside 1 .. 240"},
+        BadInput{{"--fps", "29.97"}, "--fps: '29.97' is not a whole number"},
+        BadInput{{"--duration", "0"}, "--duration: 0 s must be positive"},
+        BadInput{{"--duration", "-1"}, "--duration: -1 s must be positive"},
+        BadInput{{"--duration", "3601"}, "s of video; at most 3600 s (an hour)"},
+        BadInput{{"--duration", "100", "--speed", "0.01"}, "makes 10000 s of video"},
+        BadInput{{"--duration", "nan"}, "--duration: 'nan' is not a finite number"},
+        BadInput{{"--speed", "0"}, "--speed: 0 must be a positive number"},
+        BadInput{{"--duration", "0.001"}, "is less than one frame"},
+        BadInput{{"--show", "arrows"}, "--show: 'arrows' is not an element; valid: blocks, pin, pin-force, gravity"},
+        BadInput{{"--hide", "grid,legnd"}, "--hide: 'legnd' is not an element"},
+        BadInput{{"--theme", "neon"}, "--theme: 'neon' is not a theme; valid: dark, light, print"},
+        BadInput{{"--camera", "orbit"}, "--camera: 'orbit' is not a camera; valid: follow, fixed, fit"},
+        BadInput{{"--camera", "fixed"}, "--camera fixed: needs --view xmin,ymin,xmax,ymax"},
+        BadInput{{"--view", "0,0,1,0"}, "--view: '0,0,1,0' has zero or negative area"},
+        BadInput{{"--view", "0,0,1"}, "is not xmin,ymin,xmax,ymax"},
+        BadInput{{"--camera", "fit", "--view", "0,0,1,1"}, "--view: applies only to --camera fixed"},
+        BadInput{{"--out", "{dir}/clip.avi"}, "--out: '{dir}/clip.avi' has extension '.avi'; valid: .mp4"},
+        BadInput{{"--out", "{dir}/clip"}, "has no extension"},
+        BadInput{{"--out", "{dir}/missing/clip.mp4"}, "--out: folder '{dir}/missing' does not exist"},
+        BadInput{{"--out", "{dir}/frames"}, "is a folder, expected a file name"},
+        BadInput{{"--frames", "{dir}/missing"}, "--frames: folder '{dir}/missing' does not exist"},
+        BadInput{{"--frames", "{dir}/plain"}, "--frames: '{dir}/plain' is not a folder"},
+        BadInput{{"--out", "{dir}/plain/clip.mp4"}, "--out: '{dir}/plain' is not a folder"},
+        BadInput{{"--at", "1"}, "--at: applies to a still"},
+        BadInput{{"--out", "{dir}/a.png", "--at", "-1"}, "--at: -1 s is outside 0 .. 3600 s"},
+        BadInput{{"--integrator", "rk45"}, "--integrator: 'rk45' is not an integrator"},
+        BadInput{{"--case", "4"}, "--case: '4' is not a case"},
+        BadInput{{"--m", "-1"}, "--m"},
+        BadInput{{"--case", "1", "--integrator", "rk4", "--dt", "0.01", "--stabilize", "baumgarte",
+                  "--baumgarte-alpha", "1e6", "--baumgarte-beta", "1e6", "--duration", "5"},
+                 "the simulation failed at t = ", 3},
+        BadInput{{"--out", "{dir}/a.png", "--case", "1", "--integrator", "rk4", "--dt", "0.01", "--stabilize",
+                  "baumgarte", "--baumgarte-alpha", "1e6", "--baumgarte-beta", "1e6", "--at", "5"},
+                 "the simulation failed at t = ", 3}));
+
+TEST(RenderBadInputFolder, UnwritableFolderIsAnInputError) {
+  if (::geteuid() == 0) GTEST_SKIP() << "root writes anywhere";
+  TempDir dir;
+  std::filesystem::create_directory(dir / "locked");
+  ::chmod((dir / "locked").c_str(), 0555);
+  const RunResult r = run_linkage({"render", "--quiet", "--size", "64x36", "--duration", "0.2", "--out",
+                                   (dir / "locked" / "clip.mp4").string()});
+  ::chmod((dir / "locked").c_str(), 0755);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("is not writable"), std::string::npos) << r.err;
+  EXPECT_TRUE(std::filesystem::is_empty(dir / "locked"));
+}
+
+}  // namespace
+}  // namespace linkage::test

@@ -1,0 +1,135 @@
+// What `linkage render` writes: an MP4 that decodes to the promised codec, pixel
+// format, size, frame count and duration; byte-identical PNG sequences; a still and a
+// well-formed SVG; and, through --stats, that it does only the work the picture needs.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "encode/encode_test_support.hpp"
+#include "render/xml_check.hpp"
+#include "support/test_support.hpp"
+
+namespace linkage::test {
+namespace {
+
+// Small and short, so the suite stays fast under AddressSanitizer.
+const std::vector<std::string> kSmall{"render", "--quiet", "--size", "160x90", "--fps", "10"};
+
+RunResult render(std::vector<std::string> extra) {
+  std::vector<std::string> args = kSmall;
+  args.insert(args.end(), extra.begin(), extra.end());
+  return run_linkage(args);
+}
+
+nlohmann::json stats_of(const RunResult& r) {
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  return nlohmann::json::parse(r.out);
+}
+
+TEST(RenderCli, Mp4DecodesToTheClipThatWasAskedFor) {
+  TempDir dir;
+  // 1.5 s of motion at half speed: 3 s of video, round(1.5 / 0.5 x 10) = 30 frames.
+  const RunResult r = render({"--duration", "1.5", "--speed", "0.5", "--out", (dir / "clip.mp4").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"clip.mp4"});
+  const DecodedVideo video = decode_video(dir / "clip.mp4");
+  EXPECT_EQ(video.codec, "h264");
+  EXPECT_EQ(video.pixel_format, AV_PIX_FMT_YUV420P);
+  EXPECT_EQ(video.width, 160);
+  EXPECT_EQ(video.height, 90);
+  EXPECT_EQ(video.times.size(), 30u);
+  EXPECT_NEAR(video.stream_duration, 3.0, 1e-9);
+  EXPECT_NEAR(av_q2d(video.frame_rate), 10.0, 1e-9);
+  // The index comes first, so a browser can play while downloading.
+  const std::vector<std::string> atoms = top_level_atoms(dir / "clip.mp4");
+  const auto moov = std::find(atoms.begin(), atoms.end(), "moov"), mdat = std::find(atoms.begin(), atoms.end(), "mdat");
+  ASSERT_NE(moov, atoms.end());
+  EXPECT_LT(moov, mdat);
+}
+
+TEST(RenderCli, PngSequenceIsNumberedAndByteIdenticalAcrossRuns) {
+  TempDir dir;
+  std::filesystem::create_directory(dir / "a");
+  std::filesystem::create_directory(dir / "b");
+  for (const char* folder : {"a", "b"})
+    ASSERT_EQ(render({"--duration", "0.5", "--frames", (dir / folder).string()}).exit_code, 0);
+  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"a", "b"})) << "--frames alone writes no video";
+  const std::vector<std::string> names = entries(dir / "a");
+  ASSERT_EQ(names.size(), 5u);
+  EXPECT_EQ(names.front(), "frame_00000.png");
+  EXPECT_EQ(names.back(), "frame_00004.png");
+  for (const std::string& name : names) EXPECT_EQ(file_bytes(dir / "a" / name), file_bytes(dir / "b" / name)) << name;
+  const DecodedPng png = decode_png(dir / "a" / names.back());
+  EXPECT_EQ(png.width, 160u);
+  EXPECT_EQ(png.height, 90u);
+}
+
+TEST(RenderCli, StillsAsPngSvgAndPdf) {
+  TempDir dir;
+  ASSERT_EQ(render({"--out", (dir / "still.png").string(), "--at", "0.5"}).exit_code, 0);
+  ASSERT_EQ(render({"--out", (dir / "fig.svg").string(), "--at", "0.5"}).exit_code, 0);
+  ASSERT_EQ(render({"--out", (dir / "fig.pdf").string(), "--at", "0.5", "--theme", "print"}).exit_code, 0);
+  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"fig.pdf", "fig.svg", "still.png"}));
+  EXPECT_EQ(decode_png(dir / "still.png").width, 160u);
+  const std::string svg = read_text(dir / "fig.svg");
+  EXPECT_EQ(xml_error(svg), "");
+  EXPECT_NE(svg.find("<svg"), std::string::npos);
+  EXPECT_EQ(read_text(dir / "fig.pdf").rfind("%PDF-", 0), 0u);
+}
+
+TEST(RenderCli, OnlyTheWorkThePictureNeeds) {
+  TempDir dir;
+  const std::string frames = (dir / "f").string();
+  std::filesystem::create_directory(frames);
+  // A PNG sequence opens no encoder; static layers are drawn once however many frames.
+  const nlohmann::json sequence = stats_of(render({"--duration", "2", "--frames", frames, "--stats"}));
+  EXPECT_EQ(sequence["encoder_opened"], false);
+  EXPECT_EQ(sequence["frames_drawn"], 20);
+  EXPECT_EQ(sequence["png_files_written"], 20);
+  EXPECT_EQ(sequence["static_layer_draws"], 4);  // background and grid, title, legend, scale bar
+  EXPECT_EQ(sequence["force_evaluations"], 20);  // one pin-force solve per frame, for its arrows
+  EXPECT_GT(sequence["trail_points_drawn"], 20);
+
+  // No force arrow drawn: the pin force is never solved for. No trail: no trail points.
+  const nlohmann::json bare = stats_of(
+      render({"--duration", "2", "--frames", frames, "--hide", "pin-force,trail", "--stats"}));
+  EXPECT_EQ(bare["force_evaluations"], 0);
+  EXPECT_EQ(bare["trail_points_drawn"], 0);
+  EXPECT_EQ(bare["frames_drawn"], 20);
+
+  // A still draws one frame; without a trail it samples the motion once.
+  const nlohmann::json still = stats_of(
+      render({"--out", (dir / "s.png").string(), "--at", "3", "--hide", "trail", "--stats"}));
+  EXPECT_EQ(still["frames_drawn"], 1);
+  EXPECT_EQ(still["samples"], 1);
+  EXPECT_EQ(still["force_evaluations"], 1);
+  EXPECT_EQ(still["encoder_opened"], false);
+
+  // A video opens its encoder.
+  const nlohmann::json video = stats_of(render({"--duration", "0.5", "--out", (dir / "c.mp4").string(), "--stats"}));
+  EXPECT_EQ(video["encoder_opened"], true);
+  EXPECT_EQ(video["frames_drawn"], 5);
+  EXPECT_EQ(video["png_files_written"], 0);
+}
+
+TEST(RenderCli, VideoAndSequenceTogether) {
+  TempDir dir;
+  std::filesystem::create_directory(dir / "f");
+  ASSERT_EQ(render({"--duration", "0.3", "--out", (dir / "c.mp4").string(), "--frames", (dir / "f").string()}).exit_code, 0);
+  EXPECT_EQ(decode_video(dir / "c.mp4").times.size(), 3u);
+  EXPECT_EQ(entries(dir / "f").size(), 3u);
+}
+
+TEST(RenderCli, HelpListsElementsQualitiesAndThemes) {
+  const RunResult r = run_linkage({"render", "--help"});
+  EXPECT_EQ(r.exit_code, 0);
+  for (const char* text : {"pin-force", "1920x1080@60", "dark, light, print", "--camera", "--view", "--frames", "--at"})
+    EXPECT_NE(r.out.find(text), std::string::npos) << text;
+}
+
+}  // namespace
+}  // namespace linkage::test
