@@ -195,16 +195,11 @@ void ClipRenderer::draw(std::size_t index, Frame& frame) {
     cairo_set_source_surface(cr, panel.surface.get(), panel.rect.x, panel.rect.y);
     cairo_paint(cr);
   }
-  if (settings_.elements.has(Element::hud)) {
-    const SampleErrors errors = sample_errors(params_, motion_, index);
-    format_hud(hud_, motion_.samples[index].t, errors.energy, errors.constraint);
-    paint_hud(cr, style_, hud_, hud_rect_);
-  }
+  paint_hud_of(index, cr);
   cairo_restore(cr);
   cairo::check(cr, "cannot draw a frame");
   cairo_surface_flush(target.surface.get());
-  ++stats_.frames_drawn;
-  stats_.draw_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  count_frame(start);
 }
 
 void ClipRenderer::draw_vector(std::size_t index, cairo_t* cr) {
@@ -213,13 +208,20 @@ void ClipRenderer::draw_vector(std::size_t index, cairo_t* cr) {
   paint_static_background(cr);
   paint_dynamic(index, cr);
   paint_static_overlays(cr);
-  if (settings_.elements.has(Element::hud)) {
-    const SampleErrors errors = sample_errors(params_, motion_, index);
-    format_hud(hud_, motion_.samples[index].t, errors.energy, errors.constraint);
-    paint_hud(cr, style_, hud_, hud_rect_);
-  }
+  paint_hud_of(index, cr);
   cairo_restore(cr);
   cairo::check(cr, "cannot draw the figure");
+  count_frame(start);
+}
+
+void ClipRenderer::paint_hud_of(std::size_t index, cairo_t* cr) {
+  if (!settings_.elements.has(Element::hud)) return;
+  const SampleErrors errors = sample_errors(params_, motion_, index);
+  format_hud(hud_, motion_.samples[index].t, errors.energy, errors.constraint);
+  paint_hud(cr, style_, hud_, hud_rect_);
+}
+
+void ClipRenderer::count_frame(std::chrono::steady_clock::time_point start) {
   ++stats_.frames_drawn;
   stats_.draw_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }

@@ -77,6 +77,8 @@ class ClipRenderer {
   void paint_static_background(cairo_t* cr) const;
   void paint_dynamic(std::size_t index, cairo_t* cr);
   void paint_static_overlays(cairo_t* cr) const;
+  void paint_hud_of(std::size_t index, cairo_t* cr);
+  void count_frame(std::chrono::steady_clock::time_point start);
   Panel cache_panel(const Rect& rect, void (ClipRenderer::*paint)(cairo_t*) const);
   void paint_title_panel(cairo_t* cr) const;
   void paint_legend_panel(cairo_t* cr) const;

@@ -32,12 +32,14 @@ void rounded_rect(cairo_t* cr, const Rect& r, double radius) {
 }
 
 void paint_panel(cairo_t* cr, const Style& style, const Rect& r) {
-  const Rect inner{r.x + 0.5, r.y + 0.5, r.width - 1, r.height - 1};
+  // A whole number of pixels wide, inside the rectangle, on pixel boundaries.
+  const double edge = std::max(1.0, std::round(0.6 * style.u));
+  const Rect inner{r.x + 0.5 * edge, r.y + 0.5 * edge, r.width - edge, r.height - edge};
   rounded_rect(cr, inner, 5 * style.u);
   set_colour(cr, style.theme->panel);
   cairo_fill_preserve(cr);
   set_colour(cr, style.theme->panel_edge);
-  cairo_set_line_width(cr, 1.0);
+  cairo_set_line_width(cr, edge);
   cairo_stroke(cr);
 }
 

@@ -1,6 +1,7 @@
 #include "render/scene_painter.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -139,32 +140,57 @@ bool room_for_labels(const Style& style, const DrawList& list, const Camera& cam
   return length >= 3 * style.block_label_size();
 }
 
+// Boxes already taken by names and marks in this frame, so a later name can move
+// aside. Fixed capacity: a frame allocates nothing.
+class TakenBoxes {
+ public:
+  struct Box {
+    double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  };
+  [[nodiscard]] bool free(const Box& b) const {
+    for (std::size_t i = 0; i < count_; ++i) {
+      const Box& o = boxes_[i];
+      if (b.x0 < o.x1 && o.x0 < b.x1 && b.y0 < o.y1 && o.y0 < b.y1) return false;
+    }
+    return true;
+  }
+  void take(const Box& b) {
+    if (count_ < boxes_.size()) boxes_[count_++] = b;
+  }
+
+ private:
+  std::array<Box, 32> boxes_{};
+  std::size_t count_ = 0;
+};
+
+// The box of `s` centred (by its ink) at `at`, grown by `margin`.
+TakenBoxes::Box text_box(cairo_t* cr, const text::Font& font, const Vec2& at, const char* s, double margin) {
+  text::use(cr, font);
+  cairo_text_extents_t e;
+  cairo_text_extents(cr, s, &e);
+  return {at.x() - 0.5 * e.width - margin, at.y() - 0.5 * e.height - margin, at.x() + 0.5 * e.width + margin,
+          at.y() + 0.5 * e.height + margin};
+}
+
 void paint_labels(cairo_t* cr, const Style& style, const DrawList& list, const Camera& camera) {
   if (!room_for_labels(style, list, camera)) return;
   const Theme& theme = *style.theme;
   const Rgba halo = with_alpha(theme.background, 0.85);
   const text::Font tag_font{style.text_size(), true};
+  const text::Font block_font{style.block_label_size(), true};
   const double tag_halo = 0.3 * style.text_size();
+  TakenBoxes taken;
+  for (const Marker& marker : list.markers) {
+    const Vec2 at = camera.to_pixels(marker.at);
+    const double r = marker.kind == MarkerKind::com_system ? style.system_com_radius() : style.com_radius();
+    taken.take({at.x() - r, at.y() - r, at.x() + r, at.y() + r});
+  }
   for (const Label& label : list.labels) {
     const Vec2 at = camera.to_pixels(label.at);
     const Rgba& colour = label.block == 0 ? theme.text : theme.block_edge[label.block == 1 ? 0 : 1];
     const std::string s(label.text);  // short: no heap (small-string buffer)
-    text::draw_centred_with_halo(cr, {style.block_label_size(), true}, at.x(), at.y(), s.c_str(), colour, halo,
-                                 0.25 * style.block_label_size());
-  }
-  // Arrow names beside the head, on the arrow's left, in its colour: F and -F, which
-  // point opposite ways from P, get their names on opposite sides.
-  for (const Arrow& arrow : list.arrows) {
-    if (arrow.tag.empty()) continue;
-    const Vec2 tail = camera.to_pixels(arrow.tail), tip = camera.to_pixels(arrow.tail + arrow.vector);
-    const double length = (tip - tail).norm();
-    if (length < 2 * style.arrow_head_length()) continue;  // too short to name without clutter
-    const Vec2 along = (tip - tail) / length;
-    const Vec2 left(along.y(), -along.x());  // pixels have y down
-    const Vec2 at = tip - 0.5 * style.arrow_head_length() * along +
-                    (style.arrow_head_half_width() + 0.8 * style.text_size()) * left;
-    const std::string s(arrow.tag);
-    text::draw_centred_with_halo(cr, tag_font, at.x(), at.y(), s.c_str(), arrow_colour(theme, arrow.kind), halo, tag_halo);
+    text::draw_centred_with_halo(cr, block_font, at.x(), at.y(), s.c_str(), colour, halo, 0.25 * block_font.size);
+    taken.take(text_box(cr, block_font, at, s.c_str(), 0.0));
   }
   // Marker names (P) clear of the system's centre-of-mass symbol, which is often close.
   for (const Marker& marker : list.markers) {
@@ -173,6 +199,30 @@ void paint_labels(cairo_t* cr, const Style& style, const DrawList& list, const C
     const Vec2 at = camera.to_pixels(marker.at) + (style.system_com_radius() + 0.9 * style.text_size()) * direction;
     const std::string s(marker.tag);
     text::draw_centred_with_halo(cr, tag_font, at.x(), at.y(), s.c_str(), theme.text, halo, tag_halo);
+    taken.take(text_box(cr, tag_font, at, s.c_str(), 0.0));
+  }
+  // Arrow names beside the head, in the arrow's colour: on its left (so F and -F, which
+  // point opposite ways from P, get opposite sides), else on its right, else beyond the
+  // tip, else left out rather than drawn over another name. Pin forces first.
+  for (const ArrowKind kind : {ArrowKind::pin_force, ArrowKind::gravity, ArrowKind::velocity}) {
+    for (const Arrow& arrow : list.arrows) {
+      if (arrow.kind != kind || arrow.tag.empty()) continue;
+      const Vec2 tail = camera.to_pixels(arrow.tail), tip = camera.to_pixels(arrow.tail + arrow.vector);
+      const double length = (tip - tail).norm();
+      if (length < 2 * style.arrow_head_length()) continue;  // too short to name without clutter
+      const Vec2 along = (tip - tail) / length;
+      const Vec2 left(along.y(), -along.x());  // pixels have y down
+      const Vec2 beside = tip - 0.5 * style.arrow_head_length() * along;
+      const double aside = style.arrow_head_half_width() + 0.8 * style.text_size();
+      const std::string s(arrow.tag);
+      for (const Vec2& at : {Vec2(beside + aside * left), Vec2(beside - aside * left), Vec2(tip + 0.9 * style.text_size() * along)}) {
+        const TakenBoxes::Box box = text_box(cr, tag_font, at, s.c_str(), 0.15 * style.text_size());
+        if (!taken.free(box)) continue;
+        text::draw_centred_with_halo(cr, tag_font, at.x(), at.y(), s.c_str(), arrow_colour(theme, kind), halo, tag_halo);
+        taken.take(box);
+        break;
+      }
+    }
   }
 }
 
