@@ -20,13 +20,17 @@ double start_x(cairo_t* cr, double x, const char* s, Align align) {
 }  // namespace
 
 void use(cairo_t* cr, const Font& font) {
+  // Made once (thread-safe) and copied into each context: no allocation per text.
+  static const std::unique_ptr<cairo_font_options_t, FontOptionsDeleter> options = [] {
+    std::unique_ptr<cairo_font_options_t, FontOptionsDeleter> o(cairo_font_options_create());
+    cairo_font_options_set_antialias(o.get(), CAIRO_ANTIALIAS_GRAY);
+    cairo_font_options_set_hint_style(o.get(), CAIRO_HINT_STYLE_NONE);
+    cairo_font_options_set_hint_metrics(o.get(), CAIRO_HINT_METRICS_OFF);
+    cairo_font_options_set_subpixel_order(o.get(), CAIRO_SUBPIXEL_ORDER_DEFAULT);
+    return o;
+  }();
   cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, font.bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
   cairo_set_font_size(cr, font.size);
-  const std::unique_ptr<cairo_font_options_t, FontOptionsDeleter> options(cairo_font_options_create());
-  cairo_font_options_set_antialias(options.get(), CAIRO_ANTIALIAS_GRAY);
-  cairo_font_options_set_hint_style(options.get(), CAIRO_HINT_STYLE_NONE);
-  cairo_font_options_set_hint_metrics(options.get(), CAIRO_HINT_METRICS_OFF);
-  cairo_font_options_set_subpixel_order(options.get(), CAIRO_SUBPIXEL_ORDER_DEFAULT);
   cairo_set_font_options(cr, options.get());
 }
 
