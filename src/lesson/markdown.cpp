@@ -1,8 +1,10 @@
 #include "lesson/markdown.hpp"
 
+#include <algorithm>
 #include <array>
 #include <vector>
 
+#include "lesson/latex_text.hpp"
 #include "report/latex_math.hpp"
 #include "report/text_layout.hpp"
 
@@ -56,12 +58,28 @@ bool list_marker(std::string_view line, std::string& marker, std::size_t& text_s
   }
   std::size_t digits = 0;
   while (digits < rest.size() && std::isdigit(static_cast<unsigned char>(rest[digits]))) ++digits;
-  if (digits > 0 && digits + 1 < rest.size() && rest[digits] == '.' && rest[digits + 1] == ' ') {
+  if (digits > 0 && digits <= 9 && digits + 1 < rest.size() && rest[digits] == '.' && rest[digits + 1] == ' ') {
     marker = std::string(rest.substr(0, digits + 1));
     text_start = indent + digits + 2;
     return true;
   }
   return false;
+}
+
+// The cells of a pipe-table row ("| a | b |"), trimmed; empty for the |---| rule.
+std::vector<std::string_view> table_cells(std::string_view line) {
+  std::string_view t = trim(line);
+  if (t.starts_with('|')) t.remove_prefix(1);
+  if (t.ends_with('|')) t.remove_suffix(1);
+  if (t.find_first_not_of("-:| ") == std::string_view::npos) return {};
+  std::vector<std::string_view> cells;
+  std::size_t start = 0;
+  for (std::size_t bar = t.find('|');; bar = t.find('|', start)) {
+    cells.push_back(trim(t.substr(start, bar == std::string_view::npos ? bar : bar - start)));
+    if (bar == std::string_view::npos) break;
+    start = bar + 1;
+  }
+  return cells;
 }
 
 std::vector<Block> parse_blocks(std::string_view markdown) {
@@ -125,7 +143,10 @@ std::vector<Block> parse_blocks(std::string_view markdown) {
     }
     std::string marker;
     std::size_t text_start = 0;
-    if (list_marker(line, marker, text_start)) {
+    // As in CommonMark, a numbered item interrupts a paragraph only when it counts from 1
+    // ("240000. The ..." in the middle of a paragraph is a number, not a list).
+    const bool continues = open != nullptr && open->kind == Block::Kind::paragraph;
+    if (list_marker(line, marker, text_start) && !(continues && marker != "-" && marker != "1.")) {
       blocks.push_back({Block::Kind::item, std::string(trim(line.substr(text_start))),
                         static_cast<int>(leading_spaces(line) / 2), marker});
       open = &blocks.back();
@@ -150,7 +171,23 @@ std::string inline_text(std::string_view s) {
     if (c == '*' && i + 1 < s.size() && s[i + 1] == '*') { ++i; continue; }
     if (c == '_' && i + 1 < s.size() && s[i + 1] == '_') { ++i; continue; }
     if (c == '`') continue;
-    if (c == '$') continue;
+    // *emphasis*: drop the stars when they hug a word ("m * D" is multiplication).
+    if (c == '*' && i + 1 < s.size() && s[i + 1] != ' ') {
+      const std::size_t end = s.find('*', i + 1);
+      if (end != std::string_view::npos && s[end - 1] != ' ') {
+        out += inline_text(s.substr(i + 1, end - i - 1));
+        i = end;
+        continue;
+      }
+    }
+    if (c == '$') {  // inline math, as Unicode
+      const std::size_t end = s.find('$', i + 1);
+      if (end != std::string_view::npos) {
+        out += latex_to_unicode(s.substr(i + 1, end - i - 1));
+        i = end;
+      }
+      continue;
+    }
     if (c == '!' && i + 1 < s.size() && s[i + 1] == '[') continue;  // an image reads like a link
     if (c == '[') {
       const std::size_t close = s.find("](", i);
@@ -168,6 +205,40 @@ std::string inline_text(std::string_view s) {
 
 void append_lines(std::string& out, const std::vector<std::string>& lines) {
   for (const std::string& l : lines) out += l + "\n";
+}
+
+// A pipe table with its columns lined up and a rule under the header.
+std::string text_table(std::string_view text) {
+  std::vector<std::vector<std::string>> rows;
+  for (std::string_view line : split_lines(text)) {
+    std::vector<std::string> row;
+    for (std::string_view cell : table_cells(line)) row.push_back(inline_text(cell));
+    if (!row.empty()) rows.push_back(std::move(row));
+  }
+  std::vector<std::size_t> widths;
+  for (const auto& row : rows)
+    for (std::size_t c = 0; c < row.size(); ++c) {
+      if (widths.size() <= c) widths.push_back(0);
+      widths[c] = std::max(widths[c], display_width(row[c]));
+    }
+  std::string out;
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    std::string line = " ";
+    for (std::size_t c = 0; c < rows[r].size(); ++c) {
+      line += ' ';
+      line += pad_right(rows[r][c], widths[c] + 1);
+    }
+    while (!line.empty() && line.back() == ' ') line.pop_back();
+    out += line + "\n";
+    if (r == 0) {
+      std::size_t total = 2 * (widths.size() - 1);
+      for (std::size_t w : widths) total += w;
+      out += "  ";
+      out += std::string(total, '-');
+      out += '\n';
+    }
+  }
+  return out;
 }
 
 // --- inline markup for LaTeX --------------------------------------------------------
@@ -265,65 +336,65 @@ std::string latex_chars(std::string_view s) {
 
 }  // namespace
 
+namespace {
+
+// Inline spans that wrap their content: the delimiter, the LaTeX around the content, and
+// whether the content is itself markup (else it is escaped verbatim, or kept as math).
+struct InlineSpan {
+  std::string_view delimiter;
+  std::string_view before, after;
+  enum class Content { math, verbatim, markup } content;
+};
+constexpr std::array<InlineSpan, 4> kSpans{{
+    {"$", "$", "$", InlineSpan::Content::math},
+    {"`", "\\texttt{", "}", InlineSpan::Content::verbatim},
+    {"**", "\\textbf{", "}", InlineSpan::Content::markup},
+    {"*", "\\emph{", "}", InlineSpan::Content::markup},  // only hugging a word: "m * D" is a product
+}};
+
+}  // namespace
+
 std::string inline_latex(std::string_view s) {
   std::string out;
   std::size_t plain_start = 0;
-  auto flush = [&](std::size_t end) {
-    out += latex_chars(s.substr(plain_start, end - plain_start));
+  auto take = [&](std::size_t i, std::size_t next, const std::string& latex) {
+    out += latex_chars(s.substr(plain_start, i - plain_start));
+    out += latex;
+    plain_start = next;
   };
   for (std::size_t i = 0; i < s.size();) {
-    auto closing = [&](std::string_view delimiter, std::size_t from) { return s.find(delimiter, from); };
-    if (s[i] == '$') {
-      const std::size_t end = closing("$", i + 1);
-      if (end != std::string_view::npos) {
-        flush(i);
-        out += std::string(s.substr(i, end - i + 1));
-        i = plain_start = end + 1;
-        continue;
-      }
+    bool matched = false;
+    for (const InlineSpan& span : kSpans) {
+      if (s.substr(i, span.delimiter.size()) != span.delimiter) continue;
+      const std::size_t from = i + span.delimiter.size();
+      const std::size_t end = s.find(span.delimiter, from);
+      if (end == std::string_view::npos) break;
+      const std::string_view inner = s.substr(from, end - from);
+      if (span.delimiter == "*" && (inner.empty() || inner.front() == ' ' || inner.back() == ' ')) break;
+      const std::string content = span.content == InlineSpan::Content::math       ? std::string(inner)
+                                  : span.content == InlineSpan::Content::verbatim ? latex_escape(inner)
+                                                                                  : inline_latex(inner);
+      take(i, end + span.delimiter.size(), std::string(span.before) + content + std::string(span.after));
+      i = plain_start;
+      matched = true;
+      break;
     }
-    if (s[i] == '`') {
-      const std::size_t end = closing("`", i + 1);
-      if (end != std::string_view::npos) {
-        flush(i);
-        out += "\\texttt{" + latex_escape(s.substr(i + 1, end - i - 1)) + "}";
-        i = plain_start = end + 1;
-        continue;
-      }
-    }
-    if (s.substr(i, 2) == "**") {
-      const std::size_t end = closing("**", i + 2);
-      if (end != std::string_view::npos) {
-        flush(i);
-        out += "\\textbf{" + inline_latex(s.substr(i + 2, end - i - 2)) + "}";
-        i = plain_start = end + 2;
-        continue;
-      }
-    }
-    if (s[i] == '*' && i + 1 < s.size() && s[i + 1] != ' ') {
-      const std::size_t end = closing("*", i + 1);
-      if (end != std::string_view::npos && s[end - 1] != ' ') {
-        flush(i);
-        out += "\\emph{" + inline_latex(s.substr(i + 1, end - i - 1)) + "}";
-        i = plain_start = end + 1;
-        continue;
-      }
-    }
+    if (matched) continue;
+    // [text](url) and ![alt](image) become links.
     if (s[i] == '[' || (s[i] == '!' && i + 1 < s.size() && s[i + 1] == '[')) {
       const std::size_t open = s[i] == '!' ? i + 1 : i;
-      const std::size_t mid = closing("](", open);
-      const std::size_t end = mid == std::string_view::npos ? mid : closing(")", mid);
+      const std::size_t mid = s.find("](", open);
+      const std::size_t end = mid == std::string_view::npos ? mid : s.find(')', mid);
       if (end != std::string_view::npos) {
-        flush(i);
-        out += "\\href{" + std::string(s.substr(mid + 2, end - mid - 2)) + "}{" +
-               inline_latex(s.substr(open + 1, mid - open - 1)) + "}";
-        i = plain_start = end + 1;
+        take(i, end + 1, "\\href{" + std::string(s.substr(mid + 2, end - mid - 2)) + "}{" +
+                             inline_latex(s.substr(open + 1, mid - open - 1)) + "}");
+        i = plain_start;
         continue;
       }
     }
     ++i;
   }
-  flush(s.size());
+  out += latex_chars(s.substr(plain_start));
   return out;
 }
 
@@ -356,10 +427,24 @@ std::string markdown_to_text(std::string_view markdown, std::size_t width) {
         break;
       }
       case Block::Kind::code:
-      case Block::Kind::math:
         for (std::string_view line : split_lines(b.text)) out += "    " + std::string(line) + "\n";
         break;
-      case Block::Kind::table: out += b.text + "\n"; break;
+      case Block::Kind::math: {
+        const std::string unicode = latex_to_unicode(b.text);
+        // Continuation lines of an aligned equation ("= ...") line up under the first "=".
+        const std::size_t equals = unicode.find(" = ");
+        const std::size_t first_end = unicode.find('\n');
+        const std::size_t align =
+            equals != std::string::npos && equals < first_end ? display_width(std::string_view(unicode).substr(0, equals + 1)) : 0;
+        for (std::string_view line : split_lines(unicode)) {
+          out += "    ";
+          if (line.starts_with("= ")) out += std::string(align, ' ');
+          out += std::string(line);
+          out += "\n";
+        }
+        break;
+      }
+      case Block::Kind::table: out += text_table(b.text); break;
     }
   }
   return out;
@@ -396,18 +481,9 @@ std::string markdown_to_latex(std::string_view markdown) {
       case Block::Kind::table: {
         std::vector<std::vector<std::string>> rows;
         for (std::string_view line : split_lines(b.text)) {
-          std::string_view t = trim(line);
-          if (t.starts_with('|')) t.remove_prefix(1);
-          if (t.ends_with('|')) t.remove_suffix(1);
-          if (t.find_first_not_of("-:| ") == std::string_view::npos) continue;  // the |---| rule
           std::vector<std::string> cells;
-          std::size_t start = 0;
-          for (std::size_t bar = t.find('|'); ; bar = t.find('|', start)) {
-            cells.push_back(inline_latex(trim(t.substr(start, bar == std::string_view::npos ? bar : bar - start))));
-            if (bar == std::string_view::npos) break;
-            start = bar + 1;
-          }
-          rows.push_back(std::move(cells));
+          for (std::string_view cell : table_cells(line)) cells.push_back(inline_latex(cell));
+          if (!cells.empty()) rows.push_back(std::move(cells));
         }
         if (rows.empty()) break;
         out += "\\begin{tabular}{" + std::string(rows.front().size(), 'l') + "}\n";

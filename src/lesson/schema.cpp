@@ -24,7 +24,7 @@ constexpr std::array<KeySpec, 2> kCommonKeys{{
 
 constexpr std::array<KeySpec, 9> kRunKeys{{
     {"case", "integer", "3", "The formulation: 1 (eight DAEs), 2 (six equations) or 3 (four equations)."},
-    {"integrator", "string", "\"dop853\"", "euler, symplectic-euler, rk4, dopri5, dop853 or gauss2 (as `linkage simulate`)."},
+    {"integrator", "string", "\"dop853\"", "euler, symplectic-euler, rk4, dopri5, dop853 or gauss-legendre (as `linkage simulate`)."},
     {"dt", "number", "0.001", "Step size in s (fixed-step methods), or the first step of adaptive ones."},
     {"rtol", "number", "1e-10", "Relative tolerance of adaptive methods."},
     {"atol", "number", "1e-10", "Absolute tolerance of adaptive methods."},
@@ -75,22 +75,22 @@ constexpr std::array<KeySpec, 3> kSimulateKeys{{
                                          "energy, momentum_x, ..., constraint_velocity_error)."},
 }};
 
-constexpr std::array<KeySpec, 14> kRenderKeys{{
+constexpr std::array<KeySpec, 13> kRenderKeys{{
     {"out", "string", "(required)", "The file in the output folder: .mp4 (a clip), .png, .svg or .pdf (a still)."},
     {"caption", "string", "none", "Text under the clip or still in the lesson document."},
     {"fps", "integer", "30", "Frames per second (as `linkage render --fps`); --quality draft lowers it to 15."},
     {"size", "string", "\"1280x720\"", "Frame size WxH, even numbers; --quality draft renders 480x270."},
     {"quality", "string", "\"medium\"", "A size and fps preset: low, medium, high or 4k."},
-    {"at", "number", "0", "The time in s a still shows."},
+    {"at", "number", "0", "The time in s a still shows (stills only; a clip shows 0 .. duration)."},
     {"speed", "number", "1", "Simulated seconds per video second (below 1 is slow motion)."},
     {"show", "list of strings", "none", "Elements to show besides the defaults: blocks, pin, pin-force, gravity, "
                                         "velocity, trail, com, grid, axes, hud, legend, labels, title."},
     {"hide", "list of strings", "none", "Elements to hide."},
-    {"camera", "string", "\"follow\"", "follow (keeps the centre of mass in frame), fixed (with view) or fit."},
-    {"view", "string", "none", "xmin,ymin,xmax,ymax in metres, for camera = \"fixed\"."},
+    {"camera", "string", "\"follow\" (\"fixed\" with a view)",
+     "follow (keeps the falling centre of mass in frame), fixed (shows view) or fit (the whole motion)."},
+    {"view", "string", "none", "xmin,ymin,xmax,ymax in metres; implies camera = \"fixed\"."},
     {"theme", "string", "\"light\"", "Colour theme: light, dark or print."},
-    {"title", "string", "the render default", "The title line drawn in the clip."},
-    {"frames", "string", "none", "Also write a numbered PNG sequence into this folder (in the output folder)."},
+    {"title", "string", "the render default", "The title line drawn in the clip (\"\" for none)."},
 }};
 
 constexpr std::array<KeySpec, 10> kPlotKeys{{

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "lesson/latex_text.hpp"
 #include "lesson/markdown.hpp"
 #include "report/text_layout.hpp"
 
@@ -36,7 +37,7 @@ TEST(MarkdownText, ListsQuotesHeadingsAndBlocks) {
   const std::string out = markdown_to_text(
       "# Spot the mistake\n\nIntro line\ncontinues here.\n\n- first item that is long enough to wrap around the "
       "narrow terminal width\n- second\n\n> the text says 2.0433 x 10^-4\n\n```\ncode  stays\n```\n\n$$\nA q = B\n$$\n\n"
-      "See [the spec](spec.txt).",
+      "See [the spec](spec.txt), *holonomic* and m * D.",
       40);
   const std::vector<std::string> lines = lines_of(out);
   ASSERT_GE(lines.size(), 10u);
@@ -49,7 +50,19 @@ TEST(MarkdownText, ListsQuotesHeadingsAndBlocks) {
   EXPECT_NE(out.find("  | the text says 2.0433 x 10^-4\n"), std::string::npos);
   EXPECT_NE(out.find("    code  stays\n"), std::string::npos);
   EXPECT_NE(out.find("    A q = B\n"), std::string::npos);
-  EXPECT_NE(out.find("See the spec (spec.txt)."), std::string::npos);
+  std::string joined = out;
+  std::replace(joined.begin(), joined.end(), '\n', ' ');
+  EXPECT_NE(joined.find("See the spec (spec.txt), holonomic and m * D."), std::string::npos) << out;
+}
+
+TEST(MarkdownText, ANumberStartingALineIsNotAList) {
+  EXPECT_EQ(markdown_to_text("The value is\n240000. Then more.", 80), "The value is 240000. Then more.\n");
+  EXPECT_EQ(markdown_to_text("Steps:\n1. one\n2. two", 80), "Steps:\n\n  1. one\n  2. two\n");
+}
+
+TEST(MarkdownText, TablesLineUp) {
+  EXPECT_EQ(markdown_to_text("| a | value |\n| --- | --- |\n| $\\theta_1$ | 0.1 |\n| long name | 2 |\n", 80),
+            "  a          value\n  ----------------\n  θ₁         0.1\n  long name  2\n");
 }
 
 TEST(MarkdownLatex, ConvertsMarkupAndSymbols) {
@@ -71,6 +84,31 @@ TEST(MarkdownLatex, Blocks) {
   EXPECT_NE(out.find("\\begin{quote}\nquote\n"), std::string::npos);
   EXPECT_NE(out.find("\\[\nx = 1\n\\]"), std::string::npos);
   EXPECT_NE(out.find("\\begin{tabular}{ll}\n  a & b \\\\\n  \\hline\n  1 & 2 \\\\\n\\end{tabular}"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace linkage::lesson
+
+namespace linkage::lesson {
+namespace {
+
+TEST(LatexToUnicode, FormulasReadInATerminal) {
+  EXPECT_EQ(latex_to_unicode("I_{zz}^C = \\frac{m\\,(w^2 + L^2)}{12}"), "I_zz^C = (m (w² + L²))/12");
+  EXPECT_EQ(latex_to_unicode("\\ddot{\\theta}_1 + \\dot{x}_2"), "θ\u0308₁ + x\u0307₂");
+  EXPECT_EQ(latex_to_unicode("D = \\frac{L}{2} - b"), "D = L/2 - b");
+  EXPECT_EQ(latex_to_unicode("\\sin\\theta_1 \\cdot F_x"), "sin θ₁ · F_x");
+  EXPECT_EQ(latex_to_unicode("-\\dot\\theta\\sin\\theta (\\cos x)"), "-θ\u0307 sin θ (cos x)");
+  EXPECT_EQ(latex_to_unicode("\\begin{aligned} a &= b \\\\ c &= d \\end{aligned}"), "a = b\nc = d");
+  EXPECT_EQ(latex_to_unicode("\\left( x \\right)^{2}"), "(x)²");
+  EXPECT_EQ(latex_to_unicode("\\lVert r^{CP} \\rVert"), "‖ r^CP ‖");
+  EXPECT_EQ(latex_to_unicode("10^{-4}\\ \\mathrm{kg\\,m^2}"), "10⁻⁴ kg m²");
+  EXPECT_EQ(latex_to_unicode("\\int_{-L/2}^{L/2} x"), "∫_(-L/2)^(L/2) x");
+  EXPECT_EQ(latex_to_unicode("\\begin{bmatrix} m & 0 \\\\ 0 & I \\end{bmatrix} q"), "[m, 0; 0, I] q");
+}
+
+TEST(LatexToUnicode, MathInTerminalText) {
+  EXPECT_EQ(markdown_to_text("The angle $\\theta_1$ grows.\n\n$$\n\\ddot{y}_1 = -g\n$$\n", 80),
+            "The angle θ₁ grows.\n\n    y\u0308₁ = -g\n");
 }
 
 }  // namespace
