@@ -98,7 +98,9 @@ RenderSettings resolve_settings(const RenderFlags& f) {
 
 std::string run_text(const SimulationOptions& s) {
   std::string text = "Case " + std::to_string(s.case_id) + " \u00b7 " + std::string(info(s.integrator).name);
-  if (s.case_id == 1) text += " \u00b7 " + std::string(name(s.stabilization));
+  if (s.case_id == 1)  // only Case 1 can drift off the pin, so only there does stabilization matter
+    text += s.stabilization == Stabilization::none ? std::string(" \u00b7 no stabilization")
+                                                   : " \u00b7 " + std::string(name(s.stabilization));
   return text;
 }
 
