@@ -1,0 +1,142 @@
+#pragma once
+// A lesson: a title, the inputs it starts from, and an ordered list of steps. Parsing
+// validates the whole file (every key, type, range, name, expression and referenced
+// file) before anything runs, and records for each step the inputs in effect when it
+// runs, so running a range of steps (--only) keeps what earlier `set` steps made.
+#include <array>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "integrate/columns.hpp"
+#include "integrate/simulation.hpp"
+#include "lesson/expression.hpp"
+#include "lesson/text_template.hpp"
+#include "model/inputs.hpp"
+#include "render/plot.hpp"
+#include "render/settings.hpp"
+
+namespace linkage::lesson {
+
+enum class StepKind { say, set, pause, exercise, solve, simulate, render, plot, compare };
+inline constexpr std::array<std::string_view, 9> kStepKindNames{"say",      "set",    "pause", "exercise", "solve",
+                                                                 "simulate", "render", "plot",  "compare"};
+[[nodiscard]] constexpr std::string_view name(StepKind k) { return kStepKindNames[static_cast<std::size_t>(k)]; }
+
+/// The parts of a worked solution a solve step can show, in the order they print.
+enum class SolvePart { inputs, inertia, constraints, symbolic, numeric, solution, residual, comparison };
+inline constexpr std::array<std::string_view, 8> kSolvePartNames{"inputs",  "inertia",  "constraints", "symbolic",
+                                                                 "numeric", "solution", "residual",    "comparison"};
+
+/// One simulation: the inputs it starts from and how it integrates.
+struct Run {
+  std::string label;    // legend and table name
+  std::string series;   // runs with the same series form one curve in a cost plot
+  Inputs inputs;
+  SimulationOptions options;
+};
+
+struct SayStep {
+  TextTemplate text;
+};
+struct SetStep {
+  std::vector<std::string> keys;  // the inputs this step sets, in file order
+};
+struct PauseStep {
+  std::string prompt;
+};
+struct ExerciseStep {
+  TextTemplate question;
+  Expression answer;
+  std::string unit;
+  std::optional<double> tolerance;  // absolute
+  double relative_tolerance = 0.01;
+  int attempts = 3;
+  int digits = 6;
+  TextTemplate hint;
+  TextTemplate explanation;
+};
+struct SolveStep {
+  std::vector<int> cases;
+  std::array<bool, kSolvePartNames.size()> parts{};
+};
+struct SimulateStep {
+  Run run;
+  double every = 0;             // s between trajectory rows
+  std::string trajectory;       // file in the output folder, empty for none
+  std::vector<Column> columns;  // as `linkage simulate --columns`
+};
+struct RenderStep {
+  std::string out;  // file in the output folder
+  std::string caption;
+  Run run;
+  RenderSettings settings;  // as written; --quality draft shrinks size and fps
+  OutputKind kind = OutputKind::mp4;
+  std::vector<std::string> flags;  // the step's keys as `linkage render` flags, in file order
+};
+/// A time-series figure: quantities against time (or another quantity) for some runs.
+struct Figure {
+  std::vector<std::size_t> y;  // series indices
+  std::size_t x = 0;           // series index ("t")
+  bool log_x = false, log_y = false;
+  std::string title;
+  double every = 0;            // s between samples
+  int width = 900, height = 600;
+};
+struct PlotStep {
+  std::string out;  // base name: out.png and out.svg
+  std::string caption;
+  std::vector<Run> runs;
+  Figure figure;
+};
+/// Columns of a compare table.
+enum class CompareColumn { final_error, energy_error, constraint_error, steps, rejected, rhs_evaluations, run_time };
+inline constexpr std::array<std::string_view, 7> kCompareColumnNames{
+    "final_error", "energy_error", "constraint_error", "steps", "rejected", "rhs_evaluations", "run_time"};
+struct CompareStep {
+  std::string out;  // base name: out.csv, and out.png/.svg with a plot, out-cost.png/.svg
+  std::string caption;
+  std::vector<Run> runs;
+  std::vector<CompareColumn> columns;
+  double every = 0;            // s between samples of the errors (and the plot)
+  std::optional<Figure> plot;  // a quantity over time for every run
+  bool cost_plot = false;      // final error against right-hand-side evaluations
+  std::string title;           // of the figures
+  int width = 900, height = 600;
+};
+
+using StepBody = std::variant<SayStep, SetStep, PauseStep, ExerciseStep, SolveStep, SimulateStep, RenderStep,
+                              PlotStep, CompareStep>;
+
+struct Step {
+  StepKind kind = StepKind::say;
+  int number = 0;          // 1-based, as --only counts
+  std::string where;       // "file:line:column" of the step's table
+  std::string heading;     // optional section heading
+  Inputs inputs;           // in effect when the step runs
+  std::string canonical;   // every option of the step, canonically printed (cache key)
+  StepBody body;
+};
+
+struct Lesson {
+  std::filesystem::path file;
+  std::string name;   // the file's stem, e.g. "06-numerical-example"
+  std::string title;
+  TextTemplate description;
+  Inputs inputs;      // at the start
+  std::vector<Step> steps;
+
+  /// Every artifact file the lesson declares, relative to the output folder.
+  [[nodiscard]] std::vector<std::string> artifacts() const;
+};
+
+/// Reads and validates a lesson; throws Error::input "FILE:LINE:COLUMN: problem; valid
+/// choices" for the first problem found.
+[[nodiscard]] Lesson parse_lesson(const std::filesystem::path& file);
+
+/// The artifact files of one step (empty for steps that write none).
+[[nodiscard]] std::vector<std::string> step_artifacts(const Step& step);
+
+}  // namespace linkage::lesson

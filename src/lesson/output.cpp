@@ -1,0 +1,194 @@
+#include "lesson/output.hpp"
+
+#include <system_error>
+
+#include "lesson/markdown.hpp"
+#include "report/latex_math.hpp"
+#include "report/latex_report.hpp"
+#include "report/text_layout.hpp"
+#include "report/text_report.hpp"
+
+namespace linkage::lesson {
+namespace {
+
+bool file_exists(const std::filesystem::path& p) {
+  std::error_code ec;
+  return std::filesystem::is_regular_file(p, ec);
+}
+
+class TextWriter final : public Writer {
+ public:
+  TextWriter(std::size_t width, expr::Style style) : width_(width), style_(style) {}
+
+  void title(const std::string& title, const std::string& description) override {
+    const std::string rule(std::min<std::size_t>(width_, std::max<std::size_t>(display_width(title), 1)), '=');
+    out_ += rule + "\n" + title + "\n" + rule + "\n";
+    if (!description.empty()) {
+      out_ += "\n";
+      out_ += markdown_to_text(description, width_);
+    }
+  }
+  void heading(const std::string& text) override {
+    out_ += "\n" + text + "\n" + std::string(display_width(text), '-') + "\n";
+  }
+  void markdown(const std::string& text) override {
+    out_ += "\n";
+    out_ += markdown_to_text(text, width_);
+  }
+  void worked_solution(const WorkedSolution& worked, const ReportOptions& options) override {
+    ReportOptions o = options;
+    o.width = width_;
+    o.text_style = style_;
+    out_ += "\n";
+    out_ += text_report(worked, o);
+  }
+  void table(const ResultTable& table, const std::string& caption) override {
+    Table t;
+    t.headers.assign(table.headers.begin() + 1, table.headers.end());
+    for (const auto& row : table.rows) {
+      t.row_labels.push_back(row.front());
+      t.cells.emplace_back(row.begin() + 1, row.end());
+    }
+    out_ += "\n";
+    if (!caption.empty()) out_ += markdown_to_text(caption, width_);
+    for (const std::string& line : layout_table(t, "  ", width_)) out_ += line + "\n";
+  }
+  void figure(const FigureRef& f) override {
+    const char* what = f.kind == FigureRef::Kind::video ? "Clip: " : f.kind == FigureRef::Kind::image ? "Figure: " : "File: ";
+    out_ += "\n";
+    out_ += what + f.path.string() + "\n";
+    if (!f.caption.empty()) out_ += markdown_to_text(f.caption, width_);
+  }
+  void exercise(const std::string& question, const std::string& answer, const std::string& explanation) override {
+    out_ += "\n";
+    out_ += markdown_to_text("**Exercise.** " + question, width_);
+    out_ += markdown_to_text("**Answer:** " + answer + (explanation.empty() ? "" : ". " + explanation), width_);
+  }
+
+ private:
+  std::size_t width_;
+  expr::Style style_;
+};
+
+class MarkdownWriter final : public Writer {
+ public:
+  void title(const std::string& title, const std::string& description) override {
+    out_ += "# " + title + "\n";
+    if (!description.empty()) out_ += "\n" + description + "\n";
+  }
+  void heading(const std::string& text) override { out_ += "\n## " + text + "\n"; }
+  void markdown(const std::string& text) override { out_ += "\n" + text + "\n"; }
+  void worked_solution(const WorkedSolution& worked, const ReportOptions& options) override {
+    const std::string report = markdown_report(worked, options);
+    // The report's headings sit two levels below the lesson's step headings.
+    std::string shifted;
+    std::size_t start = 0;
+    while (start < report.size()) {
+      std::size_t end = report.find('\n', start);
+      if (end == std::string::npos) end = report.size();
+      const std::string_view line(report.data() + start, end - start);
+      if (line.starts_with("#")) shifted += "##";
+      shifted += std::string(line) + "\n";
+      start = end + 1;
+    }
+    out_ += "\n" + shifted;
+  }
+  void table(const ResultTable& table, const std::string& caption) override {
+    out_ += "\n";
+    if (!caption.empty()) out_ += caption + "\n\n";
+    auto row = [&](const std::vector<std::string>& cells) {
+      out_ += "|";
+      for (const std::string& c : cells) out_ += " " + c + " |";
+      out_ += "\n";
+    };
+    row(table.headers);
+    out_ += "|";
+    for (std::size_t i = 0; i < table.headers.size(); ++i) out_ += i == 0 ? " --- |" : " ---: |";
+    out_ += "\n";
+    for (const auto& r : table.rows) row(r);
+  }
+  void figure(const FigureRef& f) override {
+    if (!file_exists(f.path)) return;
+    const std::string alt = f.caption.empty() ? f.name : f.caption;
+    if (f.kind == FigureRef::Kind::file) {
+      out_ += "\nFile: [" + f.name + "](" + f.name + ")" + (f.caption.empty() ? "" : " — " + f.caption) + "\n";
+      return;
+    }
+    if (f.kind == FigureRef::Kind::video) {
+      out_ += "\n<video src=\"" + f.name + "\" controls muted loop width=\"640\"></video>\n\n";
+      out_ += "[▶ " + f.name + "](" + f.name + ")";
+    } else {
+      out_ += "\n![" + alt + "](" + f.name + ")";
+    }
+    out_ += "\n";
+    if (!f.caption.empty()) out_ += "\n*" + f.caption + "*\n";
+  }
+  void exercise(const std::string& question, const std::string& answer, const std::string& explanation) override {
+    out_ += "\n**Exercise.** " + question + "\n\n<details><summary>Answer</summary>\n\n" + answer +
+            (explanation.empty() ? "" : "\n\n" + explanation) + "\n\n</details>\n";
+  }
+};
+
+class LatexWriter final : public Writer {
+ public:
+  void title(const std::string& title, const std::string& description) override {
+    out_ += "% Needs \\usepackage{amsmath,graphicx,hyperref}.\n\\section*{" + inline_latex(title) + "}\n\n";
+    if (!description.empty()) out_ += markdown_to_latex(description);
+  }
+  void heading(const std::string& text) override { out_ += "\\subsection*{" + inline_latex(text) + "}\n\n"; }
+  void markdown(const std::string& text) override { out_ += markdown_to_latex(text); }
+  void worked_solution(const WorkedSolution& worked, const ReportOptions& options) override {
+    out_ += latex_report(worked, options) + "\n";
+  }
+  void table(const ResultTable& table, const std::string& caption) override {
+    out_ += "\\begin{center}\n\\begin{tabular}{l" + std::string(table.headers.size() - 1, 'r') + "}\n  ";
+    for (std::size_t i = 0; i < table.headers.size(); ++i) out_ += (i > 0 ? " & " : "") + inline_latex(table.headers[i]);
+    out_ += " \\\\\n  \\hline\n";
+    for (const auto& row : table.rows) {
+      out_ += "  ";
+      for (std::size_t i = 0; i < row.size(); ++i) out_ += (i > 0 ? " & " : "") + inline_latex(row[i]);
+      out_ += " \\\\\n";
+    }
+    out_ += "\\end{tabular}\n\\end{center}\n";
+    if (!caption.empty()) out_ += markdown_to_latex(caption);
+    out_ += "\n";
+  }
+  void figure(const FigureRef& f) override {
+    if (!file_exists(f.path)) return;
+    const std::string file = f.path.generic_string();
+    // graphicx reads PNG and PDF: clips, data files and SVG figures are linked instead.
+    if (f.kind != FigureRef::Kind::image || f.path.extension() == ".svg") {
+      out_ += std::string(f.kind == FigureRef::Kind::video ? "\\noindent Clip: " : "\\noindent File: ") + "\\href{" +
+              file + "}{\\texttt{" + latex_escape(f.name) + "}}";
+      if (!f.caption.empty()) out_ += " --- " + inline_latex(f.caption);
+      out_ += "\n\n";
+      return;
+    }
+    out_ += "\\begin{figure}[h]\n  \\centering\n  \\includegraphics[width=0.8\\linewidth]{" + file + "}\n";
+    if (!f.caption.empty()) out_ += "\n  {\\small " + inline_latex(f.caption) + "}\n";
+    out_ += "\\end{figure}\n\n";
+  }
+  void exercise(const std::string& question, const std::string& answer, const std::string& explanation) override {
+    out_ += "\\paragraph{Exercise.} " + markdown_to_latex(question) + "\\textbf{Answer:} " + inline_latex(answer) + "\n\n";
+    if (!explanation.empty()) out_ += markdown_to_latex(explanation);
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Writer> make_text_writer(std::size_t width, expr::Style style) {
+  return std::make_unique<TextWriter>(width, style);
+}
+std::unique_ptr<Writer> make_markdown_writer() { return std::make_unique<MarkdownWriter>(); }
+std::unique_ptr<Writer> make_latex_writer() { return std::make_unique<LatexWriter>(); }
+
+std::unique_ptr<Writer> make_writer(Format format, std::size_t width, expr::Style style) {
+  switch (format) {
+    case Format::text: return make_text_writer(width, style);
+    case Format::markdown: return make_markdown_writer();
+    case Format::latex: return make_latex_writer();
+  }
+  return make_text_writer(width, style);
+}
+
+}  // namespace linkage::lesson

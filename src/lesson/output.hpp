@@ -1,0 +1,67 @@
+#pragma once
+// How a lesson prints, in each format: the terminal (text, markdown or latex, chosen by
+// --format) and the lesson document (always Markdown). The runner says *what* to show;
+// a Writer decides how it looks. Writers accumulate text; take() hands it over.
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "report/worked_solution.hpp"
+
+namespace linkage::lesson {
+
+enum class Format { text, markdown, latex };
+
+/// A small table of results (a simulate summary, a compare table). The first column
+/// names the rows.
+struct ResultTable {
+  std::vector<std::string> headers;
+  std::vector<std::vector<std::string>> rows;
+};
+
+/// A file a step wrote, as the reader should see it.
+struct FigureRef {
+  enum class Kind { image, video, file };
+  std::filesystem::path path;  // where it is (the output folder joined with the name)
+  std::string name;            // the file name, relative to the output folder
+  Kind kind = Kind::image;
+  std::string caption;
+};
+
+class Writer {
+ public:
+  virtual ~Writer() = default;
+  /// The lesson's title and its description (Markdown).
+  virtual void title(const std::string& title, const std::string& description) = 0;
+  /// A step's heading.
+  virtual void heading(const std::string& text) = 0;
+  /// A Markdown paragraph (say steps, questions, notes).
+  virtual void markdown(const std::string& text) = 0;
+  /// The worked solution of a solve step.
+  virtual void worked_solution(const WorkedSolution& worked, const ReportOptions& options) = 0;
+  virtual void table(const ResultTable& table, const std::string& caption) = 0;
+  /// A still, a clip, a plot or a data file. Writers that link files link only files
+  /// that exist.
+  virtual void figure(const FigureRef& figure) = 0;
+  /// An exercise shown with its answer (not asked).
+  virtual void exercise(const std::string& question, const std::string& answer, const std::string& explanation) = 0;
+
+  /// The text written since the last take().
+  [[nodiscard]] std::string take() { return std::exchange(out_, {}); }
+
+ protected:
+  std::string out_;
+};
+
+/// Aligned text for a terminal `width` columns wide, symbols in `style`.
+[[nodiscard]] std::unique_ptr<Writer> make_text_writer(std::size_t width, expr::Style style);
+/// Markdown: matrices as $$ math, figures as image embeds, clips as <video> with a link,
+/// exercise answers folded in <details>.
+[[nodiscard]] std::unique_ptr<Writer> make_markdown_writer();
+/// A LaTeX fragment (needs amsmath, graphicx, hyperref).
+[[nodiscard]] std::unique_ptr<Writer> make_latex_writer();
+[[nodiscard]] std::unique_ptr<Writer> make_writer(Format format, std::size_t width, expr::Style style);
+
+}  // namespace linkage::lesson

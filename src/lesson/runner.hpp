@@ -1,0 +1,63 @@
+#pragma once
+// Running a validated lesson: prints each step to the terminal, writes every artifact
+// and the lesson document (lesson.md) into the output folder, reuses artifacts whose
+// inputs have not changed, and asks exercises when run step by step.
+#include <filesystem>
+#include <functional>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "formulations/expr.hpp"
+#include "lesson/lesson.hpp"
+#include "lesson/output.hpp"
+
+namespace linkage::lesson {
+
+enum class Quality { draft, final };
+
+/// Frame size and rate of clips and stills at --quality draft (final keeps the step's).
+inline constexpr int kDraftWidth = 480, kDraftHeight = 270, kDraftFps = 15;
+
+struct RunnerOptions {
+  std::filesystem::path out_dir;      // created if missing (its parent must exist)
+  bool interactive = false;           // --step: pause steps wait, exercises ask
+  Quality quality = Quality::draft;
+  Format format = Format::text;       // of the terminal output
+  std::vector<bool> selected;         // per step (--only); empty: every step
+  bool force = false;                 // make everything, cached or not
+  std::size_t width = 80;             // terminal columns for text
+  expr::Style style = expr::Style::unicode;
+  /// Runs `linkage ARGS` (the render step's `linkage render ...`) and throws Error with
+  /// the command's exit code when it fails. The CLI passes one that starts this program,
+  /// so a render step is exactly the `linkage render` a lecturer would type.
+  std::function<void(const std::vector<std::string>& args)> run_linkage;
+};
+
+struct RunSummary {
+  int steps_run = 0;
+  int made = 0;    // steps that wrote their artifacts
+  int reused = 0;  // steps whose artifacts were reused
+  std::filesystem::path document;
+};
+
+/// Runs the selected steps. Terminal output goes to `out`, status lines (what was made
+/// or reused) to `status`; --step answers are read from `in`.
+RunSummary run_lesson(const Lesson& lesson, const RunnerOptions& options, std::istream& in, std::ostream& out,
+                      std::ostream& status);
+
+/// The hash a step's artifacts are cached under: its options, its inputs, the quality
+/// and the program version.
+[[nodiscard]] std::string step_hash(const Step& step, Quality quality);
+
+/// The `linkage render` arguments of a render step at `quality`, writing into `out_dir`:
+/// the inputs that differ from the defaults, the step's own flags (at draft quality
+/// without --quality, --size and --fps, which become 480x270 and at most 15 fps), and
+/// --out.
+[[nodiscard]] std::vector<std::string> render_arguments(const RenderStep& render, Quality quality,
+                                                        const std::filesystem::path& out_dir);
+
+/// `args` as one shell command line, quoted where needed (for the lesson document).
+[[nodiscard]] std::string command_line(const std::vector<std::string>& args);
+
+}  // namespace linkage::lesson

@@ -1,0 +1,53 @@
+#pragma once
+// What every step of a running lesson shares (internal to the runner's files).
+#include <functional>
+#include <iosfwd>
+#include <memory>
+
+#include <nlohmann/json.hpp>
+
+#include "lesson/cache.hpp"
+#include "lesson/output.hpp"
+#include "lesson/quantities.hpp"
+#include "lesson/runner.hpp"
+
+namespace linkage::lesson {
+
+struct RunContext {
+  const Lesson& lesson;
+  const RunnerOptions& options;
+  std::istream& in;
+  std::ostream& out;
+  std::ostream& status;
+  std::unique_ptr<Writer> terminal;
+  std::unique_ptr<Writer> document;
+  ArtifactCache cache;
+  RunSummary summary;
+
+  /// Calls `f` on the terminal writer and on the document writer.
+  template <class F>
+  void both(F&& f) {
+    f(*terminal);
+    f(*document);
+  }
+  /// Sends the terminal writer's text to `out`.
+  void flush();
+  /// A status line on `status`: "lesson: step 5 (render): ...".
+  void note(const Step& step, const std::string& text);
+  /// A file the step wrote, for the writers.
+  [[nodiscard]] FigureRef figure(const std::string& name, FigureRef::Kind kind, const std::string& caption) const;
+  /// Runs `make` (which writes the step's artifacts and returns what it printed) unless
+  /// the artifacts are cached; returns the results either way.
+  nlohmann::json cached(const Step& step, const std::function<nlohmann::json()>& make);
+};
+
+void run_simulate(RunContext& c, const Step& step, const SimulateStep& s);
+void run_plot(RunContext& c, const Step& step, const PlotStep& s);
+void run_compare(RunContext& c, const Step& step, const CompareStep& s);
+void run_render(RunContext& c, const Step& step, const RenderStep& s);
+
+/// A result table as JSON (for cache records) and back.
+[[nodiscard]] nlohmann::json to_json(const ResultTable& table);
+[[nodiscard]] ResultTable table_from_json(const nlohmann::json& json);
+
+}  // namespace linkage::lesson

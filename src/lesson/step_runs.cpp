@@ -1,0 +1,285 @@
+// The steps that run simulations: simulate (a summary and a trajectory), plot (series
+// against time for several runs) and compare (a table of figures, and plots).
+#include <algorithm>
+#include <map>
+#include <optional>
+
+#include "core/atomic_file.hpp"
+#include "core/interrupt.hpp"
+#include "core/number_format.hpp"
+#include "lesson/canonical.hpp"
+#include "lesson/runner_context.hpp"
+#include "lesson/runs.hpp"
+#include "render/plot.hpp"
+
+namespace linkage::lesson {
+namespace {
+
+std::string method_text(const SimulationOptions& o) {
+  const IntegratorInfo& i = info(o.integrator);
+  std::string text = std::string(i.name) + (i.adaptive ? " (rtol " + format_significant(o.rtol, 3) + ", atol " +
+                                                             format_significant(o.atol, 3) + ")"
+                                                       : " (dt " + format_significant(o.dt, 3) + " s)");
+  if (o.case_id == 1) text += ", stabilization " + std::string(name(o.stabilization));
+  return text;
+}
+
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string out = "\"";
+  for (char ch : text) out += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+  return out + "\"";
+}
+
+// --- simulate ------------------------------------------------------------------------
+
+ResultTable simulate_summary(const SimulateStep& s, const SimulationStats& st, const BodyState& end) {
+  const SimulationOptions& o = s.run.options;
+  ResultTable t;
+  t.headers = {"quantity", "value"};
+  t.rows = {
+      {"case", std::to_string(o.case_id)},
+      {"method", method_text(o)},
+      {"simulated time", format_significant(o.duration, 6) + " s"},
+      {"steps", std::to_string(st.steps_accepted) + " accepted, " + std::to_string(st.steps_rejected) + " rejected"},
+      {"right-hand sides", std::to_string(st.rhs_evaluations)},
+      {"largest energy error", format_significant(st.max_energy_error, 3) + " of the energy scale"},
+      {"largest constraint error", format_significant(st.max_constraint_error, 3) + " m"},
+      {"final x1, y1", format_significant(end.x1, 6) + " m, " + format_significant(end.y1, 6) + " m"},
+      {"final theta1, theta2", format_significant(end.theta1, 6) + " rad, " + format_significant(end.theta2, 6) + " rad"},
+      {"run time", format_significant(st.wall_seconds * 1e3, 3) + " ms"},
+  };
+  return t;
+}
+
+/// Runs a simulate step, writing its trajectory (if any) as `linkage simulate` would.
+nlohmann::json simulate(const RunContext& c, const SimulateStep& s) {
+  const Run& run = s.run;
+  Simulation sim(run.inputs.params(), run.inputs.state(), run.options);
+  const std::vector<double> times = sample_times(run.options.duration, s.every);
+  std::optional<AtomicFile> file;
+  if (!s.trajectory.empty()) {
+    file.emplace(c.options.out_dir / s.trajectory, "--out");
+    std::string header;
+    for (const Column column : s.columns) {
+      if (!header.empty()) header += ',';
+      header += info(column).name;
+    }
+    file->stream() << header << "\n";
+  }
+  std::vector<double> values;
+  values.reserve(s.columns.size());
+  std::string line;
+  BodyState state;
+  for (const double t : times) {
+    throw_if_interrupted();
+    state = sim.state_at(t);
+    if (!file) continue;
+    compute_row(sim, t, state, s.columns, values);
+    line.clear();
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      if (i > 0) line += ',';
+      line += format_roundtrip(values[i]);
+    }
+    file->stream() << line << "\n";
+  }
+  if (file) file->commit();
+  return {{"table", to_json(simulate_summary(s, sim.stats(), state))}};
+}
+
+// --- plots ---------------------------------------------------------------------------
+
+constexpr std::array<plot::Dash, 4> kDashes{plot::Dash::solid, plot::Dash::dashed, plot::Dash::dotted,
+                                            plot::Dash::dash_dot};
+
+std::string y_label(const std::vector<std::size_t>& y) {
+  if (y.size() == 1) return series_axis_label(y.front());
+  std::string label;
+  for (std::size_t i : y) {
+    if (!label.empty()) label += ", ";
+    label += kSeries[i].name;
+  }
+  const std::string_view unit = kSeries[y.front()].unit;
+  const bool same_unit = std::all_of(y.begin(), y.end(), [&](std::size_t i) { return kSeries[i].unit == unit; });
+  if (same_unit && !unit.empty()) label += " (" + std::string(unit) + ")";
+  return label;
+}
+
+/// The figure's series for every run, sampled and put into a plot description: runs
+/// by colour, series by dash.
+plot::Plot time_plot(const Figure& f, const std::vector<Run>& runs) {
+  plot::Plot p;
+  p.title = f.title;
+  p.x.label = series_axis_label(f.x);
+  p.y.label = y_label(f.y);
+  p.x.scale = f.log_x ? plot::Scale::log : plot::Scale::linear;
+  p.y.scale = f.log_y ? plot::Scale::log : plot::Scale::linear;
+  std::vector<std::size_t> columns{f.x};
+  columns.insert(columns.end(), f.y.begin(), f.y.end());
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    const SampledRun data = sample_run(runs[r], f.every, columns);
+    for (std::size_t k = 0; k < f.y.size(); ++k) {
+      plot::Series series;
+      const std::string y_name(kSeries[f.y[k]].name);
+      series.name = runs.size() == 1 ? (f.y.size() == 1 ? runs[r].label : y_name)
+                                     : (f.y.size() == 1 ? runs[r].label : runs[r].label + ": " + y_name);
+      series.color = r % plot::palette_size;
+      series.dash = kDashes[k % kDashes.size()];
+      series.points.reserve(data.columns[0].size());
+      for (std::size_t i = 0; i < data.columns[0].size(); ++i)
+        series.points.push_back({data.columns[0][i], data.columns[k + 1][i]});
+      p.series.push_back(std::move(series));
+    }
+  }
+  return p;
+}
+
+/// Writes `name`.png and `name`.svg. Points dropped from a log axis (exact zeros, e.g.
+/// an error at t = 0) are expected; points that are not finite are worth a word.
+void write_plot(const RunContext& c, const Step& step, const plot::Plot& p, const std::string& name, int width, int height) {
+  plot::Canvas canvas;
+  canvas.width = width;
+  canvas.height = height;
+  for (const char* ext : {".png", ".svg"}) {
+    const plot::Report report = plot::write(p, c.options.out_dir / (name + ext), canvas, step.where);
+    if (report.skipped_nonfinite > 0) c.status << "lesson: step " << step.number << ": " << report.warning() << "\n";
+  }
+}
+
+// --- compare -------------------------------------------------------------------------
+
+std::string column_header(CompareColumn column) {
+  switch (column) {
+    case CompareColumn::final_error: return "final error";
+    case CompareColumn::energy_error: return "energy error";
+    case CompareColumn::constraint_error: return "constraint error (m)";
+    case CompareColumn::steps: return "steps";
+    case CompareColumn::rejected: return "rejected";
+    case CompareColumn::rhs_evaluations: return "RHS evaluations";
+    case CompareColumn::run_time: return "run time (ms)";
+  }
+  return "";
+}
+
+double figure_value(const RunFigures& f, CompareColumn column) {
+  switch (column) {
+    case CompareColumn::final_error: return f.final_error;
+    case CompareColumn::energy_error: return f.energy_error;
+    case CompareColumn::constraint_error: return f.constraint_error;
+    case CompareColumn::steps: return static_cast<double>(f.steps);
+    case CompareColumn::rejected: return static_cast<double>(f.rejected);
+    case CompareColumn::rhs_evaluations: return static_cast<double>(f.rhs_evaluations);
+    case CompareColumn::run_time: return f.run_time * 1e3;
+  }
+  return 0;
+}
+
+std::string figure_text(const RunFigures& f, CompareColumn column) {
+  switch (column) {
+    case CompareColumn::steps: return std::to_string(f.steps);
+    case CompareColumn::rejected: return std::to_string(f.rejected);
+    case CompareColumn::rhs_evaluations: return std::to_string(f.rhs_evaluations);
+    default: return format_significant(figure_value(f, column), 3);
+  }
+}
+
+/// Final error against right-hand-side evaluations, log-log, one curve per series.
+plot::Plot cost_plot(const CompareStep& s, const std::vector<RunFigures>& figures) {
+  plot::Plot p;
+  p.title = s.title.empty() ? "Accuracy against cost" : s.title + ": accuracy against cost";
+  p.x.label = "right-hand-side evaluations";
+  p.y.label = "final error (largest of |Δx_{1}|, |Δy_{1}|, |Δθ_{1}|, |Δθ_{2}|)";
+  p.x.scale = plot::Scale::log;
+  p.y.scale = plot::Scale::log;
+  std::vector<std::string> order;
+  std::map<std::string, plot::Series> groups;
+  for (std::size_t r = 0; r < s.runs.size(); ++r) {
+    const std::string& key = s.runs[r].series;
+    if (!groups.count(key)) {
+      order.push_back(key);
+      groups[key].name = key;
+      groups[key].style = plot::Style::line_and_markers;
+    }
+    groups[key].points.push_back({static_cast<double>(figures[r].rhs_evaluations), figures[r].final_error});
+  }
+  for (const std::string& key : order) {
+    plot::Series& series = groups[key];
+    std::sort(series.points.begin(), series.points.end(), [](const plot::Point& a, const plot::Point& b) { return a.x < b.x; });
+    p.series.push_back(std::move(series));
+  }
+  return p;
+}
+
+nlohmann::json compare(const RunContext& c, const Step& step, const CompareStep& s) {
+  std::map<std::string, State> references;  // by inputs and duration
+  std::vector<RunFigures> figures;
+  for (const Run& run : s.runs) {
+    const SampledRun data = sample_run(run, s.every, {});
+    const std::string key = canonical_text(run.inputs) + ";" + format_roundtrip(run.options.duration);
+    if (!references.count(key)) references[key] = reference_final_state(run);
+    RunFigures f;
+    f.final_error = final_error(data.final_state, references[key]);
+    f.energy_error = data.stats.max_energy_error;
+    f.constraint_error = data.stats.max_constraint_error;
+    f.steps = data.stats.steps_accepted;
+    f.rejected = data.stats.steps_rejected;
+    f.rhs_evaluations = data.stats.rhs_evaluations;
+    f.run_time = data.stats.wall_seconds;
+    figures.push_back(f);
+  }
+  ResultTable table;
+  table.headers = {"run"};
+  std::string csv = "run";
+  for (CompareColumn column : s.columns) {
+    table.headers.push_back(column_header(column));
+    csv += ',';
+    csv += kCompareColumnNames[static_cast<std::size_t>(column)];
+  }
+  csv += "\n";
+  for (std::size_t r = 0; r < s.runs.size(); ++r) {
+    std::vector<std::string> row{s.runs[r].label};
+    csv += csv_field(s.runs[r].label);
+    for (CompareColumn column : s.columns) {
+      row.push_back(figure_text(figures[r], column));
+      csv += ',';
+      csv += format_roundtrip(figure_value(figures[r], column));
+    }
+    csv += "\n";
+    table.rows.push_back(std::move(row));
+  }
+  write_file_atomically(c.options.out_dir / (s.out + ".csv"), csv, step.where);
+  if (s.plot) write_plot(c, step, time_plot(*s.plot, s.runs), s.out, s.width, s.height);
+  if (s.cost_plot) write_plot(c, step, cost_plot(s, figures), s.out + "-cost", s.width, s.height);
+  return {{"table", to_json(table)}};
+}
+
+}  // namespace
+
+void run_simulate(RunContext& c, const Step& step, const SimulateStep& s) {
+  const nlohmann::json results = s.trajectory.empty() ? simulate(c, s) : c.cached(step, [&] { return simulate(c, s); });
+  const ResultTable table = table_from_json(results.at("table"));
+  c.both([&](Writer& w) { w.table(table, "Simulated with " + method_text(s.run.options) + "."); });
+  if (!s.trajectory.empty())
+    c.both([&](Writer& w) { w.figure(c.figure(s.trajectory, FigureRef::Kind::file, "the trajectory (CSV, as `linkage simulate`)")); });
+}
+
+void run_plot(RunContext& c, const Step& step, const PlotStep& s) {
+  c.cached(step, [&] {
+    write_plot(c, step, time_plot(s.figure, s.runs), s.out, s.figure.width, s.figure.height);
+    return nlohmann::json::object();
+  });
+  c.both([&](Writer& w) { w.figure(c.figure(s.out + ".png", FigureRef::Kind::image, s.caption)); });
+}
+
+void run_compare(RunContext& c, const Step& step, const CompareStep& s) {
+  const nlohmann::json results = c.cached(step, [&] { return compare(c, step, s); });
+  const ResultTable table = table_from_json(results.at("table"));
+  const std::string note = "Final error: largest difference of x1, y1, θ1, θ2 at the end from DOP853 at rtol = atol = " +
+                           format_significant(kReferenceTolerance, 1) + "; energy error relative to the energy scale.";
+  c.both([&](Writer& w) { w.table(table, s.caption.empty() ? note : s.caption + " " + note); });
+  if (s.plot) c.both([&](Writer& w) { w.figure(c.figure(s.out + ".png", FigureRef::Kind::image, "")); });
+  if (s.cost_plot) c.both([&](Writer& w) { w.figure(c.figure(s.out + "-cost.png", FigureRef::Kind::image, "")); });
+  c.both([&](Writer& w) { w.figure(c.figure(s.out + ".csv", FigureRef::Kind::file, "the table (CSV)")); });
+}
+
+}  // namespace linkage::lesson

@@ -1,0 +1,169 @@
+// Reading lessons: a valid lesson's steps, the inputs each step sees, and one clear
+// error with FILE:LINE:COLUMN for each broken lesson in tests/data/lessons.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/error.hpp"
+#include "lesson/lesson.hpp"
+#include "support/test_support.hpp"
+
+namespace linkage::lesson {
+namespace {
+
+namespace fs = std::filesystem;
+
+Lesson parse_text(const test::TempDir& dir, const std::string& text) {
+  const fs::path file = dir / "lesson.toml";
+  test::write_text(file, text);
+  return parse_lesson(file);
+}
+
+TEST(LessonParse, StepsCarryTheInputsEarlierSetStepsMade) {
+  test::TempDir dir;
+  const Lesson lesson = parse_text(dir, R"(title = "Sets"
+[parameters]
+m = 0.2
+[[step]]
+kind = "say"
+text = "m is {{m}} kg"
+[[step]]
+kind = "set"
+g = 0
+theta1 = 0.5
+[[step]]
+kind = "exercise"
+question = "I?"
+answer = "I_zz_C"
+[[step]]
+kind = "set"
+m = 0.3
+[[step]]
+kind = "solve"
+case = [1, 3]
+show = ["numeric", "solution"]
+)");
+  EXPECT_EQ(lesson.title, "Sets");
+  EXPECT_EQ(lesson.name, "lesson");
+  ASSERT_EQ(lesson.steps.size(), 5u);
+  const InputKey& m = *find_input_key("m");
+  const InputKey& g = *find_input_key("g");
+  EXPECT_EQ(lesson.steps[0].inputs.value(m), 0.2);
+  EXPECT_EQ(lesson.steps[0].inputs.value(g), 9.81);
+  EXPECT_EQ(lesson.steps[1].inputs.value(g), 0.0);
+  EXPECT_EQ(lesson.steps[2].inputs.value(g), 0.0);
+  EXPECT_EQ(lesson.steps[2].inputs.value(m), 0.2);
+  EXPECT_EQ(lesson.steps[4].inputs.value(m), 0.3);
+  EXPECT_EQ(lesson.steps[4].inputs.value(*find_input_key("theta1")), 0.5);
+  const auto& set = std::get<SetStep>(lesson.steps[1].body);
+  EXPECT_EQ(set.keys, (std::vector<std::string>{"g", "theta1"}));  // file order
+  const auto& exercise = std::get<ExerciseStep>(lesson.steps[2].body);
+  EXPECT_EQ(exercise.unit, "kg m^2");
+  EXPECT_DOUBLE_EQ(exercise.relative_tolerance, 0.01);
+  const auto& solve = std::get<SolveStep>(lesson.steps[4].body);
+  EXPECT_EQ(solve.cases, (std::vector<int>{1, 3}));
+  EXPECT_FALSE(solve.parts[static_cast<std::size_t>(SolvePart::inputs)]);
+  EXPECT_TRUE(solve.parts[static_cast<std::size_t>(SolvePart::numeric)]);
+  EXPECT_TRUE(solve.parts[static_cast<std::size_t>(SolvePart::solution)]);
+  EXPECT_EQ(lesson.steps[3].where, (dir / "lesson.toml").string() + ":15:1");
+}
+
+TEST(LessonParse, RunsInheritTheStepsOptionsAndOverrideInputs) {
+  test::TempDir dir;
+  const Lesson lesson = parse_text(dir, R"(title = "Runs"
+[[step]]
+kind = "compare"
+out = "drift.csv"
+case = 1
+duration = 2
+runs = [ { stabilize = "none" },
+         { stabilize = "baumgarte", label = "Baumgarte" },
+         { case = 3, g = 0, integrator = "rk4", dt = 0.01 } ]
+columns = ["final_error", "constraint_error"]
+plot = "constraint_position_error"
+)");
+  const auto& c = std::get<CompareStep>(lesson.steps[0].body);
+  EXPECT_EQ(c.out, "drift");
+  ASSERT_EQ(c.runs.size(), 3u);
+  EXPECT_EQ(c.runs[0].options.case_id, 1);
+  EXPECT_EQ(c.runs[0].options.duration, 2.0);
+  EXPECT_EQ(c.runs[1].options.stabilization, Stabilization::baumgarte);
+  EXPECT_EQ(c.runs[1].label, "Baumgarte");
+  EXPECT_EQ(c.runs[0].label, "Case 1, dop853, rtol 1e-10, none");
+  EXPECT_EQ(c.runs[2].options.case_id, 3);
+  EXPECT_EQ(c.runs[2].inputs.params().g, 0.0);
+  EXPECT_EQ(c.runs[0].inputs.params().g, 9.81);
+  EXPECT_EQ(c.runs[2].label, "Case 3, rk4, dt 0.01 s, g = 0");
+  EXPECT_EQ(c.runs[2].series, "rk4");
+  ASSERT_TRUE(c.plot.has_value());
+  EXPECT_TRUE(c.plot->log_y);
+  EXPECT_DOUBLE_EQ(c.every, 2.0 / 400);
+  EXPECT_EQ(step_artifacts(lesson.steps[0]), (std::vector<std::string>{"drift.csv", "drift.png", "drift.svg"}));
+}
+
+TEST(LessonParse, RenderStepsTakeTheRenderOptions) {
+  test::TempDir dir;
+  const Lesson lesson = parse_text(dir, R"(title = "Render"
+[[step]]
+kind = "render"
+out = "still.svg"
+at = 1.5
+size = "640x360"
+camera = "fixed"
+view = "0,1,2,3"
+theme = "dark"
+show = ["velocity"]
+hide = ["hud", "legend"]
+title = "A still"
+)");
+  const auto& r = std::get<RenderStep>(lesson.steps[0].body);
+  EXPECT_EQ(r.kind, OutputKind::svg);
+  EXPECT_EQ(r.settings.width, 640);
+  EXPECT_EQ(r.settings.height, 360);
+  EXPECT_EQ(r.settings.at, 1.5);
+  EXPECT_EQ(r.settings.camera, CameraMode::fixed);
+  EXPECT_EQ(r.settings.view.xmax, 2.0);
+  EXPECT_EQ(r.settings.theme, "dark");
+  EXPECT_EQ(r.settings.title, "A still");
+  EXPECT_TRUE(r.settings.elements.has(Element::velocity));
+  EXPECT_FALSE(r.settings.elements.has(Element::hud));
+  EXPECT_TRUE(r.settings.elements.has(Element::blocks));
+  EXPECT_EQ(r.flags, (std::vector<std::string>{"--at", "1.5", "--size", "640x360", "--camera", "fixed", "--view", "0,1,2,3",
+                                                "--theme", "dark", "--show", "velocity", "--hide", "hud,legend", "--title",
+                                                "A still"}));
+}
+
+// Each broken lesson's first line says where its error is and what it says:
+//   # expect: LINE:COLUMN: message fragment
+TEST(LessonParse, BrokenLessonsGiveOneErrorWithFileLineAndColumn) {
+  const fs::path folder = fs::path(LINKAGE_SOURCE_DIR) / "tests/data/lessons";
+  int checked = 0;
+  for (const auto& entry : fs::directory_iterator(folder)) {
+    if (entry.path().extension() != ".toml") continue;
+    const std::string file = entry.path().string();
+    std::ifstream in(file);
+    std::string first;
+    std::getline(in, first);
+    const std::string tag = "# expect: ";
+    ASSERT_EQ(first.rfind(tag, 0), 0u) << file << " lacks an expect line";
+    const std::string expected = first.substr(tag.size());
+    SCOPED_TRACE(file);
+    try {
+      (void)parse_lesson(file);
+      ADD_FAILURE() << "parsed without an error";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), ExitCode::bad_input);
+      const std::string message = e.what();
+      EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+      const std::string position = expected.substr(0, expected.find(": ") + 2);
+      EXPECT_EQ(message.rfind(file + ":" + position, 0), 0u) << message;
+      EXPECT_NE(message.find(expected.substr(position.size())), std::string::npos) << message;
+    }
+    ++checked;
+  }
+  EXPECT_GE(checked, 19);
+}
+
+}  // namespace
+}  // namespace linkage::lesson
