@@ -17,6 +17,7 @@ void register_commands(CLI::App& app) {
   register_solve(app);
   register_render(app);
   register_bench(app);
+  register_lesson(app);
 }
 
 void run_selected(const CLI::App& /*app*/) {

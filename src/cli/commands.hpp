@@ -19,5 +19,6 @@ void add_runner(CLI::App* subcommand, std::function<void()> run);
 void register_solve(CLI::App& app);
 void register_render(CLI::App& app);
 void register_bench(CLI::App& app);
+void register_lesson(CLI::App& app);
 
 }  // namespace linkage::cli
