@@ -23,6 +23,8 @@
 namespace linkage::cli {
 namespace {
 
+#ifdef LINKAGE_WITH_BENCH
+
 /// "a,b,c" -> {"a", "b", "c"}; empty items are an error naming `origin`.
 std::vector<std::string> split_list(const std::string& text, const std::string& origin) {
   std::vector<std::string> out;
@@ -34,8 +36,6 @@ std::vector<std::string> split_list(const std::string& text, const std::string& 
   if (out.empty()) throw Error::input(origin + ": empty list");
   return out;
 }
-
-#ifdef LINKAGE_WITH_BENCH
 
 struct AccuracyFlags {
   std::string scenario = "fast";
