@@ -18,6 +18,7 @@ void register_commands(CLI::App& app) {
   register_render(app);
   register_bench(app);
   register_lesson(app);
+  register_simulate(app);
 }
 
 void run_selected(const CLI::App& /*app*/) {

@@ -1,0 +1,239 @@
+// `linkage simulate`: the motion over time as a CSV or JSON table, with a summary of
+// the run's cost and accuracy on stderr.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "cli/input_options.hpp"
+#include "cli/simulation_flags.hpp"
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
+#include "core/interrupt.hpp"
+#include "core/number_format.hpp"
+#include "core/progress.hpp"
+#include "integrate/columns.hpp"
+#include "integrate/simulation.hpp"
+#include "model/kinematics.hpp"
+
+namespace linkage::cli {
+namespace {
+
+constexpr double kMaxRows = 1e7;
+
+struct SimulateOptions {
+  InputOptions inputs;
+  SimulationFlags simulation;
+  std::string duration, every = "0.01";
+  std::string out;
+  std::string format;
+  std::string columns = "all";
+};
+
+enum class Format { csv, json };
+
+Format choose_format(const SimulateOptions& o) {
+  if (o.format == "csv") return Format::csv;
+  if (o.format == "json") return Format::json;
+  if (!o.format.empty()) throw Error::input("--format: '" + o.format + "' is not a format; valid: csv, json");
+  const std::string ext = std::filesystem::path(o.out).extension().string();
+  return ext == ".json" ? Format::json : Format::csv;
+}
+
+/// The output times k * every strictly before the end, then the duration itself.
+struct Samples {
+  Samples(double duration_s, double every_s) : duration(duration_s), every(every_s) {
+    const double ratio = duration / every;
+    if (ratio > kMaxRows)
+      throw Error::input("--every: " + format_roundtrip(every) + " s gives " + format_significant(ratio, 3) +
+                         " rows for --duration " + format_roundtrip(duration) + " s; the limit is 1e7 rows");
+    const double nearest = std::round(ratio);
+    const bool divides = std::fabs(ratio - nearest) <= 1e-9 * std::max(1.0, ratio);
+    count = static_cast<long>(divides ? nearest : std::floor(ratio) + 1) + 1;
+  }
+  [[nodiscard]] double at(long i) const { return i + 1 == count ? duration : static_cast<double>(i) * every; }
+
+  double duration, every;
+  long count = 0;
+};
+
+/// Writes rows as they are computed: CSV lines go out whole, so a run that fails
+/// part way leaves only complete lines on stdout (and no file at all with --out).
+class TableWriter {
+ public:
+  TableWriter(Format format, std::FILE* stdout_file, AtomicFile* file) : format_(format), stdout_(stdout_file), file_(file) {}
+
+  void begin(const std::vector<Column>& columns, const std::string& json_header) {
+    if (format_ == Format::csv) {
+      std::string line;
+      for (std::size_t i = 0; i < columns.size(); ++i) line += (i ? "," : "") + std::string(info(columns[i]).name);
+      emit(line + "\n");
+    } else {
+      json_ = json_header + "  \"rows\": [";
+    }
+  }
+
+  void row(const std::vector<double>& values) {
+    line_.clear();
+    if (format_ == Format::json) line_ += rows_ ? ",\n    [" : "\n    [";
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      if (i) line_ += format_ == Format::csv ? "," : ", ";
+      line_ += format_roundtrip(values[i]);
+    }
+    line_ += format_ == Format::csv ? "\n" : "]";
+    ++rows_;
+    if (format_ == Format::csv) emit(line_);
+    else json_ += line_;
+  }
+
+  /// JSON is only written once complete, so a failed run prints none of it.
+  void end(const std::string& json_summary) {
+    if (format_ == Format::json) emit(json_ + "\n  ],\n" + json_summary);
+  }
+
+ private:
+  void emit(const std::string& text) {
+    if (file_ != nullptr) file_->stream() << text;
+    else std::fwrite(text.data(), 1, text.size(), stdout_);
+  }
+
+  Format format_;
+  std::FILE* stdout_;
+  AtomicFile* file_;
+  std::string json_, line_;
+  long rows_ = 0;
+};
+
+std::string json_string(std::string_view s) { return "\"" + std::string(s) + "\""; }
+
+std::string json_header(const Inputs& inputs, const SimulationOptions& s, double every,
+                        const std::vector<Column>& columns) {
+  std::string j = "{\n  \"parameters\": {";
+  bool first_param = true, first_state = true;
+  std::string state = "  \"initial_state\": {";
+  for (const InputKey& key : kInputKeys) {
+    const std::string entry = json_string(key.key) + ": " + format_roundtrip(inputs.value(key));
+    if (key.param != nullptr) {
+      j += (first_param ? "" : ", ") + entry;
+      first_param = false;
+    } else {
+      state += (first_state ? "" : ", ") + entry;
+      first_state = false;
+    }
+  }
+  j += "},\n" + state + "},\n";
+  j += "  \"options\": {\"case\": " + std::to_string(s.case_id) +
+       ", \"integrator\": " + json_string(info(s.integrator).name) + ", \"dt\": " + format_roundtrip(s.dt) +
+       ", \"rtol\": " + format_roundtrip(s.rtol) + ", \"atol\": " + format_roundtrip(s.atol) +
+       ", \"duration\": " + format_roundtrip(s.duration) + ", \"every\": " + format_roundtrip(every) +
+       ", \"stabilize\": " + json_string(name(s.stabilization)) +
+       ", \"baumgarte_alpha\": " + format_roundtrip(s.baumgarte_alpha) +
+       ", \"baumgarte_beta\": " + format_roundtrip(s.baumgarte_beta) + "},\n";
+  std::string names, units;
+  for (std::size_t i = 0; i < columns.size(); ++i) {
+    names += (i ? ", " : "") + json_string(info(columns[i]).name);
+    units += (i ? ", " : "") + json_string(info(columns[i]).name) + ": " + json_string(info(columns[i]).unit);
+  }
+  return j + "  \"columns\": [" + names + "],\n  \"units\": {" + units + "},\n";
+}
+
+std::string json_summary(const SimulationStats& st, double energy_scale, double wall) {
+  return "  \"summary\": {\"steps_accepted\": " + std::to_string(st.steps_accepted) +
+         ", \"steps_rejected\": " + std::to_string(st.steps_rejected) +
+         ", \"rhs_evaluations\": " + std::to_string(st.rhs_evaluations) +
+         ", \"force_evaluations\": " + std::to_string(st.force_evaluations) +
+         ", \"max_energy_error\": " + format_roundtrip(st.max_energy_error) +
+         ", \"energy_scale\": " + format_roundtrip(energy_scale) +
+         ", \"max_constraint_error\": " + format_roundtrip(st.max_constraint_error) +
+         ", \"wall_seconds\": " + format_roundtrip(wall) + "}\n}\n";
+}
+
+void print_summary(const SimulationOptions& s, long rows, const SimulationStats& st, double energy_scale,
+                   double wall) {
+  const IntegratorInfo& integrator = info(s.integrator);
+  const std::string method = integrator.adaptive ? std::string(integrator.name) + " (rtol " + format_roundtrip(s.rtol) +
+                                                       ", atol " + format_roundtrip(s.atol) + ")"
+                                                 : std::string(integrator.name) + " (dt " + format_roundtrip(s.dt) + " s)";
+  std::fprintf(stderr,
+               "linkage simulate: Case %d, %s, stabilize %s, 0 to %s s, %ld rows\n"
+               "  steps: %lld accepted, %lld rejected; right-hand side evaluations: %lld\n"
+               "  largest energy error: %s of the energy scale %s J; largest constraint error: %s m\n"
+               "  wall time: %s s (integration %s s)\n",
+               s.case_id, method.c_str(), std::string(name(s.stabilization)).c_str(),
+               format_roundtrip(s.duration).c_str(), rows, static_cast<long long>(st.steps_accepted),
+               static_cast<long long>(st.steps_rejected), static_cast<long long>(st.rhs_evaluations),
+               format_significant(st.max_energy_error, 3).c_str(), format_significant(energy_scale, 4).c_str(),
+               format_significant(st.max_constraint_error, 3).c_str(), format_significant(wall, 3).c_str(),
+               format_significant(st.wall_seconds, 3).c_str());
+}
+
+void run_simulate(const SimulateOptions& o) {
+  const auto start = std::chrono::steady_clock::now();
+  const SimulationOptions defaults;
+  const double duration = o.duration.empty() ? defaults.duration : parse_number(o.duration, "--duration", "s");
+  const SimulationOptions s = resolve_simulation_flags(o.simulation, duration);
+  const double every = parse_number(o.every, "--every", "s");
+  if (!(every > 0 && every <= s.duration))
+    throw Error::input("--every: " + format_roundtrip(every) + " s is out of range; valid: 0 < every <= duration (" +
+                       format_roundtrip(s.duration) + " s)");
+  const Samples samples(s.duration, every);
+  const std::vector<Column> columns = parse_columns(o.columns, "--columns");
+  const Format format = choose_format(o);
+  const Inputs inputs = resolve_inputs(o.inputs);
+  note_ignored_simulation_flags(o.simulation, s);
+
+  Simulation simulation(inputs.params(), inputs.state(), s);
+  std::optional<AtomicFile> file;
+  if (!o.out.empty()) file.emplace(o.out, "--out");
+  TableWriter writer(format, stdout, file ? &*file : nullptr);
+  writer.begin(columns, format == Format::json ? json_header(inputs, s, every, columns) : "");
+  Progress progress("simulate", samples.count, "rows");
+  std::vector<double> values;
+  for (long i = 0; i < samples.count; ++i) {
+    const double t = samples.at(i);
+    compute_row(simulation, t, simulation.state_at(t), columns, values);
+    writer.row(values);
+    progress.update(i + 1);
+    throw_if_interrupted();
+  }
+  progress.finish();
+  const double scale = energy_scale(inputs.params(), body_state(inputs.params(), inputs.state()));
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  writer.end(json_summary(simulation.stats(), scale, wall));
+  if (file) file->commit();
+  std::fflush(stdout);
+  print_summary(s, samples.count, simulation.stats(), scale, wall);
+}
+
+}  // namespace
+
+void register_simulate(CLI::App& app) {
+  auto o = std::make_shared<SimulateOptions>();
+  const SimulationOptions d;
+  auto fmt = [](double v) { return format_roundtrip(v); };
+  CLI::App* sub = app.add_subcommand("simulate", "Integrate the motion over time and write it as a CSV or JSON table");
+  add_simulation_flags(sub, o->simulation);
+  sub->add_option("--duration", o->duration, "Simulated time, s, at most 1e6 (default " + fmt(d.duration) + ")")
+      ->type_name("S");
+  sub->add_option("--every", o->every,
+                  "Output interval, s (default " + o->every +
+                      "); adaptive integrators sample by dense output and never shorten a step to hit a sample")
+      ->type_name("S");
+  sub->add_option("--out", o->out, "Output file, written atomically (default: stdout)")->type_name("FILE");
+  sub->add_option("--format", o->format, "Output format: csv or json (default: from the --out extension, else csv)")
+      ->type_name("csv|json");
+  std::string column_names;
+  for (const ColumnInfo& c : kColumns)
+    column_names += (column_names.empty() ? "" : ", ") + std::string(c.name) + " (" + std::string(c.unit) + ")";
+  sub->add_option("--columns", o->columns,
+                  "Comma-separated columns to compute and write, or all (default all): " + column_names)
+      ->type_name("LIST");
+  add_input_options(sub, o->inputs);
+  add_runner(sub, [o] { run_simulate(*o); });
+}
+
+}  // namespace linkage::cli

@@ -1,0 +1,225 @@
+// `linkage simulate` end to end: the reference motion through the CLI for every case,
+// the table's shape, formats and columns, the summary, notes, failures and atomicity.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "support/test_support.hpp"
+
+namespace linkage::test {
+namespace {
+
+/// A parsed CSV table: the header and the rows of numbers.
+struct Table {
+  std::vector<std::string> columns;
+  std::vector<std::vector<double>> rows;
+  [[nodiscard]] std::size_t index(const std::string& name) const {
+    for (std::size_t i = 0; i < columns.size(); ++i)
+      if (columns[i] == name) return i;
+    throw std::runtime_error("no column " + name);
+  }
+};
+
+std::vector<std::string> split(const std::string& line, char sep) {
+  std::vector<std::string> parts;
+  std::stringstream in(line);
+  for (std::string part; std::getline(in, part, sep);) parts.push_back(part);
+  return parts;
+}
+
+Table parse_csv(const std::string& text) {
+  Table t;
+  std::stringstream in(text);
+  std::string line;
+  std::getline(in, line);
+  t.columns = split(line, ',');
+  while (std::getline(in, line)) {
+    std::vector<double> row;
+    for (const std::string& cell : split(line, ',')) row.push_back(std::stod(cell));
+    EXPECT_EQ(row.size(), t.columns.size()) << line;
+    t.rows.push_back(row);
+  }
+  return t;
+}
+
+std::vector<std::string> reference_args(int case_id) {
+  std::vector<std::string> args{"simulate", "--integrator", "dop853", "--rtol", "1e-12", "--atol", "1e-12",
+                                "--duration", "10",    "--every",      "1",      "--case", std::to_string(case_id)};
+  if (case_id == 1) args.insert(args.end(), {"--stabilize", "projection"});
+  return args;
+}
+
+// The "done when": DOP853 at 1e-12 over 10 s reproduces the 25-digit reference
+// states to 1e-9 in every case (Case 1 with projection), derived columns included.
+TEST(SimulateCli, ReproducesTheReferenceStatesInEveryCase) {
+  const char* keys[] = {"x1",      "y1",      "theta1",      "theta2",      "x1_dot", "y1_dot",
+                        "theta1_dot", "theta2_dot", "x1_ddot", "y1_ddot", "theta1_ddot", "theta2_ddot",
+                        "F_x",     "F_y",     "energy",      "angular_momentum"};
+  for (int case_id : {1, 2, 3}) {
+    const RunResult r = run_linkage(reference_args(case_id));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const Table table = parse_csv(r.out);
+    ASSERT_EQ(table.rows.size(), 11u);
+    double worst = 0;
+    for (const nlohmann::json& ref : spec_reference()["states"]) {
+      const auto& row = table.rows[static_cast<std::size_t>(number(ref["t"]))];
+      EXPECT_EQ(row[table.index("t")], number(ref["t"]));
+      for (const char* key : keys) {
+        const double error = std::fabs(row[table.index(key)] - number(ref[key]));
+        EXPECT_LT(error, 1e-9) << "Case " << case_id << ", t = " << number(ref["t"]) << ", " << key;
+        worst = std::max(worst, error);
+      }
+    }
+    std::ostringstream text;
+    text << worst;
+    RecordProperty("case" + std::to_string(case_id) + "_max_error", text.str());
+  }
+}
+
+TEST(SimulateCli, RowsRunFromZeroToTheDurationExactly) {
+  const RunResult r = run_linkage({"simulate", "--duration", "1", "--every", "0.3", "--columns", "t,x1"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Table table = parse_csv(r.out);
+  ASSERT_EQ(table.columns, (std::vector<std::string>{"t", "x1"}));
+  ASSERT_EQ(table.rows.size(), 5u);
+  EXPECT_EQ(table.rows.front()[0], 0.0);
+  EXPECT_EQ(table.rows[1][0], 0.3);
+  EXPECT_EQ(table.rows.back()[0], 1.0);
+  EXPECT_EQ(table.rows.front()[1], 1.0) << "the initial state as given";
+}
+
+TEST(SimulateCli, DefaultColumnsAreAllOfThemInOrder) {
+  const RunResult r = run_linkage({"simulate", "--duration", "0.1", "--every", "0.05"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Table table = parse_csv(r.out);
+  EXPECT_EQ(table.columns,
+            (std::vector<std::string>{"t", "x1", "y1", "theta1", "theta2", "x1_dot", "y1_dot", "theta1_dot",
+                                      "theta2_dot", "x2", "y2", "x2_dot", "y2_dot", "x1_ddot", "y1_ddot",
+                                      "theta1_ddot", "theta2_ddot", "F_x", "F_y", "energy", "momentum_x",
+                                      "momentum_y", "angular_momentum", "constraint_position_error",
+                                      "constraint_velocity_error"}));
+  EXPECT_EQ(table.rows.size(), 3u);
+  // At t = 0 the pin force matches the worked solution of the spec (example.json).
+  const nlohmann::json& solution = spec_example()["solution"];
+  EXPECT_NEAR(table.rows[0][table.index("F_x")], number(solution["F_x"]), 1e-15);
+  EXPECT_NEAR(table.rows[0][table.index("F_y")], number(solution["F_y"]), 1e-15);
+  EXPECT_NEAR(table.rows[0][table.index("theta2_ddot")], number(solution["theta2_ddot"]), 1e-14);
+}
+
+TEST(SimulateCli, JsonFromTheExtensionWithOptionsAndSummary) {
+  TempDir dir;
+  const RunResult r = run_linkage({"simulate", "--duration", "2", "--every", "0.5", "--columns", "t,x1,energy",
+                                   "--out", (dir / "run.json").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(r.out.empty());
+  const nlohmann::json j = nlohmann::json::parse(read_text(dir / "run.json"));
+  EXPECT_EQ(j["columns"], (nlohmann::json{"t", "x1", "energy"}));
+  EXPECT_EQ(j["units"]["energy"], "J");
+  EXPECT_EQ(j["rows"].size(), 5u);
+  EXPECT_EQ(j["rows"][4][0], 2.0);
+  EXPECT_EQ(j["options"]["integrator"], "dop853");
+  EXPECT_EQ(j["options"]["case"], 3);
+  EXPECT_EQ(j["parameters"]["m"], 0.1);
+  EXPECT_EQ(j["initial_state"]["theta2_dot"], 0.45);
+  const nlohmann::json& s = j["summary"];
+  EXPECT_GT(s["steps_accepted"].get<int>(), 0);
+  EXPECT_GT(s["rhs_evaluations"].get<int>(), s["steps_accepted"].get<int>());
+  EXPECT_EQ(s["force_evaluations"], 0) << "no dynamics column, no pin-force solve";
+  EXPECT_LT(s["max_energy_error"].get<double>(), 1e-9);
+  EXPECT_GE(s["wall_seconds"].get<double>(), 0.0);
+  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"run.json"})) << "no temporary left";
+}
+
+TEST(SimulateCli, CsvFileAndFormatFlag) {
+  TempDir dir;
+  const RunResult csv = run_linkage({"simulate", "--duration", "1", "--out", (dir / "run.txt").string()});
+  ASSERT_EQ(csv.exit_code, 0) << csv.err;
+  EXPECT_EQ(read_text(dir / "run.txt").substr(0, 5), "t,x1,");
+  const RunResult json = run_linkage({"simulate", "--duration", "1", "--format", "json", "--columns", "t"});
+  ASSERT_EQ(json.exit_code, 0) << json.err;
+  EXPECT_EQ(nlohmann::json::parse(json.out)["rows"].size(), 101u);
+}
+
+TEST(SimulateCli, SummaryOnStderr) {
+  const RunResult r = run_linkage({"simulate", "--case", "1", "--integrator", "rk4", "--dt", "0.01", "--duration", "5"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("Case 1, rk4 (dt 0.01 s)"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("500 accepted, 0 rejected"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("right-hand side evaluations: 2000"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("largest energy error"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("largest constraint error"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("wall time"), std::string::npos) << r.err;
+}
+
+TEST(SimulateCli, OutputIsDeterministic) {
+  const std::vector<std::string> args{"simulate", "--case", "2", "--integrator", "gauss-legendre", "--dt", "0.01",
+                                      "--duration", "2"};
+  const RunResult a = run_linkage(args), b = run_linkage(args);
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  EXPECT_EQ(a.out, b.out);
+}
+
+TEST(SimulateCli, StabilizingCases2And3IsANoteNotAnError) {
+  const RunResult r = run_linkage({"simulate", "--case", "3", "--stabilize", "baumgarte", "--duration", "0.1"});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("note: Case 3"), std::string::npos) << r.err;
+  const RunResult ignored = run_linkage({"simulate", "--integrator", "rk4", "--rtol", "1e-6", "--duration", "0.1"});
+  EXPECT_EQ(ignored.exit_code, 0) << ignored.err;
+  EXPECT_NE(ignored.err.find("note: --rtol/--atol apply only"), std::string::npos) << ignored.err;
+}
+
+TEST(SimulateCli, Case1DriftsUnlessStabilized) {
+  auto worst_constraint_error = [](const std::string& stabilize) {
+    const RunResult r = run_linkage({"simulate", "--case", "1", "--integrator", "rk4", "--dt", "0.01", "--duration",
+                                     "20", "--theta1-dot", "20", "--theta2-dot", "-35", "--stabilize", stabilize,
+                                     "--format", "json", "--columns", "t"});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return nlohmann::json::parse(r.out)["summary"]["max_constraint_error"].get<double>();
+  };
+  const double none = worst_constraint_error("none");
+  EXPECT_GT(none, 1e-3);
+  EXPECT_LT(worst_constraint_error("baumgarte"), 0.01 * none);
+  EXPECT_LT(worst_constraint_error("projection"), 1e-11);
+}
+
+// Stiff Baumgarte gains blow RK4 up: one line naming the time, the step and what to
+// try, exit 3, no output file, and on stdout only whole CSV lines.
+TEST(SimulateCli, DivergenceIsExit3WithOneLineAndNoFile) {
+  const std::vector<std::string> stiff{"simulate",          "--case",         "1",   "--integrator", "rk4",
+                                       "--dt",              "0.01",           "--stabilize", "baumgarte",
+                                       "--baumgarte-alpha", "1e6",            "--baumgarte-beta", "1e6",
+                                       "--duration",        "5",              "--every", "0.01"};
+  TempDir dir;
+  std::vector<std::string> to_file = stiff;
+  to_file.insert(to_file.end(), {"--out", (dir / "run.csv").string()});
+  const RunResult r = run_linkage(to_file);
+  EXPECT_EQ(r.exit_code, 3);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("t = "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("with step 0.01 s"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("try a smaller --dt"), std::string::npos) << r.err;
+  EXPECT_TRUE(dir.entries().empty()) << "no file, not even a temporary";
+
+  const RunResult out = run_linkage(stiff);
+  EXPECT_EQ(out.exit_code, 3);
+  ASSERT_FALSE(out.out.empty());
+  EXPECT_EQ(out.out.back(), '\n') << "whole lines only";
+  const Table table = parse_csv(out.out);
+  EXPECT_EQ(table.columns.size(), 25u);
+}
+
+TEST(SimulateCli, HelpGivesUnitsAndDefaults) {
+  const RunResult r = run_linkage({"simulate", "--help"});
+  ASSERT_EQ(r.exit_code, 0);
+  for (const char* text : {"--dt", "(default 0.001)", "--duration", "(default 10)", "--every", "(default 0.01)",
+                           "--rtol", "(default 1e-10)", "--baumgarte-alpha", "1/s", "gauss-legendre", "--columns",
+                           "constraint_position_error (m)", "--out", "--format"})
+    EXPECT_NE(r.out.find(text), std::string::npos) << text;
+}
+
+}  // namespace
+}  // namespace linkage::test
