@@ -49,7 +49,8 @@ std::vector<LegendRow> legend_rows(const Theme& theme, const SceneOptions& optio
   std::vector<LegendRow> rows;
   if (shown.has(Element::pin_force)) rows.push_back({Glyph::arrow, theme.pin_force, "pin force", scale(ArrowKind::pin_force, "N")});
   if (shown.has(Element::gravity)) rows.push_back({Glyph::arrow, theme.gravity, "weight", scale(ArrowKind::gravity, "N")});
-  if (shown.has(Element::velocity)) rows.push_back({Glyph::arrow, theme.velocity, "velocity", scale(ArrowKind::velocity, "m/s")});
+  if (shown.has(Element::velocity)) rows.push_back({Glyph::arrow, theme.velocity, follow ? "velocity relative to G" : "velocity",
+                                                     scale(ArrowKind::velocity, "m/s")});
   if (shown.has(Element::trail))
     rows.push_back({Glyph::line, theme.trail, "path of P", "last " + seconds_text(options.trail_seconds)});
   if (shown.has(Element::com)) rows.push_back({Glyph::com, theme.com, "centres of mass", ""});
