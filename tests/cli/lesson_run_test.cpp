@@ -1,0 +1,273 @@
+// `linkage lesson` end to end: exercises checked from stdin, pauses, the cache (a second
+// run makes nothing; a changed parameter re-makes only the steps after it), --only,
+// the formats, bad lessons, and a document that links only files that exist.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <regex>
+#include <set>
+
+#include "lesson/lesson.hpp"
+#include "support/test_support.hpp"
+
+namespace linkage::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+int count(const std::string& text, const std::string& what) {
+  int n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+const char* kExercise = R"(title = "Exercise"
+[[step]]
+kind = "exercise"
+question = "What is the moment of inertia about the pin?"
+answer = "I_zz_P"
+relative_tolerance = 0.01
+hint = "Parallel axes."
+explanation = "I_P = I + m D^2."
+)";
+
+TEST(LessonExercise, WithoutStepPrintsTheAnswer) {
+  TempDir dir;
+  write_text(dir / "ex.toml", kExercise);
+  const RunResult r = run_linkage({"lesson", (dir / "ex.toml").string(), "--out", (dir / "out").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("Answer: 0.00204333 kg m^2. I_P = I + m D^2."), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("Your answer"), std::string::npos);
+}
+
+TEST(LessonExercise, WithStepChecksScriptedAnswers) {
+  TempDir dir;
+  write_text(dir / "ex.toml", kExercise);
+  const std::vector<std::string> args{"lesson", (dir / "ex.toml").string(), "--out", (dir / "out").string(), "--step"};
+  {  // wrong, not a number (not counted), then right within 1 %
+    const RunResult r = run_linkage(args, "0.000204\nabc\n0.002045\n");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(count(r.out, "Your answer (kg m^2): "), 3) << r.out;
+    EXPECT_NE(r.out.find("Not quite. Hint: Parallel axes. (2 tries left)"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("'abc' is not a number"), std::string::npos);
+    EXPECT_NE(r.out.find("Right. The answer is 0.00204333 kg m^2."), std::string::npos) << r.out;
+  }
+  {  // three wrong answers reveal it
+    const RunResult r = run_linkage(args, "1\n2\n3\n");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("(1 try left)"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("Not quite. The answer is 0.00204333 kg m^2."), std::string::npos) << r.out;
+  }
+  {  // no input at all: the answer, and the lesson goes on
+    const RunResult r = run_linkage(args, "");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("No answer given. The answer is 0.00204333 kg m^2."), std::string::npos) << r.out;
+  }
+  // The document always holds the answer, folded.
+  const std::string doc = read_text(dir / "out" / "lesson.md");
+  EXPECT_NE(doc.find("<details><summary>Answer</summary>\n\n0.00204333 kg m^2"), std::string::npos) << doc;
+}
+
+TEST(LessonPause, WaitsOnlyWithStep) {
+  TempDir dir;
+  write_text(dir / "p.toml", R"(title = "Pause"
+[[step]]
+kind = "say"
+text = "before"
+[[step]]
+kind = "pause"
+prompt = "Think about it"
+[[step]]
+kind = "say"
+text = "after"
+)");
+  const std::string file = (dir / "p.toml").string(), out = (dir / "out").string();
+  const RunResult stepped = run_linkage({"lesson", file, "--out", out, "--step"}, "\n");
+  ASSERT_EQ(stepped.exit_code, 0) << stepped.err;
+  EXPECT_LT(stepped.out.find("before"), stepped.out.find("[Think about it]"));
+  EXPECT_LT(stepped.out.find("[Think about it]"), stepped.out.find("after"));
+  const RunResult plain = run_linkage({"lesson", file, "--out", out});
+  EXPECT_EQ(plain.out.find("Think about it"), std::string::npos);
+}
+
+// Two stills and a plot; the second still comes after a set step.
+std::string cache_lesson(double m_after) {
+  return R"(title = "Cache"
+[[step]]
+kind = "render"
+out = "first.png"
+at = 0.2
+[[step]]
+kind = "plot"
+out = "energy"
+y = "energy"
+duration = 1
+[[step]]
+kind = "set"
+m = )" + std::to_string(m_after) +
+         R"(
+[[step]]
+kind = "render"
+out = "second.png"
+at = 0.2
+)";
+}
+
+TEST(LessonCache, SecondRunMakesNothingAndAChangeRemakesOnlyWhatItAffects) {
+  TempDir dir;
+  const std::string file = (dir / "c.toml").string(), out = (dir / "out").string();
+  write_text(file, cache_lesson(0.2));
+  const RunResult first = run_linkage({"lesson", file, "--out", out});
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  EXPECT_EQ(count(first.err, "): made "), 3) << first.err;
+  const auto first_time = fs::last_write_time(dir / "out" / "first.png");
+
+  const RunResult second = run_linkage({"lesson", file, "--out", out});
+  ASSERT_EQ(second.exit_code, 0) << second.err;
+  EXPECT_EQ(count(second.err, "): made "), 0) << second.err;
+  EXPECT_EQ(count(second.err, "): reused "), 3) << second.err;
+  EXPECT_NE(second.err.find("step 1 (render): reused first.png (unchanged since the last run"), std::string::npos);
+  EXPECT_EQ(fs::last_write_time(dir / "out" / "first.png"), first_time);
+  EXPECT_EQ(first.out, second.out);  // the same lesson either way
+
+  write_text(file, cache_lesson(0.3));  // the set step changes m for step 4 only
+  const RunResult third = run_linkage({"lesson", file, "--out", out});
+  ASSERT_EQ(third.exit_code, 0) << third.err;
+  EXPECT_NE(third.err.find("step 1 (render): reused"), std::string::npos) << third.err;
+  EXPECT_NE(third.err.find("step 2 (plot): reused"), std::string::npos) << third.err;
+  EXPECT_NE(third.err.find("step 4 (render): made second.png"), std::string::npos) << third.err;
+
+  const RunResult draft_to_final = run_linkage({"lesson", file, "--out", out, "--quality", "final", "--only", "1"});
+  ASSERT_EQ(draft_to_final.exit_code, 0) << draft_to_final.err;
+  EXPECT_NE(draft_to_final.err.find("step 1 (render): made first.png"), std::string::npos) << draft_to_final.err;
+
+  const RunResult forced = run_linkage({"lesson", file, "--out", out, "--force"});
+  ASSERT_EQ(forced.exit_code, 0) << forced.err;
+  EXPECT_EQ(count(forced.err, "): made "), 3) << forced.err;
+}
+
+TEST(LessonOnly, KeepsTheStateEarlierSetStepsMade) {
+  TempDir dir;
+  const std::string file = (dir / "o.toml").string();
+  write_text(file, R"(title = "Only"
+[[step]]
+kind = "say"
+text = "m is {{m}} kg at first"
+[[step]]
+kind = "set"
+m = 0.25
+[[step]]
+kind = "say"
+text = "now I is {{I_zz_C}} and m is {{m}} kg"
+)");
+  const RunResult r = run_linkage({"lesson", file, "--out", (dir / "out").string(), "--only", "3"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out.find("at first"), std::string::npos);
+  EXPECT_NE(r.out.find("m is 0.25 kg"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("I is 0.00208333"), std::string::npos) << r.out;  // 0.25 (0.01 + 0.09) / 12
+  EXPECT_NE(r.err.find("ran 1 of 3 steps"), std::string::npos) << r.err;
+
+  const RunResult bad = run_linkage({"lesson", file, "--only", "4"});
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_EQ(bad.err, "linkage: error: --only: step 4 does not exist; the lesson has steps 1 to 3\n");
+}
+
+TEST(LessonFormats, MarkdownAndLatex) {
+  TempDir dir;
+  const std::string file = (dir / "f.toml").string(), out = (dir / "out").string();
+  write_text(file, R"(title = "Formats"
+[[step]]
+kind = "say"
+heading = "Inertia"
+text = "The **centroidal** inertia is θ₁-independent: {{I_zz_C}} kg m²."
+[[step]]
+kind = "solve"
+case = 3
+)");
+  const RunResult md = run_linkage({"lesson", file, "--out", out, "--format", "markdown"});
+  ASSERT_EQ(md.exit_code, 0) << md.err;
+  EXPECT_EQ(md.out.rfind("# Formats\n", 0), 0u);
+  EXPECT_NE(md.out.find("## Inertia"), std::string::npos);
+  EXPECT_NE(md.out.find("$$"), std::string::npos);
+  EXPECT_EQ(md.out, read_text(dir / "out" / "lesson.md"));  // the terminal shows the document
+  const RunResult tex = run_linkage({"lesson", file, "--out", out, "--format", "latex"});
+  ASSERT_EQ(tex.exit_code, 0) << tex.err;
+  EXPECT_NE(tex.out.find("\\section*{Formats}"), std::string::npos);
+  EXPECT_NE(tex.out.find("The \\textbf{centroidal} inertia is $\\theta_{1}$-independent: 0.000833333 kg $m^{2}$."),
+            std::string::npos)
+      << tex.out;
+  EXPECT_NE(tex.out.find("\\begin{bmatrix}"), std::string::npos);
+  const RunResult bad = run_linkage({"lesson", file, "--format", "html"});
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_EQ(bad.err, "linkage: error: --format: 'html' is not a format; valid: text, markdown, latex\n");
+}
+
+TEST(LessonErrors, ABrokenLessonMakesNothing) {
+  TempDir dir;
+  const fs::path broken = fs::path(LINKAGE_SOURCE_DIR) / "tests/data/lessons/unknown-key.toml";
+  const fs::path out = dir / "out";
+  const RunResult r = run_linkage({"lesson", broken.string(), "--out", out.string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(r.err, "linkage: error: " + broken.string() +
+                       ":11:1: step 2 (render): unknown key 'fsp' (did you mean 'fps'?); valid keys: kind, heading, out, "
+                       "caption, fps, size, quality, at, speed, show, hide, camera, view, theme, title, case, integrator, dt, "
+                       "rtol, atol, duration, stabilize, baumgarte_alpha, baumgarte_beta, L, w, b, m, g, x1, y1, theta1, "
+                       "theta2, x1_dot, y1_dot, theta1_dot, theta2_dot\n");
+  EXPECT_FALSE(fs::exists(out));
+
+  const RunResult missing = run_linkage({"lesson", (dir / "nope.toml").string()});
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_EQ(missing.err, "linkage: error: lesson: file '" + (dir / "nope.toml").string() + "' does not exist\n");
+}
+
+/// Every file lesson.md links or embeds, relative to its folder.
+std::set<std::string> document_links(const std::string& doc) {
+  std::set<std::string> links;
+  const std::regex pattern(R"(\]\(([^)\s]+)\)|src="([^"]+)\")");
+  for (auto it = std::sregex_iterator(doc.begin(), doc.end(), pattern); it != std::sregex_iterator(); ++it)
+    links.insert((*it)[1].matched ? (*it)[1].str() : (*it)[2].str());
+  return links;
+}
+
+TEST(LessonDocument, LinksOnlyFilesThatExist) {
+  TempDir dir;
+  const std::string file = (dir / "d.toml").string(), out = (dir / "out").string();
+  write_text(file, R"(title = "Document"
+[[step]]
+kind = "render"
+out = "still.png"
+at = 0.1
+caption = "The example at t = 0.1 s."
+[[step]]
+kind = "simulate"
+duration = 1
+trajectory = "motion.csv"
+[[step]]
+kind = "compare"
+out = "cases"
+duration = 1
+runs = [{ case = 1, stabilize = "projection" }, { case = 2 }, { case = 3 }]
+plot = "energy_error"
+)");
+  const RunResult r = run_linkage({"lesson", file, "--out", out});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string doc = read_text(dir / "out" / "lesson.md");
+  const std::set<std::string> links = document_links(doc);
+  EXPECT_EQ(links, (std::set<std::string>{"still.png", "motion.csv", "cases.png", "cases.csv"})) << doc;
+  for (const std::string& link : links) EXPECT_TRUE(fs::is_regular_file(dir / "out" / link)) << link;
+  for (const std::string& artifact : lesson::parse_lesson(file).artifacts())
+    EXPECT_GT(fs::file_size(dir / "out" / artifact), 0u) << artifact;
+  EXPECT_NE(doc.find("Made with `linkage render --at 0.1 --size 480x270 --fps 15 --out still.png`"), std::string::npos)
+      << doc;
+
+  // A file removed behind the lesson's back is made again, never linked while missing.
+  fs::remove(dir / "out" / "cases.png");
+  const RunResult again = run_linkage({"lesson", file, "--out", out});
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_NE(again.err.find("step 3 (compare): made cases.csv"), std::string::npos) << again.err;
+  EXPECT_TRUE(fs::is_regular_file(dir / "out" / "cases.png"));
+}
+
+}  // namespace
+}  // namespace linkage::test

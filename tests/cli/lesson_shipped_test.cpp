@@ -1,0 +1,101 @@
+// The shipped course: every lesson in lessons/ runs at draft quality, makes every file
+// it declares (each a real PNG, SVG, MP4 or CSV), has at least one clip or still, and
+// writes a document that links only files that exist; a second run makes nothing.
+// Slow under sanitizers: tests/lesson/labels.cmake gives it the ctest label no-sanitize.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <regex>
+
+#include "lesson/lesson.hpp"
+#include "support/test_support.hpp"
+
+namespace linkage::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<fs::path> shipped_lessons() {
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(fs::path(LINKAGE_SOURCE_DIR) / "lessons"))
+    if (entry.path().extension() == ".toml") files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+int count(const std::string& text, const std::string& what) {
+  int n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+/// The file looks like what its extension says.
+void expect_real_file(const fs::path& file) {
+  ASSERT_TRUE(fs::is_regular_file(file)) << file;
+  const std::string bytes = read_text(file);
+  ASSERT_GT(bytes.size(), 100u) << file;
+  const std::string ext = file.extension().string();
+  if (ext == ".png") {
+    EXPECT_EQ(bytes.substr(0, 8), "\x89PNG\r\n\x1a\n") << file;
+  } else if (ext == ".svg") {
+    EXPECT_NE(bytes.find("<svg"), std::string::npos) << file;
+  } else if (ext == ".pdf") {
+    EXPECT_EQ(bytes.substr(0, 5), "%PDF-") << file;
+  } else if (ext == ".mp4") {
+    EXPECT_EQ(bytes.substr(4, 4), "ftyp") << file;
+  } else {
+    EXPECT_EQ(ext, ".csv");
+    EXPECT_NE(bytes.find('\n'), std::string::npos) << file;
+  }
+}
+
+TEST(ShippedLessons, TheCourseIsComplete) {
+  std::vector<std::string> names;
+  for (const fs::path& file : shipped_lessons()) names.push_back(file.stem().string());
+  EXPECT_EQ(names, (std::vector<std::string>{"01-moments-of-inertia", "02-holonomic-constraints",
+                                             "03-case1-eight-equations", "04-case2-six-equations",
+                                             "05-case3-four-equations", "06-numerical-example",
+                                             "07-constraint-drift", "08-accuracy-and-cost",
+                                             "09-beyond-the-equations"}));
+}
+
+TEST(ShippedLessons, RunAtDraftQualityAndCache) {
+  TempDir dir;
+  const std::regex link(R"(\]\(([^)\s]+)\)|src="([^"]+)\")");
+  for (const fs::path& file : shipped_lessons()) {
+    SCOPED_TRACE(file.filename().string());
+    const lesson::Lesson parsed = lesson::parse_lesson(file);
+    const fs::path out = dir / parsed.name;
+    const RunResult first = run_linkage({"lesson", file.string(), "--out", out.string(), "--quality", "draft"});
+    ASSERT_EQ(first.exit_code, 0) << first.err;
+    EXPECT_EQ(count(first.err, "): reused "), 0) << first.err;
+
+    bool picture = false;
+    for (const lesson::Step& step : parsed.steps)
+      if (const auto* render = std::get_if<lesson::RenderStep>(&step.body)) {
+        picture = true;
+        EXPECT_TRUE(render->kind == OutputKind::mp4 || is_still(render->kind));
+      }
+    EXPECT_TRUE(picture) << "every lesson renders at least one clip or still";
+    for (const std::string& artifact : parsed.artifacts()) expect_real_file(out / artifact);
+
+    const std::string doc = read_text(out / "lesson.md");
+    EXPECT_EQ(doc.rfind("# " + parsed.title + "\n", 0), 0u);
+    int links = 0;
+    for (auto it = std::sregex_iterator(doc.begin(), doc.end(), link); it != std::sregex_iterator(); ++it, ++links) {
+      const std::string target = (*it)[1].matched ? (*it)[1].str() : (*it)[2].str();
+      EXPECT_TRUE(fs::is_regular_file(out / target)) << target;
+    }
+    EXPECT_GT(links, 0);
+
+    // Everything is cached now: the second run makes nothing.
+    const RunResult second = run_linkage({"lesson", file.string(), "--out", out.string(), "--quality", "draft"});
+    ASSERT_EQ(second.exit_code, 0) << second.err;
+    EXPECT_EQ(count(second.err, "): made "), 0) << second.err;
+    EXPECT_EQ(count(second.err, "): reused "), count(first.err, "): made ")) << second.err;
+  }
+}
+
+}  // namespace
+}  // namespace linkage::test

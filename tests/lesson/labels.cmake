@@ -1,0 +1,6 @@
+# Included by ctest after the discovered tests (tests/CMakeLists.txt adds it to
+# TEST_INCLUDE_FILES): the shipped-lessons run renders nine lessons and is slow under
+# sanitizers, so CI's sanitizer pass can exclude it with `ctest -LE no-sanitize`.
+if(COMMAND set_tests_properties)
+  set_tests_properties(ShippedLessons.RunAtDraftQualityAndCache PROPERTIES LABELS no-sanitize)
+endif()
