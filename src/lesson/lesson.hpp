@@ -25,10 +25,12 @@ inline constexpr std::array<std::string_view, 9> kStepKindNames{"say",      "set
                                                                  "simulate", "render", "plot",  "compare"};
 [[nodiscard]] constexpr std::string_view name(StepKind k) { return kStepKindNames[static_cast<std::size_t>(k)]; }
 
-/// The parts of a worked solution a solve step can show, in the order they print.
-enum class SolvePart { inputs, inertia, constraints, symbolic, numeric, solution, residual, comparison };
-inline constexpr std::array<std::string_view, 8> kSolvePartNames{"inputs",  "inertia",  "constraints", "symbolic",
-                                                                 "numeric", "solution", "residual",    "comparison"};
+/// The parts of a worked solution a solve step can show, in the order they print (the
+/// order of report's ReportPart).
+enum class SolvePart { inputs, inertia, constraints, energy, symbolic, numeric, solution, residual, comparison };
+inline constexpr std::array<std::string_view, 9> kSolvePartNames{"inputs",   "inertia",  "constraints",
+                                                                 "energy",   "symbolic", "numeric",
+                                                                 "solution", "residual", "comparison"};
 
 /// One simulation: the inputs it starts from and how it integrates.
 struct Run {

@@ -3,6 +3,7 @@
 // step_runs.cpp and step_render.cpp.
 #include "lesson/runner.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <cmath>
@@ -169,6 +170,8 @@ void run_solve(RunContext& c, const Step& step, const SolveStep& s) {
   ReportOptions options;
   options.width = c.options.width;
   options.text_style = c.options.style;
+  static_assert(kSolvePartNames.size() == kReportPartCount, "a solve part for every report part, in its order");
+  options.parts = s.parts;
   c.both([&](Writer& w) { w.worked_solution(worked, options); });
 }
 
@@ -243,8 +246,12 @@ RunSummary run_lesson(const Lesson& lesson, const RunnerOptions& options, std::i
     ++c.summary.steps_run;
     c.flush();
   }
-  c.summary.document = options.out_dir / "lesson.md";
-  write_file_atomically(c.summary.document, c.document->take(), "--out");
+  // A run of part of the lesson (--only) leaves the whole lesson's document as it was.
+  const bool whole = std::find(options.selected.begin(), options.selected.end(), false) == options.selected.end();
+  if (whole) {
+    c.summary.document = options.out_dir / "lesson.md";
+    write_file_atomically(c.summary.document, c.document->take(), "--out");
+  }
   return c.summary;
 }
 

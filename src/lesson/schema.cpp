@@ -65,7 +65,7 @@ constexpr std::array<KeySpec, 9> kExerciseKeys{{
 constexpr std::array<KeySpec, 2> kSolveKeys{{
     {"case", "integer, \"all\" or list of integers", "\"all\"", "Which cases to solve: 1, 2, 3, [1, 3] or \"all\"."},
     {"show", "list of strings", "all parts",
-     "Which parts to print: inputs, inertia, constraints, symbolic, numeric, solution, residual, comparison."},
+     "Which parts to print: inputs, inertia, constraints, energy, symbolic, numeric, solution, residual, comparison."},
 }};
 
 constexpr std::array<KeySpec, 3> kSimulateKeys{{

@@ -36,7 +36,8 @@ std::vector<DerivationGroup> derivation(const WorkedSolution& worked) {
        "moves it to the pin.",
        {{I, m * (square(w) + square(L)) / twelve, "kg m^2"},
         {D, L / two - b, "m"},
-        {IP, I + m * square(D), "kg m^2"}}},
+        {IP, I + m * square(D), "kg m^2"}},
+       ReportPart::inertia},
       {"The pin constraint: positions and velocity",
        "Block 2 hangs from the pin, so its centre and velocity follow from block 1's coordinates "
        "and the two angles.",
@@ -45,7 +46,8 @@ std::vector<DerivationGroup> derivation(const WorkedSolution& worked) {
         {x2, xP + D * cos(th2), "m"},
         {y2, yP + D * sin(th2), "m"},
         {x2d, x1d - D * (th1d * sin(th1) + th2d * sin(th2)), "m/s"},
-        {y2d, y1d + D * (th1d * cos(th1) + th2d * cos(th2)), "m/s"}}},
+        {y2d, y1d + D * (th1d * cos(th1) + th2d * cos(th2)), "m/s"}},
+       ReportPart::constraints},
       {"Energy and momentum",
        "Only uniform gravity acts: the energy, the horizontal momentum and the angular momentum "
        "about the centre of mass stay constant; the vertical momentum falls at the rate 2 m g.",
@@ -56,7 +58,8 @@ std::vector<DerivationGroup> derivation(const WorkedSolution& worked) {
         {px, m * (x1d + x2d), "kg m/s"},
         {py, m * (y1d + y2d), "kg m/s"},
         {H, m * (x2 - x1) * (y2d - y1d) / two - m * (y2 - y1) * (x2d - x1d) / two + I * (th1d + th2d),
-         "kg m^2/s"}}},
+         "kg m^2/s"}},
+       ReportPart::energy},
   };
 }
 

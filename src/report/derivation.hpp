@@ -23,6 +23,7 @@ struct DerivationGroup {
   std::string_view title;
   std::string_view note;  // one plain sentence for the reader (no symbols, any format)
   std::vector<DerivationStep> steps;
+  ReportPart part = ReportPart::inertia;  // which ReportOptions::parts entry shows it
 };
 
 /// The three groups of steps at the worked solution's inputs.

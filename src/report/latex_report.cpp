@@ -33,7 +33,7 @@ std::string agreement_cell(const Agreement& a, std::size_t i, int digits, std::s
 
 class LatexWriter {
  public:
-  LatexWriter(const WorkedSolution& worked, const ReportOptions& options) : w_(worked), digits_(options.digits) {}
+  LatexWriter(const WorkedSolution& worked, const ReportOptions& options) : w_(worked), digits_(options.digits), o_(options) {}
 
   void title() {
     out_ += "% Worked solution of the two-block linkage, from `linkage solve --format latex`.\n";
@@ -71,19 +71,27 @@ class LatexWriter {
   }
 
   void one_case(const CaseSolution& c) {
-    heading(c.title, "The equations, one per row of $A q = B$:");
-    out_ += "\\begin{align*}\n";
-    const std::vector<std::string> rows = equation_rows(c);
-    for (std::size_t r = 0; r < rows.size(); ++r)
-      out_ += "  " + rows[r] + " \\tag{" + std::string(c.equations[r]) + "}" + (r + 1 < rows.size() ? " \\\\\n" : "\n");
-    out_ += "\\end{align*}\n";
-    out_ += "In matrix form, rows in the order of the equations:\n";
-    matrix_display(matrix_equation(c, {false, true, true}, digits_, "  "));
-    out_ += "Numerically:\n";
-    matrix_display(matrix_equation(c, {true, true, true}, digits_, "  "));
-    out_ += "Solution:\n";
-    out_ += "\\begin{equation*}\n" + solution_equation(c, digits_, "  ") + "\\end{equation*}\n";
-    out_ += "\\begin{equation*}\n  " + residual_line(c) + "\n\\end{equation*}\n";
+    const bool symbolic = o_.shows(ReportPart::symbolic);
+    heading(c.title, symbolic ? "The equations, one per row of $A q = B$:" : "");
+    if (symbolic) {
+      out_ += "\\begin{align*}\n";
+      const std::vector<std::string> rows = equation_rows(c);
+      for (std::size_t r = 0; r < rows.size(); ++r)
+        out_ += "  " + rows[r] + " \\tag{" + std::string(c.equations[r]) + "}" + (r + 1 < rows.size() ? " \\\\\n" : "\n");
+      out_ += "\\end{align*}\n";
+      out_ += "In matrix form, rows in the order of the equations:\n";
+      matrix_display(matrix_equation(c, {false, true, true}, digits_, "  "));
+    }
+    if (o_.shows(ReportPart::numeric)) {
+      out_ += "Numerically:\n";
+      matrix_display(matrix_equation(c, {true, true, true}, digits_, "  "));
+    }
+    if (o_.shows(ReportPart::solution)) {
+      out_ += "Solution:\n";
+      out_ += "\\begin{equation*}\n" + solution_equation(c, digits_, "  ") + "\\end{equation*}\n";
+    }
+    if (o_.shows(ReportPart::residual))
+      out_ += "\\begin{equation*}\n  " + residual_line(c) + "\n\\end{equation*}\n";
   }
 
   void agreement() {
@@ -103,12 +111,13 @@ class LatexWriter {
  private:
   const WorkedSolution& w_;
   int digits_;
+  const ReportOptions& o_;
   std::string out_;
 };
 
 class MarkdownWriter {
  public:
-  MarkdownWriter(const WorkedSolution& worked, const ReportOptions& options) : w_(worked), digits_(options.digits) {}
+  MarkdownWriter(const WorkedSolution& worked, const ReportOptions& options) : w_(worked), digits_(options.digits), o_(options) {}
 
   void title() { out_ += "# Worked solution: two blocks joined by a frictionless pin\n"; }
 
@@ -138,24 +147,30 @@ class MarkdownWriter {
 
   void one_case(const CaseSolution& c) {
     heading(c.title);
-    paragraph("The equations, one per row of $A q = B$:");
-    std::string rows;
-    const std::vector<std::string> eqs = equation_rows(c);
-    for (std::size_t r = 0; r < eqs.size(); ++r)
-      rows += eqs[r] + " && \\text{(" + std::string(c.equations[r]) + ")}" + (r + 1 < eqs.size() ? " \\\\\n" : "\n");
-    math("\\begin{aligned}\n" + rows + "\\end{aligned}\n");
-    paragraph("In matrix form, rows in the order of the equations:");
-    math(matrix_equation(c, {false, false, false}, digits_, ""));
-    paragraph("Numerically:");
-    math(matrix_equation(c, {true, false, false}, digits_, ""));
-    paragraph("Solution:");
-    out_ += "\n| unknown | value | unit | meaning |\n| :-- | --: | :-- | :-- |\n";
-    for (std::size_t i = 0; i < c.unknowns.size(); ++i) {
-      const UnknownInfo& u = info(c.unknowns[i]);
-      out_ += "| $" + std::string(u.latex) + "$ | " + number(c.solution[static_cast<Eigen::Index>(i)]) + " | " +
-              unit_text(u.unit, Style::unicode) + " | " + std::string(u.description) + " |\n";
+    if (o_.shows(ReportPart::symbolic)) {
+      paragraph("The equations, one per row of $A q = B$:");
+      std::string rows;
+      const std::vector<std::string> eqs = equation_rows(c);
+      for (std::size_t r = 0; r < eqs.size(); ++r)
+        rows += eqs[r] + " && \\text{(" + std::string(c.equations[r]) + ")}" + (r + 1 < eqs.size() ? " \\\\\n" : "\n");
+      math("\\begin{aligned}\n" + rows + "\\end{aligned}\n");
+      paragraph("In matrix form, rows in the order of the equations:");
+      math(matrix_equation(c, {false, false, false}, digits_, ""));
     }
-    math(residual_line(c) + "\n");
+    if (o_.shows(ReportPart::numeric)) {
+      paragraph("Numerically:");
+      math(matrix_equation(c, {true, false, false}, digits_, ""));
+    }
+    if (o_.shows(ReportPart::solution)) {
+      paragraph("Solution:");
+      out_ += "\n| unknown | value | unit | meaning |\n| :-- | --: | :-- | :-- |\n";
+      for (std::size_t i = 0; i < c.unknowns.size(); ++i) {
+        const UnknownInfo& u = info(c.unknowns[i]);
+        out_ += "| $" + std::string(u.latex) + "$ | " + number(c.solution[static_cast<Eigen::Index>(i)]) + " | " +
+                unit_text(u.unit, Style::unicode) + " | " + std::string(u.description) + " |\n";
+      }
+    }
+    if (o_.shows(ReportPart::residual)) math(residual_line(c) + "\n");
   }
 
   void agreement() {
@@ -179,6 +194,7 @@ class MarkdownWriter {
  private:
   const WorkedSolution& w_;
   int digits_;
+  const ReportOptions& o_;
   std::string out_;
 };
 
@@ -186,12 +202,12 @@ class MarkdownWriter {
 
 std::string latex_report(const WorkedSolution& worked, const ReportOptions& options) {
   LatexWriter writer(worked, options);
-  return write_sections(writer, worked);
+  return write_sections(writer, worked, options);
 }
 
 std::string markdown_report(const WorkedSolution& worked, const ReportOptions& options) {
   MarkdownWriter writer(worked, options);
-  return write_sections(writer, worked);
+  return write_sections(writer, worked, options);
 }
 
 }  // namespace linkage

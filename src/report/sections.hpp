@@ -9,16 +9,21 @@
 
 namespace linkage {
 
-/// Calls the writer's section functions in order and returns its text. `Writer` has
-/// title(), inputs(), derivation_group(const DerivationGroup&), one_case(const
-/// CaseSolution&), agreement() and text().
+/// Calls the writer's section functions in order, for the parts `options` shows, and
+/// returns its text. `Writer` has title(), inputs(), derivation_group(const
+/// DerivationGroup&), one_case(const CaseSolution&) (which checks the per-case parts),
+/// agreement() and text().
 template <class Writer>
-[[nodiscard]] std::string write_sections(Writer& writer, const WorkedSolution& worked) {
+[[nodiscard]] std::string write_sections(Writer& writer, const WorkedSolution& worked, const ReportOptions& options) {
   writer.title();
-  writer.inputs();
-  for (const DerivationGroup& group : derivation(worked)) writer.derivation_group(group);
-  for (const CaseSolution& c : worked.cases) writer.one_case(c);
-  if (!worked.agreement.empty()) writer.agreement();
+  if (options.shows(ReportPart::inputs)) writer.inputs();
+  for (const DerivationGroup& group : derivation(worked))
+    if (options.shows(group.part)) writer.derivation_group(group);
+  const bool case_parts = options.shows(ReportPart::symbolic) || options.shows(ReportPart::numeric) ||
+                          options.shows(ReportPart::solution) || options.shows(ReportPart::residual);
+  if (case_parts)
+    for (const CaseSolution& c : worked.cases) writer.one_case(c);
+  if (!worked.agreement.empty() && options.shows(ReportPart::comparison)) writer.agreement();
   return writer.text();
 }
 

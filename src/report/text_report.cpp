@@ -117,13 +117,15 @@ class TextWriter {
 
     const SymbolicSystem symbolic = symbolic_system(c.id, style_);
     const std::vector<std::string> labels = equation_labels(c);
-    blank();
-    line("  Equations, one per row of A q = B:");
-    for (std::size_t r = 0; r < symbolic.A.size(); ++r) {
-      const EquationSides eq = equation_sides(symbolic.A[r], symbolic.B[r], c.unknowns, style_);
-      const std::string first = "    " + labels[r] + "  ";
-      const std::string text = eq.lhs + kBreakMark + " = " + eq.rhs;
-      lines(wrap(first, text, std::string(display_width(first) + 4, ' '), o_.width));
+    if (o_.shows(ReportPart::symbolic)) {
+      blank();
+      line("  Equations, one per row of A q = B:");
+      for (std::size_t r = 0; r < symbolic.A.size(); ++r) {
+        const EquationSides eq = equation_sides(symbolic.A[r], symbolic.B[r], c.unknowns, style_);
+        const std::string first = "    " + labels[r] + "  ";
+        const std::string text = eq.lhs + kBreakMark + " = " + eq.rhs;
+        lines(wrap(first, text, std::string(display_width(first) + 4, ' '), o_.width));
+      }
     }
 
     Table table;
@@ -135,18 +137,22 @@ class TextWriter {
       table.cells.push_back(symbolic.A[r]);
       table.cells.back().push_back(symbolic.B[r]);
     }
-    blank();
-    line("  Symbolic A | B:");
-    lines(layout_table(table, "    ", o_.width));
+    if (o_.shows(ReportPart::symbolic)) {
+      blank();
+      line("  Symbolic A | B:");
+      lines(layout_table(table, "    ", o_.width));
+    }
 
     for (Eigen::Index r = 0; r < c.A.rows(); ++r) {
       auto& row = table.cells[static_cast<std::size_t>(r)];
       for (Eigen::Index col = 0; col < c.A.cols(); ++col) row[static_cast<std::size_t>(col)] = number(c.A(r, col));
       row.back() = number(c.B[r]);
     }
-    blank();
-    line("  Numeric A | B:");
-    lines(layout_table(table, "    ", o_.width));
+    if (o_.shows(ReportPart::numeric)) {
+      blank();
+      line("  Numeric A | B:");
+      lines(layout_table(table, "    ", o_.width));
+    }
 
     Table solution;
     solution.headers = {"value", "unit", "meaning"};
@@ -156,9 +162,12 @@ class TextWriter {
       solution.cells.push_back(
           {number(c.solution[static_cast<Eigen::Index>(i)]), unit(u.unit), std::string(u.description)});
     }
-    blank();
-    line("  Solution:");
-    lines(layout_table(solution, "    ", o_.width));
+    if (o_.shows(ReportPart::solution)) {
+      blank();
+      line("  Solution:");
+      lines(layout_table(solution, "    ", o_.width));
+    }
+    if (!o_.shows(ReportPart::residual)) return;
     blank();
     const bool uni = style_ == Style::unicode;
     line(std::string(uni ? "  Residual ‖A q - B‖₂ = " : "  Residual ||A q - B||_2 = ") +
@@ -200,7 +209,7 @@ class TextWriter {
 
 std::string text_report(const WorkedSolution& worked, const ReportOptions& options) {
   TextWriter writer(worked, options);
-  return write_sections(writer, worked);
+  return write_sections(writer, worked, options);
 }
 
 }  // namespace linkage

@@ -28,11 +28,20 @@ struct WorkedSolution {
   std::vector<Agreement> agreement;   // all eight unknowns; empty unless two or more cases
 };
 
+/// The parts of a worked solution, in the order they print: the inputs, the three
+/// derivation groups, and within each case its equations and symbolic matrices, numeric
+/// matrices, solution, and residual with condition number; then the cases' comparison.
+enum class ReportPart { inputs, inertia, constraints, energy, symbolic, numeric, solution, residual, comparison };
+inline constexpr std::size_t kReportPartCount = 9;
+
 /// How the human-readable formats (text, LaTeX, Markdown) print.
 struct ReportOptions {
   int digits = 6;                                 // significant digits; JSON always prints full precision
   expr::Style text_style = expr::Style::unicode;  // the text format's symbols: unicode or ascii
   std::size_t width = 80;                         // the text format's line width, display columns
+  /// Which parts print (`linkage solve` prints all; a lesson's solve step chooses).
+  std::array<bool, kReportPartCount> parts{true, true, true, true, true, true, true, true, true};
+  [[nodiscard]] bool shows(ReportPart p) const { return parts[static_cast<std::size_t>(p)]; }
 };
 
 /// Solves the selected cases (each id in 1..3) at the inputs. Throws Error::input when

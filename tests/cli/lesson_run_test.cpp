@@ -166,10 +166,55 @@ text = "now I is {{I_zz_C}} and m is {{m}} kg"
   EXPECT_NE(r.out.find("m is 0.25 kg"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("I is 0.00208333"), std::string::npos) << r.out;  // 0.25 (0.01 + 0.09) / 12
   EXPECT_NE(r.err.find("ran 1 of 3 steps"), std::string::npos) << r.err;
+  // Part of a lesson leaves the whole lesson's document alone (here: none yet).
+  EXPECT_NE(r.err.find("lesson.md left as it was (--only ran part of the lesson)"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "out" / "lesson.md"));
+  const RunResult whole = run_linkage({"lesson", file, "--out", (dir / "out").string()});
+  ASSERT_EQ(whole.exit_code, 0) << whole.err;
+  const std::string doc = read_text(dir / "out" / "lesson.md");
+  EXPECT_NE(doc.find("m is 0.1 kg at first"), std::string::npos) << doc;
+  const RunResult again = run_linkage({"lesson", file, "--out", (dir / "out").string(), "--only", "3"});
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_EQ(read_text(dir / "out" / "lesson.md"), doc);
+  const RunResult all = run_linkage({"lesson", file, "--out", (dir / "out").string(), "--only", "1-"});
+  EXPECT_NE(all.err.find("document "), std::string::npos) << all.err;
 
   const RunResult bad = run_linkage({"lesson", file, "--only", "4"});
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_EQ(bad.err, "linkage: error: --only: step 4 does not exist; the lesson has steps 1 to 3\n");
+}
+
+// A solve step prints only the parts it shows, in every format.
+TEST(LessonSolve, ShowsOnlyTheChosenParts) {
+  TempDir dir;
+  const std::string file = (dir / "s.toml").string(), out = (dir / "out").string();
+  write_text(file, R"(title = "Parts"
+[[step]]
+kind = "solve"
+case = [1, 3]
+show = ["inertia", "solution"]
+)");
+  const RunResult r = run_linkage({"lesson", file, "--out", out});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("I_zz^P = I_zz^C + m D² = 0.000833333 + 0.1 × 0.11² = 0.00204333 kg m²"), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("Case 1: eight DAEs"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("Fy   0.000274704  N"), std::string::npos) << r.out;  // Case 1's solution
+  EXPECT_NE(r.out.find("θ̈₂  -0.0105512"), std::string::npos) << r.out;
+  for (const char* hidden : {"Inputs\n", "x_P = ", "E   = T + V", "Equations, one per row", "Symbolic A | B",
+                             "Numeric A | B", "Residual", "The cases agree"})
+    EXPECT_EQ(r.out.find(hidden), std::string::npos) << hidden << "\n" << r.out;
+
+  const RunResult md = run_linkage({"lesson", file, "--out", out, "--format", "markdown"});
+  ASSERT_EQ(md.exit_code, 0) << md.err;
+  EXPECT_NE(md.out.find("| $F_y$ | 0.000274704 | N |"), std::string::npos) << md.out;
+  EXPECT_EQ(md.out.find("Numerically"), std::string::npos) << md.out;
+  EXPECT_EQ(md.out.find("\\begin{bmatrix}"), std::string::npos) << md.out;
+  const RunResult tex = run_linkage({"lesson", file, "--out", out, "--format", "latex"});
+  ASSERT_EQ(tex.exit_code, 0) << tex.err;
+  EXPECT_NE(tex.out.find("Solution:"), std::string::npos) << tex.out;
+  EXPECT_EQ(tex.out.find("Numerically"), std::string::npos) << tex.out;
+  EXPECT_EQ(tex.out.find("\\kappa"), std::string::npos) << tex.out;
 }
 
 TEST(LessonFormats, MarkdownAndLatex) {
