@@ -101,7 +101,10 @@ void run_lesson_command(const LessonOptions& o) {
   options.run_linkage = run_self;
   const lesson::RunSummary summary = lesson::run_lesson(lesson, options, std::cin, std::cout, std::cerr);
   std::cerr << "lesson: ran " << summary.steps_run << " of " << lesson.steps.size() << " steps; " << summary.made
-            << " made, " << summary.reused << " reused; document " << summary.document.string() << "\n";
+            << " made, " << summary.reused << " reused; "
+            << (summary.document.empty() ? "lesson.md left as it was (--only ran part of the lesson)"
+                                         : "document " + summary.document.string())
+            << "\n";
 }
 
 }  // namespace

@@ -38,7 +38,7 @@ struct RunSummary {
   int steps_run = 0;
   int made = 0;    // steps that wrote their artifacts
   int reused = 0;  // steps whose artifacts were reused
-  std::filesystem::path document;
+  std::filesystem::path document;  // lesson.md; empty when --only ran part of the lesson
 };
 
 /// Runs the selected steps. Terminal output goes to `out`, status lines (what was made
