@@ -68,8 +68,9 @@ ResultTable table_from_json(const nlohmann::json& json) {
 
 std::string step_hash(const Step& step, Quality quality) {
   std::string text = "linkage lesson cache 1\nversion=" + std::string(kVersion);
+  // Only clips and stills depend on --quality; plots and tables are the same either way.
   text += "\nquality=";
-  text += quality == Quality::draft ? "draft" : "final";
+  text += step.kind != StepKind::render ? "any" : quality == Quality::draft ? "draft" : "final";
   text += "\ninputs=" + canonical_text(step.inputs) + "\nstep=" + step.canonical + "\n";
   return content_hash(text);
 }

@@ -47,7 +47,7 @@ RunSummary run_lesson(const Lesson& lesson, const RunnerOptions& options, std::i
                       std::ostream& status);
 
 /// The hash a step's artifacts are cached under: its options, its inputs, the quality
-/// and the program version.
+/// (render steps only) and the program version.
 [[nodiscard]] std::string step_hash(const Step& step, Quality quality);
 
 /// The `linkage render` arguments of a render step at `quality`, writing into `out_dir`:

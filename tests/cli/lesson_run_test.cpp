@@ -140,6 +140,9 @@ TEST(LessonCache, SecondRunMakesNothingAndAChangeRemakesOnlyWhatItAffects) {
   const RunResult draft_to_final = run_linkage({"lesson", file, "--out", out, "--quality", "final", "--only", "1"});
   ASSERT_EQ(draft_to_final.exit_code, 0) << draft_to_final.err;
   EXPECT_NE(draft_to_final.err.find("step 1 (render): made first.png"), std::string::npos) << draft_to_final.err;
+  const RunResult final_plot = run_linkage({"lesson", file, "--out", out, "--quality", "final", "--only", "2"});
+  ASSERT_EQ(final_plot.exit_code, 0) << final_plot.err;  // a plot does not depend on the quality
+  EXPECT_NE(final_plot.err.find("step 2 (plot): reused energy.png"), std::string::npos) << final_plot.err;
 
   const RunResult forced = run_linkage({"lesson", file, "--out", out, "--force"});
   ASSERT_EQ(forced.exit_code, 0) << forced.err;
