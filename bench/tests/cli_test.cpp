@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "support/test_support.hpp"
+#include "bench/tests/csv_reader.hpp"
 
 namespace linkage {
 namespace {
@@ -14,35 +15,7 @@ namespace {
 using test::run_linkage;
 using test::TempDir;
 
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> out;
-  std::string field;
-  bool quoted = false;
-  for (char c : line) {
-    if (c == '"') quoted = !quoted;
-    else if (c == ',' && !quoted) out.push_back(field), field.clear();
-    else field += c;
-  }
-  out.push_back(field);
-  return out;
-}
-
-/// Rows of a CSV file as maps from the header's column names.
-std::vector<std::map<std::string, std::string>> read_csv(const std::filesystem::path& path) {
-  std::istringstream in(test::read_text(path));
-  std::string line;
-  std::getline(in, line);
-  const std::vector<std::string> header = split(line);
-  std::vector<std::map<std::string, std::string>> rows;
-  while (std::getline(in, line)) {
-    const std::vector<std::string> fields = split(line);
-    EXPECT_EQ(fields.size(), header.size()) << line;
-    std::map<std::string, std::string> row;
-    for (std::size_t i = 0; i < header.size() && i < fields.size(); ++i) row[header[i]] = fields[i];
-    rows.push_back(row);
-  }
-  return rows;
-}
+using test::read_csv;
 
 TEST(BenchAccuracy, QuickRunWritesASaneReport) {
   TempDir dir;

@@ -16,6 +16,7 @@
 #ifdef LINKAGE_WITH_BENCH
 #include "bench/accuracy.hpp"
 #include "bench/accuracy_report.hpp"
+#include "bench/render_bench.hpp"
 #include "bench/stress.hpp"
 #include "bench/targets.hpp"
 #endif
@@ -141,6 +142,22 @@ void add_stress(CLI::App* bench) {
   });
 }
 
+void add_render(CLI::App* bench) {
+  auto flags = std::make_shared<bench::RenderBenchOptions>();
+  CLI::App* sub = bench->add_subcommand(
+      "render", "Rendering throughput: MP4 pipeline against encoding alone, PNG writer against Cairo's");
+  sub->add_option("--out", flags->out, "Folder for render.csv and render.md (default bench-render)")->type_name("DIR");
+  sub->add_flag("--quick", flags->quick, "Two small sizes, 2 s, one run each: checks the report, not the timings (CI)");
+  sub->add_flag("--quiet", flags->quiet, "No progress line on stderr");
+  add_runner(sub, [flags] {
+    bench::RenderBenchOptions options = *flags;
+    options.assets = assets_dir(LINKAGE_ASSETS_DIR);
+    const bench::RenderBenchResult result = bench::run_render_bench(options);
+    for (const std::string& line : bench::render_bench_lines(result)) std::printf("%s\n", line.c_str());
+    for (const auto& file : result.files) std::printf("wrote %s\n", file.string().c_str());
+  });
+}
+
 #endif  // LINKAGE_WITH_BENCH
 
 }  // namespace
@@ -151,6 +168,7 @@ void register_bench(CLI::App& app) {
   bench->require_subcommand(1);
   add_accuracy(bench);
   add_stress(bench);
+  add_render(bench);
 #else
   add_runner(bench, [] {
     throw Error::input("bench: this build has no benchmarks; configure with -DLINKAGE_BUILD_BENCH=ON");

@@ -1,0 +1,324 @@
+#include "bench/render_bench.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+#include <thread>
+
+#include "bench/accuracy_report.hpp"
+#include "bench/frame_store.hpp"
+#include "bench/scenarios.hpp"
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
+#include "core/interrupt.hpp"
+#include "core/progress.hpp"
+#include "encode/frame_pipeline.hpp"
+#include "encode/png_writer.hpp"
+#include "encode/video_writer.hpp"
+#include "render/cairo_util.hpp"
+#include "render/clip_renderer.hpp"
+
+namespace linkage::bench {
+namespace fs = std::filesystem;
+namespace {
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+struct Size {
+  int width, height;
+};
+
+/// A hidden folder inside the output folder for the MP4s and PNGs being timed; removed
+/// with everything in it when the run ends, however it ends.
+class ScratchFolder {
+ public:
+  explicit ScratchFolder(const fs::path& parent) {
+    static std::atomic<unsigned> counter{0};
+    path_ = parent / (".bench-render.tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+    std::error_code ec;
+    if (!fs::create_directory(path_, ec))
+      throw Error::failure("--out: cannot create '" + path_.string() + "': " + (ec ? ec.message() : "exists"));
+  }
+  ScratchFolder(const ScratchFolder&) = delete;
+  ScratchFolder& operator=(const ScratchFolder&) = delete;
+  ~ScratchFolder() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  [[nodiscard]] fs::path operator/(const std::string& name) const { return path_ / name; }
+  [[nodiscard]] const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+std::string size_name(int width, int height) { return std::to_string(width) + "x" + std::to_string(height); }
+
+bool same_bytes(const fs::path& a, const fs::path& b) {
+  std::ifstream fa(a, std::ios::binary), fb(b, std::ios::binary);
+  if (!fa || !fb) return false;
+  return std::equal(std::istreambuf_iterator<char>(fa), std::istreambuf_iterator<char>(),
+                    std::istreambuf_iterator<char>(fb), std::istreambuf_iterator<char>());
+}
+
+std::int64_t folder_bytes(const fs::path& folder) {
+  std::int64_t total = 0;
+  for (const auto& entry : fs::directory_iterator(folder))
+    if (entry.is_regular_file()) total += static_cast<std::int64_t>(entry.file_size());
+  return total;
+}
+
+/// Counts frames for the progress line across every pass.
+struct Tally {
+  Progress& progress;
+  long done = 0;
+  void frame() {
+    throw_if_interrupted();
+    progress.update(++done);
+  }
+};
+
+VideoOptions video_options(const RenderSettings& s) {
+  VideoOptions v;  // the encoder settings `linkage render` uses
+  v.width = s.width;
+  v.height = s.height;
+  v.fps = s.fps;
+  v.origin = "--out";
+  return v;
+}
+
+/// One run of the `linkage render` pipeline into `target`, timed wall to wall.
+MovieRow run_pipeline(const Clip& clip, const fs::path& target, Tally& tally) {
+  MovieRow row;
+  const auto start = Clock::now();
+  const Motion motion = simulate_clip(clip);
+  row.simulate_seconds = seconds_since(start);
+  ClipRenderer renderer(clip.params, motion, clip.settings, clip.theme, clip.run);
+  VideoWriter video(target, video_options(clip.settings));
+  FramePipeline pipeline(clip.settings.width, clip.settings.height, [&](const Frame& frame) { video.write(frame); });
+  const long count = clip.settings.frame_count();
+  for (long k = 0; k < count; ++k) {
+    Frame& frame = pipeline.acquire();
+    renderer.draw(static_cast<std::size_t>(k), frame);
+    pipeline.submit();
+    tally.frame();
+  }
+  pipeline.finish();
+  video.finish();
+  row.wall_seconds = seconds_since(start);
+  row.frames = count;
+  row.draw_seconds = renderer.stats().draw_seconds;
+  row.convert_seconds = video.stats().convert_seconds;
+  row.encode_seconds = video.stats().encode_seconds + video.stats().finish_seconds;
+  row.draw_waited_seconds = pipeline.stats().producer_wait_seconds;
+  row.encoder_idle_seconds = pipeline.stats().consumer_idle_seconds;
+  row.bytes = video.stats().bytes;
+  row.encoder = video.encoder_name();
+  return row;
+}
+
+/// The stored frames through the same pipeline and encoder settings: returns the wall
+/// time and adds the time spent unpacking to `unpack_seconds`.
+double run_encode_alone(const Clip& clip, const FrameStore& store, const fs::path& target, double& unpack_seconds,
+                        Tally& tally) {
+  const auto start = Clock::now();
+  VideoWriter video(target, video_options(clip.settings));
+  FramePipeline pipeline(clip.settings.width, clip.settings.height, [&](const Frame& frame) { video.write(frame); });
+  unpack_seconds = 0;
+  for (std::size_t k = 0; k < store.size(); ++k) {
+    Frame& frame = pipeline.acquire();
+    const auto unpack_start = Clock::now();
+    store.unpack(k, frame);
+    unpack_seconds += seconds_since(unpack_start);
+    pipeline.submit();
+    tally.frame();
+  }
+  pipeline.finish();
+  video.finish();
+  return seconds_since(start);
+}
+
+/// Draws every frame of the clip once and keeps them.
+FrameStore predraw(const Clip& clip, Tally& tally) {
+  const Motion motion = simulate_clip(clip);
+  ClipRenderer renderer(clip.params, motion, clip.settings, clip.theme, clip.run);
+  FrameStore store(clip.settings.width, clip.settings.height);
+  Frame frame(clip.settings.width, clip.settings.height);
+  for (long k = 0; k < clip.settings.frame_count(); ++k) {
+    renderer.draw(static_cast<std::size_t>(k), frame);
+    store.add(frame);
+    tally.frame();
+  }
+  return store;
+}
+
+MovieRow measure_movie(const Clip& clip, const FrameStore& store, const ScratchFolder& scratch, int repeats,
+                       Tally& tally) {
+  const std::string name = size_name(clip.settings.width, clip.settings.height);
+  const fs::path piped = scratch / ("pipeline_" + name + ".mp4"), alone = scratch / ("alone_" + name + ".mp4");
+  MovieRow best;
+  double best_alone = 0, best_unpack = 0;
+  for (int r = 0; r < repeats; ++r) {
+    MovieRow row = run_pipeline(clip, piped, tally);
+    if (r == 0 || row.wall_seconds < best.wall_seconds) best = row;
+    double unpack = 0;
+    const double wall = run_encode_alone(clip, store, alone, unpack, tally);
+    if (r == 0 || wall < best_alone) best_alone = wall, best_unpack = unpack;
+  }
+  best.width = clip.settings.width;
+  best.height = clip.settings.height;
+  best.fps = clip.settings.fps;
+  best.alone_wall_seconds = best_alone;
+  best.alone_unpack_seconds = best_unpack;
+  best.same_output = same_bytes(piped, alone);
+  fs::remove(piped);
+  fs::remove(alone);
+  return best;
+}
+
+/// Frame numbers spread evenly over the clip.
+std::vector<std::size_t> spread(std::size_t available, std::size_t wanted) {
+  std::vector<std::size_t> picks;
+  const std::size_t n = std::min(available, wanted);
+  for (std::size_t k = 0; k < n; ++k) picks.push_back(k * available / n);
+  return picks;
+}
+
+PngRow measure_png(const FrameStore& store, int width, int height, std::size_t frames, const ScratchFolder& scratch,
+                   Tally& tally) {
+  PngRow row;
+  row.width = width;
+  row.height = height;
+  const std::vector<std::size_t> picks = spread(store.size(), frames);
+  row.frames = static_cast<long>(picks.size());
+  Frame frame(width, height);
+  const std::string name = size_name(width, height);
+
+  const fs::path ours_folder = scratch / ("ours_" + name);
+  fs::create_directory(ours_folder);
+  {
+    const auto start = Clock::now();
+    PngSequenceWriter writer(ours_folder, width, height, "--out", PngOptions{}, 2, row.frames);
+    for (const std::size_t k : picks) {
+      const auto unpack_start = Clock::now();
+      store.unpack(k, frame);
+      row.unpack_seconds += seconds_since(unpack_start);
+      writer.write(frame);
+      tally.frame();
+    }
+    writer.finish();
+    row.ours_seconds = seconds_since(start);
+    row.ours_convert_seconds = writer.stats().convert_seconds;
+    row.ours_compress_seconds = writer.stats().encode_seconds;
+  }
+  row.ours_bytes = folder_bytes(ours_folder);
+
+  // Cairo's writer on an RGB24 view of the same pixels: 8-bit RGB files, as ours.
+  const fs::path cairo_folder = scratch / ("cairo_" + name);
+  fs::create_directory(cairo_folder);
+  {
+    const cairo::SurfacePtr surface(
+        cairo_image_surface_create_for_data(frame.pixels.data(), CAIRO_FORMAT_RGB24, width, height, frame.stride));
+    cairo::check(surface.get(), "cannot wrap a frame in a Cairo surface");
+    std::array<char, 32> file{};
+    const auto start = Clock::now();
+    for (std::size_t i = 0; i < picks.size(); ++i) {
+      cairo_surface_flush(surface.get());
+      store.unpack(picks[i], frame);
+      cairo_surface_mark_dirty(surface.get());
+      std::snprintf(file.data(), file.size(), "frame_%05zu.png", i);
+      AtomicFile target(cairo_folder / file.data(), "--out", true);
+      const cairo_status_t status = cairo_surface_write_to_png(surface.get(), target.temp_path().c_str());
+      if (status != CAIRO_STATUS_SUCCESS)
+        throw Error::failure("cairo_surface_write_to_png: " + std::string(cairo_status_to_string(status)));
+      target.commit();
+      tally.frame();
+    }
+    row.cairo_seconds = seconds_since(start);
+  }
+  row.cairo_bytes = folder_bytes(cairo_folder);
+  fs::remove_all(ours_folder);
+  fs::remove_all(cairo_folder);
+  return row;
+}
+
+}  // namespace
+
+Clip example_clip(int width, int height, int fps, double duration, const fs::path& assets) {
+  const Scenario& example = find_scenario("example", "scenario");
+  Clip clip{example.params, example.initial, {}, {}, load_theme("light", assets, "--theme"), {}};
+  clip.settings.width = width;
+  clip.settings.height = height;
+  clip.settings.fps = fps;
+  clip.settings.duration = duration;
+  clip.settings.validate();
+  clip.simulation.duration = duration;
+  clip.simulation.validate();
+  clip.run = "Case " + std::to_string(clip.simulation.case_id) + " \u00b7 " +
+             std::string(info(clip.simulation.integrator).name);
+  return clip;
+}
+
+Motion simulate_clip(const Clip& clip) {
+  const long count = clip.settings.frame_count();
+  std::vector<double> times(static_cast<std::size_t>(count));
+  for (long k = 0; k < count; ++k) times[static_cast<std::size_t>(k)] = clip.settings.frame_time(k);
+  Simulation simulation(clip.params, clip.initial, clip.simulation);
+  return sample_motion(simulation, times, clip.settings.elements.has(Element::pin_force));
+}
+
+RenderBenchResult run_render_bench(const RenderBenchOptions& options) {
+  prepare_output_folder(options.out, "--out");
+  RenderBenchResult result;
+  result.cores = std::max(1u, std::thread::hardware_concurrency());
+  std::ifstream("/proc/loadavg") >> result.load_average;
+  const std::vector<Size> sizes = options.quick ? std::vector<Size>{{320, 180}, {640, 360}}
+                                                : std::vector<Size>{{854, 480}, {1280, 720}, {1920, 1080}};
+  const double duration = options.quick ? 2.0 : 10.0;
+  const int fps = 30;
+  result.repeats = options.quick ? 1 : 2;
+  const std::size_t png_frames = options.quick ? 10 : 60;
+
+  std::vector<Clip> clips;
+  long total = 0;
+  for (const Size& s : sizes) {
+    clips.push_back(example_clip(s.width, s.height, fps, duration, options.assets));
+    const long count = clips.back().settings.frame_count();
+    total += count * (1 + 2 * result.repeats) + 2 * std::min<long>(count, static_cast<long>(png_frames));
+  }
+  Progress progress("bench render", total, "frames", options.quiet);
+  Tally tally{progress};
+  {
+    const ScratchFolder scratch(options.out);
+    for (const Clip& clip : clips) {
+      const FrameStore store = predraw(clip, tally);
+      result.movies.push_back(measure_movie(clip, store, scratch, result.repeats, tally));
+      result.pngs.push_back(measure_png(store, clip.settings.width, clip.settings.height, png_frames, scratch, tally));
+    }
+  }
+  progress.finish();
+  write_render_report(options, result);
+  return result;
+}
+
+const MovieRow* target_movie(const RenderBenchResult& result) {
+  for (const MovieRow& row : result.movies)
+    if (row.width == kTargetWidth && row.height == kTargetHeight) return &row;
+  return nullptr;
+}
+
+const PngRow* target_png(const RenderBenchResult& result) {
+  for (const PngRow& row : result.pngs)
+    if (row.width == kTargetWidth && row.height == kTargetHeight) return &row;
+  return nullptr;
+}
+
+}  // namespace linkage::bench

@@ -1,0 +1,119 @@
+#pragma once
+// `linkage bench render`: rendering throughput, measured the way `linkage render` works.
+//
+//   MP4, per size (854x480, 1280x720, 1920x1080; 10 s of motion at 30 fps):
+//     pipeline      what `linkage render --out clip.mp4` does: simulate, draw on this
+//                   thread while the encoder thread converts (libswscale) and encodes
+//                   (libavcodec) through FramePipeline; timed wall to wall, with the time
+//                   of each stage;
+//     encode alone  the same frames, drawn beforehand and kept in memory (FrameStore),
+//                   fed through the same FramePipeline to the same encoder settings: the
+//                   encoder's own speed. The two MP4s must be byte-identical, which proves
+//                   the frames are the same.
+//     Target: pipeline / encode alone <= 1.2 at 1280x720.
+//   PNG sequence, per size, on evenly spaced frames of the same clip: our
+//     PngSequenceWriter (libspng, zlib level 1, two workers) against Cairo's
+//     cairo_surface_write_to_png, both writing 8-bit RGB. Target: ours >= 3x Cairo's
+//     frames per second at 1280x720.
+// The two modes of each comparison run alternately, `repeats` times; the fastest run of
+// each counts (another process can only slow a run down).
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "integrate/simulation.hpp"
+#include "model/params.hpp"
+#include "model/state.hpp"
+#include "render/settings.hpp"
+#include "render/theme.hpp"
+#include "scene/motion.hpp"
+
+namespace linkage::bench {
+
+/// The clip `linkage render` makes by default (the spec's example, Case 3, DOP853, the
+/// default elements, camera and light theme) at a given size, rate and duration.
+struct Clip {
+  Params params;
+  State initial;
+  SimulationOptions simulation;
+  RenderSettings settings;
+  Theme theme;
+  std::string run;  // the HUD's "Case 3 · dop853"
+};
+
+/// `assets` as for load_theme (empty: the palettes built into the binary).
+[[nodiscard]] Clip example_clip(int width, int height, int fps, double duration, const std::filesystem::path& assets = {});
+/// The clip's motion at every frame time, as `linkage render` samples it.
+[[nodiscard]] Motion simulate_clip(const Clip& clip);
+
+struct RenderBenchOptions {
+  std::filesystem::path out{"bench-render"};
+  std::filesystem::path assets;  // theme folder (empty: built-in palettes)
+  bool quick = false;            // two small sizes, 2 s, one repeat: checks the report (CI)
+  bool quiet = false;
+};
+
+/// One size of MP4: the pipeline's fastest run and encoding alone's fastest run.
+struct MovieRow {
+  int width = 0, height = 0, fps = 0;
+  long frames = 0;
+  double wall_seconds = 0;        // the whole pipeline, simulation to finished file
+  double simulate_seconds = 0;    // stages of that run; drawing runs alongside the
+  double draw_seconds = 0;        // encoder thread, so they add up to more than the wall
+  double convert_seconds = 0;
+  double encode_seconds = 0;      // libavcodec + muxing + finishing the file
+  double draw_waited_seconds = 0; // the drawing thread waited for a free buffer
+  double encoder_idle_seconds = 0;// the encoder thread waited for a drawn frame
+  double alone_wall_seconds = 0;  // encoding the stored frames alone
+  double alone_unpack_seconds = 0;// of which unpacking the stored frames
+  std::int64_t bytes = 0;         // size of the MP4
+  bool same_output = false;       // both runs wrote byte-identical files
+  std::string encoder;            // e.g. "libx264"
+  [[nodiscard]] double fps_achieved() const { return static_cast<double>(frames) / wall_seconds; }
+  [[nodiscard]] double alone_fps() const { return static_cast<double>(frames) / alone_wall_seconds; }
+  [[nodiscard]] double ratio() const { return wall_seconds / alone_wall_seconds; }
+};
+
+/// One size of PNG sequence: ours against Cairo's writer on the same frames.
+struct PngRow {
+  int width = 0, height = 0;
+  long frames = 0;
+  double ours_seconds = 0;          // wall, including unpacking the stored frames
+  double ours_convert_seconds = 0;  // BGRA -> RGB rows on the calling thread
+  double ours_compress_seconds = 0; // summed over the workers
+  double cairo_seconds = 0;         // wall, including unpacking the stored frames
+  double unpack_seconds = 0;        // unpacking, per run (the same in both)
+  std::int64_t ours_bytes = 0, cairo_bytes = 0;
+  [[nodiscard]] double ours_fps() const { return static_cast<double>(frames) / ours_seconds; }
+  [[nodiscard]] double cairo_fps() const { return static_cast<double>(frames) / cairo_seconds; }
+  [[nodiscard]] double ratio() const { return ours_fps() / cairo_fps(); }
+};
+
+struct RenderBenchResult {
+  std::vector<MovieRow> movies;
+  std::vector<PngRow> pngs;
+  int repeats = 1;
+  unsigned cores = 1;
+  double load_average = 0;  // 1-minute, at the start
+  std::vector<std::filesystem::path> files;
+};
+
+/// The size the targets are judged at.
+inline constexpr int kTargetWidth = 1280, kTargetHeight = 720;
+inline constexpr double kMaxPipelineRatio = 1.2, kMinPngRatio = 3.0;
+
+/// Runs every measurement and writes render.csv and render.md into options.out.
+[[nodiscard]] RenderBenchResult run_render_bench(const RenderBenchOptions& options);
+/// Writes render.csv and render.md into options.out (atomically) and lists them in result.files.
+void write_render_report(const RenderBenchOptions& options, RenderBenchResult& result);
+
+/// The row measured at 1280x720, if any (--quick has none).
+[[nodiscard]] const MovieRow* target_movie(const RenderBenchResult& result);
+[[nodiscard]] const PngRow* target_png(const RenderBenchResult& result);
+
+/// One-line findings for the terminal.
+[[nodiscard]] std::vector<std::string> render_bench_lines(const RenderBenchResult& result);
+
+}  // namespace linkage::bench
