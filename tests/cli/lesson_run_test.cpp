@@ -149,6 +149,36 @@ TEST(LessonCache, SecondRunMakesNothingAndAChangeRemakesOnlyWhatItAffects) {
   EXPECT_EQ(count(forced.err, "): made "), 3) << forced.err;
 }
 
+// A render that fails leaves no cache record: the next run makes the file again, even
+// with the options that made it before.
+TEST(LessonCache, AFailedRenderNeverCountsAsCached) {
+  TempDir dir;
+  const std::string file = (dir / "f.toml").string(), out = (dir / "out").string();
+  auto lesson = [](const std::string& at) {
+    return "title = \"Fail\"\n[[step]]\nkind = \"render\"\nout = \"still.png\"\nat = " + at + "\n";
+  };
+  write_text(file, lesson("0.2"));
+  const RunResult first = run_linkage({"lesson", file, "--out", out});
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  const fs::path record = dir / "out" / ".still.png.cache.json";
+  ASSERT_TRUE(fs::is_regular_file(record));
+
+  // The still cannot be written (a folder stands in its way): the step fails.
+  write_text(file, lesson("0.3"));
+  fs::remove(dir / "out" / "still.png");
+  fs::create_directory(dir / "out" / "still.png");
+  const RunResult failed = run_linkage({"lesson", file, "--out", out});
+  EXPECT_NE(failed.exit_code, 0);
+  EXPECT_NE(failed.err.find(file + ":2:1: step 1 (render): "), std::string::npos) << failed.err;
+  EXPECT_FALSE(fs::exists(record));
+
+  fs::remove(dir / "out" / "still.png");
+  write_text(file, lesson("0.2"));
+  const RunResult again = run_linkage({"lesson", file, "--out", out});
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_NE(again.err.find("step 1 (render): made still.png"), std::string::npos) << again.err;
+}
+
 TEST(LessonOnly, KeepsTheStateEarlierSetStepsMade) {
   TempDir dir;
   const std::string file = (dir / "o.toml").string();
