@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <filesystem>
 #include <regex>
+#include <tuple>
 
+#include "core/number_format.hpp"
 #include "lesson/lesson.hpp"
 #include "support/test_support.hpp"
 
@@ -95,6 +97,30 @@ TEST(ShippedLessons, RunAtDraftQualityAndCache) {
     EXPECT_EQ(count(second.err, "): made "), 0) << second.err;
     EXPECT_EQ(count(second.err, "): reused "), count(first.err, "): made ")) << second.err;
   }
+}
+
+// Lesson 06 prints the spec's worked example: every derived value and every unknown of
+// example.json (to the 6 digits the text shows), and its spot-the-mistake answers.
+TEST(ShippedLessons, TheNumericalExamplePrintsTheSpecsValues) {
+  TempDir dir;
+  const std::string file = (fs::path(LINKAGE_SOURCE_DIR) / "lessons/06-numerical-example.toml").string();
+  const RunResult r = run_linkage({"lesson", file, "--out", (dir / "out").string(), "--only", "1-11"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json& example = spec_example();
+  int checked = 0;
+  for (const char* group : {"derived", "solution"})
+    for (const auto& [name, value] : example.at(group).items()) {
+      EXPECT_NE(r.out.find(format_significant(number(value), 6)), std::string::npos) << name << "\n" << r.out;
+      ++checked;
+    }
+  EXPECT_EQ(checked, 22);
+  for (const auto& [group, name, unit] : {std::tuple{"derived", "I_zz_P", " kg m^2."}, {"derived", "x_P", " m."},
+                                          {"solution", "x2_ddot", " m/s^2."}, {"solution", "F_x", " N."}}) {
+    const std::string answer = "Answer: " + format_significant(number(example.at(group).at(name)), 6) + unit;
+    EXPECT_NE(r.out.find(answer), std::string::npos) << answer << "\n" << r.out;
+  }
+  EXPECT_NE(r.out.find("The cases agree"), std::string::npos);
+  EXPECT_NE(r.out.find("Case 3: four equations"), std::string::npos);
 }
 
 }  // namespace
