@@ -254,9 +254,18 @@ class Parser {
     SetStep step;
     step.keys = keys_in_file_order(r.table(), [](std::string_view k) { return find_input_key(k) != nullptr; });
     if (step.keys.empty()) throw Error::input(r.prefix("") + "a set step needs at least one of " + input_key_list());
-    for (const std::string& key : step.keys)
-      inputs.set(*find_input_key(key), *r.number(key, -kInf, kInf, ""), r.where(key));
-    inputs.validate();
+    try {
+      for (const std::string& key : step.keys)
+        inputs.set(*find_input_key(key), *r.number(key, -kInf, kInf, ""), r.where(key));
+      inputs.validate();
+    } catch (const Error& e) {
+      // "FILE:LINE:COLUMN: b = ..." from the inputs: name the step after the position.
+      const std::string message = e.what();
+      for (const std::string& key : step.keys)
+        if (const std::string at = r.where(key) + ": "; message.rfind(at, 0) == 0)
+          throw Error(e.code(), r.prefix(key) + message.substr(at.size()));
+      throw;
+    }
     return step;
   }
 
