@@ -1,5 +1,6 @@
 #include "bench/render_bench.hpp"
 
+#include <time.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -31,6 +32,13 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+/// CPU time of the whole process (every thread: drawing, the encoder's, x264's), s.
+double process_cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
 
 struct Size {
   int width, height;
@@ -98,6 +106,7 @@ VideoOptions video_options(const RenderSettings& s) {
 /// One run of the `linkage render` pipeline into `target`, timed wall to wall.
 MovieRow run_pipeline(const Clip& clip, const fs::path& target, Tally& tally) {
   MovieRow row;
+  const double cpu_start = process_cpu_seconds();
   const auto start = Clock::now();
   const Motion motion = simulate_clip(clip);
   row.simulate_seconds = seconds_since(start);
@@ -114,6 +123,7 @@ MovieRow run_pipeline(const Clip& clip, const fs::path& target, Tally& tally) {
   pipeline.finish();
   video.finish();
   row.wall_seconds = seconds_since(start);
+  row.cpu_seconds = process_cpu_seconds() - cpu_start;
   row.frames = count;
   row.draw_seconds = renderer.stats().draw_seconds;
   row.convert_seconds = video.stats().convert_seconds;
@@ -125,25 +135,30 @@ MovieRow run_pipeline(const Clip& clip, const fs::path& target, Tally& tally) {
   return row;
 }
 
-/// The stored frames through the same pipeline and encoder settings: returns the wall
-/// time and adds the time spent unpacking to `unpack_seconds`.
-double run_encode_alone(const Clip& clip, const FrameStore& store, const fs::path& target, double& unpack_seconds,
-                        Tally& tally) {
+struct AloneRun {
+  double wall_seconds = 0, cpu_seconds = 0, unpack_seconds = 0;
+};
+
+/// The stored frames through the same pipeline and encoder settings.
+AloneRun run_encode_alone(const Clip& clip, const FrameStore& store, const fs::path& target, Tally& tally) {
+  AloneRun run;
+  const double cpu_start = process_cpu_seconds();
   const auto start = Clock::now();
   VideoWriter video(target, video_options(clip.settings));
   FramePipeline pipeline(clip.settings.width, clip.settings.height, [&](const Frame& frame) { video.write(frame); });
-  unpack_seconds = 0;
   for (std::size_t k = 0; k < store.size(); ++k) {
     Frame& frame = pipeline.acquire();
     const auto unpack_start = Clock::now();
     store.unpack(k, frame);
-    unpack_seconds += seconds_since(unpack_start);
+    run.unpack_seconds += seconds_since(unpack_start);
     pipeline.submit();
     tally.frame();
   }
   pipeline.finish();
   video.finish();
-  return seconds_since(start);
+  run.wall_seconds = seconds_since(start);
+  run.cpu_seconds = process_cpu_seconds() - cpu_start;
+  return run;
 }
 
 /// Draws every frame of the clip once and keeps them.
@@ -165,19 +180,20 @@ MovieRow measure_movie(const Clip& clip, const FrameStore& store, const ScratchF
   const std::string name = size_name(clip.settings.width, clip.settings.height);
   const fs::path piped = scratch / ("pipeline_" + name + ".mp4"), alone = scratch / ("alone_" + name + ".mp4");
   MovieRow best;
-  double best_alone = 0, best_unpack = 0;
+  AloneRun best_alone;
   for (int r = 0; r < repeats; ++r) {
-    MovieRow row = run_pipeline(clip, piped, tally);
+    const MovieRow row = run_pipeline(clip, piped, tally);
     if (r == 0 || row.wall_seconds < best.wall_seconds) best = row;
-    double unpack = 0;
-    const double wall = run_encode_alone(clip, store, alone, unpack, tally);
-    if (r == 0 || wall < best_alone) best_alone = wall, best_unpack = unpack;
+    const AloneRun run = run_encode_alone(clip, store, alone, tally);
+    if (r == 0 || run.wall_seconds < best_alone.wall_seconds) best_alone = run;
   }
   best.width = clip.settings.width;
   best.height = clip.settings.height;
   best.fps = clip.settings.fps;
-  best.alone_wall_seconds = best_alone;
-  best.alone_unpack_seconds = best_unpack;
+  best.alone_wall_seconds = best_alone.wall_seconds;
+  best.alone_cpu_seconds = best_alone.cpu_seconds;
+  best.alone_unpack_seconds = best_alone.unpack_seconds;
+  best.stored_bytes = store.bytes();
   best.same_output = same_bytes(piped, alone);
   fs::remove(piped);
   fs::remove(alone);

@@ -66,14 +66,19 @@ struct MovieRow {
   double encode_seconds = 0;      // libavcodec + muxing + finishing the file
   double draw_waited_seconds = 0; // the drawing thread waited for a free buffer
   double encoder_idle_seconds = 0;// the encoder thread waited for a drawn frame
+  double cpu_seconds = 0;         // process CPU time of the pipeline run, all threads
   double alone_wall_seconds = 0;  // encoding the stored frames alone
+  double alone_cpu_seconds = 0;   // process CPU time of that run
   double alone_unpack_seconds = 0;// of which unpacking the stored frames
+  std::size_t stored_bytes = 0;   // the run-length coded frames kept for encoding alone
   std::int64_t bytes = 0;         // size of the MP4
   bool same_output = false;       // both runs wrote byte-identical files
   std::string encoder;            // e.g. "libx264"
   [[nodiscard]] double fps_achieved() const { return static_cast<double>(frames) / wall_seconds; }
   [[nodiscard]] double alone_fps() const { return static_cast<double>(frames) / alone_wall_seconds; }
   [[nodiscard]] double ratio() const { return wall_seconds / alone_wall_seconds; }
+  /// The work drawing adds: on a busy machine the wall ratio is noisy, this much less.
+  [[nodiscard]] double cpu_ratio() const { return cpu_seconds / alone_cpu_seconds; }
 };
 
 /// One size of PNG sequence: ours against Cairo's writer on the same frames.

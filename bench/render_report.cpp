@@ -34,8 +34,8 @@ Verdict png_verdict(const RenderBenchResult& result) {
 std::string render_csv(const RenderBenchResult& result) {
   std::ostringstream out;
   out << "format,width,height,fps,frames,wall_s,frames_per_s,simulate_s,draw_s,convert_s,encode_s,draw_waited_s,"
-         "encoder_idle_s,baseline,baseline_wall_s,baseline_frames_per_s,ratio,unpack_s,bytes_per_frame,"
-         "baseline_bytes_per_frame,same_output,repeats\n";
+         "encoder_idle_s,baseline,baseline_wall_s,baseline_frames_per_s,ratio,cpu_s,baseline_cpu_s,cpu_ratio,unpack_s,"
+         "bytes_per_frame,baseline_bytes_per_frame,same_output,stored_bytes,repeats\n";
   for (const MovieRow& m : result.movies) {
     const double per_frame = static_cast<double>(m.bytes) / static_cast<double>(m.frames);
     out << "mp4," << m.width << ',' << m.height << ',' << m.fps << ',' << m.frames << ',' << csv_number(m.wall_seconds)
@@ -43,17 +43,18 @@ std::string render_csv(const RenderBenchResult& result) {
         << csv_number(m.draw_seconds) << ',' << csv_number(m.convert_seconds) << ',' << csv_number(m.encode_seconds)
         << ',' << csv_number(m.draw_waited_seconds) << ',' << csv_number(m.encoder_idle_seconds) << ",encode alone,"
         << csv_number(m.alone_wall_seconds) << ',' << csv_number(m.alone_fps()) << ',' << csv_number(m.ratio()) << ','
+        << csv_number(m.cpu_seconds) << ',' << csv_number(m.alone_cpu_seconds) << ',' << csv_number(m.cpu_ratio()) << ','
         << csv_number(m.alone_unpack_seconds) << ',' << csv_number(per_frame) << ',' << csv_number(per_frame) << ','
-        << (m.same_output ? "yes" : "no") << ',' << result.repeats << '\n';
+        << (m.same_output ? "yes" : "no") << ',' << m.stored_bytes << ',' << result.repeats << '\n';
   }
   for (const PngRow& p : result.pngs) {
     const auto frames = static_cast<double>(p.frames);
     out << "png," << p.width << ',' << p.height << ",," << p.frames << ',' << csv_number(p.ours_seconds) << ','
         << csv_number(p.ours_fps()) << ",,," << csv_number(p.ours_convert_seconds) << ','
         << csv_number(p.ours_compress_seconds) << ",,,cairo," << csv_number(p.cairo_seconds) << ','
-        << csv_number(p.cairo_fps()) << ',' << csv_number(p.ratio()) << ',' << csv_number(p.unpack_seconds) << ','
+        << csv_number(p.cairo_fps()) << ',' << csv_number(p.ratio()) << ",,,," << csv_number(p.unpack_seconds) << ','
         << csv_number(static_cast<double>(p.ours_bytes) / frames) << ','
-        << csv_number(static_cast<double>(p.cairo_bytes) / frames) << ",,1\n";
+        << csv_number(static_cast<double>(p.cairo_bytes) / frames) << ",,,1\n";
   }
   return out.str();
 }
@@ -84,20 +85,24 @@ std::string render_markdown(const RenderBenchOptions& options, const RenderBench
         "Stage times are per frame; drawing overlaps the encoder, so they add up to more than the wall time. "
         "*Drawing waited* is time the drawing thread found every buffer queued (the encoder is the bottleneck); "
         "*encoder idle* is time the encoder waited for a drawn frame. *Encode alone* feeds the same frames, drawn "
-        "beforehand and kept in memory, through the same queue to the same encoder settings; *same file* says the "
-        "two MP4s are byte-identical.\n\n"
+        "beforehand and kept in memory (run-length coded), through the same queue to the same encoder settings; "
+        "*same file* says the two MP4s are byte-identical. *CPU ratio* is the process CPU time (all threads) of the "
+        "pipeline over that of encoding alone: the work drawing adds, which another process's load hardly "
+        "changes, while the wall-time ratio moves with it.\n\n"
      << "| size | frames | simulate (s) | draw (ms/frame) | convert (ms/frame) | encode (ms/frame) | drawing waited (s) "
-        "| encoder idle (s) | pipeline (s) | pipeline fps | encode alone (s) | encode alone fps | ratio | kB/frame | "
-        "same file |\n"
-     << "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- |\n";
+        "| encoder idle (s) | pipeline (s) | pipeline fps | encode alone (s) | encode alone fps | ratio | CPU ratio | "
+        "kB/frame | same file | stored MB |\n"
+     << "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- "
+        "| ---: |\n";
   for (const MovieRow& m : result.movies)
     md << "| " << size_text(m.width, m.height) << " | " << m.frames << " | " << sig(m.simulate_seconds, 2) << " | "
        << ms_per_frame(m.draw_seconds, m.frames) << " | " << ms_per_frame(m.convert_seconds, m.frames) << " | "
        << ms_per_frame(m.encode_seconds, m.frames) << " | " << sig(m.draw_waited_seconds, 2) << " | "
        << sig(m.encoder_idle_seconds, 2) << " | " << sig(m.wall_seconds) << " | " << sig(m.fps_achieved()) << " | "
        << sig(m.alone_wall_seconds) << " | " << sig(m.alone_fps()) << " | " << sig(m.ratio()) << "x | "
-       << sig(static_cast<double>(m.bytes) / static_cast<double>(m.frames) / 1e3, 2) << " | "
-       << (m.same_output ? "yes" : "NO") << " |\n";
+       << sig(m.cpu_ratio()) << "x | " << sig(static_cast<double>(m.bytes) / static_cast<double>(m.frames) / 1e3, 2)
+       << " | " << (m.same_output ? "yes" : "NO") << " | " << sig(static_cast<double>(m.stored_bytes) / 1e6, 2)
+       << " |\n";
 
   md << "\n## PNG sequence\n\n"
      << "Frames spread evenly over the same clip. Ours is `linkage render --frames`' writer: libspng at zlib level 1 "
@@ -134,7 +139,7 @@ std::vector<std::string> render_bench_lines(const RenderBenchResult& result) {
     lines.push_back("MP4 " + size_text(m.width, m.height) + ": " + std::to_string(m.frames) + " frames, pipeline " +
                     sig(m.fps_achieved()) + " fps (draw " + ms_per_frame(m.draw_seconds, m.frames) + ", convert " +
                     ms_per_frame(m.convert_seconds, m.frames) + ", encode " + ms_per_frame(m.encode_seconds, m.frames) +
-                    " ms/frame), encode alone " + sig(m.alone_fps()) + " fps: ratio " + sig(m.ratio()) +
+                    " ms/frame), encode alone " + sig(m.alone_fps()) + " fps: ratio " + sig(m.ratio()) + " (CPU " + sig(m.cpu_ratio()) + ")" +
                     (m.same_output ? "" : " (the two files differ!)"));
   for (const PngRow& p : result.pngs)
     lines.push_back("PNG " + size_text(p.width, p.height) + ": ours " + sig(p.ours_fps()) + " fps, Cairo's " +

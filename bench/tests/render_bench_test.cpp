@@ -62,7 +62,12 @@ TEST(BenchRender, QuickRunWritesASaneReportAndCleansUp) {
     EXPECT_NEAR(number(row, "ratio"), ratio, 1e-9 * ratio);
     EXPECT_LT(number(row, "unpack_s"), mp4 ? base : std::min(wall, base));
     if (mp4) {
-      for (const char* column : {"simulate_s", "draw_s"}) expect_positive(row, column);
+      for (const char* column : {"simulate_s", "draw_s", "cpu_s", "baseline_cpu_s", "cpu_ratio", "stored_bytes"})
+        expect_positive(row, column);
+      const double cpu_ratio = number(row, "cpu_s") / number(row, "baseline_cpu_s");
+      EXPECT_NEAR(number(row, "cpu_ratio"), cpu_ratio, 1e-9 * cpu_ratio);
+      // Frames kept run-length coded take far less than raw (4 bytes a pixel).
+      EXPECT_LT(number(row, "stored_bytes"), 0.5 * frames * 4 * number(row, "width") * number(row, "height"));
       EXPECT_EQ(row.at("baseline"), "encode alone");
       // Drawing and simulating happen on the pipeline's own thread, inside its wall time.
       EXPECT_LT(number(row, "simulate_s") + number(row, "draw_s"), wall);
