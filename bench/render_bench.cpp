@@ -300,7 +300,7 @@ RenderBenchResult run_render_bench(const RenderBenchOptions& options) {
                                                 : std::vector<Size>{{854, 480}, {1280, 720}, {1920, 1080}};
   const double duration = options.quick ? 2.0 : 10.0;
   const int fps = 30;
-  result.repeats = options.quick ? 1 : 2;
+  result.repeats = options.quick ? 1 : 3;
   const std::size_t png_frames = options.quick ? 10 : 60;
 
   std::vector<Clip> clips;
