@@ -321,8 +321,13 @@ RenderBenchResult run_render_bench(const RenderBenchOptions& options) {
     }
   }
   progress.finish();
+  std::ifstream("/proc/loadavg") >> result.load_average_end;
   write_render_report(options, result);
   return result;
+}
+
+double judged_ratio(const MovieRow& row, const RenderBenchResult& result) {
+  return result.busy() ? row.cpu_ratio() : row.ratio();
 }
 
 const MovieRow* target_movie(const RenderBenchResult& result) {

@@ -17,6 +17,7 @@
 //     frames per second at 1280x720.
 // The two modes of each comparison run alternately, `repeats` times; the fastest run of
 // each counts (another process can only slow a run down).
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -101,7 +102,10 @@ struct RenderBenchResult {
   std::vector<PngRow> pngs;
   int repeats = 1;
   unsigned cores = 1;
-  double load_average = 0;  // 1-minute, at the start
+  double load_average = 0;      // 1-minute, at the start
+  double load_average_end = 0;  // and at the end
+  /// Other processes wanted more than every core: wall times then measure them too.
+  [[nodiscard]] bool busy() const { return std::max(load_average, load_average_end) > static_cast<double>(cores); }
   std::vector<std::filesystem::path> files;
 };
 
@@ -113,6 +117,12 @@ inline constexpr double kMaxPipelineRatio = 1.2, kMinPngRatio = 3.0;
 [[nodiscard]] RenderBenchResult run_render_bench(const RenderBenchOptions& options);
 /// Writes render.csv and render.md into options.out (atomically) and lists them in result.files.
 void write_render_report(const RenderBenchOptions& options, RenderBenchResult& result);
+
+/// The MP4 target's measure: the wall-time ratio, or on a busy machine the CPU ratio.
+/// With the encoder never waiting for a drawing, drawing can slow the pipeline only by
+/// the CPU it takes from the encoder, so on an idle machine the wall ratio stays within
+/// about the CPU ratio; a busy machine's wall times mostly measure the other processes.
+[[nodiscard]] double judged_ratio(const MovieRow& row, const RenderBenchResult& result);
 
 /// The row measured at 1280x720, if any (--quick has none).
 [[nodiscard]] const MovieRow* target_movie(const RenderBenchResult& result);

@@ -15,6 +15,7 @@
 #include <random>
 
 #include "bench/frame_store.hpp"
+#include "bench/render_bench.hpp"
 #include "bench/tests/csv_reader.hpp"
 #include "core/error.hpp"
 #include "support/test_support.hpp"
@@ -147,6 +148,20 @@ TEST(BenchRender, CtrlCIsExit130AndLeavesNothingBehind) {
   for (const auto& e : std::filesystem::directory_iterator(out)) entries.push_back(e.path().filename().string());
   EXPECT_EQ(entries, std::vector<std::string>{"render.md"});
   EXPECT_EQ(test::read_text(out / "render.md"), "an earlier report");
+}
+
+TEST(BenchRender, BusyMachineJudgesTheMp4TargetByCpuTime) {
+  bench::MovieRow row;
+  row.wall_seconds = 14, row.alone_wall_seconds = 10;  // wall ratio 1.4
+  row.cpu_seconds = 11, row.alone_cpu_seconds = 10;    // CPU ratio 1.1
+  bench::RenderBenchResult result;
+  result.cores = 2;
+  result.load_average = 0.5, result.load_average_end = 1.9;
+  EXPECT_FALSE(result.busy());
+  EXPECT_DOUBLE_EQ(bench::judged_ratio(row, result), 1.4);
+  result.load_average_end = 2.5;  // busy by the end
+  EXPECT_TRUE(result.busy());
+  EXPECT_DOUBLE_EQ(bench::judged_ratio(row, result), 1.1);
 }
 
 TEST(FrameStore, GivesBackEveryFrameByteForByte) {
