@@ -39,6 +39,10 @@ template <class Scalar, int N>
 }
 
 /// Hairer's step size controller with an optional PI term.
+///
+/// Its powers cost one `log` and one `exp` per step (the previous error's log is kept),
+/// or, when 1/(q+1) is 1/2^n and there is no PI term (DOP853: err^(1/8)), n square
+/// roots: `pow` twice per step was a noticeable share of a DOPRI5 step.
 template <class Scalar>
 class StepController {
  public:
@@ -48,30 +52,57 @@ class StepController {
         beta_(beta),
         fac_min_(fac_min),
         fac_max_(fac_max),
-        safety_(safety) {}
+        safety_(safety),
+        square_roots_(beta == 0 ? square_roots_for(order + 1) : -1) {}
 
   /// Decides on a step of size h with scaled error err. Returns true to accept; `h_next`
   /// is the size of the next attempt either way.
   bool decide(Scalar err, Scalar h, Scalar& h_next) {
     if (!(err <= Scalar(1))) {  // rejected, or err is NaN
-      const Scalar fac = std::isfinite(err) ? std::pow(err, exponent_) / safety_ : Scalar(1) / fac_min_;
+      const Scalar fac = std::isfinite(err) ? power(err) / safety_ : Scalar(1) / fac_min_;
       h_next = h / std::min(Scalar(1) / fac_min_, fac);
       rejected_last_ = true;
       return false;
     }
-    Scalar fac = std::pow(err, exponent_) / safety_;
-    if (beta_ != 0) fac /= std::pow(err_prev_, beta_);
+    // err^exponent / err_prev^beta, with err_prev's log kept from the last accepted step
+    Scalar fac;
+    if (beta_ == 0) {
+      fac = power(err) / safety_;
+    } else {
+      const Scalar log_err = std::log(std::max(err, Scalar(1e-4)));
+      fac = std::exp(exponent_ * std::log(err) - beta_ * log_err_prev_) / safety_;
+      log_err_prev_ = log_err;
+    }
     fac = std::clamp(fac, Scalar(1) / fac_max_, Scalar(1) / fac_min_);
     h_next = h / fac;
     if (rejected_last_) h_next = std::min(h_next, h);
     rejected_last_ = false;
-    err_prev_ = std::max(err, Scalar(1e-4));
     return true;
   }
 
  private:
+  /// n when p = 2^n (n >= 1), else -1.
+  static int square_roots_for(int p) {
+    int n = 0;
+    while (p > 1 && p % 2 == 0) {
+      p /= 2;
+      ++n;
+    }
+    return p == 1 && n > 0 ? n : -1;
+  }
+
+  /// err^exponent for err > 0 (0 for err = 0).
+  [[nodiscard]] Scalar power(Scalar err) const {
+    if (square_roots_ > 0) {
+      for (int i = 0; i < square_roots_; ++i) err = std::sqrt(err);
+      return err;
+    }
+    return std::exp(exponent_ * std::log(err));
+  }
+
   Scalar exponent_, beta_, fac_min_, fac_max_, safety_;
-  Scalar err_prev_ = Scalar(1e-4);
+  int square_roots_;                            // > 0: power() is that many square roots
+  Scalar log_err_prev_ = std::log(Scalar(1e-4));  // log of max(err, 1e-4) of the last accepted step
   bool rejected_last_ = false;
 };
 
