@@ -15,6 +15,18 @@
 
 namespace linkage {
 
+/// `base` (its m, I, D, g kept) at the given angles and rates.
+[[nodiscard]] inline expr::Env with_angles(expr::Env base, double theta1, double theta2, double theta1_dot,
+                                           double theta2_dot) {
+  base.s1 = std::sin(theta1);
+  base.c1 = std::cos(theta1);
+  base.s2 = std::sin(theta2);
+  base.c2 = std::cos(theta2);
+  base.w1 = theta1_dot;
+  base.w2 = theta2_dot;
+  return base;
+}
+
 /// The Env of a case's expressions at the given angles and rates.
 [[nodiscard]] inline expr::Env make_env(const Params& p, double theta1, double theta2, double theta1_dot,
                                         double theta2_dot) {
@@ -23,13 +35,7 @@ namespace linkage {
   env.I = p.inertia_centroidal();
   env.D = p.pin_offset();
   env.g = p.g;
-  env.s1 = std::sin(theta1);
-  env.c1 = std::cos(theta1);
-  env.s2 = std::sin(theta2);
-  env.c2 = std::cos(theta2);
-  env.w1 = theta1_dot;
-  env.w2 = theta2_dot;
-  return env;
+  return with_angles(env, theta1, theta2, theta1_dot, theta2_dot);
 }
 
 template <class Case>

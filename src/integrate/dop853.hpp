@@ -14,6 +14,7 @@
 //   y(s) = y0 + theta (F0 + theta1 (F1 + theta (F2 + theta1 (F3 + theta (F4 + theta1 (F5 + theta F6))))))
 //   F0 = y1 - y0,  F1 = h k1 - F0,  F2 = 2 F0 - h (k1 + k13),  F3..F6 = h sum_j D_rj k_j (j = 1..16)
 #include <array>
+#include <utility>
 
 #include "integrate/adaptive_rk.hpp"
 #include "integrate/tableau.hpp"
@@ -145,14 +146,9 @@ struct Dop853Method {
     r[0] = y1 - y0;
     r[1] = h * k[0] - r[0];
     r[2] = Scalar(2) * r[0] - h * (k[0] + k[12]);
-    weighted_sum<d[0]>(k, scratch);
-    r[3] = h * scratch;
-    weighted_sum<d[1]>(k, scratch);
-    r[4] = h * scratch;
-    weighted_sum<d[2]>(k, scratch);
-    r[5] = h * scratch;
-    weighted_sum<d[3]>(k, scratch);
-    r[6] = h * scratch;
+    [&]<std::size_t... R>(std::index_sequence<R...>) {
+      ((weighted_sum<d[R]>(k, scratch), r[3 + R] = h * scratch), ...);  // F3..F6
+    }(std::make_index_sequence<d.size()>{});
     return 3;
   }
 

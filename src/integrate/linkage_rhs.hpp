@@ -30,18 +30,6 @@
 
 namespace linkage {
 
-/// `base` (m, I, D, g from make_env) at the given angles and rates.
-[[nodiscard]] inline expr::Env with_angles(expr::Env base, double theta1, double theta2, double theta1_dot,
-                                           double theta2_dot) {
-  base.s1 = std::sin(theta1);
-  base.c1 = std::cos(theta1);
-  base.s2 = std::sin(theta2);
-  base.c2 = std::cos(theta2);
-  base.w1 = theta1_dot;
-  base.w2 = theta2_dot;
-  return base;
-}
-
 /// The number of values a case integrates: 8 for Cases 2 and 3, 12 for Case 1.
 template <class Case>
 inline constexpr int state_size = Case::size == 8 ? 12 : 8;
