@@ -48,6 +48,25 @@ BENCHMARK(BM_RhsCase2)->Name("rhs/case2");
 BENCHMARK(BM_RhsCase3)->Name("rhs/case3");  // what Simulation steps with: the closed form
 BENCHMARK(BM_RhsCase3Definition)->Name("rhs/case3_definition");
 
+// The same closed form with each input waiting for the previous output, as an explicit
+// Runge-Kutta method's stages do (stage i needs k_(i-1)): its latency, not its
+// throughput. `+ 0 * dy` is kept by the compiler (no fast-math) and costs one multiply
+// and add on the chain. Per-evaluation integrator overhead is the step time per
+// evaluation minus this.
+void BM_RhsCase3Chained(benchmark::State& state) {
+  const GeneralizedRhs<Case3> f{Params{}};
+  const auto ys = random_states<8>();
+  Vec<8> dy = Vec<8>::Zero(), y;
+  std::size_t k = 0;
+  for (auto _ : state) {
+    y = ys[k] + 0.0 * dy;
+    f(0.0, y, dy);
+    k = (k + 1) % kStates;
+  }
+  benchmark::DoNotOptimize(dy);
+}
+BENCHMARK(BM_RhsCase3Chained)->Name("rhs/case3_chained");
+
 void BM_RhsCase3UserLu(benchmark::State& state) {
   const UserConstants c{Params{}};
   const auto ys = random_states<8>();
