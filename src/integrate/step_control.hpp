@@ -69,9 +69,9 @@ class StepController {
     if (beta_ == 0) {
       fac = power(err) / safety_;
     } else {
-      const Scalar log_err = std::log(std::max(err, Scalar(1e-4)));
-      fac = std::exp(exponent_ * std::log(err) - beta_ * log_err_prev_) / safety_;
-      log_err_prev_ = log_err;
+      const Scalar log_err = std::log(err);
+      fac = std::exp(exponent_ * log_err - beta_ * log_err_prev_) / safety_;
+      log_err_prev_ = std::max(log_err, kLogErrFloor);
     }
     fac = std::clamp(fac, Scalar(1) / fac_max_, Scalar(1) / fac_min_);
     h_next = h / fac;
@@ -102,7 +102,8 @@ class StepController {
 
   Scalar exponent_, beta_, fac_min_, fac_max_, safety_;
   int square_roots_;                            // > 0: power() is that many square roots
-  Scalar log_err_prev_ = std::log(Scalar(1e-4));  // log of max(err, 1e-4) of the last accepted step
+  static constexpr Scalar kLogErrFloor = Scalar(-9.21034037197618273607196581873745L);  // log(1e-4): err_prev >= 1e-4
+  Scalar log_err_prev_ = kLogErrFloor;  // log of the last accepted step's err_prev
   bool rejected_last_ = false;
 };
 
