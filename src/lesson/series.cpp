@@ -11,11 +11,6 @@ std::optional<std::size_t> find_series(std::string_view name) {
   return std::nullopt;
 }
 
-namespace {
-Vec2 com_of(const BodyState& s) { return {(s.x1 + s.x2) / 2, (s.y1 + s.y2) / 2}; }
-Vec2 com_velocity_of(const BodyState& s) { return {(s.x1_dot + s.x2_dot) / 2, (s.y1_dot + s.y2_dot) / 2}; }
-}  // namespace
-
 SeriesOrigin SeriesOrigin::at(const Params& p, const BodyState& initial) {
   const Invariants inv = invariants(p, initial);
   SeriesOrigin o;
@@ -24,8 +19,8 @@ SeriesOrigin SeriesOrigin::at(const Params& p, const BodyState& initial) {
   o.energy_scale = linkage::energy_scale(p, initial);
   o.momentum0 = inv.momentum;
   o.angular_momentum0 = inv.angular_momentum;
-  o.com0 = com_of(initial);
-  o.com_velocity0 = com_velocity_of(initial);
+  o.com0 = system_com(initial);
+  o.com_velocity0 = system_com_velocity(initial);
   return o;
 }
 
@@ -50,11 +45,11 @@ double series_value(std::size_t index, const SeriesOrigin& o, double t, const Bo
     const Vec2 pin = pin_position(p, s.x1, s.y1, s.theta1);
     return name == "x_P" ? pin.x() : pin.y();
   }
-  const Vec2 com = com_of(s);
+  const Vec2 com = system_com(s);
   if (name == "x_com") return com.x();
   if (name == "y_com") return com.y();
-  if (name == "x_com_dot") return com_velocity_of(s).x();
-  if (name == "y_com_dot") return com_velocity_of(s).y();
+  if (name == "x_com_dot") return system_com_velocity(s).x();
+  if (name == "y_com_dot") return system_com_velocity(s).y();
   if (name == "x1_from_com") return s.x1 - com.x();
   if (name == "y1_from_com") return s.y1 - com.y();
   if (name == "com_parabola_error") {

@@ -43,6 +43,9 @@ Invariants invariants(const Params& p, const BodyState& s) {
   return r;
 }
 
+Vec2 system_com(const BodyState& s) { return {0.5 * (s.x1 + s.x2), 0.5 * (s.y1 + s.y2)}; }
+Vec2 system_com_velocity(const BodyState& s) { return {0.5 * (s.x1_dot + s.x2_dot), 0.5 * (s.y1_dot + s.y2_dot)}; }
+
 ConstraintError constraint_error(const Params& p, const BodyState& s) {
   const double D = p.pin_offset();
   const double c1 = std::cos(s.theta1), s1 = std::sin(s.theta1);

@@ -27,6 +27,11 @@ struct Invariants {
 };
 [[nodiscard]] Invariants invariants(const Params& p, const BodyState& s);
 
+/// The system's centre of mass G = (C1 + C2) / 2.
+[[nodiscard]] Vec2 system_com(const BodyState& s);
+/// Its velocity.
+[[nodiscard]] Vec2 system_com_velocity(const BodyState& s);
+
 /// Constraint residuals of a Case 1 state: C = C2 - (C1 + D(e1 + e2)) and its rate.
 struct ConstraintError {
   Vec2 position = Vec2::Zero();

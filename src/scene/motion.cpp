@@ -19,8 +19,6 @@ std::array<Vec2, 4> block_corners(const Params& p, double x, double y, double th
   return {c + along - across, c + along + across, c - along + across, c - along - across};
 }
 
-Vec2 system_com(const BodyState& s) { return {0.5 * (s.x1 + s.x2), 0.5 * (s.y1 + s.y2)}; }
-Vec2 system_com_velocity(const BodyState& s) { return {0.5 * (s.x1_dot + s.x2_dot), 0.5 * (s.y1_dot + s.y2_dot)}; }
 
 Bounds motion_bounds(const Params& p, const Motion& motion) {
   Bounds bounds;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "model/kinematics.hpp"  // system_com, used with the motion
 #include "model/params.hpp"
 #include "model/state.hpp"
 #include "scene/draw_list.hpp"
@@ -41,10 +42,6 @@ struct Motion {
 /// The four corners of a block of the given size, centred at (x, y), turned by theta,
 /// counter-clockwise.
 [[nodiscard]] std::array<Vec2, 4> block_corners(const Params& p, double x, double y, double theta);
-/// The system's centre of mass G = (C1 + C2) / 2.
-[[nodiscard]] Vec2 system_com(const BodyState& s);
-/// Its velocity.
-[[nodiscard]] Vec2 system_com_velocity(const BodyState& s);
 
 /// An axis-aligned box in metres.
 struct Bounds {
