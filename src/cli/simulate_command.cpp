@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "cli/commands.hpp"
 #include "cli/input_options.hpp"
 #include "cli/simulation_flags.hpp"
@@ -18,7 +20,6 @@
 #include "core/progress.hpp"
 #include "integrate/columns.hpp"
 #include "integrate/simulation.hpp"
-#include "model/kinematics.hpp"
 
 namespace linkage::cli {
 namespace {
@@ -108,52 +109,48 @@ class TableWriter {
   long rows_ = 0;
 };
 
-std::string json_string(std::string_view s) { return "\"" + std::string(s) + "\""; }
+/// "key": value for the lines around the rows: one object per line, keys in order.
+std::string json_line(const std::string& key, const nlohmann::ordered_json& value) {
+  return "  " + nlohmann::json(key).dump() + ": " + value.dump();
+}
 
 std::string json_header(const Inputs& inputs, const SimulationOptions& s, double every,
                         const std::vector<Column>& columns) {
-  std::string j = "{\n  \"parameters\": {";
-  bool first_param = true, first_state = true;
-  std::string state = "  \"initial_state\": {";
-  for (const InputKey& key : kInputKeys) {
-    const std::string entry = json_string(key.key) + ": " + format_roundtrip(inputs.value(key));
-    if (key.param != nullptr) {
-      j += (first_param ? "" : ", ") + entry;
-      first_param = false;
-    } else {
-      state += (first_state ? "" : ", ") + entry;
-      first_state = false;
-    }
+  nlohmann::ordered_json params = nlohmann::ordered_json::object(), state = nlohmann::ordered_json::object();
+  for (const InputKey& key : kInputKeys) (key.param != nullptr ? params : state)[std::string(key.key)] = inputs.value(key);
+  const nlohmann::ordered_json options = {{"case", s.case_id},
+                                          {"integrator", info(s.integrator).name},
+                                          {"dt", s.dt},
+                                          {"rtol", s.rtol},
+                                          {"atol", s.atol},
+                                          {"duration", s.duration},
+                                          {"every", every},
+                                          {"stabilize", name(s.stabilization)},
+                                          {"baumgarte_alpha", s.baumgarte_alpha},
+                                          {"baumgarte_beta", s.baumgarte_beta}};
+  nlohmann::ordered_json names = nlohmann::ordered_json::array(), units = nlohmann::ordered_json::object();
+  for (const Column c : columns) {
+    names.push_back(info(c).name);
+    units[std::string(info(c).name)] = info(c).unit;
   }
-  j += "},\n" + state + "},\n";
-  j += "  \"options\": {\"case\": " + std::to_string(s.case_id) +
-       ", \"integrator\": " + json_string(info(s.integrator).name) + ", \"dt\": " + format_roundtrip(s.dt) +
-       ", \"rtol\": " + format_roundtrip(s.rtol) + ", \"atol\": " + format_roundtrip(s.atol) +
-       ", \"duration\": " + format_roundtrip(s.duration) + ", \"every\": " + format_roundtrip(every) +
-       ", \"stabilize\": " + json_string(name(s.stabilization)) +
-       ", \"baumgarte_alpha\": " + format_roundtrip(s.baumgarte_alpha) +
-       ", \"baumgarte_beta\": " + format_roundtrip(s.baumgarte_beta) + "},\n";
-  std::string names, units;
-  for (std::size_t i = 0; i < columns.size(); ++i) {
-    names += (i ? ", " : "") + json_string(info(columns[i]).name);
-    units += (i ? ", " : "") + json_string(info(columns[i]).name) + ": " + json_string(info(columns[i]).unit);
-  }
-  return j + "  \"columns\": [" + names + "],\n  \"units\": {" + units + "},\n";
+  return "{\n" + json_line("parameters", params) + ",\n" + json_line("initial_state", state) + ",\n" +
+         json_line("options", options) + ",\n" + json_line("columns", names) + ",\n" + json_line("units", units) +
+         ",\n";
 }
 
-std::string json_summary(const SimulationStats& st, double energy_scale, double wall) {
-  return "  \"summary\": {\"steps_accepted\": " + std::to_string(st.steps_accepted) +
-         ", \"steps_rejected\": " + std::to_string(st.steps_rejected) +
-         ", \"rhs_evaluations\": " + std::to_string(st.rhs_evaluations) +
-         ", \"force_evaluations\": " + std::to_string(st.force_evaluations) +
-         ", \"max_energy_error\": " + format_roundtrip(st.max_energy_error) +
-         ", \"energy_scale\": " + format_roundtrip(energy_scale) +
-         ", \"max_constraint_error\": " + format_roundtrip(st.max_constraint_error) +
-         ", \"wall_seconds\": " + format_roundtrip(wall) + "}\n}\n";
+std::string json_summary(const SimulationStats& st, double wall) {
+  const nlohmann::ordered_json summary = {{"steps_accepted", st.steps_accepted},
+                                          {"steps_rejected", st.steps_rejected},
+                                          {"rhs_evaluations", st.rhs_evaluations},
+                                          {"force_evaluations", st.force_evaluations},
+                                          {"max_energy_error", st.max_energy_error},
+                                          {"energy_scale", st.energy_scale},
+                                          {"max_constraint_error", st.max_constraint_error},
+                                          {"wall_seconds", wall}};
+  return json_line("summary", summary) + "\n}\n";
 }
 
-void print_summary(const SimulationOptions& s, long rows, const SimulationStats& st, double energy_scale,
-                   double wall) {
+void print_summary(const SimulationOptions& s, long rows, const SimulationStats& st, double wall) {
   const IntegratorInfo& integrator = info(s.integrator);
   const std::string method = integrator.adaptive ? std::string(integrator.name) + " (rtol " + format_roundtrip(s.rtol) +
                                                        ", atol " + format_roundtrip(s.atol) + ")"
@@ -166,7 +163,7 @@ void print_summary(const SimulationOptions& s, long rows, const SimulationStats&
                s.case_id, method.c_str(), std::string(name(s.stabilization)).c_str(),
                format_roundtrip(s.duration).c_str(), rows, static_cast<long long>(st.steps_accepted),
                static_cast<long long>(st.steps_rejected), static_cast<long long>(st.rhs_evaluations),
-               format_significant(st.max_energy_error, 3).c_str(), format_significant(energy_scale, 4).c_str(),
+               format_significant(st.max_energy_error, 3).c_str(), format_significant(st.energy_scale, 4).c_str(),
                format_significant(st.max_constraint_error, 3).c_str(), format_significant(wall, 3).c_str(),
                format_significant(st.wall_seconds, 3).c_str());
 }
@@ -201,12 +198,11 @@ void run_simulate(const SimulateOptions& o) {
     throw_if_interrupted();
   }
   progress.finish();
-  const double scale = energy_scale(inputs.params(), body_state(inputs.params(), inputs.state()));
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  writer.end(json_summary(simulation.stats(), scale, wall));
+  writer.end(json_summary(simulation.stats(), wall));
   if (file) file->commit();
   std::fflush(stdout);
-  print_summary(s, samples.count, simulation.stats(), scale, wall);
+  print_summary(s, samples.count, simulation.stats(), wall);
 }
 
 }  // namespace

@@ -134,7 +134,7 @@ class Run {
       : params(p), options(o), start(body_state(p, initial)) {
     const Invariants inv = invariants(p, start);
     energy0 = inv.energy;
-    scale = energy_scale(p, start);
+    stats.energy_scale = energy_scale(p, start);
   }
   Run(const Run&) = delete;
   Run& operator=(const Run&) = delete;
@@ -148,7 +148,7 @@ class Run {
   Params params;
   SimulationOptions options;
   BodyState start;
-  double energy0 = 0, scale = 1;
+  double energy0 = 0;
   double last_t = 0;
   SimulationStats stats;
 };
@@ -406,7 +406,7 @@ BodyState Simulation::state_at(double t) {
   run.stats.steps_accepted = c.steps_accepted;
   run.stats.steps_rejected = c.steps_rejected;
   run.stats.rhs_evaluations = c.rhs_evaluations;
-  const double energy_error = std::fabs(invariants(run.params, s).energy - run.energy0) / run.scale;
+  const double energy_error = std::fabs(invariants(run.params, s).energy - run.energy0) / run.stats.energy_scale;
   const double constraint = constraint_error(run.params, s).position.norm();
   run.stats.max_energy_error = std::max(run.stats.max_energy_error, energy_error);
   run.stats.max_constraint_error = std::max(run.stats.max_constraint_error, constraint);

@@ -54,6 +54,7 @@ struct SimulationStats {
   std::int64_t steps_rejected = 0;
   std::int64_t rhs_evaluations = 0;
   std::int64_t force_evaluations = 0;         // pin-force solves done for output/drawing
+  double energy_scale = 0;                    // J, model/kinematics energy_scale at the start
   double max_energy_error = 0;                // |E - E0| / energy_scale, over samples
   double max_constraint_error = 0;            // m, |C| over samples (Case 1)
   double wall_seconds = 0;                    // time spent in state_at() and dynamics()
