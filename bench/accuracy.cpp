@@ -227,7 +227,7 @@ AccuracyResult run_accuracy(const AccuracyOptions& options) {
   validate(options);
   const std::vector<Method> methods = selected_methods(options);
   if (methods.empty()) throw Error::input("--integrators: none of the chosen integrators runs the chosen --cases");
-  prepare_output_folder(options.out, "--out");
+  prepare_output_folder(options.out, "out");
   const SweepLimits limits = sweep_limits(options.quick);
 
   AccuracyResult result;

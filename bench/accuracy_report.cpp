@@ -198,7 +198,7 @@ void write_plot(const ScenarioResult& s, const std::vector<Curve>& chosen, const
   for (const char* ext : {".png", ".svg"}) {
     fs::path target = stem;
     target += ext;
-    (void)plot::write(p, target, canvas, "--out");
+    (void)plot::write(p, target, canvas, "out");
     result.files.push_back(target);
   }
 }
@@ -209,17 +209,7 @@ std::string csv_number(double value) { return std::isfinite(value) ? format_roun
 
 Clock judging_clock(const AccuracyResult& result) { return result.busy() ? Clock::cpu : Clock::wall; }
 
-void prepare_output_folder(const fs::path& dir, const std::string& origin) {
-  std::error_code ec;
-  if (fs::is_directory(dir, ec)) {
-    require_writable_directory(dir, origin);
-    return;
-  }
-  if (fs::exists(dir, ec)) throw Error::input(origin + ": '" + dir.string() + "' exists and is not a folder");
-  const fs::path parent = dir.parent_path().empty() ? fs::path(".") : dir.parent_path();
-  require_writable_directory(parent, origin);
-  if (!fs::create_directory(dir, ec)) throw Error::input(origin + ": cannot create folder '" + dir.string() + "'");
-}
+void prepare_output_folder(const fs::path& dir, const std::string& origin) { ensure_directory(dir, origin); }
 
 std::string accuracy_command(const AccuracyOptions& o) {
   std::string cmd = "linkage bench accuracy --scenario " + join(o.scenarios) + " --cases " + join_ints(o.cases);
@@ -232,7 +222,7 @@ std::string accuracy_command(const AccuracyOptions& o) {
 
 void write_accuracy_report(const AccuracyOptions& options, AccuracyResult& result) {
   const fs::path csv_path = options.out / "accuracy.csv";
-  write_file_atomically(csv_path, csv(result), "--out");
+  write_file_atomically(csv_path, csv(result), "out");
   result.files.push_back(csv_path);
   for (const ScenarioResult& s : result.scenarios) {
     const std::vector<Curve> all = curves(s);
@@ -250,7 +240,7 @@ void write_accuracy_report(const AccuracyOptions& options, AccuracyResult& resul
                  "Work-precision, scenario " + s.scenario.name + ": Case 3 against the peers", result);
   }
   const fs::path md_path = options.out / "accuracy.md";
-  write_file_atomically(md_path, markdown(options, result), "--out");
+  write_file_atomically(md_path, markdown(options, result), "out");
   result.files.push_back(md_path);
 }
 

@@ -94,44 +94,26 @@ struct Tally {
   }
 };
 
-VideoOptions video_options(const RenderSettings& s) {
-  VideoOptions v;  // the encoder settings `linkage render` uses
-  v.width = s.width;
-  v.height = s.height;
-  v.fps = s.fps;
-  v.origin = "--out";
-  return v;
-}
-
-/// One run of the `linkage render` pipeline into `target`, timed wall to wall.
-MovieRow run_pipeline(const Clip& clip, const fs::path& target, Tally& tally) {
+/// One run of the render pipeline into `target`, timed wall to wall.
+MovieRow run_pipeline(Clip clip, const fs::path& target, Tally& tally) {
+  clip.out = target;
   MovieRow row;
   const double cpu_start = process_cpu_seconds();
   const auto start = Clock::now();
-  const Motion motion = simulate_clip(clip);
-  row.simulate_seconds = seconds_since(start);
-  ClipRenderer renderer(clip.params, motion, clip.settings, clip.theme, clip.run);
-  VideoWriter video(target, video_options(clip.settings));
-  FramePipeline pipeline(clip.settings.width, clip.settings.height, [&](const Frame& frame) { video.write(frame); });
-  const long count = clip.settings.frame_count();
-  for (long k = 0; k < count; ++k) {
-    Frame& frame = pipeline.acquire();
-    renderer.draw(static_cast<std::size_t>(k), frame);
-    pipeline.submit();
-    tally.frame();
-  }
-  pipeline.finish();
-  video.finish();
+  const ClipResult result = produce_clip(clip, [&](ClipStage stage, long /*done*/, long /*total*/) {
+    if (stage == ClipStage::draw) tally.frame();
+  });
   row.wall_seconds = seconds_since(start);
   row.cpu_seconds = process_cpu_seconds() - cpu_start;
-  row.frames = count;
-  row.draw_seconds = renderer.stats().draw_seconds;
-  row.convert_seconds = video.stats().convert_seconds;
-  row.encode_seconds = video.stats().encode_seconds + video.stats().finish_seconds;
-  row.draw_waited_seconds = pipeline.stats().producer_wait_seconds;
-  row.encoder_idle_seconds = pipeline.stats().consumer_idle_seconds;
-  row.bytes = video.stats().bytes;
-  row.encoder = video.encoder_name();
+  row.frames = result.stats.frames_drawn;
+  row.simulate_seconds = result.stats.simulate_seconds;
+  row.draw_seconds = result.stats.draw_seconds;
+  row.convert_seconds = result.stats.convert_seconds;
+  row.encode_seconds = result.stats.encode_seconds;
+  row.draw_waited_seconds = result.draw_waited_seconds;
+  row.encoder_idle_seconds = result.encoder_idle_seconds;
+  row.bytes = result.video_bytes;
+  row.encoder = result.encoder;
   return row;
 }
 
@@ -144,7 +126,7 @@ AloneRun run_encode_alone(const Clip& clip, const FrameStore& store, const fs::p
   AloneRun run;
   const double cpu_start = process_cpu_seconds();
   const auto start = Clock::now();
-  VideoWriter video(target, video_options(clip.settings));
+  VideoWriter video(target, clip_video_options(clip.settings));
   FramePipeline pipeline(clip.settings.width, clip.settings.height, [&](const Frame& frame) { video.write(frame); });
   for (std::size_t k = 0; k < store.size(); ++k) {
     Frame& frame = pipeline.acquire();
@@ -164,7 +146,7 @@ AloneRun run_encode_alone(const Clip& clip, const FrameStore& store, const fs::p
 /// Draws every frame of the clip once and keeps them.
 FrameStore predraw(const Clip& clip, Tally& tally) {
   const Motion motion = simulate_clip(clip);
-  ClipRenderer renderer(clip.params, motion, clip.settings, clip.theme, clip.run);
+  ClipRenderer renderer(clip.inputs.params(), motion, clip.settings, clip.theme, run_label(clip.simulation));
   FrameStore store(clip.settings.width, clip.settings.height);
   Frame frame(clip.settings.width, clip.settings.height);
   for (long k = 0; k < clip.settings.frame_count(); ++k) {
@@ -222,7 +204,7 @@ PngRow measure_png(const FrameStore& store, int width, int height, std::size_t f
   fs::create_directory(ours_folder);
   {
     const auto start = Clock::now();
-    PngSequenceWriter writer(ours_folder, width, height, "--out", PngOptions{}, 2, row.frames);
+    PngSequenceWriter writer(ours_folder, width, height, "out", PngOptions{}, 2, row.frames);
     for (const std::size_t k : picks) {
       const auto unpack_start = Clock::now();
       store.unpack(k, frame);
@@ -251,7 +233,7 @@ PngRow measure_png(const FrameStore& store, int width, int height, std::size_t f
       store.unpack(picks[i], frame);
       cairo_surface_mark_dirty(surface.get());
       std::snprintf(file.data(), file.size(), "frame_%05zu.png", i);
-      AtomicFile target(cairo_folder / file.data(), "--out", true);
+      AtomicFile target(cairo_folder / file.data(), "out", true);
       const cairo_status_t status = cairo_surface_write_to_png(surface.get(), target.temp_path().c_str());
       if (status != CAIRO_STATUS_SUCCESS)
         throw Error::failure("cairo_surface_write_to_png: " + std::string(cairo_status_to_string(status)));
@@ -270,16 +252,17 @@ PngRow measure_png(const FrameStore& store, int width, int height, std::size_t f
 
 Clip example_clip(int width, int height, int fps, double duration, const fs::path& assets) {
   const Scenario& example = find_scenario("example", "scenario");
-  Clip clip{example.params, example.initial, {}, {}, load_theme("light", assets, "--theme"), {}};
+  Clip clip;
+  for (const InputKey& key : kInputKeys)
+    clip.inputs.set(key, key.param != nullptr ? example.params.*key.param : example.initial.*key.state, "scenario");
+  clip.theme = load_theme("light", assets, "theme");
   clip.settings.width = width;
   clip.settings.height = height;
   clip.settings.fps = fps;
   clip.settings.duration = duration;
-  clip.settings.validate();
   clip.simulation.duration = duration;
+  clip.settings.validate();
   clip.simulation.validate();
-  clip.run = "Case " + std::to_string(clip.simulation.case_id) + " \u00b7 " +
-             std::string(info(clip.simulation.integrator).name);
   return clip;
 }
 
@@ -287,12 +270,12 @@ Motion simulate_clip(const Clip& clip) {
   const long count = clip.settings.frame_count();
   std::vector<double> times(static_cast<std::size_t>(count));
   for (long k = 0; k < count; ++k) times[static_cast<std::size_t>(k)] = clip.settings.frame_time(k);
-  Simulation simulation(clip.params, clip.initial, clip.simulation);
+  Simulation simulation(clip.inputs.params(), clip.inputs.state(), clip.simulation);
   return sample_motion(simulation, times, clip.settings.elements.has(Element::pin_force));
 }
 
 RenderBenchResult run_render_bench(const RenderBenchOptions& options) {
-  prepare_output_folder(options.out, "--out");
+  prepare_output_folder(options.out, "out");
   RenderBenchResult result;
   result.cores = std::max(1u, std::thread::hardware_concurrency());
   std::ifstream("/proc/loadavg") >> result.load_average;

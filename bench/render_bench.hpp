@@ -2,10 +2,10 @@
 // `linkage bench render`: rendering throughput, measured the way `linkage render` works.
 //
 //   MP4, per size (854x480, 1280x720, 1920x1080; 10 s of motion at 30 fps):
-//     pipeline      what `linkage render --out clip.mp4` does: simulate, draw on this
-//                   thread while the encoder thread converts (libswscale) and encodes
-//                   (libavcodec) through FramePipeline; timed wall to wall, with the time
-//                   of each stage;
+//     pipeline      produce_clip() (src/pipeline), the very call `linkage render --out
+//                   clip.mp4` makes: simulate, draw on this thread while the encoder
+//                   thread converts (libswscale) and encodes (libavcodec) through
+//                   FramePipeline; timed wall to wall, with the time of each stage;
 //     encode alone  the same frames, drawn beforehand and kept in memory (FrameStore),
 //                   fed through the same FramePipeline to the same encoder settings: the
 //                   encoder's own speed. The two MP4s must be byte-identical, which proves
@@ -24,29 +24,16 @@
 #include <string>
 #include <vector>
 
-#include "integrate/simulation.hpp"
-#include "model/params.hpp"
-#include "model/state.hpp"
-#include "render/settings.hpp"
-#include "render/theme.hpp"
+#include "pipeline/clip.hpp"
 #include "scene/motion.hpp"
 
 namespace linkage::bench {
 
-/// The clip `linkage render` makes by default (the spec's example, Case 3, DOP853, the
-/// default elements, camera and light theme) at a given size, rate and duration.
-struct Clip {
-  Params params;
-  State initial;
-  SimulationOptions simulation;
-  RenderSettings settings;
-  Theme theme;
-  std::string run;  // the HUD's "Case 3 · dop853"
-};
-
-/// `assets` as for load_theme (empty: the palettes built into the binary).
+/// The clip the render command makes by default (the spec's example, Case 3, DOP853, the
+/// default elements, camera and light theme) at a given size, rate and duration, with no
+/// output set. `assets` as for load_theme (empty: the palettes built into the binary).
 [[nodiscard]] Clip example_clip(int width, int height, int fps, double duration, const std::filesystem::path& assets = {});
-/// The clip's motion at every frame time, as `linkage render` samples it.
+/// The clip's motion at every frame time, as the pipeline samples it.
 [[nodiscard]] Motion simulate_clip(const Clip& clip);
 
 struct RenderBenchOptions {

@@ -141,9 +141,9 @@ std::string render_markdown(const RenderBenchOptions& options, const RenderBench
 }  // namespace
 
 void write_render_report(const RenderBenchOptions& options, RenderBenchResult& result) {
-  write_file_atomically(options.out / "render.csv", render_csv(result), "--out");
+  write_file_atomically(options.out / "render.csv", render_csv(result), "out");
   result.files.push_back(options.out / "render.csv");
-  write_file_atomically(options.out / "render.md", render_markdown(options, result), "--out");
+  write_file_atomically(options.out / "render.md", render_markdown(options, result), "out");
   result.files.push_back(options.out / "render.md");
 }
 

@@ -43,7 +43,7 @@ std::string scenario_names() {
 const Scenario& find_scenario(std::string_view name, const std::string& origin) {
   for (const Scenario& s : scenarios())
     if (s.name == name) return s;
-  throw Error::input(origin + ": '" + std::string(name) + "' is not a scenario; valid: " + scenario_names());
+  throw Error::invalid(origin, "'" + std::string(name) + "' is not a scenario; valid: " + scenario_names());
 }
 
 }  // namespace linkage::bench

@@ -295,7 +295,7 @@ void write_plot(const plot::Plot& p, const fs::path& stem, StressSummary& summar
   for (const char* ext : {".png", ".svg"}) {
     fs::path target = stem;
     target += ext;
-    (void)plot::write(p, target, plot::Canvas{1100, 650, 14}, "--out");
+    (void)plot::write(p, target, plot::Canvas{1100, 650, 14}, "out");
     summary.files.push_back(target);
   }
 }
@@ -328,7 +328,7 @@ std::string tracks_table(const std::vector<Track>& tracks) {
 }  // namespace
 
 StressSummary run_stress(const StressOptions& options) {
-  prepare_output_folder(options.out, "--out");
+  prepare_output_folder(options.out, "out");
   StressSummary summary;
   const bool quick = options.quick;
   const Scenario& example = find_scenario("example", "stress");
@@ -392,8 +392,8 @@ StressSummary run_stress(const StressOptions& options) {
   progress.finish();
 
   // --- files
-  write_file_atomically(options.out / "stress_long_runs.csv", tracks_csv(long_runs), "--out");
-  write_file_atomically(options.out / "stress_drift.csv", tracks_csv(drift), "--out");
+  write_file_atomically(options.out / "stress_long_runs.csv", tracks_csv(long_runs), "out");
+  write_file_atomically(options.out / "stress_drift.csv", tracks_csv(drift), "out");
   summary.files.push_back(options.out / "stress_long_runs.csv");
   summary.files.push_back(options.out / "stress_drift.csv");
   {
@@ -402,7 +402,7 @@ StressSummary run_stress(const StressOptions& options) {
     for (const StableStep& s : steps)
       csv << s.case_id << ',' << info(s.integrator).name << ',' << csv_number(s.largest_stable) << ','
           << csv_number(s.smallest_unstable) << ",\"" << s.unstable_because << "\"\n";
-    write_file_atomically(options.out / "stress_stable_step.csv", csv.str(), "--out");
+    write_file_atomically(options.out / "stress_stable_step.csv", csv.str(), "out");
     summary.files.push_back(options.out / "stress_stable_step.csv");
   }
   {
@@ -413,7 +413,7 @@ StressSummary run_stress(const StressOptions& options) {
       csv << '"' << r.what << "\"," << r.case_id << ',' << csv_number(r.condition) << ','
           << csv_number(r.condition_scaled) << ',' << csv_number(r.block_error) << ',' << csv_number(r.lu_error)
           << ',' << csv_number(r.truth_error) << ",\"" << r.tool << "\"\n";
-    write_file_atomically(options.out / "stress_extremes.csv", csv.str(), "--out");
+    write_file_atomically(options.out / "stress_extremes.csv", csv.str(), "out");
     summary.files.push_back(options.out / "stress_extremes.csv");
   }
 
@@ -467,7 +467,7 @@ StressSummary run_stress(const StressOptions& options) {
        << r.tool << " |\n";
   md << "\n## Case 1 constraint drift (scenario fast over " << sig(drift_duration) << " s, DOP853 at 1e-8)\n\n"
      << "![drift](stress_drift.svg)\n\n" << tracks_table(drift) << "\n";
-  write_file_atomically(options.out / "stress.md", md.str(), "--out");
+  write_file_atomically(options.out / "stress.md", md.str(), "out");
   summary.files.push_back(options.out / "stress.md");
 
   for (const StableStep& s : steps)

@@ -37,7 +37,7 @@ std::filesystem::path scratch(const std::string& name) {
 void BM_DrawFrame(benchmark::State& state) {
   const Clip clip = example_clip(1280, 720, 30, 10.0);
   const Motion motion = simulate_clip(clip);
-  ClipRenderer renderer(clip.params, motion, clip.settings, clip.theme, clip.run);
+  ClipRenderer renderer(clip.inputs.params(), motion, clip.settings, clip.theme, run_label(clip.simulation));
   Frame frame(clip.settings.width, clip.settings.height);
   std::size_t k = 0;
   for (auto _ : state) {

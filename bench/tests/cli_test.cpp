@@ -100,9 +100,11 @@ TEST(BenchAccuracy, BadInputIsAOneLineErrorAndWritesNothing) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_FALSE(std::filesystem::exists(out)) << args[1];
   }
-  const test::RunResult missing = run_linkage({"bench", "accuracy", "--quick", "--out", (dir / "no" / "such").string()});
-  EXPECT_EQ(missing.exit_code, 2);
-  EXPECT_NE(missing.err.find("does not exist"), std::string::npos) << missing.err;
+  // A folder in the way is an error; a missing one is made with its parents (mkdir -p).
+  test::write_text(dir / "file", "x");
+  const test::RunResult in_the_way = run_linkage({"bench", "accuracy", "--quick", "--out", (dir / "file" / "sub").string()});
+  EXPECT_EQ(in_the_way.exit_code, 2);
+  EXPECT_NE(in_the_way.err.find("exists and is not a folder"), std::string::npos) << in_the_way.err;
 }
 
 TEST(BenchStress, QuickRunWritesEveryStudy) {

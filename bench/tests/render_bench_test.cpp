@@ -67,7 +67,6 @@ TEST(BenchRender, QuickRunWritesASaneReportAndCleansUp) {
     // MP4: pipeline time over encoding alone; PNG: our frame rate over Cairo's.
     const double ratio = mp4 ? wall / base : base / wall;
     EXPECT_NEAR(number(row, "ratio"), ratio, 1e-9 * ratio);
-    EXPECT_LT(number(row, "unpack_s"), mp4 ? base : std::min(wall, base));
     if (mp4) {
       for (const char* column : {"simulate_s", "draw_s", "cpu_s", "baseline_cpu_s", "cpu_ratio", "stored_bytes"})
         expect_positive(row, column);
@@ -76,15 +75,14 @@ TEST(BenchRender, QuickRunWritesASaneReportAndCleansUp) {
       // Frames kept run-length coded take far less than raw (4 bytes a pixel).
       EXPECT_LT(number(row, "stored_bytes"), 0.5 * frames * 4 * number(row, "width") * number(row, "height"));
       EXPECT_EQ(row.at("baseline"), "encode alone");
-      // Drawing and simulating happen on the pipeline's own thread, inside its wall time.
-      EXPECT_LT(number(row, "simulate_s") + number(row, "draw_s"), wall);
       EXPECT_EQ(row.at("same_output"), "yes");  // the encoder got the very frames the pipeline drew
     } else {
       EXPECT_EQ(row.at("baseline"), "cairo");
-      EXPECT_LT(number(row, "convert_s"), wall);
     }
   }
-  // A bigger frame makes bigger files (sizes are deterministic; times are not compared).
+  // The report's structure, never its speed: times are only checked to be there and
+  // consistent with the ratios computed from them. A bigger frame makes bigger files
+  // (sizes are deterministic).
   EXPECT_GT(number(rows[1], "bytes_per_frame"), number(rows[0], "bytes_per_frame"));
   EXPECT_GT(number(rows[3], "bytes_per_frame"), number(rows[2], "bytes_per_frame"));
   EXPECT_EQ(test::read_text(out / "render.csv").find("nan"), std::string::npos);
@@ -103,7 +101,7 @@ TEST(BenchRender, BadFlagsAreOneLineErrors) {
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
       {{"--size", "640x360", "--out", (dir / "o").string()}, "--size"},
       {{"--out", (dir / "file").string()}, "exists and is not a folder"},
-      {{"--out", (dir / "no" / "such").string()}, "does not exist"},
+      {{"--out", (dir / "file" / "sub").string()}, "exists and is not a folder"},
       {{"--out"}, "--out"},
   };
   for (const auto& [args, message] : cases) {
@@ -115,7 +113,6 @@ TEST(BenchRender, BadFlagsAreOneLineErrors) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_EQ(r.out, "") << args[0];
   }
-  EXPECT_FALSE(std::filesystem::exists(dir / "no"));
   EXPECT_FALSE(std::filesystem::exists(dir / "o"));  // a bad flag makes no folder
 }
 

@@ -1,5 +1,6 @@
 #include "cli/commands.hpp"
 
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -13,12 +14,32 @@ std::vector<std::pair<CLI::App*, std::function<void()>>>& runners() {
 
 void add_runner(CLI::App* subcommand, std::function<void()> run) { runners().emplace_back(subcommand, std::move(run)); }
 
+namespace {
+/// An empty value (`--dt ""`) is a mistake, never a quiet "use the default": every
+/// option that takes a value refuses it, but --title, where "" means no title.
+void refuse_empty_values(CLI::App& app) {
+  for (CLI::App* sub : app.get_subcommands({})) {
+    refuse_empty_values(*sub);
+    for (CLI::Option* option : sub->get_options()) {
+      if (option->get_type_size() == 0 || option->get_name() == "--title") continue;
+      option->check(CLI::Validator(
+          [](std::string& value) {
+            return value.empty() ? std::string("the value is empty; give a value, or leave the option out for its default")
+                                 : std::string();
+          },
+          ""));
+    }
+  }
+}
+}  // namespace
+
 void register_commands(CLI::App& app) {
   register_solve(app);
   register_render(app);
   register_bench(app);
   register_lesson(app);
   register_simulate(app);
+  refuse_empty_values(app);
 }
 
 void run_selected(const CLI::App& /*app*/) {

@@ -1,5 +1,7 @@
 #include "cli/input_options.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 
@@ -18,7 +20,7 @@ void add_input_options(CLI::App* sub, InputOptions& options) {
     const InputKey& key = kInputKeys[i];
     const std::string help = std::string(key.description) + ", " + std::string(key.unit) +
                              " (default " + format_roundtrip(defaults.value(key)) + ")";
-    options.options[i] = sub->add_option(std::string(key.flag), options.values[i], help)
+    options.options[i] = sub->add_option(flag_name(key.key), options.values[i], help)
                              ->type_name("NUM")
                              ->group("Inputs");
   }
@@ -40,6 +42,20 @@ double parse_number(const std::string& text, const std::string& origin, const st
   return value;
 }
 
+std::string flag_name(std::string_view setting) {
+  std::string flag = "--" + std::string(setting);
+  std::replace(flag.begin() + 2, flag.end(), '_', '-');
+  return flag;
+}
+
+std::string describe(const Error& error) {
+  const std::string& setting = error.setting();
+  const bool identifier = !setting.empty() && std::all_of(setting.begin(), setting.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+  });
+  return identifier ? flag_name(setting) + ": " + error.detail() : error.what();
+}
+
 Inputs resolve_inputs(const InputOptions& options) {
   Inputs inputs;
   if (options.config_option != nullptr && options.config_option->count() > 0) {
@@ -49,7 +65,7 @@ Inputs resolve_inputs(const InputOptions& options) {
   for (std::size_t i = 0; i < kInputKeys.size(); ++i) {
     if (options.options[i] == nullptr || options.options[i]->count() == 0) continue;
     const InputKey& key = kInputKeys[i];
-    const std::string flag(key.flag);
+    const std::string flag = flag_name(key.key);
     inputs.set(key, parse_number(options.values[i], flag, std::string(key.unit)), flag);
   }
   inputs.validate();

@@ -3,9 +3,11 @@
 // symbol (--L ... --theta2-dot) and --config FILE; flags override the file.
 #include <array>
 #include <string>
+#include <string_view>
 
 #include <CLI/CLI.hpp>
 
+#include "core/error.hpp"
 #include "model/inputs.hpp"
 
 namespace linkage::cli {
@@ -22,6 +24,11 @@ void add_input_options(CLI::App* sub, InputOptions& options);
 /// The defaults (the spec's example), overridden by --config, then by the flags;
 /// validated. Throws Error::input naming the bad flag or file:line:column.
 [[nodiscard]] Inputs resolve_inputs(const InputOptions& options);
+
+/// The flag of a setting: "theta1_dot" -> "--theta1-dot".
+[[nodiscard]] std::string flag_name(std::string_view setting);
+/// An error as the command line says it: a setting's error names its flag.
+[[nodiscard]] std::string describe(const Error& error);
 
 /// Parses a whole-string finite double, or throws Error::input naming `origin`.
 [[nodiscard]] double parse_number(const std::string& text, const std::string& origin, const std::string& unit);

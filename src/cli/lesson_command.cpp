@@ -1,22 +1,18 @@
 // `linkage lesson FILE`: runs a lesson script (lessons/README.md describes the format).
-#include <spawn.h>
 #include <sys/ioctl.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include <cerrno>
 #include <charconv>
-#include <cstring>
 #include <cstdlib>
 #include <iostream>
 #include <memory>
 
 #include "cli/commands.hpp"
 #include "core/error.hpp"
-#include "core/interrupt.hpp"
 #include "lesson/lesson.hpp"
 #include "lesson/runner.hpp"
 #include "lesson/step_range.hpp"
+#include "render/theme.hpp"
 #include "report/text_report.hpp"
 
 namespace linkage::cli {
@@ -47,32 +43,6 @@ std::size_t terminal_width() {
   return std::max<std::size_t>(width, 40);
 }
 
-extern "C" char** environ;
-
-/// Runs this program with `args` (a render step's `linkage render ...`), sharing the
-/// terminal so its progress and errors show; fails with the command's exit code.
-void run_self(const std::vector<std::string>& args) {
-  std::vector<std::string> storage{"linkage"};
-  storage.insert(storage.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (std::string& a : storage) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  std::fflush(stdout);
-  std::cout.flush();
-  pid_t pid = 0;
-  if (const int rc = ::posix_spawn(&pid, "/proc/self/exe", nullptr, nullptr, argv.data(), environ); rc != 0)
-    throw Error::failure("cannot start linkage render: " + std::string(std::strerror(rc)));
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0) {
-    if (errno != EINTR) throw Error::failure("waiting for linkage render failed: " + std::string(std::strerror(errno)));
-  }
-  throw_if_interrupted();
-  const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  if (code == 0) return;
-  if (code == static_cast<int>(ExitCode::interrupted)) throw Error::interrupted();
-  throw Error(static_cast<ExitCode>(code), "`linkage render` failed with exit code " + std::to_string(code) +
-                                               " (its error is above); nothing was cached");
-}
 
 void run_lesson_command(const LessonOptions& o) {
   lesson::RunnerOptions options;
@@ -98,7 +68,7 @@ void run_lesson_command(const LessonOptions& o) {
   options.force = o.force;
   options.width = terminal_width();
   options.style = text_style_from_locale();
-  options.run_linkage = run_self;
+  options.assets = assets_dir(LINKAGE_ASSETS_DIR);
   const lesson::RunSummary summary = lesson::run_lesson(lesson, options, std::cin, std::cout, std::cerr);
   std::cerr << "lesson: ran " << summary.steps_run << " of " << lesson.steps.size() << " steps; " << summary.made
             << " made, " << summary.reused << " reused; "

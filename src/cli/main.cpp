@@ -1,13 +1,99 @@
 // linkage: worked solutions, simulation and animation of two pinned blocks.
 #include <CLI/CLI.hpp>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <exception>
+#include <iostream>
+#include <string>
+#include <string_view>
+#include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/input_options.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
+#include "lesson/suggest.hpp"
 #include "linkage/version.hpp"
+
+namespace {
+
+/// Everything written to standard output must have arrived: a full disk or a closed
+/// pipe is an error, not a silent loss.
+int finish_standard_output() {
+  errno = 0;
+  std::cout.flush();
+  const bool ok = static_cast<bool>(std::cout) && std::fflush(stdout) == 0 && std::ferror(stdout) == 0;
+  if (ok) return 0;
+  const int error_number = errno;
+  std::fprintf(stderr, "linkage: error: cannot write standard output: %s\n",
+               error_number != 0 ? std::strerror(error_number) : "write error");
+  return static_cast<int>(linkage::ExitCode::failure);
+}
+
+/// A message as one readable line: control characters escaped (a value with a newline
+/// stays on the line) and a very long quoted value shortened in the middle.
+std::string one_line(const std::string& message) {
+  constexpr std::size_t kLongest = 120;
+  std::string escaped;
+  for (const char c : message) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '\n') escaped += "\\n";
+    else if (c == '\t') escaped += "\\t";
+    else if (c == '\r') escaped += "\\r";
+    else if (u < 0x20 || u == 0x7f) {
+      static constexpr char hex[] = "0123456789abcdef";
+      escaped += "\\x";
+      escaped += hex[u >> 4];
+      escaped += hex[u & 15];
+    } else {
+      escaped += c;
+    }
+  }
+  std::string out;
+  std::size_t start = 0;
+  while (start < escaped.size()) {
+    const std::size_t open = escaped.find('\'', start);
+    const std::size_t close = open == std::string::npos ? std::string::npos : escaped.find('\'', open + 1);
+    if (close == std::string::npos) {
+      out += escaped.substr(start);
+      break;
+    }
+    out += escaped.substr(start, open + 1 - start);
+    const std::string value = escaped.substr(open + 1, close - open - 1);
+    if (value.size() > kLongest)
+      out += value.substr(0, kLongest / 2) + "...(" + std::to_string(value.size() - kLongest) + " more characters)..." +
+             value.substr(value.size() - kLongest / 2);
+    else
+      out += value;
+    out += '\'';
+    start = close + 1;
+  }
+  return out;
+}
+
+void print_error(const std::string& message, const char* tail = "") {
+  std::fprintf(stderr, "linkage: error: %s%s\n", one_line(message).c_str(), tail);
+}
+
+/// "linkage solv": name the unknown word and the nearest command (CLI11 would only say
+/// that a subcommand is required).
+void check_command_word(const CLI::App& app, int argc, char** argv) {
+  if (argc < 2 || argv[1][0] == '-') return;
+  const std::string word = argv[1];
+  std::vector<std::string> names;
+  for (const CLI::App* sub : app.get_subcommands({})) {
+    if (sub->get_name() == word) return;
+    names.push_back(sub->get_name());
+  }
+  const std::vector<std::string_view> candidates(names.begin(), names.end());
+  std::string message = "'" + word + "' is not a command";
+  if (auto close = linkage::lesson::closest_match(word, candidates)) message += " (did you mean '" + std::string(*close) + "'?)";
+  throw linkage::Error::input(message + "; valid: " + linkage::lesson::join(candidates));
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace linkage;
@@ -20,18 +106,28 @@ int main(int argc, char** argv) {
   cli::register_commands(app);
   install_interrupt_handler();
   try {
+    check_command_word(app, argc, argv);
     app.parse(argc, argv);
     cli::run_selected(app);
   } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
-    std::fprintf(stderr, "linkage: error: %s (see 'linkage --help')\n", e.what());
+    if (e.get_exit_code() == 0) {
+      const int code = app.exit(e);  // --help, --version
+      return code != 0 ? code : finish_standard_output();
+    }
+    print_error(e.what(), " (see 'linkage --help')");
     return static_cast<int>(ExitCode::bad_input);
   } catch (const Error& e) {
-    std::fprintf(stderr, "linkage: error: %s\n", e.what());
-    return static_cast<int>(e.code());
+    // A signal can make a blocked call fail first: report the signal, not its echo.
+    const Error& reported = interrupt_requested() ? interrupted_error() : e;
+    print_error(cli::describe(reported));
+    return reported.exit_status();
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "linkage: internal error: %s\n", e.what());
+    if (interrupt_requested()) {
+      print_error(interrupted_error().what());
+      return interrupted_error().exit_status();
+    }
+    std::fprintf(stderr, "linkage: internal error: %s\n", one_line(e.what()).c_str());
     return static_cast<int>(ExitCode::failure);
   }
-  return 0;
+  return finish_standard_output();
 }

@@ -1,7 +1,7 @@
-// `linkage render`: the motion drawn with Cairo into an MP4 (H.264 through the FFmpeg
-// libraries), a numbered PNG sequence, or one still (PNG, SVG, PDF). Everything is
-// checked before any work starts; outputs appear whole or not at all.
-#include <chrono>
+// `linkage render`: the flags turned into a Clip (src/pipeline), produced with progress
+// on stderr: an MP4 (H.264 through the FFmpeg libraries), a numbered PNG sequence, or
+// one still (PNG, SVG, PDF). Everything is checked before any work starts; outputs
+// appear whole or not at all.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -15,20 +15,11 @@
 #include "cli/commands.hpp"
 #include "cli/input_options.hpp"
 #include "cli/simulation_flags.hpp"
-#include "core/atomic_file.hpp"
 #include "core/error.hpp"
-#include "core/interrupt.hpp"
-#include "core/number_format.hpp"
 #include "core/progress.hpp"
-#include "encode/frame_pipeline.hpp"
-#include "encode/png_writer.hpp"
-#include "encode/video_writer.hpp"
-#include "integrate/simulation.hpp"
-#include "render/clip_renderer.hpp"
+#include "pipeline/clip.hpp"
 #include "render/settings.hpp"
 #include "render/theme.hpp"
-#include "render/vector_still.hpp"
-#include "scene/motion.hpp"
 
 namespace linkage::cli {
 namespace {
@@ -46,19 +37,6 @@ struct RenderFlags {
   CLI::Option* camera_option = nullptr;
   CLI::Option* at_option = nullptr;
   CLI::Option* duration_option = nullptr;
-};
-
-/// Everything a run needs, parsed and checked.
-struct RenderJob {
-  Inputs inputs;
-  SimulationOptions simulation;
-  RenderSettings settings;
-  Theme theme;
-  std::string run;                   // the HUD's "Case 3 · dop853"
-  std::optional<fs::path> out;       // the video or the still
-  OutputKind out_kind = OutputKind::mp4;
-  std::optional<fs::path> frames;    // the PNG sequence's folder
-  bool quiet = false;
 };
 
 int parse_whole(const std::string& text, const std::string& origin) {
@@ -96,155 +74,26 @@ RenderSettings resolve_settings(const RenderFlags& f) {
   return s;
 }
 
-std::string run_text(const SimulationOptions& s) {
-  std::string text = "Case " + std::to_string(s.case_id) + " \u00b7 " + std::string(info(s.integrator).name);
-  if (s.case_id == 1)  // only Case 1 can drift off the pin, so only there does stabilization matter
-    text += s.stabilization == Stabilization::none ? std::string(" \u00b7 no stabilization")
-                                                   : " \u00b7 " + std::string(name(s.stabilization));
-  return text;
-}
-
-VideoOptions video_options(const RenderSettings& s) {
-  VideoOptions v;
-  v.width = s.width;
-  v.height = s.height;
-  v.fps = s.fps;
-  v.origin = "--out";
-  return v;
-}
-
-RenderJob resolve_job(const RenderFlags& f) {
-  RenderJob job;
-  job.settings = resolve_settings(f);
-  job.quiet = f.quiet;
-  if (!f.frames.empty()) {
-    job.frames = fs::path(f.frames);
-    require_writable_directory(*job.frames, "--frames");
-  }
+/// The clip the flags describe, checked before any work.
+Clip resolve_clip(const RenderFlags& f) {
+  Clip clip;
+  clip.settings = resolve_settings(f);
+  if (!f.frames.empty()) clip.frames = fs::path(f.frames);
   // --out defaults to linkage.mp4 unless only a PNG sequence was asked for.
-  if (f.out_option->count() > 0 || !job.frames) job.out = fs::path(f.out);
-  if (job.out) {
-    std::error_code ec;
-    if (fs::is_directory(*job.out, ec)) throw Error::input("--out: '" + job.out->string() + "' is a folder, expected a file name");
-    job.out_kind = output_kind(*job.out, "--out");
-    require_writable_directory(job.out->parent_path(), "--out");
-    if (job.out_kind == OutputKind::mp4) VideoWriter::validate(video_options(job.settings));
-  }
-  const bool still = job.out && is_still(job.out_kind);
+  if (f.out_option->count() > 0 || !clip.frames) clip.out = fs::path(f.out);
+  if (clip.out && fs::is_directory(*clip.out))
+    throw Error::input("--out: '" + clip.out->string() + "' is a folder, expected a file name");
+  const bool still = clip.is_still();
   if (f.at_option->count() > 0 && !still)
     throw Error::input("--at: applies to a still (--out FILE.png, .svg or .pdf); a clip shows 0 .. --duration");
-  if (still && !job.frames && f.duration_option->count() > 0 && !f.quiet)
+  if (still && !clip.frames && f.duration_option->count() > 0 && !f.quiet)
     std::fprintf(stderr, "linkage: note: --duration applies to a clip; a still shows the time --at (default 0)\n");
-  job.theme = load_theme(job.settings.theme, assets_dir(LINKAGE_ASSETS_DIR), "--theme");
-  job.simulation = resolve_simulation_flags(f.simulation, job.settings.duration);
-  job.inputs = resolve_inputs(f.inputs);
-  if (!f.quiet) note_ignored_simulation_flags(f.simulation, job.simulation);
-  job.run = run_text(job.simulation);
-  return job;
-}
-
-template <typename Work>
-auto timed(double& seconds, Work work) {
-  const auto start = std::chrono::steady_clock::now();
-  auto result = work();
-  seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return result;
-}
-
-/// Samples the motion at `times` with its own simulation of `options`.
-Motion simulate(const RenderJob& job, SimulationOptions options, const std::vector<double>& times, RenderStats& stats) {
-  Simulation simulation(job.inputs.params(), job.inputs.state(), options);
-  Progress progress("simulate", static_cast<long>(times.size()), "samples", job.quiet);
-  const bool forces = job.settings.elements.has(Element::pin_force);
-  Motion motion = timed(stats.simulate_seconds, [&] {
-    return sample_motion(simulation, times, forces, [&](long done) { progress.update(done); });
-  });
-  progress.finish();
-  stats.force_evaluations += simulation.stats().force_evaluations;
-  stats.samples += static_cast<std::int64_t>(times.size());
-  return motion;
-}
-
-void add_drawing(RenderStats& stats, const ClipRenderer& renderer) {
-  const RenderStats& drawn = renderer.stats();
-  stats.frames_drawn += drawn.frames_drawn;
-  stats.static_layer_draws += drawn.static_layer_draws;
-  stats.trail_points_drawn += drawn.trail_points_drawn;
-  stats.draw_seconds += drawn.draw_seconds;
-}
-
-/// The clip: frames drawn on this thread while the encoder (and PNG compression) run on
-/// others, through a few reused buffers.
-void render_clip(const RenderJob& job, RenderStats& stats) {
-  const RenderSettings& s = job.settings;
-  const long count = s.frame_count();
-  std::vector<double> times(static_cast<std::size_t>(count));
-  for (long k = 0; k < count; ++k) times[static_cast<std::size_t>(k)] = s.frame_time(k);
-  const Motion motion = simulate(job, job.simulation, times, stats);
-  ClipRenderer renderer(job.inputs.params(), motion, s, job.theme, job.run);
-
-  std::optional<VideoWriter> video;
-  std::optional<PngSequenceWriter> pngs;
-  if (job.out && job.out_kind == OutputKind::mp4) {
-    video.emplace(*job.out, video_options(s));
-    stats.encoder_opened = true;
-  }
-  if (job.frames) pngs.emplace(*job.frames, s.width, s.height, "--frames", PngOptions{}, 2, count);
-  FramePipeline pipeline(s.width, s.height, [&](const Frame& frame) {
-    if (video) video->write(frame);
-    if (pngs) pngs->write(frame);
-  });
-  Progress progress("render", count, "frames", job.quiet);
-  for (long k = 0; k < count; ++k) {
-    throw_if_interrupted();
-    Frame& frame = pipeline.acquire();
-    renderer.draw(static_cast<std::size_t>(k), frame);
-    pipeline.submit();
-    progress.update(k + 1);
-  }
-  pipeline.finish();
-  if (pngs) {
-    pngs->finish();
-    const PngStats png = pngs->stats();
-    stats.png_files_written += png.frames;
-    stats.png_seconds += png.convert_seconds + png.encode_seconds;
-  }
-  if (video) {
-    video->finish();
-    stats.convert_seconds += video->stats().convert_seconds;
-    stats.encode_seconds += video->stats().encode_seconds + video->stats().finish_seconds;
-    if (!video->note().empty() && !job.quiet) std::fprintf(stderr, "linkage: note: %s\n", video->note().c_str());
-  }
-  progress.finish();
-  add_drawing(stats, renderer);
-}
-
-/// One frame at --at: the trail needs the motion over the seconds before it, sampled as
-/// densely as the clip would be; nothing else is sampled.
-void render_still(const RenderJob& job, RenderStats& stats) {
-  const RenderSettings& s = job.settings;
-  std::vector<double> times;
-  if (s.elements.has(Element::trail)) {
-    const double step = s.speed / s.fps;
-    const auto back = static_cast<long>(std::floor(std::min(s.at, SceneOptions{}.trail_seconds) / step));
-    for (long j = back; j > 0; --j) times.push_back(s.at - static_cast<double>(j) * step);
-  }
-  times.push_back(s.at);
-  SimulationOptions options = job.simulation;
-  options.duration = std::max(s.at, options.dt);
-  options.validate();
-  const Motion motion = simulate(job, options, times, stats);
-  ClipRenderer renderer(job.inputs.params(), motion, s, job.theme, job.run);
-  const std::size_t last = times.size() - 1;
-  if (job.out_kind == OutputKind::png) {
-    Frame frame(s.width, s.height);
-    renderer.draw(last, frame);
-    write_png(frame, *job.out, "--out");
-    ++stats.png_files_written;
-  } else {
-    write_vector_still(renderer, last, job.out_kind, s.width, s.height, *job.out, "--out");
-  }
-  add_drawing(stats, renderer);
+  clip.theme = load_theme(clip.settings.theme, assets_dir(LINKAGE_ASSETS_DIR), "theme");
+  clip.simulation = resolve_simulation_flags(f.simulation, clip.settings.duration);
+  clip.inputs = resolve_inputs(f.inputs);
+  if (!f.quiet) note_ignored_simulation_flags(f.simulation, clip.simulation);
+  clip.validate();
+  return clip;
 }
 
 void print_stats(const RenderStats& s) {
@@ -264,11 +113,21 @@ void print_stats(const RenderStats& s) {
 }
 
 void run_render(const RenderFlags& flags) {
-  const RenderJob job = resolve_job(flags);
-  RenderStats stats;
-  if (job.frames || (job.out && job.out_kind == OutputKind::mp4)) render_clip(job, stats);
-  if (job.out && is_still(job.out_kind)) render_still(job, stats);
-  if (flags.stats) print_stats(stats);
+  const Clip clip = resolve_clip(flags);
+  std::optional<Progress> progress;
+  ClipStage shown = ClipStage::simulate;
+  const ClipResult result = produce_clip(clip, [&](ClipStage stage, long done, long total) {
+    if (!progress || stage != shown) {
+      if (progress) progress->finish();
+      progress.emplace(std::string(name(stage)), total, stage == ClipStage::simulate ? "samples" : "frames", flags.quiet);
+      shown = stage;
+    }
+    progress->update(done);
+  });
+  if (progress) progress->finish();
+  if (!flags.quiet)
+    for (const std::string& note : result.notes) std::fprintf(stderr, "linkage: %s\n", note.c_str());
+  if (flags.stats) print_stats(result.stats);
 }
 
 }  // namespace
@@ -282,7 +141,7 @@ void register_render(CLI::App& app) {
                                   "written atomically (default linkage.mp4, or none with --frames alone)")
                       ->type_name("FILE")
                       ->group(output);
-  sub->add_option("--frames", f->frames, "Also (or instead) write the clip as DIR/frame_00000.png ... (DIR must exist)")
+  sub->add_option("--frames", f->frames, "Also (or instead) write the clip as DIR/frame_00000.png ... (DIR is made with its parents)")
       ->type_name("DIR")
       ->group(output);
   std::string presets;

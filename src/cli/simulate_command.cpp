@@ -1,8 +1,12 @@
 // `linkage simulate`: the motion over time as a CSV or JSON table, with a summary of
 // the run's cost and accuracy on stderr.
+#include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 #include <optional>
 #include <string>
@@ -41,8 +45,13 @@ Format choose_format(const SimulateOptions& o) {
   if (o.format == "csv") return Format::csv;
   if (o.format == "json") return Format::json;
   if (!o.format.empty()) throw Error::input("--format: '" + o.format + "' is not a format; valid: csv, json");
-  const std::string ext = std::filesystem::path(o.out).extension().string();
-  return ext == ".json" ? Format::json : Format::csv;
+  // From the extension, whatever its case; an unknown one is a mistake, not CSV.
+  std::string ext = std::filesystem::path(o.out).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (ext == ".json") return Format::json;
+  if (ext == ".csv" || o.out.empty() || o.out == "-") return Format::csv;
+  throw Error::input("--out: '" + o.out + "' has " + (ext.empty() ? std::string("no extension") : "extension '" + ext + "'") +
+                     "; valid: .csv or .json, or give --format csv|json");
 }
 
 /// The output times k * every strictly before the end, then the duration itself.
@@ -98,8 +107,12 @@ class TableWriter {
 
  private:
   void emit(const std::string& text) {
-    if (file_ != nullptr) file_->stream() << text;
-    else std::fwrite(text.data(), 1, text.size(), stdout_);
+    if (file_ != nullptr) {
+      file_->stream() << text;
+      if (!file_->stream()) throw Error::failure(write_failure(file_->target(), errno));
+    } else if (std::fwrite(text.data(), 1, text.size(), stdout_) != text.size()) {
+      throw Error::failure("cannot write standard output: " + std::string(std::strerror(errno)));
+    }
   }
 
   Format format_;
@@ -185,7 +198,7 @@ void run_simulate(const SimulateOptions& o) {
 
   Simulation simulation(inputs.params(), inputs.state(), s);
   std::optional<AtomicFile> file;
-  if (!o.out.empty()) file.emplace(o.out, "--out");
+  if (!o.out.empty()) file.emplace(o.out, "out");
   TableWriter writer(format, stdout, file ? &*file : nullptr);
   writer.begin(columns, format == Format::json ? json_header(inputs, s, every, columns) : "");
   Progress progress("simulate", samples.count, "rows");
@@ -193,6 +206,11 @@ void run_simulate(const SimulateOptions& o) {
   for (long i = 0; i < samples.count; ++i) {
     const double t = samples.at(i);
     compute_row(simulation, t, simulation.state_at(t), columns, values);
+    for (std::size_t j = 0; j < values.size(); ++j)
+      if (!std::isfinite(values[j]))
+        throw Error::diverged(std::string(info(columns[j]).name) + " at t = " + format_roundtrip(t) +
+                              " s is not a finite number; the run stopped" +
+                              (likely_causes(inputs).empty() ? "" : " (inputs: " + likely_causes(inputs) + ")"));
     writer.row(values);
     progress.update(i + 1);
     throw_if_interrupted();

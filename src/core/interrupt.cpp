@@ -2,23 +2,52 @@
 
 #include <atomic>
 #include <csignal>
+#include <cstring>
 
 #include "core/error.hpp"
 
 namespace linkage {
 namespace {
+constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP};
+
 // Lock-free atomic: safe to set in a signal handler and to read from worker threads.
-std::atomic<int> g_interrupted{0};
+std::atomic<int> g_signal{0};
 static_assert(std::atomic<int>::is_always_lock_free);
-extern "C" void on_sigint(int /*signal*/) { g_interrupted.store(1, std::memory_order_relaxed); }
+
+extern "C" void on_signal(int signal) {
+  int none = 0;
+  if (g_signal.compare_exchange_strong(none, signal, std::memory_order_relaxed)) return;
+  // A second signal: the user insists, or the work does not poll. End now.
+  std::signal(signal, SIG_DFL);
+  std::raise(signal);
+}
 }  // namespace
 
-void install_interrupt_handler() { std::signal(SIGINT, on_sigint); }
+void install_interrupt_handler() {
+  struct sigaction action {};
+  action.sa_handler = on_signal;
+  sigemptyset(&action.sa_mask);
+  action.sa_flags = 0;  // no SA_RESTART: a blocked read returns with EINTR
+  for (int signal : kSignals) sigaction(signal, &action, nullptr);
+}
 
-bool interrupt_requested() noexcept { return g_interrupted.load(std::memory_order_relaxed) != 0; }
+bool interrupt_requested() noexcept { return g_signal.load(std::memory_order_relaxed) != 0; }
+
+int interrupt_signal() noexcept { return g_signal.load(std::memory_order_relaxed); }
+
+Error interrupted_error() { return Error::interrupted(interrupt_signal() != 0 ? interrupt_signal() : SIGINT); }
 
 void throw_if_interrupted() {
-  if (interrupt_requested()) throw Error::interrupted();
+  if (interrupt_requested()) throw interrupted_error();
+}
+
+std::string Error::signal_name(int signal) {
+  switch (signal) {
+    case SIGINT: return "SIGINT";
+    case SIGTERM: return "SIGTERM";
+    case SIGHUP: return "SIGHUP";
+    default: return "signal " + std::to_string(signal);
+  }
 }
 
 }  // namespace linkage

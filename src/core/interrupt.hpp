@@ -1,14 +1,21 @@
 #pragma once
-// Ctrl-C handling for long work: the handler only sets a flag; loops poll it and throw
-// Error::interrupted(), so destructors remove temporary files before exit 130.
+// Terminating signals (SIGINT, SIGTERM, SIGHUP) during long work: the handler only
+// records the signal; loops poll it and throw interrupted_error(), so destructors remove
+// temporary files before the process exits with 128 + the signal number. A second
+// signal ends the process at once (the next run removes what it left behind).
 
 namespace linkage {
 
-/// Installs the SIGINT handler (idempotent).
+/// Installs the handlers (idempotent). Blocking reads return early (no SA_RESTART), so
+/// a prompt waiting for input stops at once.
 void install_interrupt_handler();
-/// True once SIGINT has been received.
+/// True once a terminating signal has been received.
 [[nodiscard]] bool interrupt_requested() noexcept;
-/// Throws Error::interrupted() if SIGINT has been received.
+/// The signal received, or 0.
+[[nodiscard]] int interrupt_signal() noexcept;
+/// The error for the signal received (exit 128 + signal).
+[[nodiscard]] class Error interrupted_error();
+/// Throws interrupted_error() if a terminating signal has been received.
 void throw_if_interrupted();
 
 }  // namespace linkage

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <string_view>
 #include <array>
 #include <atomic>
 #include <chrono>
@@ -124,9 +125,19 @@ int name_digits(std::int64_t expected_frames) {
   return std::max(digits, 5);
 }
 
-fs::path staging_name(const fs::path& folder) {
-  static std::atomic<unsigned> counter{0};
-  return folder / (".linkage-frames.tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+constexpr const char* kStagingPrefix = ".linkage-frames";
+
+fs::path staging_name(const fs::path& folder) { return folder / (kStagingPrefix + temporary_suffix()); }
+
+/// frame_DDDDD.png with five or more digits: a name of our own sequences.
+bool is_sequence_name(const std::string& name) {
+  constexpr std::string_view head = "frame_", tail = ".png";
+  if (name.size() < head.size() + 5 + tail.size() || name.rfind(head, 0) != 0 ||
+      name.compare(name.size() - tail.size(), tail.size(), tail) != 0)
+    return false;
+  return std::all_of(name.begin() + static_cast<std::ptrdiff_t>(head.size()),
+                     name.end() - static_cast<std::ptrdiff_t>(tail.size()),
+                     [](char c) { return c >= '0' && c <= '9'; });
 }
 }  // namespace
 
@@ -186,11 +197,12 @@ PngSequenceWriter::PngSequenceWriter(const fs::path& folder, int width, int heig
     : impl_(std::make_unique<Impl>()) {
   validate_options(options);
   if (width <= 0 || height <= 0)
-    throw Error::input(origin + ": frame size " + std::to_string(width) + "x" + std::to_string(height) +
+    throw Error::invalid(origin, "frame size " + std::to_string(width) + "x" + std::to_string(height) +
                        " must be positive");
   if (threads < 1 || threads > 64)
-    throw Error::input(origin + ": PNG worker threads " + std::to_string(threads) + " must be from 1 to 64");
+    throw Error::invalid(origin, "PNG worker threads " + std::to_string(threads) + " must be from 1 to 64");
   require_writable_directory(folder, origin);
+  remove_stale_temporaries(folder, kStagingPrefix);
   Impl& impl = *impl_;
   impl.folder = folder.empty() ? fs::path(".") : folder;
   impl.width = width;
@@ -203,7 +215,7 @@ PngSequenceWriter::PngSequenceWriter(const fs::path& folder, int width, int heig
   const fs::path staging = staging_name(impl.folder);
   std::error_code ec;
   if (!fs::create_directory(staging, ec))
-    throw Error::failure(origin + ": cannot create '" + staging.string() + "': " + (ec ? ec.message() : "exists"));
+    throw Error::failure(origin, "cannot create '" + staging.string() + "': " + (ec ? ec.message() : "exists"));
   impl.staging = staging;
   impl.queue = std::make_unique<SlotQueue>(impl.slots.size(), threads, [&impl](std::size_t slot) { impl.compress(slot); });
 }
@@ -235,6 +247,18 @@ void PngSequenceWriter::finish() {
   std::error_code ec;
   fs::remove(impl.staging, ec);
   if (ec) throw Error::failure("cannot remove the staging folder '" + impl.staging.string() + "': " + ec.message());
+  // Frames of an earlier, longer (or differently numbered) sequence would read as part
+  // of this one: remove our own numbered names this run did not write, nothing else.
+  std::vector<fs::path> stale;
+  for (fs::directory_iterator it(impl.folder, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (!is_sequence_name(name) || !it->is_regular_file()) continue;
+    const std::string digits = name.substr(6, name.size() - 10);
+    const bool ours = static_cast<int>(digits.size()) == impl.digits && digits.size() <= 18 &&
+                      std::stoll(digits) < impl.next_index;
+    if (!ours) stale.push_back(it->path());
+  }
+  for (const fs::path& file : stale) fs::remove(file, ec);
   impl.finished = true;
 }
 

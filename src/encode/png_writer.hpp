@@ -41,7 +41,7 @@ struct PngStats {
 class PngSequenceWriter {
  public:
   /// A sequence of width x height frames into `folder`, which must exist and be writable
-  /// (Error::input naming `origin`, e.g. "--frames"). `threads` workers compress in
+  /// (Error::invalid about `origin`, e.g. "frames"). `threads` workers compress in
   /// parallel. `expected_frames` only widens the number in the names beyond 5 digits
   /// when needed (frame_000000.png for a million frames) so they sort.
   PngSequenceWriter(const std::filesystem::path& folder, int width, int height, const std::string& origin,

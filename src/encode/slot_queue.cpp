@@ -63,7 +63,7 @@ void SlotQueue::throw_if_stopped_locked() {
   if (interrupt_requested()) {
     cancelled_ = true;
     slot_ready_.notify_all();
-    throw Error::interrupted();
+    throw interrupted_error();
   }
 }
 
@@ -113,7 +113,7 @@ void SlotQueue::worker_loop() {
     if (cancelled_ || error_) return;
     if (ready_count_ == 0) return;  // closing and drained
     if (interrupt_requested()) {
-      error_ = std::make_exception_ptr(Error::interrupted());
+      error_ = std::make_exception_ptr(interrupted_error());
       slot_ready_.notify_all();
       slot_freed_.notify_all();
       return;

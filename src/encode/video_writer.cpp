@@ -109,7 +109,11 @@ av::CodecContextPtr open_encoder(const AVCodec& codec, const VideoOptions& optio
 
 struct VideoWriter::Impl {
   explicit Impl(const std::filesystem::path& target, const VideoOptions& opts)
-      : options(opts), file(target, opts.origin, true) {}
+      : options(opts), file(target, opts.setting, true) {
+    if (file.kind() != AtomicFile::Kind::replace)
+      throw Error::invalid(opts.setting, "an MP4 is finished by seeking back into the file, so '" + target.string() +
+                                             "' must be a regular file (not standard output, a device or a pipe)");
+  }
 
   VideoOptions options;
   AtomicFile file;  // declared before the AV objects: the file closes before the temp is removed
@@ -152,7 +156,7 @@ void VideoWriter::Impl::open() {
   }
   if (!encoder) {
     const char* wanted = options.codec == VideoCodec::mpeg4 ? "MPEG-4" : "H.264";
-    throw Error::failure(options.origin + ": no " + wanted + " encoder could be opened" +
+    throw Error::failure(options.setting, "no " + std::string(wanted) + " encoder could be opened" +
                          (failures.empty() ? " (none in this FFmpeg build)" : " (" + failures + ")"));
   }
   if (codec == VideoCodec::mpeg4 && options.codec == VideoCodec::automatic)
@@ -247,7 +251,7 @@ void VideoWriter::write(const Frame& frame) {
 void VideoWriter::finish() {
   Impl& impl = *impl_;
   if (impl.finished) return;
-  if (impl.stats.frames == 0) throw Error::failure(impl.options.origin + ": no frames to write");
+  if (impl.stats.frames == 0) throw Error::failure(impl.options.setting, "no frames to write");
   auto start = Clock::now();
   impl.encode(nullptr);  // drain the frames the encoder delayed (B-frames, lookahead)
   impl.stats.encode_seconds += seconds_since(start);
@@ -270,24 +274,24 @@ void VideoWriter::validate(const VideoOptions& options) {
   const auto size = std::to_string(options.width) + "x" + std::to_string(options.height);
   const auto in_range = [](int v) { return v >= 2 && v <= max_dimension; };
   if (!in_range(options.width) || !in_range(options.height))
-    throw Error::input(options.origin + ": video size " + size + " is out of range; width and height must be from 2 to " +
+    throw Error::invalid(options.setting, "video size " + size + " is out of range; width and height must be from 2 to " +
                        std::to_string(max_dimension));
   if (options.width % 2 != 0 || options.height % 2 != 0)
-    throw Error::input(options.origin + ": video size " + size +
+    throw Error::invalid(options.setting, "video size " + size +
                        " must have an even width and height (yuv420p stores colour at half resolution)");
   if (options.fps < 1 || options.fps > 240)
-    throw Error::input(options.origin + ": frame rate " + std::to_string(options.fps) + " must be from 1 to 240");
+    throw Error::invalid(options.setting, "frame rate " + std::to_string(options.fps) + " must be from 1 to 240");
   if (options.crf < 0 || options.crf > 51)
-    throw Error::input(options.origin + ": crf " + std::to_string(options.crf) + " must be from 0 to 51");
+    throw Error::invalid(options.setting, "crf " + std::to_string(options.crf) + " must be from 0 to 51");
   if (!contains(x264_presets, options.preset))
-    throw Error::input(options.origin + ": unknown x264 preset '" + options.preset + "'; valid: " + joined(x264_presets));
+    throw Error::invalid(options.setting, "unknown x264 preset '" + options.preset + "'; valid: " + joined(x264_presets));
   if (!options.tune.empty() && !contains(x264_tunes, options.tune))
-    throw Error::input(options.origin + ": unknown x264 tune '" + options.tune + "'; valid: " + joined(x264_tunes) +
+    throw Error::invalid(options.setting, "unknown x264 tune '" + options.tune + "'; valid: " + joined(x264_tunes) +
                        ", or empty");
   if (options.threads < 1 || options.threads > 64)
-    throw Error::input(options.origin + ": encoder threads " + std::to_string(options.threads) + " must be from 1 to 64");
+    throw Error::invalid(options.setting, "encoder threads " + std::to_string(options.threads) + " must be from 1 to 64");
   if (options.keyframe_seconds < 1 || options.keyframe_seconds > 60)
-    throw Error::input(options.origin + ": keyframe interval " + std::to_string(options.keyframe_seconds) +
+    throw Error::invalid(options.setting, "keyframe interval " + std::to_string(options.keyframe_seconds) +
                        " s must be from 1 to 60");
 }
 

@@ -38,7 +38,7 @@ struct VideoOptions {
   int threads = 2;    // encoder threads; fixed (not "auto") so output is the same on every machine
   int keyframe_seconds = 2;  // a keyframe at least this often, for seeking in a player
   VideoCodec codec = VideoCodec::automatic;
-  std::string origin = "--out";  // named in error messages
+  std::string setting = "out";  // the setting errors are about
 };
 
 /// Time spent per stage, summed over the frames written so far.
@@ -53,7 +53,7 @@ struct EncodeStats {
 
 class VideoWriter {
  public:
-  /// Validates the options (Error::input naming `options.origin` and the range), checks
+  /// Validates the options (Error::invalid about `options.setting` and the range), checks
   /// that the target's folder exists and is writable (Error::input), then opens the
   /// encoder and the temporary file (Error::failure with FFmpeg's message). Nothing is
   /// left on disk when this throws.

@@ -24,9 +24,9 @@ std::vector<Column> parse_columns(std::string_view list, const std::string& orig
     const std::string_view name = list.substr(start, comma - start);
     const auto found = std::find_if(kColumns.begin(), kColumns.end(), [&](const ColumnInfo& c) { return c.name == name; });
     if (found == kColumns.end())
-      throw Error::input(origin + ": '" + std::string(name) + "' is not a column; valid: " + valid());
+      throw Error::invalid(origin, "'" + std::string(name) + "' is not a column; valid: " + valid());
     if (std::find(columns.begin(), columns.end(), found->column) != columns.end())
-      throw Error::input(origin + ": column '" + std::string(name) + "' is listed twice");
+      throw Error::invalid(origin, "column '" + std::string(name) + "' is listed twice");
     columns.push_back(found->column);
     start = comma + 1;
   }

@@ -46,9 +46,9 @@ constexpr double kMaxFixedSteps = 1e9;
 
 std::string num(double v) { return format_roundtrip(v); }
 
-void require(bool ok, const std::string& flag, double value, const std::string& unit, const std::string& range) {
+void require(bool ok, const std::string& setting, double value, const std::string& unit, const std::string& range) {
   if (!ok)
-    throw Error::input(flag + ": " + num(value) + (unit.empty() ? "" : " " + unit) + " is out of range; valid: " + range);
+    throw Error::invalid(setting, num(value) + (unit.empty() ? "" : " " + unit) + " is out of range; valid: " + range);
 }
 
 }  // namespace
@@ -67,13 +67,13 @@ IntegratorKind parse_integrator(std::string_view name, const std::string& origin
     if (i.name == name) return i.kind;
     valid += (valid.empty() ? "" : ", ") + std::string(i.name);
   }
-  throw Error::input(origin + ": '" + std::string(name) + "' is not an integrator; valid: " + valid);
+  throw Error::invalid(origin, "'" + std::string(name) + "' is not an integrator; valid: " + valid);
 }
 
 Stabilization parse_stabilization(std::string_view name, const std::string& origin) {
   for (const auto& [kind, spelling] : kStabilizations)
     if (spelling == name) return kind;
-  throw Error::input(origin + ": '" + std::string(name) +
+  throw Error::invalid(origin, "'" + std::string(name) +
                      "' is not a stabilization; valid: none, baumgarte, projection");
 }
 
@@ -85,22 +85,22 @@ std::string_view name(Stabilization s) {
 
 void SimulationOptions::validate() const {
   if (case_id < 1 || case_id > 3)
-    throw Error::input("--case: " + std::to_string(case_id) + " is not a case; valid: 1, 2, 3");
-  require(std::isfinite(duration) && duration > 0 && duration <= kMaxDuration, "--duration", duration, "s",
+    throw Error::invalid("case", std::to_string(case_id) + " is not a case; valid: 1, 2, 3");
+  require(std::isfinite(duration) && duration > 0 && duration <= kMaxDuration, "duration", duration, "s",
           "0 < duration <= " + num(kMaxDuration) + " s");
-  require(std::isfinite(dt) && dt > 0 && dt <= duration, "--dt", dt, "s",
+  require(std::isfinite(dt) && dt > 0 && dt <= duration, "dt", dt, "s",
           "0 < dt <= duration (" + num(duration) + " s)");
   if (!info(integrator).adaptive && duration / dt > kMaxFixedSteps)
-    throw Error::input("--dt: " + num(dt) + " s needs " + format_significant(duration / dt, 3) + " steps of " +
-                       std::string(info(integrator).name) + " for --duration " + num(duration) +
-                       " s; the limit is 1e9 steps (use a larger --dt or an adaptive integrator)");
-  require(std::isfinite(rtol) && rtol >= kMinRtol && rtol <= kMaxTol, "--rtol", rtol, "",
+    throw Error::invalid("dt", num(dt) + " s needs " + format_significant(duration / dt, 3) + " steps of " +
+                       std::string(info(integrator).name) + " for a duration of " + num(duration) +
+                       " s; the limit is 1e9 steps (use a larger dt or an adaptive integrator)");
+  require(std::isfinite(rtol) && rtol >= kMinRtol && rtol <= kMaxTol, "rtol", rtol, "",
           num(kMinRtol) + " <= rtol <= " + num(kMaxTol) + " (smaller is below double precision)");
-  require(std::isfinite(atol) && atol >= kMinAtol && atol <= kMaxTol, "--atol", atol, "",
+  require(std::isfinite(atol) && atol >= kMinAtol && atol <= kMaxTol, "atol", atol, "",
           num(kMinAtol) + " <= atol <= " + num(kMaxTol));
   require(std::isfinite(baumgarte_alpha) && baumgarte_alpha >= 0 && baumgarte_alpha <= kMaxGain,
-          "--baumgarte-alpha", baumgarte_alpha, "1/s", "0 <= alpha <= " + num(kMaxGain) + " 1/s");
-  require(std::isfinite(baumgarte_beta) && baumgarte_beta >= 0 && baumgarte_beta <= kMaxGain, "--baumgarte-beta",
+          "baumgarte_alpha", baumgarte_alpha, "1/s", "0 <= alpha <= " + num(kMaxGain) + " 1/s");
+  require(std::isfinite(baumgarte_beta) && baumgarte_beta >= 0 && baumgarte_beta <= kMaxGain, "baumgarte_beta",
           baumgarte_beta, "1/s", "0 <= beta <= " + num(kMaxGain) + " 1/s");
 }
 
@@ -110,7 +110,7 @@ namespace {
 
 /// Ends a run that cannot go on: one line naming the time, the step and what to try.
 [[noreturn]] void fail(const SimulationOptions& o, std::string_view what, std::string hint, double t, double h) {
-  if (o.case_id == 1 && o.stabilization != Stabilization::projection) hint += ", or --stabilize projection";
+  if (o.case_id == 1 && o.stabilization != Stabilization::projection) hint += ", or stabilization by projection";
   throw Error::diverged("the simulation failed at t = " + format_significant(t, 6) + " s with step " +
                         format_significant(h, 3) + " s (" + std::string(info(o.integrator).name) + ", Case " +
                         std::to_string(o.case_id) + "): " + std::string(what) + "; " + hint);
@@ -119,11 +119,11 @@ namespace {
 [[noreturn]] void fail(const SimulationOptions& o, ode::StepStatus status, double t, double h) {
   std::string hint;
   if (status == ode::StepStatus::newton_failed)
-    hint = "try a smaller --dt or an explicit integrator (--integrator dop853)";
+    hint = "try a smaller step dt or an explicit integrator (dop853)";
   else if (info(o.integrator).adaptive)
-    hint = "the equations may be singular or stiff here; try looser --rtol/--atol or --case 3";
+    hint = "the equations may be singular or stiff here; try a looser rtol/atol or Case 3";
   else
-    hint = "try a smaller --dt or an adaptive integrator (--integrator dop853)";
+    hint = "try a smaller step dt or an adaptive integrator (dop853)";
   fail(o, ode::describe(status), hint, t, h);
 }
 
@@ -228,7 +228,7 @@ class CaseRun : public Run {
     if constexpr (Model::can_drift) {
       if (project_ && !project_onto_constraint(params, y).converged)
         fail(options, "the projection onto the pin constraint did not converge",
-             "try a smaller --dt or tighter --rtol/--atol", t, h);
+             "try a smaller step dt or a tighter rtol/atol", t, h);
     }
   }
 

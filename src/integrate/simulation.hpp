@@ -45,7 +45,7 @@ struct SimulationOptions {
   // up to ~0.1 s remain stable.
   double baumgarte_alpha = 10.0;              // 1/s, damping of the constraint error rate
   double baumgarte_beta = 10.0;               // 1/s, stiffness of the constraint error
-  /// Validates ranges; throws Error::input naming the flag (e.g. "--dt") and range.
+  /// Validates ranges; throws Error::invalid about the setting (e.g. "dt") with its range.
   void validate() const;
 };
 

@@ -76,7 +76,6 @@ struct RenderStep {
   Run run;
   RenderSettings settings;  // as written; --quality draft shrinks size and fps
   OutputKind kind = OutputKind::mp4;
-  std::vector<std::string> flags;  // the step's keys as `linkage render` flags, in file order
 };
 /// A time-series figure: quantities against time (or another quantity) for some runs.
 struct Figure {

@@ -83,21 +83,15 @@ std::vector<std::size_t> choice_list(const TableReader& r, std::string_view key,
   return out;
 }
 
-/// Re-raises an error of a shared validator that names a CLI flag ("--dt: ...") at the
-/// lesson key it came from ("file:12:6: step 3 (simulate): dt: ...").
+/// Re-raises a validator's error about a setting (Error::setting(), e.g. "dt") at the
+/// lesson key of that name ("file:12:6: step 3 (simulate): dt: ..."), in the innermost
+/// table that has it.
 [[noreturn]] void rethrow_at(const Error& e, std::initializer_list<const TableReader*> readers) {
-  std::string message = e.what();
-  std::string key;
-  if (message.rfind("--", 0) == 0) {
-    const std::size_t end = message.find_first_of(": ");
-    key = message.substr(2, end - 2);
-    std::replace(key.begin(), key.end(), '-', '_');
-    message = key + message.substr(end);
-  }
+  const std::string& key = e.setting();
   for (const TableReader* r : readers)
-    if (!key.empty() && r->has(key)) throw Error::input(r->prefix(key) + message);
+    if (!key.empty() && r->has(key)) throw e.rephrased(r->prefix(key) + e.what());
   const TableReader& innermost = **readers.begin();
-  throw Error::input(innermost.prefix("") + message);
+  throw e.rephrased(innermost.prefix("") + e.what());
 }
 
 /// A plain file name inside the output folder.
@@ -139,8 +133,17 @@ class Parser {
  public:
   explicit Parser(const fs::path& file) : file_(file), file_text_(file.string()), dir_(file.parent_path()) {}
 
+  /// The lesson file's own errors name it as "lesson: ..." (it is no flag's value).
+  toml::table read_lesson_file() const {
+    try {
+      return parse_toml_file(file_text_, "lesson");
+    } catch (const Error& e) {
+      throw e.rephrased(e.what());
+    }
+  }
+
   Lesson parse() {
-    const toml::table root = parse_toml_file(file_text_, "lesson");
+    const toml::table root = read_lesson_file();
     TableReader top(root, file_text_, "lesson", lesson_keys());
     top.reject_unknown_keys();
 
@@ -259,11 +262,9 @@ class Parser {
         inputs.set(*find_input_key(key), *r.number(key, -kInf, kInf, ""), r.where(key));
       inputs.validate();
     } catch (const Error& e) {
-      // "FILE:LINE:COLUMN: b = ..." from the inputs: name the step after the position.
-      const std::string message = e.what();
+      // The error is about the value's origin, FILE:LINE:COLUMN of a key: name the step too.
       for (const std::string& key : step.keys)
-        if (const std::string at = r.where(key) + ": "; message.rfind(at, 0) == 0)
-          throw Error(e.code(), r.prefix(key) + message.substr(at.size()));
+        if (e.setting() == r.where(key)) throw e.rephrased(r.prefix(key) + e.detail());
       throw;
     }
     return step;
@@ -439,43 +440,12 @@ class Parser {
     return s;
   }
 
-  /// The step's keys as `linkage render` flags, in file order: "--key-with-dashes VALUE"
-  /// (a list joins with commas).
-  static std::vector<std::string> render_flags(const TableReader& r) {
-    std::vector<std::string> flags;
-    const auto keys = keys_in_file_order(r.table(), [](std::string_view k) {
-      return k != "kind" && k != "heading" && k != "out" && k != "caption";
-    });
-    for (const std::string& key : keys) {
-      std::string flag = "--" + key;
-      std::replace(flag.begin(), flag.end(), '_', '-');
-      const toml::node& value = *r.node(key);
-      std::string text;
-      if (const auto* list = value.as_array()) {
-        for (const toml::node& item : *list) {
-          if (!text.empty()) text += ',';
-          text += item.value_or(std::string{});
-        }
-      } else if (const auto* f = value.as_floating_point()) {
-        text = format_roundtrip(f->get());
-      } else if (const auto* i = value.as_integer()) {
-        text = std::to_string(i->get());
-      } else {
-        text = value.value_or(std::string{});
-      }
-      flags.push_back(flag);
-      flags.push_back(text);
-    }
-    return flags;
-  }
-
-  // The checks `linkage render` makes, made here so a bad lesson fails before any step runs.
+  // The clip's checks, made here so a bad lesson fails before any step runs.
   RenderStep parse_render(const TableReader& r, const Inputs& inputs) const {
     RenderStep s;
     s.out = artifact_name(r, "out");
     s.caption = r.string("caption").value_or("");
     s.run = step_run(r, inputs);
-    s.flags = render_flags(r);
     RenderSettings& g = s.settings;
     try {
       s.kind = output_kind(s.out, r.where("out") + ": " + r.context() + ": out");

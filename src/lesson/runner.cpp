@@ -12,6 +12,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "core/number_format.hpp"
 #include "lesson/canonical.hpp"
 #include "lesson/runner_context.hpp"
@@ -100,6 +101,7 @@ void wait_for_enter(RunContext& c, const std::string& prompt) {
   c.out.flush();
   std::string line;
   std::getline(c.in, line);
+  throw_if_interrupted();  // a signal ends the wait at once (the read returns early)
 }
 
 std::optional<double> parse_answer(std::string text) {
@@ -137,7 +139,9 @@ void run_exercise(RunContext& c, const Step& step, const ExerciseStep& e) {
     c.out << "\nYour answer" << (e.unit.empty() ? "" : " (" + e.unit + ")") << ": ";
     c.out.flush();
     std::string line;
-    if (!std::getline(c.in, line)) {
+    const bool answered = static_cast<bool>(std::getline(c.in, line));
+    throw_if_interrupted();
+    if (!answered) {
       c.out << "\n";
       reveal("No answer given. ");
       break;
@@ -205,23 +209,11 @@ void run_step(RunContext& c, const Step& step) {
       step.body);
 }
 
-void prepare_folder(const fs::path& dir) {
-  std::error_code ec;
-  if (fs::is_directory(dir, ec)) return;
-  if (fs::exists(dir, ec)) throw Error::input("--out: '" + dir.string() + "' exists and is not a folder");
-  const fs::path parent = dir.parent_path().empty() ? fs::path(".") : dir.parent_path();
-  if (!fs::is_directory(parent, ec))
-    throw Error::input("--out: cannot make '" + dir.string() + "': the folder '" + parent.string() + "' does not exist");
-  if (!fs::create_directory(dir, ec) && !fs::is_directory(dir))
-    throw Error::input("--out: cannot make the folder '" + dir.string() + "': " + ec.message());
-}
-
 }  // namespace
 
 RunSummary run_lesson(const Lesson& lesson, const RunnerOptions& options, std::istream& in, std::ostream& out,
                       std::ostream& status) {
-  prepare_folder(options.out_dir);
-  require_writable_directory(options.out_dir, "--out");
+  ensure_directory(options.out_dir, "out");
   RunContext c{lesson,
                options,
                in,
@@ -251,7 +243,7 @@ RunSummary run_lesson(const Lesson& lesson, const RunnerOptions& options, std::i
   const bool whole = std::find(options.selected.begin(), options.selected.end(), false) == options.selected.end();
   if (whole) {
     c.summary.document = options.out_dir / "lesson.md";
-    write_file_atomically(c.summary.document, c.document->take(), "--out");
+    write_file_atomically(c.summary.document, c.document->take(), "out");
   }
   return c.summary;
 }

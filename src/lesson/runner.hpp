@@ -11,6 +11,7 @@
 #include "formulations/expr.hpp"
 #include "lesson/lesson.hpp"
 #include "lesson/output.hpp"
+#include "pipeline/clip.hpp"
 
 namespace linkage::lesson {
 
@@ -20,7 +21,7 @@ enum class Quality { draft, final };
 inline constexpr int kDraftWidth = 480, kDraftHeight = 270, kDraftFps = 15;
 
 struct RunnerOptions {
-  std::filesystem::path out_dir;      // created if missing (its parent must exist)
+  std::filesystem::path out_dir;      // created with its parents if missing
   bool interactive = false;           // --step: pause steps wait, exercises ask
   Quality quality = Quality::draft;
   Format format = Format::text;       // of the terminal output
@@ -28,10 +29,7 @@ struct RunnerOptions {
   bool force = false;                 // make everything, cached or not
   std::size_t width = 80;             // terminal columns for text
   expr::Style style = expr::Style::unicode;
-  /// Runs `linkage ARGS` (the render step's `linkage render ...`) and throws Error with
-  /// the command's exit code when it fails. The CLI passes one that starts this program,
-  /// so a render step is exactly the `linkage render` a lecturer would type.
-  std::function<void(const std::vector<std::string>& args)> run_linkage;
+  std::filesystem::path assets;       // theme folder for render steps (empty: built-in palettes)
 };
 
 struct RunSummary {
@@ -50,14 +48,9 @@ RunSummary run_lesson(const Lesson& lesson, const RunnerOptions& options, std::i
 /// (render steps only) and the program version.
 [[nodiscard]] std::string step_hash(const Step& step, Quality quality);
 
-/// The `linkage render` arguments of a render step at `quality`, writing into `out_dir`:
-/// the inputs that differ from the defaults, the step's own flags (at draft quality
-/// without --quality, --size and --fps, which become 480x270 and at most 15 fps), and
-/// --out.
-[[nodiscard]] std::vector<std::string> render_arguments(const RenderStep& render, Quality quality,
-                                                        const std::filesystem::path& out_dir);
-
-/// `args` as one shell command line, quoted where needed (for the lesson document).
-[[nodiscard]] std::string command_line(const std::vector<std::string>& args);
+/// The clip a render step makes at `quality` into `out_dir`: the step's inputs, run and
+/// picture; at draft quality 480x270 and at most 15 fps.
+[[nodiscard]] Clip render_clip(const RenderStep& render, Quality quality, const std::filesystem::path& out_dir,
+                               const std::filesystem::path& assets = {});
 
 }  // namespace linkage::lesson

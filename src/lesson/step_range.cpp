@@ -15,24 +15,24 @@ std::vector<bool> parse_step_range(const std::string& text, std::size_t count) {
     std::size_t n = 0;
     const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), n);
     if (ec != std::errc() || ptr != s.data() + s.size())
-      throw Error::input("--only: '" + std::string(s) + "' is not a step number" + valid);
+      throw Error::invalid("only", "'" + std::string(s) + "' is not a step number" + valid);
     if (n < 1 || n > count)
-      throw Error::input("--only: step " + std::to_string(n) + " does not exist; the lesson has steps 1 to " +
+      throw Error::invalid("only", "step " + std::to_string(n) + " does not exist; the lesson has steps 1 to " +
                          std::to_string(count));
     return n;
   };
-  if (text.empty()) throw Error::input("--only: the range is empty" + valid);
+  if (text.empty()) throw Error::invalid("only", "the range is empty" + valid);
   std::size_t start = 0;
   while (start <= text.size()) {
     std::size_t comma = text.find(',', start);
     if (comma == std::string::npos) comma = text.size();
     const std::string_view part(text.data() + start, comma - start);
-    if (part.empty()) throw Error::input("--only: '" + text + "' has an empty part" + valid);
+    if (part.empty()) throw Error::invalid("only", "'" + text + "' has an empty part" + valid);
     const std::size_t dash = part.find('-');
     const std::size_t first = dash == std::string_view::npos ? number(part, 1) : number(part.substr(0, dash), 1);
     const std::size_t last = dash == std::string_view::npos ? first : number(part.substr(dash + 1), count);
     if (first > last)
-      throw Error::input("--only: '" + std::string(part) + "' runs backwards" + valid);
+      throw Error::invalid("only", "'" + std::string(part) + "' runs backwards" + valid);
     for (std::size_t i = first; i <= last; ++i) selected[i - 1] = true;
     start = comma + 1;
   }

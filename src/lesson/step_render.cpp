@@ -1,68 +1,41 @@
-// The render step: runs `linkage render` with the step's options, so a lesson's clips
-// and stills are exactly what the command gives, and the document can show the
-// command that remakes each one.
+// The render step: the step's clip or still produced in process by the same pipeline as
+// the render command (src/pipeline), so a lesson's clips are exactly what it gives.
 #include <algorithm>
 
-#include "core/error.hpp"
-#include "core/number_format.hpp"
+#include "core/progress.hpp"
 #include "lesson/runner_context.hpp"
 
 namespace linkage::lesson {
 
-std::vector<std::string> render_arguments(const RenderStep& render, Quality quality, const std::filesystem::path& out_dir) {
-  std::vector<std::string> args{"render"};
-  const Inputs defaults;
-  for (const InputKey& key : kInputKeys)
-    if (render.run.inputs.value(key) != defaults.value(key)) {
-      args.emplace_back(key.flag);
-      args.push_back(format_roundtrip(render.run.inputs.value(key)));
-    }
-  const bool draft = quality == Quality::draft;
-  for (std::size_t i = 0; i + 1 < render.flags.size(); i += 2) {
-    const std::string& flag = render.flags[i];
-    const bool input = std::any_of(kInputKeys.begin(), kInputKeys.end(), [&](const InputKey& k) { return k.flag == flag; });
-    if (input) continue;  // already given, with the values of earlier set steps
-    if (draft && (flag == "--quality" || flag == "--size" || flag == "--fps")) continue;
-    args.push_back(flag);
-    args.push_back(render.flags[i + 1]);
+Clip render_clip(const RenderStep& render, Quality quality, const std::filesystem::path& out_dir,
+                 const std::filesystem::path& assets) {
+  Clip clip;
+  clip.inputs = render.run.inputs;
+  clip.simulation = render.run.options;
+  clip.settings = render.settings;
+  if (quality == Quality::draft) {
+    clip.settings.width = kDraftWidth;
+    clip.settings.height = kDraftHeight;
+    clip.settings.fps = std::min(render.settings.fps, kDraftFps);
   }
-  if (draft) {
-    args.insert(args.end(), {"--size", std::to_string(kDraftWidth) + "x" + std::to_string(kDraftHeight), "--fps",
-                             std::to_string(std::min(render.settings.fps, kDraftFps))});
-  }
-  args.emplace_back("--out");
-  args.push_back((out_dir / render.out).string());
-  return args;
-}
-
-std::string command_line(const std::vector<std::string>& args) {
-  std::string line = "linkage";
-  for (const std::string& a : args) {
-    const bool plain = !a.empty() && std::all_of(a.begin(), a.end(), [](char c) {
-      return std::isalnum(static_cast<unsigned char>(c)) || std::string_view("-_.,/:=+").find(c) != std::string_view::npos;
-    });
-    line += ' ';
-    if (plain) {
-      line += a;
-      continue;
-    }
-    line += '\'';
-    for (char c : a) line += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    line += '\'';
-  }
-  return line;
+  clip.theme = load_theme(clip.settings.theme, assets, "theme");
+  clip.out = out_dir / render.out;
+  return clip;
 }
 
 void run_render(RunContext& c, const Step& step, const RenderStep& s) {
   c.cached(step, [&] {
-    if (!c.options.run_linkage) throw Error::failure("a render step needs the linkage program to run `linkage render`");
-    c.options.run_linkage(render_arguments(s, c.options.quality, c.options.out_dir));
+    const Clip clip = render_clip(s, c.options.quality, c.options.out_dir, c.options.assets);
+    std::optional<Progress> progress;
+    (void)produce_clip(clip, [&](ClipStage stage, long done, long total) {
+      if (stage != ClipStage::draw) return;
+      if (!progress) progress.emplace("render " + s.out, total, "frames");
+      progress->update(done);
+    });
     return nlohmann::json::object();
   });
   const FigureRef::Kind kind = is_still(s.kind) ? FigureRef::Kind::image : FigureRef::Kind::video;
   c.both([&](Writer& w) { w.figure(c.figure(s.out, kind, s.caption)); });
-  // Lecturers can remake (or vary) any clip by hand: the document shows the command.
-  c.document->markdown("<sub>Made with `" + command_line(render_arguments(s, c.options.quality, {})) + "`</sub>");
 }
 
 }  // namespace linkage::lesson

@@ -59,7 +59,7 @@ nlohmann::json simulate(const RunContext& c, const SimulateStep& s) {
   const std::vector<double> times = sample_times(run.options.duration, s.every);
   std::optional<AtomicFile> file;
   if (!s.trajectory.empty()) {
-    file.emplace(c.options.out_dir / s.trajectory, "--out");
+    file.emplace(c.options.out_dir / s.trajectory, "out");
     std::string header;
     for (const Column column : s.columns) {
       if (!header.empty()) header += ',';

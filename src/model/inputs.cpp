@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 #include "core/number_format.hpp"
 #include "model/inputs_toml.hpp"
 
@@ -79,7 +80,7 @@ const std::string& Inputs::origin(const InputKey& key) const { return origins_[i
 
 void Inputs::set(const InputKey& key, double value, std::string origin) {
   if (!std::isfinite(value))
-    throw Error::input(origin + ": " + std::string(key.key) + " = " + format_roundtrip(value) +
+    throw Error::invalid(origin, std::string(key.key) + " = " + format_roundtrip(value) +
                        " is not a finite number");
   if (key.param != nullptr)
     params_.*key.param = value;
@@ -88,11 +89,31 @@ void Inputs::set(const InputKey& key, double value, std::string origin) {
   origins_[index_of(key)] = std::move(origin);
 }
 
+std::string likely_causes(const Inputs& inputs) {
+  std::string list;
+  for (const InputKey& key : kInputKeys) {
+    const double v = std::fabs(inputs.value(key));
+    if (v >= 1e50 || (v > 0 && v <= 1e-50)) {
+      list += list.empty() ? "" : ", ";
+      list += std::string(key.key) + " = " + format_roundtrip(inputs.value(key)) + " (" + inputs.origin(key) + ")";
+    }
+  }
+  if (!list.empty()) return list;
+  // Nothing extreme on its own: the combination overflowed; name what was given.
+  for (const InputKey& key : kInputKeys) {
+    if (inputs.origin(key) == "default") continue;
+    list += list.empty() ? "" : ", ";
+    list += std::string(key.key) + " = " + format_roundtrip(inputs.value(key)) + " (" + inputs.origin(key) + ")";
+  }
+  return list;
+}
+
 void Inputs::validate() const {
   auto fail = [&](const char* key, const std::string& rule) {
     const InputKey& k = *find_input_key(key);
-    throw Error::input(origin(k) + ": " + std::string(k.key) + " = " + format_roundtrip(value(k)) + " " + std::string(k.unit) +
-                       " is out of range; " + rule);
+    // About the value's origin (a flag, a file position): the reader that recorded it.
+    throw Error::invalid(origin(k), std::string(k.key) + " = " + format_roundtrip(value(k)) + " " + std::string(k.unit) +
+                                        " is out of range; " + rule);
   };
   if (!(params_.L > 0)) fail("L", "the block length must be > 0");
   if (!(params_.w > 0)) fail("w", "the block width must be > 0");
@@ -103,7 +124,7 @@ void Inputs::validate() const {
 }
 
 void Inputs::apply_file(const std::filesystem::path& path) {
-  const toml::table table = parse_toml_file(path.string(), "--config");
+  const toml::table table = parse_toml_file(path.string(), "config");
   apply_toml(*this, table, path.string());
 }
 
@@ -129,14 +150,12 @@ void apply_toml(Inputs& inputs, const toml::table& table, const std::string& fil
 }
 
 toml::table parse_toml_file(const std::string& path, const std::string& origin) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw Error::input(origin + ": file '" + path + "' does not exist");
-  if (std::filesystem::is_directory(path, ec)) throw Error::input(origin + ": '" + path + "' is a folder, not a file");
+  require_regular_file(path, origin);
   try {
     return toml::parse_file(path);
   } catch (const toml::parse_error& e) {
     const auto& where = e.source().begin;
-    if (where.line == 0) throw Error::input(origin + ": cannot read '" + path + "': " + std::string(e.description()));
+    if (where.line == 0) throw Error::invalid(origin, "cannot read '" + path + "': " + std::string(e.description()));
     throw Error::input(source_position(path, where.line, where.column) + ": " + std::string(e.description()));
   }
 }

@@ -15,7 +15,6 @@ namespace linkage {
 
 struct InputKey {
   std::string_view key;          // TOML key and JSON name, e.g. "theta1_dot"
-  std::string_view flag;         // CLI flag, e.g. "--theta1-dot"
   std::string_view unit;         // e.g. "rad/s"
   std::string_view description;  // e.g. "angular velocity of block 1"
   double Params::*param = nullptr;
@@ -23,19 +22,19 @@ struct InputKey {
 };
 
 inline constexpr std::array<InputKey, 13> kInputKeys{{
-    {"L", "--L", "m", "block length", &Params::L, nullptr},
-    {"w", "--w", "m", "block width", &Params::w, nullptr},
-    {"b", "--b", "m", "pin distance from one end of each block, in [0, L]", &Params::b, nullptr},
-    {"m", "--m", "kg", "mass of each block", &Params::m, nullptr},
-    {"g", "--g", "m/s^2", "gravitational acceleration along -y", &Params::g, nullptr},
-    {"x1", "--x1", "m", "x of block 1's centre of mass", nullptr, &State::x1},
-    {"y1", "--y1", "m", "y of block 1's centre of mass", nullptr, &State::y1},
-    {"theta1", "--theta1", "rad", "angle of block 1 from +x", nullptr, &State::theta1},
-    {"theta2", "--theta2", "rad", "angle of block 2 from +x", nullptr, &State::theta2},
-    {"x1_dot", "--x1-dot", "m/s", "x velocity of block 1's centre of mass", nullptr, &State::x1_dot},
-    {"y1_dot", "--y1-dot", "m/s", "y velocity of block 1's centre of mass", nullptr, &State::y1_dot},
-    {"theta1_dot", "--theta1-dot", "rad/s", "angular velocity of block 1", nullptr, &State::theta1_dot},
-    {"theta2_dot", "--theta2-dot", "rad/s", "angular velocity of block 2", nullptr, &State::theta2_dot},
+    {"L", "m", "block length", &Params::L, nullptr},
+    {"w", "m", "block width", &Params::w, nullptr},
+    {"b", "m", "pin distance from one end of each block, in [0, L]", &Params::b, nullptr},
+    {"m", "kg", "mass of each block", &Params::m, nullptr},
+    {"g", "m/s^2", "gravitational acceleration along -y", &Params::g, nullptr},
+    {"x1", "m", "x of block 1's centre of mass", nullptr, &State::x1},
+    {"y1", "m", "y of block 1's centre of mass", nullptr, &State::y1},
+    {"theta1", "rad", "angle of block 1 from +x", nullptr, &State::theta1},
+    {"theta2", "rad", "angle of block 2 from +x", nullptr, &State::theta2},
+    {"x1_dot", "m/s", "x velocity of block 1's centre of mass", nullptr, &State::x1_dot},
+    {"y1_dot", "m/s", "y velocity of block 1's centre of mass", nullptr, &State::y1_dot},
+    {"theta1_dot", "rad/s", "angular velocity of block 1", nullptr, &State::theta1_dot},
+    {"theta2_dot", "rad/s", "angular velocity of block 2", nullptr, &State::theta2_dot},
 }};
 
 /// The input named `key` (TOML spelling), or nullptr.
@@ -45,7 +44,12 @@ inline constexpr std::array<InputKey, 13> kInputKeys{{
 /// The valid key closest to a misspelt one (edit distance), if any is close.
 [[nodiscard]] std::optional<std::string_view> closest_input_key(std::string_view key);
 
-/// Parameters and state together with where each value came from ("default", "--m",
+class Inputs;
+/// For a value that overflowed: the inputs far outside physical sizes (|v| >= 1e50 or
+/// <= 1e-50), else every input given, each with its origin ("x1_dot = 1e+200 (--x1-dot)").
+[[nodiscard]] std::string likely_causes(const Inputs& inputs);
+
+/// Parameters and state together with where each value came from ("default", a flag,
 /// "run.toml:3:5"), so errors can name the source.
 class Inputs {
  public:

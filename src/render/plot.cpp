@@ -159,15 +159,15 @@ std::optional<Format> format_of(const std::filesystem::path& path) {
 void validate(const Plot& plot, const Canvas& canvas, const std::string& origin) {
   for (const auto& [size, name] : {std::pair{canvas.width, "width"}, std::pair{canvas.height, "height"}})
     if (!(size >= 100 && size <= 20000))
-      throw Error::input(origin + ": plot " + name + " " + number(size) + " is outside 100..20000");
+      throw Error::invalid(origin, "plot " + std::string(name) + " " + number(size) + " is outside 100..20000");
   if (!(canvas.font_size >= 4 && canvas.font_size <= 200))
-    throw Error::input(origin + ": plot font size " + number(canvas.font_size) + " is outside 4..200");
+    throw Error::invalid(origin, "plot font size " + number(canvas.font_size) + " is outside 4..200");
   validate_axis(plot.x, origin + ": x axis");
   validate_axis(plot.y, origin + ": y axis");
   for (std::size_t i = 0; i < plot.series.size(); ++i) {
     const Series& series = plot.series[i];
     if (series.color && *series.color >= palette_size)
-      throw Error::input(origin + ": series " + std::to_string(i + 1) + " '" + series.name + "': colour slot " +
+      throw Error::invalid(origin, "series " + std::to_string(i + 1) + " '" + series.name + "': colour slot " +
                          std::to_string(*series.color) + " is outside the palette 0.." +
                          std::to_string(palette_size - 1));
   }
@@ -176,7 +176,7 @@ void validate(const Plot& plot, const Canvas& canvas, const std::string& origin)
 Report write(const Plot& plot, const std::filesystem::path& target, const Canvas& canvas, const std::string& origin) {
   const std::optional<Format> format = format_of(target);
   if (!format)
-    throw Error::input(origin + ": '" + target.string() + "' has an unknown plot format '" +
+    throw Error::invalid(origin, "'" + target.string() + "' has an unknown plot format '" +
                        target.extension().string() + "' (valid: .png, .svg, .pdf)");
   validate(plot, canvas, origin);
   AtomicFile file(target, origin, /*binary=*/true);

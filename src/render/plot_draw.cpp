@@ -502,7 +502,7 @@ class Drawing {
 Report draw(cairo_t* cr, const Plot& plot, const Canvas& canvas, const std::string& origin) {
   validate(plot, canvas, origin);
   if (const cairo_status_t status = cairo_status(cr); status != CAIRO_STATUS_SUCCESS)
-    throw Error::failure(origin + ": cannot draw plot: " + cairo_status_to_string(status));
+    throw Error::failure(origin, "cannot draw plot: " + std::string(cairo_status_to_string(status)));
   cairo_save(cr);
   Report report;
   try {
@@ -513,7 +513,7 @@ Report draw(cairo_t* cr, const Plot& plot, const Canvas& canvas, const std::stri
   }
   cairo_restore(cr);
   if (const cairo_status_t status = cairo_status(cr); status != CAIRO_STATUS_SUCCESS)
-    throw Error::failure(origin + ": cannot draw plot: " + cairo_status_to_string(status));
+    throw Error::failure(origin, "cannot draw plot: " + std::string(cairo_status_to_string(status)));
   return report;
 }
 

@@ -1,5 +1,7 @@
 #include "render/settings.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <vector>
@@ -18,17 +20,17 @@ double parse_double(std::string_view text, const std::string& origin, std::strin
   if (first != last && *first == '+') ++first;
   const auto [ptr, ec] = std::from_chars(first, last, value);
   if (text.empty() || ec != std::errc() || ptr != last || !std::isfinite(value))
-    throw Error::input(origin + ": '" + std::string(whole) + "': '" + std::string(text) + "' is not a finite number");
+    throw Error::invalid(origin, "'" + std::string(whole) + "': '" + std::string(text) + "' is not a finite number");
   return value;
 }
 
 void check_size(int width, int height, const std::string& origin) {
   const std::string size = std::to_string(width) + "x" + std::to_string(height);
-  if (width <= 0 || height <= 0) throw Error::input(origin + ": size " + size + " must be positive");
+  if (width <= 0 || height <= 0) throw Error::invalid(origin, "size " + size + " must be positive");
   if (width % 2 != 0 || height % 2 != 0)
-    throw Error::input(origin + ": size " + size + " must have an even width and height (yuv420p video halves the colour resolution)");
+    throw Error::invalid(origin, "size " + size + " must have an even width and height (yuv420p video halves the colour resolution)");
   if (width > kMaxWidth || height > kMaxHeight)
-    throw Error::input(origin + ": size " + size + " is above the largest, " + std::to_string(kMaxWidth) + "x" +
+    throw Error::invalid(origin, "size " + size + " is above the largest, " + std::to_string(kMaxWidth) + "x" +
                        std::to_string(kMaxHeight));
 }
 
@@ -39,24 +41,24 @@ long RenderSettings::frame_count() const { return std::lround(duration / speed *
 double RenderSettings::frame_time(long k) const { return static_cast<double>(k) * speed / fps; }
 
 void RenderSettings::validate() const {
-  check_size(width, height, "--size");
+  check_size(width, height, "size");
   if (fps < 1 || fps > kMaxFps)
-    throw Error::input("--fps: " + std::to_string(fps) + " is outside 1 .. " + std::to_string(kMaxFps));
+    throw Error::invalid("fps", std::to_string(fps) + " is outside 1 .. " + std::to_string(kMaxFps));
   if (!(speed > 0) || !std::isfinite(speed))
-    throw Error::input("--speed: " + format_significant(speed, 6) + " must be a positive number (simulated seconds per second of video)");
+    throw Error::invalid("speed", format_significant(speed, 6) + " must be a positive number (simulated seconds per second of video)");
   if (!(duration > 0) || !std::isfinite(duration))
-    throw Error::input("--duration: " + format_significant(duration, 6) + " s must be positive");
+    throw Error::invalid("duration", format_significant(duration, 6) + " s must be positive");
   if (duration / speed > kMaxVideoSeconds)
-    throw Error::input("--duration: " + format_significant(duration, 6) + " s at --speed " + format_significant(speed, 6) +
+    throw Error::invalid("duration", format_significant(duration, 6) + " s at speed " + format_significant(speed, 6) +
                        " makes " + format_significant(duration / speed, 6) + " s of video; at most " +
                        format_significant(kMaxVideoSeconds, 6) + " s (an hour)");
   if (frame_count() < 1)
-    throw Error::input("--duration: " + format_significant(duration, 6) + " s at --speed " + format_significant(speed, 6) +
+    throw Error::invalid("duration", format_significant(duration, 6) + " s at speed " + format_significant(speed, 6) +
                        " and " + std::to_string(fps) + " fps is less than one frame");
   if (!(at >= 0) || at > kMaxStillTime)
-    throw Error::input("--at: " + format_significant(at, 6) + " s is outside 0 .. " + format_significant(kMaxStillTime, 6) + " s");
+    throw Error::invalid("at", format_significant(at, 6) + " s is outside 0 .. " + format_significant(kMaxStillTime, 6) + " s");
   if (camera == CameraMode::fixed && !(view.xmax > view.xmin && view.ymax > view.ymin))
-    throw Error::input("--view: the fixed camera needs a view with positive width and height");
+    throw Error::invalid("view", "the fixed camera needs a view with positive width and height");
 }
 
 const Quality& parse_quality(std::string_view name, const std::string& origin) {
@@ -66,7 +68,7 @@ const Quality& parse_quality(std::string_view name, const std::string& origin) {
     valid += std::string(valid.empty() ? "" : ", ") + std::string(q.name) + " (" + std::to_string(q.width) + "x" +
              std::to_string(q.height) + "@" + std::to_string(q.fps) + ")";
   }
-  throw Error::input(origin + ": '" + std::string(name) + "' is not a quality; valid: " + valid);
+  throw Error::invalid(origin, "'" + std::string(name) + "' is not a quality; valid: " + valid);
 }
 
 void parse_size(std::string_view text, const std::string& origin, int& width, int& height) {
@@ -77,7 +79,7 @@ void parse_size(std::string_view text, const std::string& origin, int& width, in
     return !part.empty() && ec == std::errc() && ptr == part.data() + part.size();
   };
   if (x == std::string_view::npos || !whole_int(text.substr(0, x), w) || !whole_int(text.substr(x + 1), h))
-    throw Error::input(origin + ": '" + std::string(text) + "' is not a size WIDTHxHEIGHT (e.g. 1280x720)");
+    throw Error::invalid(origin, "'" + std::string(text) + "' is not a size WIDTHxHEIGHT (e.g. 1280x720)");
   check_size(w, h, origin);
   width = w;
   height = h;
@@ -87,7 +89,7 @@ CameraMode parse_camera(std::string_view name, const std::string& origin) {
   if (name == "follow") return CameraMode::follow;
   if (name == "fixed") return CameraMode::fixed;
   if (name == "fit") return CameraMode::fit;
-  throw Error::input(origin + ": '" + std::string(name) + "' is not a camera; valid: follow, fixed, fit");
+  throw Error::invalid(origin, "'" + std::string(name) + "' is not a camera; valid: follow, fixed, fit");
 }
 
 View parse_view(std::string_view text, const std::string& origin) {
@@ -101,20 +103,22 @@ View parse_view(std::string_view text, const std::string& origin) {
     start = comma + 1;
   }
   if (values.size() != 4)
-    throw Error::input(origin + ": '" + std::string(text) + "' is not xmin,ymin,xmax,ymax (four numbers in metres)");
+    throw Error::invalid(origin, "'" + std::string(text) + "' is not xmin,ymin,xmax,ymax (four numbers in metres)");
   const View view{values[0], values[1], values[2], values[3]};
   if (!(view.xmax > view.xmin) || !(view.ymax > view.ymin))
-    throw Error::input(origin + ": '" + std::string(text) + "' has zero or negative area; need xmin < xmax and ymin < ymax");
+    throw Error::invalid(origin, "'" + std::string(text) + "' has zero or negative area; need xmin < xmax and ymin < ymax");
   return view;
 }
 
 OutputKind output_kind(const std::filesystem::path& file, const std::string& origin) {
-  const std::string extension = file.extension().string();
+  std::string extension = file.extension().string();  // matched whatever its case
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (extension == ".mp4") return OutputKind::mp4;
   if (extension == ".png") return OutputKind::png;
   if (extension == ".svg") return OutputKind::svg;
   if (extension == ".pdf") return OutputKind::pdf;
-  throw Error::input(origin + ": '" + file.string() + "' has " +
+  throw Error::invalid(origin, "'" + file.string() + "' has " +
                      (extension.empty() ? std::string("no extension") : "extension '" + extension + "'") +
                      "; valid: .mp4 (video), .png (still), .svg or .pdf (vector still)");
 }

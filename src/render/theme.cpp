@@ -119,7 +119,7 @@ Theme load_theme(std::string_view name, const std::filesystem::path& assets, con
     }
     return parse_theme(embedded.toml, std::string(name), "embedded themes/" + std::string(name) + ".toml");
   }
-  throw Error::input(origin + ": '" + std::string(name) + "' is not a theme; valid: " + theme_name_list());
+  throw Error::invalid(origin, "'" + std::string(name) + "' is not a theme; valid: " + theme_name_list());
 }
 
 }  // namespace linkage

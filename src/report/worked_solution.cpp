@@ -10,25 +10,12 @@
 namespace linkage {
 namespace {
 
-// Inputs far outside physical sizes, named in overflow messages as the likely cause.
-std::string extreme_inputs(const Inputs& inputs) {
-  std::string list;
-  for (const InputKey& key : kInputKeys) {
-    const double v = std::fabs(inputs.value(key));
-    if (v >= 1e50 || (v > 0 && v <= 1e-50)) {
-      list += list.empty() ? "" : ", ";
-      list += std::string(key.key) + " = " + format_roundtrip(inputs.value(key)) + " (" + inputs.origin(key) + ")";
-    }
-  }
-  return list;
-}
-
 void require_finite(double value, const std::string& name, const Inputs& inputs) {
   if (std::isfinite(value)) return;
-  const std::string causes = extreme_inputs(inputs);
+  const std::string causes = likely_causes(inputs);
   throw Error::input(name + " = " + format_roundtrip(value) +
                      " overflows double precision; the inputs must keep every derived quantity finite" +
-                     (causes.empty() ? "" : " (extreme inputs: " + causes + ")"));
+                     (causes.empty() ? "" : " (inputs: " + causes + ")"));
 }
 
 void check_derived(const Derived& d, const Inputs& inputs) {
@@ -47,6 +34,8 @@ void check_case(const CaseSolution& c, const Inputs& inputs) {
   for (Eigen::Index i = 0; i < c.B.size(); ++i) require_finite(c.B[i], where + "right-hand side", inputs);
   for (Eigen::Index i = 0; i < c.solution.size(); ++i)
     require_finite(c.solution[i], where + "solution value", inputs);
+  require_finite(c.residual, where + "residual", inputs);
+  require_finite(c.condition_number, where + "condition number", inputs);
 }
 
 std::vector<Agreement> compare_cases(const std::vector<CaseSolution>& cases, const Params& p) {

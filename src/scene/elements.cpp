@@ -31,7 +31,7 @@ std::string element_name_list() {
 Element parse_element(std::string_view text, const std::string& origin) {
   for (const ElementInfo& info : kElements)
     if (info.name == text) return info.element;
-  throw Error::input(origin + ": '" + std::string(text) + "' is not an element; valid: " + element_name_list());
+  throw Error::invalid(origin, "'" + std::string(text) + "' is not an element; valid: " + element_name_list());
 }
 
 namespace {
@@ -50,8 +50,8 @@ void for_each_name(const std::string& list, const std::string& origin, Apply app
 }  // namespace
 
 void apply_show_hide(ElementSet& set, const std::vector<std::string>& show, const std::vector<std::string>& hide) {
-  for (const std::string& list : show) for_each_name(list, "--show", [&](Element e) { set.show(e); });
-  for (const std::string& list : hide) for_each_name(list, "--hide", [&](Element e) { set.hide(e); });
+  for (const std::string& list : show) for_each_name(list, "show", [&](Element e) { set.show(e); });
+  for (const std::string& list : hide) for_each_name(list, "hide", [&](Element e) { set.hide(e); });
 }
 
 }  // namespace linkage

@@ -68,6 +68,21 @@ TEST(RenderCli, PngSequenceIsNumberedAndByteIdenticalAcrossRuns) {
   EXPECT_EQ(png.height, 90u);
 }
 
+// --frames makes its folder with the parents (mkdir -p), and a shorter run leaves none of
+// an older, longer sequence's frames behind (other files stay).
+TEST(RenderCli, FramesFolderIsMadeAndOlderFramesDoNotLinger) {
+  TempDir dir;
+  const std::string deep = (dir / "x" / "y" / "z").string();
+  ASSERT_EQ(render({"--duration", "1", "--frames", deep}).exit_code, 0);
+  EXPECT_EQ(entries(deep).size(), 10u);
+  test::write_text(dir / "x" / "y" / "z" / "notes.txt", "mine");
+  test::write_text(dir / "x" / "y" / "z" / "frame_0000042.png", "an older, wider numbering");
+  ASSERT_EQ(render({"--duration", "0.5", "--frames", deep}).exit_code, 0);
+  const std::vector<std::string> names = entries(deep);
+  EXPECT_EQ(names, (std::vector<std::string>{"frame_00000.png", "frame_00001.png", "frame_00002.png", "frame_00003.png",
+                                             "frame_00004.png", "notes.txt"}));
+}
+
 TEST(RenderCli, StillsAsPngSvgAndPdf) {
   TempDir dir;
   ASSERT_EQ(render({"--out", (dir / "still.png").string(), "--at", "0.5"}).exit_code, 0);

@@ -59,7 +59,13 @@ bool wait_for_work(const TempDir& dir, std::size_t entries_before) {
   return false;
 }
 
-TEST(RenderSafety, CtrlCIsExit130AndLeavesNoPartialFile) {
+// SIGINT (Ctrl-C), SIGTERM (timeout, a job runner, container stop) and SIGHUP (a closed
+// terminal) all end a render the same way: exit 128 + signal, no temporary left, the
+// earlier file kept.
+class RenderSignal : public ::testing::TestWithParam<int> {};
+
+TEST_P(RenderSignal, IsExit128PlusSignalAndLeavesNoPartialFile) {
+  const int signal = GetParam();
   TempDir dir;
   write_text(dir / "clip.mp4", "an earlier clip");
   std::filesystem::create_directory(dir / "frames");
@@ -67,14 +73,42 @@ TEST(RenderSafety, CtrlCIsExit130AndLeavesNoPartialFile) {
   const pid_t pid = start({"render", "--quiet", "--size", "320x180", "--duration", "600", "--out",
                            (dir / "clip.mp4").string(), "--frames", (dir / "frames").string()});
   ASSERT_TRUE(wait_for_work(dir, 2)) << "the render never started writing";
-  ::kill(pid, SIGINT);
+  ::kill(pid, signal);
   int status = 0;
   ::waitpid(pid, &status, 0);
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 130);
+  ASSERT_TRUE(WIFEXITED(status)) << "ended by signal " << (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+  EXPECT_EQ(WEXITSTATUS(status), 128 + signal);
   EXPECT_EQ(dir.entries(), (std::vector<std::string>{"clip.mp4", "frames"}));
   EXPECT_EQ(read_text(dir / "clip.mp4"), "an earlier clip");
   EXPECT_TRUE(std::filesystem::is_empty(dir / "frames"));
+}
+
+INSTANTIATE_TEST_SUITE_P(Signals, RenderSignal, ::testing::Values(SIGINT, SIGTERM, SIGHUP),
+                         [](const ::testing::TestParamInfo<int>& param) {
+                           return std::string(param.param == SIGINT ? "SIGINT" : param.param == SIGTERM ? "SIGTERM" : "SIGHUP");
+                         });
+
+// SIGKILL cannot be handled: the temporary stays, and the next run that writes the same
+// target removes it (its process is gone).
+TEST(RenderSafety, NextRunRemovesWhatAKilledRunLeft) {
+  TempDir dir;
+  const pid_t pid = start({"render", "--quiet", "--size", "320x180", "--duration", "600", "--out",
+                           (dir / "clip.mp4").string()});
+  ASSERT_TRUE(wait_for_work(dir, 0)) << "the render never started writing";
+  ::kill(pid, SIGKILL);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status));
+  ASSERT_EQ(dir.entries().size(), 1u);
+  EXPECT_NE(dir.entries().front().find("clip.mp4.tmp-" + std::to_string(pid) + "-"), std::string::npos);
+  // Another file's temporary of a live process (this test) is left alone.
+  const std::string live = "clip.mp4.tmp-" + std::to_string(::getpid()) + "-0.mp4";
+  write_text(dir / live, "in progress");
+
+  const RunResult r = run_linkage({"render", "--quiet", "--size", "64x36", "--duration", "0.2", "--out",
+                                   (dir / "clip.mp4").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"clip.mp4", live}));
 }
 
 }  // namespace

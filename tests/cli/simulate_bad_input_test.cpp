@@ -55,11 +55,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{{"--case", "4"}, "--case: '4' is not a case; valid: 1, 2, 3"},
         BadInput{{"--columns", "t,x3"}, "--columns: 'x3' is not a column; valid: all, t, x1"},
         BadInput{{"--columns", "t,t"}, "--columns: column 't' is listed twice"},
-        BadInput{{"--columns", ""}, "--columns: '' is not a column"},
+        BadInput{{"--columns", ""}, "--columns: the value is empty"},
         BadInput{{"--format", "xml"}, "--format: 'xml' is not a format; valid: csv, json"},
         BadInput{{"--baumgarte-alpha", "-1"}, "--baumgarte-alpha: -1 1/s is out of range"},
         BadInput{{"--integrator", "rk4", "--dt", "1e-9"},
-                 "--dt: 1e-09 s needs 1e+10 steps of rk4 for --duration 10 s; the limit is 1e9 steps"},
+                 "--dt: 1e-09 s needs 1e+10 steps of rk4 for a duration of 10 s; the limit is 1e9 steps"},
         BadInput{{"--m", "-1"}, "--m"}));
 
 TEST(SimulateBadOutput, MissingFolderIsExit2) {

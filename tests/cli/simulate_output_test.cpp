@@ -136,9 +136,19 @@ TEST(SimulateCli, JsonFromTheExtensionWithOptionsAndSummary) {
 
 TEST(SimulateCli, CsvFileAndFormatFlag) {
   TempDir dir;
-  const RunResult csv = run_linkage({"simulate", "--duration", "1", "--out", (dir / "run.txt").string()});
+  // An extension we do not know is refused (it would silently be CSV); --format says it.
+  const RunResult unknown = run_linkage({"simulate", "--duration", "1", "--out", (dir / "run.txt").string()});
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_NE(unknown.err.find("extension '.txt'; valid: .csv or .json"), std::string::npos) << unknown.err;
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{});
+  const RunResult csv =
+      run_linkage({"simulate", "--duration", "1", "--format", "csv", "--out", (dir / "run.txt").string()});
   ASSERT_EQ(csv.exit_code, 0) << csv.err;
   EXPECT_EQ(read_text(dir / "run.txt").substr(0, 5), "t,x1,");
+  // Extensions match whatever their case.
+  const RunResult upper = run_linkage({"simulate", "--duration", "1", "--out", (dir / "RUN.JSON").string()});
+  ASSERT_EQ(upper.exit_code, 0) << upper.err;
+  EXPECT_EQ(read_text(dir / "RUN.JSON").substr(0, 1), "{");
   const RunResult json = run_linkage({"simulate", "--duration", "1", "--format", "json", "--columns", "t"});
   ASSERT_EQ(json.exit_code, 0) << json.err;
   EXPECT_EQ(nlohmann::json::parse(json.out)["rows"].size(), 101u);
@@ -201,7 +211,7 @@ TEST(SimulateCli, DivergenceIsExit3WithOneLineAndNoFile) {
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_NE(r.err.find("t = "), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("with step 0.01 s"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("try a smaller --dt"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("try a smaller step dt"), std::string::npos) << r.err;
   EXPECT_TRUE(dir.entries().empty()) << "no file, not even a temporary";
 
   const RunResult out = run_linkage(stiff);

@@ -61,7 +61,7 @@ TEST(SolveBadInput, NonFiniteAndUnparsableNumbers) {
       {{"--theta1", "abc"}, {"--theta1", "'abc'", "not a number (rad)"}},
       {{"--theta1", "1.5x"}, {"--theta1", "'1.5x'", "not a number"}},
       {{"--x1-dot", "0,15"}, {"--x1-dot", "'0,15'", "not a number (m/s)"}},
-      {{"--theta2-dot", ""}, {"--theta2-dot", "not a number"}},
+      {{"--theta2-dot", ""}, {"--theta2-dot", "the value is empty"}},
       {{"--x1", "1e400"}, {"--x1", "'1e400'"}},
       {{"--m"}, {"--m", "missing"}},
   };

@@ -213,7 +213,7 @@ TEST(VideoWriter, WrongFrameSizeOrNoFramesFailAndLeaveNothing) {
 TEST(VideoWriter, MissingFolderOrFileInPathIsAClearInputError) {
   const TempDir dir;
   expect_error([&] { VideoWriter writer(dir / "no-such-folder" / "clip.mp4", small_options()); }, ExitCode::bad_input,
-               "--out: folder '" + (dir / "no-such-folder").string() + "' does not exist");
+               "out: folder '" + (dir / "no-such-folder").string() + "' does not exist");
   test::write_text(dir / "plain-file", "");
   expect_error([&] { VideoWriter writer(dir / "plain-file" / "clip.mp4", small_options()); }, ExitCode::bad_input,
                "is not a folder");

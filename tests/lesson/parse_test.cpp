@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "lesson/lesson.hpp"
+#include "lesson/runner.hpp"
 #include "support/test_support.hpp"
 
 namespace linkage::lesson {
@@ -129,9 +130,16 @@ title = "A still"
   EXPECT_TRUE(r.settings.elements.has(Element::velocity));
   EXPECT_FALSE(r.settings.elements.has(Element::hud));
   EXPECT_TRUE(r.settings.elements.has(Element::blocks));
-  EXPECT_EQ(r.flags, (std::vector<std::string>{"--at", "1.5", "--size", "640x360", "--camera", "fixed", "--view", "0,1,2,3",
-                                                "--theme", "dark", "--show", "velocity", "--hide", "hud,legend", "--title",
-                                                "A still"}));
+  // The clip the step makes is the render command's, at the step's settings.
+  const Clip clip = render_clip(r, Quality::final, "out");
+  EXPECT_EQ(clip.settings.width, 640);
+  EXPECT_EQ(clip.settings.theme, "dark");
+  ASSERT_TRUE(clip.out.has_value());
+  EXPECT_EQ(*clip.out, std::filesystem::path("out") / "still.svg");
+  EXPECT_TRUE(clip.is_still());
+  const Clip draft = render_clip(r, Quality::draft, "out");
+  EXPECT_EQ(draft.settings.width, kDraftWidth);
+  EXPECT_EQ(draft.settings.height, kDraftHeight);
 }
 
 // Each broken lesson's first line says where its error is and what it says:

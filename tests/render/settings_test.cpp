@@ -58,15 +58,15 @@ TEST(RenderSettings, Ranges) {
     return input_error([&] { s.validate(); });
   };
   EXPECT_EQ(with([](RenderSettings&) {}), "");
-  EXPECT_NE(with([](RenderSettings& s) { s.fps = 0; }).find("--fps"), std::string::npos);
+  EXPECT_NE(with([](RenderSettings& s) { s.fps = 0; }).find("fps: "), std::string::npos);
   EXPECT_NE(with([](RenderSettings& s) { s.fps = 241; }).find("1 .. 240"), std::string::npos);
-  EXPECT_NE(with([](RenderSettings& s) { s.duration = 0; }).find("--duration"), std::string::npos);
+  EXPECT_NE(with([](RenderSettings& s) { s.duration = 0; }).find("duration: "), std::string::npos);
   EXPECT_NE(with([](RenderSettings& s) { s.duration = -1; }).find("positive"), std::string::npos);
   EXPECT_NE(with([](RenderSettings& s) { s.duration = 3601; }).find("an hour"), std::string::npos);
   EXPECT_EQ(with([](RenderSettings& s) { s.duration = 7200; s.speed = 2; }), "");  // one hour of video
-  EXPECT_NE(with([](RenderSettings& s) { s.speed = 0; }).find("--speed"), std::string::npos);
+  EXPECT_NE(with([](RenderSettings& s) { s.speed = 0; }).find("speed: "), std::string::npos);
   EXPECT_NE(with([](RenderSettings& s) { s.duration = 0.001; }).find("less than one frame"), std::string::npos);
-  EXPECT_NE(with([](RenderSettings& s) { s.at = -1; }).find("--at"), std::string::npos);
+  EXPECT_NE(with([](RenderSettings& s) { s.at = -1; }).find("at: "), std::string::npos);
   EXPECT_NE(with([](RenderSettings& s) { s.width = 641; }).find("even"), std::string::npos);
 }
 

@@ -1,0 +1,14 @@
+#pragma once
+// Files the user gives to read (a config, a lesson, a lesson's text): they must be
+// regular files. A FIFO would block the program forever and a device (/dev/zero) never
+// ends or reads as empty, so both are refused up front.
+#include <filesystem>
+#include <string>
+
+namespace linkage {
+
+/// Error::invalid(setting) unless `path` exists and is a regular file (a symlink to one
+/// is fine): a missing file, a folder, a FIFO or a device each get their own message.
+void require_regular_file(const std::filesystem::path& path, const std::string& setting);
+
+}  // namespace linkage

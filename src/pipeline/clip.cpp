@@ -1,0 +1,182 @@
+#include "pipeline/clip.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
+#include "core/interrupt.hpp"
+#include "encode/frame_pipeline.hpp"
+#include "encode/png_writer.hpp"
+#include "encode/video_writer.hpp"
+#include "render/vector_still.hpp"
+#include "scene/motion.hpp"
+
+namespace linkage {
+namespace fs = std::filesystem;
+
+namespace {
+
+template <typename Work>
+auto timed(double& seconds, Work work) {
+  const auto start = std::chrono::steady_clock::now();
+  auto result = work();
+  seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+/// Samples the motion at `times` with its own simulation of `options`.
+Motion simulate(const Clip& clip, const SimulationOptions& options, const std::vector<double>& times,
+                const ClipProgress& progress, RenderStats& stats) {
+  Simulation simulation(clip.inputs.params(), clip.inputs.state(), options);
+  const bool forces = clip.settings.elements.has(Element::pin_force);
+  const long total = static_cast<long>(times.size());
+  Motion motion = timed(stats.simulate_seconds, [&] {
+    return sample_motion(simulation, times, forces, [&](long done) {
+      if (progress) progress(ClipStage::simulate, done, total);
+    });
+  });
+  stats.force_evaluations += simulation.stats().force_evaluations;
+  stats.samples += static_cast<std::int64_t>(times.size());
+  return motion;
+}
+
+void add_drawing(RenderStats& stats, const ClipRenderer& renderer) {
+  const RenderStats& drawn = renderer.stats();
+  stats.frames_drawn += drawn.frames_drawn;
+  stats.static_layer_draws += drawn.static_layer_draws;
+  stats.trail_points_drawn += drawn.trail_points_drawn;
+  stats.draw_seconds += drawn.draw_seconds;
+}
+
+/// The clip: frames drawn on this thread while the encoder (and PNG compression) run on
+/// others, through a few reused buffers.
+void produce_motion(const Clip& clip, const ClipProgress& progress, ClipResult& result) {
+  const RenderSettings& s = clip.settings;
+  const long count = s.frame_count();
+  std::vector<double> times(static_cast<std::size_t>(count));
+  for (long k = 0; k < count; ++k) times[static_cast<std::size_t>(k)] = s.frame_time(k);
+  RenderStats& stats = result.stats;
+  const Motion motion = simulate(clip, clip.simulation, times, progress, stats);
+  ClipRenderer renderer(clip.inputs.params(), motion, s, clip.theme, run_label(clip.simulation));
+
+  std::optional<VideoWriter> video;
+  std::optional<PngSequenceWriter> pngs;
+  if (clip.out && clip.out_kind() == OutputKind::mp4) {
+    video.emplace(*clip.out, clip_video_options(s));
+    stats.encoder_opened = true;
+  }
+  if (clip.frames) {
+    ensure_directory(*clip.frames, "frames");
+    pngs.emplace(*clip.frames, s.width, s.height, "frames", PngOptions{}, 2, count);
+  }
+  FramePipeline pipeline(s.width, s.height, [&](const Frame& frame) {
+    if (video) video->write(frame);
+    if (pngs) pngs->write(frame);
+  });
+  for (long k = 0; k < count; ++k) {
+    throw_if_interrupted();
+    Frame& frame = pipeline.acquire();
+    renderer.draw(static_cast<std::size_t>(k), frame);
+    pipeline.submit();
+    if (progress) progress(ClipStage::draw, k + 1, count);
+  }
+  pipeline.finish();
+  result.draw_waited_seconds = pipeline.stats().producer_wait_seconds;
+  result.encoder_idle_seconds = pipeline.stats().consumer_idle_seconds;
+  if (pngs) {
+    pngs->finish();
+    const PngStats png = pngs->stats();
+    stats.png_files_written += png.frames;
+    stats.png_seconds += png.convert_seconds + png.encode_seconds;
+  }
+  if (video) {
+    video->finish();
+    stats.convert_seconds += video->stats().convert_seconds;
+    stats.encode_seconds += video->stats().encode_seconds + video->stats().finish_seconds;
+    result.video_bytes = video->stats().bytes;
+    result.encoder = video->encoder_name();
+    if (!video->note().empty()) result.notes.push_back(video->note());
+  }
+  add_drawing(stats, renderer);
+}
+
+/// One frame at `at`: the trail needs the motion over the seconds before it, sampled as
+/// densely as the clip would be; nothing else is sampled.
+void produce_still(const Clip& clip, const ClipProgress& progress, ClipResult& result) {
+  const RenderSettings& s = clip.settings;
+  std::vector<double> times;
+  if (s.elements.has(Element::trail)) {
+    const double step = s.speed / s.fps;
+    const auto back = static_cast<long>(std::floor(std::min(s.at, SceneOptions{}.trail_seconds) / step));
+    for (long j = back; j > 0; --j) times.push_back(s.at - static_cast<double>(j) * step);
+  }
+  times.push_back(s.at);
+  SimulationOptions options = clip.simulation;
+  options.duration = std::max(s.at, options.dt);
+  options.validate();
+  const Motion motion = simulate(clip, options, times, progress, result.stats);
+  ClipRenderer renderer(clip.inputs.params(), motion, s, clip.theme, run_label(clip.simulation));
+  const std::size_t last = times.size() - 1;
+  if (clip.out_kind() == OutputKind::png) {
+    Frame frame(s.width, s.height);
+    renderer.draw(last, frame);
+    write_png(frame, *clip.out, "out");
+    ++result.stats.png_files_written;
+  } else {
+    write_vector_still(renderer, last, clip.out_kind(), s.width, s.height, *clip.out, "out");
+  }
+  add_drawing(result.stats, renderer);
+}
+
+}  // namespace
+
+OutputKind Clip::out_kind() const { return out ? output_kind(*out, "out") : OutputKind::mp4; }
+
+bool Clip::is_still() const { return out && linkage::is_still(out_kind()); }
+
+void Clip::validate() const {
+  if (!out && !frames) throw Error::invalid("out", "a clip needs an output file or a frames folder");
+  std::error_code ec;
+  if (out && fs::is_directory(*out, ec))
+    throw Error::invalid("out", "'" + out->string() + "' is a folder, expected a file name");
+  settings.validate();
+  inputs.validate();
+  simulation.validate();
+  if (out) {
+    if (out_kind() == OutputKind::mp4) VideoWriter::validate(clip_video_options(settings));
+    if (*out != "-") require_writable_directory(out->parent_path(), "out");
+  }
+  if (frames && fs::exists(*frames, ec) && !fs::is_directory(*frames, ec))
+    throw Error::invalid("frames", "'" + frames->string() + "' exists and is not a folder");
+}
+
+VideoOptions clip_video_options(const RenderSettings& s) {
+  VideoOptions v;
+  v.width = s.width;
+  v.height = s.height;
+  v.fps = s.fps;
+  v.setting = "out";
+  return v;
+}
+
+std::string run_label(const SimulationOptions& s) {
+  std::string text = "Case " + std::to_string(s.case_id) + " \u00b7 " + std::string(info(s.integrator).name);
+  if (s.case_id == 1)  // only Case 1 can drift off the pin, so only there does stabilization matter
+    text += s.stabilization == Stabilization::none ? std::string(" \u00b7 no stabilization")
+                                                   : " \u00b7 " + std::string(name(s.stabilization));
+  return text;
+}
+
+std::string_view name(ClipStage stage) { return stage == ClipStage::simulate ? "simulate" : "render"; }
+
+ClipResult produce_clip(const Clip& clip, const ClipProgress& progress) {
+  clip.validate();
+  ClipResult result;
+  if (clip.frames || (clip.out && clip.out_kind() == OutputKind::mp4)) produce_motion(clip, progress, result);
+  if (clip.is_still()) produce_still(clip, progress, result);
+  return result;
+}
+
+}  // namespace linkage
