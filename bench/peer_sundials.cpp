@@ -151,7 +151,7 @@ struct IdaData {
   std::int64_t count = 0;
 };
 
-// The DAE as a user types it from the spec (sec. 3, corrected per ERRATA.md).
+// The DAE as a user types it from the spec (sec. 3, corrected per docs/errata.md).
 int ida_user_residual(sunrealtype /*t*/, N_Vector yy, N_Vector yp, N_Vector rr, void* data) {
   auto* d = static_cast<IdaData*>(data);
   ++d->count;

@@ -4,8 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
 
 #include <nlohmann/json.hpp>
 
@@ -13,6 +11,7 @@
 #include "core/error.hpp"
 #include "integrate/dop853.hpp"
 #include "integrate/dopri5.hpp"
+#include "linkage/reference_example.hpp"
 
 namespace linkage::bench {
 namespace {
@@ -52,13 +51,8 @@ long double max_abs_difference(const LVec& a, const LVec& b) {
 }
 
 std::optional<double> compare_with_spec(const Scenario& scenario, long double tol) {
-#ifdef LINKAGE_SPEC_DIR
   if (scenario.name != "example") return std::nullopt;
-  const std::filesystem::path path = std::filesystem::path(LINKAGE_SPEC_DIR) / "reference-example.json";
-  std::ifstream in(path);
-  if (!in) return std::nullopt;
-  const nlohmann::json json = nlohmann::json::parse(in, nullptr, false);
-  if (json.is_discarded()) return std::nullopt;
+  const nlohmann::json json = nlohmann::json::parse(kReferenceExampleJson);
   auto number = [](const nlohmann::json& v) { return std::strtold(v.get<std::string>().c_str(), nullptr); };
   // Start from the decimal initial values and parameters of the file, not their doubles.
   const auto& s0 = json["initial_state"];
@@ -82,11 +76,6 @@ std::optional<double> compare_with_spec(const Scenario& scenario, long double to
   long double worst = 0;
   for (std::size_t i = 0; i < got.size(); ++i) worst = std::max(worst, max_abs_difference(got[i], want[i]));
   return static_cast<double>(worst);
-#else
-  (void)scenario;
-  (void)tol;
-  return std::nullopt;
-#endif
 }
 
 }  // namespace

@@ -3,7 +3,7 @@
 // long double (64-bit mantissa, eps = 1.1e-19) by our DOP853 at a tolerance far tighter
 // than any double run can reach, checked against a second method (long double Dopri5),
 // and for the spec's example also against the 25-digit states of
-// ../shared/spec/reference-example.json when that file is present.
+// assets/spec/reference-example.json (embedded in the binary at configure time).
 #include <array>
 #include <optional>
 #include <string>

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 
 #include "bench/method.hpp"
 #include "bench/reference.hpp"
@@ -11,6 +12,8 @@
 #include "formulations/case3_fast.hpp"
 #include "formulations/linear_solve.hpp"
 #include "formulations/case3.hpp"
+#include "linkage/reference_example.hpp"
+#include "support/test_support.hpp"
 
 namespace linkage::bench {
 namespace {
@@ -22,11 +25,15 @@ const Reference& example_reference() {
 
 TEST(Reference, MatchesTheSpecsTwentyFiveDigitStates) {
   const Reference& ref = example_reference();
-  ASSERT_TRUE(ref.spec_difference.has_value()) << "reference-example.json not found beside the checkout";
+  ASSERT_TRUE(ref.spec_difference.has_value()) << "the example's reference skipped the reference-example.json check";
   // long double: eps 1.1e-19, |y1| ~ 480 m at t = 10 s
   EXPECT_LT(*ref.spec_difference, 1e-14);
   EXPECT_LT(ref.check_difference, 1e-14);
   EXPECT_GT(ref.digits, 15.0);
+}
+
+TEST(Reference, EmbedsReferenceExampleJsonByteForByte) {
+  EXPECT_EQ(kReferenceExampleJson, test::read_text(std::filesystem::path(LINKAGE_SPEC_DIR) / "reference-example.json"));
 }
 
 TEST(Reference, QuickModeIsLooserButStillFarBeyondDouble) {

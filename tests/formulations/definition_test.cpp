@@ -1,4 +1,4 @@
-// The printed definitions say what ERRATA.md says, not what the spec's typos say.
+// The printed definitions say what docs/errata.md says, not what the spec's typos say.
 #include <gtest/gtest.h>
 
 #include "formulations/case1.hpp"
@@ -56,7 +56,7 @@ TEST(Definition, EquationLabelsAndUnknownOrder) {
   EXPECT_EQ(Case1::equations.back(), "8.1");
   EXPECT_EQ(Case2::equations.back(), "6.2");
   EXPECT_EQ(Case3::equations.back(), "4.3");
-  // x1'', y1'', th1'', x2'', y2'', th2'', Fx, Fy: the order of the equations (ERRATA).
+  // x1'', y1'', th1'', x2'', y2'', th2'', Fx, Fy: the order of the equations (docs/errata.md).
   EXPECT_EQ(Case1::unknowns[1], Unknown::y1_ddot);
   EXPECT_EQ(Case1::unknowns[3], Unknown::x2_ddot);
   EXPECT_EQ(Case2::unknowns[1], Unknown::y1_ddot);

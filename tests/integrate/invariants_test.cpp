@@ -1,4 +1,4 @@
-// The exact oracles of the motion (ERRATA.md): the centre of mass falls on a parabola,
+// The exact oracles of the motion (docs/errata.md): the centre of mass falls on a parabola,
 // the horizontal momentum and the angular momentum about the centre of mass stay
 // constant, and the energy is conserved; and how each integrator treats the energy
 // over long runs.

@@ -1,5 +1,5 @@
 #pragma once
-// The spec's reference motion (../shared/spec/reference-example.json) as model types,
+// The spec's reference motion (assets/spec/reference-example.json) as model types,
 // for the integration tests.
 #include <string>
 #include <vector>

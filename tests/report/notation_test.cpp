@@ -28,7 +28,7 @@ TEST(Notation, EquationsSkipZerosAndKeepSigns) {
 }
 
 TEST(Notation, ReciprocalCoefficientsReadAsDivision) {
-  // ERRATA: (6.2) has no y2'' term and ends with - g; Fy enters as Fy/m.
+  // docs/errata.md: (6.2) has no y2'' term and ends with - g; Fy enters as Fy/m.
   EXPECT_EQ(equation(2, 5, Style::ascii),
             "y1'' + D cos(th1) th1'' + D cos(th2) th2'' + Fy/m = D (th1'^2 sin(th1) + th2'^2 sin(th2)) - g");
   EXPECT_NE(equation(2, 4, Style::latex).find("\\frac{F_x}{m}"), std::string::npos);

@@ -35,7 +35,7 @@ class TempDir {
   std::filesystem::path path_;
 };
 
-/// Parsed ../shared/spec/example.json and reference-example.json.
+/// Parsed assets/spec/example.json and reference-example.json.
 const nlohmann::json& spec_example();
 const nlohmann::json& spec_reference();
 /// A decimal string or number from those files as a double.
