@@ -56,6 +56,8 @@ std::vector<Hostile> hostile_lessons() {
        ":4:8: step 1 (say): text: {{"},
       {"list", lesson("say", "text = '''\n- top\n" + std::string(100000, ' ') + "- deep'''"),
        ":4:8: step 1 (say): text: line 2, column 1: a list item indented 100000 spaces is " + kTooDeep},
+      // toml++ recurses once per part of a dotted key or table name.
+      {"key", lesson("say", "text = 'hi'") + "[[step" + repeat(".a", 100000) + "]]\n", ":5:3: the key is " + kTooDeep},
   };
 }
 
