@@ -112,6 +112,18 @@ TEST(MarkdownNesting, ListsNestAsDeepAsTheBound) {
   EXPECT_EQ(markdown_to_text(">>> hi", 80), "  | >> hi\n");
 }
 
+// Inline markup (emphasis, links, code, math) recurses only a few levels whatever the
+// text: an emphasis holds no '*', a link's text no "](". Kept so by this test.
+TEST(MarkdownNesting, InlineMarkupStaysShallowOnHostileText) {
+  for (const std::string& hostile :
+       {repeat("[", 20000) + "](x)", repeat("*[", 20000) + "](x)*", repeat("**[*", 20000) + "](x)**",
+        repeat("**", 20000), repeat("![*a*](", 20000), repeat("`$*", 20000)}) {
+    EXPECT_NO_THROW((void)markdown_to_text(hostile, 80));
+    EXPECT_NO_THROW((void)markdown_to_latex(hostile));
+    EXPECT_NO_THROW((void)inline_latex(hostile));
+  }
+}
+
 double eval(const std::string& text) { return Expression::parse(text, "t").evaluate(evaluate_quantities(Inputs{})); }
 
 std::string expression_error(const std::string& text) {
