@@ -6,6 +6,7 @@
 #include <functional>
 
 #include "core/error.hpp"
+#include "core/limits.hpp"
 #include "lesson/suggest.hpp"
 
 namespace linkage::lesson {
@@ -35,7 +36,10 @@ constexpr std::array<Function, 15> kFunctions{{
     {"max", 2, [](double a, double b) { return std::fmax(a, b); }},
 }};
 
-constexpr int kMaxDepth = 32;  // evaluation stack; deeper expressions are rejected
+// A nesting level holds at most four operands waiting for their operator (a call's first
+// argument, the left sides of + and *, the base of ^), so the evaluation stack of an
+// expression within the nesting bound never holds more than this.
+constexpr int kMaxStack = 4 * (kMaxNesting + 1) + 1;
 
 class Parser {
  public:
@@ -71,24 +75,36 @@ class Parser {
   }
   void unary() {
     skip_space();
-    if (accept('-')) { unary(); emit(Expression::Op::negate, 1); return; }
-    if (accept('+')) { unary(); return; }
+    if (accept('-')) {
+      const NestingLevel level = deeper();
+      unary();
+      emit(Expression::Op::negate, 1);
+      return;
+    }
+    if (accept('+')) {
+      const NestingLevel level = deeper();
+      unary();
+      return;
+    }
     power();
   }
   void power() {
     primary();
     skip_space();
-    if (accept('^')) { unary(); emit(Expression::Op::power, 2); }
+    if (accept('^')) {
+      const NestingLevel level = deeper();
+      unary();
+      emit(Expression::Op::power, 2);
+    }
   }
   void primary() {
     skip_space();
     if (pos_ == text_.size()) fail("the expression ends too early");
     const char c = text_[pos_];
     if (accept('(')) {
-      nest();
+      const NestingLevel level = deeper();
       expr();
       expect(')');
-      --nesting_;
       return;
     }
     if (std::isdigit(static_cast<unsigned char>(c)) || c == '.') return number();
@@ -132,18 +148,20 @@ class Parser {
       if (auto close = closest_match(word, names)) message += " (did you mean '" + std::string(*close) + "'?)";
       throw Error::input(origin_ + ": " + message + "; functions: " + join(names));
     }
-    nest();
+    const NestingLevel level = deeper();
     int args = 0;
+    const auto arity_error = [&] {
+      fail(std::string(f->name) + " takes " + std::to_string(f->arity) + " argument" + (f->arity == 1 ? "" : "s") +
+           ", got " + std::to_string(args));
+    };
     do {
       expr();
-      ++args;
+      // Checked as they come, so a long list cannot pile up operands.
+      if (++args > f->arity) arity_error();
       skip_space();
     } while (accept(','));
     expect(')');
-    --nesting_;
-    if (args != f->arity)
-      fail(std::string(f->name) + " takes " + std::to_string(f->arity) + " argument" + (f->arity == 1 ? "" : "s") +
-           ", got " + std::to_string(args));
+    if (args != f->arity) arity_error();
     out_.push_back({Expression::Op::call, 0, static_cast<std::size_t>(f - kFunctions.data()), args});
     grow(1 - args);
   }
@@ -151,13 +169,23 @@ class Parser {
     out_.push_back({op, 0, 0, args});
     grow(1 - args);
   }
-  // Parentheses and calls recurse; a bound keeps a pathological text from exhausting the stack.
-  void nest() {
-    if (++nesting_ > kMaxDepth) fail("the expression is nested too deeply");
+  // Parentheses, calls, signs and powers recurse: a bound keeps hostile text from
+  // exhausting the stack. Returned as a prvalue, so the level lasts the caller's scope.
+  // Called just after the character that opens the level, which the error points at.
+  [[nodiscard]] NestingLevel deeper() {
+    if (nesting_ + 1 > kMaxNesting) {
+      --pos_;
+      fail(too_deep());
+    }
+    return NestingLevel(nesting_);
   }
   void grow(int delta) {
     depth_ += delta;
-    if (depth_ > kMaxDepth) fail("the expression is nested too deeply");
+    if (depth_ > kMaxStack) fail(too_deep());  // cannot happen within the nesting bound; kept as a guard
+  }
+  static std::string too_deep() {
+    return "the expression is nested more than " + std::to_string(kMaxNesting) +
+           " levels deep (each parenthesis, call, sign and ^ is a level)";
   }
   bool accept(char c) {
     if (pos_ < text_.size() && text_[pos_] == c) {
@@ -175,7 +203,7 @@ class Parser {
   }
   [[noreturn]] void fail(const std::string& what) const {
     throw Error::input(origin_ + ": " + what + " at character " + std::to_string(pos_ + 1) + " of '" +
-                       std::string(text_) + "'");
+                       excerpt(text_, pos_) + "'");
   }
 
   std::string_view text_;
@@ -196,7 +224,7 @@ Expression Expression::parse(std::string_view text, const std::string& origin) {
 }
 
 double Expression::evaluate(const QuantityValues& values) const {
-  std::array<double, kMaxDepth + 1> stack{};
+  std::array<double, kMaxStack + 1> stack{};
   int top = 0;  // number of values on the stack
   for (const Node& n : program_) {
     switch (n.op) {

@@ -4,6 +4,8 @@
 #include <cctype>
 #include <utility>
 
+#include "core/limits.hpp"
+
 namespace linkage::lesson {
 namespace {
 
@@ -82,6 +84,9 @@ class Converter {
   std::string group() {
     while (pos_ < s_.size() && s_[pos_] == ' ') ++pos_;
     if (pos_ >= s_.size()) return {};
+    // Every recursion passes through here or an opening brace, a level deeper each time.
+    const NestingLevel level(depth_);
+    if (level.too_deep()) throw LatexNestingError(s_.data() + pos_);
     if (s_[pos_] == '{') {
       ++pos_;
       return sequence('}');
@@ -111,7 +116,11 @@ class Converter {
     if (c == '\\') return command();
     ++pos_;
     switch (c) {
-      case '{': return sequence('}');
+      case '{': {
+        const NestingLevel level(depth_);
+        if (level.too_deep()) throw LatexNestingError(s_.data() + pos_ - 1);
+        return sequence('}');
+      }
       case '}': return {};
       case '&': return matrix_depth_ > 0 ? ", " : "";
       case '~': return " ";
@@ -178,9 +187,16 @@ class Converter {
   std::string_view s_;
   std::size_t pos_ = 0;
   int matrix_depth_ = 0;
+  int depth_ = 0;
 };
 
 }  // namespace
+
+LatexNestingError::LatexNestingError(const char* at)
+    : Error(ExitCode::bad_input,
+            "the math is nested more than " + std::to_string(kMaxNesting) +
+                " levels deep (each {...} and each argument of \\sqrt, \\frac, ^ or _ is a level)"),
+      at_(at) {}
 
 std::string latex_to_unicode(std::string_view latex) { return Converter(latex).run(); }
 

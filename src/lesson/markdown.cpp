@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <array>
+#include <functional>
 #include <vector>
 
+#include "core/error.hpp"
+#include "core/limits.hpp"
 #include "lesson/latex_text.hpp"
 #include "report/latex_math.hpp"
 #include "report/text_layout.hpp"
@@ -18,7 +21,39 @@ struct Block {
   std::string text;       // joined lines (paragraph, heading, item, quote) or raw lines (code, math, table)
   int level = 0;          // heading level, or list nesting (leading spaces / 2)
   std::string marker;     // "-" or "3." for items
+  // Where the text came from: (offset in text, offset in the Markdown) at the start of
+  // each appended piece, so an error can point into what the author wrote.
+  std::vector<std::pair<std::size_t, std::size_t>> from;
 };
+
+// "line 3, column 17" of the character `at` points to in `markdown`.
+std::string source_position(std::string_view markdown, const char* at) {
+  const auto end =
+      static_cast<std::size_t>(std::clamp(at, markdown.data(), markdown.data() + markdown.size()) - markdown.data());
+  std::size_t line = 1, column = 1;
+  for (std::size_t i = 0; i < end; ++i) {
+    if (markdown[i] == '\n') {
+      ++line;
+      column = 1;
+    } else if ((static_cast<unsigned char>(markdown[i]) & 0xC0) != 0x80) {  // not a UTF-8 continuation byte
+      ++column;
+    }
+  }
+  return "line " + std::to_string(line) + ", column " + std::to_string(column);
+}
+
+// Appends `separator` and `piece` (a view into `source`) to the block's text.
+void append(Block& b, std::string_view source, std::string_view separator, std::string_view piece) {
+  b.text += separator;
+  b.from.emplace_back(b.text.size(), static_cast<std::size_t>(piece.data() - source.data()));
+  b.text += piece;
+}
+
+Block block(Block::Kind kind, std::string_view source, std::string_view text, int level = 0, std::string marker = "") {
+  Block b{kind, "", level, std::move(marker), {}};
+  append(b, source, "", text);
+  return b;
+}
 
 std::string_view trim(std::string_view s) {
   while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
@@ -95,20 +130,27 @@ std::vector<Block> parse_blocks(std::string_view markdown) {
     }
     if (t.starts_with("```") || t.starts_with("$$")) {
       const bool code = t.starts_with("```");
-      Block b{code ? Block::Kind::code : Block::Kind::math, "", 0, ""};
+      Block b{code ? Block::Kind::code : Block::Kind::math, "", 0, "", {}};
       const std::string_view fence = code ? "```" : "$$";
       // A one-line math block: $$ ... $$
       if (!code && t.size() > 4 && t.ends_with("$$")) {
-        b.text = std::string(trim(t.substr(2, t.size() - 4)));
+        append(b, markdown, "", trim(t.substr(2, t.size() - 4)));
       } else {
-        if (!code && t.size() > 2) b.text = std::string(trim(t.substr(2))) + "\n";
+        if (!code && t.size() > 2) {
+          append(b, markdown, "", trim(t.substr(2)));
+          b.text += "\n";
+        }
         for (++i; i < lines.size(); ++i) {
           const std::string_view inner = trim(lines[i]);
           if (inner.starts_with(fence) || (!code && inner.ends_with("$$"))) {
-            if (!code && inner.size() > 2) b.text += std::string(trim(inner.substr(0, inner.size() - 2))) + "\n";
+            if (!code && inner.size() > 2) {
+              append(b, markdown, "", trim(inner.substr(0, inner.size() - 2)));
+              b.text += "\n";
+            }
             break;
           }
-          b.text += std::string(lines[i]) + "\n";
+          append(b, markdown, "", lines[i]);
+          b.text += "\n";
         }
         while (!b.text.empty() && b.text.back() == '\n') b.text.pop_back();
       }
@@ -119,24 +161,27 @@ std::vector<Block> parse_blocks(std::string_view markdown) {
     if (t.front() == '#') {
       std::size_t level = 0;
       while (level < t.size() && t[level] == '#') ++level;
-      blocks.push_back({Block::Kind::heading, std::string(trim(t.substr(level))), static_cast<int>(level), ""});
+      blocks.push_back(block(Block::Kind::heading, markdown, trim(t.substr(level)), static_cast<int>(level)));
       open = nullptr;
       continue;
     }
     if (t.front() == '|') {
       if (!blocks.empty() && blocks.back().kind == Block::Kind::table && open == &blocks.back())
-        blocks.back().text += "\n" + std::string(t);
+        append(blocks.back(), markdown, "\n", t);
       else
-        blocks.push_back({Block::Kind::table, std::string(t), 0, ""});
+        blocks.push_back(block(Block::Kind::table, markdown, t));
       open = &blocks.back();
       continue;
     }
     if (t.front() == '>') {
       const std::string_view content = trim(t.substr(1));
       if (open != nullptr && open->kind == Block::Kind::quote) {
-        open->text += content.empty() ? "\n" : (open->text.empty() || open->text.back() == '\n' ? "" : " ") + std::string(content);
+        if (content.empty())
+          open->text += "\n";
+        else
+          append(*open, markdown, open->text.empty() || open->text.back() == '\n' ? "" : " ", content);
       } else {
-        blocks.push_back({Block::Kind::quote, std::string(content), 0, ""});
+        blocks.push_back(block(Block::Kind::quote, markdown, content));
         open = &blocks.back();
       }
       continue;
@@ -147,16 +192,21 @@ std::vector<Block> parse_blocks(std::string_view markdown) {
     // ("240000. The ..." in the middle of a paragraph is a number, not a list).
     const bool continues = open != nullptr && open->kind == Block::Kind::paragraph;
     if (list_marker(line, marker, text_start) && !(continues && marker != "-" && marker != "1.")) {
-      blocks.push_back({Block::Kind::item, std::string(trim(line.substr(text_start))),
-                        static_cast<int>(leading_spaces(line) / 2), marker});
+      // Each level indents the item's lines further: a bound keeps the output in proportion.
+      if (leading_spaces(line) / 2 > static_cast<std::size_t>(kMaxNesting))
+        throw Error::input(source_position(markdown, line.data()) + ": a list item indented " +
+                           std::to_string(leading_spaces(line)) + " spaces is nested more than " +
+                           std::to_string(kMaxNesting) + " levels deep (each 2 spaces are a level)");
+      blocks.push_back(block(Block::Kind::item, markdown, trim(line.substr(text_start)),
+                             static_cast<int>(leading_spaces(line) / 2), marker));
       open = &blocks.back();
       continue;
     }
     if (open != nullptr && open->kind != Block::Kind::table) {
-      open->text += " " + std::string(t);
+      append(*open, markdown, " ", t);
       continue;
     }
-    blocks.push_back({Block::Kind::paragraph, std::string(t), 0, ""});
+    blocks.push_back(block(Block::Kind::paragraph, markdown, t));
     open = &blocks.back();
   }
   return blocks;
@@ -398,11 +448,27 @@ std::string inline_latex(std::string_view s) {
   return out;
 }
 
-std::string markdown_to_text(std::string_view markdown, std::size_t width) {
+namespace {
+
+// Where in `markdown` the character `at` of a block's text came from.
+const char* source_of(std::string_view markdown, const std::vector<Block>& blocks, const char* at) {
+  for (const Block& b : blocks) {
+    const char* text = b.text.data();
+    if (std::less<const char*>()(at, text) || std::less<const char*>()(text + b.text.size(), at)) continue;
+    const auto offset = static_cast<std::size_t>(at - text);
+    std::size_t source = 0;
+    for (const auto& [in_text, in_source] : b.from)
+      if (in_text <= offset) source = in_source + (offset - in_text);
+    return markdown.data() + std::min(source, markdown.size());
+  }
+  return markdown.data();
+}
+
+std::string blocks_to_text(const std::vector<Block>& blocks, std::size_t width) {
   std::string out;
   bool first = true;
   Block::Kind previous = Block::Kind::paragraph;
-  for (const Block& b : parse_blocks(markdown)) {
+  for (const Block& b : blocks) {
     // Items of one list stay together; everything else is separated by a blank line.
     if (!first && !(b.kind == Block::Kind::item && previous == Block::Kind::item)) out += "\n";
     first = false;
@@ -448,6 +514,17 @@ std::string markdown_to_text(std::string_view markdown, std::size_t width) {
     }
   }
   return out;
+}
+
+}  // namespace
+
+std::string markdown_to_text(std::string_view markdown, std::size_t width) {
+  const std::vector<Block> blocks = parse_blocks(markdown);
+  try {
+    return blocks_to_text(blocks, width);
+  } catch (const LatexNestingError& e) {
+    throw Error::input(source_position(markdown, source_of(markdown, blocks, e.at())) + ": " + e.what());
+  }
 }
 
 std::string markdown_to_latex(std::string_view markdown) {
@@ -498,6 +575,14 @@ std::string markdown_to_latex(std::string_view markdown) {
     }
   }
   return out;
+}
+
+void check_markdown(std::string_view markdown, const std::string& origin) {
+  try {
+    (void)markdown_to_text(markdown, 80);  // markdown_to_latex has no recursion to bound
+  } catch (const Error& e) {
+    throw Error(e.code(), origin + ": " + e.what());
+  }
 }
 
 }  // namespace linkage::lesson

@@ -10,7 +10,8 @@ namespace linkage::lesson {
 
 /// Plain text for a terminal `width` columns wide: paragraphs and list items wrapped at
 /// spaces, emphasis markers and math dollars dropped, links as "text (url)", headings
-/// underlined, quotes and code indented, tables kept as written.
+/// underlined, quotes and code indented, tables kept as written. Throws Error::input
+/// naming the line and column for nesting beyond kMaxNesting (see check_markdown).
 [[nodiscard]] std::string markdown_to_text(std::string_view markdown, std::size_t width);
 
 /// A LaTeX fragment: paragraphs, \subsection*, itemize/enumerate, quote, verbatim,
@@ -21,5 +22,10 @@ namespace linkage::lesson {
 
 /// Text-mode LaTeX of one line of inline Markdown (used for titles and captions).
 [[nodiscard]] std::string inline_latex(std::string_view text);
+
+/// Throws Error::input, starting with `origin` (e.g. "file:3:8: step 1 (say): text"),
+/// for Markdown these functions refuse: math or lists nested more than kMaxNesting
+/// levels deep. So a lesson fails when it is read, not halfway through a run.
+void check_markdown(std::string_view markdown, const std::string& origin);
 
 }  // namespace linkage::lesson

@@ -12,6 +12,7 @@
 #include "encode/video_writer.hpp"
 #include "lesson/canonical.hpp"
 #include "lesson/lesson.hpp"
+#include "lesson/markdown.hpp"
 #include "lesson/schema.hpp"
 #include "lesson/series.hpp"
 #include "lesson/suggest.hpp"
@@ -216,6 +217,8 @@ class Parser {
     const TableReader r(table, file_text_, context, keys, extra);
     r.reject_unknown_keys();
     if (auto h = r.string("heading")) step.heading = *h;
+    for (const std::string_view key : {"caption", "unit"})  // Markdown shown as written (no {{...}})
+      if (auto text = r.string(key)) check_markdown(*text, r.prefix(key) + std::string(key));
     step.canonical = canonical_text(table, {"heading", "caption"});
 
     switch (step.kind) {

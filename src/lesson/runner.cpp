@@ -221,7 +221,7 @@ RunSummary run_lesson(const Lesson& lesson, const RunnerOptions& options, std::i
                status,
                make_writer(options.format, options.width, options.style),
                make_markdown_writer(),
-               ArtifactCache(options.out_dir, options.force),
+               ArtifactCache(options.out_dir, options.force, status),
                {}};
   const std::string description = lesson.description.render(evaluate_quantities(lesson.inputs));
   c.both([&](Writer& w) { w.title(lesson.title, description); });

@@ -1,9 +1,12 @@
 #include "lesson/text_template.hpp"
 
+#include <algorithm>
 #include <charconv>
 
 #include "core/error.hpp"
 #include "core/number_format.hpp"
+#include "lesson/markdown.hpp"
+#include "lesson/suggest.hpp"
 
 namespace linkage::lesson {
 
@@ -31,13 +34,22 @@ TextTemplate TextTemplate::parse(std::string_view text, const std::string& origi
       while (!digits.empty() && digits.back() == ' ') digits.remove_suffix(1);
       const auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), part.digits);
       if (ec != std::errc() || ptr != digits.data() + digits.size() || part.digits < 1 || part.digits > 17)
-        throw Error::input(origin + ": '{{" + std::string(inside) + "}}': the digits after ':' must be a whole number from 1 to 17");
+        throw Error::input(origin + ": '{{" + excerpt(inside) +
+                           "}}': the digits after ':' must be a whole number from 1 to 17");
       inside = inside.substr(0, colon);
     }
-    part.value.push_back(Expression::parse(inside, origin + ": {{" + std::string(inside) + "}}"));
+    part.value.push_back(Expression::parse(inside, origin + ": {{" + excerpt(inside) + "}}"));
     t.parts_.push_back(std::move(part));
     pos = close + 2;
   }
+  // The text as it will be shown, each placeholder standing in as digits of the same
+  // length (values are numbers), so errors point at the right line and column.
+  std::string shown(text);
+  for (std::size_t at = shown.find("{{"); at != std::string::npos; at = shown.find("{{", at)) {
+    const std::size_t end = shown.find("}}", at + 2) + 2;
+    std::fill(shown.begin() + static_cast<std::ptrdiff_t>(at), shown.begin() + static_cast<std::ptrdiff_t>(end), '0');
+  }
+  check_markdown(shown, origin);
   return t;
 }
 

@@ -179,6 +179,57 @@ TEST(LessonCache, AFailedRenderNeverCountsAsCached) {
   EXPECT_NE(again.err.find("step 1 (render): made still.png"), std::string::npos) << again.err;
 }
 
+// A record that cannot be read is a miss: one note names it, the step is made again
+// and the record replaced, so the next run reuses it.
+TEST(LessonCache, AnUnreadableRecordIsMadeAgainWithANote) {
+  TempDir dir;
+  const std::string file = (dir / "c.toml").string(), out = (dir / "out").string();
+  write_text(file, "title = \"Cache\"\n[[step]]\nkind = \"simulate\"\nduration = 0.5\ntrajectory = \"run.csv\"\n");
+  const RunResult first = run_linkage({"lesson", file, "--out", out});
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  const fs::path record = dir / "out" / ".run.csv.cache.json";
+  ASSERT_TRUE(fs::is_regular_file(record));
+  const std::string good = read_text(record);
+  const std::vector<std::pair<std::string, std::string>> broken{
+      {R"({"hash": 5})", "no \"hash\" string"},
+      {"", "it is empty"},
+      {good.substr(0, good.size() / 2), "not JSON: a syntax error at byte " + std::to_string(good.size() / 2 + 1)},
+      {"\x89PNG garbage", "not JSON: a syntax error at byte 1"},
+  };
+  for (const auto& [content, reason] : broken) {
+    SCOPED_TRACE(reason);
+    write_text(record, content);
+    const RunResult r = run_linkage({"lesson", file, "--out", out});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("linkage: note: cache record '" + record.string() + "' is unreadable (" + reason +
+                         "); making it again\nlesson: step 1 (simulate): made run.csv in "),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.out.find("final x1, y1              1.07716 m, 0.899239 m"), std::string::npos) << r.out;
+    // The new record holds what this run printed (its run time included).
+    const RunResult again = run_linkage({"lesson", file, "--out", out});
+    EXPECT_NE(again.err.find("lesson: step 1 (simulate): reused run.csv"), std::string::npos) << again.err;
+    EXPECT_EQ(again.err.find("note"), std::string::npos) << again.err;
+    EXPECT_EQ(again.out, r.out);
+  }
+
+  // A folder with files in it where the record goes is left alone, and the step made
+  // every time.
+  fs::remove(record);
+  fs::create_directory(record);
+  write_text(record / "notes.txt", "mine");
+  for (int run = 0; run < 2; ++run) {
+    const RunResult r = run_linkage({"lesson", file, "--out", out});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("linkage: note: cache record '" + record.string() +
+                         "' is a folder with files in it, not a file; left it as it is, so this step is not cached\n"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("step 1 (simulate): made run.csv"), std::string::npos) << r.err;
+  }
+  EXPECT_EQ(read_text(record / "notes.txt"), "mine");
+}
+
 TEST(LessonOnly, KeepsTheStateEarlierSetStepsMade) {
   TempDir dir;
   const std::string file = (dir / "o.toml").string();

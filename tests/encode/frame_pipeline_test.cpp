@@ -2,11 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
+#include <memory>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -53,27 +56,49 @@ TEST(FramePipeline, ConsumesEveryFrameInOrderFromTheFixedBuffers) {
   EXPECT_EQ(pipeline.stats().frames, frames);
 }
 
-TEST(FramePipeline, ProducerRunsAtMostTheBufferCountAhead) {
-  std::mutex gate;
-  std::unique_lock closed(gate);  // the consumer blocks until this is released
-  std::atomic<int> acquired{0};
-  {
-    FramePipeline pipeline(4, 4, [&](const Frame&) { const std::lock_guard pass(gate); }, 3);
-    std::thread producer([&] {
-      for (int k = 0; k < 10; ++k) {
-        (void)pipeline.acquire();
-        acquired.fetch_add(1);
-        pipeline.submit();
-      }
-    });
-    std::this_thread::sleep_for(std::chrono::milliseconds(200));
-    // Three buffers: one held by the blocked consumer and two queued; the fourth acquire waits.
-    EXPECT_EQ(acquired.load(), 3);
-    closed.unlock();
-    producer.join();
-    pipeline.finish();
+// A fake encoder that holds frame k until the drawing thread has begun asking for frame
+// k + buffers: so the drawing thread must get that far while the encoder is busy (the two
+// overlap), and the frames it holds meanwhile show how far ahead it may run. No clock
+// decides anything; the wait's time limit only turns a hang into a failure.
+TEST(FramePipeline, DrawingRunsAheadOfTheEncoderByTheBufferCountAndNoFurther) {
+  constexpr int buffers = 3, frames = 12;
+  std::mutex mutex;
+  std::condition_variable changed;
+  int asked = 0;    // acquire() calls begun by the drawing thread
+  int encoded = 0;  // frames the encoder has finished
+  std::vector<int> order;
+  FramePipeline pipeline(
+      4, 4,
+      [&](const Frame& frame) {
+        const int k = stamped(frame);
+        std::unique_lock lock(mutex);
+        order.push_back(k);
+        const int awaited = std::min(k + buffers + 1, frames);
+        EXPECT_TRUE(changed.wait_for(lock, std::chrono::seconds(30), [&] { return asked >= awaited; }))
+            << "while frame " << k << " was encoding, the drawing thread asked for only " << asked << " frames";
+        ++encoded;
+      },
+      buffers);
+  int most_in_flight = 0;  // frames acquired and not yet encoded, seen when acquire() returns
+  for (int k = 0; k < frames; ++k) {
+    {
+      const std::lock_guard lock(mutex);
+      asked = k + 1;
+    }
+    changed.notify_all();
+    Frame& frame = pipeline.acquire();
+    {
+      // Each frame in flight holds a buffer until the encoder is done with it.
+      const std::lock_guard lock(mutex);
+      most_in_flight = std::max(most_in_flight, k + 1 - encoded);
+    }
+    stamp(frame, k);
+    pipeline.submit();
   }
-  EXPECT_EQ(acquired.load(), 10);
+  pipeline.finish();
+  EXPECT_EQ(most_in_flight, buffers);
+  ASSERT_EQ(order.size(), static_cast<std::size_t>(frames));
+  for (int k = 0; k < frames; ++k) EXPECT_EQ(order[static_cast<std::size_t>(k)], k);
 }
 
 TEST(FramePipeline, ConsumerErrorReachesTheProducer) {
@@ -96,19 +121,46 @@ TEST(FramePipeline, ConsumerErrorReachesTheProducer) {
   EXPECT_EQ(consumed.load(), 3);  // nothing after the failure was consumed
 }
 
-TEST(FramePipeline, DestructionWithoutFinishDropsQueuedFramesAndJoins) {
-  std::atomic<int> consumed{0};
+// Destroyed without finish() while the encoder is in the middle of frame 0 with two more
+// queued: the destructor waits for that frame (it joins the encoder thread) and the
+// encoder is not called after it returns. (Whether the queued frames are dropped depends
+// on whether the release below or the destructor's cancel comes first, which this test
+// leaves open rather than decide it by the clock.)
+TEST(FramePipeline, DestructionWithoutFinishWaitsForTheFrameBeingEncoded) {
+  std::mutex mutex;
+  std::condition_variable changed;
+  bool encoding = false, released = false;
+  int started = 0, encoded = 0;
+  auto pipeline = std::make_unique<FramePipeline>(4, 4, [&](const Frame&) {
+    std::unique_lock lock(mutex);
+    ++started;
+    encoding = true;
+    changed.notify_all();
+    changed.wait(lock, [&] { return released; });
+    ++encoded;
+  });
+  for (int k = 0; k < 3; ++k) {
+    (void)pipeline->acquire();
+    pipeline->submit();
+  }
   {
-    FramePipeline pipeline(4, 4, [&](const Frame&) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(20));
-      consumed.fetch_add(1);
-    });
-    for (int k = 0; k < 3; ++k) {
-      (void)pipeline.acquire();
-      pipeline.submit();
+    std::unique_lock lock(mutex);
+    if (!changed.wait_for(lock, std::chrono::seconds(30), [&] { return encoding; })) {
+      released = true;  // so the destructor is not left waiting
+      FAIL() << "the encoder never started frame 0";
     }
   }
-  EXPECT_LT(consumed.load(), 3);
+  std::thread destroyer([&] { pipeline.reset(); });
+  {
+    const std::lock_guard lock(mutex);
+    EXPECT_EQ(encoded, 0);
+    released = true;
+  }
+  changed.notify_all();
+  destroyer.join();
+  const std::lock_guard lock(mutex);
+  EXPECT_GE(encoded, 1);        // frame 0 finished before the destructor returned
+  EXPECT_EQ(started, encoded);  // and the encoder thread is not still in a frame
 }
 
 TEST(FramePipeline, MisuseIsReported) {

@@ -3,7 +3,9 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/limits.hpp"
 #include "model/inputs.hpp"
+#include "model/inputs_toml.hpp"
 #include "support/test_support.hpp"
 
 namespace linkage {
@@ -60,6 +62,41 @@ TEST(Inputs, TomlFileErrorsNameFileLineAndColumn) {
   EXPECT_NE(error_of([&] { Inputs().apply_file(file); }).find(file.string() + ":2:"), std::string::npos);
 
   EXPECT_NE(error_of([&] { Inputs().apply_file(dir / "missing.toml"); }).find("does not exist"), std::string::npos);
+}
+
+std::string repeat(std::string_view s, int n) {
+  std::string out;
+  for (int i = 0; i < n; ++i) out += s;
+  return out;
+}
+
+// toml++ recurses once per part of a dotted key: a key of 100,000 parts overflowed the
+// stack. Keys are bounded before toml++ sees them; dots in values, strings and comments
+// do not count.
+TEST(Inputs, TomlKeysNestAsDeepAsTheBoundAndNoDeeper) {
+  test::TempDir dir;
+  const auto file = dir / "deep.toml";
+  const std::string dots = repeat(".", 200);
+  test::write_text(file, "# " + dots + "\ns = \"" + dots + "\" # " + dots + "\nl = '" + dots + "'\nm = \"\"\"\n" +
+                             dots + "\n\"\"\"\nn = '''" + dots +
+                             "'''\nf = [1.5, 2.5, 1e-3, 3.25]\n[t]\n\"a.b\".c = 1\n" + "a" + repeat(".a", kMaxNesting) +
+                             " = 1\n");
+  const toml::table table = parse_toml_file(file.string(), "--config");
+  EXPECT_EQ(table["s"].value_or(std::string()), dots);
+  EXPECT_EQ(table["n"].value_or(std::string()), dots);
+  EXPECT_EQ(table["t"]["a.b"]["c"].value_or(0), 1);
+
+  const std::string too_deep =
+      ": the key is nested more than " + std::to_string(kMaxNesting) + " levels deep (each '.' is a level)";
+  const auto error_in = [&](const std::string& text) {
+    test::write_text(file, text);
+    return error_of([&] { (void)parse_toml_file(file.string(), "--config"); });
+  };
+  EXPECT_EQ(error_in("x = 1\na" + repeat(".a", kMaxNesting + 1) + " = 1\n"), file.string() + ":2:1" + too_deep);
+  EXPECT_EQ(error_in("a" + repeat(".a", 100000) + " = 1\n"), file.string() + ":1:1" + too_deep);
+  EXPECT_EQ(error_in("[" + repeat("a.", 100000) + "a]\n"), file.string() + ":1:2" + too_deep);
+  EXPECT_EQ(error_in("[[" + repeat("a . ", 100000) + "a]]\n"), file.string() + ":1:3" + too_deep);
+  EXPECT_EQ(error_in("θ = { " + repeat("\"a\".", 100000) + "b = 1 }\n"), file.string() + ":1:7" + too_deep);
 }
 
 TEST(Inputs, TomlValuesApplyWithTheirPosition) {

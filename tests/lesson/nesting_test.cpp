@@ -1,0 +1,190 @@
+// Hostile nesting in lesson text: every recursive reader (LaTeX math, Markdown lists,
+// expressions) accepts kMaxNesting levels and refuses one more with one line saying
+// where, instead of running out of stack.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+
+#include "core/error.hpp"
+#include "core/limits.hpp"
+#include "lesson/expression.hpp"
+#include "lesson/latex_text.hpp"
+#include "lesson/markdown.hpp"
+#include "lesson/text_template.hpp"
+
+namespace linkage::lesson {
+namespace {
+
+std::string repeat(std::string_view s, int n) {
+  std::string out;
+  for (int i = 0; i < n; ++i) out += s;
+  return out;
+}
+
+// The message of the Error::input `f` throws, or "" when it throws none.
+std::string error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::bad_input);
+    return e.what();
+  }
+  return "";
+}
+
+const std::string kTooDeep = "nested more than " + std::to_string(kMaxNesting) + " levels deep";
+
+// Where latex_to_unicode stopped, as an offset into its input; -1 when it did not.
+long nesting_error_offset(const std::string& latex) {
+  try {
+    (void)latex_to_unicode(latex);
+  } catch (const LatexNestingError& e) {
+    EXPECT_NE(std::string(e.what()).find(kTooDeep), std::string::npos) << e.what();
+    return e.at() - latex.data();
+  }
+  return -1;
+}
+
+TEST(LatexNesting, TheBoundIsAcceptedAndOneLevelMoreIsNot) {
+  const int n = kMaxNesting;
+  const std::string roots = repeat("√(", n - 1) + "√x" + repeat(")", n - 1);
+  EXPECT_EQ(latex_to_unicode(repeat("\\sqrt{", n) + "x" + repeat("}", n)), roots);
+  EXPECT_EQ(latex_to_unicode(repeat("{", n) + "x" + repeat("}", n)), "x");
+  EXPECT_EQ(latex_to_unicode(repeat("\\sqrt", n) + " x"), roots);
+  EXPECT_NO_THROW((void)latex_to_unicode(repeat("\\frac{", n) + "1" + repeat("}{2}", n)));
+  EXPECT_NO_THROW((void)latex_to_unicode("a" + repeat("^", n) + "2"));
+  // One more: stopped at the level too many (its brace, or the argument it starts).
+  EXPECT_EQ(nesting_error_offset(repeat("\\sqrt{", n + 1) + "x" + repeat("}", n + 1)), 6 * n + 5);
+  EXPECT_EQ(nesting_error_offset(repeat("{", n + 1) + "x" + repeat("}", n + 1)), n);
+  EXPECT_EQ(nesting_error_offset("a" + repeat("^", n + 1) + "2"), n + 2);  // the last ^'s argument
+  EXPECT_EQ(nesting_error_offset("a" + repeat("_", n + 1) + "2"), n + 2);
+  EXPECT_EQ(nesting_error_offset(repeat("\\frac{", n + 1) + "1" + repeat("}{2}", n + 1)), 6 * n + 5);
+}
+
+TEST(LatexNesting, HostileMathIsRefusedInsteadOfOverflowingTheStack) {
+  EXPECT_GT(nesting_error_offset(repeat("\\sqrt{", 20000)), 0);
+  EXPECT_GT(nesting_error_offset("x" + repeat("^", 50000)), 0);
+  EXPECT_GT(nesting_error_offset(repeat("{", 100000)), 0);
+  EXPECT_GT(nesting_error_offset(repeat("\\dot", 100000) + "x"), 0);
+}
+
+TEST(MarkdownNesting, ErrorsGiveTheLineAndColumnOfTheText) {
+  // Inline math in a paragraph joined from two lines, after a two-byte character: the
+  // 65th brace is on line 4, after "  θ $" and 64 braces.
+  const std::string inline_math = "Intro.\n\nSecond paragraph\n  θ $" + repeat("{", 70) + "$ ends.\n";
+  EXPECT_EQ(error_of([&] { (void)markdown_to_text(inline_math, 80); }),
+            "line 4, column " + std::to_string(5 + kMaxNesting + 1) + ": the math is " + kTooDeep +
+                " (each {...} and each argument of \\sqrt, \\frac, ^ or _ is a level)");
+  // A math block: the 65th \sqrt's brace, on the block's second line.
+  const std::string block = "Text.\n\n$$\nx = 1\n" + repeat("\\sqrt{", 70) + "\n$$\n";
+  EXPECT_EQ(error_of([&] {
+              (void)markdown_to_text(block, 80);
+            }).rfind("line 5, column " + std::to_string(6 * kMaxNesting + 6) + ": ", 0),
+            0u);
+  // In a list item, a quote and a table cell too.
+  for (const std::string prefix : {"- ", "> ", "| a | "}) {
+    const std::string message =
+        error_of([&] { (void)markdown_to_text("\n" + prefix + "$" + repeat("\\sqrt", 99) + "$", 80); });
+    // The 65th level is the argument of the 65th \sqrt: the 66th.
+    EXPECT_EQ(message.rfind("line 2, column " + std::to_string(prefix.size() + 2 + 5 * (kMaxNesting + 1)) + ": ", 0),
+              0u)
+        << message;
+  }
+  // check_markdown says where the text came from.
+  EXPECT_EQ(error_of([&] {
+              check_markdown("$" + repeat("{", 99) + "$", "f.toml:3:8: step 2 (render): caption");
+            }).rfind("f.toml:3:8: step 2 (render): caption: line 1, column 66: the math is " + kTooDeep, 0),
+            0u);
+  EXPECT_NO_THROW(check_markdown("$" + repeat("{", kMaxNesting) + "$ and\n\n$" + repeat("{", kMaxNesting) + "$", "f"));
+}
+
+TEST(MarkdownNesting, ListsNestAsDeepAsTheBound) {
+  const std::string deepest = "- top\n" + std::string(2 * kMaxNesting, ' ') + "- deepest";
+  const std::string text = markdown_to_text(deepest, 300);
+  EXPECT_NE(text.find("\n" + std::string(2 * kMaxNesting + 2, ' ') + "- deepest\n"), std::string::npos) << text;
+  EXPECT_EQ(error_of([&] { (void)markdown_to_text("- top\n" + std::string(2 * kMaxNesting + 2, ' ') + "- x", 80); }),
+            "line 2, column 1: a list item indented " + std::to_string(2 * kMaxNesting + 2) + " spaces is " + kTooDeep +
+                " (each 2 spaces are a level)");
+  EXPECT_NE(error_of([&] { (void)markdown_to_text(std::string(100000, ' ') + "- x", 80); }).find(kTooDeep),
+            std::string::npos);
+  // Quotes do not nest: ">>>" is a quote of ">>" (no recursion, nothing to bound).
+  EXPECT_EQ(markdown_to_text(">>> hi", 80), "  | >> hi\n");
+}
+
+// Inline markup (emphasis, links, code, math) recurses only a few levels whatever the
+// text: an emphasis holds no '*', a link's text no "](". Kept so by this test.
+TEST(MarkdownNesting, InlineMarkupStaysShallowOnHostileText) {
+  for (const std::string& hostile :
+       {repeat("[", 20000) + "](x)", repeat("*[", 20000) + "](x)*", repeat("**[*", 20000) + "](x)**",
+        repeat("**", 20000), repeat("![*a*](", 20000), repeat("`$*", 20000)}) {
+    EXPECT_NO_THROW((void)markdown_to_text(hostile, 80));
+    EXPECT_NO_THROW((void)markdown_to_latex(hostile));
+    EXPECT_NO_THROW((void)inline_latex(hostile));
+  }
+}
+
+double eval(const std::string& text) { return Expression::parse(text, "t").evaluate(evaluate_quantities(Inputs{})); }
+
+std::string expression_error(const std::string& text) {
+  return error_of([&] { (void)Expression::parse(text, "f.toml:5:10: step 1 (exercise): answer"); });
+}
+
+TEST(ExpressionNesting, TheBoundIsAcceptedAndOneLevelMoreIsNot) {
+  const int n = kMaxNesting;
+  EXPECT_EQ(eval(repeat("(", n) + "1" + repeat(")", n)), 1.0);
+  EXPECT_EQ(eval(repeat("-", n) + "2"), 2.0);  // n is even
+  EXPECT_EQ(eval(repeat("+", n) + "2"), 2.0);
+  EXPECT_EQ(eval(repeat("sqrt(", n) + "1" + repeat(")", n)), 1.0);
+  EXPECT_EQ(eval("2" + repeat("^1", n)), 2.0);
+  EXPECT_EQ(eval(repeat("1 + (", n) + "1" + repeat(")", n)), n + 1.0);
+  // Operands waiting for their operator pile up beyond the nesting depth: two a level
+  // here (1 and 2), and more with calls and powers.
+  EXPECT_DOUBLE_EQ(eval(repeat("1 + 2 * (", n) + "1" + repeat(")", n)), std::ldexp(1.0, n + 1) - 1);
+  EXPECT_EQ(eval(repeat("atan2(0, 1 + 2 * 3 ^ (", n / 3) + "1" + repeat("))", n / 3)), 0.0);
+  for (const std::string& deeper : {repeat("(", n + 1) + "1" + repeat(")", n + 1), repeat("-", n + 1) + "1",
+                                    repeat("sqrt(", n + 1) + "1" + repeat(")", n + 1), "2" + repeat("^1", n + 1)}) {
+    const std::string message = expression_error(deeper);
+    EXPECT_EQ(message.rfind("f.toml:5:10: step 1 (exercise): answer: the expression is " + kTooDeep, 0), 0u) << message;
+  }
+}
+
+TEST(ExpressionNesting, HostileExpressionsGetAShortOneLineError) {
+  for (const std::string& hostile : {repeat("(", 100000) + "1", repeat("-", 100000) + "1", repeat("sqrt(", 20000) + "1",
+                                     "1" + repeat("^1", 100000)}) {
+    const std::string message = expression_error(hostile);
+    EXPECT_NE(message.find(kTooDeep), std::string::npos) << message.substr(0, 300);
+    EXPECT_LT(message.size(), 300u) << message.substr(0, 300);
+  }
+  // The excerpt ends at the level too many.
+  EXPECT_NE(expression_error(repeat("(", 100000) + "1").find("at character 65 of '…" + repeat("(", 40) + "…'"),
+            std::string::npos);
+  // Arguments are counted as they come, so a long list does not pile up on the stack.
+  const std::string many = expression_error("min(" + repeat("1, ", 100000) + "1)");
+  EXPECT_NE(many.find("min takes 2 arguments, got 3 at character 12 of 'min(1, 1, 1"), std::string::npos)
+      << many.substr(0, 300);
+  EXPECT_LT(many.size(), 300u);
+  EXPECT_EQ(expression_error("1 +\n(").find('\n'), std::string::npos);  // one line
+}
+
+TEST(TemplateNesting, TextIsCheckedWhenParsedAndPlaceholdersKeepColumns) {
+  const std::string origin = "f.toml:3:8: step 1 (say): text";
+  // "{{m}} kg and $" is 14 characters: the 65th "{ " starts at column 15 + 2 * 64.
+  const std::string text = "{{m}} kg and $" + repeat("{ ", 70) + "$";
+  EXPECT_EQ(
+      error_of([&] {
+        (void)TextTemplate::parse(text, origin);
+      }).rfind(origin + ": line 1, column " + std::to_string(15 + 2 * kMaxNesting) + ": the math is " + kTooDeep, 0),
+      0u);
+  EXPECT_EQ(TextTemplate::parse("{{m}} kg and $" + repeat("{ ", kMaxNesting) + "$", origin)
+                .render(evaluate_quantities(Inputs{}))
+                .substr(0, 12),
+            "0.1 kg and $");
+  const std::string deep_placeholder = "v = {{" + repeat("(", 100000) + "1}}";
+  const std::string message = error_of([&] { (void)TextTemplate::parse(deep_placeholder, origin); });
+  EXPECT_NE(message.find(kTooDeep), std::string::npos) << message.substr(0, 300);
+  EXPECT_LT(message.size(), 400u);
+}
+
+}  // namespace
+}  // namespace linkage::lesson
