@@ -72,7 +72,7 @@ TargetRow speed_row(const std::vector<Curve>& all, const std::string& what, doub
     if (std::isfinite(peer_other.time) && std::isfinite(ours_other.time))
       row.note += "; by " + std::string(clock_name(other(clock))) + " " + ratio(peer_other.time / ours_other.time);
   }
-  if (!missing.empty()) row.note += "; best of the peers built (" + missing + ")";
+  if (!missing.empty()) row.note += row.met ? "; best of the peers built (" + missing + ")" : "; " + missing;
   return row;
 }
 
