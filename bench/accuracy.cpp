@@ -183,6 +183,8 @@ std::vector<Method> all_methods() {
   return out;
 }
 
+}  // namespace
+
 void validate(const AccuracyOptions& o) {
   for (const std::string& s : o.scenarios) (void)find_scenario(s, "--scenario");
   if (o.scenarios.empty()) throw Error::input("--scenario: no scenario given; valid: " + scenario_names() + ", all");
@@ -192,6 +194,9 @@ void validate(const AccuracyOptions& o) {
   const std::vector<std::string> ids = method_ids();
   for (const std::string& id : o.integrators)
     if (std::find(ids.begin(), ids.end(), id) == ids.end()) {
+      for (const PeerLibrary& peer : peer_libraries())
+        if (std::find(peer.ids.begin(), peer.ids.end(), id) != peer.ids.end())
+          throw Error::input("--integrators: '" + id + "' is not in this build: " + peer.not_built_note());
       std::string valid;
       for (const std::string& v : ids) {
         if (!valid.empty()) valid += ", ";
@@ -202,8 +207,6 @@ void validate(const AccuracyOptions& o) {
   if (o.duration && !(*o.duration > 0 && *o.duration <= 1e4))
     throw Error::input("--duration: " + std::to_string(*o.duration) + " s is out of range; valid: (0, 10000] s");
 }
-
-}  // namespace
 
 std::vector<std::string> method_ids() {
   std::vector<std::string> ids;
@@ -231,6 +234,7 @@ AccuracyResult run_accuracy(const AccuracyOptions& options) {
   const SweepLimits limits = sweep_limits(options.quick);
 
   AccuracyResult result;
+  result.peers_not_built = peers_not_built();
   result.cores = std::max(1u, std::thread::hardware_concurrency());
   std::ifstream("/proc/loadavg") >> result.load_average;
   Scenario first = find_scenario(options.scenarios.front(), "--scenario");

@@ -72,11 +72,16 @@ struct AccuracyResult {
   double load_average = 0;
   unsigned cores = 1;
   [[nodiscard]] bool busy() const { return load_average > static_cast<double>(cores); }
+  std::vector<std::string> peers_not_built;  // peer libraries this build lacks (PeerLibrary::library)
   std::vector<std::filesystem::path> files;  // written, in order
 };
 
 /// The ids --integrators accepts, in report order.
 [[nodiscard]] std::vector<std::string> method_ids();
+
+/// Throws Error::input naming the flag when an option is out of range, or names an
+/// integrator of a peer this build lacks.
+void validate(const AccuracyOptions& options);
 
 /// Validates the options (throws Error::input naming the flag), runs the study and
 /// writes accuracy.csv, accuracy.md and the work-precision plots into options.out.

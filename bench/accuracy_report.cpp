@@ -1,5 +1,6 @@
 #include "bench/accuracy_report.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <system_error>
@@ -103,7 +104,7 @@ std::string method_table(const ScenarioResult& s, Clock clock) {
 std::string targets_table(const ScenarioResult& fast, const AccuracyResult& result) {
   std::ostringstream out;
   out << "| target | measured | goal | met | detail |\n| --- | --- | --- | --- | --- |\n";
-  for (const TargetRow& row : evaluate_targets(fast, result.rhs, judging_clock(result)))
+  for (const TargetRow& row : evaluate_targets(fast, result.rhs, judging_clock(result), result.peers_not_built))
     out << "| " << row.target << " | " << row.measured << " | " << row.goal << " | "
         << (row.met ? (*row.met ? "yes" : "**no**") : "-") << " | " << row.note << " |\n";
   return out.str();
@@ -112,6 +113,28 @@ std::string targets_table(const ScenarioResult& fast, const AccuracyResult& resu
 std::string rhs_row(const char* what, const PerCall& c) {
   return std::string("| ") + what + " | " + sig(c.wall_ns) + " | " + sig(c.cpu_ns) + " |\n";
 }
+
+}  // namespace
+
+std::string peers_line(const AccuracyResult& result) {
+  std::string ran, skipped;
+  for (const PeerLibrary& peer : peer_libraries()) {
+    const bool in_run = std::any_of(result.scenarios.begin(), result.scenarios.end(), [&](const ScenarioResult& s) {
+      return std::any_of(s.points.begin(), s.points.end(),
+                         [&](const AccuracyPoint& p) { return p.library == peer.library; });
+    });
+    const bool built = std::find(result.peers_not_built.begin(), result.peers_not_built.end(), peer.library) ==
+                       result.peers_not_built.end();
+    if (in_run) {
+      ran += (ran.empty() ? "" : ", ") + peer.library;
+    } else {
+      skipped += (skipped.empty() ? "" : "; ") + (built ? peer.library + " not selected" : peer.not_built_note());
+    }
+  }
+  return "Peers run: " + (ran.empty() ? std::string("none") : ran) + (skipped.empty() ? "" : "; " + skipped) + ".";
+}
+
+namespace {
 
 std::string markdown(const AccuracyOptions& options, const AccuracyResult& result) {
   std::ostringstream out;
@@ -127,6 +150,7 @@ std::string markdown(const AccuracyOptions& options, const AccuracyResult& resul
                           "steady clock also counts their turns; the targets below are judged by this thread's CPU "
                           "time, with the steady-clock figure beside it.\n\n"
                         : "The targets are judged by the steady clock, with the thread CPU time beside it.\n\n")
+      << peers_line(result) << "\n\n"
       << "## Right-hand side cost (ns per evaluation, this run)\n\n"
       << "| right-hand side | steady clock | thread CPU time |\n| --- | --- | --- |\n"
       << rhs_row("Case 3, closed form (ours, fastest)", result.rhs.case3_fast)

@@ -21,6 +21,10 @@ void prepare_output_folder(const std::filesystem::path& dir, const std::string& 
 /// Writes every file into options.out and appends their paths to result.files.
 void write_accuracy_report(const AccuracyOptions& options, AccuracyResult& result);
 
+/// "Peers run: Boost.Odeint; peer SUNDIALS (CVODE, IDA) not built: install ...": which
+/// peer libraries ran, and why the others did not.
+[[nodiscard]] std::string peers_line(const AccuracyResult& result);
+
 /// The clock the targets are judged by: the thread's CPU time on a busy machine.
 [[nodiscard]] Clock judging_clock(const AccuracyResult& result);
 

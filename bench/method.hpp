@@ -42,18 +42,33 @@ struct Method {
   std::function<Outcome(const Scenario&, double knob)> run;
 };
 
+/// A peer library of the study. Each is compiled in only when CMake found it.
+struct PeerLibrary {
+  std::string library;           // Method::library of its methods
+  std::string integrators;       // for people: "CVODE, IDA"
+  std::string package;           // the Debian package that provides it
+  std::vector<std::string> ids;  // its Method::id values
+  bool built = false;            // compiled into this build
+  /// "peer SUNDIALS (CVODE, IDA) not built: install libsundials-dev and re-run cmake"
+  [[nodiscard]] std::string not_built_note() const;
+};
+/// Every peer library, built or not: Boost.Odeint, SUNDIALS.
+[[nodiscard]] std::vector<PeerLibrary> peer_libraries();
+/// The library names of the peers this build does not have.
+[[nodiscard]] std::vector<std::string> peers_not_built();
+
 /// Our integrators on one case (its fastest right-hand side), in the order of
 /// integrate/simulation.hpp's integrators().
 [[nodiscard]] std::vector<Method> linkage_methods(int case_id);
 /// Boost.Odeint RKF78, Dopri5 (dense output) and Bulirsch-Stoer on Case 3, each with
-/// the user's and with our right-hand side.
+/// the user's and with our right-hand side. Defined only when Boost is built in.
 [[nodiscard]] std::vector<Method> odeint_methods();
 /// SUNDIALS CVODE (Adams) on Case 3 and IDA on Case 1, each with the user's and with
-/// our right-hand side.
+/// our right-hand side. Defined only when SUNDIALS is built in.
 [[nodiscard]] std::vector<Method> sundials_methods();
-/// The peers: Boost.Odeint RKF78, Dopri5 (dense output), Bulirsch-Stoer and SUNDIALS
-/// CVODE (Adams) on Case 3, SUNDIALS IDA on Case 1; each with the user's and with our
-/// right-hand side.
+/// The methods of the peers this build has: Boost.Odeint RKF78, Dopri5 (dense output),
+/// Bulirsch-Stoer and SUNDIALS CVODE (Adams) on Case 3, SUNDIALS IDA on Case 1; each
+/// with the user's and with our right-hand side.
 [[nodiscard]] std::vector<Method> peer_methods();
 
 }  // namespace linkage::bench

@@ -36,28 +36,43 @@ double pick(const PerCall& c, Clock clock) { return clock == Clock::wall ? c.wal
 const char* clock_name(Clock clock) { return clock == Clock::wall ? "steady clock" : "thread CPU time"; }
 Clock other(Clock clock) { return clock == Clock::wall ? Clock::cpu : Clock::wall; }
 
-/// Our best time against the best peer's (both by `clock`), to reach `error`.
+std::string joined(const std::vector<std::string>& names) {
+  std::string out;
+  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+/// Our best time against the best peer's (both by `clock`), to reach `error`. With a
+/// peer library missing from the build the best peer may be missing too: no figure
+/// when none ran, and the figure names what it leaves out otherwise.
 template <class PeerPick>
 TargetRow speed_row(const std::vector<Curve>& all, const std::string& what, double error, PeerPick peer_pick,
-                    double goal, Clock clock) {
+                    double goal, Clock clock, const std::vector<std::string>& peers_not_built) {
   TargetRow row;
   row.target = what;
   row.goal = ">= " + format_significant(goal, 2) + "x";
+  const std::string missing = peers_not_built.empty() ? "" : "peer not built: " + joined(peers_not_built);
+  if (std::none_of(all.begin(), all.end(), peer_pick)) {
+    row.measured = "n/a";
+    row.note = "not measured: " + (missing.empty() ? std::string("no peer in this run") : missing);
+    return row;
+  }
   const Best ours = best_time(all, error, is_ours_fastest, clock);
   const Best peer = best_time(all, error, peer_pick, clock);
   if (!std::isfinite(peer.time) || !std::isfinite(ours.time)) {
     row.measured = "n/a";
     row.note = !std::isfinite(ours.time) ? "none of our integrators reached the error" : "no peer reached the error";
-    return row;
+  } else {
+    const double r = peer.time / ours.time;
+    row.measured = ratio(r);
+    row.met = r >= goal;
+    row.note = ours.name + " " + seconds(ours.time) + " vs " + peer.name + " " + seconds(peer.time);
+    const Best ours_other = best_time(all, error, is_ours_fastest, other(clock));
+    const Best peer_other = best_time(all, error, peer_pick, other(clock));
+    if (std::isfinite(peer_other.time) && std::isfinite(ours_other.time))
+      row.note += "; by " + std::string(clock_name(other(clock))) + " " + ratio(peer_other.time / ours_other.time);
   }
-  const double r = peer.time / ours.time;
-  row.measured = ratio(r);
-  row.met = r >= goal;
-  row.note = ours.name + " " + seconds(ours.time) + " vs " + peer.name + " " + seconds(peer.time);
-  const Best ours_other = best_time(all, error, is_ours_fastest, other(clock));
-  const Best peer_other = best_time(all, error, peer_pick, other(clock));
-  if (std::isfinite(peer_other.time) && std::isfinite(ours_other.time))
-    row.note += "; by " + std::string(clock_name(other(clock))) + " " + ratio(peer_other.time / ours_other.time);
+  if (!missing.empty()) row.note += row.met ? "; best of the peers built (" + missing + ")" : "; " + missing;
   return row;
 }
 
@@ -124,7 +139,8 @@ std::optional<double> overhead_ns(const Curve& curve, double rhs_ns, Clock clock
   return median(values);
 }
 
-std::vector<TargetRow> evaluate_targets(const ScenarioResult& fast, const RhsTimings& rhs, Clock clock) {
+std::vector<TargetRow> evaluate_targets(const ScenarioResult& fast, const RhsTimings& rhs, Clock clock,
+                                        const std::vector<std::string>& peers_not_built) {
   const std::string by = std::string(" (") + clock_name(clock) + ")";
   const std::string by_other = std::string("; by ") + clock_name(other(clock)) + " ";
   std::vector<TargetRow> rows;
@@ -142,9 +158,9 @@ std::vector<TargetRow> evaluate_targets(const ScenarioResult& fast, const RhsTim
   for (const double error : {1e-8, 1e-10}) {
     const std::string e = format_significant(error, 1);
     rows.push_back(speed_row(all, "time to error " + e + ": best peer with user RHS / our best" + by, error, peer_user,
-                             error == 1e-8 ? 4.0 : 3.0, clock));
+                             error == 1e-8 ? 4.0 : 3.0, clock, peers_not_built));
     rows.push_back(speed_row(all, "time to error " + e + ", RHS shared: best peer with our RHS / our best" + by, error,
-                             peer_ours, 1.0, clock));
+                             peer_ours, 1.0, clock, peers_not_built));
   }
 
   for (const Curve& c : all) {

@@ -46,8 +46,10 @@ struct TargetRow {
 };
 
 /// Evaluates every target on a run of the fast scenario, judged by `clock` (the other
-/// clock's figure is given in the note).
-[[nodiscard]] std::vector<TargetRow> evaluate_targets(const ScenarioResult& fast, const RhsTimings& rhs,
-                                                      Clock clock = Clock::wall);
+/// clock's figure is given in the note). A target against the peers is not measured
+/// when no peer ran, and says which peer libraries (`peers_not_built`) it could not
+/// compare against.
+[[nodiscard]] std::vector<TargetRow> evaluate_targets(const ScenarioResult& fast, const RhsTimings& rhs, Clock clock,
+                                                      const std::vector<std::string>& peers_not_built);
 
 }  // namespace linkage::bench

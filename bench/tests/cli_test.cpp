@@ -2,12 +2,14 @@
 // produced and sane (not their timings), and bad input is a one-line error, exit 2.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <sstream>
 
-#include "support/test_support.hpp"
+#include "bench/method.hpp"
 #include "bench/tests/csv_reader.hpp"
+#include "support/test_support.hpp"
 
 namespace linkage {
 namespace {
@@ -23,10 +25,20 @@ TEST(BenchAccuracy, QuickRunWritesASaneReport) {
   const test::RunResult r =
       run_linkage({"bench", "accuracy", "--quick", "--quiet", "--duration", "1", "--out", out.string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  for (const char* f : {"accuracy.csv", "accuracy.md", "work_precision_fast.png", "work_precision_fast.svg",
-                        "work_precision_fast_case3.png", "work_precision_fast_case3.svg"})
+  const std::vector<bench::PeerLibrary> peers = bench::peer_libraries();
+  const auto built = static_cast<std::size_t>(
+      std::count_if(peers.begin(), peers.end(), [](const bench::PeerLibrary& p) { return p.built; }));
+  for (const char* f : {"accuracy.csv", "accuracy.md", "work_precision_fast.png", "work_precision_fast.svg"})
     EXPECT_TRUE(std::filesystem::exists(out / f)) << f;
+  // Case 3 against the peers: only when a peer ran.
+  for (const char* f : {"work_precision_fast_case3.png", "work_precision_fast_case3.svg"})
+    EXPECT_EQ(std::filesystem::exists(out / f), built > 0) << f;
   EXPECT_NE(r.out.find("reference good to"), std::string::npos) << r.out;
+  // Each peer the build lacks: one note on stderr; the report names the peers that ran.
+  for (const bench::PeerLibrary& peer : peers)
+    EXPECT_EQ(r.err.find("linkage: note: " + peer.not_built_note() + "\n") != std::string::npos, !peer.built) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), static_cast<long>(peers.size() - built)) << r.err;
+  EXPECT_NE(r.out.find("Peers run: "), std::string::npos) << r.out;
 
   const auto rows = read_csv(out / "accuracy.csv");
   ASSERT_FALSE(rows.empty());
@@ -55,17 +67,22 @@ TEST(BenchAccuracy, QuickRunWritesASaneReport) {
     if (tol == 1e-3) it->second.first = error;
     if (tol == 1e-9) it->second.second = error;
   }
-  EXPECT_EQ(libraries.size(), 3u);  // linkage, Boost.Odeint, SUNDIALS
+  EXPECT_EQ(libraries.size(), 1 + built);  // linkage and each peer built: Boost.Odeint, SUNDIALS
+  for (const bench::PeerLibrary& peer : peers) EXPECT_EQ(libraries.count(peer.library), peer.built ? 1u : 0u);
   EXPECT_EQ(cases.size(), 3u);
-  ASSERT_GE(loose_tight.size(), 12u);
+  ASSERT_GE(loose_tight.size(), 6u + bench::peer_methods().size());  // ours: Dopri5, DOP853 on each case
   for (const auto& [curve, errors] : loose_tight)
     EXPECT_LT(errors.second, errors.first * 1e-2) << curve << ": tolerance 1e-9 is not better than 1e-3";
   EXPECT_EQ(test::read_text(out / "accuracy.csv").find("nan"), std::string::npos);
 
   const std::string md = test::read_text(out / "accuracy.md");
   for (const char* text : {"significant digits", "### Targets", "time to error 1e-08", "work_precision_fast.svg",
-                           "linkage bench accuracy --scenario fast"})
+                           "linkage bench accuracy --scenario fast", "Peers run: "})
     EXPECT_NE(md.find(text), std::string::npos) << text;
+  for (const bench::PeerLibrary& peer : peers)
+    EXPECT_EQ(md.find(peer.not_built_note()) != std::string::npos, !peer.built) << peer.library;
+  // The targets against the peers: a figure only from peers that ran.
+  EXPECT_EQ(md.find("not measured: peer not built") != std::string::npos, built == 0) << md;
   EXPECT_EQ(test::read_text(out / "work_precision_fast.svg").rfind("<?xml", 0), 0u);
 }
 
@@ -105,6 +122,25 @@ TEST(BenchAccuracy, BadInputIsAOneLineErrorAndWritesNothing) {
   const test::RunResult in_the_way = run_linkage({"bench", "accuracy", "--quick", "--out", (dir / "file" / "sub").string()});
   EXPECT_EQ(in_the_way.exit_code, 2);
   EXPECT_NE(in_the_way.err.find("exists and is not a folder"), std::string::npos) << in_the_way.err;
+}
+
+TEST(BenchAccuracy, AnIntegratorOfAPeerNotBuiltIsAOneLineError) {
+  std::vector<bench::PeerLibrary> missing;
+  for (const bench::PeerLibrary& peer : bench::peer_libraries())
+    if (!peer.built) missing.push_back(peer);
+  if (missing.empty()) GTEST_SKIP() << "every peer is built";
+  TempDir dir;
+  for (const bench::PeerLibrary& peer : missing) {
+    const std::string out = (dir / "o").string();
+    const test::RunResult r =
+        run_linkage({"bench", "accuracy", "--quick", "--integrators", "dop853," + peer.ids.front(), "--out", out});
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("--integrators: '" + peer.ids.front() + "' is not in this build: " + peer.not_built_note()),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out));
+  }
 }
 
 TEST(BenchStress, QuickRunWritesEveryStudy) {

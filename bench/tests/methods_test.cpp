@@ -3,8 +3,10 @@
 // with reference-example.json.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <string>
 
 #include "bench/method.hpp"
 #include "bench/reference.hpp"
@@ -80,10 +82,53 @@ TEST(Methods, OursSolveTheExampleOnEveryCase) {
     for (const Method& m : linkage_methods(c)) expect_solves_the_example(m);
 }
 
-TEST(Methods, PeersSolveTheExampleWithEitherRightHandSide) {
-  const std::vector<Method> peers = peer_methods();
-  EXPECT_EQ(peers.size(), 10u);  // 3 Odeint + CVODE on Case 3, IDA on Case 1; each with 2 RHS
+/// The peer library `name`, as this build has it.
+PeerLibrary peer(const std::string& name) {
+  for (const PeerLibrary& p : peer_libraries())
+    if (p.library == name) return p;
+  ADD_FAILURE() << "no peer library " << name;
+  return {};
+}
+
+/// peer_methods() of one library.
+std::vector<Method> methods_of(const std::string& library) {
+  std::vector<Method> out;
+  for (Method& m : peer_methods())
+    if (m.library == library) out.push_back(std::move(m));
+  return out;
+}
+
+TEST(Methods, OdeintPeersSolveTheExampleWithEitherRightHandSide) {
+  if (!peer("Boost.Odeint").built) GTEST_SKIP() << peer("Boost.Odeint").not_built_note();
+  const std::vector<Method> peers = methods_of("Boost.Odeint");
+  EXPECT_EQ(peers.size(), 6u);  // RKF78, dense Dopri5, Bulirsch-Stoer on Case 3; each with 2 RHS
   for (const Method& m : peers) expect_solves_the_example(m);
+}
+
+TEST(Methods, SundialsPeersSolveTheExampleWithEitherRightHandSide) {
+  if (!peer("SUNDIALS").built) GTEST_SKIP() << peer("SUNDIALS").not_built_note();
+  const std::vector<Method> peers = methods_of("SUNDIALS");
+  EXPECT_EQ(peers.size(), 4u);  // CVODE on Case 3, IDA on Case 1; each with 2 RHS
+  for (const Method& m : peers) expect_solves_the_example(m);
+}
+
+// What peer_libraries() says of each peer is what peer_methods() holds: a built peer
+// has every id it lists, one that is not built has no method at all.
+TEST(Methods, PeerLibrariesListExactlyTheMethodsBuilt) {
+  const std::vector<PeerLibrary> libraries = peer_libraries();
+  ASSERT_EQ(libraries.size(), 2u);
+  std::size_t listed = 0;
+  for (const PeerLibrary& lib : libraries) {
+    std::vector<std::string> ids;
+    for (const Method& m : methods_of(lib.library))
+      if (std::find(ids.begin(), ids.end(), m.id) == ids.end()) ids.push_back(m.id);
+    EXPECT_EQ(ids, lib.built ? lib.ids : std::vector<std::string>{}) << lib.library;
+    listed += methods_of(lib.library).size();
+    const std::string note = lib.not_built_note();
+    EXPECT_NE(note.find(lib.library), std::string::npos) << note;
+    EXPECT_NE(note.find("install " + lib.package), std::string::npos) << note;
+  }
+  EXPECT_EQ(listed, peer_methods().size()) << "a peer method of no listed library";
 }
 
 TEST(Methods, TighterToleranceGivesSmallerErrorForEveryAdaptiveMethod) {

@@ -72,5 +72,47 @@ TEST(Overhead, IsTimePerEvaluationLessTheRightHandSide) {
   EXPECT_NEAR(*overhead_ns(curves(r)[0], 40.0), 60.0, 1e-9);
 }
 
+/// The rows of the targets against the peers (time to error).
+std::vector<TargetRow> peer_rows(const ScenarioResult& r, const std::vector<std::string>& peers_not_built) {
+  std::vector<TargetRow> out;
+  for (TargetRow& row : evaluate_targets(r, RhsTimings{}, Clock::wall, peers_not_built))
+    if (row.target.rfind("time to error", 0) == 0) out.push_back(std::move(row));
+  return out;
+}
+
+TEST(Targets, WithoutAnyPeerBuiltThePeerTargetsAreNotMeasured) {
+  ScenarioResult r;
+  r.points = {point(1e-3, 1e-11)};  // ours only
+  const std::vector<TargetRow> rows = peer_rows(r, {"Boost.Odeint", "SUNDIALS"});
+  ASSERT_EQ(rows.size(), 4u);  // 1e-8 and 1e-10, user RHS and shared RHS
+  for (const TargetRow& row : rows) {
+    EXPECT_EQ(row.measured, "n/a") << row.target;
+    EXPECT_FALSE(row.met.has_value()) << row.target;
+    EXPECT_EQ(row.note, "not measured: peer not built: Boost.Odeint, SUNDIALS") << row.target;
+  }
+  // Every peer built but none in the run (e.g. --integrators dop853): not measured either.
+  for (const TargetRow& row : peer_rows(r, {})) EXPECT_EQ(row.note, "not measured: no peer in this run");
+}
+
+TEST(Targets, WithAPeerMissingTheFigureSaysItIsTheBestOfThoseBuilt) {
+  ScenarioResult r;
+  r.points = {point(1e-3, 1e-11), point(4e-3, 1e-11)};
+  r.points[1].method = "odeint-bs";
+  r.points[1].library = "Boost.Odeint";
+  r.points[1].label = "Odeint Bulirsch-Stoer";
+  r.points[1].rhs = RhsKind::user;
+  const std::vector<TargetRow> rows = peer_rows(r, {"SUNDIALS"});
+  ASSERT_EQ(rows.size(), 4u);
+  const TargetRow& user_1e8 = rows[0];
+  EXPECT_EQ(user_1e8.measured, "4x");
+  EXPECT_EQ(user_1e8.met, std::optional<bool>(true));  // goal >= 4x
+  EXPECT_NE(user_1e8.note.find("best of the peers built (peer not built: SUNDIALS)"), std::string::npos)
+      << user_1e8.note;
+  const TargetRow& shared_1e8 = rows[1];  // no peer ran with our RHS
+  EXPECT_EQ(shared_1e8.note, "not measured: peer not built: SUNDIALS");
+  // All peers built: the same figure, and no word of a missing peer.
+  EXPECT_EQ(peer_rows(r, {})[0].note.find("not built"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace linkage::bench

@@ -1,5 +1,6 @@
 // `linkage bench`: measured speed and accuracy. `accuracy` is the work-precision study
-// against a long double reference and the peer libraries (SUNDIALS, Boost.Odeint),
+// against a long double reference and the peer libraries (SUNDIALS, Boost.Odeint; each
+// when the build found it),
 // `stress` the numerical stability tests, `render` the rendering throughput. The
 // studies live in bench/ (library linkage_bench); a build without it
 // (-DLINKAGE_BUILD_BENCH=OFF) says so.
@@ -73,6 +74,11 @@ bench::AccuracyOptions accuracy_options(const AccuracyFlags& f) {
 
 void run_accuracy(const AccuracyFlags& flags) {
   const bench::AccuracyOptions options = accuracy_options(flags);
+  bench::validate(options);
+  // A named integrator of a missing peer is an error (validate); all of them: a note.
+  if (options.integrators.empty())
+    for (const bench::PeerLibrary& peer : bench::peer_libraries())
+      if (!peer.built) std::fprintf(stderr, "linkage: note: %s\n", peer.not_built_note().c_str());
   const bench::AccuracyResult result = bench::run_accuracy(options);
   std::printf("Right-hand side, ns per evaluation (thread CPU time): Case 3 closed form %.1f, Case 3 definition "
               "%.1f, Case 3 user (Eigen partialPivLu) %.1f, Case 2 %.1f, Case 1 %.1f\n",
@@ -81,14 +87,19 @@ void run_accuracy(const AccuracyFlags& flags) {
   if (result.busy())
     std::printf("The machine is busy (load %.1f on %u cores): targets judged by thread CPU time\n",
                 result.load_average, result.cores);
+  std::printf("%s\n", bench::peers_line(result).c_str());
   for (const bench::ScenarioResult& s : result.scenarios) {
     std::printf("Scenario %s (%g s): %zu runs; reference good to %.1f digits (DOP853 vs Dopri5 in long double: %.2g)\n",
                 s.scenario.name.c_str(), s.scenario.duration, s.points.size(), s.reference.digits,
                 s.reference.check_difference);
     if (s.scenario.name != "fast") continue;
-    for (const bench::TargetRow& row : bench::evaluate_targets(s, result.rhs, bench::judging_clock(result)))
+    for (const bench::TargetRow& row :
+         bench::evaluate_targets(s, result.rhs, bench::judging_clock(result), result.peers_not_built)) {
+      std::string verdict = row.met ? (*row.met ? "met" : "MISSED") : "";
+      if (row.note.rfind("not measured", 0) == 0) verdict = row.note;
       std::printf("  %-75s %10s  goal %-8s %s\n", row.target.c_str(), row.measured.c_str(), row.goal.c_str(),
-                  row.met ? (*row.met ? "met" : "MISSED") : "");
+                  verdict.c_str());
+    }
   }
   for (const auto& file : result.files) std::printf("wrote %s\n", file.string().c_str());
 }
