@@ -1,6 +1,6 @@
 #pragma once
 // Case 1: eight DAEs in maximal coordinates, pin force kept (spec sec. 3, corrected
-// per ERRATA.md: inertia in both moment balances, rows 5 and 6 of the matrix, and the
+// per docs/errata.md: inertia in both moment balances, rows 5 and 6 of the matrix, and the
 // unknown order). Unknowns q = (x1'', y1'', th1'', x2'', y2'', th2'', Fx, Fy).
 //   (1.1)  m x1''                              - Fx          = 0
 //   (2.1)  m y1''                              - Fy          = -m g

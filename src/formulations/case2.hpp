@@ -1,6 +1,6 @@
 #pragma once
 // Case 2: six equations in the generalized coordinates (x1, y1, th1, th2), pin force
-// kept (spec sec. 4, corrected per ERRATA.md: coordinates {x1, y1, th1, th2}, eqs. 3.2
+// kept (spec sec. 4, corrected per docs/errata.md: coordinates {x1, y1, th1, th2}, eqs. 3.2
 // and 4.2 once each, no y2'' in 6.2). Block 2's Newton equations (4.1), (5.1) give
 // x2'' = -Fx/m and y2'' = -g - Fy/m, which are substituted into the constraints.
 // Unknowns q = (x1'', y1'', th1'', th2'', Fx, Fy).
