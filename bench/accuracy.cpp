@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 #include <fstream>
+#include <limits>
 #include <thread>
 
 #include "bench/accuracy_report.hpp"
@@ -147,8 +147,8 @@ RhsTimings measure_rhs(const Scenario& s, bool quick) {
   t.case3_fast = rhs_ns<8>(FastCase3Rhs<double>(p), y8, batch);
   t.case3_definition = rhs_ns<8>(DefinitionCase3Rhs{p}, y8, batch);
   const UserConstants user(p);
-  t.case3_user = rhs_ns<8>([&](double, const Vec<8>& y, Vec<8>& dy) { user_case3_rhs(user, y.data(), dy.data()); },
-                           y8, batch);
+  t.case3_user =
+      rhs_ns<8>([&](double, const Vec<8>& y, Vec<8>& dy) { user_case3_rhs(user, y.data(), dy.data()); }, y8, batch);
   t.case2 = rhs_ns<8>(GeneralizedRhs<Case2>(p), y8, batch);
   t.case1 = rhs_ns<12>(MaximalRhs(p, 0.0, 0.0), y12, batch);
 

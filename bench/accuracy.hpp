@@ -21,22 +21,22 @@ namespace linkage::bench {
 struct AccuracyOptions {
   std::vector<std::string> scenarios{"fast"};
   std::vector<int> cases{1, 2, 3};
-  std::vector<std::string> integrators;   // method ids to run; empty: all of them
-  std::optional<double> duration;         // s; overrides the scenarios' own
+  std::vector<std::string> integrators;  // method ids to run; empty: all of them
+  std::optional<double> duration;        // s; overrides the scenarios' own
   std::filesystem::path out{"bench-accuracy"};
-  bool quick = false;                     // few settings, one repeat, looser reference: for CI
-  bool quiet = false;                     // no progress line
+  bool quick = false;  // few settings, one repeat, looser reference: for CI
+  bool quiet = false;  // no progress line
 };
 
 /// One run of one method at one setting.
 struct AccuracyPoint {
-  std::string method;    // Method::id
+  std::string method;  // Method::id
   std::string library;
   std::string label;
   int case_id = 3;
   RhsKind rhs = RhsKind::fastest;
   bool adaptive = true;
-  double knob = 0;       // tolerance or step count
+  double knob = 0;  // tolerance or step count
   Timing timing;
   Outcome outcome;
   double error = 0;             // m or rad; NaN when the run failed
@@ -45,7 +45,7 @@ struct AccuracyPoint {
 };
 
 struct ScenarioResult {
-  Scenario scenario;     // as run (duration overridden if asked)
+  Scenario scenario;  // as run (duration overridden if asked)
   Reference reference;
   std::vector<AccuracyPoint> points;
 };
@@ -58,8 +58,8 @@ struct RhsTimings {
   PerCall case3_user;        // hand-typed 4x4 + Eigen partialPivLu
   PerCall case2;
   PerCall case1;
-  PerCall solve_blocks;      // the Case 3 4x4 solve alone: our block solve
-  PerCall solve_lu;          //                         and Eigen's partialPivLu
+  PerCall solve_blocks;  // the Case 3 4x4 solve alone: our block solve
+  PerCall solve_lu;      //                         and Eigen's partialPivLu
 };
 
 struct AccuracyResult {

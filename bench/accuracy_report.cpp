@@ -47,15 +47,16 @@ std::string csv_text(const std::string& s) {
 
 std::string csv(const AccuracyResult& result) {
   std::ostringstream out;
-  out << "scenario,case,method,library,rhs,kind,tolerance,step_count,time_s,time_min_s,cpu_time_s,repeats,rhs_evaluations,"
+  out << "scenario,case,method,library,rhs,kind,tolerance,step_count,time_s,time_min_s,cpu_time_s,repeats,rhs_"
+         "evaluations,"
          "steps,rejected,error,energy_error,constraint_error,status\n";
   for (const ScenarioResult& s : result.scenarios)
     for (const AccuracyPoint& p : s.points) {
-      out << s.scenario.name << ',' << p.case_id << ',' << p.method << ',' << csv_text(p.library) << ','
-          << name(p.rhs) << ',' << (p.adaptive ? "adaptive" : "fixed") << ','
-          << (p.adaptive ? csv_number(p.knob) : "") << ',' << (p.adaptive ? "" : csv_number(p.knob)) << ','
-          << csv_number(p.timing.median_seconds) << ',' << csv_number(p.timing.min_seconds) << ','
-          << csv_number(p.timing.cpu_median_seconds) << ',' << p.timing.repeats << ',' << p.outcome.rhs_evaluations << ',' << p.outcome.steps << ','
+      out << s.scenario.name << ',' << p.case_id << ',' << p.method << ',' << csv_text(p.library) << ',' << name(p.rhs)
+          << ',' << (p.adaptive ? "adaptive" : "fixed") << ',' << (p.adaptive ? csv_number(p.knob) : "") << ','
+          << (p.adaptive ? "" : csv_number(p.knob)) << ',' << csv_number(p.timing.median_seconds) << ','
+          << csv_number(p.timing.min_seconds) << ',' << csv_number(p.timing.cpu_median_seconds) << ','
+          << p.timing.repeats << ',' << p.outcome.rhs_evaluations << ',' << p.outcome.steps << ','
           << (p.outcome.rejected ? std::to_string(*p.outcome.rejected) : "") << ',' << csv_number(p.error) << ','
           << csv_number(p.energy_error) << ',' << csv_number(p.constraint_error) << ','
           << csv_text(p.outcome.failure.empty() ? "ok" : p.outcome.failure) << '\n';
@@ -73,8 +74,8 @@ std::string reference_text(const ScenarioResult& s) {
     out << "; from the spec's decimal inputs it matches reference-example.json (25 digits) at t = 1, 2, 5, 10 s to "
         << sig(*r.spec_difference, 2);
   out << ". The reference has about **" << sig(r.digits, 3)
-      << " significant digits** (relative to the largest of |x1|, |y1|, |theta|); computed in "
-      << sig(r.seconds, 2) << " s.\n";
+      << " significant digits** (relative to the largest of |x1|, |y1|, |theta|); computed in " << sig(r.seconds, 2)
+      << " s.\n";
   return out.str();
 }
 
@@ -141,7 +142,8 @@ std::string markdown(const AccuracyOptions& options, const AccuracyResult& resul
   out << "# Work-precision study\n\n"
       << "Reproduce with `" << accuracy_command(options) << "`.\n\n"
       << "Each point is one run to the scenario's end time, timed in-process with the steady clock"
-      << (options.quick ? " once (--quick: timings are not meaningful)" : ", repeated until 20 ms and reported as the median")
+      << (options.quick ? " once (--quick: timings are not meaningful)"
+                        : ", repeated until 20 ms and reported as the median")
       << ". Error: the largest absolute error at the end over x1, y1 (m), theta1, theta2 (rad) against the "
          "reference. Adaptive methods run at rtol = atol = the tolerance; fixed-step ones at step counts doubling.\n\n"
       << "Machine: " << result.cores << " cores, 1-minute load average " << sig(result.load_average, 2)
@@ -180,8 +182,9 @@ std::string markdown(const AccuracyOptions& options, const AccuracyResult& resul
 // --- plots --------------------------------------------------------------------------
 
 int integrator_slot(const std::string& id) {
-  static const char* order[] = {"euler", "symplectic-euler", "rk4", "dopri5", "dop853", "gauss-legendre",
-                                "odeint-rkf78", "odeint-dopri5", "odeint-bs", "cvode-adams", "ida"};
+  static const char* order[] = {"euler",     "symplectic-euler", "rk4",          "dopri5",
+                                "dop853",    "gauss-legendre",   "odeint-rkf78", "odeint-dopri5",
+                                "odeint-bs", "cvode-adams",      "ida"};
   for (int i = 0; i < 11; ++i)
     if (id == order[i]) return i;
   return 0;
@@ -196,7 +199,7 @@ plot::Series series_of(const Curve& c) {
   const int slot = integrator_slot(c.method);
   s.color = static_cast<std::size_t>(slot) % plot::palette_size;
   if (c.ours()) {
-    s.dash = c.case_id == 3 ? (c.rhs == RhsKind::definition ? plot::Dash::dash_dot : plot::Dash::solid)
+    s.dash = c.case_id == 3   ? (c.rhs == RhsKind::definition ? plot::Dash::dash_dot : plot::Dash::solid)
              : c.case_id == 2 ? plot::Dash::dashed
                               : plot::Dash::dotted;
     s.marker = c.case_id == 3 ? plot::Marker::circle : c.case_id == 2 ? plot::Marker::square : plot::Marker::triangle;

@@ -4,9 +4,12 @@ namespace linkage::bench {
 
 const char* name(RhsKind kind) {
   switch (kind) {
-    case RhsKind::fastest: return "ours";
-    case RhsKind::definition: return "definition";
-    case RhsKind::user: return "user";
+    case RhsKind::fastest:
+      return "ours";
+    case RhsKind::definition:
+      return "definition";
+    case RhsKind::user:
+      return "user";
   }
   return "?";
 }

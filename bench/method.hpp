@@ -15,11 +15,11 @@ namespace linkage::bench {
 
 /// What one run produced.
 struct Outcome {
-  BodyState final;                    // the state at the scenario's duration
-  std::int64_t rhs_evaluations = 0;   // right-hand side (or DAE residual) evaluations
-  std::int64_t steps = 0;             // accepted steps
+  BodyState final;                       // the state at the scenario's duration
+  std::int64_t rhs_evaluations = 0;      // right-hand side (or DAE residual) evaluations
+  std::int64_t steps = 0;                // accepted steps
   std::optional<std::int64_t> rejected;  // rejected step attempts, when the library reports them
-  std::string failure;                // empty when the run reached the end
+  std::string failure;                   // empty when the run reached the end
 };
 
 /// Which right-hand side a run uses.
@@ -37,7 +37,7 @@ struct Method {
   int case_id = 3;
   RhsKind rhs = RhsKind::fastest;
   bool adaptive = true;
-  int order = 0;        // of the method (fixed-step ones: sets the step counts tried)
+  int order = 0;  // of the method (fixed-step ones: sets the step counts tried)
   /// Runs the scenario with `knob` = the tolerance (rtol = atol) or the step count.
   std::function<Outcome(const Scenario&, double knob)> run;
 };

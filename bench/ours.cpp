@@ -24,14 +24,18 @@ constexpr std::int64_t kMaxAdaptiveSteps = 100'000'000;
 
 template <int N>
 BodyState to_body(const Params& p, const Vec<N>& y) {
-  if constexpr (N == 8) return body_state(p, State::from_vector(y));
-  else return BodyState::from_vector(y);
+  if constexpr (N == 8)
+    return body_state(p, State::from_vector(y));
+  else
+    return BodyState::from_vector(y);
 }
 
 template <int N>
 Vec<N> initial_vector(const Scenario& s) {
-  if constexpr (N == 8) return s.initial.vector();
-  else return body_state(s.params, s.initial).vector();
+  if constexpr (N == 8)
+    return s.initial.vector();
+  else
+    return body_state(s.params, s.initial).vector();
 }
 
 void fill_counters(const ode::Counters& c, Outcome& out) {
@@ -119,7 +123,8 @@ std::vector<Method> methods_on(int case_id, RhsKind rhs, MakeF make_f, bool all)
   }
   add(kDop853, [](F f, const Scenario& s, double tol) { return run_adaptive<ode::Dop853<double, N>, N>(f, s, tol); });
   if (all)
-    add(kGauss2, [](F f, const Scenario& s, double n) { return run_fixed<ode::GaussLegendre2<double, N>, N>(f, s, n); });
+    add(kGauss2,
+        [](F f, const Scenario& s, double n) { return run_fixed<ode::GaussLegendre2<double, N>, N>(f, s, n); });
   return out;
 }
 
@@ -128,14 +133,16 @@ std::vector<Method> methods_on(int case_id, RhsKind rhs, MakeF make_f, bool all)
 std::vector<Method> linkage_methods(int case_id) {
   switch (case_id) {
     case 1:
-      return methods_on<12>(1, RhsKind::definition, [](const Params& p) { return MaximalRhs(p, 0.0, 0.0); }, true);
+      return methods_on<12>(
+          1, RhsKind::definition, [](const Params& p) { return MaximalRhs(p, 0.0, 0.0); }, true);
     case 2:
-      return methods_on<8>(2, RhsKind::definition, [](const Params& p) { return GeneralizedRhs<Case2>(p); }, true);
+      return methods_on<8>(
+          2, RhsKind::definition, [](const Params& p) { return GeneralizedRhs<Case2>(p); }, true);
     default: {
-      std::vector<Method> out =
-          methods_on<8>(3, RhsKind::fastest, [](const Params& p) { return FastCase3Rhs<double>(p); }, true);
-      for (Method& m : methods_on<8>(3, RhsKind::definition, [](const Params& p) { return DefinitionCase3Rhs{p}; },
-                                     false))
+      std::vector<Method> out = methods_on<8>(
+          3, RhsKind::fastest, [](const Params& p) { return FastCase3Rhs<double>(p); }, true);
+      for (Method& m : methods_on<8>(
+               3, RhsKind::definition, [](const Params& p) { return DefinitionCase3Rhs{p}; }, false))
         out.push_back(std::move(m));
       return out;
     }

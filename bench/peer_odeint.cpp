@@ -89,9 +89,15 @@ Method odeint_method(Stepper which, RhsKind rhs) {
   m.rhs = rhs;
   m.adaptive = true;
   switch (which) {
-    case Stepper::rkf78: m.id = "odeint-rkf78", m.label = "Odeint RKF78", m.order = 8; break;
-    case Stepper::dopri5: m.id = "odeint-dopri5", m.label = "Odeint dense Dopri5", m.order = 5; break;
-    case Stepper::bulirsch_stoer: m.id = "odeint-bs", m.label = "Odeint Bulirsch-Stoer", m.order = 0; break;
+    case Stepper::rkf78:
+      m.id = "odeint-rkf78", m.label = "Odeint RKF78", m.order = 8;
+      break;
+    case Stepper::dopri5:
+      m.id = "odeint-dopri5", m.label = "Odeint dense Dopri5", m.order = 5;
+      break;
+    case Stepper::bulirsch_stoer:
+      m.id = "odeint-bs", m.label = "Odeint Bulirsch-Stoer", m.order = 0;
+      break;
   }
   m.run = [which, rhs](const Scenario& scenario, double tol) {
     if (rhs == RhsKind::user) return run(which, scenario, tol, UserSystem{UserConstants(scenario.params), nullptr});

@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
-
 #include <nlohmann/json.hpp>
 
 #include "bench/rhs.hpp"
@@ -33,8 +32,8 @@ std::vector<LVec> integrate(const Case3Fast<long double>& closed_form, const LVe
     while (integrator.t() < t) {
       const ode::StepStatus status = integrator.step(f);
       if (status != ode::StepStatus::ok)
-        throw Error::diverged("reference run failed: " + std::string(ode::describe(status)) + " at t = " +
-                              std::to_string(static_cast<double>(integrator.t())));
+        throw Error::diverged("reference run failed: " + std::string(ode::describe(status)) +
+                              " at t = " + std::to_string(static_cast<double>(integrator.t())));
     }
     LVec y;
     integrator.dense(f, t, y);

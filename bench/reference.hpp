@@ -16,9 +16,9 @@ namespace linkage::bench {
 struct Reference {
   /// x1, y1, theta1, theta2 at the scenario's duration, in long double.
   std::array<long double, 4> final{};
-  double tolerance = 0;               // rtol = atol of the DOP853 run
-  long steps = 0;                     // its accepted steps
-  double check_tolerance = 0;         // rtol = atol of the Dopri5 check
+  double tolerance = 0;        // rtol = atol of the DOP853 run
+  long steps = 0;              // its accepted steps
+  double check_tolerance = 0;  // rtol = atol of the Dopri5 check
   /// Largest |difference| over x1, y1, theta1, theta2 between the two methods: a bound
   /// on the reference's absolute error (of the worse of the two).
   double check_difference = 0;
@@ -26,7 +26,7 @@ struct Reference {
   std::optional<double> spec_difference;
   /// Decimal digits the reference has, relative to the largest of |x1|, |y1|, |theta|.
   double digits = 0;
-  double seconds = 0;                 // wall time of computing and checking it
+  double seconds = 0;  // wall time of computing and checking it
 };
 
 /// Integrates the scenario (initial state and parameters exactly as the double runs

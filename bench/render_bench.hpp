@@ -32,7 +32,8 @@ namespace linkage::bench {
 /// The clip the render command makes by default (the spec's example, Case 3, DOP853, the
 /// default elements, camera and light theme) at a given size, rate and duration, with no
 /// output set. `assets` as for load_theme (empty: the palettes built into the binary).
-[[nodiscard]] Clip example_clip(int width, int height, int fps, double duration, const std::filesystem::path& assets = {});
+[[nodiscard]] Clip example_clip(int width, int height, int fps, double duration,
+                                const std::filesystem::path& assets = {});
 /// The clip's motion at every frame time, as the pipeline samples it.
 [[nodiscard]] Motion simulate_clip(const Clip& clip);
 
@@ -47,21 +48,21 @@ struct RenderBenchOptions {
 struct MovieRow {
   int width = 0, height = 0, fps = 0;
   long frames = 0;
-  double wall_seconds = 0;        // the whole pipeline, simulation to finished file
-  double simulate_seconds = 0;    // stages of that run; drawing runs alongside the
-  double draw_seconds = 0;        // encoder thread, so they add up to more than the wall
+  double wall_seconds = 0;      // the whole pipeline, simulation to finished file
+  double simulate_seconds = 0;  // stages of that run; drawing runs alongside the
+  double draw_seconds = 0;      // encoder thread, so they add up to more than the wall
   double convert_seconds = 0;
-  double encode_seconds = 0;      // libavcodec + muxing + finishing the file
-  double draw_waited_seconds = 0; // the drawing thread waited for a free buffer
-  double encoder_idle_seconds = 0;// the encoder thread waited for a drawn frame
-  double cpu_seconds = 0;         // process CPU time of the pipeline run, all threads
-  double alone_wall_seconds = 0;  // encoding the stored frames alone
-  double alone_cpu_seconds = 0;   // process CPU time of that run
-  double alone_unpack_seconds = 0;// of which unpacking the stored frames
-  std::size_t stored_bytes = 0;   // the run-length coded frames kept for encoding alone
-  std::int64_t bytes = 0;         // size of the MP4
-  bool same_output = false;       // both runs wrote byte-identical files
-  std::string encoder;            // e.g. "libx264"
+  double encode_seconds = 0;        // libavcodec + muxing + finishing the file
+  double draw_waited_seconds = 0;   // the drawing thread waited for a free buffer
+  double encoder_idle_seconds = 0;  // the encoder thread waited for a drawn frame
+  double cpu_seconds = 0;           // process CPU time of the pipeline run, all threads
+  double alone_wall_seconds = 0;    // encoding the stored frames alone
+  double alone_cpu_seconds = 0;     // process CPU time of that run
+  double alone_unpack_seconds = 0;  // of which unpacking the stored frames
+  std::size_t stored_bytes = 0;     // the run-length coded frames kept for encoding alone
+  std::int64_t bytes = 0;           // size of the MP4
+  bool same_output = false;         // both runs wrote byte-identical files
+  std::string encoder;              // e.g. "libx264"
   [[nodiscard]] double fps_achieved() const { return static_cast<double>(frames) / wall_seconds; }
   [[nodiscard]] double alone_fps() const { return static_cast<double>(frames) / alone_wall_seconds; }
   [[nodiscard]] double ratio() const { return wall_seconds / alone_wall_seconds; }
@@ -73,11 +74,11 @@ struct MovieRow {
 struct PngRow {
   int width = 0, height = 0;
   long frames = 0;
-  double ours_seconds = 0;          // wall, including unpacking the stored frames
-  double ours_convert_seconds = 0;  // BGRA -> RGB rows on the calling thread
-  double ours_compress_seconds = 0; // summed over the workers
-  double cairo_seconds = 0;         // wall, including unpacking the stored frames
-  double unpack_seconds = 0;        // unpacking, per run (the same in both)
+  double ours_seconds = 0;           // wall, including unpacking the stored frames
+  double ours_convert_seconds = 0;   // BGRA -> RGB rows on the calling thread
+  double ours_compress_seconds = 0;  // summed over the workers
+  double cairo_seconds = 0;          // wall, including unpacking the stored frames
+  double unpack_seconds = 0;         // unpacking, per run (the same in both)
   std::int64_t ours_bytes = 0, cairo_bytes = 0;
   [[nodiscard]] double ours_fps() const { return static_cast<double>(frames) / ours_seconds; }
   [[nodiscard]] double cairo_fps() const { return static_cast<double>(frames) / cairo_seconds; }

@@ -23,8 +23,8 @@ Verdict pipeline_verdict(const RenderBenchResult& result) {
   const MovieRow* row = target_movie(result);
   if (row == nullptr) return {"not measured (--quick)", ""};
   const double ratio = judged_ratio(*row, result);
-  const std::string measured = result.busy() ? sig(ratio) + "x by CPU time (wall " + sig(row->ratio()) + "x; busy machine)"
-                                             : sig(ratio) + "x";
+  const std::string measured =
+      result.busy() ? sig(ratio) + "x by CPU time (wall " + sig(row->ratio()) + "x; busy machine)" : sig(ratio) + "x";
   return {measured, ratio <= kMaxPipelineRatio ? "met" : "MISSED"};
 }
 
@@ -46,9 +46,9 @@ std::string render_csv(const RenderBenchResult& result) {
         << csv_number(m.draw_seconds) << ',' << csv_number(m.convert_seconds) << ',' << csv_number(m.encode_seconds)
         << ',' << csv_number(m.draw_waited_seconds) << ',' << csv_number(m.encoder_idle_seconds) << ",encode alone,"
         << csv_number(m.alone_wall_seconds) << ',' << csv_number(m.alone_fps()) << ',' << csv_number(m.ratio()) << ','
-        << csv_number(m.cpu_seconds) << ',' << csv_number(m.alone_cpu_seconds) << ',' << csv_number(m.cpu_ratio()) << ','
-        << csv_number(m.alone_unpack_seconds) << ',' << csv_number(per_frame) << ',' << csv_number(per_frame) << ','
-        << (m.same_output ? "yes" : "no") << ',' << m.stored_bytes << ',' << result.repeats << '\n';
+        << csv_number(m.cpu_seconds) << ',' << csv_number(m.alone_cpu_seconds) << ',' << csv_number(m.cpu_ratio())
+        << ',' << csv_number(m.alone_unpack_seconds) << ',' << csv_number(per_frame) << ',' << csv_number(per_frame)
+        << ',' << (m.same_output ? "yes" : "no") << ',' << m.stored_bytes << ',' << result.repeats << '\n';
   }
   for (const PngRow& p : result.pngs) {
     const auto frames = static_cast<double>(p.frames);
@@ -81,8 +81,8 @@ std::string render_markdown(const RenderBenchOptions& options, const RenderBench
      << ", preset medium, tune animation, CRF 20, 2 encoder threads, yuv420p (the settings of `linkage render`).\n\n"
      << "## Targets\n\n| target | measured | goal | |\n| --- | --- | --- | --- |\n"
      << "| MP4 " << size_text(kTargetWidth, kTargetHeight)
-     << ": the whole pipeline's time / encoding the same frames alone | " << piped.measured << " | <= "
-     << sig(kMaxPipelineRatio) << "x | " << piped.met << " |\n"
+     << ": the whole pipeline's time / encoding the same frames alone | " << piped.measured
+     << " | <= " << sig(kMaxPipelineRatio) << "x | " << piped.met << " |\n"
      << "| PNG sequence " << size_text(kTargetWidth, kTargetHeight) << ": our frames per second / Cairo's writer's | "
      << png.measured << " | >= " << sig(kMinPngRatio) << "x | " << png.met << " |\n\n";
   if (const MovieRow* row = target_movie(result); row != nullptr && result.busy())
@@ -103,7 +103,8 @@ std::string render_markdown(const RenderBenchOptions& options, const RenderBench
         "*same file* says the two MP4s are byte-identical. *CPU ratio* is the process CPU time (all threads) of the "
         "pipeline over that of encoding alone: the work drawing adds, which another process's load hardly "
         "changes, while the wall-time ratio moves with it.\n\n"
-     << "| size | frames | simulate (s) | draw (ms/frame) | convert (ms/frame) | encode (ms/frame) | drawing waited (s) "
+     << "| size | frames | simulate (s) | draw (ms/frame) | convert (ms/frame) | encode (ms/frame) | drawing waited "
+        "(s) "
         "| encoder idle (s) | pipeline (s) | pipeline fps | encode alone (s) | encode alone fps | ratio | CPU ratio | "
         "kB/frame | same file | stored MB |\n"
      << "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- "
@@ -153,14 +154,15 @@ std::vector<std::string> render_bench_lines(const RenderBenchResult& result) {
     lines.push_back("MP4 " + size_text(m.width, m.height) + ": " + std::to_string(m.frames) + " frames, pipeline " +
                     sig(m.fps_achieved()) + " fps (draw " + ms_per_frame(m.draw_seconds, m.frames) + ", convert " +
                     ms_per_frame(m.convert_seconds, m.frames) + ", encode " + ms_per_frame(m.encode_seconds, m.frames) +
-                    " ms/frame), encode alone " + sig(m.alone_fps()) + " fps: ratio " + sig(m.ratio()) + " (CPU " + sig(m.cpu_ratio()) + ")" +
-                    (m.same_output ? "" : " (the two files differ!)"));
+                    " ms/frame), encode alone " + sig(m.alone_fps()) + " fps: ratio " + sig(m.ratio()) + " (CPU " +
+                    sig(m.cpu_ratio()) + ")" + (m.same_output ? "" : " (the two files differ!)"));
   for (const PngRow& p : result.pngs)
     lines.push_back("PNG " + size_text(p.width, p.height) + ": ours " + sig(p.ours_fps()) + " fps, Cairo's " +
                     sig(p.cairo_fps()) + " fps: " + sig(p.ratio()) + "x");
   const Verdict piped = pipeline_verdict(result), png = png_verdict(result);
   lines.push_back("target: MP4 " + size_text(kTargetWidth, kTargetHeight) + " pipeline / encode alone " +
-                  piped.measured + " (goal <= " + sig(kMaxPipelineRatio) + "x)" + (piped.met.empty() ? "" : " " + piped.met));
+                  piped.measured + " (goal <= " + sig(kMaxPipelineRatio) + "x)" +
+                  (piped.met.empty() ? "" : " " + piped.met));
   lines.push_back("target: PNG " + size_text(kTargetWidth, kTargetHeight) + " ours / Cairo " + png.measured +
                   " (goal >= " + sig(kMinPngRatio) + "x)" + (png.met.empty() ? "" : " " + png.met));
   return lines;

@@ -9,10 +9,9 @@
 //     and B of spec sec. 5 typed in by hand into fixed-size Eigen types, then
 //     partialPivLu(). The peers run with it, and with FastCase3Rhs.
 // State of Cases 2 and 3: y = (x1, y1, th1, th2, x1', y1', th1', th2').
-#include <cmath>
-
 #include <Eigen/Core>
 #include <Eigen/LU>
+#include <cmath>
 
 #include "formulations/case3_fast.hpp"
 #include "integrate/linkage_rhs.hpp"
@@ -53,13 +52,11 @@ inline void user_case3_rhs(const UserConstants& c, const double* y, double* dy) 
   const double s1 = std::sin(y[2]), c1 = std::cos(y[2]), s2 = std::sin(y[3]), c2 = std::cos(y[3]);
   const double w1 = y[6], w2 = y[7];
   Eigen::Matrix4d A;
-  A << c.m * c.D * s1, -c.m * c.D * c1, c.I, 0.0,
-       c.m * c.D * s2, -c.m * c.D * c2, 0.0, c.I,
-       2.0, 0.0, -c.D * s1, -c.D * s2,
-       0.0, 2.0, c.D * c1, c.D * c2;
+  A << c.m * c.D * s1, -c.m * c.D * c1, c.I, 0.0, c.m * c.D * s2, -c.m * c.D * c2, 0.0, c.I, 2.0, 0.0, -c.D * s1,
+      -c.D * s2, 0.0, 2.0, c.D * c1, c.D * c2;
   Eigen::Vector4d B;
   B << c.m * c.g * c.D * c1, c.m * c.g * c.D * c2, c.D * (w1 * w1 * c1 + w2 * w2 * c2),
-       c.D * (w1 * w1 * s1 + w2 * w2 * s2) - 2.0 * c.g;
+      c.D * (w1 * w1 * s1 + w2 * w2 * s2) - 2.0 * c.g;
   const Eigen::Vector4d q = A.partialPivLu().solve(B);
   for (int i = 0; i < 4; ++i) {
     dy[i] = y[i + 4];

@@ -18,8 +18,8 @@ const std::vector<Scenario>& scenarios() {
 
     Params near_zero_d = example_params;
     near_zero_d.b = near_zero_d.L / 2.0 - 1e-6 * near_zero_d.L;
-    out.push_back({"near-zero-d", "the fast spins with the pin almost at the centres of mass, D = 1e-6 L",
-                   near_zero_d, fast, 10.0});
+    out.push_back({"near-zero-d", "the fast spins with the pin almost at the centres of mass, D = 1e-6 L", near_zero_d,
+                   fast, 10.0});
 
     Params tiny_mass = example_params;
     tiny_mass.m = 1e-6;

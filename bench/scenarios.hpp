@@ -15,7 +15,7 @@ struct Scenario {
   std::string description;  // one line for reports
   Params params;
   State initial;
-  double duration = 10.0;   // s, the time the final error is measured at
+  double duration = 10.0;  // s, the time the final error is measured at
 };
 
 /// Every scenario, in the order reports list them:

@@ -1,11 +1,10 @@
 #include "bench/stress.hpp"
 
+#include <Eigen/LU>
+#include <Eigen/SVD>
 #include <cmath>
 #include <limits>
 #include <sstream>
-
-#include <Eigen/LU>
-#include <Eigen/SVD>
 
 #include "bench/accuracy_report.hpp"
 #include "bench/scenarios.hpp"
@@ -59,8 +58,7 @@ struct Track {
 
 std::vector<double> log_times(double first, double last, int count) {
   std::vector<double> t;
-  for (int i = 0; i < count; ++i)
-    t.push_back(first * std::pow(last / first, static_cast<double>(i) / (count - 1)));
+  for (int i = 0; i < count; ++i) t.push_back(first * std::pow(last / first, static_cast<double>(i) / (count - 1)));
   t.back() = last;
   return t;
 }
@@ -104,7 +102,7 @@ SimulationOptions options_for(int case_id, IntegratorKind kind, double duration,
 struct StableStep {
   int case_id = 3;
   IntegratorKind integrator{};
-  double largest_stable = kNaN;   // s
+  double largest_stable = kNaN;  // s
   double smallest_unstable = kNaN;
   std::string unstable_because;
 };
@@ -142,8 +140,10 @@ StableStep find_stable_step(const Scenario& s, int case_id, IntegratorKind kind,
   for (int i = 0; i < bisections; ++i) {
     const double mid = std::sqrt(lo * hi);
     std::string mid_why;
-    if (stable(s, case_id, kind, mid, mid_why)) lo = mid;
-    else hi = mid, why = mid_why;
+    if (stable(s, case_id, kind, mid, mid_why))
+      lo = mid;
+    else
+      hi = mid, why = mid_why;
   }
   (void)stable(s, case_id, kind, hi, out.unstable_because);
   out.largest_stable = lo;
@@ -162,13 +162,15 @@ struct Variant {
 std::vector<Variant> variants(bool quick) {
   const Scenario& base = find_scenario("example", "stress");
   std::vector<Variant> out;
-  const std::vector<double> masses = quick ? std::vector<double>{1e-6, 1e6} : std::vector<double>{1e-6, 1e-3, 1, 1e3, 1e6};
+  const std::vector<double> masses =
+      quick ? std::vector<double>{1e-6, 1e6} : std::vector<double>{1e-6, 1e-3, 1, 1e3, 1e6};
   for (const double m : masses) {
     Variant v{"m = " + sig(m) + " kg", base.params, base.initial};
     v.params.m = m;
     out.push_back(v);
   }
-  const std::vector<double> ds = quick ? std::vector<double>{0.5, 1e-6} : std::vector<double>{0.5, 1e-1, 1e-2, 1e-4, 1e-6};
+  const std::vector<double> ds =
+      quick ? std::vector<double>{0.5, 1e-6} : std::vector<double>{0.5, 1e-1, 1e-2, 1e-4, 1e-6};
   for (const double d : ds) {
     Variant v{"D = " + sig(d) + " L", base.params, base.initial};
     v.params.b = v.params.L / 2 - d * v.params.L;
@@ -210,15 +212,17 @@ double grouped_error(const V& q, const R& ref) {
     long double size = 0, err = 0;
     for (int i = 0; i < Case::size; ++i) {
       const Unknown u = Case::unknowns[static_cast<std::size_t>(i)];
-      const int k = (u == Unknown::F_x || u == Unknown::F_y) ? 2
+      const int k = (u == Unknown::F_x || u == Unknown::F_y)                   ? 2
                     : (u == Unknown::theta1_ddot || u == Unknown::theta2_ddot) ? 1
-                                                                                : 0;
+                                                                               : 0;
       if (k != kind) continue;
       size = std::max(size, std::fabs(static_cast<long double>(ref[i])));
       err = std::max(err, std::fabs(static_cast<long double>(q[i]) - static_cast<long double>(ref[i])));
     }
-    if (size > 0) worst = std::max(worst, static_cast<double>(err / size));
-    else if (err > 0) worst = std::numeric_limits<double>::infinity();
+    if (size > 0)
+      worst = std::max(worst, static_cast<double>(err / size));
+    else if (err > 0)
+      worst = std::numeric_limits<double>::infinity();
   }
   return worst;
 }
@@ -344,9 +348,9 @@ StressSummary run_stress(const StressOptions& options) {
   for (const int case_id : {3, 1})
     for (const IntegratorInfo& k : kinds) {
       const SimulationOptions o = options_for(case_id, k.kind, long_duration, 0.01, 1e-10);
-      long_runs.push_back(run_track(example, o, long_times,
-                                    std::string(k.name) + (k.adaptive ? " (tol 1e-10)" : " (dt 0.01 s)") + ", Case " +
-                                        std::to_string(case_id)));
+      long_runs.push_back(run_track(
+          example, o, long_times,
+          std::string(k.name) + (k.adaptive ? " (tol 1e-10)" : " (dt 0.01 s)") + ", Case " + std::to_string(case_id)));
       progress.update(++done);
     }
 
@@ -378,9 +382,9 @@ StressSummary run_stress(const StressOptions& options) {
     Stabilization kind;
     double gain;
   };
-  for (const Stab st : {Stab{Stabilization::none, 0}, Stab{Stabilization::baumgarte, 1},
-                        Stab{Stabilization::baumgarte, 10}, Stab{Stabilization::baumgarte, 100},
-                        Stab{Stabilization::projection, 0}}) {
+  for (const Stab st :
+       {Stab{Stabilization::none, 0}, Stab{Stabilization::baumgarte, 1}, Stab{Stabilization::baumgarte, 10},
+        Stab{Stabilization::baumgarte, 100}, Stab{Stabilization::projection, 0}}) {
     SimulationOptions o = options_for(1, IntegratorKind::dop853, drift_duration, 1e-3, 1e-8);
     o.stabilization = st.kind;
     o.baumgarte_alpha = o.baumgarte_beta = st.gain;
@@ -411,14 +415,14 @@ StressSummary run_stress(const StressOptions& options) {
            "acceleration_error_vs_long_double,tool\n";
     for (const ExtremeRow& r : extremes)
       csv << '"' << r.what << "\"," << r.case_id << ',' << csv_number(r.condition) << ','
-          << csv_number(r.condition_scaled) << ',' << csv_number(r.block_error) << ',' << csv_number(r.lu_error)
-          << ',' << csv_number(r.truth_error) << ",\"" << r.tool << "\"\n";
+          << csv_number(r.condition_scaled) << ',' << csv_number(r.block_error) << ',' << csv_number(r.lu_error) << ','
+          << csv_number(r.truth_error) << ",\"" << r.tool << "\"\n";
     write_file_atomically(options.out / "stress_extremes.csv", csv.str(), "out");
     summary.files.push_back(options.out / "stress_extremes.csv");
   }
 
-  plot::Plot energy = time_plot("Long runs, Case 3: internal energy error",
-                                "relative error of the energy about the centre of mass");
+  plot::Plot energy =
+      time_plot("Long runs, Case 3: internal energy error", "relative error of the energy about the centre of mass");
   plot::Plot energy1 = time_plot("Long runs, Case 1: energy error", "|E − E_{0}| / energy scale");
   plot::Plot constraint = time_plot("Long runs, Case 1: constraint error", "|C| (m)");
   for (const Track& tr : long_runs) {
@@ -450,7 +454,8 @@ StressSummary run_stress(const StressOptions& options) {
      << tracks_table(long_runs) << "\n"
      << "## Largest stable step (scenario fast over " << sig(quick ? 2.0 : 10.0) << " s)\n\n"
      << "Stable: the run reaches the end with the internal energy within 10 % of its start. Bisection on dt.\n\n"
-     << "| case | integrator | largest stable dt | smallest unstable dt | why unstable |\n| --- | --- | --- | --- | --- |\n";
+     << "| case | integrator | largest stable dt | smallest unstable dt | why unstable |\n| --- | --- | --- | --- | "
+        "--- |\n";
   for (const StableStep& s : steps)
     md << "| " << s.case_id << " | " << info(s.integrator).name << " | " << sig(s.largest_stable) << " s | "
        << sig(s.smallest_unstable) << " s | " << s.unstable_because << " |\n";
@@ -466,7 +471,8 @@ StressSummary run_stress(const StressOptions& options) {
        << " | " << sig(r.block_error, 2) << " | " << sig(r.lu_error, 2) << " | " << sig(r.truth_error, 2) << " | "
        << r.tool << " |\n";
   md << "\n## Case 1 constraint drift (scenario fast over " << sig(drift_duration) << " s, DOP853 at 1e-8)\n\n"
-     << "![drift](stress_drift.svg)\n\n" << tracks_table(drift) << "\n";
+     << "![drift](stress_drift.svg)\n\n"
+     << tracks_table(drift) << "\n";
   write_file_atomically(options.out / "stress.md", md.str(), "out");
   summary.files.push_back(options.out / "stress.md");
 

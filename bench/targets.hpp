@@ -38,11 +38,11 @@ enum class Clock { wall, cpu };
 [[nodiscard]] std::optional<double> overhead_ns(const Curve& curve, double rhs_ns, Clock clock = Clock::wall);
 
 struct TargetRow {
-  std::string target;    // what is measured
-  std::string measured;  // the value, formatted
-  std::string goal;      // e.g. "<= 40 ns", ">= 4x"
+  std::string target;       // what is measured
+  std::string measured;     // the value, formatted
+  std::string goal;         // e.g. "<= 40 ns", ">= 4x"
   std::optional<bool> met;  // none when it could not be measured (say why in note)
-  std::string note;      // which methods, or why not measured
+  std::string note;         // which methods, or why not measured
 };
 
 /// Evaluates every target on a run of the fast scenario, judged by `clock` (the other

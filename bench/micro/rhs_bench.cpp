@@ -8,8 +8,8 @@
 #include <random>
 
 #include "bench/rhs.hpp"
-#include "formulations/linear_solve.hpp"
 #include "formulations/case3_fast.hpp"
+#include "formulations/linear_solve.hpp"
 #include "integrate/linkage_rhs.hpp"
 
 namespace linkage::bench {

@@ -42,9 +42,9 @@ TEST(BenchAccuracy, QuickRunWritesASaneReport) {
 
   const auto rows = read_csv(out / "accuracy.csv");
   ASSERT_FALSE(rows.empty());
-  for (const char* column : {"scenario", "case", "method", "library", "rhs", "kind", "tolerance", "step_count",
-                             "time_s", "rhs_evaluations", "steps", "error", "energy_error", "constraint_error",
-                             "status"})
+  for (const char* column :
+       {"scenario", "case", "method", "library", "rhs", "kind", "tolerance", "step_count", "time_s", "rhs_evaluations",
+        "steps", "error", "energy_error", "constraint_error", "status"})
     EXPECT_TRUE(rows.front().count(column)) << column;
   // Every library, every case, both right-hand sides of the peers.
   std::map<std::string, int> libraries, cases;
@@ -119,7 +119,8 @@ TEST(BenchAccuracy, BadInputIsAOneLineErrorAndWritesNothing) {
   }
   // A folder in the way is an error; a missing one is made with its parents (mkdir -p).
   test::write_text(dir / "file", "x");
-  const test::RunResult in_the_way = run_linkage({"bench", "accuracy", "--quick", "--out", (dir / "file" / "sub").string()});
+  const test::RunResult in_the_way =
+      run_linkage({"bench", "accuracy", "--quick", "--out", (dir / "file" / "sub").string()});
   EXPECT_EQ(in_the_way.exit_code, 2);
   EXPECT_NE(in_the_way.err.find("exists and is not a folder"), std::string::npos) << in_the_way.err;
 }
@@ -148,9 +149,9 @@ TEST(BenchStress, QuickRunWritesEveryStudy) {
   const auto out = dir / "stress";
   const test::RunResult r = run_linkage({"bench", "stress", "--quick", "--quiet", "--out", out.string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  for (const char* f : {"stress.md", "stress_long_runs.csv", "stress_stable_step.csv", "stress_extremes.csv",
-                        "stress_drift.csv", "stress_long_runs_energy.png", "stress_long_runs_constraint.svg",
-                        "stress_drift.png", "stress_drift.svg"})
+  for (const char* f :
+       {"stress.md", "stress_long_runs.csv", "stress_stable_step.csv", "stress_extremes.csv", "stress_drift.csv",
+        "stress_long_runs_energy.png", "stress_long_runs_constraint.svg", "stress_drift.png", "stress_drift.svg"})
     EXPECT_TRUE(std::filesystem::exists(out / f)) << f;
 
   const auto steps = read_csv(out / "stress_stable_step.csv");
@@ -171,7 +172,8 @@ TEST(BenchStress, QuickRunWritesEveryStudy) {
   EXPECT_EQ(extremes.size() % 3, 0u);
   for (const auto& row : extremes) EXPECT_GE(std::stod(row.at("condition_number")), 1.0) << row.at("variant");
   const std::string md = test::read_text(out / "stress.md");
-  for (const char* text : {"## Long runs", "## Largest stable step", "## Extreme parameters", "## Case 1 constraint drift"})
+  for (const char* text :
+       {"## Long runs", "## Largest stable step", "## Extreme parameters", "## Case 1 constraint drift"})
     EXPECT_NE(md.find(text), std::string::npos) << text;
 }
 

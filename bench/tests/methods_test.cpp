@@ -11,9 +11,9 @@
 #include "bench/method.hpp"
 #include "bench/reference.hpp"
 #include "bench/rhs.hpp"
+#include "formulations/case3.hpp"
 #include "formulations/case3_fast.hpp"
 #include "formulations/linear_solve.hpp"
-#include "formulations/case3.hpp"
 #include "linkage/reference_example.hpp"
 #include "support/test_support.hpp"
 

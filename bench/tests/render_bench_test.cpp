@@ -1,21 +1,21 @@
 // `linkage bench render --quick`: the report is produced and its numbers hang together
 // (not the timings themselves); the frame store gives back the frames it was given; bad
 // flags are one-line errors, exit 2.
-#include <gtest/gtest.h>
+#include "bench/render_bench.hpp"
 
+#include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
-#include <thread>
 #include <cmath>
 #include <filesystem>
 #include <random>
+#include <thread>
 
 #include "bench/frame_store.hpp"
-#include "bench/render_bench.hpp"
 #include "bench/tests/csv_reader.hpp"
 #include "core/error.hpp"
 #include "support/test_support.hpp"
@@ -58,8 +58,9 @@ TEST(BenchRender, QuickRunWritesASaneReportAndCleansUp) {
   for (const auto& row : rows) {
     const bool mp4 = row.at("format") == "mp4";
     EXPECT_EQ(row.at("frames"), mp4 ? "60" : "10");  // 2 s at 30 fps; 10 of those frames as PNG
-    for (const char* column : {"wall_s", "frames_per_s", "convert_s", "encode_s", "baseline_wall_s",
-                               "baseline_frames_per_s", "ratio", "unpack_s", "bytes_per_frame", "baseline_bytes_per_frame"})
+    for (const char* column :
+         {"wall_s", "frames_per_s", "convert_s", "encode_s", "baseline_wall_s", "baseline_frames_per_s", "ratio",
+          "unpack_s", "bytes_per_frame", "baseline_bytes_per_frame"})
       expect_positive(row, column);
     const double frames = number(row, "frames"), wall = number(row, "wall_s"), base = number(row, "baseline_wall_s");
     EXPECT_NEAR(number(row, "frames_per_s"), frames / wall, 1e-9 * frames / wall);
@@ -169,7 +170,8 @@ TEST(FrameStore, GivesBackEveryFrameByteForByte) {
     Frame frame(37, 11);
     // Runs of one colour broken by noise, and a frame of pure noise.
     for (std::size_t i = 0; i < frame.pixels.size(); ++i)
-      frame.pixels[i] = static_cast<std::uint8_t>(f == 3 || random() % 50 == 0 ? random() : 17U * static_cast<unsigned>(f));
+      frame.pixels[i] =
+          static_cast<std::uint8_t>(f == 3 || random() % 50 == 0 ? random() : 17U * static_cast<unsigned>(f));
     store.add(frame);
     frames.push_back(frame);
   }

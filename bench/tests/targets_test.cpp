@@ -1,9 +1,10 @@
 // Pieces of the study's arithmetic: the median, time-to-error interpolation, overhead.
+#include "bench/targets.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "bench/targets.hpp"
 #include "bench/timing.hpp"
 
 namespace linkage::bench {
@@ -46,9 +47,9 @@ TEST(TimeToError, InterpolatesLogLogBetweenTheBracketingSettings) {
   ASSERT_EQ(c.size(), 1u);
   // error falls 4 decades while time rises 1: 1e-8 is halfway, at sqrt(1e-3 * 1e-2)
   EXPECT_NEAR(*time_to_error(c[0], 1e-8), std::sqrt(1e-5), 1e-12);
-  EXPECT_NEAR(*time_to_error(c[0], 1e-6), 1e-3, 1e-15);     // reached by the first setting
-  EXPECT_NEAR(*time_to_error(c[0], 1e-3), 1e-3, 1e-15);     // the first setting already beats it
-  EXPECT_FALSE(time_to_error(c[0], 1e-12).has_value());    // never reached
+  EXPECT_NEAR(*time_to_error(c[0], 1e-6), 1e-3, 1e-15);  // reached by the first setting
+  EXPECT_NEAR(*time_to_error(c[0], 1e-3), 1e-3, 1e-15);  // the first setting already beats it
+  EXPECT_FALSE(time_to_error(c[0], 1e-12).has_value());  // never reached
 }
 
 TEST(TimeToError, SkipsFailedRuns) {

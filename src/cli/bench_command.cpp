@@ -33,8 +33,10 @@ std::vector<std::string> split_list(const std::string& text, const std::string& 
   std::stringstream in(text);
   std::string item;
   while (std::getline(in, item, ','))
-    if (item.empty()) throw Error::input(origin + ": '" + text + "' has an empty item; give a comma-separated list");
-    else out.push_back(item);
+    if (item.empty())
+      throw Error::input(origin + ": '" + text + "' has an empty item; give a comma-separated list");
+    else
+      out.push_back(item);
   if (out.empty()) throw Error::input(origin + ": empty list");
   return out;
 }
@@ -80,13 +82,14 @@ void run_accuracy(const AccuracyFlags& flags) {
     for (const bench::PeerLibrary& peer : bench::peer_libraries())
       if (!peer.built) std::fprintf(stderr, "linkage: note: %s\n", peer.not_built_note().c_str());
   const bench::AccuracyResult result = bench::run_accuracy(options);
-  std::printf("Right-hand side, ns per evaluation (thread CPU time): Case 3 closed form %.1f, Case 3 definition "
-              "%.1f, Case 3 user (Eigen partialPivLu) %.1f, Case 2 %.1f, Case 1 %.1f\n",
-              result.rhs.case3_fast.cpu_ns, result.rhs.case3_definition.cpu_ns, result.rhs.case3_user.cpu_ns,
-              result.rhs.case2.cpu_ns, result.rhs.case1.cpu_ns);
+  std::printf(
+      "Right-hand side, ns per evaluation (thread CPU time): Case 3 closed form %.1f, Case 3 definition "
+      "%.1f, Case 3 user (Eigen partialPivLu) %.1f, Case 2 %.1f, Case 1 %.1f\n",
+      result.rhs.case3_fast.cpu_ns, result.rhs.case3_definition.cpu_ns, result.rhs.case3_user.cpu_ns,
+      result.rhs.case2.cpu_ns, result.rhs.case1.cpu_ns);
   if (result.busy())
-    std::printf("The machine is busy (load %.1f on %u cores): targets judged by thread CPU time\n",
-                result.load_average, result.cores);
+    std::printf("The machine is busy (load %.1f on %u cores): targets judged by thread CPU time\n", result.load_average,
+                result.cores);
   std::printf("%s\n", bench::peers_line(result).c_str());
   for (const bench::ScenarioResult& s : result.scenarios) {
     std::printf("Scenario %s (%g s): %zu runs; reference good to %.1f digits (DOP853 vs Dopri5 in long double: %.2g)\n",

@@ -24,8 +24,9 @@ void refuse_empty_values(CLI::App& app) {
       if (option->get_type_size() == 0 || option->get_name() == "--title") continue;
       option->check(CLI::Validator(
           [](std::string& value) {
-            return value.empty() ? std::string("the value is empty; give a value, or leave the option out for its default")
-                                 : std::string();
+            return value.empty()
+                       ? std::string("the value is empty; give a value, or leave the option out for its default")
+                       : std::string();
           },
           ""));
     }

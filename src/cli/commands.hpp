@@ -1,9 +1,8 @@
 #pragma once
 // Subcommand registry: each subcommand lives in its own file and registers a CLI11
 // subcommand plus the function that runs it.
-#include <functional>
-
 #include <CLI/CLI.hpp>
+#include <functional>
 
 namespace linkage::cli {
 

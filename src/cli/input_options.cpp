@@ -12,17 +12,16 @@ namespace linkage::cli {
 
 void add_input_options(CLI::App* sub, InputOptions& options) {
   options.config_option = sub->add_option("--config", options.config,
-                  "TOML file of inputs (keys: " + input_key_list() + "); flags override it")
-      ->type_name("FILE")
-      ->group("Inputs");
+                                          "TOML file of inputs (keys: " + input_key_list() + "); flags override it")
+                              ->type_name("FILE")
+                              ->group("Inputs");
   const Inputs defaults;
   for (std::size_t i = 0; i < kInputKeys.size(); ++i) {
     const InputKey& key = kInputKeys[i];
-    const std::string help = std::string(key.description) + ", " + std::string(key.unit) +
-                             " (default " + format_roundtrip(defaults.value(key)) + ")";
-    options.options[i] = sub->add_option(flag_name(key.key), options.values[i], help)
-                             ->type_name("NUM")
-                             ->group("Inputs");
+    const std::string help = std::string(key.description) + ", " + std::string(key.unit) + " (default " +
+                             format_roundtrip(defaults.value(key)) + ")";
+    options.options[i] =
+        sub->add_option(flag_name(key.key), options.values[i], help)->type_name("NUM")->group("Inputs");
   }
 }
 

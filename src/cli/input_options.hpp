@@ -1,11 +1,10 @@
 #pragma once
 // The parameter and state options shared by solve, simulate and render: one flag per
 // symbol (--L ... --theta2-dot) and --config FILE; flags override the file.
+#include <CLI/CLI.hpp>
 #include <array>
 #include <string>
 #include <string_view>
-
-#include <CLI/CLI.hpp>
 
 #include "core/error.hpp"
 #include "model/inputs.hpp"

@@ -43,16 +43,22 @@ std::size_t terminal_width() {
   return std::max<std::size_t>(width, 40);
 }
 
-
 void run_lesson_command(const LessonOptions& o) {
   lesson::RunnerOptions options;
-  if (o.quality == "draft") options.quality = lesson::Quality::draft;
-  else if (o.quality == "final") options.quality = lesson::Quality::final;
-  else throw Error::input("--quality: '" + o.quality + "' is not a quality; valid: draft, final");
-  if (o.format == "text") options.format = lesson::Format::text;
-  else if (o.format == "markdown") options.format = lesson::Format::markdown;
-  else if (o.format == "latex") options.format = lesson::Format::latex;
-  else throw Error::input("--format: '" + o.format + "' is not a format; valid: text, markdown, latex");
+  if (o.quality == "draft")
+    options.quality = lesson::Quality::draft;
+  else if (o.quality == "final")
+    options.quality = lesson::Quality::final;
+  else
+    throw Error::input("--quality: '" + o.quality + "' is not a quality; valid: draft, final");
+  if (o.format == "text")
+    options.format = lesson::Format::text;
+  else if (o.format == "markdown")
+    options.format = lesson::Format::markdown;
+  else if (o.format == "latex")
+    options.format = lesson::Format::latex;
+  else
+    throw Error::input("--format: '" + o.format + "' is not a format; valid: text, markdown, latex");
 
   const lesson::Lesson lesson = lesson::parse_lesson(o.file);
   if (!o.only.empty()) options.selected = lesson::parse_step_range(o.only, lesson.steps.size());
@@ -82,7 +88,8 @@ void run_lesson_command(const LessonOptions& o) {
 void register_lesson(CLI::App& app) {
   auto o = std::make_shared<LessonOptions>();
   CLI::App* sub = app.add_subcommand(
-      "lesson", "Run a lesson script: print it, write its clips, plots and tables, and a lesson document (lessons/README.md)");
+      "lesson",
+      "Run a lesson script: print it, write its clips, plots and tables, and a lesson document (lessons/README.md)");
   sub->add_option("FILE", o->file, "The lesson, a TOML file (e.g. lessons/06-numerical-example.toml)")
       ->required()
       ->type_name("FILE");

@@ -1,6 +1,5 @@
 // linkage: worked solutions, simulation and animation of two pinned blocks.
 #include <CLI/CLI.hpp>
-
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -39,9 +38,12 @@ std::string one_line(const std::string& message) {
   std::string escaped;
   for (const char c : message) {
     const auto u = static_cast<unsigned char>(c);
-    if (c == '\n') escaped += "\\n";
-    else if (c == '\t') escaped += "\\t";
-    else if (c == '\r') escaped += "\\r";
+    if (c == '\n')
+      escaped += "\\n";
+    else if (c == '\t')
+      escaped += "\\t";
+    else if (c == '\r')
+      escaped += "\\r";
     else if (u < 0x20 || u == 0x7f) {
       static constexpr char hex[] = "0123456789abcdef";
       escaped += "\\x";
@@ -89,7 +91,8 @@ void check_command_word(const CLI::App& app, int argc, char** argv) {
   }
   const std::vector<std::string_view> candidates(names.begin(), names.end());
   std::string message = "'" + word + "' is not a command";
-  if (auto close = linkage::lesson::closest_match(word, candidates)) message += " (did you mean '" + std::string(*close) + "'?)";
+  if (auto close = linkage::lesson::closest_match(word, candidates))
+    message += " (did you mean '" + std::string(*close) + "'?)";
   throw linkage::Error::input(message + "; valid: " + linkage::lesson::join(candidates));
 }
 
@@ -97,8 +100,9 @@ void check_command_word(const CLI::App& app, int argc, char** argv) {
 
 int main(int argc, char** argv) {
   using namespace linkage;
-  CLI::App app{"linkage: two identical blocks joined by a frictionless pin, free in the vertical plane.\n"
-               "Worked solutions of the equations of motion, simulation, and lecture animations."};
+  CLI::App app{
+      "linkage: two identical blocks joined by a frictionless pin, free in the vertical plane.\n"
+      "Worked solutions of the equations of motion, simulation, and lecture animations."};
   app.set_version_flag("--version", std::string("linkage ") + kVersion);
   app.require_subcommand(1);
   app.fallthrough(false);

@@ -6,11 +6,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
 #include "cli/input_options.hpp"
@@ -59,7 +58,8 @@ RenderSettings resolve_settings(const RenderFlags& f) {
   if (!f.at.empty()) s.at = parse_number(f.at, "--at", "s");
   // --view alone implies the fixed camera; with another camera it is a mistake.
   const bool camera_given = f.camera_option->count() > 0;
-  s.camera = camera_given ? parse_camera(f.camera, "--camera") : (f.view.empty() ? CameraMode::follow : CameraMode::fixed);
+  s.camera =
+      camera_given ? parse_camera(f.camera, "--camera") : (f.view.empty() ? CameraMode::follow : CameraMode::fixed);
   if (!f.view.empty()) {
     s.view = parse_view(f.view, "--view");
     if (s.camera != CameraMode::fixed)
@@ -106,8 +106,11 @@ void print_stats(const RenderStats& s) {
       {"encoder_opened", s.encoder_opened},
       {"png_files_written", s.png_files_written},
       {"seconds",
-       {{"simulate", s.simulate_seconds}, {"draw", s.draw_seconds}, {"convert", s.convert_seconds},
-        {"encode", s.encode_seconds}, {"png", s.png_seconds}}},
+       {{"simulate", s.simulate_seconds},
+        {"draw", s.draw_seconds},
+        {"convert", s.convert_seconds},
+        {"encode", s.encode_seconds},
+        {"png", s.png_seconds}}},
   };
   std::printf("%s\n", json.dump(2).c_str());
 }
@@ -119,7 +122,8 @@ void run_render(const RenderFlags& flags) {
   const ClipResult result = produce_clip(clip, [&](ClipStage stage, long done, long total) {
     if (!progress || stage != shown) {
       if (progress) progress->finish();
-      progress.emplace(std::string(name(stage)), total, stage == ClipStage::simulate ? "samples" : "frames", flags.quiet);
+      progress.emplace(std::string(name(stage)), total, stage == ClipStage::simulate ? "samples" : "frames",
+                       flags.quiet);
       shown = stage;
     }
     progress->update(done);
@@ -141,7 +145,8 @@ void register_render(CLI::App& app) {
                                   "written atomically (default linkage.mp4, or none with --frames alone)")
                       ->type_name("FILE")
                       ->group(output);
-  sub->add_option("--frames", f->frames, "Also (or instead) write the clip as DIR/frame_00000.png ... (DIR is made with its parents)")
+  sub->add_option("--frames", f->frames,
+                  "Also (or instead) write the clip as DIR/frame_00000.png ... (DIR is made with its parents)")
       ->type_name("DIR")
       ->group(output);
   std::string presets;
@@ -155,11 +160,12 @@ void register_render(CLI::App& app) {
       ->type_name("WxH")
       ->group(output);
   sub->add_option("--fps", f->fps, "Frames per second, 1 .. 240 (overrides --quality)")->type_name("N")->group(output);
-  f->duration_option = sub->add_option("--duration", f->duration,
-                                       "Simulated time the clip shows, s (default 10); the video lasts duration / speed "
-                                       "and has round(duration / speed x fps) frames")
-                           ->type_name("S")
-                           ->group(output);
+  f->duration_option =
+      sub->add_option("--duration", f->duration,
+                      "Simulated time the clip shows, s (default 10); the video lasts duration / speed "
+                      "and has round(duration / speed x fps) frames")
+          ->type_name("S")
+          ->group(output);
   sub->add_option("--speed", f->speed, "Simulated seconds per second of video (default 1; below 1 is slow motion)")
       ->type_name("X")
       ->group(output);
@@ -185,9 +191,10 @@ void register_render(CLI::App& app) {
   sub->add_option("--theme", f->theme, "Colours: " + theme_name_list() + " (default light; palettes in assets/themes)")
       ->type_name("NAME")
       ->group(look);
-  f->title_option = sub->add_option("--title", f->title, "Title line (default \"" + RenderSettings{}.title + "\"; \"\" for none)")
-                        ->type_name("TEXT")
-                        ->group(look);
+  f->title_option =
+      sub->add_option("--title", f->title, "Title line (default \"" + RenderSettings{}.title + "\"; \"\" for none)")
+          ->type_name("TEXT")
+          ->group(look);
   add_simulation_flags(sub, f->simulation);
   add_input_options(sub, f->inputs);
   add_runner(sub, [f] { run_render(*f); });

@@ -2,17 +2,16 @@
 // the run's cost and accuracy on stderr.
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
-#include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
 #include "cli/input_options.hpp"
@@ -47,10 +46,12 @@ Format choose_format(const SimulateOptions& o) {
   if (!o.format.empty()) throw Error::input("--format: '" + o.format + "' is not a format; valid: csv, json");
   // From the extension, whatever its case; an unknown one is a mistake, not CSV.
   std::string ext = std::filesystem::path(o.out).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (ext == ".json") return Format::json;
   if (ext == ".csv" || o.out.empty() || o.out == "-") return Format::csv;
-  throw Error::input("--out: '" + o.out + "' has " + (ext.empty() ? std::string("no extension") : "extension '" + ext + "'") +
+  throw Error::input("--out: '" + o.out + "' has " +
+                     (ext.empty() ? std::string("no extension") : "extension '" + ext + "'") +
                      "; valid: .csv or .json, or give --format csv|json");
 }
 
@@ -75,7 +76,8 @@ struct Samples {
 /// part way leaves only complete lines on stdout (and no file at all with --out).
 class TableWriter {
  public:
-  TableWriter(Format format, std::FILE* stdout_file, AtomicFile* file) : format_(format), stdout_(stdout_file), file_(file) {}
+  TableWriter(Format format, std::FILE* stdout_file, AtomicFile* file)
+      : format_(format), stdout_(stdout_file), file_(file) {}
 
   void begin(const std::vector<Column>& columns, const std::string& json_header) {
     if (format_ == Format::csv) {
@@ -96,8 +98,10 @@ class TableWriter {
     }
     line_ += format_ == Format::csv ? "\n" : "]";
     ++rows_;
-    if (format_ == Format::csv) emit(line_);
-    else json_ += line_;
+    if (format_ == Format::csv)
+      emit(line_);
+    else
+      json_ += line_;
   }
 
   /// JSON is only written once complete, so a failed run prints none of it.
@@ -130,7 +134,8 @@ std::string json_line(const std::string& key, const nlohmann::ordered_json& valu
 std::string json_header(const Inputs& inputs, const SimulationOptions& s, double every,
                         const std::vector<Column>& columns) {
   nlohmann::ordered_json params = nlohmann::ordered_json::object(), state = nlohmann::ordered_json::object();
-  for (const InputKey& key : kInputKeys) (key.param != nullptr ? params : state)[std::string(key.key)] = inputs.value(key);
+  for (const InputKey& key : kInputKeys)
+    (key.param != nullptr ? params : state)[std::string(key.key)] = inputs.value(key);
   const nlohmann::ordered_json options = {{"case", s.case_id},
                                           {"integrator", info(s.integrator).name},
                                           {"dt", s.dt},
@@ -165,9 +170,10 @@ std::string json_summary(const SimulationStats& st, double wall) {
 
 void print_summary(const SimulationOptions& s, long rows, const SimulationStats& st, double wall) {
   const IntegratorInfo& integrator = info(s.integrator);
-  const std::string method = integrator.adaptive ? std::string(integrator.name) + " (rtol " + format_roundtrip(s.rtol) +
-                                                       ", atol " + format_roundtrip(s.atol) + ")"
-                                                 : std::string(integrator.name) + " (dt " + format_roundtrip(s.dt) + " s)";
+  const std::string method = integrator.adaptive
+                                 ? std::string(integrator.name) + " (rtol " + format_roundtrip(s.rtol) + ", atol " +
+                                       format_roundtrip(s.atol) + ")"
+                                 : std::string(integrator.name) + " (dt " + format_roundtrip(s.dt) + " s)";
   std::fprintf(stderr,
                "linkage simulate: Case %d, %s, stabilize %s, 0 to %s s, %ld rows\n"
                "  steps: %lld accepted, %lld rejected; right-hand side evaluations: %lld\n"

@@ -14,29 +14,35 @@ void add_simulation_flags(CLI::App* sub, SimulationFlags& o) {
   const std::string group = "Simulation";
   sub->add_option("--case", o.which_case,
                   "Formulation: 1 (maximal coordinates, can drift off the pin), 2 or 3 (generalized coordinates) "
-                  "(default " + o.which_case + ")")
+                  "(default " +
+                      o.which_case + ")")
       ->type_name("1|2|3")
       ->group(group);
   std::string names;
-  for (const IntegratorInfo& i : integrators()) names += "\n  " + std::string(i.name) + ": " + std::string(i.description);
+  for (const IntegratorInfo& i : integrators())
+    names += "\n  " + std::string(i.name) + ": " + std::string(i.description);
   sub->add_option("--integrator", o.integrator, "Integrator (default " + o.integrator + "):" + names)
       ->type_name("NAME")
       ->group(group);
-  sub->add_option("--dt", o.dt, "Step of fixed-step integrators, first step of adaptive ones, s (default " + fmt(d.dt) + ")")
+  sub->add_option("--dt", o.dt,
+                  "Step of fixed-step integrators, first step of adaptive ones, s (default " + fmt(d.dt) + ")")
       ->type_name("S")
       ->group(group);
-  o.rtol_option = sub->add_option("--rtol", o.rtol,
-                                  "Relative tolerance of adaptive integrators, in [1e-14, 1] (default " + fmt(d.rtol) + ")")
-                      ->type_name("NUM")
-                      ->group(group);
+  o.rtol_option =
+      sub->add_option("--rtol", o.rtol,
+                      "Relative tolerance of adaptive integrators, in [1e-14, 1] (default " + fmt(d.rtol) + ")")
+          ->type_name("NUM")
+          ->group(group);
   o.atol_option = sub->add_option("--atol", o.atol,
                                   "Absolute tolerance of adaptive integrators, in [1e-20, 1], in the state's units "
-                                  "(m, rad, m/s, rad/s) (default " + fmt(d.atol) + ")")
+                                  "(m, rad, m/s, rad/s) (default " +
+                                      fmt(d.atol) + ")")
                       ->type_name("NUM")
                       ->group(group);
   sub->add_option("--stabilize", o.stabilize,
                   "Constraint stabilization of Case 1: none, baumgarte (C'' + 2 alpha C' + beta^2 C = 0) or "
-                  "projection (back onto the pin constraint after every step) (default " + o.stabilize + ")")
+                  "projection (back onto the pin constraint after every step) (default " +
+                      o.stabilize + ")")
       ->type_name("KIND")
       ->group(group);
   o.alpha_option = sub->add_option("--baumgarte-alpha", o.baumgarte_alpha,
@@ -52,8 +58,10 @@ void add_simulation_flags(CLI::App* sub, SimulationFlags& o) {
 
 SimulationOptions resolve_simulation_flags(const SimulationFlags& o, double duration) {
   SimulationOptions s;
-  if (o.which_case == "1" || o.which_case == "2" || o.which_case == "3") s.case_id = o.which_case[0] - '0';
-  else throw Error::input("--case: '" + o.which_case + "' is not a case; valid: 1, 2, 3");
+  if (o.which_case == "1" || o.which_case == "2" || o.which_case == "3")
+    s.case_id = o.which_case[0] - '0';
+  else
+    throw Error::input("--case: '" + o.which_case + "' is not a case; valid: 1, 2, 3");
   s.integrator = parse_integrator(o.integrator, "--integrator");
   s.stabilization = parse_stabilization(o.stabilize, "--stabilize");
   s.duration = duration;

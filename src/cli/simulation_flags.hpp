@@ -2,9 +2,8 @@
 // The simulation options shared by commands that run the motion (render; simulate has
 // the same flags): --case, --integrator, --dt, --rtol, --atol, --stabilize and the
 // Baumgarte gains, with the same help and checks.
-#include <string>
-
 #include <CLI/CLI.hpp>
+#include <string>
 
 #include "integrate/simulation.hpp"
 

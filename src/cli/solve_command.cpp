@@ -56,10 +56,14 @@ void run_solve(const SolveOptions& options) {
                                         : text_style_from_locale();
   const Inputs inputs = resolve_inputs(options.inputs);
   const WorkedSolution worked = work_out(inputs, cases);
-  if (format == "json") write_stdout(json_report(worked));
-  else if (format == "latex") write_stdout(latex_report(worked, report));
-  else if (format == "markdown") write_stdout(markdown_report(worked, report));
-  else write_stdout(text_report(worked, report));
+  if (format == "json")
+    write_stdout(json_report(worked));
+  else if (format == "latex")
+    write_stdout(latex_report(worked, report));
+  else if (format == "markdown")
+    write_stdout(markdown_report(worked, report));
+  else
+    write_stdout(text_report(worked, report));
 }
 
 }  // namespace
@@ -67,8 +71,9 @@ void run_solve(const SolveOptions& options) {
 void register_solve(CLI::App& app) {
   auto options = std::make_shared<SolveOptions>();
   CLI::App* sub = app.add_subcommand(
-      "solve", "Print the worked solution: inputs, inertia, the pin constraint, energy and momentum, then the "
-               "symbolic and numeric A q = B of each selected case with its solution");
+      "solve",
+      "Print the worked solution: inputs, inertia, the pin constraint, energy and momentum, then the "
+      "symbolic and numeric A q = B of each selected case with its solution");
   sub->add_option("--case", options->which,
                   "Which formulation: 1 (eight DAEs, maximal coordinates), 2 (six, generalized coordinates with "
                   "the pin force), 3 (four, pin force eliminated), or all, which adds a table of how closely "

@@ -53,7 +53,8 @@ void require_writable_directory(const fs::path& dir, const std::string& setting)
   std::error_code ec;
   if (!fs::exists(folder, ec)) throw Error::invalid(setting, "folder " + quoted(folder) + " does not exist");
   if (!fs::is_directory(folder, ec)) throw Error::invalid(setting, quoted(folder) + " is not a folder");
-  if (::access(folder.c_str(), W_OK) != 0) throw Error::invalid(setting, "folder " + quoted(folder) + " is not writable");
+  if (::access(folder.c_str(), W_OK) != 0)
+    throw Error::invalid(setting, "folder " + quoted(folder) + " is not writable");
 }
 
 void ensure_directory(const fs::path& dir, const std::string& setting) {
@@ -73,7 +74,8 @@ void ensure_directory(const fs::path& dir, const std::string& setting) {
 void remove_stale_temporaries(const fs::path& folder, const std::string& prefix) {
   std::error_code ec;
   const std::string start = prefix + ".tmp-";
-  for (fs::directory_iterator it(folder.empty() ? fs::path(".") : folder, ec), end; !ec && it != end; it.increment(ec)) {
+  for (fs::directory_iterator it(folder.empty() ? fs::path(".") : folder, ec), end; !ec && it != end;
+       it.increment(ec)) {
     const std::string name = it->path().filename().string();
     if (name.rfind(start, 0) != 0) continue;
     long pid = 0;
@@ -139,7 +141,8 @@ void AtomicFile::commit() {
   const bool ok = static_cast<bool>(out);
   const int error_number = errno;
   if (kind_ != Kind::standard_output) stream_.close();
-  if (!ok || (kind_ != Kind::standard_output && stream_.fail())) throw Error::failure(setting_, write_failure(target_, error_number));
+  if (!ok || (kind_ != Kind::standard_output && stream_.fail()))
+    throw Error::failure(setting_, write_failure(target_, error_number));
   if (kind_ == Kind::replace) {
     std::error_code ec;
     fs::rename(temp_, final_, ec);

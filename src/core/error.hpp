@@ -13,10 +13,10 @@ namespace linkage {
 
 enum class ExitCode : int {
   ok = 0,
-  failure = 1,      // an environment problem: a file that cannot be written, an encoder error
-  bad_input = 2,    // a value, flag, key or file the user gave is invalid
-  diverged = 3,     // a simulation left the finite numbers or an iteration failed
-  interrupted = 130 // 128 + the signal number (SIGINT 130, SIGTERM 143, SIGHUP 129)
+  failure = 1,       // an environment problem: a file that cannot be written, an encoder error
+  bad_input = 2,     // a value, flag, key or file the user gave is invalid
+  diverged = 3,      // a simulation left the finite numbers or an iteration failed
+  interrupted = 130  // 128 + the signal number (SIGINT 130, SIGTERM 143, SIGHUP 129)
 };
 
 class Error : public std::runtime_error {

@@ -15,7 +15,8 @@ struct Frame {
   std::vector<std::uint8_t> pixels;
 
   Frame() = default;
-  Frame(int w, int h) : width(w), height(h), stride(4 * w), pixels(static_cast<std::size_t>(4 * w) * static_cast<std::size_t>(h)) {}
+  Frame(int w, int h)
+      : width(w), height(h), stride(4 * w), pixels(static_cast<std::size_t>(4 * w) * static_cast<std::size_t>(h)) {}
 
   [[nodiscard]] std::uint32_t pixel(int x, int y) const {
     const auto* row = pixels.data() + static_cast<std::ptrdiff_t>(y) * stride;

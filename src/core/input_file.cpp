@@ -13,7 +13,8 @@ void require_regular_file(const fs::path& path, const std::string& setting) {
   name += '\'';
   if (!fs::exists(status)) throw Error::invalid(setting, "file " + name + " does not exist");
   if (fs::is_directory(status)) throw Error::invalid(setting, name + " is a folder, not a file");
-  if (fs::is_fifo(status)) throw Error::invalid(setting, name + " is a FIFO, not a regular file (it would block reading)");
+  if (fs::is_fifo(status))
+    throw Error::invalid(setting, name + " is a FIFO, not a regular file (it would block reading)");
   if (!fs::is_regular_file(status))
     throw Error::invalid(setting, name + " is a device or special file, not a regular file");
 }

@@ -9,8 +9,12 @@ namespace linkage {
 bool stderr_is_terminal() { return ::isatty(STDERR_FILENO) == 1; }
 
 Progress::Progress(std::string label, long total, std::string unit, bool quiet)
-    : label_(std::move(label)), unit_(std::move(unit)), total_(total), visible_(!quiet && stderr_is_terminal()),
-      start_(std::chrono::steady_clock::now()), last_draw_(start_ - std::chrono::seconds(1)) {}
+    : label_(std::move(label)),
+      unit_(std::move(unit)),
+      total_(total),
+      visible_(!quiet && stderr_is_terminal()),
+      start_(std::chrono::steady_clock::now()),
+      last_draw_(start_ - std::chrono::seconds(1)) {}
 
 Progress::~Progress() { finish(); }
 
@@ -22,8 +26,8 @@ void Progress::update(long done) {
   const double elapsed = std::chrono::duration<double>(now - start_).count();
   const double rate = elapsed > 0 ? static_cast<double>(done) / elapsed : 0.0;
   const double left = rate > 0 ? static_cast<double>(total_ - done) / rate : 0.0;
-  std::fprintf(stderr, "\r\033[K%s: %ld/%ld %s, %.1f %s/s, %.0f s left", label_.c_str(), done, total_,
-               unit_.c_str(), rate, unit_.c_str(), left);
+  std::fprintf(stderr, "\r\033[K%s: %ld/%ld %s, %.1f %s/s, %.0f s left", label_.c_str(), done, total_, unit_.c_str(),
+               rate, unit_.c_str(), left);
   std::fflush(stderr);
 }
 

@@ -1,17 +1,17 @@
 #include "encode/png_writer.hpp"
 
 #include <spng.h>
-#include <zlib.h>
 #include <unistd.h>
+#include <zlib.h>
 
 #include <algorithm>
-#include <string_view>
 #include <array>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <mutex>
+#include <string_view>
 #include <system_error>
 #include <vector>
 
@@ -31,9 +31,7 @@ struct FileCloser {
   void operator()(std::FILE* file) const { std::fclose(file); }
 };
 
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 std::size_t channels(const PngOptions& options) { return options.alpha ? 4 : 3; }
 
@@ -84,11 +82,13 @@ void convert_pixels(const Frame& frame, bool alpha, std::uint8_t* out) {
 
 void check_spng(int status, const char* what, const fs::path& path) {
   if (status != 0)
-    throw Error::failure(std::string("cannot write PNG '") + path.string() + "': " + what + ": " + spng_strerror(status));
+    throw Error::failure(std::string("cannot write PNG '") + path.string() + "': " + what + ": " +
+                         spng_strerror(status));
 }
 
 // Compresses packed rows (as convert_pixels makes them) into a new file at `path`.
-void encode_png_file(const std::uint8_t* image, int width, int height, const PngOptions& options, const fs::path& path) {
+void encode_png_file(const std::uint8_t* image, int width, int height, const PngOptions& options,
+                     const fs::path& path) {
   const std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "wb"));
   if (!file) throw Error::failure("cannot create '" + path.string() + "': " + std::strerror(errno));
   {
@@ -197,8 +197,8 @@ PngSequenceWriter::PngSequenceWriter(const fs::path& folder, int width, int heig
     : impl_(std::make_unique<Impl>()) {
   validate_options(options);
   if (width <= 0 || height <= 0)
-    throw Error::invalid(origin, "frame size " + std::to_string(width) + "x" + std::to_string(height) +
-                       " must be positive");
+    throw Error::invalid(origin,
+                         "frame size " + std::to_string(width) + "x" + std::to_string(height) + " must be positive");
   if (threads < 1 || threads > 64)
     throw Error::invalid(origin, "PNG worker threads " + std::to_string(threads) + " must be from 1 to 64");
   require_writable_directory(folder, origin);
@@ -217,7 +217,8 @@ PngSequenceWriter::PngSequenceWriter(const fs::path& folder, int width, int heig
   if (!fs::create_directory(staging, ec))
     throw Error::failure(origin, "cannot create '" + staging.string() + "': " + (ec ? ec.message() : "exists"));
   impl.staging = staging;
-  impl.queue = std::make_unique<SlotQueue>(impl.slots.size(), threads, [&impl](std::size_t slot) { impl.compress(slot); });
+  impl.queue =
+      std::make_unique<SlotQueue>(impl.slots.size(), threads, [&impl](std::size_t slot) { impl.compress(slot); });
 }
 
 PngSequenceWriter::~PngSequenceWriter() = default;
@@ -254,8 +255,8 @@ void PngSequenceWriter::finish() {
     const std::string name = it->path().filename().string();
     if (!is_sequence_name(name) || !it->is_regular_file()) continue;
     const std::string digits = name.substr(6, name.size() - 10);
-    const bool ours = static_cast<int>(digits.size()) == impl.digits && digits.size() <= 18 &&
-                      std::stoll(digits) < impl.next_index;
+    const bool ours =
+        static_cast<int>(digits.size()) == impl.digits && digits.size() <= 18 && std::stoll(digits) < impl.next_index;
     if (!ours) stale.push_back(it->path());
   }
   for (const fs::path& file : stale) fs::remove(file, ec);

@@ -13,9 +13,7 @@ using Clock = std::chrono::steady_clock;
 // often to look at the Ctrl-C flag.
 constexpr std::chrono::milliseconds interrupt_poll{50};
 
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 void push(std::vector<std::size_t>& ring, std::size_t head, std::size_t& count, std::size_t slot) {
   ring[(head + count) % ring.size()] = slot;

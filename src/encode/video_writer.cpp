@@ -20,10 +20,10 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 constexpr int max_dimension = 8192;
-constexpr std::array<std::string_view, 10> x264_presets = {
-    "ultrafast", "superfast", "veryfast", "faster", "fast", "medium", "slow", "slower", "veryslow", "placebo"};
-constexpr std::array<std::string_view, 8> x264_tunes = {
-    "film", "animation", "grain", "stillimage", "psnr", "ssim", "fastdecode", "zerolatency"};
+constexpr std::array<std::string_view, 10> x264_presets = {"ultrafast", "superfast", "veryfast", "faster",   "fast",
+                                                           "medium",    "slow",      "slower",   "veryslow", "placebo"};
+constexpr std::array<std::string_view, 8> x264_tunes = {"film", "animation", "grain",      "stillimage",
+                                                        "psnr", "ssim",      "fastdecode", "zerolatency"};
 // MPEG-4 part 2 quantiser (1 best .. 31 worst) for the fallback encoder.
 constexpr int mpeg4_quantiser = 3;
 
@@ -39,9 +39,7 @@ bool contains(const std::array<std::string_view, N>& names, std::string_view nam
   return std::find(names.begin(), names.end(), name) != names.end();
 }
 
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 // Encoders to try, best first: libx264, FFmpeg's default H.264 encoder, MPEG-4 part 2.
 std::vector<const AVCodec*> candidate_encoders(VideoCodec wanted) {
@@ -156,8 +154,9 @@ void VideoWriter::Impl::open() {
   }
   if (!encoder) {
     const char* wanted = options.codec == VideoCodec::mpeg4 ? "MPEG-4" : "H.264";
-    throw Error::failure(options.setting, "no " + std::string(wanted) + " encoder could be opened" +
-                         (failures.empty() ? " (none in this FFmpeg build)" : " (" + failures + ")"));
+    throw Error::failure(options.setting,
+                         "no " + std::string(wanted) + " encoder could be opened" +
+                             (failures.empty() ? " (none in this FFmpeg build)" : " (" + failures + ")"));
   }
   if (codec == VideoCodec::mpeg4 && options.codec == VideoCodec::automatic)
     note = "note: no H.264 encoder in this FFmpeg build" + (failures.empty() ? "" : " (" + failures + ")") +
@@ -170,8 +169,8 @@ void VideoWriter::Impl::open() {
   av::check(avcodec_parameters_from_context(stream->codecpar, encoder.get()), "cannot copy the encoder parameters");
 
   converter.reset(sws_getContext(options.width, options.height, AV_PIX_FMT_RGB32, options.width, options.height,
-                                 AV_PIX_FMT_YUV420P, SWS_BILINEAR | SWS_ACCURATE_RND | SWS_BITEXACT, nullptr,
-                                 nullptr, nullptr));
+                                 AV_PIX_FMT_YUV420P, SWS_BILINEAR | SWS_ACCURATE_RND | SWS_BITEXACT, nullptr, nullptr,
+                                 nullptr));
   if (!converter) throw Error::failure("cannot set up the BGRA -> yuv420p converter (libswscale)");
   // Full-range RGB in, BT.709 limited-range YUV out, matching the stream's tags.
   const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
@@ -207,10 +206,11 @@ void VideoWriter::Impl::convert(const Frame& frame) {
   av::check(av_frame_make_writable(picture.get()), "cannot reuse the video frame");
   const std::array<const std::uint8_t*, 1> source = {frame.pixels.data()};
   const std::array<int, 1> source_stride = {frame.stride};
-  const int rows = sws_scale(converter.get(), source.data(), source_stride.data(), 0, frame.height,
-                             picture->data, picture->linesize);
-  if (rows != options.height) throw Error::failure("libswscale converted " + std::to_string(rows) + " rows, expected " +
-                                                   std::to_string(options.height));
+  const int rows = sws_scale(converter.get(), source.data(), source_stride.data(), 0, frame.height, picture->data,
+                             picture->linesize);
+  if (rows != options.height)
+    throw Error::failure("libswscale converted " + std::to_string(rows) + " rows, expected " +
+                         std::to_string(options.height));
 }
 
 void VideoWriter::Impl::encode(const AVFrame* frame) {
@@ -274,25 +274,29 @@ void VideoWriter::validate(const VideoOptions& options) {
   const auto size = std::to_string(options.width) + "x" + std::to_string(options.height);
   const auto in_range = [](int v) { return v >= 2 && v <= max_dimension; };
   if (!in_range(options.width) || !in_range(options.height))
-    throw Error::invalid(options.setting, "video size " + size + " is out of range; width and height must be from 2 to " +
-                       std::to_string(max_dimension));
+    throw Error::invalid(
+        options.setting,
+        "video size " + size + " is out of range; width and height must be from 2 to " + std::to_string(max_dimension));
   if (options.width % 2 != 0 || options.height % 2 != 0)
-    throw Error::invalid(options.setting, "video size " + size +
-                       " must have an even width and height (yuv420p stores colour at half resolution)");
+    throw Error::invalid(
+        options.setting,
+        "video size " + size + " must have an even width and height (yuv420p stores colour at half resolution)");
   if (options.fps < 1 || options.fps > 240)
     throw Error::invalid(options.setting, "frame rate " + std::to_string(options.fps) + " must be from 1 to 240");
   if (options.crf < 0 || options.crf > 51)
     throw Error::invalid(options.setting, "crf " + std::to_string(options.crf) + " must be from 0 to 51");
   if (!contains(x264_presets, options.preset))
-    throw Error::invalid(options.setting, "unknown x264 preset '" + options.preset + "'; valid: " + joined(x264_presets));
+    throw Error::invalid(options.setting,
+                         "unknown x264 preset '" + options.preset + "'; valid: " + joined(x264_presets));
   if (!options.tune.empty() && !contains(x264_tunes, options.tune))
-    throw Error::invalid(options.setting, "unknown x264 tune '" + options.tune + "'; valid: " + joined(x264_tunes) +
-                       ", or empty");
+    throw Error::invalid(options.setting,
+                         "unknown x264 tune '" + options.tune + "'; valid: " + joined(x264_tunes) + ", or empty");
   if (options.threads < 1 || options.threads > 64)
-    throw Error::invalid(options.setting, "encoder threads " + std::to_string(options.threads) + " must be from 1 to 64");
+    throw Error::invalid(options.setting,
+                         "encoder threads " + std::to_string(options.threads) + " must be from 1 to 64");
   if (options.keyframe_seconds < 1 || options.keyframe_seconds > 60)
-    throw Error::invalid(options.setting, "keyframe interval " + std::to_string(options.keyframe_seconds) +
-                       " s must be from 1 to 60");
+    throw Error::invalid(options.setting,
+                         "keyframe interval " + std::to_string(options.keyframe_seconds) + " s must be from 1 to 60");
 }
 
 bool h264_encoder_available() {

@@ -29,26 +29,26 @@ enum class VideoCodec {
 };
 
 struct VideoOptions {
-  int width = 1280;   // even, 2 .. 8192 (yuv420p halves the chroma resolution)
-  int height = 720;   // even, 2 .. 8192
-  int fps = 30;       // 1 .. 240
-  int crf = 20;       // x264 constant rate factor, 0 (lossless) .. 51; ~18-23 looks clean
-  std::string preset = "medium";  // x264 speed/size trade-off: ultrafast .. veryslow
+  int width = 1280;                // even, 2 .. 8192 (yuv420p halves the chroma resolution)
+  int height = 720;                // even, 2 .. 8192
+  int fps = 30;                    // 1 .. 240
+  int crf = 20;                    // x264 constant rate factor, 0 (lossless) .. 51; ~18-23 looks clean
+  std::string preset = "medium";   // x264 speed/size trade-off: ultrafast .. veryslow
   std::string tune = "animation";  // x264 tuning for flat colours and sharp edges; "" for none
-  int threads = 2;    // encoder threads; fixed (not "auto") so output is the same on every machine
-  int keyframe_seconds = 2;  // a keyframe at least this often, for seeking in a player
+  int threads = 2;                 // encoder threads; fixed (not "auto") so output is the same on every machine
+  int keyframe_seconds = 2;        // a keyframe at least this often, for seeking in a player
   VideoCodec codec = VideoCodec::automatic;
   std::string setting = "out";  // the setting errors are about
 };
 
 /// Time spent per stage, summed over the frames written so far.
 struct EncodeStats {
-  std::int64_t frames = 0;      // frames passed to write()
-  std::int64_t packets = 0;     // compressed packets muxed
-  std::int64_t bytes = 0;       // size of the finished file
-  double convert_seconds = 0;   // libswscale: BGRA -> yuv420p
-  double encode_seconds = 0;    // libavcodec + libavformat, including the final flush
-  double finish_seconds = 0;    // trailer, faststart rewrite, rename
+  std::int64_t frames = 0;     // frames passed to write()
+  std::int64_t packets = 0;    // compressed packets muxed
+  std::int64_t bytes = 0;      // size of the finished file
+  double convert_seconds = 0;  // libswscale: BGRA -> yuv420p
+  double encode_seconds = 0;   // libavcodec + libavformat, including the final flush
+  double finish_seconds = 0;   // trailer, faststart rewrite, rename
 };
 
 class VideoWriter {

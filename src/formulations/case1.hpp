@@ -28,24 +28,20 @@ struct Case1 {
   static constexpr std::array<Unknown, size> unknowns{Unknown::x1_ddot, Unknown::y1_ddot, Unknown::theta1_ddot,
                                                       Unknown::x2_ddot, Unknown::y2_ddot, Unknown::theta2_ddot,
                                                       Unknown::F_x,     Unknown::F_y};
-  static constexpr std::array<std::string_view, size> equations{"1.1", "2.1", "3.1", "4.1",
-                                                                "5.1", "6.1", "7.1", "8.1"};
+  static constexpr std::array<std::string_view, size> equations{"1.1", "2.1", "3.1", "4.1", "5.1", "6.1", "7.1", "8.1"};
 
   static constexpr auto A = [] {
     using namespace expr;
-    return matrix(row(m, zero, zero, zero, zero, zero, -one, zero),
-                  row(zero, m, zero, zero, zero, zero, zero, -one),
+    return matrix(row(m, zero, zero, zero, zero, zero, -one, zero), row(zero, m, zero, zero, zero, zero, zero, -one),
                   row(zero, zero, I, zero, zero, zero, D * sin1, -(D * cos1)),
-                  row(zero, zero, zero, m, zero, zero, one, zero),
-                  row(zero, zero, zero, zero, m, zero, zero, one),
+                  row(zero, zero, zero, m, zero, zero, one, zero), row(zero, zero, zero, zero, m, zero, zero, one),
                   row(zero, zero, zero, zero, zero, I, D * sin2, -(D * cos2)),
                   row(one, zero, -(D * sin1), -one, zero, -(D * sin2), zero, zero),
                   row(zero, one, D * cos1, zero, -one, D * cos2, zero, zero));
   }();
   static constexpr auto B = [] {
     using namespace expr;
-    return column(zero, -(m * g), zero, zero, -(m * g), zero,
-                  D * (w1sq * cos1 + w2sq * cos2),
+    return column(zero, -(m * g), zero, zero, -(m * g), zero, D * (w1sq * cos1 + w2sq * cos2),
                   D * (w1sq * sin1 + w2sq * sin2));
   }();
 

@@ -29,18 +29,14 @@ struct Case2 {
 
   static constexpr auto A = [] {
     using namespace expr;
-    return matrix(row(m, zero, zero, zero, -one, zero),
-                  row(zero, m, zero, zero, zero, -one),
-                  row(zero, zero, I, zero, D * sin1, -(D * cos1)),
-                  row(zero, zero, zero, I, D * sin2, -(D * cos2)),
+    return matrix(row(m, zero, zero, zero, -one, zero), row(zero, m, zero, zero, zero, -one),
+                  row(zero, zero, I, zero, D * sin1, -(D * cos1)), row(zero, zero, zero, I, D * sin2, -(D * cos2)),
                   row(one, zero, -(D * sin1), -(D * sin2), inv(m), zero),
                   row(zero, one, D * cos1, D * cos2, zero, inv(m)));
   }();
   static constexpr auto B = [] {
     using namespace expr;
-    return column(zero, -(m * g), zero, zero,
-                  D * (w1sq * cos1 + w2sq * cos2),
-                  D * (w1sq * sin1 + w2sq * sin2) - g);
+    return column(zero, -(m * g), zero, zero, D * (w1sq * cos1 + w2sq * cos2), D * (w1sq * sin1 + w2sq * sin2) - g);
   }();
 
   static constexpr std::array<int, 4> pivot_rows{0, 1, 2, 3};

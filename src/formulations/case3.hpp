@@ -27,15 +27,12 @@ struct Case3 {
 
   static constexpr auto A = [] {
     using namespace expr;
-    return matrix(row(m * D * sin1, -(m * D * cos1), I, zero),
-                  row(m * D * sin2, -(m * D * cos2), zero, I),
-                  row(two, zero, -(D * sin1), -(D * sin2)),
-                  row(zero, two, D * cos1, D * cos2));
+    return matrix(row(m * D * sin1, -(m * D * cos1), I, zero), row(m * D * sin2, -(m * D * cos2), zero, I),
+                  row(two, zero, -(D * sin1), -(D * sin2)), row(zero, two, D * cos1, D * cos2));
   }();
   static constexpr auto B = [] {
     using namespace expr;
-    return column(m * g * D * cos1, m * g * D * cos2,
-                  D * (w1sq * cos1 + w2sq * cos2),
+    return column(m * g * D * cos1, m * g * D * cos2, D * (w1sq * cos1 + w2sq * cos2),
                   D * (w1sq * sin1 + w2sq * sin2) - two * g);
   }();
 

@@ -14,9 +14,9 @@ namespace linkage::expr {
 
 /// Values every entry may use: parameters and the trigonometry of the two angles.
 struct Env {
-  double m = 0, I = 0, D = 0, g = 0;         // mass, centroidal inertia I_zz^C, pin offset, gravity
-  double s1 = 0, c1 = 0, s2 = 0, c2 = 0;     // sin/cos of theta1, theta2
-  double w1 = 0, w2 = 0;                     // theta1_dot, theta2_dot
+  double m = 0, I = 0, D = 0, g = 0;      // mass, centroidal inertia I_zz^C, pin offset, gravity
+  double s1 = 0, c1 = 0, s2 = 0, c2 = 0;  // sin/cos of theta1, theta2
+  double w1 = 0, w2 = 0;                  // theta1_dot, theta2_dot
 };
 
 enum class Style { unicode, ascii, latex };
@@ -190,15 +190,25 @@ struct Inv : ExprTag {
 };
 
 template <Expression A, Expression B>
-constexpr Mul<A, B> operator*(A, B) { return {}; }
+constexpr Mul<A, B> operator*(A, B) {
+  return {};
+}
 template <Expression A, Expression B>
-constexpr Add<A, B> operator+(A, B) { return {}; }
+constexpr Add<A, B> operator+(A, B) {
+  return {};
+}
 template <Expression A, Expression B>
-constexpr Sub<A, B> operator-(A, B) { return {}; }
+constexpr Sub<A, B> operator-(A, B) {
+  return {};
+}
 template <Expression A>
-constexpr Neg<A> operator-(A) { return {}; }
+constexpr Neg<A> operator-(A) {
+  return {};
+}
 template <Expression A>
-constexpr Inv<A> inv(A) { return {}; }
+constexpr Inv<A> inv(A) {
+  return {};
+}
 
 /// The printed form of expression `E`.
 template <Expression E>

@@ -26,14 +26,15 @@ CaseSolution solve_typed(const Params& p, const State& s) {
 
   const Eigen::JacobiSVD<Mat<Case::size>> svd(system.A);
   const auto& sigma = svd.singularValues();
-  out.condition_number = sigma[Case::size - 1] > 0 ? sigma[0] / sigma[Case::size - 1]
-                                                   : std::numeric_limits<double>::infinity();
+  out.condition_number =
+      sigma[Case::size - 1] > 0 ? sigma[0] / sigma[Case::size - 1] : std::numeric_limits<double>::infinity();
   Vec<Case::size> q;
   // Singular means the elimination breaks down. A large condition number alone is not
   // singular: Case 2's m and 1/m rows make it large for extreme masses while the block
   // solve stays accurate.
   if (!solve_blocks<Case>(system.A, system.B, q))
-    throw Error::diverged("the Case " + std::to_string(Case::id) + " matrix is singular to working precision (condition number " +
+    throw Error::diverged("the Case " + std::to_string(Case::id) +
+                          " matrix is singular to working precision (condition number " +
                           format_significant(out.condition_number, 3) + ") at theta1 = " + format_roundtrip(s.theta1) +
                           ", theta2 = " + format_roundtrip(s.theta2) + "; check m, w and L");
   out.solution = q;
@@ -53,19 +54,27 @@ SymbolicSystem symbolic_typed(expr::Style style) {
 
 CaseSolution solve_case(int id, const Params& p, const State& s) {
   switch (id) {
-    case 1: return solve_typed<Case1>(p, s);
-    case 2: return solve_typed<Case2>(p, s);
-    case 3: return solve_typed<Case3>(p, s);
-    default: throw Error::input("case " + std::to_string(id) + " does not exist; valid cases: 1, 2, 3");
+    case 1:
+      return solve_typed<Case1>(p, s);
+    case 2:
+      return solve_typed<Case2>(p, s);
+    case 3:
+      return solve_typed<Case3>(p, s);
+    default:
+      throw Error::input("case " + std::to_string(id) + " does not exist; valid cases: 1, 2, 3");
   }
 }
 
 SymbolicSystem symbolic_system(int id, expr::Style style) {
   switch (id) {
-    case 1: return symbolic_typed<Case1>(style);
-    case 2: return symbolic_typed<Case2>(style);
-    case 3: return symbolic_typed<Case3>(style);
-    default: throw Error::input("case " + std::to_string(id) + " does not exist; valid cases: 1, 2, 3");
+    case 1:
+      return symbolic_typed<Case1>(style);
+    case 2:
+      return symbolic_typed<Case2>(style);
+    case 3:
+      return symbolic_typed<Case3>(style);
+    default:
+      throw Error::input("case " + std::to_string(id) + " does not exist; valid cases: 1, 2, 3");
   }
 }
 
@@ -74,11 +83,16 @@ double solution_value(const CaseSolution& solution, Unknown u, const Params& p) 
     if (solution.unknowns[i] == u) return solution.solution[static_cast<Eigen::Index>(i)];
   auto get = [&](Unknown v) { return solution_value(solution, v, p); };
   switch (u) {
-    case Unknown::F_x: return p.m * get(Unknown::x1_ddot);           // (1.2)
-    case Unknown::F_y: return p.m * (get(Unknown::y1_ddot) + p.g);   // (2.2)
-    case Unknown::x2_ddot: return -get(Unknown::F_x) / p.m;          // (4.1)
-    case Unknown::y2_ddot: return -p.g - get(Unknown::F_y) / p.m;    // (5.1)
-    default: throw Error::failure("unknown missing from a case's solution");
+    case Unknown::F_x:
+      return p.m * get(Unknown::x1_ddot);  // (1.2)
+    case Unknown::F_y:
+      return p.m * (get(Unknown::y1_ddot) + p.g);  // (2.2)
+    case Unknown::x2_ddot:
+      return -get(Unknown::F_x) / p.m;  // (4.1)
+    case Unknown::y2_ddot:
+      return -p.g - get(Unknown::F_y) / p.m;  // (5.1)
+    default:
+      throw Error::failure("unknown missing from a case's solution");
   }
 }
 

@@ -2,11 +2,10 @@
 // The three formulations behind one runtime interface, for reports and the CLI:
 // `solve_case` evaluates and solves a case at a state; `symbolic_system` prints its
 // definition. Both come from the one definition in case1/2/3.hpp.
+#include <Eigen/Core>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "formulations/expr.hpp"
 #include "formulations/unknowns.hpp"

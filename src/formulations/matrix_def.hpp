@@ -64,10 +64,16 @@ struct MatrixDef {
 };
 
 template <expr::Expression... E>
-constexpr RowDef<E...> row(E...) { return {}; }
+constexpr RowDef<E...> row(E...) {
+  return {};
+}
 template <class... Rows>
-constexpr MatrixDef<Rows...> matrix(Rows...) { return {}; }
+constexpr MatrixDef<Rows...> matrix(Rows...) {
+  return {};
+}
 template <expr::Expression... E>
-constexpr MatrixDef<RowDef<E>...> column(E...) { return {}; }
+constexpr MatrixDef<RowDef<E>...> column(E...) {
+  return {};
+}
 
 }  // namespace linkage

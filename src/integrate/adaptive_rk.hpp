@@ -31,7 +31,7 @@ class AdaptiveRk {
 
   struct Settings {
     Tolerances<Scalar> tolerances{};
-    Scalar first_step = 0;                                    // 0: choose automatically
+    Scalar first_step = 0;  // 0: choose automatically
     Scalar max_step = std::numeric_limits<Scalar>::infinity();
     /// Steps are shortened to end exactly here (not past it); the default never
     /// shortens a step, so output comes from dense() instead.
@@ -45,7 +45,7 @@ class AdaptiveRk {
 
   /// Starts at (t0, y0); evaluates f there (and picks the first step if not given).
   template <class F>
-    requires Derivative<F, Scalar, N>
+  requires Derivative<F, Scalar, N>
   void start(F& f, Scalar t0, const Vector& y0) {
     t_ = t_old_ = t0;
     y_ = y_old_ = y_end_ = y0;
@@ -60,8 +60,7 @@ class AdaptiveRk {
   /// Makes one accepted step from t() (none once t() reaches Settings::t_stop). On
   /// failure the state is left at the last accepted step and the status says why.
   template <class F>
-    requires Derivative<F, Scalar, N>
-  StepStatus step(F& f) {
+  requires Derivative<F, Scalar, N> StepStatus step(F& f) {
     bool last_non_finite = false;
     step_valid_ = false;  // the attempts below overwrite the last step's stages
     dense_ready_ = false;
@@ -98,7 +97,7 @@ class AdaptiveRk {
   /// The dense-output state at time s in [t_previous(), t()], of the method's dense
   /// order. May evaluate f (DOP853's extra stages, once per step).
   template <class F>
-    requires Derivative<F, Scalar, N>
+  requires Derivative<F, Scalar, N>
   void dense(F& f, Scalar s, Vector& out) {
     assert(s >= t_old_ && s <= t_);
     if (s == t_ || !step_valid_) {  // at the end of the step, or before the first step
@@ -116,7 +115,7 @@ class AdaptiveRk {
   /// re-evaluates f there, so the next step starts from it. Dense output of the last
   /// step still describes the step as taken.
   template <class F>
-    requires Derivative<F, Scalar, N>
+  requires Derivative<F, Scalar, N>
   void replace_state(F& f, const Vector& y) {
     y_ = y;
     f(t_, y_, f_);

@@ -13,11 +13,31 @@
 namespace linkage {
 
 enum class Column {
-  t, x1, y1, theta1, theta2, x1_dot, y1_dot, theta1_dot, theta2_dot,
-  x2, y2, x2_dot, y2_dot,
-  x1_ddot, y1_ddot, theta1_ddot, theta2_ddot, F_x, F_y,
-  energy, momentum_x, momentum_y, angular_momentum,
-  constraint_position_error, constraint_velocity_error,
+  t,
+  x1,
+  y1,
+  theta1,
+  theta2,
+  x1_dot,
+  y1_dot,
+  theta1_dot,
+  theta2_dot,
+  x2,
+  y2,
+  x2_dot,
+  y2_dot,
+  x1_ddot,
+  y1_ddot,
+  theta1_ddot,
+  theta2_ddot,
+  F_x,
+  F_y,
+  energy,
+  momentum_x,
+  momentum_y,
+  angular_momentum,
+  constraint_position_error,
+  constraint_velocity_error,
 };
 
 /// What a column is computed from.

@@ -34,8 +34,7 @@ class ExplicitRk {
 
   /// Advances y from t to t + h in place.
   template <class F>
-    requires Derivative<F, Scalar, N>
-  StepStatus step(F& f, Scalar t, Scalar h, Vector& y) {
+  requires Derivative<F, Scalar, N> StepStatus step(F& f, Scalar t, Scalar h, Vector& y) {
     f(t, y, k_[0]);
     evaluate_stages<T, 1, stages>(f, t, y, h, k_, stage_);
     add_weighted<T.b>(y, h, k_, stage_);

@@ -23,11 +23,10 @@
 //
 // Symmetric methods have no systematic energy drift: over long runs the energy error
 // oscillates instead of growing.
+#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 #include <limits>
-
-#include <Eigen/LU>
 
 #include "integrate/ode.hpp"
 
@@ -43,8 +42,7 @@ class GaussLegendre2 {
 
   /// Advances y from t to t + h in place; on failure y is unchanged.
   template <class F>
-    requires Derivative<F, Scalar, N>
-  StepStatus step(F& f, Scalar t, Scalar h, Vector& y) {
+  requires Derivative<F, Scalar, N> StepStatus step(F& f, Scalar t, Scalar h, Vector& y) {
     const bool continues = continuation_ && h == h_ && y == y_end_;
     StepStatus status = StepStatus::newton_failed;
     if (continues && keep_jacobian_) {

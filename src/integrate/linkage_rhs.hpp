@@ -87,7 +87,7 @@ class MaximalRhs {
     LinearSystem<Case1> system = assemble<Case1>(env);
     if (two_alpha_ != 0 || beta_squared_ != 0) {
       const double D = env.D;
-      const double cx = y[3] - y[0] - D * (env.c1 + env.c2);                    // C
+      const double cx = y[3] - y[0] - D * (env.c1 + env.c2);  // C
       const double cy = y[4] - y[1] - D * (env.s1 + env.s2);
       const double vx = y[9] - y[6] + D * (env.w1 * env.s1 + env.w2 * env.s2);  // C'
       const double vy = y[10] - y[7] - D * (env.w1 * env.c1 + env.w2 * env.c2);

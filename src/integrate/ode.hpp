@@ -6,12 +6,11 @@
 // values of type Scalar (double, or long double for references). Integrators call
 //   f(t, y, dydt)        // void(Scalar, const State<Scalar, N>&, State<Scalar, N>&)
 // and know nothing else about the problem: no formulation, no allocation in a step.
+#include <Eigen/Core>
 #include <cmath>
 #include <concepts>
 #include <cstdint>
 #include <string_view>
-
-#include <Eigen/Core>
 
 namespace linkage::ode {
 
@@ -22,7 +21,7 @@ using State = Eigen::Matrix<Scalar, N, 1>;
 /// A right-hand side f(t, y, dydt) that writes y' into dydt.
 template <class F, class Scalar, int N>
 concept Derivative = requires(F& f, Scalar t, const State<Scalar, N>& y, State<Scalar, N>& dydt) {
-  { f(t, y, dydt) };
+  {f(t, y, dydt)};
 };
 
 /// Why a step did not produce a usable state.
@@ -35,10 +34,14 @@ enum class StepStatus {
 
 [[nodiscard]] constexpr std::string_view describe(StepStatus s) {
   switch (s) {
-    case StepStatus::ok: return "ok";
-    case StepStatus::non_finite: return "the state stopped being finite";
-    case StepStatus::step_underflow: return "the step size underflowed";
-    case StepStatus::newton_failed: return "the Newton iteration of the implicit method did not converge";
+    case StepStatus::ok:
+      return "ok";
+    case StepStatus::non_finite:
+      return "the state stopped being finite";
+    case StepStatus::step_underflow:
+      return "the step size underflowed";
+    case StepStatus::newton_failed:
+      return "the Newton iteration of the implicit method did not converge";
   }
   return "unknown";
 }

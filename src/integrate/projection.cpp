@@ -1,10 +1,9 @@
 #include "integrate/projection.hpp"
 
+#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 #include <limits>
-
-#include <Eigen/LU>
 
 namespace linkage {
 namespace {
@@ -39,10 +38,12 @@ ProjectionResult project_onto_constraint(const Params& p, Vec<12>& y) {
   ProjectionResult result;
   double previous = std::numeric_limits<double>::infinity();
   for (;;) {
-    const Vec2 C{y[3] - y[0] - D * (std::cos(y[2]) + std::cos(y[5])), y[4] - y[1] - D * (std::sin(y[2]) + std::sin(y[5]))};
+    const Vec2 C{y[3] - y[0] - D * (std::cos(y[2]) + std::cos(y[5])),
+                 y[4] - y[1] - D * (std::sin(y[2]) + std::sin(y[5]))};
     result.residual = C.cwiseAbs().maxCoeff();
     // Round-off of C's evaluation, from the size of the terms it subtracts.
-    const double round_off = 8 * eps * (std::max({std::fabs(y[0]), std::fabs(y[1]), std::fabs(y[3]), std::fabs(y[4])}) + D);
+    const double round_off =
+        8 * eps * (std::max({std::fabs(y[0]), std::fabs(y[1]), std::fabs(y[3]), std::fabs(y[4])}) + D);
     if (result.residual <= round_off || (result.residual >= previous && result.residual <= 100 * round_off)) {
       result.converged = true;
       break;

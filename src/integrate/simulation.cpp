@@ -33,15 +33,17 @@ constexpr std::array<IntegratorInfo, 6> kIntegrators{{
      "2-stage Gauss-Legendre, implicit (Newton), symmetric, fixed step, order 4", false, 4},
 }};
 
-constexpr std::array<std::pair<Stabilization, std::string_view>, 3> kStabilizations{{
-    {Stabilization::none, "none"}, {Stabilization::baumgarte, "baumgarte"}, {Stabilization::projection, "projection"}}};
+constexpr std::array<std::pair<Stabilization, std::string_view>, 3> kStabilizations{
+    {{Stabilization::none, "none"},
+     {Stabilization::baumgarte, "baumgarte"},
+     {Stabilization::projection, "projection"}}};
 
 // Limits of the options. Past a million seconds the free fall reaches 5e12 m, where a
 // double keeps only millimetres; below rtol = 1e-14 round-off dominates every step.
-constexpr double kMaxDuration = 1e6;       // s
+constexpr double kMaxDuration = 1e6;  // s
 constexpr double kMinRtol = 1e-14, kMaxTol = 1.0;
 constexpr double kMinAtol = 1e-20;
-constexpr double kMaxGain = 1e6;           // 1/s
+constexpr double kMaxGain = 1e6;  // 1/s
 constexpr double kMaxFixedSteps = 1e9;
 
 std::string num(double v) { return format_roundtrip(v); }
@@ -73,8 +75,8 @@ IntegratorKind parse_integrator(std::string_view name, const std::string& origin
 Stabilization parse_stabilization(std::string_view name, const std::string& origin) {
   for (const auto& [kind, spelling] : kStabilizations)
     if (spelling == name) return kind;
-  throw Error::invalid(origin, "'" + std::string(name) +
-                     "' is not a stabilization; valid: none, baumgarte, projection");
+  throw Error::invalid(origin,
+                       "'" + std::string(name) + "' is not a stabilization; valid: none, baumgarte, projection");
 }
 
 std::string_view name(Stabilization s) {
@@ -88,18 +90,17 @@ void SimulationOptions::validate() const {
     throw Error::invalid("case", std::to_string(case_id) + " is not a case; valid: 1, 2, 3");
   require(std::isfinite(duration) && duration > 0 && duration <= kMaxDuration, "duration", duration, "s",
           "0 < duration <= " + num(kMaxDuration) + " s");
-  require(std::isfinite(dt) && dt > 0 && dt <= duration, "dt", dt, "s",
-          "0 < dt <= duration (" + num(duration) + " s)");
+  require(std::isfinite(dt) && dt > 0 && dt <= duration, "dt", dt, "s", "0 < dt <= duration (" + num(duration) + " s)");
   if (!info(integrator).adaptive && duration / dt > kMaxFixedSteps)
     throw Error::invalid("dt", num(dt) + " s needs " + format_significant(duration / dt, 3) + " steps of " +
-                       std::string(info(integrator).name) + " for a duration of " + num(duration) +
-                       " s; the limit is 1e9 steps (use a larger dt or an adaptive integrator)");
+                                   std::string(info(integrator).name) + " for a duration of " + num(duration) +
+                                   " s; the limit is 1e9 steps (use a larger dt or an adaptive integrator)");
   require(std::isfinite(rtol) && rtol >= kMinRtol && rtol <= kMaxTol, "rtol", rtol, "",
           num(kMinRtol) + " <= rtol <= " + num(kMaxTol) + " (smaller is below double precision)");
   require(std::isfinite(atol) && atol >= kMinAtol && atol <= kMaxTol, "atol", atol, "",
           num(kMinAtol) + " <= atol <= " + num(kMaxTol));
-  require(std::isfinite(baumgarte_alpha) && baumgarte_alpha >= 0 && baumgarte_alpha <= kMaxGain,
-          "baumgarte_alpha", baumgarte_alpha, "1/s", "0 <= alpha <= " + num(kMaxGain) + " 1/s");
+  require(std::isfinite(baumgarte_alpha) && baumgarte_alpha >= 0 && baumgarte_alpha <= kMaxGain, "baumgarte_alpha",
+          baumgarte_alpha, "1/s", "0 <= alpha <= " + num(kMaxGain) + " 1/s");
   require(std::isfinite(baumgarte_beta) && baumgarte_beta >= 0 && baumgarte_beta <= kMaxGain, "baumgarte_beta",
           baumgarte_beta, "1/s", "0 <= beta <= " + num(kMaxGain) + " 1/s");
 }
@@ -316,8 +317,7 @@ class AdaptiveRun final : public CaseRun<Case> {
   BodyState advance(double t) override {
     while (stepper_.t() < t) {
       const ode::StepStatus status = stepper_.step(this->rhs_);
-      if (status != ode::StepStatus::ok)
-        fail(this->options, status, stepper_.t(), stepper_.next_step());
+      if (status != ode::StepStatus::ok) fail(this->options, status, stepper_.t(), stepper_.next_step());
       if (this->project_) {
         Vector y = stepper_.y();
         this->stabilize(y, stepper_.t(), stepper_.last_step());
@@ -352,11 +352,14 @@ std::unique_ptr<Run> make_run(const Params& p, const State& initial, const Simul
       return std::make_unique<FixedStepRun<Case, ode::ExplicitEuler<double, n>>>(p, initial, o);
     case IntegratorKind::symplectic_euler:
       return std::make_unique<FixedStepRun<Case, ode::SymplecticEuler<double, n>>>(p, initial, o);
-    case IntegratorKind::rk4: return std::make_unique<FixedStepRun<Case, ode::Rk4<double, n>>>(p, initial, o);
+    case IntegratorKind::rk4:
+      return std::make_unique<FixedStepRun<Case, ode::Rk4<double, n>>>(p, initial, o);
     case IntegratorKind::gauss2:
       return std::make_unique<FixedStepRun<Case, ode::GaussLegendre2<double, n>>>(p, initial, o);
-    case IntegratorKind::dopri5: return std::make_unique<AdaptiveRun<Case, ode::Dopri5<double, n>>>(p, initial, o);
-    case IntegratorKind::dop853: return std::make_unique<AdaptiveRun<Case, ode::Dop853<double, n>>>(p, initial, o);
+    case IntegratorKind::dopri5:
+      return std::make_unique<AdaptiveRun<Case, ode::Dopri5<double, n>>>(p, initial, o);
+    case IntegratorKind::dop853:
+      return std::make_unique<AdaptiveRun<Case, ode::Dop853<double, n>>>(p, initial, o);
   }
   throw Error::failure("unknown integrator kind");
 }
@@ -385,9 +388,15 @@ Simulation::Simulation(const Params& params, const State& initial, const Simulat
     : impl_(std::make_unique<Impl>()) {
   options.validate();
   switch (options.case_id) {
-    case 1: impl_->run = make_run<Case1>(params, initial, options); break;
-    case 2: impl_->run = make_run<Case2>(params, initial, options); break;
-    default: impl_->run = make_run<Case3>(params, initial, options); break;
+    case 1:
+      impl_->run = make_run<Case1>(params, initial, options);
+      break;
+    case 2:
+      impl_->run = make_run<Case2>(params, initial, options);
+      break;
+    default:
+      impl_->run = make_run<Case3>(params, initial, options);
+      break;
   }
 }
 

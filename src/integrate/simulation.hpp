@@ -33,18 +33,18 @@ struct IntegratorInfo {
 [[nodiscard]] std::string_view name(Stabilization s);
 
 struct SimulationOptions {
-  int case_id = 3;                            // 1, 2 or 3
+  int case_id = 3;  // 1, 2 or 3
   IntegratorKind integrator = IntegratorKind::dop853;
-  double dt = 1e-3;                           // s: fixed step, or first step of adaptive methods
-  double rtol = 1e-10, atol = 1e-10;          // adaptive error control
-  double duration = 10.0;                     // s
+  double dt = 1e-3;                   // s: fixed step, or first step of adaptive methods
+  double rtol = 1e-10, atol = 1e-10;  // adaptive error control
+  double duration = 10.0;             // s
   Stabilization stabilization = Stabilization::none;
   // Baumgarte asks C'' + 2 alpha C' + beta^2 C = 0 of the pin constraint C (Case 1).
   // alpha = beta is critical damping: a violation decays like (1 + 10 t) e^(-10 t), in
   // about half a second, while the gains stay small enough (10/s) that explicit steps
   // up to ~0.1 s remain stable.
-  double baumgarte_alpha = 10.0;              // 1/s, damping of the constraint error rate
-  double baumgarte_beta = 10.0;               // 1/s, stiffness of the constraint error
+  double baumgarte_alpha = 10.0;  // 1/s, damping of the constraint error rate
+  double baumgarte_beta = 10.0;   // 1/s, stiffness of the constraint error
   /// Validates ranges; throws Error::invalid about the setting (e.g. "dt") with its range.
   void validate() const;
 };
@@ -53,11 +53,11 @@ struct SimulationStats {
   std::int64_t steps_accepted = 0;
   std::int64_t steps_rejected = 0;
   std::int64_t rhs_evaluations = 0;
-  std::int64_t force_evaluations = 0;         // pin-force solves done for output/drawing
-  double energy_scale = 0;                    // J, model/kinematics energy_scale at the start
-  double max_energy_error = 0;                // |E - E0| / energy_scale, over samples
-  double max_constraint_error = 0;            // m, |C| over samples (Case 1)
-  double wall_seconds = 0;                    // time spent in state_at() and dynamics()
+  std::int64_t force_evaluations = 0;  // pin-force solves done for output/drawing
+  double energy_scale = 0;             // J, model/kinematics energy_scale at the start
+  double max_energy_error = 0;         // |E - E0| / energy_scale, over samples
+  double max_constraint_error = 0;     // m, |C| over samples (Case 1)
+  double wall_seconds = 0;             // time spent in state_at() and dynamics()
 };
 
 /// Accelerations and pin force at a state, from the selected case's equations.

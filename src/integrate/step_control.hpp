@@ -101,7 +101,7 @@ class StepController {
   }
 
   Scalar exponent_, beta_, fac_min_, fac_max_, safety_;
-  int square_roots_;                            // > 0: power() is that many square roots
+  int square_roots_;  // > 0: power() is that many square roots
   static constexpr Scalar kLogErrFloor = Scalar(-9.21034037197618273607196581873745L);  // log(1e-4): err_prev >= 1e-4
   Scalar log_err_prev_ = kLogErrFloor;  // log of the last accepted step's err_prev
   bool rejected_last_ = false;

@@ -23,8 +23,7 @@ class SymplecticEuler {
 
   /// Advances y = (q, v) from t to t + h in place.
   template <class F>
-    requires Derivative<F, Scalar, N>
-  StepStatus step(F& f, Scalar t, Scalar h, Vector& y) {
+  requires Derivative<F, Scalar, N> StepStatus step(F& f, Scalar t, Scalar h, Vector& y) {
     f(t, y, dydt_);
     ++counters_.rhs_evaluations;
     next_ = y;

@@ -39,7 +39,8 @@ inline void combine(const Base& base, Scalar h, const std::array<State<Scalar, N
     Scalar acc = 0;
     [&]<std::size_t... J>(std::index_sequence<J...>) {
       ((W[J] != 0 ? void(acc += static_cast<Scalar>(W[J]) * k[J][i]) : void()), ...);
-    }(std::make_index_sequence<W.size()>{});
+    }
+    (std::make_index_sequence<W.size()>{});
     out[i] = base(i) + h * acc;
   }
 }
@@ -69,7 +70,8 @@ inline void evaluate_stages(F& f, Scalar t, const State<Scalar, N>& y, Scalar h,
        f(t + static_cast<Scalar>(T.c[i]) * h, stage, k[i]);
      }()),
      ...);
-  }(std::make_index_sequence<Last - First>{});
+  }
+  (std::make_index_sequence<Last - First>{});
 }
 
 }  // namespace linkage::ode

@@ -8,12 +8,11 @@
 // wrong fields, a folder in its place) is a miss: one note says so and the step is made
 // again.
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 namespace linkage::lesson {
 

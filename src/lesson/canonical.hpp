@@ -2,11 +2,11 @@
 // A canonical text of a TOML value for content hashes: keys sorted, numbers in
 // shortest round-trip form, strings quoted with escapes, so equal options give equal
 // text and any change of a value changes it.
+#include <toml++/toml.h>
+
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <toml++/toml.h>
 
 #include "model/inputs.hpp"
 

@@ -59,18 +59,28 @@ class Parser {
     term();
     for (;;) {
       skip_space();
-      if (accept('+')) { term(); emit(Expression::Op::add, 2); }
-      else if (accept('-')) { term(); emit(Expression::Op::subtract, 2); }
-      else return;
+      if (accept('+')) {
+        term();
+        emit(Expression::Op::add, 2);
+      } else if (accept('-')) {
+        term();
+        emit(Expression::Op::subtract, 2);
+      } else
+        return;
     }
   }
   void term() {
     unary();
     for (;;) {
       skip_space();
-      if (accept('*')) { unary(); emit(Expression::Op::multiply, 2); }
-      else if (accept('/')) { unary(); emit(Expression::Op::divide, 2); }
-      else return;
+      if (accept('*')) {
+        unary();
+        emit(Expression::Op::multiply, 2);
+      } else if (accept('/')) {
+        unary();
+        emit(Expression::Op::divide, 2);
+      } else
+        return;
     }
   }
   void unary() {
@@ -228,9 +238,15 @@ double Expression::evaluate(const QuantityValues& values) const {
   int top = 0;  // number of values on the stack
   for (const Node& n : program_) {
     switch (n.op) {
-      case Op::number: stack[static_cast<std::size_t>(top++)] = n.number; break;
-      case Op::quantity: stack[static_cast<std::size_t>(top++)] = values[n.index]; break;
-      case Op::negate: stack[static_cast<std::size_t>(top - 1)] = -stack[static_cast<std::size_t>(top - 1)]; break;
+      case Op::number:
+        stack[static_cast<std::size_t>(top++)] = n.number;
+        break;
+      case Op::quantity:
+        stack[static_cast<std::size_t>(top++)] = values[n.index];
+        break;
+      case Op::negate:
+        stack[static_cast<std::size_t>(top - 1)] = -stack[static_cast<std::size_t>(top - 1)];
+        break;
       case Op::call: {
         const Function& f = kFunctions[n.index];
         const double a = stack[static_cast<std::size_t>(top - n.args)];
@@ -243,12 +259,23 @@ double Expression::evaluate(const QuantityValues& values) const {
         const double b = stack[static_cast<std::size_t>(--top)];
         double& a = stack[static_cast<std::size_t>(top - 1)];
         switch (n.op) {
-          case Op::add: a += b; break;
-          case Op::subtract: a -= b; break;
-          case Op::multiply: a *= b; break;
-          case Op::divide: a /= b; break;
-          case Op::power: a = std::pow(a, b); break;
-          default: break;
+          case Op::add:
+            a += b;
+            break;
+          case Op::subtract:
+            a -= b;
+            break;
+          case Op::multiply:
+            a *= b;
+            break;
+          case Op::divide:
+            a /= b;
+            break;
+          case Op::power:
+            a = std::pow(a, b);
+            break;
+          default:
+            break;
         }
       }
     }

@@ -12,18 +12,77 @@ namespace {
 using Pair = std::pair<std::string_view, std::string_view>;
 
 constexpr std::array<Pair, 71> kSymbols{{
-    {"alpha", "α"},   {"beta", "β"},    {"gamma", "γ"},   {"delta", "δ"},   {"epsilon", "ε"}, {"varepsilon", "ε"},
-    {"zeta", "ζ"},    {"eta", "η"},     {"theta", "θ"},   {"vartheta", "ϑ"}, {"kappa", "κ"},  {"lambda", "λ"},
-    {"mu", "μ"},      {"nu", "ν"},      {"xi", "ξ"},      {"pi", "π"},      {"rho", "ρ"},     {"sigma", "σ"},
-    {"tau", "τ"},     {"phi", "φ"},     {"varphi", "φ"},  {"chi", "χ"},     {"psi", "ψ"},     {"omega", "ω"},
-    {"Gamma", "Γ"},   {"Delta", "Δ"},   {"Theta", "Θ"},   {"Lambda", "Λ"},  {"Sigma", "Σ"},   {"Phi", "Φ"},
-    {"Psi", "Ψ"},     {"Omega", "Ω"},   {"cdot", "·"},    {"times", "×"},   {"pm", "±"},      {"mp", "∓"},
-    {"approx", "≈"},  {"neq", "≠"},     {"ne", "≠"},      {"le", "≤"},      {"leq", "≤"},     {"ge", "≥"},
-    {"geq", "≥"},     {"ll", "≪"},      {"gg", "≫"},      {"to", "→"},      {"rightarrow", "→"}, {"implies", "⇒"},
-    {"Longrightarrow", "⟹"}, {"infty", "∞"}, {"partial", "∂"}, {"nabla", "∇"}, {"int", "∫"}, {"sum", "Σ"},
-    {"propto", "∝"},  {"equiv", "≡"},   {"lVert", "‖"},   {"rVert", "‖"},   {"|", "‖"},       {"langle", "⟨"},
-    {"rangle", "⟩"},  {"sin", "sin"},   {"cos", "cos"},   {"tan", "tan"},   {"exp", "exp"},   {"ln", "ln"},
-    {"log", "log"},   {"quad", "  "},   {"qquad", "    "}, {"dots", "…"},   {"ldots", "…"},
+    {"alpha", "α"},
+    {"beta", "β"},
+    {"gamma", "γ"},
+    {"delta", "δ"},
+    {"epsilon", "ε"},
+    {"varepsilon", "ε"},
+    {"zeta", "ζ"},
+    {"eta", "η"},
+    {"theta", "θ"},
+    {"vartheta", "ϑ"},
+    {"kappa", "κ"},
+    {"lambda", "λ"},
+    {"mu", "μ"},
+    {"nu", "ν"},
+    {"xi", "ξ"},
+    {"pi", "π"},
+    {"rho", "ρ"},
+    {"sigma", "σ"},
+    {"tau", "τ"},
+    {"phi", "φ"},
+    {"varphi", "φ"},
+    {"chi", "χ"},
+    {"psi", "ψ"},
+    {"omega", "ω"},
+    {"Gamma", "Γ"},
+    {"Delta", "Δ"},
+    {"Theta", "Θ"},
+    {"Lambda", "Λ"},
+    {"Sigma", "Σ"},
+    {"Phi", "Φ"},
+    {"Psi", "Ψ"},
+    {"Omega", "Ω"},
+    {"cdot", "·"},
+    {"times", "×"},
+    {"pm", "±"},
+    {"mp", "∓"},
+    {"approx", "≈"},
+    {"neq", "≠"},
+    {"ne", "≠"},
+    {"le", "≤"},
+    {"leq", "≤"},
+    {"ge", "≥"},
+    {"geq", "≥"},
+    {"ll", "≪"},
+    {"gg", "≫"},
+    {"to", "→"},
+    {"rightarrow", "→"},
+    {"implies", "⇒"},
+    {"Longrightarrow", "⟹"},
+    {"infty", "∞"},
+    {"partial", "∂"},
+    {"nabla", "∇"},
+    {"int", "∫"},
+    {"sum", "Σ"},
+    {"propto", "∝"},
+    {"equiv", "≡"},
+    {"lVert", "‖"},
+    {"rVert", "‖"},
+    {"|", "‖"},
+    {"langle", "⟨"},
+    {"rangle", "⟩"},
+    {"sin", "sin"},
+    {"cos", "cos"},
+    {"tan", "tan"},
+    {"exp", "exp"},
+    {"ln", "ln"},
+    {"log", "log"},
+    {"quad", "  "},
+    {"qquad", "    "},
+    {"dots", "…"},
+    {"ldots", "…"},
 }};
 
 constexpr std::array<Pair, 4> kAccents{{{"dot", "\u0307"}, {"ddot", "\u0308"}, {"hat", "\u0302"}, {"bar", "\u0304"}}};
@@ -31,12 +90,38 @@ constexpr std::array<Pair, 4> kAccents{{{"dot", "\u0307"}, {"ddot", "\u0308"}, {
 // Digits and signs have Unicode sub- and superscript forms everywhere; letters only
 // patchily (there is a subscript x but no y), so letters keep the _ and ^ marks.
 constexpr std::array<Pair, 15> kSub{{
-    {"0", "₀"}, {"1", "₁"}, {"2", "₂"}, {"3", "₃"}, {"4", "₄"}, {"5", "₅"}, {"6", "₆"}, {"7", "₇"},
-    {"8", "₈"}, {"9", "₉"}, {"+", "₊"}, {"-", "₋"}, {"=", "₌"}, {"(", "₍"}, {")", "₎"},
+    {"0", "₀"},
+    {"1", "₁"},
+    {"2", "₂"},
+    {"3", "₃"},
+    {"4", "₄"},
+    {"5", "₅"},
+    {"6", "₆"},
+    {"7", "₇"},
+    {"8", "₈"},
+    {"9", "₉"},
+    {"+", "₊"},
+    {"-", "₋"},
+    {"=", "₌"},
+    {"(", "₍"},
+    {")", "₎"},
 }};
 constexpr std::array<Pair, 15> kSup{{
-    {"0", "⁰"}, {"1", "¹"}, {"2", "²"}, {"3", "³"}, {"4", "⁴"}, {"5", "⁵"}, {"6", "⁶"}, {"7", "⁷"},
-    {"8", "⁸"}, {"9", "⁹"}, {"+", "⁺"}, {"-", "⁻"}, {"=", "⁼"}, {"(", "⁽"}, {")", "⁾"},
+    {"0", "⁰"},
+    {"1", "¹"},
+    {"2", "²"},
+    {"3", "³"},
+    {"4", "⁴"},
+    {"5", "⁵"},
+    {"6", "⁶"},
+    {"7", "⁷"},
+    {"8", "⁸"},
+    {"9", "⁹"},
+    {"+", "⁺"},
+    {"-", "⁻"},
+    {"=", "⁼"},
+    {"(", "⁽"},
+    {")", "⁾"},
 }};
 
 template <std::size_t N>
@@ -65,7 +150,8 @@ class Converter {
       // No space before a line end or closing punctuation, none after an opening one.
       if (c == '\n' || c == ',' || c == ';' || c == ')' || c == ']')
         while (!tidy.empty() && tidy.back() == ' ') tidy.pop_back();
-      if (!(c == ' ' && (tidy.empty() || std::string_view(" \n([").find(tidy.back()) != std::string_view::npos))) tidy += c;
+      if (!(c == ' ' && (tidy.empty() || std::string_view(" \n([").find(tidy.back()) != std::string_view::npos)))
+        tidy += c;
     }
     while (!tidy.empty() && (tidy.back() == ' ' || tidy.back() == '\n')) tidy.pop_back();
     return tidy;
@@ -121,13 +207,20 @@ class Converter {
         if (level.too_deep()) throw LatexNestingError(s_.data() + pos_ - 1);
         return sequence('}');
       }
-      case '}': return {};
-      case '&': return matrix_depth_ > 0 ? ", " : "";
-      case '~': return " ";
-      case '\n': return " ";  // only \\ breaks a line
-      case '_': return script(kSub, '_');
-      case '^': return script(kSup, '^');
-      default: return std::string(1, c);
+      case '}':
+        return {};
+      case '&':
+        return matrix_depth_ > 0 ? ", " : "";
+      case '~':
+        return " ";
+      case '\n':
+        return " ";  // only \\ breaks a line
+      case '_':
+        return script(kSub, '_');
+      case '^':
+        return script(kSup, '^');
+      default:
+        return std::string(1, c);
     }
   }
 

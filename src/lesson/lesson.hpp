@@ -22,20 +22,19 @@ namespace linkage::lesson {
 
 enum class StepKind { say, set, pause, exercise, solve, simulate, render, plot, compare };
 inline constexpr std::array<std::string_view, 9> kStepKindNames{"say",      "set",    "pause", "exercise", "solve",
-                                                                 "simulate", "render", "plot",  "compare"};
+                                                                "simulate", "render", "plot",  "compare"};
 [[nodiscard]] constexpr std::string_view name(StepKind k) { return kStepKindNames[static_cast<std::size_t>(k)]; }
 
 /// The parts of a worked solution a solve step can show, in the order they print (the
 /// order of report's ReportPart).
 enum class SolvePart { inputs, inertia, constraints, energy, symbolic, numeric, solution, residual, comparison };
-inline constexpr std::array<std::string_view, 9> kSolvePartNames{"inputs",   "inertia",  "constraints",
-                                                                 "energy",   "symbolic", "numeric",
-                                                                 "solution", "residual", "comparison"};
+inline constexpr std::array<std::string_view, 9> kSolvePartNames{
+    "inputs", "inertia", "constraints", "energy", "symbolic", "numeric", "solution", "residual", "comparison"};
 
 /// One simulation: the inputs it starts from and how it integrates.
 struct Run {
-  std::string label;    // legend and table name
-  std::string series;   // runs with the same series form one curve in a cost plot
+  std::string label;   // legend and table name
+  std::string series;  // runs with the same series form one curve in a cost plot
   Inputs inputs;
   SimulationOptions options;
 };
@@ -83,7 +82,7 @@ struct Figure {
   std::size_t x = 0;           // series index ("t")
   bool log_x = false, log_y = false;
   std::string title;
-  double every = 0;            // s between samples
+  double every = 0;  // s between samples
   int width = 900, height = 600;
 };
 struct PlotStep {
@@ -108,25 +107,25 @@ struct CompareStep {
   int width = 900, height = 600;
 };
 
-using StepBody = std::variant<SayStep, SetStep, PauseStep, ExerciseStep, SolveStep, SimulateStep, RenderStep,
-                              PlotStep, CompareStep>;
+using StepBody =
+    std::variant<SayStep, SetStep, PauseStep, ExerciseStep, SolveStep, SimulateStep, RenderStep, PlotStep, CompareStep>;
 
 struct Step {
   StepKind kind = StepKind::say;
-  int number = 0;          // 1-based, as --only counts
-  std::string where;       // "file:line:column" of the step's table
-  std::string heading;     // optional section heading
-  Inputs inputs;           // in effect when the step runs
-  std::string canonical;   // every option of the step, canonically printed (cache key)
+  int number = 0;         // 1-based, as --only counts
+  std::string where;      // "file:line:column" of the step's table
+  std::string heading;    // optional section heading
+  Inputs inputs;          // in effect when the step runs
+  std::string canonical;  // every option of the step, canonically printed (cache key)
   StepBody body;
 };
 
 struct Lesson {
   std::filesystem::path file;
-  std::string name;   // the file's stem, e.g. "06-numerical-example"
+  std::string name;  // the file's stem, e.g. "06-numerical-example"
   std::string title;
   TextTemplate description;
-  Inputs inputs;      // at the start
+  Inputs inputs;  // at the start
   std::vector<Step> steps;
 
   /// Every artifact file the lesson declares, relative to the output folder.

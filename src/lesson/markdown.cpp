@@ -18,9 +18,9 @@ namespace {
 
 struct Block {
   enum class Kind { paragraph, heading, item, quote, code, math, table } kind = Kind::paragraph;
-  std::string text;       // joined lines (paragraph, heading, item, quote) or raw lines (code, math, table)
-  int level = 0;          // heading level, or list nesting (leading spaces / 2)
-  std::string marker;     // "-" or "3." for items
+  std::string text;    // joined lines (paragraph, heading, item, quote) or raw lines (code, math, table)
+  int level = 0;       // heading level, or list nesting (leading spaces / 2)
+  std::string marker;  // "-" or "3." for items
   // Where the text came from: (offset in text, offset in the Markdown) at the start of
   // each appended piece, so an error can point into what the author wrote.
   std::vector<std::pair<std::size_t, std::size_t>> from;
@@ -218,8 +218,14 @@ std::string inline_text(std::string_view s) {
   std::string out;
   for (std::size_t i = 0; i < s.size(); ++i) {
     const char c = s[i];
-    if (c == '*' && i + 1 < s.size() && s[i + 1] == '*') { ++i; continue; }
-    if (c == '_' && i + 1 < s.size() && s[i + 1] == '_') { ++i; continue; }
+    if (c == '*' && i + 1 < s.size() && s[i + 1] == '*') {
+      ++i;
+      continue;
+    }
+    if (c == '_' && i + 1 < s.size() && s[i + 1] == '_') {
+      ++i;
+      continue;
+    }
     if (c == '`') continue;
     // *emphasis*: drop the stars when they hug a word ("m * D" is multiplication).
     if (c == '*' && i + 1 < s.size() && s[i + 1] != ' ') {
@@ -243,7 +249,8 @@ std::string inline_text(std::string_view s) {
       const std::size_t close = s.find("](", i);
       const std::size_t end = close == std::string_view::npos ? close : s.find(')', close);
       if (end != std::string_view::npos) {
-        out += inline_text(s.substr(i + 1, close - i - 1)) + " (" + std::string(s.substr(close + 2, end - close - 2)) + ")";
+        out += inline_text(s.substr(i + 1, close - i - 1)) + " (" + std::string(s.substr(close + 2, end - close - 2)) +
+               ")";
         i = end;
         continue;
       }
@@ -311,13 +318,13 @@ struct MathSymbol {
   std::string_view latex;
 };
 constexpr std::array<MathSymbol, 33> kGreek{{
-    {U'ẋ', "\\dot{x}"}, {U'ẍ', "\\ddot{x}"}, {U'ẏ', "\\dot{y}"}, {U'ÿ', "\\ddot{y}"},
-    {U'α', "\\alpha"}, {U'β', "\\beta"},   {U'γ', "\\gamma"}, {U'δ', "\\delta"}, {U'ε', "\\varepsilon"},
-    {U'θ', "\\theta"}, {U'λ', "\\lambda"}, {U'μ', "\\mu"},    {U'π', "\\pi"},    {U'ρ', "\\rho"},
-    {U'σ', "\\sigma"}, {U'τ', "\\tau"},    {U'φ', "\\varphi"}, {U'ω', "\\omega"}, {U'Δ', "\\Delta"},
-    {U'Σ', "\\Sigma"}, {U'Ω', "\\Omega"},  {U'×', "\\times"}, {U'−', "-"},      {U'≈', "\\approx"},
-    {U'≤', "\\le"},    {U'≥', "\\ge"},     {U'→', "\\to"},    {U'·', "\\cdot"}, {U'‖', "\\|"},
-    {U'≠', "\\neq"},   {U'∞', "\\infty"},  {U'∝', "\\propto"}, {U'±', "\\pm"},
+    {U'ẋ', "\\dot{x}"}, {U'ẍ', "\\ddot{x}"}, {U'ẏ', "\\dot{y}"}, {U'ÿ', "\\ddot{y}"},    {U'α', "\\alpha"},
+    {U'β', "\\beta"},   {U'γ', "\\gamma"},   {U'δ', "\\delta"},  {U'ε', "\\varepsilon"}, {U'θ', "\\theta"},
+    {U'λ', "\\lambda"}, {U'μ', "\\mu"},      {U'π', "\\pi"},     {U'ρ', "\\rho"},        {U'σ', "\\sigma"},
+    {U'τ', "\\tau"},    {U'φ', "\\varphi"},  {U'ω', "\\omega"},  {U'Δ', "\\Delta"},      {U'Σ', "\\Sigma"},
+    {U'Ω', "\\Omega"},  {U'×', "\\times"},   {U'−', "-"},        {U'≈', "\\approx"},     {U'≤', "\\le"},
+    {U'≥', "\\ge"},     {U'→', "\\to"},      {U'·', "\\cdot"},   {U'‖', "\\|"},          {U'≠', "\\neq"},
+    {U'∞', "\\infty"},  {U'∝', "\\propto"},  {U'±', "\\pm"},
 }};
 
 std::string_view greek(char32_t c) {
@@ -347,8 +354,10 @@ std::string latex_chars(std::string_view s) {
     std::size_t length = 0;
     const char32_t c = decode(s, i, length);
     std::string base;
-    if (const std::string_view g = greek(c); !g.empty()) base = std::string(g);
-    else if (c < 0x80 && std::isalpha(static_cast<int>(c))) base = std::string(1, static_cast<char>(c));
+    if (const std::string_view g = greek(c); !g.empty())
+      base = std::string(g);
+    else if (c < 0x80 && std::isalpha(static_cast<int>(c)))
+      base = std::string(1, static_cast<char>(c));
     // Accents and scripts that follow the base.
     std::size_t j = i + length;
     std::string math = base;
@@ -356,9 +365,12 @@ std::string latex_chars(std::string_view s) {
     while (symbol && j < s.size()) {
       std::size_t n = 0;
       const char32_t next = decode(s, j, n);
-      if (next == 0x307) math = "\\dot{" + math + "}";
-      else if (next == 0x308) math = "\\ddot{" + math + "}";
-      else break;
+      if (next == 0x307)
+        math = "\\dot{" + math + "}";
+      else if (next == 0x308)
+        math = "\\ddot{" + math + "}";
+      else
+        break;
       j += n;
     }
     std::string scripts;
@@ -377,8 +389,10 @@ std::string latex_chars(std::string_view s) {
       i = j;
       continue;
     }
-    if (c < 0x80) out += latex_escape(std::string_view(&s[i], 1));
-    else out += std::string(s.substr(i, length));  // passes through (needs a Unicode engine)
+    if (c < 0x80)
+      out += latex_escape(std::string_view(&s[i], 1));
+    else
+      out += std::string(s.substr(i, length));  // passes through (needs a Unicode engine)
     i += length;
   }
   return out;
@@ -436,8 +450,9 @@ std::string inline_latex(std::string_view s) {
       const std::size_t mid = s.find("](", open);
       const std::size_t end = mid == std::string_view::npos ? mid : s.find(')', mid);
       if (end != std::string_view::npos) {
-        take(i, end + 1, "\\href{" + std::string(s.substr(mid + 2, end - mid - 2)) + "}{" +
-                             inline_latex(s.substr(open + 1, mid - open - 1)) + "}");
+        take(i, end + 1,
+             "\\href{" + std::string(s.substr(mid + 2, end - mid - 2)) + "}{" +
+                 inline_latex(s.substr(open + 1, mid - open - 1)) + "}");
         i = plain_start;
         continue;
       }
@@ -474,7 +489,9 @@ std::string blocks_to_text(const std::vector<Block>& blocks, std::size_t width) 
     first = false;
     previous = b.kind;
     switch (b.kind) {
-      case Block::Kind::paragraph: append_lines(out, wrap_words(inline_text(b.text), "", width)); break;
+      case Block::Kind::paragraph:
+        append_lines(out, wrap_words(inline_text(b.text), "", width));
+        break;
       case Block::Kind::heading: {
         const std::string title = inline_text(b.text);
         out += title + "\n" + std::string(display_width(title), b.level <= 1 ? '=' : '-') + "\n";
@@ -484,12 +501,14 @@ std::string blocks_to_text(const std::vector<Block>& blocks, std::size_t width) 
         const std::string indent(static_cast<std::size_t>(2 * b.level) + b.marker.size() + 3, ' ');
         std::vector<std::string> lines = wrap_words(inline_text(b.text), indent, width);
         if (!lines.empty())
-          lines[0] = std::string(static_cast<std::size_t>(2 * b.level) + 2, ' ') + b.marker + " " + lines[0].substr(indent.size());
+          lines[0] = std::string(static_cast<std::size_t>(2 * b.level) + 2, ' ') + b.marker + " " +
+                     lines[0].substr(indent.size());
         append_lines(out, lines);
         break;
       }
       case Block::Kind::quote: {
-        for (std::string_view paragraph : split_lines(b.text)) append_lines(out, wrap_words(inline_text(paragraph), "  | ", width));
+        for (std::string_view paragraph : split_lines(b.text))
+          append_lines(out, wrap_words(inline_text(paragraph), "  | ", width));
         break;
       }
       case Block::Kind::code:
@@ -500,8 +519,9 @@ std::string blocks_to_text(const std::vector<Block>& blocks, std::size_t width) 
         // Continuation lines of an aligned equation ("= ...") line up under the first "=".
         const std::size_t equals = unicode.find(" = ");
         const std::size_t first_end = unicode.find('\n');
-        const std::size_t align =
-            equals != std::string::npos && equals < first_end ? display_width(std::string_view(unicode).substr(0, equals + 1)) : 0;
+        const std::size_t align = equals != std::string::npos && equals < first_end
+                                      ? display_width(std::string_view(unicode).substr(0, equals + 1))
+                                      : 0;
         for (std::string_view line : split_lines(unicode)) {
           out += "    ";
           if (line.starts_with("= ")) out += std::string(align, ' ');
@@ -510,7 +530,9 @@ std::string blocks_to_text(const std::vector<Block>& blocks, std::size_t width) 
         }
         break;
       }
-      case Block::Kind::table: out += text_table(b.text); break;
+      case Block::Kind::table:
+        out += text_table(b.text);
+        break;
     }
   }
   return out;
@@ -533,7 +555,9 @@ std::string markdown_to_latex(std::string_view markdown) {
   for (std::size_t k = 0; k < blocks.size(); ++k) {
     const Block& b = blocks[k];
     switch (b.kind) {
-      case Block::Kind::paragraph: out += inline_latex(b.text) + "\n\n"; break;
+      case Block::Kind::paragraph:
+        out += inline_latex(b.text) + "\n\n";
+        break;
       case Block::Kind::heading:
         out += std::string(b.level <= 1 ? "\\subsection*{" : "\\subsubsection*{") + inline_latex(b.text) + "}\n\n";
         break;
@@ -553,8 +577,12 @@ std::string markdown_to_latex(std::string_view markdown) {
         out += "\\end{quote}\n\n";
         break;
       }
-      case Block::Kind::code: out += "\\begin{verbatim}\n" + b.text + "\n\\end{verbatim}\n\n"; break;
-      case Block::Kind::math: out += "\\[\n" + b.text + "\n\\]\n\n"; break;
+      case Block::Kind::code:
+        out += "\\begin{verbatim}\n" + b.text + "\n\\end{verbatim}\n\n";
+        break;
+      case Block::Kind::math:
+        out += "\\[\n" + b.text + "\n\\]\n\n";
+        break;
       case Block::Kind::table: {
         std::vector<std::vector<std::string>> rows;
         for (std::string_view line : split_lines(b.text)) {

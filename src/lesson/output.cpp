@@ -54,7 +54,9 @@ class TextWriter final : public Writer {
     for (const std::string& line : layout_table(t, "  ", width_)) out_ += line + "\n";
   }
   void figure(const FigureRef& f) override {
-    const char* what = f.kind == FigureRef::Kind::video ? "Clip: " : f.kind == FigureRef::Kind::image ? "Figure: " : "File: ";
+    const char* what = f.kind == FigureRef::Kind::video   ? "Clip: "
+                       : f.kind == FigureRef::Kind::image ? "Figure: "
+                                                          : "File: ";
     out_ += "\n";
     out_ += what + f.path.string() + "\n";
     if (!f.caption.empty()) out_ += markdown_to_text(f.caption, width_);
@@ -142,7 +144,8 @@ class LatexWriter final : public Writer {
   }
   void table(const ResultTable& table, const std::string& caption) override {
     out_ += "\\begin{center}\n\\begin{tabular}{l" + std::string(table.headers.size() - 1, 'r') + "}\n  ";
-    for (std::size_t i = 0; i < table.headers.size(); ++i) out_ += (i > 0 ? " & " : "") + inline_latex(table.headers[i]);
+    for (std::size_t i = 0; i < table.headers.size(); ++i)
+      out_ += (i > 0 ? " & " : "") + inline_latex(table.headers[i]);
     out_ += " \\\\\n  \\hline\n";
     for (const auto& row : table.rows) {
       out_ += "  ";
@@ -169,7 +172,8 @@ class LatexWriter final : public Writer {
     out_ += "\\end{figure}\n\n";
   }
   void exercise(const std::string& question, const std::string& answer, const std::string& explanation) override {
-    out_ += "\\paragraph{Exercise.} " + markdown_to_latex(question) + "\\textbf{Answer:} " + inline_latex(answer) + "\n\n";
+    out_ +=
+        "\\paragraph{Exercise.} " + markdown_to_latex(question) + "\\textbf{Answer:} " + inline_latex(answer) + "\n\n";
     if (!explanation.empty()) out_ += markdown_to_latex(explanation);
   }
 };
@@ -184,9 +188,12 @@ std::unique_ptr<Writer> make_latex_writer() { return std::make_unique<LatexWrite
 
 std::unique_ptr<Writer> make_writer(Format format, std::size_t width, expr::Style style) {
   switch (format) {
-    case Format::text: return make_text_writer(width, style);
-    case Format::markdown: return make_markdown_writer();
-    case Format::latex: return make_latex_writer();
+    case Format::text:
+      return make_text_writer(width, style);
+    case Format::markdown:
+      return make_markdown_writer();
+    case Format::latex:
+      return make_latex_writer();
   }
   return make_text_writer(width, style);
 }

@@ -63,7 +63,8 @@ std::vector<std::string> split_list(const std::string& text) {
 
 /// Each string of a list must be one of `choices`; returns their indices. Errors point
 /// at the offending entry.
-std::vector<std::size_t> choice_list(const TableReader& r, std::string_view key, const std::vector<std::string_view>& choices) {
+std::vector<std::size_t> choice_list(const TableReader& r, std::string_view key,
+                                     const std::vector<std::string_view>& choices) {
   std::vector<std::size_t> out;
   const toml::node* n = r.node(key);
   if (n == nullptr) return out;
@@ -99,13 +100,13 @@ std::vector<std::size_t> choice_list(const TableReader& r, std::string_view key,
 std::string artifact_name(const TableReader& r, std::string_view key) {
   r.require(key);
   std::string name = *r.string(key);
-  const bool plain = !name.empty() && name.front() != '.' &&
-                     std::all_of(name.begin(), name.end(), [](char c) {
-                       return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '_';
-                     });
+  const bool plain = !name.empty() && name.front() != '.' && std::all_of(name.begin(), name.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '_';
+  });
   if (!plain)
-    r.fail(key, "'" + name + "' must be a plain file name (letters, digits, '.', '-', '_'; not starting with '.'); "
-                "it is written in the output folder");
+    r.fail(key, "'" + name +
+                    "' must be a plain file name (letters, digits, '.', '-', '_'; not starting with '.'); "
+                    "it is written in the output folder");
   if (name == "lesson.md") r.fail(key, "'lesson.md' is the lesson document's name; choose another");
   return name;
 }
@@ -118,7 +119,8 @@ std::string strip_extension(std::string name, std::initializer_list<std::string_
 }
 
 /// The keys of a table in file order (toml++ keeps them sorted by name).
-std::vector<std::string> keys_in_file_order(const toml::table& table, const std::function<bool(std::string_view)>& keep) {
+std::vector<std::string> keys_in_file_order(const toml::table& table,
+                                            const std::function<bool(std::string_view)>& keep) {
   std::vector<std::pair<toml::source_position, std::string>> keys;
   for (const auto& [key, value] : table)
     if (keep(key.str())) keys.emplace_back(key.source().begin, std::string(key.str()));
@@ -161,12 +163,14 @@ class Parser {
     read_inputs(top, "state", false, inputs);
     inputs.validate();
     lesson.inputs = inputs;
-    if (auto d = top.string("description")) lesson.description = TextTemplate::parse(*d, top.prefix("description") + "description");
+    if (auto d = top.string("description"))
+      lesson.description = TextTemplate::parse(*d, top.prefix("description") + "description");
 
     top.require("step");
     const auto steps = top.tables("step");
     if (steps.empty()) top.fail("step", "a lesson needs at least one step");
-    for (const toml::table* t : steps) lesson.steps.push_back(parse_step(*t, static_cast<int>(lesson.steps.size()) + 1, inputs));
+    for (const toml::table* t : steps)
+      lesson.steps.push_back(parse_step(*t, static_cast<int>(lesson.steps.size()) + 1, inputs));
     return lesson;
   }
 
@@ -187,8 +191,9 @@ class Parser {
     for (const auto& [name, value] : *t) {
       const InputKey* input = find_input_key(name.str());
       if (input == nullptr || (input->param != nullptr) == parameters) continue;
-      throw Error::input(position(file_text_, name.source()) + ": lesson: '" + std::string(name.str()) + "' is " +
-                         (parameters ? "a state value; put it under [state]" : "a parameter; put it under [parameters]"));
+      throw Error::input(
+          position(file_text_, name.source()) + ": lesson: '" + std::string(name.str()) + "' is " +
+          (parameters ? "a state value; put it under [state]" : "a parameter; put it under [parameters]"));
     }
     apply_toml(inputs, *t, file_text_);
   }
@@ -222,15 +227,33 @@ class Parser {
     step.canonical = canonical_text(table, {"heading", "caption"});
 
     switch (step.kind) {
-      case StepKind::say: step.body = parse_say(r); break;
-      case StepKind::set: step.body = parse_set(r, inputs); break;
-      case StepKind::pause: step.body = PauseStep{r.string("prompt").value_or("Press Enter to continue")}; break;
-      case StepKind::exercise: step.body = parse_exercise(r, inputs); break;
-      case StepKind::solve: step.body = parse_solve(r); break;
-      case StepKind::simulate: step.body = parse_simulate(r, inputs); break;
-      case StepKind::render: step.body = parse_render(r, inputs); break;
-      case StepKind::plot: step.body = parse_plot(r, inputs); break;
-      case StepKind::compare: step.body = parse_compare(r, inputs); break;
+      case StepKind::say:
+        step.body = parse_say(r);
+        break;
+      case StepKind::set:
+        step.body = parse_set(r, inputs);
+        break;
+      case StepKind::pause:
+        step.body = PauseStep{r.string("prompt").value_or("Press Enter to continue")};
+        break;
+      case StepKind::exercise:
+        step.body = parse_exercise(r, inputs);
+        break;
+      case StepKind::solve:
+        step.body = parse_solve(r);
+        break;
+      case StepKind::simulate:
+        step.body = parse_simulate(r, inputs);
+        break;
+      case StepKind::render:
+        step.body = parse_render(r, inputs);
+        break;
+      case StepKind::plot:
+        step.body = parse_plot(r, inputs);
+        break;
+      case StepKind::compare:
+        step.body = parse_compare(r, inputs);
+        break;
     }
     step.inputs = inputs;
     for (const std::string& artifact : step_artifacts(step)) {
@@ -282,20 +305,26 @@ class Parser {
     if (const auto* s = answer.as_string()) {
       e.answer = Expression::parse(s->get(), r.prefix("answer") + "answer");
     } else if (answer.is_number()) {
-      e.answer = Expression::parse(format_roundtrip(*r.number("answer", -kInf, kInf, "")), r.prefix("answer") + "answer");
+      e.answer =
+          Expression::parse(format_roundtrip(*r.number("answer", -kInf, kInf, "")), r.prefix("answer") + "answer");
     } else {
-      r.fail("answer", "'answer' must be an expression string (e.g. \"I_zz_P\") or a number, got " + type_phrase(answer));
+      r.fail("answer",
+             "'answer' must be an expression string (e.g. \"I_zz_P\") or a number, got " + type_phrase(answer));
     }
     const double value = e.answer.evaluate(evaluate_quantities(inputs));
-    if (!std::isfinite(value)) r.fail("answer", "'" + e.answer.text() + "' is not a finite number at this step's inputs");
-    if (auto unit = r.string("unit")) e.unit = *unit;
-    else if (const QuantityInfo* q = e.answer.single_quantity()) e.unit = q->unit;
+    if (!std::isfinite(value))
+      r.fail("answer", "'" + e.answer.text() + "' is not a finite number at this step's inputs");
+    if (auto unit = r.string("unit"))
+      e.unit = *unit;
+    else if (const QuantityInfo* q = e.answer.single_quantity())
+      e.unit = q->unit;
     e.tolerance = r.number("tolerance", 0, kInf, "valid: tolerance >= 0");
     e.relative_tolerance = r.number("relative_tolerance", 0, 1, "valid: 0 to 1").value_or(e.tolerance ? 0.0 : 0.01);
     e.attempts = static_cast<int>(r.integer("attempts", 1, 10).value_or(3));
     e.digits = static_cast<int>(r.integer("digits", 1, 17).value_or(6));
     if (auto hint = r.string("hint")) e.hint = TextTemplate::parse(*hint, r.prefix("hint") + "hint");
-    if (auto x = r.string("explanation")) e.explanation = TextTemplate::parse(*x, r.prefix("explanation") + "explanation");
+    if (auto x = r.string("explanation"))
+      e.explanation = TextTemplate::parse(*x, r.prefix("explanation") + "explanation");
     return e;
   }
 
@@ -382,7 +411,8 @@ class Parser {
     const std::vector<KeySpec> keys = concat({run_keys(), run_entry_keys()});
     std::vector<Run> out;
     for (std::size_t i = 0; i < tables.size(); ++i) {
-      const TableReader entry(*tables[i], file_text_, r.context() + ", run " + std::to_string(i + 1), keys, input_names());
+      const TableReader entry(*tables[i], file_text_, r.context() + ", run " + std::to_string(i + 1), keys,
+                              input_names());
       entry.reject_unknown_keys();
       Run run = base;
       apply_run_keys(entry, run);
@@ -408,8 +438,10 @@ class Parser {
     const double every = r.number("every", 0, kInf, "valid: every > 0").value_or(duration / parts);
     if (!(every > 0)) r.fail("every", "'every' must be > 0");
     if (every > duration)
-      r.fail("every", "'every' = " + format_roundtrip(every) + " s is longer than the run (" + format_roundtrip(duration) + " s)");
-    if (duration / every > 1e6) r.fail("every", "'every' = " + format_roundtrip(every) + " s gives more than a million samples");
+      r.fail("every", "'every' = " + format_roundtrip(every) + " s is longer than the run (" +
+                          format_roundtrip(duration) + " s)");
+    if (duration / every > 1e6)
+      r.fail("every", "'every' = " + format_roundtrip(every) + " s gives more than a million samples");
     return every;
   }
 
@@ -420,7 +452,9 @@ class Parser {
     char x = 0, extra = 0;
     std::istringstream in(*size);
     if (!(in >> w >> x >> h) || x != 'x' || (in >> extra) || w < 200 || h < 150 || w > 4000 || h > 4000)
-      r.fail("size", "'" + *size + "' is not a figure size; write WxH with 200 <= W <= 4000 and 150 <= H <= 4000, e.g. \"900x600\"");
+      r.fail("size",
+             "'" + *size +
+                 "' is not a figure size; write WxH with 200 <= W <= 4000 and 150 <= H <= 4000, e.g. \"900x600\"");
     width = w;
     height = h;
   }
@@ -459,12 +493,15 @@ class Parser {
       g.width = preset.width;
       g.height = preset.height;
       g.fps = preset.fps;
-      if (auto size = r.string("size")) parse_size(*size, r.where("size") + ": " + r.context() + ": size", g.width, g.height);
+      if (auto size = r.string("size"))
+        parse_size(*size, r.where("size") + ": " + r.context() + ": size", g.width, g.height);
       if (auto fps = r.integer("fps", 1, kMaxFps)) g.fps = static_cast<int>(*fps);
       g.at = r.number("at", -kInf, kInf, "").value_or(g.at);
       g.speed = r.number("speed", -kInf, kInf, "").value_or(g.speed);
       const auto camera = r.choice("camera", {"follow", "fixed", "fit"});
-      g.camera = camera ? parse_camera(*camera, r.where("camera")) : r.has("view") ? CameraMode::fixed : CameraMode::follow;
+      g.camera = camera          ? parse_camera(*camera, r.where("camera"))
+                 : r.has("view") ? CameraMode::fixed
+                                 : CameraMode::follow;
       if (auto v = r.string("view")) {
         g.view = parse_view(*v, r.where("view") + ": " + r.context() + ": view");
         if (g.camera != CameraMode::fixed)

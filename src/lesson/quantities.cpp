@@ -25,15 +25,38 @@ QuantityValues evaluate_quantities(const Inputs& inputs) {
   QuantityValues v{};
   std::size_t i = 0;
   for (const InputKey& key : kInputKeys) v[i++] = inputs.value(key);
-  const double values[] = {
-      d.I_zz_C, d.D, d.I_zz_P, d.pin.x(), d.pin.y(), d.C2.x(), d.C2.y(), d.C2_dot.x(), d.C2_dot.y(),
-      (s.x1 + d.C2.x()) / 2, (s.y1 + d.C2.y()) / 2, (s.x1_dot + d.C2_dot.x()) / 2, (s.y1_dot + d.C2_dot.y()) / 2,
-      d.invariants.kinetic_energy, d.invariants.potential_energy, d.invariants.energy,
-      d.invariants.momentum.x(), d.invariants.momentum.y(), d.invariants.angular_momentum,
-      q(Unknown::x1_ddot), q(Unknown::y1_ddot), q(Unknown::theta1_ddot), q(Unknown::x2_ddot),
-      q(Unknown::y2_ddot), q(Unknown::theta2_ddot), q(Unknown::F_x), q(Unknown::F_y),
-      case1.condition_number, case2.condition_number, case3.condition_number, case1.residual,
-      std::numbers::pi};
+  const double values[] = {d.I_zz_C,
+                           d.D,
+                           d.I_zz_P,
+                           d.pin.x(),
+                           d.pin.y(),
+                           d.C2.x(),
+                           d.C2.y(),
+                           d.C2_dot.x(),
+                           d.C2_dot.y(),
+                           (s.x1 + d.C2.x()) / 2,
+                           (s.y1 + d.C2.y()) / 2,
+                           (s.x1_dot + d.C2_dot.x()) / 2,
+                           (s.y1_dot + d.C2_dot.y()) / 2,
+                           d.invariants.kinetic_energy,
+                           d.invariants.potential_energy,
+                           d.invariants.energy,
+                           d.invariants.momentum.x(),
+                           d.invariants.momentum.y(),
+                           d.invariants.angular_momentum,
+                           q(Unknown::x1_ddot),
+                           q(Unknown::y1_ddot),
+                           q(Unknown::theta1_ddot),
+                           q(Unknown::x2_ddot),
+                           q(Unknown::y2_ddot),
+                           q(Unknown::theta2_ddot),
+                           q(Unknown::F_x),
+                           q(Unknown::F_y),
+                           case1.condition_number,
+                           case2.condition_number,
+                           case3.condition_number,
+                           case1.residual,
+                           std::numbers::pi};
   static_assert(kInputKeys.size() + sizeof(values) / sizeof(values[0]) == kQuantities.size(),
                 "one value per quantity, in table order");
   for (double x : values) v[i++] = x;

@@ -85,7 +85,8 @@ std::string with_unit(double value, int digits, const std::string& unit) {
 }
 
 void run_set(RunContext& c, const Step& step, const SetStep& s) {
-  const Inputs& before = step.number > 1 ? c.lesson.steps[static_cast<std::size_t>(step.number - 2)].inputs : c.lesson.inputs;
+  const Inputs& before =
+      step.number > 1 ? c.lesson.steps[static_cast<std::size_t>(step.number - 2)].inputs : c.lesson.inputs;
   std::string text = "*From here on:* ";
   for (std::size_t i = 0; i < s.keys.size(); ++i) {
     const InputKey& key = *find_input_key(s.keys[i]);

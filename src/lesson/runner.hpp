@@ -21,21 +21,21 @@ enum class Quality { draft, final };
 inline constexpr int kDraftWidth = 480, kDraftHeight = 270, kDraftFps = 15;
 
 struct RunnerOptions {
-  std::filesystem::path out_dir;      // created with its parents if missing
-  bool interactive = false;           // --step: pause steps wait, exercises ask
+  std::filesystem::path out_dir;  // created with its parents if missing
+  bool interactive = false;       // --step: pause steps wait, exercises ask
   Quality quality = Quality::draft;
-  Format format = Format::text;       // of the terminal output
-  std::vector<bool> selected;         // per step (--only); empty: every step
-  bool force = false;                 // make everything, cached or not
-  std::size_t width = 80;             // terminal columns for text
+  Format format = Format::text;  // of the terminal output
+  std::vector<bool> selected;    // per step (--only); empty: every step
+  bool force = false;            // make everything, cached or not
+  std::size_t width = 80;        // terminal columns for text
   expr::Style style = expr::Style::unicode;
-  std::filesystem::path assets;       // theme folder for render steps (empty: built-in palettes)
+  std::filesystem::path assets;  // theme folder for render steps (empty: built-in palettes)
 };
 
 struct RunSummary {
   int steps_run = 0;
-  int made = 0;    // steps that wrote their artifacts
-  int reused = 0;  // steps whose artifacts were reused
+  int made = 0;                    // steps that wrote their artifacts
+  int reused = 0;                  // steps whose artifacts were reused
   std::filesystem::path document;  // lesson.md; empty when --only ran part of the lesson
 };
 

@@ -3,7 +3,6 @@
 #include <functional>
 #include <iosfwd>
 #include <memory>
-
 #include <nlohmann/json.hpp>
 
 #include "lesson/cache.hpp"

@@ -23,7 +23,8 @@ SampledRun sample_run(const Run& run, double every, const std::vector<std::size_
   if (!info(o.integrator).adaptive) every = o.dt * std::max(1.0, std::round(every / o.dt));
   const std::vector<double> times = sample_times(o.duration, every);
   Simulation sim(run.inputs.params(), run.inputs.state(), o);
-  const bool dynamics = std::any_of(series.begin(), series.end(), [](std::size_t i) { return kSeries[i].needs_dynamics; });
+  const bool dynamics =
+      std::any_of(series.begin(), series.end(), [](std::size_t i) { return kSeries[i].needs_dynamics; });
   SampledRun out;
   out.columns.assign(series.size(), {});
   for (auto& column : out.columns) column.reserve(times.size());
@@ -53,8 +54,8 @@ State reference_final_state(const Run& run) {
 }
 
 double final_error(const BodyState& a, const State& r) {
-  return std::max({std::fabs(a.x1 - r.x1), std::fabs(a.y1 - r.y1), std::fabs(a.theta1 - r.theta1),
-                   std::fabs(a.theta2 - r.theta2)});
+  return std::max(
+      {std::fabs(a.x1 - r.x1), std::fabs(a.y1 - r.y1), std::fabs(a.theta1 - r.theta1), std::fabs(a.theta2 - r.theta2)});
 }
 
 }  // namespace linkage::lesson

@@ -30,7 +30,7 @@ struct RunFigures {
   double energy_error = 0;      // largest relative energy error over the samples
   double constraint_error = 0;  // largest |C| over the samples, m
   std::int64_t steps = 0, rejected = 0, rhs_evaluations = 0;
-  double run_time = 0;          // s
+  double run_time = 0;  // s
 };
 
 /// The reference for final errors: DOP853 at rtol = atol = kReferenceTolerance on Case 3

@@ -8,8 +8,9 @@ namespace {
 constexpr std::array<KeySpec, 6> kLessonKeys{{
     {"title", "string", "(required)", "The lesson's title, printed first and used as the document's heading."},
     {"description", "string", "\"\"", "A Markdown paragraph printed under the title; may quote values as {{NAME}}."},
-    {"config", "string", "none", "A TOML file of inputs (as `linkage solve --config`), relative to the lesson file; "
-                                 "[parameters] and [state] override it."},
+    {"config", "string", "none",
+     "A TOML file of inputs (as `linkage solve --config`), relative to the lesson file; "
+     "[parameters] and [state] override it."},
     {"parameters", "table", "the spec's example", "Any of L, w, b, m, g (m, m, m, kg, m/s^2)."},
     {"state", "table", "the spec's example",
      "Any of x1, y1, theta1, theta2, x1_dot, y1_dot, theta1_dot, theta2_dot (m, rad, m/s, rad/s)."},
@@ -24,7 +25,8 @@ constexpr std::array<KeySpec, 2> kCommonKeys{{
 
 constexpr std::array<KeySpec, 9> kRunKeys{{
     {"case", "integer", "3", "The formulation: 1 (eight DAEs), 2 (six equations) or 3 (four equations)."},
-    {"integrator", "string", "\"dop853\"", "euler, symplectic-euler, rk4, dopri5, dop853 or gauss-legendre (as `linkage simulate`)."},
+    {"integrator", "string", "\"dop853\"",
+     "euler, symplectic-euler, rk4, dopri5, dop853 or gauss-legendre (as `linkage simulate`)."},
     {"dt", "number", "0.001", "Step size in s (fixed-step methods), or the first step of adaptive ones."},
     {"rtol", "number", "1e-10", "Relative tolerance of adaptive methods."},
     {"atol", "number", "1e-10", "Absolute tolerance of adaptive methods."},
@@ -40,8 +42,9 @@ constexpr std::array<KeySpec, 2> kRunEntryKeys{{
 }};
 
 constexpr std::array<KeySpec, 2> kSayKeys{{
-    {"text", "string", "(text or file)", "Markdown, wrapped to the terminal; {{NAME}} or {{EXPRESSION : DIGITS}} "
-                                         "is replaced by the value at the current inputs."},
+    {"text", "string", "(text or file)",
+     "Markdown, wrapped to the terminal; {{NAME}} or {{EXPRESSION : DIGITS}} "
+     "is replaced by the value at the current inputs."},
     {"file", "string", "(text or file)", "Read the Markdown from this file (relative to the lesson file) instead."},
 }};
 
@@ -71,8 +74,9 @@ constexpr std::array<KeySpec, 2> kSolveKeys{{
 constexpr std::array<KeySpec, 3> kSimulateKeys{{
     {"trajectory", "string", "none", "Write the samples to this CSV file in the output folder."},
     {"every", "number", "duration / 100", "Seconds between trajectory rows."},
-    {"columns", "list of strings", "all", "Trajectory columns, as `linkage simulate --columns` (t, x1, ..., F_x, F_y, "
-                                         "energy, momentum_x, ..., constraint_velocity_error)."},
+    {"columns", "list of strings", "all",
+     "Trajectory columns, as `linkage simulate --columns` (t, x1, ..., F_x, F_y, "
+     "energy, momentum_x, ..., constraint_velocity_error)."},
 }};
 
 constexpr std::array<KeySpec, 13> kRenderKeys{{
@@ -83,8 +87,9 @@ constexpr std::array<KeySpec, 13> kRenderKeys{{
     {"quality", "string", "\"medium\"", "A size and fps preset: low, medium, high or 4k."},
     {"at", "number", "0", "The time in s a still shows (stills only; a clip shows 0 .. duration)."},
     {"speed", "number", "1", "Simulated seconds per video second (below 1 is slow motion)."},
-    {"show", "list of strings", "none", "Elements to show besides the defaults: blocks, pin, pin-force, gravity, "
-                                        "velocity, trail, com, grid, axes, hud, legend, labels, title."},
+    {"show", "list of strings", "none",
+     "Elements to show besides the defaults: blocks, pin, pin-force, gravity, "
+     "velocity, trail, com, grid, axes, hud, legend, labels, title."},
     {"hide", "list of strings", "none", "Elements to hide."},
     {"camera", "string", "\"follow\" (\"fixed\" with a view)",
      "follow (keeps the falling centre of mass in frame), fixed (shows view) or fit (the whole motion)."},
@@ -103,21 +108,25 @@ constexpr std::array<KeySpec, 10> kPlotKeys{{
     {"log_y", "boolean", "false", "Logarithmic vertical axis (non-positive values are left out)."},
     {"every", "number", "duration / 400", "Seconds between samples."},
     {"size", "string", "\"900x600\"", "Figure size WxH in pixels (PNG) and points (SVG)."},
-    {"runs", "array of tables", "one run of the step's options", "The runs: each a table of run keys, label and series."},
+    {"runs", "array of tables", "one run of the step's options",
+     "The runs: each a table of run keys, label and series."},
 }};
 
 constexpr std::array<KeySpec, 10> kCompareKeys{{
-    {"out", "string", "(required)", "Base file name: writes OUT.csv (the table) and, with a plot, OUT.png and OUT.svg."},
+    {"out", "string", "(required)",
+     "Base file name: writes OUT.csv (the table) and, with a plot, OUT.png and OUT.svg."},
     {"caption", "string", "none", "Text under the table in the lesson document."},
     {"title", "string", "none", "The figure's title."},
-    {"runs", "array of tables", "(required)", "The configurations compared: each a table of run keys, label and series."},
+    {"runs", "array of tables", "(required)",
+     "The configurations compared: each a table of run keys, label and series."},
     {"columns", "list of strings", "all",
      "Table columns: final_error, energy_error, constraint_error, steps, rejected, rhs_evaluations, run_time."},
     {"plot", "string", "none", "A series drawn against time for every run (e.g. \"constraint_position_error\")."},
     {"log_y", "boolean", "true", "Logarithmic vertical axis for the plot."},
     {"every", "number", "duration / 400", "Seconds between samples for the errors and the plot."},
-    {"cost_plot", "boolean", "false", "Also draw final error against right-hand-side evaluations (log-log), "
-                                      "to OUT-cost.png and OUT-cost.svg."},
+    {"cost_plot", "boolean", "false",
+     "Also draw final error against right-hand-side evaluations (log-log), "
+     "to OUT-cost.png and OUT-cost.svg."},
     {"size", "string", "\"900x600\"", "Figure size WxH."},
 }};
 
@@ -133,7 +142,8 @@ const std::array<KindEntry, 9>& kinds() {
       {"say", "A Markdown paragraph, wrapped to the terminal.", kSayKeys, false},
       {"set", "Changes inputs (any of the thirteen names) for the following steps.", {}, false},
       {"pause", "Waits for Enter with --step; ignored otherwise.", kPauseKeys, false},
-      {"exercise", "A question with a numeric answer: asked and checked with --step, answered otherwise.", kExerciseKeys, false},
+      {"exercise", "A question with a numeric answer: asked and checked with --step, answered otherwise.",
+       kExerciseKeys, false},
       {"solve", "The worked solution of `linkage solve`, showing the chosen parts.", kSolveKeys, false},
       {"simulate", "Runs the motion and prints a summary; optionally writes the trajectory.", kSimulateKeys, true},
       {"render", "A clip or a still, with any `linkage render` option.", kRenderKeys, true},

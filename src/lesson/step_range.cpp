@@ -17,8 +17,8 @@ std::vector<bool> parse_step_range(const std::string& text, std::size_t count) {
     if (ec != std::errc() || ptr != s.data() + s.size())
       throw Error::invalid("only", "'" + std::string(s) + "' is not a step number" + valid);
     if (n < 1 || n > count)
-      throw Error::invalid("only", "step " + std::to_string(n) + " does not exist; the lesson has steps 1 to " +
-                         std::to_string(count));
+      throw Error::invalid(
+          "only", "step " + std::to_string(n) + " does not exist; the lesson has steps 1 to " + std::to_string(count));
     return n;
   };
   if (text.empty()) throw Error::invalid("only", "the range is empty" + valid);
@@ -31,8 +31,7 @@ std::vector<bool> parse_step_range(const std::string& text, std::size_t count) {
     const std::size_t dash = part.find('-');
     const std::size_t first = dash == std::string_view::npos ? number(part, 1) : number(part.substr(0, dash), 1);
     const std::size_t last = dash == std::string_view::npos ? first : number(part.substr(dash + 1), count);
-    if (first > last)
-      throw Error::invalid("only", "'" + std::string(part) + "' runs backwards" + valid);
+    if (first > last) throw Error::invalid("only", "'" + std::string(part) + "' runs backwards" + valid);
     for (std::size_t i = first; i <= last; ++i) selected[i - 1] = true;
     start = comma + 1;
   }

@@ -46,7 +46,8 @@ ResultTable simulate_summary(const SimulateStep& s, const SimulationStats& st, c
       {"largest energy error", format_significant(st.max_energy_error, 3) + " of the energy scale"},
       {"largest constraint error", format_significant(st.max_constraint_error, 3) + " m"},
       {"final x1, y1", format_significant(end.x1, 6) + " m, " + format_significant(end.y1, 6) + " m"},
-      {"final theta1, theta2", format_significant(end.theta1, 6) + " rad, " + format_significant(end.theta2, 6) + " rad"},
+      {"final theta1, theta2",
+       format_significant(end.theta1, 6) + " rad, " + format_significant(end.theta2, 6) + " rad"},
       {"run time", format_significant(st.wall_seconds * 1e3, 3) + " ms"},
   };
   return t;
@@ -136,7 +137,8 @@ plot::Plot time_plot(const Figure& f, const std::vector<Run>& runs) {
 
 /// Writes `name`.png and `name`.svg. Points dropped from a log axis (exact zeros, e.g.
 /// an error at t = 0) are expected; points that are not finite are worth a word.
-void write_plot(const RunContext& c, const Step& step, const plot::Plot& p, const std::string& name, int width, int height) {
+void write_plot(const RunContext& c, const Step& step, const plot::Plot& p, const std::string& name, int width,
+                int height) {
   plot::Canvas canvas;
   canvas.width = width;
   canvas.height = height;
@@ -150,36 +152,54 @@ void write_plot(const RunContext& c, const Step& step, const plot::Plot& p, cons
 
 std::string column_header(CompareColumn column) {
   switch (column) {
-    case CompareColumn::final_error: return "final error";
-    case CompareColumn::energy_error: return "energy error";
-    case CompareColumn::constraint_error: return "constraint error (m)";
-    case CompareColumn::steps: return "steps";
-    case CompareColumn::rejected: return "rejected";
-    case CompareColumn::rhs_evaluations: return "RHS evaluations";
-    case CompareColumn::run_time: return "run time (ms)";
+    case CompareColumn::final_error:
+      return "final error";
+    case CompareColumn::energy_error:
+      return "energy error";
+    case CompareColumn::constraint_error:
+      return "constraint error (m)";
+    case CompareColumn::steps:
+      return "steps";
+    case CompareColumn::rejected:
+      return "rejected";
+    case CompareColumn::rhs_evaluations:
+      return "RHS evaluations";
+    case CompareColumn::run_time:
+      return "run time (ms)";
   }
   return "";
 }
 
 double figure_value(const RunFigures& f, CompareColumn column) {
   switch (column) {
-    case CompareColumn::final_error: return f.final_error;
-    case CompareColumn::energy_error: return f.energy_error;
-    case CompareColumn::constraint_error: return f.constraint_error;
-    case CompareColumn::steps: return static_cast<double>(f.steps);
-    case CompareColumn::rejected: return static_cast<double>(f.rejected);
-    case CompareColumn::rhs_evaluations: return static_cast<double>(f.rhs_evaluations);
-    case CompareColumn::run_time: return f.run_time * 1e3;
+    case CompareColumn::final_error:
+      return f.final_error;
+    case CompareColumn::energy_error:
+      return f.energy_error;
+    case CompareColumn::constraint_error:
+      return f.constraint_error;
+    case CompareColumn::steps:
+      return static_cast<double>(f.steps);
+    case CompareColumn::rejected:
+      return static_cast<double>(f.rejected);
+    case CompareColumn::rhs_evaluations:
+      return static_cast<double>(f.rhs_evaluations);
+    case CompareColumn::run_time:
+      return f.run_time * 1e3;
   }
   return 0;
 }
 
 std::string figure_text(const RunFigures& f, CompareColumn column) {
   switch (column) {
-    case CompareColumn::steps: return std::to_string(f.steps);
-    case CompareColumn::rejected: return std::to_string(f.rejected);
-    case CompareColumn::rhs_evaluations: return std::to_string(f.rhs_evaluations);
-    default: return format_significant(figure_value(f, column), 3);
+    case CompareColumn::steps:
+      return std::to_string(f.steps);
+    case CompareColumn::rejected:
+      return std::to_string(f.rejected);
+    case CompareColumn::rhs_evaluations:
+      return std::to_string(f.rhs_evaluations);
+    default:
+      return format_significant(figure_value(f, column), 3);
   }
 }
 
@@ -204,7 +224,8 @@ plot::Plot cost_plot(const CompareStep& s, const std::vector<RunFigures>& figure
   }
   for (const std::string& key : order) {
     plot::Series& series = groups[key];
-    std::sort(series.points.begin(), series.points.end(), [](const plot::Point& a, const plot::Point& b) { return a.x < b.x; });
+    std::sort(series.points.begin(), series.points.end(),
+              [](const plot::Point& a, const plot::Point& b) { return a.x < b.x; });
     p.series.push_back(std::move(series));
   }
   return p;
@@ -260,7 +281,9 @@ void run_simulate(RunContext& c, const Step& step, const SimulateStep& s) {
   const ResultTable table = table_from_json(results.at("table"));
   c.both([&](Writer& w) { w.table(table, "Simulated with " + method_text(s.run.options) + "."); });
   if (!s.trajectory.empty())
-    c.both([&](Writer& w) { w.figure(c.figure(s.trajectory, FigureRef::Kind::file, "the trajectory (CSV, as `linkage simulate`)")); });
+    c.both([&](Writer& w) {
+      w.figure(c.figure(s.trajectory, FigureRef::Kind::file, "the trajectory (CSV, as `linkage simulate`)"));
+    });
 }
 
 void run_plot(RunContext& c, const Step& step, const PlotStep& s) {
@@ -274,8 +297,9 @@ void run_plot(RunContext& c, const Step& step, const PlotStep& s) {
 void run_compare(RunContext& c, const Step& step, const CompareStep& s) {
   const nlohmann::json results = c.cached(step, [&] { return compare(c, step, s); });
   const ResultTable table = table_from_json(results.at("table"));
-  const std::string note = "Final error: largest difference of x1, y1, θ1, θ2 at the end from DOP853 at rtol = atol = " +
-                           format_significant(kReferenceTolerance, 1) + "; energy error relative to the energy scale.";
+  const std::string note =
+      "Final error: largest difference of x1, y1, θ1, θ2 at the end from DOP853 at rtol = atol = " +
+      format_significant(kReferenceTolerance, 1) + "; energy error relative to the energy scale.";
   c.both([&](Writer& w) { w.table(table, s.caption.empty() ? note : s.caption + " " + note); });
   if (s.plot) c.both([&](Writer& w) { w.figure(c.figure(s.out + ".png", FigureRef::Kind::image, "")); });
   if (s.cost_plot) c.both([&](Writer& w) { w.figure(c.figure(s.out + "-cost.png", FigureRef::Kind::image, "")); });

@@ -22,8 +22,8 @@ class TextTemplate {
 
  private:
   struct Part {
-    std::string literal;             // text before the placeholder
-    std::vector<Expression> value;   // zero or one expression
+    std::string literal;            // text before the placeholder
+    std::vector<Expression> value;  // zero or one expression
     int digits = 6;
   };
   std::vector<Part> parts_;

@@ -24,22 +24,35 @@ std::string position(const std::string& file, const toml::source_region& where) 
 
 std::string type_phrase(const toml::node& node) {
   switch (node.type()) {
-    case toml::node_type::string: return "a string";
-    case toml::node_type::integer: return "an integer";
-    case toml::node_type::floating_point: return "a float";
-    case toml::node_type::boolean: return "a boolean";
-    case toml::node_type::array: return "an array";
-    case toml::node_type::table: return "a table";
-    case toml::node_type::date: return "a date";
-    case toml::node_type::time: return "a time";
-    case toml::node_type::date_time: return "a date-time";
-    default: return "nothing";
+    case toml::node_type::string:
+      return "a string";
+    case toml::node_type::integer:
+      return "an integer";
+    case toml::node_type::floating_point:
+      return "a float";
+    case toml::node_type::boolean:
+      return "a boolean";
+    case toml::node_type::array:
+      return "an array";
+    case toml::node_type::table:
+      return "a table";
+    case toml::node_type::date:
+      return "a date";
+    case toml::node_type::time:
+      return "a time";
+    case toml::node_type::date_time:
+      return "a date-time";
+    default:
+      return "nothing";
   }
 }
 
-TableReader::TableReader(const toml::table& table, std::string file, std::string context,
-                         std::span<const KeySpec> keys, std::vector<std::string_view> extra_keys)
-    : table_(table), file_(std::move(file)), context_(std::move(context)), keys_(keys),
+TableReader::TableReader(const toml::table& table, std::string file, std::string context, std::span<const KeySpec> keys,
+                         std::vector<std::string_view> extra_keys)
+    : table_(table),
+      file_(std::move(file)),
+      context_(std::move(context)),
+      keys_(keys),
       extra_keys_(std::move(extra_keys)) {}
 
 void TableReader::reject_unknown_keys() const {
@@ -57,7 +70,8 @@ void TableReader::reject_unknown_keys() const {
       first = &key;
   }
   if (first == nullptr) return;
-  std::string message = position(file_, first->source()) + ": " + context_ + ": unknown key '" + std::string(first->str()) + "'";
+  std::string message =
+      position(file_, first->source()) + ": " + context_ + ": unknown key '" + std::string(first->str()) + "'";
   if (auto close = closest_match(first->str(), allowed)) message += " (did you mean '" + std::string(*close) + "'?)";
   throw Error::input(message + "; valid keys: " + join(allowed));
 }
@@ -94,9 +108,12 @@ std::optional<double> TableReader::number(std::string_view key, double lo, doubl
   const toml::node* n = node(key);
   if (n == nullptr) return std::nullopt;
   double value = 0;
-  if (const auto* f = n->as_floating_point()) value = f->get();
-  else if (const auto* i = n->as_integer()) value = static_cast<double>(i->get());
-  else fail(key, q(key) + " must be a number, got " + type_phrase(*n));
+  if (const auto* f = n->as_floating_point())
+    value = f->get();
+  else if (const auto* i = n->as_integer())
+    value = static_cast<double>(i->get());
+  else
+    fail(key, q(key) + " must be a number, got " + type_phrase(*n));
   if (!std::isfinite(value)) fail(key, q(key) + " must be a finite number");
   if (value < lo || value > hi)
     fail(key, q(key) + " = " + format_roundtrip(value) + " is out of range; " + std::string(rule));
@@ -110,8 +127,8 @@ std::optional<std::int64_t> TableReader::integer(std::string_view key, std::int6
   if (i == nullptr) fail(key, q(key) + " must be an integer, got " + type_phrase(*n));
   const std::int64_t value = i->get();
   if (value < lo || value > hi)
-    fail(key, q(key) + " = " + std::to_string(value) + " is out of range; valid: " +
-                  std::to_string(lo) + " to " + std::to_string(hi));
+    fail(key, q(key) + " = " + std::to_string(value) + " is out of range; valid: " + std::to_string(lo) + " to " +
+                  std::to_string(hi));
   return value;
 }
 
@@ -139,7 +156,8 @@ std::optional<std::vector<std::string>> TableReader::strings(std::string_view ke
   return out;
 }
 
-std::optional<std::string> TableReader::choice(std::string_view key, const std::vector<std::string_view>& choices) const {
+std::optional<std::string> TableReader::choice(std::string_view key,
+                                               const std::vector<std::string_view>& choices) const {
   auto value = string(key);
   if (!value) return value;
   for (std::string_view c : choices)

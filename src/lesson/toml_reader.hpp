@@ -2,14 +2,14 @@
 // Typed, position-aware reading of one TOML table of a lesson. Every error is one line
 // "FILE:LINE:COLUMN: CONTEXT: problem; valid choices", pointing at the offending key
 // or value, with the closest valid spelling for a typo.
+#include <toml++/toml.h>
+
 #include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <toml++/toml.h>
 
 namespace linkage::lesson {
 
@@ -58,7 +58,8 @@ class TableReader {
   /// A string or a list of strings.
   [[nodiscard]] std::optional<std::vector<std::string>> strings(std::string_view key) const;
   /// A string that must be one of `choices`.
-  [[nodiscard]] std::optional<std::string> choice(std::string_view key, const std::vector<std::string_view>& choices) const;
+  [[nodiscard]] std::optional<std::string> choice(std::string_view key,
+                                                  const std::vector<std::string_view>& choices) const;
   /// The array of tables (inline or [[...]]) under `key`.
   [[nodiscard]] std::vector<const toml::table*> tables(std::string_view key) const;
 

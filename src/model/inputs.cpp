@@ -41,7 +41,8 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
     row[0] = i;
     for (std::size_t j = 1; j <= b.size(); ++j) {
       const std::size_t up = row[j];
-      const bool same = std::tolower(static_cast<unsigned char>(a[i - 1])) == std::tolower(static_cast<unsigned char>(b[j - 1]));
+      const bool same =
+          std::tolower(static_cast<unsigned char>(a[i - 1])) == std::tolower(static_cast<unsigned char>(b[j - 1]));
       row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (same ? 0 : 1)});
       diagonal = up;
     }
@@ -85,8 +86,7 @@ const std::string& Inputs::origin(const InputKey& key) const { return origins_[i
 
 void Inputs::set(const InputKey& key, double value, std::string origin) {
   if (!std::isfinite(value))
-    throw Error::invalid(origin, std::string(key.key) + " = " + format_roundtrip(value) +
-                       " is not a finite number");
+    throw Error::invalid(origin, std::string(key.key) + " = " + format_roundtrip(value) + " is not a finite number");
   if (key.param != nullptr)
     params_.*key.param = value;
   else
@@ -117,8 +117,8 @@ void Inputs::validate() const {
   auto fail = [&](const char* key, const std::string& rule) {
     const InputKey& k = *find_input_key(key);
     // About the value's origin (a flag, a file position): the reader that recorded it.
-    throw Error::invalid(origin(k), std::string(k.key) + " = " + format_roundtrip(value(k)) + " " + std::string(k.unit) +
-                                        " is out of range; " + rule);
+    throw Error::invalid(origin(k), std::string(k.key) + " = " + format_roundtrip(value(k)) + " " +
+                                        std::string(k.unit) + " is out of range; " + rule);
   };
   if (!(params_.L > 0)) fail("L", "the block length must be > 0");
   if (!(params_.w > 0)) fail("w", "the block width must be > 0");
@@ -140,7 +140,8 @@ void apply_toml(Inputs& inputs, const toml::table& table, const std::string& fil
     const InputKey* key = find_input_key(name.str());
     if (key == nullptr) {
       const auto& key_where = name.source().begin;
-      std::string message = source_position(file, key_where.line, key_where.column) + ": unknown key '" + std::string(name.str()) + "'";
+      std::string message =
+          source_position(file, key_where.line, key_where.column) + ": unknown key '" + std::string(name.str()) + "'";
       if (auto close = closest_input_key(name.str())) message += " (did you mean '" + std::string(*close) + "'?)";
       throw Error::input(message + "; valid keys: " + input_key_list());
     }

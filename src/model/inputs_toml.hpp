@@ -1,8 +1,8 @@
 #pragma once
 // Inputs from a parsed TOML table: a --config file, or a lesson's parameter table.
-#include <string>
-
 #include <toml++/toml.h>
+
+#include <string>
 
 #include "model/inputs.hpp"
 

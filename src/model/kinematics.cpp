@@ -32,8 +32,9 @@ BodyState body_state(const Params& p, const State& s) {
 Invariants invariants(const Params& p, const BodyState& s) {
   const double I = p.inertia_centroidal();
   Invariants r;
-  r.kinetic_energy = 0.5 * p.m * (s.x1_dot * s.x1_dot + s.y1_dot * s.y1_dot + s.x2_dot * s.x2_dot + s.y2_dot * s.y2_dot) +
-                     0.5 * I * (s.theta1_dot * s.theta1_dot + s.theta2_dot * s.theta2_dot);
+  r.kinetic_energy =
+      0.5 * p.m * (s.x1_dot * s.x1_dot + s.y1_dot * s.y1_dot + s.x2_dot * s.x2_dot + s.y2_dot * s.y2_dot) +
+      0.5 * I * (s.theta1_dot * s.theta1_dot + s.theta2_dot * s.theta2_dot);
   r.potential_energy = p.m * p.g * (s.y1 + s.y2);
   r.energy = r.kinetic_energy + r.potential_energy;
   r.momentum = {p.m * (s.x1_dot + s.x2_dot), p.m * (s.y1_dot + s.y2_dot)};

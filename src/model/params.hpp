@@ -8,11 +8,11 @@
 namespace linkage {
 
 struct Params {
-  double L = 0.3;    // block length, m
-  double w = 0.1;    // block width, m
-  double b = 0.04;   // pin distance from one end of each block, m
-  double m = 0.1;    // mass of each block, kg
-  double g = 9.81;   // gravitational acceleration along -y, m/s^2
+  double L = 0.3;   // block length, m
+  double w = 0.1;   // block width, m
+  double b = 0.04;  // pin distance from one end of each block, m
+  double m = 0.1;   // mass of each block, kg
+  double g = 9.81;  // gravitational acceleration along -y, m/s^2
 
   [[nodiscard]] double inertia_centroidal() const { return m * (w * w + L * L) / 12.0; }
   [[nodiscard]] double pin_offset() const { return L / 2.0 - b; }

@@ -7,7 +7,7 @@
 namespace linkage {
 
 struct State {
-  double x1 = 1.0, y1 = 2.0, theta1 = 0.1, theta2 = 0.2;                  // m, m, rad, rad
+  double x1 = 1.0, y1 = 2.0, theta1 = 0.1, theta2 = 0.2;                      // m, m, rad, rad
   double x1_dot = 0.15, y1_dot = 0.25, theta1_dot = 0.35, theta2_dot = 0.45;  // m/s, rad/s
 
   /// (x1, y1, theta1, theta2, x1_dot, y1_dot, theta1_dot, theta2_dot)
@@ -33,9 +33,7 @@ struct BodyState {
     return {v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], v[9], v[10], v[11]};
   }
   /// Block 1's coordinates and both angles, dropping x2 and y2.
-  [[nodiscard]] State generalized() const {
-    return {x1, y1, theta1, theta2, x1_dot, y1_dot, theta1_dot, theta2_dot};
-  }
+  [[nodiscard]] State generalized() const { return {x1, y1, theta1, theta2, x1_dot, y1_dot, theta1_dot, theta2_dot}; }
 };
 
 }  // namespace linkage

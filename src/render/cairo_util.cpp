@@ -7,12 +7,13 @@
 namespace linkage::cairo {
 namespace {
 void throw_unless_success(cairo_status_t status, std::string_view what) {
-  if (status != CAIRO_STATUS_SUCCESS)
-    throw Error::failure(std::string(what) + ": " + cairo_status_to_string(status));
+  if (status != CAIRO_STATUS_SUCCESS) throw Error::failure(std::string(what) + ": " + cairo_status_to_string(status));
 }
 }  // namespace
 
-void check(cairo_surface_t* surface, std::string_view what) { throw_unless_success(cairo_surface_status(surface), what); }
+void check(cairo_surface_t* surface, std::string_view what) {
+  throw_unless_success(cairo_surface_status(surface), what);
+}
 void check(cairo_t* context, std::string_view what) { throw_unless_success(cairo_status(context), what); }
 
 SurfacePtr image_surface(int width, int height) {

@@ -5,7 +5,8 @@
 namespace linkage {
 
 Camera::Camera(const View& view, int width, int height)
-    : width_(width), height_(height),
+    : width_(width),
+      height_(height),
       scale_(std::min(width / (view.xmax - view.xmin), height / (view.ymax - view.ymin))),
       centre_(0.5 * (view.xmin + view.xmax), 0.5 * (view.ymin + view.ymax)) {}
 

@@ -14,21 +14,25 @@ namespace {
 constexpr std::size_t kMaxTargets = 8;  // frame buffers remembered (a pipeline uses a few)
 
 bool any_arrows(const SceneOptions& options) {
-  return std::any_of(options.arrow_scales.begin(), options.arrow_scales.end(), [](const ArrowScale& s) { return s.drawable(); });
+  return std::any_of(options.arrow_scales.begin(), options.arrow_scales.end(),
+                     [](const ArrowScale& s) { return s.drawable(); });
 }
 
 // The camera of the first frame: how far the scene reaches decides the scale.
-Camera first_camera(const Params& p, const Motion& motion, const RenderSettings& settings, const SceneOptions& options) {
+Camera first_camera(const Params& p, const Motion& motion, const RenderSettings& settings,
+                    const SceneOptions& options) {
   const double arrows = any_arrows(options) ? default_longest_arrow(p) : 0.0;
   switch (settings.camera) {
-    case CameraMode::fixed: return {settings.view, settings.width, settings.height};
+    case CameraMode::fixed:
+      return {settings.view, settings.width, settings.height};
     case CameraMode::fit: {
       Bounds bounds = motion_bounds(p, motion);
       bounds.min -= Vec2(arrows, arrows);
       bounds.max += Vec2(arrows, arrows);
       return {view_of(bounds, 0.04), settings.width, settings.height};
     }
-    case CameraMode::follow: break;
+    case CameraMode::follow:
+      break;
   }
   const double reach = 1.12 * (max_radius_about_com(p, motion) + arrows);
   return {view_around(system_com(motion.samples.front().state), reach), settings.width, settings.height};
@@ -47,10 +51,13 @@ std::vector<LegendRow> legend_rows(const Theme& theme, const SceneOptions& optio
     return describe_arrow_scale(options.arrow_scales[static_cast<std::size_t>(kind)], unit);
   };
   std::vector<LegendRow> rows;
-  if (shown.has(Element::pin_force)) rows.push_back({Glyph::arrow, theme.pin_force, "pin force", scale(ArrowKind::pin_force, "N")});
-  if (shown.has(Element::gravity)) rows.push_back({Glyph::arrow, theme.gravity, "weight", scale(ArrowKind::gravity, "N")});
-  if (shown.has(Element::velocity)) rows.push_back({Glyph::arrow, theme.velocity, follow ? "velocity relative to G" : "velocity",
-                                                     scale(ArrowKind::velocity, "m/s")});
+  if (shown.has(Element::pin_force))
+    rows.push_back({Glyph::arrow, theme.pin_force, "pin force", scale(ArrowKind::pin_force, "N")});
+  if (shown.has(Element::gravity))
+    rows.push_back({Glyph::arrow, theme.gravity, "weight", scale(ArrowKind::gravity, "N")});
+  if (shown.has(Element::velocity))
+    rows.push_back({Glyph::arrow, theme.velocity, follow ? "velocity relative to G" : "velocity",
+                    scale(ArrowKind::velocity, "m/s")});
   if (shown.has(Element::trail))
     rows.push_back({Glyph::line, theme.trail, "path of P", "last " + seconds_text(options.trail_seconds)});
   if (shown.has(Element::com)) rows.push_back({Glyph::com, theme.com, "centres of mass", ""});
@@ -109,8 +116,8 @@ Camera ClipRenderer::camera_at(std::size_t index) const {
 
 ClipRenderer::Target& ClipRenderer::target_for(Frame& frame) {
   if (frame.width != settings_.width || frame.height != settings_.height)
-    throw Error::failure("frame is " + std::to_string(frame.width) + "x" + std::to_string(frame.height) + ", expected " +
-                         std::to_string(settings_.width) + "x" + std::to_string(settings_.height));
+    throw Error::failure("frame is " + std::to_string(frame.width) + "x" + std::to_string(frame.height) +
+                         ", expected " + std::to_string(settings_.width) + "x" + std::to_string(settings_.height));
   for (Target& target : targets_)
     if (target.pixels == frame.pixels.data()) return target;
   if (targets_.size() == kMaxTargets) targets_.erase(targets_.begin());  // only when callers keep new buffers coming
@@ -124,7 +131,8 @@ ClipRenderer::Target& ClipRenderer::target_for(Frame& frame) {
 
 void ClipRenderer::paint_static_background(cairo_t* cr) const {
   paint_background(cr, style_, settings_.width, settings_.height);
-  if (settings_.elements.has(Element::grid)) paint_grid(cr, style_, base_camera_, grid_, settings_.width, settings_.height);
+  if (settings_.elements.has(Element::grid))
+    paint_grid(cr, style_, base_camera_, grid_, settings_.width, settings_.height);
   if (settings_.elements.has(Element::axes))
     paint_axes(cr, style_, base_camera_, grid_, settings_.width, settings_.height,
                {title_layout_.rect, legend_rect_, scale_rect_, hud_rect_});

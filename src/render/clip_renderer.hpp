@@ -4,12 +4,12 @@
 // drawn once into cached surfaces and copied into each frame; per frame only the scene
 // and the HUD are drawn. Raster frames go into core::Frame buffers (ARGB32); vector
 // stills draw everything straight onto a Cairo context (SVG, PDF).
+#include <cairo.h>
+
 #include <chrono>
 #include <cstdint>
 #include <string>
 #include <vector>
-
-#include <cairo.h>
 
 #include "core/frame.hpp"
 #include "model/params.hpp"
@@ -35,18 +35,19 @@ struct RenderStats {
   std::int64_t samples = 0;             // states taken from the simulation
   bool encoder_opened = false;          // an MP4 encoder was opened
   std::int64_t png_files_written = 0;
-  double simulate_seconds = 0;          // sampling the motion (integration, pin forces)
-  double draw_seconds = 0;              // Cairo drawing into frames
-  double convert_seconds = 0;           // colour conversion for the encoder (libswscale)
-  double encode_seconds = 0;            // video encoding and muxing
-  double png_seconds = 0;               // PNG compression and writing
+  double simulate_seconds = 0;  // sampling the motion (integration, pin forces)
+  double draw_seconds = 0;      // Cairo drawing into frames
+  double convert_seconds = 0;   // colour conversion for the encoder (libswscale)
+  double encode_seconds = 0;    // video encoding and muxing
+  double png_seconds = 0;       // PNG compression and writing
 };
 
 class ClipRenderer {
  public:
   /// `run` is the HUD's second line (e.g. "Case 3 · dop853"). The motion must outlive the
   /// renderer. Chooses arrow scales from the whole motion and the camera for it.
-  ClipRenderer(const Params& params, const Motion& motion, const RenderSettings& settings, Theme theme, std::string run);
+  ClipRenderer(const Params& params, const Motion& motion, const RenderSettings& settings, Theme theme,
+               std::string run);
   ClipRenderer(const ClipRenderer&) = delete;
   ClipRenderer& operator=(const ClipRenderer&) = delete;
   ~ClipRenderer();

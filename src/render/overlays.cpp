@@ -76,7 +76,7 @@ void for_each_grid_line(double low, double high, double anchor, double spacing, 
 }
 
 constexpr double kLegendGlyphWidth = 30;  // in units of Style::u
-constexpr double kTitleHalo = 0.3;         // halo width over font size
+constexpr double kTitleHalo = 0.3;        // halo width over font size
 
 // The widest glyph-and-name of the legend's rows, over rows with a note (where the
 // notes column starts) or over all rows.
@@ -156,8 +156,10 @@ void paint_axes(cairo_t* cr, const Style& style, const Camera& camera, const Gri
   std::array<char, 64> label{};
   const auto format = [&](const char* name, double value) {
     if (std::fabs(value) < 0.5 * spacing) value = 0;  // no "-0.0"
-    if (name == nullptr) std::snprintf(label.data(), label.size(), "%.*f", decimals, value);
-    else std::snprintf(label.data(), label.size(), "%s = %.*f m", name, decimals, value);
+    if (name == nullptr)
+      std::snprintf(label.data(), label.size(), "%.*f", decimals, value);
+    else
+      std::snprintf(label.data(), label.size(), "%s = %.*f m", name, decimals, value);
     use_minus_signs(label);
     return label.data();
   };
@@ -174,7 +176,8 @@ void paint_axes(cairo_t* cr, const Style& style, const Camera& camera, const Gri
       const char* s = format(i == named ? name : nullptr, ticks[i].value);
       const Rect r = box(bottom, ticks[i].at, s);
       if (!clear(r)) continue;
-      text::draw_with_halo(cr, font, r.x, r.y + m.ascent, s, style.theme->text_muted, style.theme->background, 0.35 * font.size);
+      text::draw_with_halo(cr, font, r.x, r.y + m.ascent, s, style.theme->text_muted, style.theme->background,
+                           0.35 * font.size);
     }
   };
   std::vector<Tick> ticks;
@@ -217,7 +220,8 @@ Rect legend_rect(cairo_t* cr, const Style& style, const std::vector<LegendRow>& 
   const text::Font font{style.text_size(), false};
   const double u = style.u;
   double notes = 0;
-  for (const LegendRow& row : rows) notes = std::max(notes, row.note.empty() ? 0.0 : text::width(cr, font, row.note.c_str()));
+  for (const LegendRow& row : rows)
+    notes = std::max(notes, row.note.empty() ? 0.0 : text::width(cr, font, row.note.c_str()));
   const double inner_width = std::max(legend_names_width(cr, style, rows, false),
                                       notes > 0 ? legend_names_width(cr, style, rows, true) + 16 * u + notes : 0.0);
   const double row_height = 1.6 * font.size;
@@ -242,8 +246,12 @@ void paint_legend(cairo_t* cr, const Style& style, const std::vector<LegendRow>&
     double x = rect.x + 10 * u;
     const double glyph_width = kLegendGlyphWidth * u;
     switch (row.glyph) {
-      case LegendRow::Glyph::arrow: paint_arrow(cr, style, {x, centre}, {x + glyph_width, centre}, row.colour); break;
-      case LegendRow::Glyph::com: paint_com_symbol(cr, style, {x + 0.5 * glyph_width, centre}, style.com_radius()); break;
+      case LegendRow::Glyph::arrow:
+        paint_arrow(cr, style, {x, centre}, {x + glyph_width, centre}, row.colour);
+        break;
+      case LegendRow::Glyph::com:
+        paint_com_symbol(cr, style, {x + 0.5 * glyph_width, centre}, style.com_radius());
+        break;
       case LegendRow::Glyph::line: {
         // Fading like the trail: transparent at its old end.
         std::unique_ptr<cairo_pattern_t, decltype(&cairo_pattern_destroy)> fade(
@@ -258,16 +266,19 @@ void paint_legend(cairo_t* cr, const Style& style, const std::vector<LegendRow>&
         cairo_stroke(cr);
         break;
       }
-      case LegendRow::Glyph::none: break;
+      case LegendRow::Glyph::none:
+        break;
     }
     if (row.glyph != LegendRow::Glyph::none) x += glyph_width + 8 * u;
-    text::draw(cr, font, x, baseline, row.name.c_str(), row.glyph == LegendRow::Glyph::none ? theme.text_muted : theme.text);
+    text::draw(cr, font, x, baseline, row.name.c_str(),
+               row.glyph == LegendRow::Glyph::none ? theme.text_muted : theme.text);
     if (!row.note.empty()) text::draw(cr, font, notes_x, baseline, row.note.c_str(), theme.text_muted);
     y += row_height;
   }
 }
 
-Rect scale_bar_rect(cairo_t* cr, const Style& style, const std::string& label, double length_px, int width, int height) {
+Rect scale_bar_rect(cairo_t* cr, const Style& style, const std::string& label, double length_px, int width,
+                    int height) {
   const text::Font font{style.text_size(), false};
   const text::Metrics m = text::metrics(cr, font);
   const double u = style.u;
@@ -301,10 +312,14 @@ void paint_scale_bar(cairo_t* cr, const Style& style, const std::string& label, 
 
 void format_hud(HudText& hud, double t, double energy_error, double constraint_error) {
   std::snprintf(hud.time.data(), hud.time.size(), "t = %.2f s", t);
-  if (energy_error == 0.0) std::snprintf(hud.energy.data(), hud.energy.size(), "0");
-  else std::snprintf(hud.energy.data(), hud.energy.size(), "%+.1e", energy_error);
-  if (constraint_error == 0.0) std::snprintf(hud.constraint.data(), hud.constraint.size(), "0 m");
-  else std::snprintf(hud.constraint.data(), hud.constraint.size(), "%.1e m", constraint_error);
+  if (energy_error == 0.0)
+    std::snprintf(hud.energy.data(), hud.energy.size(), "0");
+  else
+    std::snprintf(hud.energy.data(), hud.energy.size(), "%+.1e", energy_error);
+  if (constraint_error == 0.0)
+    std::snprintf(hud.constraint.data(), hud.constraint.size(), "0 m");
+  else
+    std::snprintf(hud.constraint.data(), hud.constraint.size(), "%.1e m", constraint_error);
   use_minus_signs(hud.time);
   use_minus_signs(hud.energy);
   use_minus_signs(hud.constraint);
@@ -319,7 +334,8 @@ text::Font hud_time_font(const Style& style) { return {1.25 * style.text_size(),
 Rect hud_rect(cairo_t* cr, const Style& style, const HudText& hud, int width) {
   const text::Font font{style.text_size(), false};
   const double u = style.u;
-  const double values = std::max(text::width(cr, font, hud.energy.data()), text::width(cr, font, hud.constraint.data()));
+  const double values =
+      std::max(text::width(cr, font, hud.energy.data()), text::width(cr, font, hud.constraint.data()));
   const double labels = std::max(text::width(cr, font, kEnergyLabel), text::width(cr, font, kConstraintLabel));
   const double inner_width = std::max({text::width(cr, hud_time_font(style), hud.time.data()),
                                        text::width(cr, font, hud.run.data()), labels + 14 * u + values});
@@ -337,7 +353,8 @@ void paint_hud(cairo_t* cr, const Style& style, const HudText& hud, const Rect& 
   const double left = rect.x + 10 * u, right = rect.x + rect.width - 10 * u;
   const text::Metrics tm = text::metrics(cr, time_font), m = text::metrics(cr, font);
   double y = rect.y + 6 * u;
-  text::draw(cr, time_font, left, y + 0.5 * (1.5 * time_font.size + tm.ascent - tm.descent), hud.time.data(), theme.text);
+  text::draw(cr, time_font, left, y + 0.5 * (1.5 * time_font.size + tm.ascent - tm.descent), hud.time.data(),
+             theme.text);
   y += 1.5 * time_font.size;
   const double row = 1.6 * font.size;
   const double offset = 0.5 * (row + m.ascent - m.descent);

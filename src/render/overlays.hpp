@@ -2,11 +2,11 @@
 // Everything drawn in frame coordinates rather than world ones: the background grid and
 // axis ticks, the title, the legend (with each arrow scale), the scale bar and the HUD.
 // All but the HUD are the same in every frame, so the raster renderer draws them once.
+#include <cairo.h>
+
 #include <array>
 #include <string>
 #include <vector>
-
-#include <cairo.h>
 
 #include "render/camera.hpp"
 #include "render/style.hpp"

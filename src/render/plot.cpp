@@ -31,7 +31,8 @@ std::string number(double value) { return format_significant(value, 6); }
 void validate_axis(const Axis& axis, const std::string& where) {
   for (const auto& [limit, name] : {std::pair{axis.min, "min"}, std::pair{axis.max, "max"}}) {
     if (!limit) continue;
-    if (!std::isfinite(*limit)) throw Error::input(where + " " + name + " must be a finite number, got " + number(*limit));
+    if (!std::isfinite(*limit))
+      throw Error::input(where + " " + name + " must be a finite number, got " + number(*limit));
     if (axis.scale == Scale::log && !(*limit > 0))
       throw Error::input(where + " " + name + " " + number(*limit) + " must be > 0 on a log axis");
   }
@@ -61,9 +62,9 @@ Report draw_on(cairo_surface_t* surface, const Plot& plot, const Canvas& canvas,
 Report write_png(const Plot& plot, const Canvas& canvas, std::ostream& out, const std::string& origin,
                  const std::string& what) {
   const Canvas pixels{std::round(canvas.width), std::round(canvas.height), canvas.font_size};
-  const SurfacePtr surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, static_cast<int>(pixels.width),
-                                                      static_cast<int>(pixels.height)),
-                           &cairo_surface_destroy);
+  const SurfacePtr surface(
+      cairo_image_surface_create(CAIRO_FORMAT_RGB24, static_cast<int>(pixels.width), static_cast<int>(pixels.height)),
+      &cairo_surface_destroy);
   const Report report = draw_on(surface.get(), plot, pixels, origin, what);
   cairo_surface_flush(surface.get());
   check(cairo_surface_write_to_png_stream(surface.get(), &append_to_stream, &out), what);
@@ -93,8 +94,8 @@ std::string renumber_svg_surfaces(const std::string& svg) {
   return out;
 }
 
-Report write_vector(Format format, const Plot& plot, const Canvas& canvas, std::ostream& out,
-                    const std::string& origin, const std::string& what) {
+Report write_vector(Format format, const Plot& plot, const Canvas& canvas, std::ostream& out, const std::string& origin,
+                    const std::string& what) {
   std::ostringstream buffer;
   const SurfacePtr surface(
       format == Format::svg
@@ -121,18 +122,18 @@ Report write_vector(Format format, const Plot& plot, const Canvas& canvas, std::
 const std::array<Rgb, palette_size>& palette(Theme theme) {
   // Okabe & Ito (2008). On white, yellow comes last; on dark grey, black becomes light
   // grey and the dark blue comes last.
-  static const std::array<Rgb, palette_size> light{rgb(0, 114, 178),  rgb(213, 94, 0),  rgb(0, 158, 115),
+  static const std::array<Rgb, palette_size> light{rgb(0, 114, 178),   rgb(213, 94, 0),  rgb(0, 158, 115),
                                                    rgb(204, 121, 167), rgb(230, 159, 0), rgb(86, 180, 233),
                                                    rgb(0, 0, 0),       rgb(240, 228, 66)};
-  static const std::array<Rgb, palette_size> dark{rgb(86, 180, 233),  rgb(230, 159, 0), rgb(0, 158, 115),
+  static const std::array<Rgb, palette_size> dark{rgb(86, 180, 233),  rgb(230, 159, 0),   rgb(0, 158, 115),
                                                   rgb(240, 228, 66),  rgb(204, 121, 167), rgb(213, 94, 0),
                                                   rgb(224, 224, 224), rgb(0, 114, 178)};
   return theme == Theme::dark ? dark : light;
 }
 
 double AxisMap::operator()(double value) const {
-  const double fraction = scale == Scale::log ? std::log10(value / min) / std::log10(max / min)
-                                              : (value - min) / (max - min);
+  const double fraction =
+      scale == Scale::log ? std::log10(value / min) / std::log10(max / min) : (value - min) / (max - min);
   return from + fraction * (to - from);
 }
 
@@ -168,8 +169,8 @@ void validate(const Plot& plot, const Canvas& canvas, const std::string& origin)
     const Series& series = plot.series[i];
     if (series.color && *series.color >= palette_size)
       throw Error::invalid(origin, "series " + std::to_string(i + 1) + " '" + series.name + "': colour slot " +
-                         std::to_string(*series.color) + " is outside the palette 0.." +
-                         std::to_string(palette_size - 1));
+                                       std::to_string(*series.color) + " is outside the palette 0.." +
+                                       std::to_string(palette_size - 1));
   }
 }
 
@@ -177,7 +178,7 @@ Report write(const Plot& plot, const std::filesystem::path& target, const Canvas
   const std::optional<Format> format = format_of(target);
   if (!format)
     throw Error::invalid(origin, "'" + target.string() + "' has an unknown plot format '" +
-                       target.extension().string() + "' (valid: .png, .svg, .pdf)");
+                                     target.extension().string() + "' (valid: .png, .svg, .pdf)");
   validate(plot, canvas, origin);
   AtomicFile file(target, origin, /*binary=*/true);
   const std::string what = origin + ": cannot write plot '" + target.string() + "'";

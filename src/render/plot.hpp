@@ -115,8 +115,8 @@ struct Geometry {
 /// What draw() and write() did with the data.
 struct Report {
   Geometry geometry{};
-  std::size_t dropped_nonpositive = 0;  ///< Points with x <= 0 or y <= 0 on a log axis.
-  std::size_t skipped_nonfinite = 0;    ///< Points with a NaN, infinite or beyond +-1e300 coordinate.
+  std::size_t dropped_nonpositive = 0;     ///< Points with x <= 0 or y <= 0 on a log axis.
+  std::size_t skipped_nonfinite = 0;       ///< Points with a NaN, infinite or beyond +-1e300 coordinate.
   LegendPlace legend = LegendPlace::none;  ///< Where the legend went (`best` resolved).
   /// One line for the user about dropped or skipped points, empty when none were.
   [[nodiscard]] std::string warning() const;

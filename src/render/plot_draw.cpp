@@ -54,8 +54,8 @@ std::size_t color_slot(const Series& series, std::size_t index) { return series.
 
 Marker marker_shape(const Series& series, std::size_t index) {
   if (series.marker != Marker::automatic) return series.marker;
-  constexpr Marker cycle[] = {Marker::circle, Marker::square, Marker::triangle, Marker::diamond,
-                              Marker::cross,  Marker::plus};
+  constexpr Marker cycle[] = {Marker::circle,  Marker::square, Marker::triangle,
+                              Marker::diamond, Marker::cross,  Marker::plus};
   return cycle[color_slot(series, index) % std::size(cycle)];
 }
 
@@ -65,8 +65,14 @@ bool has_markers(const Series& s) { return s.style != Style::line; }
 class Drawing {
  public:
   Drawing(cairo_t* cr, const Plot& plot, const Canvas& canvas, const std::string& origin)
-      : cr_(cr), plot_(plot), canvas_(canvas), origin_(origin), m_(canvas.font_size),
-        colors_(theme_colors(plot.theme)), data_(detail::clean(plot)), limits_(detail::resolve_limits(plot, data_)) {}
+      : cr_(cr),
+        plot_(plot),
+        canvas_(canvas),
+        origin_(origin),
+        m_(canvas.font_size),
+        colors_(theme_colors(plot.theme)),
+        data_(detail::clean(plot)),
+        limits_(detail::resolve_limits(plot, data_)) {}
 
   Report run() {
     set_plot_font_options(cr_);
@@ -170,9 +176,9 @@ class Drawing {
   void require_room_for_data() const {
     const double f = canvas_.font_size;
     if (g_.right - g_.left < 3 * f || g_.bottom - g_.top < 3 * f)
-      throw Error::input(origin_ + ": a " + format_significant(canvas_.width, 6) + " x " +
-                         format_significant(canvas_.height, 6) + " canvas is too small for this plot's labels at font size " +
-                         format_significant(canvas_.font_size, 6));
+      throw Error::input(
+          origin_ + ": a " + format_significant(canvas_.width, 6) + " x " + format_significant(canvas_.height, 6) +
+          " canvas is too small for this plot's labels at font size " + format_significant(canvas_.font_size, 6));
   }
 
   /// `font`, shrunk (to 60 % at most) so that `text` fits in `room`.
@@ -220,19 +226,24 @@ class Drawing {
     double x = g_.right - margin - legend_width_;
     double y = g_.top + margin;
     switch (place) {
-      case LegendPlace::top_left: x = g_.left + margin; break;
+      case LegendPlace::top_left:
+        x = g_.left + margin;
+        break;
       case LegendPlace::bottom_left:
         x = g_.left + margin;
         y = g_.bottom - margin - legend_height_;
         break;
-      case LegendPlace::bottom_right: y = g_.bottom - margin - legend_height_; break;
+      case LegendPlace::bottom_right:
+        y = g_.bottom - margin - legend_height_;
+        break;
       case LegendPlace::outside_right:
         x = g_.right + 0.8 * canvas_.font_size;
         y = g_.top;
         break;
       case LegendPlace::top_right:
       case LegendPlace::best:
-      case LegendPlace::none: break;
+      case LegendPlace::none:
+        break;
     }
     x = std::round(x);
     y = std::round(y);
@@ -319,10 +330,18 @@ class Drawing {
     const double dotted[] = {0, 2.2 * w};
     const double dash_dot[] = {4 * w, 2 * w, 0, 2 * w};
     switch (series.dash) {
-      case Dash::solid: cairo_set_dash(cr_, nullptr, 0, 0); break;
-      case Dash::dashed: cairo_set_dash(cr_, dashed, 2, 0); break;
-      case Dash::dotted: cairo_set_dash(cr_, dotted, 2, 0); break;
-      case Dash::dash_dot: cairo_set_dash(cr_, dash_dot, 4, 0); break;
+      case Dash::solid:
+        cairo_set_dash(cr_, nullptr, 0, 0);
+        break;
+      case Dash::dashed:
+        cairo_set_dash(cr_, dashed, 2, 0);
+        break;
+      case Dash::dotted:
+        cairo_set_dash(cr_, dotted, 2, 0);
+        break;
+      case Dash::dash_dot:
+        cairo_set_dash(cr_, dash_dot, 4, 0);
+        break;
     }
   }
 
@@ -330,8 +349,13 @@ class Drawing {
     const double r = m_.marker_radius;
     switch (shape) {
       case Marker::automatic:
-      case Marker::circle: cairo_new_sub_path(cr_); cairo_arc(cr_, p.x, p.y, r, 0, 2 * std::numbers::pi); break;
-      case Marker::square: cairo_rectangle(cr_, p.x - 0.85 * r, p.y - 0.85 * r, 1.7 * r, 1.7 * r); break;
+      case Marker::circle:
+        cairo_new_sub_path(cr_);
+        cairo_arc(cr_, p.x, p.y, r, 0, 2 * std::numbers::pi);
+        break;
+      case Marker::square:
+        cairo_rectangle(cr_, p.x - 0.85 * r, p.y - 0.85 * r, 1.7 * r, 1.7 * r);
+        break;
       case Marker::triangle:
         cairo_move_to(cr_, p.x, p.y - 1.2 * r);
         cairo_line_to(cr_, p.x + 1.05 * r, p.y + 0.65 * r);

@@ -24,9 +24,12 @@ double run_size(const TextRun& run, const Font& font) {
 /// Baseline offset of a run, positive upwards.
 double run_rise(const TextRun& run, const Font& font) {
   switch (run.shift) {
-    case TextRun::Shift::superscript: return superscript_rise * font.size;
-    case TextRun::Shift::subscript: return -subscript_drop * font.size;
-    case TextRun::Shift::none: break;
+    case TextRun::Shift::superscript:
+      return superscript_rise * font.size;
+    case TextRun::Shift::subscript:
+      return -subscript_drop * font.size;
+    case TextRun::Shift::none:
+      break;
   }
   return 0.0;
 }

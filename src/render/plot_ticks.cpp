@@ -155,7 +155,8 @@ Ticks log_ticks(double lo, double hi, int max_ticks) {
     if (crowded && !round_mantissa(candidate))
       ticks.minor.push_back(candidate.first);
     else
-      ticks.major.push_back({candidate.first, number_label(candidate.first, scaled(1.0, candidate.second), scientific)});
+      ticks.major.push_back(
+          {candidate.first, number_label(candidate.first, scaled(1.0, candidate.second), scientific)});
   }
   if (ticks.major.size() < 2) return linear_ticks(lo, hi, max_ticks);
   return ticks;

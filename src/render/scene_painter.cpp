@@ -12,9 +12,12 @@ namespace linkage {
 
 const Rgba& arrow_colour(const Theme& theme, ArrowKind kind) {
   switch (kind) {
-    case ArrowKind::pin_force: return theme.pin_force;
-    case ArrowKind::gravity: return theme.gravity;
-    case ArrowKind::velocity: return theme.velocity;
+    case ArrowKind::pin_force:
+      return theme.pin_force;
+    case ArrowKind::gravity:
+      return theme.gravity;
+    case ArrowKind::velocity:
+      return theme.velocity;
   }
   return theme.text;
 }
@@ -103,8 +106,10 @@ void paint_blocks(cairo_t* cr, const Style& style, const DrawList& list, const C
     const std::size_t i = block.index == 1 ? 0 : 1;
     for (std::size_t c = 0; c < block.corners.size(); ++c) {
       const Vec2 p = camera.to_pixels(block.corners[c]);
-      if (c == 0) cairo_move_to(cr, p.x(), p.y());
-      else cairo_line_to(cr, p.x(), p.y());
+      if (c == 0)
+        cairo_move_to(cr, p.x(), p.y());
+      else
+        cairo_line_to(cr, p.x(), p.y());
     }
     cairo_close_path(cr);
     set_colour(cr, style.theme->block_fill[i]);
@@ -124,9 +129,15 @@ void paint_markers(cairo_t* cr, const Style& style, const DrawList& list, const 
   for (const Marker& marker : list.markers) {
     const Vec2 at = camera.to_pixels(marker.at);
     switch (marker.kind) {
-      case MarkerKind::com: paint_com_symbol(cr, style, at, style.com_radius()); break;
-      case MarkerKind::com_system: paint_com_symbol(cr, style, at, style.system_com_radius()); break;
-      case MarkerKind::pin: paint_pin(cr, style, at); break;
+      case MarkerKind::com:
+        paint_com_symbol(cr, style, at, style.com_radius());
+        break;
+      case MarkerKind::com_system:
+        paint_com_symbol(cr, style, at, style.system_com_radius());
+        break;
+      case MarkerKind::pin:
+        paint_pin(cr, style, at);
+        break;
     }
   }
 }
@@ -215,10 +226,12 @@ void paint_labels(cairo_t* cr, const Style& style, const DrawList& list, const C
       const Vec2 beside = tip - 0.5 * style.arrow_head_length() * along;
       const double aside = style.arrow_head_half_width() + 0.8 * style.text_size();
       const std::string s(arrow.tag);
-      for (const Vec2& at : {Vec2(beside + aside * left), Vec2(beside - aside * left), Vec2(tip + 0.9 * style.text_size() * along)}) {
+      for (const Vec2& at :
+           {Vec2(beside + aside * left), Vec2(beside - aside * left), Vec2(tip + 0.9 * style.text_size() * along)}) {
         const TakenBoxes::Box box = text_box(cr, tag_font, at, s.c_str(), 0.15 * style.text_size());
         if (!taken.free(box)) continue;
-        text::draw_centred_with_halo(cr, tag_font, at.x(), at.y(), s.c_str(), arrow_colour(theme, kind), halo, tag_halo);
+        text::draw_centred_with_halo(cr, tag_font, at.x(), at.y(), s.c_str(), arrow_colour(theme, kind), halo,
+                                     tag_halo);
         taken.take(box);
         break;
       }

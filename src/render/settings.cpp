@@ -28,10 +28,11 @@ void check_size(int width, int height, const std::string& origin) {
   const std::string size = std::to_string(width) + "x" + std::to_string(height);
   if (width <= 0 || height <= 0) throw Error::invalid(origin, "size " + size + " must be positive");
   if (width % 2 != 0 || height % 2 != 0)
-    throw Error::invalid(origin, "size " + size + " must have an even width and height (yuv420p video halves the colour resolution)");
+    throw Error::invalid(
+        origin, "size " + size + " must have an even width and height (yuv420p video halves the colour resolution)");
   if (width > kMaxWidth || height > kMaxHeight)
     throw Error::invalid(origin, "size " + size + " is above the largest, " + std::to_string(kMaxWidth) + "x" +
-                       std::to_string(kMaxHeight));
+                                     std::to_string(kMaxHeight));
 }
 
 }  // namespace
@@ -45,18 +46,20 @@ void RenderSettings::validate() const {
   if (fps < 1 || fps > kMaxFps)
     throw Error::invalid("fps", std::to_string(fps) + " is outside 1 .. " + std::to_string(kMaxFps));
   if (!(speed > 0) || !std::isfinite(speed))
-    throw Error::invalid("speed", format_significant(speed, 6) + " must be a positive number (simulated seconds per second of video)");
+    throw Error::invalid(
+        "speed", format_significant(speed, 6) + " must be a positive number (simulated seconds per second of video)");
   if (!(duration > 0) || !std::isfinite(duration))
     throw Error::invalid("duration", format_significant(duration, 6) + " s must be positive");
   if (duration / speed > kMaxVideoSeconds)
     throw Error::invalid("duration", format_significant(duration, 6) + " s at speed " + format_significant(speed, 6) +
-                       " makes " + format_significant(duration / speed, 6) + " s of video; at most " +
-                       format_significant(kMaxVideoSeconds, 6) + " s (an hour)");
+                                         " makes " + format_significant(duration / speed, 6) + " s of video; at most " +
+                                         format_significant(kMaxVideoSeconds, 6) + " s (an hour)");
   if (frame_count() < 1)
     throw Error::invalid("duration", format_significant(duration, 6) + " s at speed " + format_significant(speed, 6) +
-                       " and " + std::to_string(fps) + " fps is less than one frame");
+                                         " and " + std::to_string(fps) + " fps is less than one frame");
   if (!(at >= 0) || at > kMaxStillTime)
-    throw Error::invalid("at", format_significant(at, 6) + " s is outside 0 .. " + format_significant(kMaxStillTime, 6) + " s");
+    throw Error::invalid(
+        "at", format_significant(at, 6) + " s is outside 0 .. " + format_significant(kMaxStillTime, 6) + " s");
   if (camera == CameraMode::fixed && !(view.xmax > view.xmin && view.ymax > view.ymin))
     throw Error::invalid("view", "the fixed camera needs a view with positive width and height");
 }
@@ -97,8 +100,8 @@ View parse_view(std::string_view text, const std::string& origin) {
   std::size_t start = 0;
   while (true) {
     const std::size_t comma = text.find(',', start);
-    values.push_back(parse_double(text.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start),
-                                  origin, text));
+    values.push_back(parse_double(
+        text.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start), origin, text));
     if (comma == std::string_view::npos) break;
     start = comma + 1;
   }
@@ -106,7 +109,8 @@ View parse_view(std::string_view text, const std::string& origin) {
     throw Error::invalid(origin, "'" + std::string(text) + "' is not xmin,ymin,xmax,ymax (four numbers in metres)");
   const View view{values[0], values[1], values[2], values[3]};
   if (!(view.xmax > view.xmin) || !(view.ymax > view.ymin))
-    throw Error::invalid(origin, "'" + std::string(text) + "' has zero or negative area; need xmin < xmax and ymin < ymax");
+    throw Error::invalid(origin,
+                         "'" + std::string(text) + "' has zero or negative area; need xmin < xmax and ymin < ymax");
   return view;
 }
 
@@ -119,8 +123,8 @@ OutputKind output_kind(const std::filesystem::path& file, const std::string& ori
   if (extension == ".svg") return OutputKind::svg;
   if (extension == ".pdf") return OutputKind::pdf;
   throw Error::invalid(origin, "'" + file.string() + "' has " +
-                     (extension.empty() ? std::string("no extension") : "extension '" + extension + "'") +
-                     "; valid: .mp4 (video), .png (still), .svg or .pdf (vector still)");
+                                   (extension.empty() ? std::string("no extension") : "extension '" + extension + "'") +
+                                   "; valid: .mp4 (video), .png (still), .svg or .pdf (vector still)");
 }
 
 bool is_still(OutputKind kind) { return kind != OutputKind::mp4; }

@@ -35,12 +35,12 @@ enum class OutputKind { mp4, png, svg, pdf };
 
 struct RenderSettings {
   int width = 1280, height = 720, fps = 30;  // the "medium" preset
-  double duration = 10;                       // s of simulated time
-  double speed = 1;                           // simulated seconds per video second
-  double at = 0;                              // s, the time a still shows
+  double duration = 10;                      // s of simulated time
+  double speed = 1;                          // simulated seconds per video second
+  double at = 0;                             // s, the time a still shows
   ElementSet elements = ElementSet::defaults();
   CameraMode camera = CameraMode::follow;
-  View view;                                  // for CameraMode::fixed
+  View view;  // for CameraMode::fixed
   std::string theme = "light";
   std::string title = "Two blocks joined by a pin, falling freely";
 

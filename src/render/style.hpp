@@ -1,9 +1,9 @@
 #pragma once
 // Sizes of lines, marks and text, all proportional to the frame so a clip looks the
 // same at 480p and at 4K: one unit `u` is a pixel of an 854x480 frame.
-#include <algorithm>
-
 #include <cairo.h>
+
+#include <algorithm>
 
 #include "render/theme.hpp"
 
@@ -14,9 +14,7 @@ struct Style {
   double u = 1;  // pixels per unit
 
   /// u for a width x height frame: the 16:9 box inside it compared with 854x480.
-  [[nodiscard]] static double unit_for(int width, int height) {
-    return std::min(width / 854.0, height / 480.0);
-  }
+  [[nodiscard]] static double unit_for(int width, int height) { return std::min(width / 854.0, height / 480.0); }
 
   // Text sizes (pixels).
   [[nodiscard]] double title_size() const { return 17 * u; }

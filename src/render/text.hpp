@@ -26,7 +26,8 @@ struct Metrics {
 [[nodiscard]] Metrics metrics(cairo_t* cr, const Font& font);
 
 /// Draws `s` with its baseline at y, aligned at x.
-void draw(cairo_t* cr, const Font& font, double x, double y, const char* s, const Rgba& colour, Align align = Align::left);
+void draw(cairo_t* cr, const Font& font, double x, double y, const char* s, const Rgba& colour,
+          Align align = Align::left);
 /// As draw(), over a halo of `halo` colour `halo_width` wide, so the text stays legible
 /// on top of grid lines and fills.
 void draw_with_halo(cairo_t* cr, const Font& font, double x, double y, const char* s, const Rgba& colour,

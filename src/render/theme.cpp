@@ -1,12 +1,12 @@
 #include "render/theme.hpp"
 
+#include <toml++/toml.h>
+
 #include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <utility>
-
-#include <toml++/toml.h>
 
 #include "core/error.hpp"
 #include "linkage/embedded_themes.hpp"
@@ -40,16 +40,28 @@ bool parse_colour(std::string_view text, Rgba& out) {
 
 // Every key of [colors] and the colour it sets.
 using Accessor = Rgba& (*)(Theme&);
-#define LINKAGE_COLOUR(key, member) {key, [](Theme& t) -> Rgba& { return t.member; }}
+#define LINKAGE_COLOUR(key, member)                 \
+  {                                                 \
+    key, [](Theme& t) -> Rgba& { return t.member; } \
+  }
 constexpr std::array<std::pair<std::string_view, Accessor>, 17> kColourKeys{{
-    LINKAGE_COLOUR("background", background), LINKAGE_COLOUR("grid", grid),
-    LINKAGE_COLOUR("text", text), LINKAGE_COLOUR("text_muted", text_muted),
-    LINKAGE_COLOUR("panel", panel), LINKAGE_COLOUR("panel_edge", panel_edge),
-    LINKAGE_COLOUR("block1_fill", block_fill[0]), LINKAGE_COLOUR("block1_edge", block_edge[0]),
-    LINKAGE_COLOUR("block2_fill", block_fill[1]), LINKAGE_COLOUR("block2_edge", block_edge[1]),
-    LINKAGE_COLOUR("pin_fill", pin_fill), LINKAGE_COLOUR("pin_edge", pin_edge),
-    LINKAGE_COLOUR("pin_force", pin_force), LINKAGE_COLOUR("gravity", gravity),
-    LINKAGE_COLOUR("velocity", velocity), LINKAGE_COLOUR("trail", trail), LINKAGE_COLOUR("com", com),
+    LINKAGE_COLOUR("background", background),
+    LINKAGE_COLOUR("grid", grid),
+    LINKAGE_COLOUR("text", text),
+    LINKAGE_COLOUR("text_muted", text_muted),
+    LINKAGE_COLOUR("panel", panel),
+    LINKAGE_COLOUR("panel_edge", panel_edge),
+    LINKAGE_COLOUR("block1_fill", block_fill[0]),
+    LINKAGE_COLOUR("block1_edge", block_edge[0]),
+    LINKAGE_COLOUR("block2_fill", block_fill[1]),
+    LINKAGE_COLOUR("block2_edge", block_edge[1]),
+    LINKAGE_COLOUR("pin_fill", pin_fill),
+    LINKAGE_COLOUR("pin_edge", pin_edge),
+    LINKAGE_COLOUR("pin_force", pin_force),
+    LINKAGE_COLOUR("gravity", gravity),
+    LINKAGE_COLOUR("velocity", velocity),
+    LINKAGE_COLOUR("trail", trail),
+    LINKAGE_COLOUR("com", com),
 }};
 #undef LINKAGE_COLOUR
 
@@ -63,7 +75,8 @@ std::string all_keys() {
 
 std::string theme_name_list() {
   std::string list;
-  for (const EmbeddedTheme& theme : kEmbeddedThemes) list += std::string(list.empty() ? "" : ", ") + std::string(theme.name);
+  for (const EmbeddedTheme& theme : kEmbeddedThemes)
+    list += std::string(list.empty() ? "" : ", ") + std::string(theme.name);
   return list;
 }
 
@@ -76,16 +89,19 @@ Theme parse_theme(std::string_view toml_text, const std::string& name, const std
   }
   for (const auto& [key, node] : root)
     if (key.str() != "colors")
-      throw Error::input(position(source, key.source()) + ": unknown key '" + std::string(key.str()) + "'; a theme has only a [colors] table");
+      throw Error::input(position(source, key.source()) + ": unknown key '" + std::string(key.str()) +
+                         "'; a theme has only a [colors] table");
   const toml::table* colours = root["colors"].as_table();
   if (colours == nullptr) throw Error::input(source + ": no [colors] table");
 
   Theme theme;
   theme.name = name;
   for (const auto& [key, node] : *colours) {
-    const auto known = std::find_if(kColourKeys.begin(), kColourKeys.end(), [&](const auto& k) { return k.first == key.str(); });
+    const auto known =
+        std::find_if(kColourKeys.begin(), kColourKeys.end(), [&](const auto& k) { return k.first == key.str(); });
     if (known == kColourKeys.end())
-      throw Error::input(position(source, key.source()) + ": unknown colour '" + std::string(key.str()) + "'; valid: " + all_keys());
+      throw Error::input(position(source, key.source()) + ": unknown colour '" + std::string(key.str()) +
+                         "'; valid: " + all_keys());
     const auto* text = node.as_string();
     if (text == nullptr || !parse_colour(text->get(), known->second(theme)))
       throw Error::input(position(source, node.source()) + ": " + std::string(key.str()) +
@@ -99,7 +115,8 @@ Theme parse_theme(std::string_view toml_text, const std::string& name, const std
 }
 
 std::filesystem::path assets_dir(const std::filesystem::path& built_in) {
-  if (const char* from_env = std::getenv("LINKAGE_ASSETS_DIR"); from_env != nullptr && *from_env != '\0') return from_env;
+  if (const char* from_env = std::getenv("LINKAGE_ASSETS_DIR"); from_env != nullptr && *from_env != '\0')
+    return from_env;
   std::error_code ec;
   if (!built_in.empty() && std::filesystem::is_directory(built_in, ec)) return built_in;
   return {};
@@ -108,7 +125,8 @@ std::filesystem::path assets_dir(const std::filesystem::path& built_in) {
 Theme load_theme(std::string_view name, const std::filesystem::path& assets, const std::string& origin) {
   for (const EmbeddedTheme& embedded : kEmbeddedThemes) {
     if (embedded.name != name) continue;
-    const std::filesystem::path file = assets.empty() ? std::filesystem::path() : assets / "themes" / (std::string(name) + ".toml");
+    const std::filesystem::path file =
+        assets.empty() ? std::filesystem::path() : assets / "themes" / (std::string(name) + ".toml");
     std::error_code ec;
     if (!file.empty() && std::filesystem::is_regular_file(file, ec)) {
       std::ifstream in(file, std::ios::binary);

@@ -20,7 +20,8 @@ cairo_status_t write_to_stream(void* closure, const unsigned char* data, unsigne
 
 void write_vector_still(ClipRenderer& renderer, std::size_t index, OutputKind kind, int width, int height,
                         const std::filesystem::path& target, const std::string& origin) {
-  if (kind != OutputKind::svg && kind != OutputKind::pdf) throw Error::failure("write_vector_still: not a vector format");
+  if (kind != OutputKind::svg && kind != OutputKind::pdf)
+    throw Error::failure("write_vector_still: not a vector format");
   AtomicFile file(target, origin, true);
   cairo::SurfacePtr surface;
   if (kind == OutputKind::svg) {

@@ -34,9 +34,7 @@ std::vector<DerivationGroup> derivation(const WorkedSolution& worked) {
       {"Moments of inertia and the pin offset",
        "The centroidal inertia is about each block's centre of mass; the parallel-axis theorem "
        "moves it to the pin.",
-       {{I, m * (square(w) + square(L)) / twelve, "kg m^2"},
-        {D, L / two - b, "m"},
-        {IP, I + m * square(D), "kg m^2"}},
+       {{I, m * (square(w) + square(L)) / twelve, "kg m^2"}, {D, L / two - b, "m"}, {IP, I + m * square(D), "kg m^2"}},
        ReportPart::inertia},
       {"The pin constraint: positions and velocity",
        "Block 2 hangs from the pin, so its centre and velocity follow from block 1's coordinates "
@@ -57,8 +55,7 @@ std::vector<DerivationGroup> derivation(const WorkedSolution& worked) {
         {E, T + V, "J"},
         {px, m * (x1d + x2d), "kg m/s"},
         {py, m * (y1d + y2d), "kg m/s"},
-        {H, m * (x2 - x1) * (y2d - y1d) / two - m * (y2 - y1) * (x2d - x1d) / two + I * (th1d + th2d),
-         "kg m^2/s"}},
+        {H, m * (x2 - x1) * (y2d - y1d) / two - m * (y2 - y1) * (x2d - x1d) / two + I * (th1d + th2d), "kg m^2/s"}},
        ReportPart::energy},
   };
 }

@@ -14,8 +14,8 @@
 namespace linkage {
 
 struct DerivationStep {
-  Symbol quantity;     // the left-hand side; its value is the model's
-  Formula formula;     // the definition in inputs and earlier quantities
+  Symbol quantity;        // the left-hand side; its value is the model's
+  Formula formula;        // the definition in inputs and earlier quantities
   std::string_view unit;  // ASCII, e.g. "kg m^2" (see unit_text)
 };
 

@@ -89,11 +89,17 @@ struct Printer {
   [[nodiscard]] std::pair<std::string, Prec> print(const Formula::Node& n) const {
     switch (n.op) {
       case Op::symbol:
-      case Op::integer: return leaf(n);
-      case Op::add: return {print(*n.a).first + sum_operator("+") + operand(n.b, Prec::sum), Prec::sum};
-      case Op::sub: return {print(*n.a).first + sum_operator("-") + operand(n.b, Prec::product), Prec::sum};
+      case Op::integer:
+        return leaf(n);
+      case Op::add:
+        return {print(*n.a).first + sum_operator("+") + operand(n.b, Prec::sum), Prec::sum};
+      case Op::sub:
+        return {print(*n.a).first + sum_operator("-") + operand(n.b, Prec::product), Prec::sum};
       case Op::mul: {
-        const char* times = !substituted() ? " " : style == Style::unicode ? " × " : style == Style::ascii ? " * " : " \\times ";
+        const char* times = !substituted()            ? " "
+                            : style == Style::unicode ? " × "
+                            : style == Style::ascii   ? " * "
+                                                      : " \\times ";
         return {operand(n.a, Prec::product) + times + operand(n.b, Prec::product), Prec::product};
       }
       case Op::div:
@@ -104,8 +110,10 @@ struct Printer {
         if (style == Style::latex && base.find('^') != std::string::npos) base = "{" + base + "}";
         return {base + (style == Style::unicode ? "²" : "^2"), Prec::power};
       }
-      case Op::sin: return function("sin", n.a);
-      case Op::cos: return function("cos", n.a);
+      case Op::sin:
+        return function("sin", n.a);
+      case Op::cos:
+        return function("cos", n.a);
     }
     return {};
   }
@@ -113,18 +121,26 @@ struct Printer {
 
 double evaluate(const Formula::Node& n) {
   switch (n.op) {
-    case Op::symbol: return n.symbol.value;
-    case Op::integer: return n.integer;
-    case Op::add: return evaluate(*n.a) + evaluate(*n.b);
-    case Op::sub: return evaluate(*n.a) - evaluate(*n.b);
-    case Op::mul: return evaluate(*n.a) * evaluate(*n.b);
-    case Op::div: return evaluate(*n.a) / evaluate(*n.b);
+    case Op::symbol:
+      return n.symbol.value;
+    case Op::integer:
+      return n.integer;
+    case Op::add:
+      return evaluate(*n.a) + evaluate(*n.b);
+    case Op::sub:
+      return evaluate(*n.a) - evaluate(*n.b);
+    case Op::mul:
+      return evaluate(*n.a) * evaluate(*n.b);
+    case Op::div:
+      return evaluate(*n.a) / evaluate(*n.b);
     case Op::square: {
       const double v = evaluate(*n.a);
       return v * v;
     }
-    case Op::sin: return std::sin(evaluate(*n.a));
-    case Op::cos: return std::cos(evaluate(*n.a));
+    case Op::sin:
+      return std::sin(evaluate(*n.a));
+    case Op::cos:
+      return std::cos(evaluate(*n.a));
   }
   return 0;
 }
@@ -142,7 +158,8 @@ std::string Formula::print(Style style, Spelling spelling, int digits) const {
 }
 
 namespace {
-Formula::Node binary(Op op, const std::shared_ptr<const Formula::Node>& a, const std::shared_ptr<const Formula::Node>& b) {
+Formula::Node binary(Op op, const std::shared_ptr<const Formula::Node>& a,
+                     const std::shared_ptr<const Formula::Node>& b) {
   return Formula::Node{op, {}, 0, a, b};
 }
 }  // namespace
@@ -162,7 +179,11 @@ Formula operator/(const Formula& a, const Formula& b) {
 Formula square(const Formula& a) {
   return Formula(std::make_shared<const Formula::Node>(binary(Op::square, a.node_, nullptr)));
 }
-Formula sin(const Formula& a) { return Formula(std::make_shared<const Formula::Node>(binary(Op::sin, a.node_, nullptr))); }
-Formula cos(const Formula& a) { return Formula(std::make_shared<const Formula::Node>(binary(Op::cos, a.node_, nullptr))); }
+Formula sin(const Formula& a) {
+  return Formula(std::make_shared<const Formula::Node>(binary(Op::sin, a.node_, nullptr)));
+}
+Formula cos(const Formula& a) {
+  return Formula(std::make_shared<const Formula::Node>(binary(Op::cos, a.node_, nullptr)));
+}
 
 }  // namespace linkage

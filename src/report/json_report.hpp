@@ -5,9 +5,8 @@
 // the case eliminated, from solution_value), "residual", "condition_number" and
 // "equations" (labels in row order); with two or more cases also "agreement" (the
 // largest difference of each unknown between cases).
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "report/worked_solution.hpp"
 

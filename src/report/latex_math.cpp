@@ -13,14 +13,27 @@ std::string latex_escape(std::string_view text) {
   std::string out;
   for (char c : text) {
     switch (c) {
-      case '&': case '%': case '$': case '#': case '_': case '{': case '}':
+      case '&':
+      case '%':
+      case '$':
+      case '#':
+      case '_':
+      case '{':
+      case '}':
         out += '\\';
         out += c;
         break;
-      case '~': out += "\\textasciitilde{}"; break;
-      case '^': out += "\\textasciicircum{}"; break;
-      case '\\': out += "\\textbackslash{}"; break;
-      default: out += c;
+      case '~':
+        out += "\\textasciitilde{}";
+        break;
+      case '^':
+        out += "\\textasciicircum{}";
+        break;
+      case '\\':
+        out += "\\textbackslash{}";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -39,8 +52,10 @@ std::size_t visible_length(std::string_view tex) {
       while (end < tex.size() && std::isalpha(static_cast<unsigned char>(tex[end])) != 0) ++end;
       const std::string_view name = tex.substr(i + 1, end - i - 1);
       if (name.empty()) ++end;  // \, \; \\ and the like
-      if (name == "sin" || name == "cos") n += 3;
-      else if (!name.empty() && name != "left" && name != "right" && name != "frac" && name != "dot" && name != "mathrm")
+      if (name == "sin" || name == "cos")
+        n += 3;
+      else if (!name.empty() && name != "left" && name != "right" && name != "frac" && name != "dot" &&
+               name != "mathrm")
         n += 1;
       i = end - 1;
       continue;
@@ -96,8 +111,8 @@ std::string derivation_rows(const DerivationGroup& group, int digits, std::strin
     const DerivationStep& step = group.steps[i];
     const std::string formula = step.formula.print(Style::latex, Spelling::symbolic, digits);
     const std::string substituted = step.formula.print(Style::latex, Spelling::substituted, digits);
-    const std::string result = format_number(step.quantity.value, Style::latex, digits) + "\\ " +
-                               unit_text(step.unit, Style::latex);
+    const std::string result =
+        format_number(step.quantity.value, Style::latex, digits) + "\\ " + unit_text(step.unit, Style::latex);
     out += aligned_rows(pad, std::string(step.quantity.latex) + " &= ", formula, kRowLimit) + " \\\\\n";
     if (visible_length(substituted) + visible_length(result) + 3 <= kRowLimit) {
       out += pad + "  &= " + strip_marks(substituted) + " = " + result;

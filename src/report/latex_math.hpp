@@ -24,8 +24,8 @@ namespace linkage {
 
 /// How matrix_equation lays out A q = B.
 struct MatrixLayout {
-  bool numeric = false;       // numbers (to `digits`) instead of symbolic_system() entries
-  bool row_comments = false;  // "% (1.1)" after each row of A and B (LaTeX only, not Markdown math)
+  bool numeric = false;              // numbers (to `digits`) instead of symbolic_system() entries
+  bool row_comments = false;         // "% (1.1)" after each row of A and B (LaTeX only, not Markdown math)
   bool break_before_equals = false;  // "A q \\ = B", for a multline* environment
 };
 

@@ -33,7 +33,8 @@ std::string agreement_cell(const Agreement& a, std::size_t i, int digits, std::s
 
 class LatexWriter {
  public:
-  LatexWriter(const WorkedSolution& worked, const ReportOptions& options) : w_(worked), digits_(options.digits), o_(options) {}
+  LatexWriter(const WorkedSolution& worked, const ReportOptions& options)
+      : w_(worked), digits_(options.digits), o_(options) {}
 
   void title() {
     out_ += "% Worked solution of the two-block linkage, from `linkage solve --format latex`.\n";
@@ -77,7 +78,8 @@ class LatexWriter {
       out_ += "\\begin{align*}\n";
       const std::vector<std::string> rows = equation_rows(c);
       for (std::size_t r = 0; r < rows.size(); ++r)
-        out_ += "  " + rows[r] + " \\tag{" + std::string(c.equations[r]) + "}" + (r + 1 < rows.size() ? " \\\\\n" : "\n");
+        out_ +=
+            "  " + rows[r] + " \\tag{" + std::string(c.equations[r]) + "}" + (r + 1 < rows.size() ? " \\\\\n" : "\n");
       out_ += "\\end{align*}\n";
       out_ += "In matrix form, rows in the order of the equations:\n";
       matrix_display(matrix_equation(c, {false, true, true}, digits_, "  "));
@@ -90,8 +92,7 @@ class LatexWriter {
       out_ += "Solution:\n";
       out_ += "\\begin{equation*}\n" + solution_equation(c, digits_, "  ") + "\\end{equation*}\n";
     }
-    if (o_.shows(ReportPart::residual))
-      out_ += "\\begin{equation*}\n  " + residual_line(c) + "\n\\end{equation*}\n";
+    if (o_.shows(ReportPart::residual)) out_ += "\\begin{equation*}\n  " + residual_line(c) + "\n\\end{equation*}\n";
   }
 
   void agreement() {
@@ -108,6 +109,7 @@ class LatexWriter {
     }
     out_ += "\\end{tabular}\n\\end{center}\n";
   }
+
  private:
   const WorkedSolution& w_;
   int digits_;
@@ -117,7 +119,8 @@ class LatexWriter {
 
 class MarkdownWriter {
  public:
-  MarkdownWriter(const WorkedSolution& worked, const ReportOptions& options) : w_(worked), digits_(options.digits), o_(options) {}
+  MarkdownWriter(const WorkedSolution& worked, const ReportOptions& options)
+      : w_(worked), digits_(options.digits), o_(options) {}
 
   void title() { out_ += "# Worked solution: two blocks joined by a frictionless pin\n"; }
 
@@ -175,8 +178,9 @@ class MarkdownWriter {
 
   void agreement() {
     heading("The cases agree");
-    paragraph("Every unknown from every case; \\* marks a value the case recovers from the equations it "
-              "eliminated rather than solves for.");
+    paragraph(
+        "Every unknown from every case; \\* marks a value the case recovers from the equations it "
+        "eliminated rather than solves for.");
     out_ += "\n| unknown |";
     std::string rule = "| :-- |";
     for (const CaseSolution& c : w_.cases) {
@@ -191,6 +195,7 @@ class MarkdownWriter {
       out_ += concat({" ", format_number(a.max_abs_difference, Style::unicode, 2), " |\n"});
     }
   }
+
  private:
   const WorkedSolution& w_;
   int digits_;

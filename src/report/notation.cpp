@@ -36,7 +36,8 @@ bool has_top_level_sum(std::string_view text) {
     const char c = text[i];
     if (c == '(' || c == '{') ++depth;
     if (c == ')' || c == '}') --depth;
-    if (depth == 0 && i > 0 && i + 1 < text.size() && (c == '+' || c == '-') && text[i - 1] == ' ' && text[i + 1] == ' ')
+    if (depth == 0 && i > 0 && i + 1 < text.size() && (c == '+' || c == '-') && text[i - 1] == ' ' &&
+        text[i + 1] == ' ')
       return true;
   }
   return false;
@@ -51,7 +52,8 @@ std::string term_body(std::string_view magnitude, std::string_view unknown, Styl
   if (style == Style::latex && magnitude.starts_with(latex_reciprocal))
     return "\\frac{" + std::string(unknown) + "}{" + std::string(magnitude.substr(latex_reciprocal.size()));
   std::string factor(magnitude);
-  if (has_top_level_sum(magnitude)) factor = style == Style::latex ? "\\left(" + factor + "\\right)" : "(" + factor + ")";
+  if (has_top_level_sum(magnitude))
+    factor = style == Style::latex ? "\\left(" + factor + "\\right)" : "(" + factor + ")";
   return factor + (style == Style::latex ? " \\, " : " ") + std::string(unknown);
 }
 

@@ -24,8 +24,10 @@ bool is_number(std::string_view cell) {
   if (cell.empty()) return false;
   bool digit = false;
   for (char c : cell) {
-    if (c >= '0' && c <= '9') digit = true;
-    else if (c != '.' && c != 'e' && c != '-' && c != '+') return false;
+    if (c >= '0' && c <= '9')
+      digit = true;
+    else if (c != '.' && c != 'e' && c != '-' && c != '+')
+      return false;
   }
   return digit;
 }

@@ -32,10 +32,10 @@ namespace linkage {
 /// A table with labelled rows and headed columns. Columns of numbers (digits, '.',
 /// 'e', signs) line up at the decimal point; other columns align left.
 struct Table {
-  std::vector<std::string> headers;           // one per column
-  std::vector<std::string> row_labels;        // one per row, may be empty strings
+  std::vector<std::string> headers;             // one per column
+  std::vector<std::string> row_labels;          // one per row, may be empty strings
   std::vector<std::vector<std::string>> cells;  // rows x columns
-  std::size_t separator_before = 0;           // draw " | " before this column (0: none)
+  std::size_t separator_before = 0;             // draw " | " before this column (0: none)
 };
 
 /// The table's lines, each at most `width` columns when possible, indented by `indent`:

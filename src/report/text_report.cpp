@@ -83,7 +83,8 @@ class TextWriter {
       const std::string formula = step.formula.print(style_, Spelling::symbolic, o_.digits);
       const std::string substituted = step.formula.print(style_, Spelling::substituted, o_.digits);
       const std::string result = number(step.quantity.value) + " " + unit(step.unit);
-      const std::string one_line = lhs + " = " + strip_marks(formula) + " = " + strip_marks(substituted) + " = " + result;
+      const std::string one_line =
+          lhs + " = " + strip_marks(formula) + " = " + strip_marks(substituted) + " = " + result;
       if (display_width(one_line) <= o_.width) {
         line(one_line);
         continue;
@@ -178,12 +179,13 @@ class TextWriter {
 
   void agreement() {
     heading("The cases agree", '-');
-    prose("Every unknown from every case, and the largest difference between cases. A * marks a value "
-          "the case does not solve for but recovers from the equations it eliminated: Fx = m " +
-          std::string(unknown_name(Unknown::x1_ddot, style_)) + ", Fy = m (" +
-          std::string(unknown_name(Unknown::y1_ddot, style_)) + " + g), " +
-          std::string(unknown_name(Unknown::x2_ddot, style_)) + " = -Fx/m, " +
-          std::string(unknown_name(Unknown::y2_ddot, style_)) + " = -g - Fy/m.");
+    prose(
+        "Every unknown from every case, and the largest difference between cases. A * marks a value "
+        "the case does not solve for but recovers from the equations it eliminated: Fx = m " +
+        std::string(unknown_name(Unknown::x1_ddot, style_)) + ", Fy = m (" +
+        std::string(unknown_name(Unknown::y1_ddot, style_)) + " + g), " +
+        std::string(unknown_name(Unknown::x2_ddot, style_)) + " = -Fx/m, " +
+        std::string(unknown_name(Unknown::y2_ddot, style_)) + " = -g - Fy/m.");
     Table table;
     for (const CaseSolution& c : w_.cases) table.headers.push_back("Case " + std::to_string(c.id));
     table.headers.emplace_back(style_ == Style::unicode ? "max |Δ|" : "max |diff|");
@@ -191,13 +193,15 @@ class TextWriter {
     for (const Agreement& a : w_.agreement) {
       table.row_labels.emplace_back(unknown_name(a.unknown, style_));
       std::vector<std::string> row;
-      for (std::size_t i = 0; i < a.values.size(); ++i) row.push_back(number(a.values[i]) + (a.recovered[i] ? "*" : ""));
+      for (std::size_t i = 0; i < a.values.size(); ++i)
+        row.push_back(number(a.values[i]) + (a.recovered[i] ? "*" : ""));
       row.push_back(format_number(a.max_abs_difference, style_, 2));
       table.cells.push_back(std::move(row));
     }
     blank();
     lines(layout_table(table, "    ", o_.width));
   }
+
  private:
   const WorkedSolution& w_;
   const ReportOptions& o_;

@@ -20,11 +20,21 @@ void require_finite(double value, const std::string& name, const Inputs& inputs)
 
 void check_derived(const Derived& d, const Inputs& inputs) {
   const Invariants& v = d.invariants;
-  const std::pair<const char*, double> values[] = {
-      {"I_zz^C", d.I_zz_C}, {"D", d.D}, {"I_zz^P", d.I_zz_P}, {"x_P", d.pin.x()}, {"y_P", d.pin.y()},
-      {"x2", d.C2.x()}, {"y2", d.C2.y()}, {"x2_dot", d.C2_dot.x()}, {"y2_dot", d.C2_dot.y()},
-      {"kinetic energy", v.kinetic_energy}, {"potential energy", v.potential_energy}, {"energy", v.energy},
-      {"momentum_x", v.momentum.x()}, {"momentum_y", v.momentum.y()}, {"angular momentum", v.angular_momentum}};
+  const std::pair<const char*, double> values[] = {{"I_zz^C", d.I_zz_C},
+                                                   {"D", d.D},
+                                                   {"I_zz^P", d.I_zz_P},
+                                                   {"x_P", d.pin.x()},
+                                                   {"y_P", d.pin.y()},
+                                                   {"x2", d.C2.x()},
+                                                   {"y2", d.C2.y()},
+                                                   {"x2_dot", d.C2_dot.x()},
+                                                   {"y2_dot", d.C2_dot.y()},
+                                                   {"kinetic energy", v.kinetic_energy},
+                                                   {"potential energy", v.potential_energy},
+                                                   {"energy", v.energy},
+                                                   {"momentum_x", v.momentum.x()},
+                                                   {"momentum_y", v.momentum.y()},
+                                                   {"angular momentum", v.angular_momentum}};
   for (const auto& [name, value] : values) require_finite(value, name, inputs);
 }
 
@@ -32,8 +42,7 @@ void check_case(const CaseSolution& c, const Inputs& inputs) {
   const std::string where = "a Case " + std::to_string(c.id) + " ";
   for (Eigen::Index i = 0; i < c.A.size(); ++i) require_finite(c.A.data()[i], where + "matrix entry", inputs);
   for (Eigen::Index i = 0; i < c.B.size(); ++i) require_finite(c.B[i], where + "right-hand side", inputs);
-  for (Eigen::Index i = 0; i < c.solution.size(); ++i)
-    require_finite(c.solution[i], where + "solution value", inputs);
+  for (Eigen::Index i = 0; i < c.solution.size(); ++i) require_finite(c.solution[i], where + "solution value", inputs);
   require_finite(c.residual, where + "residual", inputs);
   require_finite(c.condition_number, where + "condition number", inputs);
 }

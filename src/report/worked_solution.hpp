@@ -24,8 +24,8 @@ struct Agreement {
 struct WorkedSolution {
   Inputs inputs;
   Derived derived;
-  std::vector<CaseSolution> cases;    // in the order asked
-  std::vector<Agreement> agreement;   // all eight unknowns; empty unless two or more cases
+  std::vector<CaseSolution> cases;   // in the order asked
+  std::vector<Agreement> agreement;  // all eight unknowns; empty unless two or more cases
 };
 
 /// The parts of a worked solution, in the order they print: the inputs, the three

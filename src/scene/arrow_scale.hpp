@@ -11,8 +11,8 @@
 namespace linkage {
 
 struct ArrowScale {
-  int mantissa = 0;    // 10, 15, 20, 25, 30, 40, 50, 60 or 80; 0 when there is nothing to draw
-  int exponent = 0;    // units per centimetre = mantissa x 10^exponent
+  int mantissa = 0;  // 10, 15, 20, 25, 30, 40, 50, 60 or 80; 0 when there is nothing to draw
+  int exponent = 0;  // units per centimetre = mantissa x 10^exponent
   double metres_per_unit = 0;
 
   [[nodiscard]] bool drawable() const { return mantissa != 0; }

@@ -40,7 +40,7 @@ struct Arrow {
 struct Marker {
   MarkerKind kind = MarkerKind::pin;
   Vec2 at = Vec2::Zero();
-  std::string_view tag;                 // a name drawn beside it when labels are shown ("P")
+  std::string_view tag;                           // a name drawn beside it when labels are shown ("P")
   Vec2 tag_direction = Vec2(-1, 1).normalized();  // where the name goes (world, unit)
 };
 

@@ -41,7 +41,8 @@ void for_each_name(const std::string& list, const std::string& origin, Apply app
   std::size_t start = 0;
   while (true) {
     const std::size_t comma = list.find(',', start);
-    const std::string_view item = std::string_view(list).substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    const std::string_view item =
+        std::string_view(list).substr(start, comma == std::string::npos ? std::string::npos : comma - start);
     apply(parse_element(item, origin));
     if (comma == std::string::npos) break;
     start = comma + 1;

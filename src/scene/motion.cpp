@@ -19,7 +19,6 @@ std::array<Vec2, 4> block_corners(const Params& p, double x, double y, double th
   return {c + along - across, c + along + across, c - along + across, c - along - across};
 }
 
-
 Bounds motion_bounds(const Params& p, const Motion& motion) {
   Bounds bounds;
   for (const MotionSample& sample : motion.samples) {

@@ -18,9 +18,9 @@ namespace linkage {
 class Simulation;
 
 struct MotionSample {
-  double t = 0;                     // s
+  double t = 0;  // s
   BodyState state;
-  Vec2 pin_force = Vec2::Zero();    // N, on block 1 at P; zero unless Motion::has_pin_force
+  Vec2 pin_force = Vec2::Zero();  // N, on block 1 at P; zero unless Motion::has_pin_force
 };
 
 struct Motion {

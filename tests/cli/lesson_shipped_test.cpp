@@ -55,11 +55,10 @@ void expect_real_file(const fs::path& file) {
 TEST(ShippedLessons, TheCourseIsComplete) {
   std::vector<std::string> names;
   for (const fs::path& file : shipped_lessons()) names.push_back(file.stem().string());
-  EXPECT_EQ(names, (std::vector<std::string>{"01-moments-of-inertia", "02-holonomic-constraints",
-                                             "03-case1-eight-equations", "04-case2-six-equations",
-                                             "05-case3-four-equations", "06-numerical-example",
-                                             "07-constraint-drift", "08-accuracy-and-cost",
-                                             "09-beyond-the-equations"}));
+  EXPECT_EQ(names,
+            (std::vector<std::string>{"01-moments-of-inertia", "02-holonomic-constraints", "03-case1-eight-equations",
+                                      "04-case2-six-equations", "05-case3-four-equations", "06-numerical-example",
+                                      "07-constraint-drift", "08-accuracy-and-cost", "09-beyond-the-equations"}));
 }
 
 TEST(ShippedLessons, RunAtDraftQualityAndCache) {
@@ -114,8 +113,10 @@ TEST(ShippedLessons, TheNumericalExamplePrintsTheSpecsValues) {
       ++checked;
     }
   EXPECT_EQ(checked, 22);
-  for (const auto& [group, name, unit] : {std::tuple{"derived", "I_zz_P", " kg m^2."}, {"derived", "x_P", " m."},
-                                          {"solution", "x2_ddot", " m/s^2."}, {"solution", "F_x", " N."}}) {
+  for (const auto& [group, name, unit] : {std::tuple{"derived", "I_zz_P", " kg m^2."},
+                                          {"derived", "x_P", " m."},
+                                          {"solution", "x2_ddot", " m/s^2."},
+                                          {"solution", "F_x", " N."}}) {
     const std::string answer = "Answer: " + format_significant(number(example.at(group).at(name)), 6) + unit;
     EXPECT_NE(r.out.find(answer), std::string::npos) << answer << "\n" << r.out;
   }

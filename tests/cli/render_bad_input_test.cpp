@@ -2,7 +2,6 @@
 // simulation), one line naming the flag, the value and what is allowed, and nothing
 // left on disk.
 #include <gtest/gtest.h>
-
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -88,22 +87,23 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{{"--at", "1"}, "--at: applies to a still"},
         BadInput{{"--out", "{dir}/a.png", "--at", "-1"}, "--at: -1 s is outside 0 .. 3600 s"},
         BadInput{{"--integrator", "rk45"}, "--integrator: 'rk45' is not an integrator"},
-        BadInput{{"--case", "4"}, "--case: '4' is not a case"},
-        BadInput{{"--m", "-1"}, "--m"},
-        BadInput{{"--case", "1", "--integrator", "rk4", "--dt", "0.01", "--stabilize", "baumgarte",
-                  "--baumgarte-alpha", "1e6", "--baumgarte-beta", "1e6", "--duration", "5"},
-                 "the simulation failed at t = ", 3},
+        BadInput{{"--case", "4"}, "--case: '4' is not a case"}, BadInput{{"--m", "-1"}, "--m"},
+        BadInput{{"--case", "1", "--integrator", "rk4", "--dt", "0.01", "--stabilize", "baumgarte", "--baumgarte-alpha",
+                  "1e6", "--baumgarte-beta", "1e6", "--duration", "5"},
+                 "the simulation failed at t = ",
+                 3},
         BadInput{{"--out", "{dir}/a.png", "--case", "1", "--integrator", "rk4", "--dt", "0.01", "--stabilize",
                   "baumgarte", "--baumgarte-alpha", "1e6", "--baumgarte-beta", "1e6", "--at", "5"},
-                 "the simulation failed at t = ", 3}));
+                 "the simulation failed at t = ",
+                 3}));
 
 TEST(RenderBadInputFolder, UnwritableFolderIsAnInputError) {
   if (::geteuid() == 0) GTEST_SKIP() << "root writes anywhere";
   TempDir dir;
   std::filesystem::create_directory(dir / "locked");
   ::chmod((dir / "locked").c_str(), 0555);
-  const RunResult r = run_linkage({"render", "--quiet", "--size", "64x36", "--duration", "0.2", "--out",
-                                   (dir / "locked" / "clip.mp4").string()});
+  const RunResult r = run_linkage(
+      {"render", "--quiet", "--size", "64x36", "--duration", "0.2", "--out", (dir / "locked" / "clip.mp4").string()});
   ::chmod((dir / "locked").c_str(), 0755);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("is not writable"), std::string::npos) << r.err;

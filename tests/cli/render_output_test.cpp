@@ -4,10 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "encode/encode_test_support.hpp"
 #include "render/xml_check.hpp"
@@ -110,15 +109,15 @@ TEST(RenderCli, OnlyTheWorkThePictureNeeds) {
   EXPECT_GT(sequence["trail_points_drawn"], 20);
 
   // No force arrow drawn: the pin force is never solved for. No trail: no trail points.
-  const nlohmann::json bare = stats_of(
-      render({"--duration", "2", "--frames", frames, "--hide", "pin-force,trail", "--stats"}));
+  const nlohmann::json bare =
+      stats_of(render({"--duration", "2", "--frames", frames, "--hide", "pin-force,trail", "--stats"}));
   EXPECT_EQ(bare["force_evaluations"], 0);
   EXPECT_EQ(bare["trail_points_drawn"], 0);
   EXPECT_EQ(bare["frames_drawn"], 20);
 
   // A still draws one frame; without a trail it samples the motion once.
-  const nlohmann::json still = stats_of(
-      render({"--out", (dir / "s.png").string(), "--at", "3", "--hide", "trail", "--stats"}));
+  const nlohmann::json still =
+      stats_of(render({"--out", (dir / "s.png").string(), "--at", "3", "--hide", "trail", "--stats"}));
   EXPECT_EQ(still["frames_drawn"], 1);
   EXPECT_EQ(still["samples"], 1);
   EXPECT_EQ(still["force_evaluations"], 1);
@@ -134,7 +133,8 @@ TEST(RenderCli, OnlyTheWorkThePictureNeeds) {
 TEST(RenderCli, VideoAndSequenceTogether) {
   TempDir dir;
   std::filesystem::create_directory(dir / "f");
-  ASSERT_EQ(render({"--duration", "0.3", "--out", (dir / "c.mp4").string(), "--frames", (dir / "f").string()}).exit_code, 0);
+  ASSERT_EQ(
+      render({"--duration", "0.3", "--out", (dir / "c.mp4").string(), "--frames", (dir / "f").string()}).exit_code, 0);
   EXPECT_EQ(decode_video(dir / "c.mp4").times.size(), 3u);
   EXPECT_EQ(entries(dir / "f").size(), 3u);
 }

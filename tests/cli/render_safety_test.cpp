@@ -1,8 +1,7 @@
 // Outputs of `linkage render` appear whole or not at all: a failed run or Ctrl-C leaves
 // no partial file and keeps an earlier file of the same name as it was.
-#include <gtest/gtest.h>
-
 #include <fcntl.h>
+#include <gtest/gtest.h>
 #include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -24,9 +23,26 @@ TEST(RenderSafety, FailedRunKeepsTheEarlierFile) {
   TempDir dir;
   write_text(dir / "clip.mp4", "an earlier clip");
   // The simulation diverges after the output was checked: exit 3, nothing replaced.
-  const RunResult r = run_linkage({"render", "--quiet", "--size", "64x36", "--out", (dir / "clip.mp4").string(), "--case",
-                                   "1", "--integrator", "rk4", "--dt", "0.01", "--stabilize", "baumgarte",
-                                   "--baumgarte-alpha", "1e6", "--baumgarte-beta", "1e6", "--duration", "5"});
+  const RunResult r = run_linkage({"render",
+                                   "--quiet",
+                                   "--size",
+                                   "64x36",
+                                   "--out",
+                                   (dir / "clip.mp4").string(),
+                                   "--case",
+                                   "1",
+                                   "--integrator",
+                                   "rk4",
+                                   "--dt",
+                                   "0.01",
+                                   "--stabilize",
+                                   "baumgarte",
+                                   "--baumgarte-alpha",
+                                   "1e6",
+                                   "--baumgarte-beta",
+                                   "1e6",
+                                   "--duration",
+                                   "5"});
   EXPECT_EQ(r.exit_code, 3) << r.err;
   EXPECT_EQ(dir.entries(), std::vector<std::string>{"clip.mp4"});
   EXPECT_EQ(read_text(dir / "clip.mp4"), "an earlier clip");
@@ -83,17 +99,17 @@ TEST_P(RenderSignal, IsExit128PlusSignalAndLeavesNoPartialFile) {
   EXPECT_TRUE(std::filesystem::is_empty(dir / "frames"));
 }
 
-INSTANTIATE_TEST_SUITE_P(Signals, RenderSignal, ::testing::Values(SIGINT, SIGTERM, SIGHUP),
-                         [](const ::testing::TestParamInfo<int>& param) {
-                           return std::string(param.param == SIGINT ? "SIGINT" : param.param == SIGTERM ? "SIGTERM" : "SIGHUP");
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Signals, RenderSignal, ::testing::Values(SIGINT, SIGTERM, SIGHUP), [](const ::testing::TestParamInfo<int>& param) {
+      return std::string(param.param == SIGINT ? "SIGINT" : param.param == SIGTERM ? "SIGTERM" : "SIGHUP");
+    });
 
 // SIGKILL cannot be handled: the temporary stays, and the next run that writes the same
 // target removes it (its process is gone).
 TEST(RenderSafety, NextRunRemovesWhatAKilledRunLeft) {
   TempDir dir;
-  const pid_t pid = start({"render", "--quiet", "--size", "320x180", "--duration", "600", "--out",
-                           (dir / "clip.mp4").string()});
+  const pid_t pid =
+      start({"render", "--quiet", "--size", "320x180", "--duration", "600", "--out", (dir / "clip.mp4").string()});
   ASSERT_TRUE(wait_for_work(dir, 0)) << "the render never started writing";
   ::kill(pid, SIGKILL);
   int status = 0;
@@ -105,8 +121,8 @@ TEST(RenderSafety, NextRunRemovesWhatAKilledRunLeft) {
   const std::string live = "clip.mp4.tmp-" + std::to_string(::getpid()) + "-0.mp4";
   write_text(dir / live, "in progress");
 
-  const RunResult r = run_linkage({"render", "--quiet", "--size", "64x36", "--duration", "0.2", "--out",
-                                   (dir / "clip.mp4").string()});
+  const RunResult r =
+      run_linkage({"render", "--quiet", "--size", "64x36", "--duration", "0.2", "--out", (dir / "clip.mp4").string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(dir.entries(), (std::vector<std::string>{"clip.mp4", live}));
 }

@@ -51,7 +51,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{{"--integrator", "rk45"},
                  "--integrator: 'rk45' is not an integrator; valid: euler, symplectic-euler, rk4, dopri5, dop853, "
                  "gauss-legendre"},
-        BadInput{{"--stabilize", "yes"}, "--stabilize: 'yes' is not a stabilization; valid: none, baumgarte, projection"},
+        BadInput{{"--stabilize", "yes"},
+                 "--stabilize: 'yes' is not a stabilization; valid: none, baumgarte, projection"},
         BadInput{{"--case", "4"}, "--case: '4' is not a case; valid: 1, 2, 3"},
         BadInput{{"--columns", "t,x3"}, "--columns: 'x3' is not a column; valid: all, t, x1"},
         BadInput{{"--columns", "t,t"}, "--columns: column 't' is listed twice"},

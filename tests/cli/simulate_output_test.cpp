@@ -47,8 +47,19 @@ Table parse_csv(const std::string& text) {
 }
 
 std::vector<std::string> reference_args(int case_id) {
-  std::vector<std::string> args{"simulate", "--integrator", "dop853", "--rtol", "1e-12", "--atol", "1e-12",
-                                "--duration", "10",    "--every",      "1",      "--case", std::to_string(case_id)};
+  std::vector<std::string> args{"simulate",
+                                "--integrator",
+                                "dop853",
+                                "--rtol",
+                                "1e-12",
+                                "--atol",
+                                "1e-12",
+                                "--duration",
+                                "10",
+                                "--every",
+                                "1",
+                                "--case",
+                                std::to_string(case_id)};
   if (case_id == 1) args.insert(args.end(), {"--stabilize", "projection"});
   return args;
 }
@@ -56,9 +67,9 @@ std::vector<std::string> reference_args(int case_id) {
 // The "done when": DOP853 at 1e-12 over 10 s reproduces the 25-digit reference
 // states to 1e-9 in every case (Case 1 with projection), derived columns included.
 TEST(SimulateCli, ReproducesTheReferenceStatesInEveryCase) {
-  const char* keys[] = {"x1",      "y1",      "theta1",      "theta2",      "x1_dot", "y1_dot",
-                        "theta1_dot", "theta2_dot", "x1_ddot", "y1_ddot", "theta1_ddot", "theta2_ddot",
-                        "F_x",     "F_y",     "energy",      "angular_momentum"};
+  const char* keys[] = {"x1",         "y1",         "theta1",  "theta2",          "x1_dot",      "y1_dot",
+                        "theta1_dot", "theta2_dot", "x1_ddot", "y1_ddot",         "theta1_ddot", "theta2_ddot",
+                        "F_x",        "F_y",        "energy",  "angular_momentum"};
   for (int case_id : {1, 2, 3}) {
     const RunResult r = run_linkage(reference_args(case_id));
     ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -96,12 +107,31 @@ TEST(SimulateCli, DefaultColumnsAreAllOfThemInOrder) {
   const RunResult r = run_linkage({"simulate", "--duration", "0.1", "--every", "0.05"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const Table table = parse_csv(r.out);
-  EXPECT_EQ(table.columns,
-            (std::vector<std::string>{"t", "x1", "y1", "theta1", "theta2", "x1_dot", "y1_dot", "theta1_dot",
-                                      "theta2_dot", "x2", "y2", "x2_dot", "y2_dot", "x1_ddot", "y1_ddot",
-                                      "theta1_ddot", "theta2_ddot", "F_x", "F_y", "energy", "momentum_x",
-                                      "momentum_y", "angular_momentum", "constraint_position_error",
-                                      "constraint_velocity_error"}));
+  EXPECT_EQ(table.columns, (std::vector<std::string>{"t",
+                                                     "x1",
+                                                     "y1",
+                                                     "theta1",
+                                                     "theta2",
+                                                     "x1_dot",
+                                                     "y1_dot",
+                                                     "theta1_dot",
+                                                     "theta2_dot",
+                                                     "x2",
+                                                     "y2",
+                                                     "x2_dot",
+                                                     "y2_dot",
+                                                     "x1_ddot",
+                                                     "y1_ddot",
+                                                     "theta1_ddot",
+                                                     "theta2_ddot",
+                                                     "F_x",
+                                                     "F_y",
+                                                     "energy",
+                                                     "momentum_x",
+                                                     "momentum_y",
+                                                     "angular_momentum",
+                                                     "constraint_position_error",
+                                                     "constraint_velocity_error"}));
   EXPECT_EQ(table.rows.size(), 3u);
   // At t = 0 the pin force matches the worked solution of the spec (example.json).
   const nlohmann::json& solution = spec_example()["solution"];
@@ -112,8 +142,8 @@ TEST(SimulateCli, DefaultColumnsAreAllOfThemInOrder) {
 
 TEST(SimulateCli, JsonFromTheExtensionWithOptionsAndSummary) {
   TempDir dir;
-  const RunResult r = run_linkage({"simulate", "--duration", "2", "--every", "0.5", "--columns", "t,x1,energy",
-                                   "--out", (dir / "run.json").string()});
+  const RunResult r = run_linkage({"simulate", "--duration", "2", "--every", "0.5", "--columns", "t,x1,energy", "--out",
+                                   (dir / "run.json").string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(r.out.empty());
   const nlohmann::json j = nlohmann::json::parse(read_text(dir / "run.json"));
@@ -155,7 +185,8 @@ TEST(SimulateCli, CsvFileAndFormatFlag) {
 }
 
 TEST(SimulateCli, SummaryOnStderr) {
-  const RunResult r = run_linkage({"simulate", "--case", "1", "--integrator", "rk4", "--dt", "0.01", "--duration", "5"});
+  const RunResult r =
+      run_linkage({"simulate", "--case", "1", "--integrator", "rk4", "--dt", "0.01", "--duration", "5"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("Case 1, rk4 (dt 0.01 s)"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("500 accepted, 0 rejected"), std::string::npos) << r.err;
@@ -166,8 +197,8 @@ TEST(SimulateCli, SummaryOnStderr) {
 }
 
 TEST(SimulateCli, OutputIsDeterministic) {
-  const std::vector<std::string> args{"simulate", "--case", "2", "--integrator", "gauss-legendre", "--dt", "0.01",
-                                      "--duration", "2"};
+  const std::vector<std::string> args{"simulate", "--case",     "2", "--integrator", "gauss-legendre", "--dt",
+                                      "0.01",     "--duration", "2"};
   const RunResult a = run_linkage(args), b = run_linkage(args);
   ASSERT_EQ(a.exit_code, 0) << a.err;
   EXPECT_EQ(a.out, b.out);
@@ -199,10 +230,10 @@ TEST(SimulateCli, Case1DriftsUnlessStabilized) {
 // Stiff Baumgarte gains blow RK4 up: one line naming the time, the step and what to
 // try, exit 3, no output file, and on stdout only whole CSV lines.
 TEST(SimulateCli, DivergenceIsExit3WithOneLineAndNoFile) {
-  const std::vector<std::string> stiff{"simulate",          "--case",         "1",   "--integrator", "rk4",
-                                       "--dt",              "0.01",           "--stabilize", "baumgarte",
-                                       "--baumgarte-alpha", "1e6",            "--baumgarte-beta", "1e6",
-                                       "--duration",        "5",              "--every", "0.01"};
+  const std::vector<std::string> stiff{
+      "simulate", "--case",      "1",         "--integrator",      "rk4", "--dt",
+      "0.01",     "--stabilize", "baumgarte", "--baumgarte-alpha", "1e6", "--baumgarte-beta",
+      "1e6",      "--duration",  "5",         "--every",           "0.01"};
   TempDir dir;
   std::vector<std::string> to_file = stiff;
   to_file.insert(to_file.end(), {"--out", (dir / "run.csv").string()});

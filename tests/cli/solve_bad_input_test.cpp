@@ -2,7 +2,6 @@
 // line on stderr naming the value, where it came from and what is valid; exit code 2;
 // nothing on stdout.
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
 #include <filesystem>

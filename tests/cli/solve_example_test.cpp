@@ -62,10 +62,9 @@ TEST(SolveExample, ReproducesEveryValueOfExampleJson) {
 
 TEST(SolveExample, EachCaseHasTheIssuesFieldsInRowOrder) {
   const json doc = solve_json({});  // --case all is the default
-  const std::vector<std::vector<std::string>> labels = {
-      {"1.1", "2.1", "3.1", "4.1", "5.1", "6.1", "7.1", "8.1"},
-      {"1.2", "2.2", "3.2", "4.2", "5.2", "6.2"},
-      {"1.3", "2.3", "3.3", "4.3"}};
+  const std::vector<std::vector<std::string>> labels = {{"1.1", "2.1", "3.1", "4.1", "5.1", "6.1", "7.1", "8.1"},
+                                                        {"1.2", "2.2", "3.2", "4.2", "5.2", "6.2"},
+                                                        {"1.3", "2.3", "3.3", "4.3"}};
   const std::vector<std::vector<std::string>> unknowns = {
       {"x1_ddot", "y1_ddot", "theta1_ddot", "x2_ddot", "y2_ddot", "theta2_ddot", "F_x", "F_y"},
       {"x1_ddot", "y1_ddot", "theta1_ddot", "theta2_ddot", "F_x", "F_y"},
@@ -84,7 +83,8 @@ TEST(SolveExample, EachCaseHasTheIssuesFieldsInRowOrder) {
     double sum = 0;
     for (std::size_t r = 0; r < n; ++r) {
       double ax = -c["B"][r].get<double>();
-      for (std::size_t k = 0; k < n; ++k) ax += c["A"][r][k].get<double>() * c["solution"][unknowns[i][k]].get<double>();
+      for (std::size_t k = 0; k < n; ++k)
+        ax += c["A"][r][k].get<double>() * c["solution"][unknowns[i][k]].get<double>();
       sum += ax * ax;
     }
     EXPECT_LT(std::sqrt(sum), 1e-13);
@@ -102,14 +102,14 @@ TEST(SolveExample, OneCaseAndInputsFromFileAndFlags) {
   ASSERT_EQ(doc["cases"].size(), 1u);
   EXPECT_EQ(doc["cases"][0]["case"], 3);
   EXPECT_FALSE(doc.contains("agreement"));
-  EXPECT_EQ(doc["parameters"]["m"], 2.0);     // from the file
-  EXPECT_EQ(doc["state"]["theta2"], 0.7);     // the flag overrides the file
-  EXPECT_EQ(doc["parameters"]["L"], 0.3);     // the default
+  EXPECT_EQ(doc["parameters"]["m"], 2.0);  // from the file
+  EXPECT_EQ(doc["state"]["theta2"], 0.7);  // the flag overrides the file
+  EXPECT_EQ(doc["parameters"]["L"], 0.3);  // the default
   expect_relative(doc["derived"]["I_zz_C"].get<double>(), 2 * (0.01 + 0.09) / 12, "I_zz_C");
 
   // The text report says where the inputs came from.
-  const test::RunResult text =
-      test::run_linkage({"solve", "--ascii", "--case", "3", "--config", (dir / "run.toml").string(), "--theta2", "0.7"});
+  const test::RunResult text = test::run_linkage(
+      {"solve", "--ascii", "--case", "3", "--config", (dir / "run.toml").string(), "--theta2", "0.7"});
   std::string joined;  // undo the prose wrapping
   for (std::size_t i = 0; i < text.out.size(); ++i) {
     const bool wrapped = text.out.compare(i, 3, "\n  ") == 0;

@@ -43,7 +43,8 @@ std::string first_difference(const std::string& expected, const std::string& act
     const bool more_b = static_cast<bool>(std::getline(b, lb));
     if (!more_a && !more_b) return "(identical lines; differing line endings?)";
     if (la != lb || more_a != more_b)
-      return "line " + std::to_string(line) + "\n  golden: " + (more_a ? la : "<end>") + "\n  actual: " + (more_b ? lb : "<end>");
+      return "line " + std::to_string(line) + "\n  golden: " + (more_a ? la : "<end>") +
+             "\n  actual: " + (more_b ? lb : "<end>");
   }
 }
 

@@ -51,14 +51,19 @@ TEST(SolveOutput, HelpExplainsEveryOptionWithUnitAndDefault) {
   for (const char* text : {"--case", "(default all)", "--format", "text", "latex", "markdown", "json", "(default text)",
                            "--digits", "(default 6)", "--ascii", "--unicode", "--config", "flags override it"})
     EXPECT_NE(r.out.find(text), std::string::npos) << text;
-  const std::vector<std::pair<const char*, const char*>> flags = {
-      {"--L", "m (default 0.3)"},          {"--w", "m (default 0.1)"},
-      {"--b", "m (default 0.04)"},         {"--m", "kg (default 0.1)"},
-      {"--g", "m/s^2 (default 9.81)"},     {"--x1", "m (default 1)"},
-      {"--y1", "m (default 2)"},           {"--theta1", "rad (default 0.1)"},
-      {"--theta2", "rad (default 0.2)"},   {"--x1-dot", "m/s (default 0.15)"},
-      {"--y1-dot", "m/s (default 0.25)"},  {"--theta1-dot", "rad/s (default 0.35)"},
-      {"--theta2-dot", "rad/s (default 0.45)"}};
+  const std::vector<std::pair<const char*, const char*>> flags = {{"--L", "m (default 0.3)"},
+                                                                  {"--w", "m (default 0.1)"},
+                                                                  {"--b", "m (default 0.04)"},
+                                                                  {"--m", "kg (default 0.1)"},
+                                                                  {"--g", "m/s^2 (default 9.81)"},
+                                                                  {"--x1", "m (default 1)"},
+                                                                  {"--y1", "m (default 2)"},
+                                                                  {"--theta1", "rad (default 0.1)"},
+                                                                  {"--theta2", "rad (default 0.2)"},
+                                                                  {"--x1-dot", "m/s (default 0.15)"},
+                                                                  {"--y1-dot", "m/s (default 0.25)"},
+                                                                  {"--theta1-dot", "rad/s (default 0.35)"},
+                                                                  {"--theta2-dot", "rad/s (default 0.45)"}};
   for (const auto& [flag, unit_and_default] : flags) {
     const auto at = r.out.find(std::string("  ") + flag + " ");
     ASSERT_NE(at, std::string::npos) << flag;
@@ -86,8 +91,8 @@ TEST(SolveOutput, LatexCompilesInAStandardDocument) {
   test::write_text(dir / "doc.tex",
                    "\\documentclass{article}\n\\usepackage{amsmath}\n\\begin{document}\n\\input{solution}\n"
                    "\\end{document}\n");
-  const std::string command = "cd '" + dir.path().string() +
-                              "' && pdflatex -interaction=nonstopmode -halt-on-error doc.tex >/dev/null 2>&1";
+  const std::string command =
+      "cd '" + dir.path().string() + "' && pdflatex -interaction=nonstopmode -halt-on-error doc.tex >/dev/null 2>&1";
   ASSERT_EQ(std::system(command.c_str()), 0) << test::read_text(dir / "doc.log");
   EXPECT_TRUE(std::filesystem::exists(dir / "doc.pdf"));
   const std::string log = test::read_text(dir / "doc.log");

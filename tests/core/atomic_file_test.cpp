@@ -1,5 +1,6 @@
-#include <gtest/gtest.h>
+#include "core/atomic_file.hpp"
 
+#include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -11,7 +12,6 @@
 #include <iterator>
 #include <thread>
 
-#include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "support/test_support.hpp"
 

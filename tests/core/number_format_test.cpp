@@ -1,8 +1,8 @@
+#include "core/number_format.hpp"
+
 #include <gtest/gtest.h>
 
 #include <string>
-
-#include "core/number_format.hpp"
 
 namespace linkage {
 namespace {

@@ -61,14 +61,14 @@ void expect_error(Call call, ExitCode code, const std::string& text) {
 
 /// An MP4 read back through libavformat and libavcodec.
 struct DecodedVideo {
-  std::string codec;                  // decoder's codec name, e.g. "h264"
+  std::string codec;  // decoder's codec name, e.g. "h264"
   AVPixelFormat pixel_format = AV_PIX_FMT_NONE;
   AVColorSpace colorspace = AVCOL_SPC_UNSPECIFIED;
   int width = 0, height = 0;
-  AVRational frame_rate{0, 1};        // stream's average frame rate
-  double stream_duration = 0;         // s, from the stream header
-  double container_duration = 0;      // s, from the container
-  std::vector<double> times;          // s, presentation time of each decoded frame
+  AVRational frame_rate{0, 1};                 // stream's average frame rate
+  double stream_duration = 0;                  // s, from the stream header
+  double container_duration = 0;               // s, from the container
+  std::vector<double> times;                   // s, presentation time of each decoded frame
   std::vector<std::vector<std::uint8_t>> rgb;  // each frame as packed RGB24 (BT.709 limited range in)
 };
 
@@ -149,7 +149,8 @@ inline std::vector<std::string> top_level_atoms(const std::filesystem::path& pat
   std::size_t at = 0;
   while (at + 8 <= bytes.size()) {
     std::uint64_t size = be(at, 4);
-    atoms.emplace_back(bytes.begin() + static_cast<std::ptrdiff_t>(at) + 4, bytes.begin() + static_cast<std::ptrdiff_t>(at) + 8);
+    atoms.emplace_back(bytes.begin() + static_cast<std::ptrdiff_t>(at) + 4,
+                       bytes.begin() + static_cast<std::ptrdiff_t>(at) + 8);
     if (size == 1) size = be(at + 8, 8);  // 64-bit size follows the type
     if (size == 0) break;                 // extends to the end of the file
     if (size < 8) throw std::runtime_error("malformed box size in " + path.string());
@@ -170,7 +171,8 @@ inline DecodedPng decode_png(const std::filesystem::path& path) {
   const std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const std::unique_ptr<spng_ctx, decltype(&spng_ctx_free)> context(spng_ctx_new(0), &spng_ctx_free);
   auto ok = [&](int status, const char* what) {
-    if (status != 0) throw std::runtime_error(std::string(what) + ": " + spng_strerror(status) + " in " + path.string());
+    if (status != 0)
+      throw std::runtime_error(std::string(what) + ": " + spng_strerror(status) + " in " + path.string());
   };
   ok(spng_set_png_buffer(context.get(), bytes.data(), bytes.size()), "buffer");
   spng_ihdr header{};
@@ -190,7 +192,8 @@ inline DecodedPng decode_png(const std::filesystem::path& path) {
 /// Names of the entries of a folder, sorted.
 inline std::vector<std::string> entries(const std::filesystem::path& folder) {
   std::vector<std::string> names;
-  for (const auto& entry : std::filesystem::directory_iterator(folder)) names.push_back(entry.path().filename().string());
+  for (const auto& entry : std::filesystem::directory_iterator(folder))
+    names.push_back(entry.path().filename().string());
   std::sort(names.begin(), names.end());
   return names;
 }

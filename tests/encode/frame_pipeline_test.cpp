@@ -39,7 +39,8 @@ bool in_pool(FramePipeline& pipeline, const Frame& frame) {
 
 TEST(FramePipeline, ConsumesEveryFrameInOrderFromTheFixedBuffers) {
   std::vector<int> seen;  // written by the encoder thread, read after finish()
-  FramePipeline pipeline(8, 6, [&](const Frame& frame) { seen.push_back(stamped(frame)); }, 3);
+  FramePipeline pipeline(
+      8, 6, [&](const Frame& frame) { seen.push_back(stamped(frame)); }, 3);
   ASSERT_EQ(pipeline.buffers().size(), 3U);
   constexpr int frames = 200;
   for (int k = 0; k < frames; ++k) {
@@ -170,7 +171,9 @@ TEST(FramePipeline, MisuseIsReported) {
   EXPECT_THROW((void)pipeline.acquire(), Error);
   pipeline.submit();
   pipeline.finish();
-  EXPECT_THROW(FramePipeline(4, 4, [](const Frame&) {}, 1), Error);
+  EXPECT_THROW(FramePipeline(
+                   4, 4, [](const Frame&) {}, 1),
+               Error);
 }
 
 TEST(FramePipeline, FeedsVideoAndPngSequenceTogether) {

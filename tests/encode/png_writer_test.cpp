@@ -103,7 +103,8 @@ TEST(PngSequenceWriter, WritesExactlyTheNumberedFramesInParallel) {
     EXPECT_GT(writer.stats().encode_seconds, 0.0);
   }
   std::vector<std::string> expected;
-  for (int k = 0; k < frames; ++k) expected.push_back("frame_000" + std::string(k < 10 ? "0" : "") + std::to_string(k) + ".png");
+  for (int k = 0; k < frames; ++k)
+    expected.push_back("frame_000" + std::string(k < 10 ? "0" : "") + std::to_string(k) + ".png");
   EXPECT_EQ(dir.entries(), expected);
   for (int k : {0, 1, 12, frames - 1})
     expect_same_pixels(test::decode_png(dir / expected[static_cast<std::size_t>(k)]), gradient_frame(k));
@@ -162,11 +163,12 @@ TEST(PngSequenceWriter, WorkerFailureReachesTheCaller) {
     std::error_code ec;  // a worker may still be adding frame 0: retry until the folder is gone
     for (const auto& name : dir.entries()) std::filesystem::remove_all(dir / name, ec);
   }
-  expect_error([&] {
-    for (int k = 1; k < 50; ++k) writer.write(gradient_frame(k));
-    writer.finish();
-  },
-               ExitCode::failure, "cannot create");
+  expect_error(
+      [&] {
+        for (int k = 1; k < 50; ++k) writer.write(gradient_frame(k));
+        writer.finish();
+      },
+      ExitCode::failure, "cannot create");
 }
 
 }  // namespace

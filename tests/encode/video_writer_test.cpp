@@ -224,7 +224,8 @@ TEST(VideoWriter, ReadOnlyFolderIsAClearInputError) {
   if (::geteuid() == 0) GTEST_SKIP() << "root may write into read-only folders";
   const TempDir dir;
   std::filesystem::create_directory(dir / "read-only");
-  std::filesystem::permissions(dir / "read-only", std::filesystem::perms::owner_read | std::filesystem::perms::owner_exec);
+  std::filesystem::permissions(dir / "read-only",
+                               std::filesystem::perms::owner_read | std::filesystem::perms::owner_exec);
   expect_error([&] { VideoWriter writer(dir / "read-only" / "clip.mp4", small_options()); }, ExitCode::bad_input,
                "is not writable");
 }

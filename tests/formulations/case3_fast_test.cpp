@@ -1,5 +1,7 @@
 // The closed-form Case 3 accelerations against the one definition (case3.hpp solved by
 // the block solver), the spec's example, and its own long double evaluation.
+#include "formulations/case3_fast.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -7,7 +9,6 @@
 #include <random>
 
 #include "formulations/case3.hpp"
-#include "formulations/case3_fast.hpp"
 #include "formulations/linear_solve.hpp"
 #include "support/test_support.hpp"
 
@@ -32,7 +33,8 @@ std::vector<Sample> random_samples(int count) {
     p.m = std::pow(10.0, -6.0 + 12.0 * unit(rng));
     p.g = 20.0 * unit(rng);
     const double spin = std::pow(10.0, -1.0 + 5.0 * unit(rng));
-    out.push_back({p, 20 * unit(rng) - 10, 20 * unit(rng) - 10, spin * (2 * unit(rng) - 1), spin * (2 * unit(rng) - 1)});
+    out.push_back(
+        {p, 20 * unit(rng) - 10, 20 * unit(rng) - 10, spin * (2 * unit(rng) - 1), spin * (2 * unit(rng) - 1)});
   }
   return out;
 }
@@ -55,7 +57,8 @@ TEST(Case3Fast, MatchesTheDefinitionsBlockSolveToRoundOff) {
     for (int i = 0; i < 4; ++i) EXPECT_NEAR(got[i], want[i], 1e-12 * scales[i] + 1e-300) << "unknown " << i;
     // And it satisfies the definition's equations with a round-off residual.
     const Vec<4> q = Eigen::Map<const Vec<4>>(got);
-    const double residual_scale = system.A.cwiseAbs().maxCoeff() * q.cwiseAbs().maxCoeff() + system.B.cwiseAbs().maxCoeff();
+    const double residual_scale =
+        system.A.cwiseAbs().maxCoeff() * q.cwiseAbs().maxCoeff() + system.B.cwiseAbs().maxCoeff();
     EXPECT_LT((system.A * q - system.B).cwiseAbs().maxCoeff(), 1e-13 * residual_scale);
   }
 }

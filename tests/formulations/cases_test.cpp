@@ -25,8 +25,8 @@ Params example_params() {
 
 State example_state() {
   const auto& s = test::spec_example()["state"];
-  return {s["x1"].get<double>(),     s["y1"].get<double>(),     s["theta1"].get<double>(),
-          s["theta2"].get<double>(), s["x1_dot"].get<double>(), s["y1_dot"].get<double>(),
+  return {s["x1"].get<double>(),         s["y1"].get<double>(),        s["theta1"].get<double>(),
+          s["theta2"].get<double>(),     s["x1_dot"].get<double>(),    s["y1_dot"].get<double>(),
           s["theta1_dot"].get<double>(), s["theta2_dot"].get<double>()};
 }
 
@@ -66,8 +66,14 @@ std::vector<Sample> random_samples(int count) {
     p.m = std::pow(10.0, -6.0 + 12.0 * unit(rng));
     p.g = 20.0 * unit(rng);
     const double spin = std::pow(10.0, -1.0 + 4.0 * unit(rng));
-    State s{angle(rng), angle(rng), angle(rng), angle(rng), angle(rng), angle(rng),
-            spin * (2 * unit(rng) - 1), spin * (2 * unit(rng) - 1)};
+    State s{angle(rng),
+            angle(rng),
+            angle(rng),
+            angle(rng),
+            angle(rng),
+            angle(rng),
+            spin * (2 * unit(rng) - 1),
+            spin * (2 * unit(rng) - 1)};
     samples.push_back({p, s});
   }
   return samples;
@@ -84,10 +90,13 @@ double unknown_scale(Unknown u, const Params& p, const State& s) {
   const double a = acceleration_scale(p, s);
   switch (u) {
     case Unknown::theta1_ddot:
-    case Unknown::theta2_ddot: return a / std::max(std::fabs(p.pin_offset()), p.L * 1e-3) + a / p.L;
+    case Unknown::theta2_ddot:
+      return a / std::max(std::fabs(p.pin_offset()), p.L * 1e-3) + a / p.L;
     case Unknown::F_x:
-    case Unknown::F_y: return p.m * a;
-    default: return a;
+    case Unknown::F_y:
+      return p.m * a;
+    default:
+      return a;
   }
 }
 
@@ -137,12 +146,13 @@ TEST(Cases, EquationsOfMotionConserveEnergyMomentumAndAngularMomentum) {
       const CaseSolution c = solve_case(id, p, sample.state);
       auto a = [&](Unknown u) { return solution_value(c, u, p); };
       const double I = p.inertia_centroidal();
-      const double power_terms = p.m * (std::fabs(b.x1_dot * a(Unknown::x1_ddot)) + std::fabs(b.y1_dot * a(Unknown::y1_ddot)) +
-                                        std::fabs(b.x2_dot * a(Unknown::x2_ddot)) + std::fabs(b.y2_dot * a(Unknown::y2_ddot))) +
-                                 I * (std::fabs(b.theta1_dot * a(Unknown::theta1_ddot)) + std::fabs(b.theta2_dot * a(Unknown::theta2_ddot))) +
-                                 p.m * p.g * (std::fabs(b.y1_dot) + std::fabs(b.y2_dot));
-      const double dE = p.m * (b.x1_dot * a(Unknown::x1_ddot) + b.y1_dot * a(Unknown::y1_ddot) + b.x2_dot * a(Unknown::x2_ddot) +
-                               b.y2_dot * a(Unknown::y2_ddot)) +
+      const double power_terms =
+          p.m * (std::fabs(b.x1_dot * a(Unknown::x1_ddot)) + std::fabs(b.y1_dot * a(Unknown::y1_ddot)) +
+                 std::fabs(b.x2_dot * a(Unknown::x2_ddot)) + std::fabs(b.y2_dot * a(Unknown::y2_ddot))) +
+          I * (std::fabs(b.theta1_dot * a(Unknown::theta1_ddot)) + std::fabs(b.theta2_dot * a(Unknown::theta2_ddot))) +
+          p.m * p.g * (std::fabs(b.y1_dot) + std::fabs(b.y2_dot));
+      const double dE = p.m * (b.x1_dot * a(Unknown::x1_ddot) + b.y1_dot * a(Unknown::y1_ddot) +
+                               b.x2_dot * a(Unknown::x2_ddot) + b.y2_dot * a(Unknown::y2_ddot)) +
                         I * (b.theta1_dot * a(Unknown::theta1_ddot) + b.theta2_dot * a(Unknown::theta2_ddot)) +
                         p.m * p.g * (b.y1_dot + b.y2_dot);
       EXPECT_LE(std::fabs(dE), 1e-10 * power_terms + 1e-300) << "case " << id;

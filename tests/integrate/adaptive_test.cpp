@@ -52,9 +52,7 @@ TEST(Adaptive, Dop853MeetsItsTolerance) { expect_tolerances_met<ode::Dop853<doub
 template <class Integrator>
 double dense_error_mid_step(double h) {
   auto f = [](double /*t*/, const Vec<2>& y, Vec<2>& dydt) { dydt << -0.1 * y[0] - y[1], y[0] - 0.1 * y[1]; };
-  auto exact = [](double t) {
-    return Vec<2>(std::exp(-0.1 * t) * std::cos(t), std::exp(-0.1 * t) * std::sin(t));
-  };
+  auto exact = [](double t) { return Vec<2>(std::exp(-0.1 * t) * std::cos(t), std::exp(-0.1 * t) * std::sin(t)); };
   typename Integrator::Settings s = settings<Integrator>(1.0);  // accept the step whatever its error
   s.first_step = h;
   Integrator integrator(s);

@@ -8,8 +8,8 @@
 #include "integrate/explicit_rk.hpp"
 #include "integrate/gauss_legendre.hpp"
 #include "integrate/linkage_rhs.hpp"
-#include "integrate/symplectic_euler.hpp"
 #include "integrate/reference.hpp"
+#include "integrate/symplectic_euler.hpp"
 
 namespace linkage {
 namespace {
@@ -60,9 +60,7 @@ TEST(FixedStep, GaussLegendreIsFourthOrder) {
   EXPECT_NEAR((observed_order<ode::GaussLegendre2<double, 8>>(10.0, {40, 80, 160, 320})), 4.0, 0.3);
 }
 
-TEST(FixedStep, Rk4ReachesTheReferenceAtSmallSteps) {
-  EXPECT_LT((error_at<ode::Rk4<double, 8>>(10.0, 1000)), 1e-9);
-}
+TEST(FixedStep, Rk4ReachesTheReferenceAtSmallSteps) { EXPECT_LT((error_at<ode::Rk4<double, 8>>(10.0, 1000)), 1e-9); }
 
 TEST(FixedStep, CountsEvaluationsAndSteps) {
   const GeneralizedRhs<Case3> f(test::reference_params());

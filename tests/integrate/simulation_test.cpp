@@ -1,5 +1,7 @@
 // The Simulation seam: the spec's reference motion for every case, the cases agreeing
 // with each other, sampling rules, Case 1 stabilization, failures and option checks.
+#include "integrate/simulation.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,7 +12,6 @@
 #include "integrate/linkage_rhs.hpp"
 #include "integrate/projection.hpp"
 #include "integrate/reference.hpp"
-#include "integrate/simulation.hpp"
 #include "model/kinematics.hpp"
 
 namespace linkage {
@@ -287,8 +288,9 @@ TEST(SimulationOptions, ParsesNamesAndListsTheValidOnes) {
     (void)parse_integrator("rk45", "--integrator");
     FAIL();
   } catch (const Error& e) {
-    EXPECT_EQ(std::string(e.what()), "--integrator: 'rk45' is not an integrator; valid: euler, symplectic-euler, rk4, "
-                                     "dopri5, dop853, gauss-legendre");
+    EXPECT_EQ(std::string(e.what()),
+              "--integrator: 'rk45' is not an integrator; valid: euler, symplectic-euler, rk4, "
+              "dopri5, dop853, gauss-legendre");
   }
   EXPECT_THROW((void)parse_stabilization("baumgärte", "--stabilize"), Error);
 }

@@ -1,9 +1,10 @@
 // Content hashes and the artifact cache.
+#include "lesson/cache.hpp"
+
 #include <gtest/gtest.h>
 
 #include <sstream>
 
-#include "lesson/cache.hpp"
 #include "lesson/canonical.hpp"
 #include "support/test_support.hpp"
 
@@ -35,7 +36,7 @@ TEST(ArtifactCache, HitsOnlyWithTheSameHashAndIntactFiles) {
   EXPECT_EQ((*cache.lookup(artifacts, "h1"))["k"], 1);
   EXPECT_FALSE(cache.lookup(artifacts, "h2"));
   EXPECT_FALSE(ArtifactCache(dir.path(), true, notes).lookup(artifacts, "h1"));  // --force
-  test::write_text(dir / "a.svg", "<svg></svg>");                          // changed behind our back
+  test::write_text(dir / "a.svg", "<svg></svg>");                                // changed behind our back
   EXPECT_FALSE(cache.lookup(artifacts, "h1"));
   cache.store(artifacts, "h1", {});
   std::filesystem::remove(dir / "a.png");

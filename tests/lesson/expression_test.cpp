@@ -1,10 +1,11 @@
 // Answer expressions and {{...}} placeholders over the named quantities.
+#include "lesson/expression.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "core/error.hpp"
-#include "lesson/expression.hpp"
 #include "lesson/text_template.hpp"
 #include "support/test_support.hpp"
 
@@ -67,13 +68,17 @@ TEST(Expression, ConstantAndSingleQuantity) {
 }
 
 TEST(Expression, ErrorsNameThePlaceAndSuggest) {
-  EXPECT_EQ(error_of("I_zzP"), "f.toml:3:10: answer: unknown name 'I_zzP' at character 1 (did you mean 'I_zz_P'?); "
-                               "names: " + [] {
-                                 std::string names;
-                                 for (const auto& q : kQuantities) names += (names.empty() ? "" : ", ") + std::string(q.name);
-                                 return names;
-                               }());
-  EXPECT_NE(error_of("sinn(1)").find("unknown function 'sinn' at character 1 (did you mean 'sin'?)"), std::string::npos);
+  EXPECT_EQ(
+      error_of("I_zzP"),
+      "f.toml:3:10: answer: unknown name 'I_zzP' at character 1 (did you mean 'I_zz_P'?); "
+      "names: " +
+          [] {
+            std::string names;
+            for (const auto& q : kQuantities) names += (names.empty() ? "" : ", ") + std::string(q.name);
+            return names;
+          }());
+  EXPECT_NE(error_of("sinn(1)").find("unknown function 'sinn' at character 1 (did you mean 'sin'?)"),
+            std::string::npos);
   EXPECT_NE(error_of("1 +").find("the expression ends too early at character 4 of '1 +'"), std::string::npos);
   EXPECT_NE(error_of("(1 + 2").find("expected ')' at character 7"), std::string::npos);
   EXPECT_NE(error_of("1 2").find("unexpected '2' at character 3"), std::string::npos);

@@ -1,11 +1,12 @@
 // Lesson Markdown for a terminal (wrapped) and for LaTeX (compilable by pdflatex).
+#include "lesson/markdown.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <sstream>
 
 #include "lesson/latex_text.hpp"
-#include "lesson/markdown.hpp"
 #include "report/text_layout.hpp"
 
 namespace linkage::lesson {
@@ -36,7 +37,8 @@ TEST(MarkdownText, ParagraphsWrapToTheWidth) {
 TEST(MarkdownText, ListsQuotesHeadingsAndBlocks) {
   const std::string out = markdown_to_text(
       "# Spot the mistake\n\nIntro line\ncontinues here.\n\n- first item that is long enough to wrap around the "
-      "narrow terminal width\n- second\n\n> the text says 2.0433 x 10^-4\n\n```\ncode  stays\n```\n\n$$\nA q = B\n$$\n\n"
+      "narrow terminal width\n- second\n\n> the text says 2.0433 x 10^-4\n\n```\ncode  stays\n```\n\n$$\nA q = "
+      "B\n$$\n\n"
       "See [the spec](spec.txt), *holonomic* and m * D.",
       40);
   const std::vector<std::string> lines = lines_of(out);
@@ -76,8 +78,9 @@ TEST(MarkdownLatex, ConvertsMarkupAndSymbols) {
 }
 
 TEST(MarkdownLatex, Blocks) {
-  const std::string out = markdown_to_latex("# Title\n\n- a\n- b\n\n1. one\n2. two\n\n> quote\n\n$$\nx = 1\n$$\n\n"
-                                            "| a | b |\n|---|---|\n| 1 | 2 |\n");
+  const std::string out = markdown_to_latex(
+      "# Title\n\n- a\n- b\n\n1. one\n2. two\n\n> quote\n\n$$\nx = 1\n$$\n\n"
+      "| a | b |\n|---|---|\n| 1 | 2 |\n");
   EXPECT_NE(out.find("\\subsection*{Title}"), std::string::npos);
   EXPECT_NE(out.find("\\begin{itemize}\n  \\item a\n  \\item b\n\\end{itemize}"), std::string::npos);
   EXPECT_NE(out.find("\\begin{enumerate}\n  \\item one\n  \\item two\n\\end{enumerate}"), std::string::npos);

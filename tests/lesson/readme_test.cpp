@@ -36,7 +36,8 @@ void expect_documented(std::span<const KeySpec> keys, const std::string& where) 
     row += k.type;
     row += " |";
     EXPECT_NE(readme().find(row), std::string::npos)
-        << "key '" << k.name << "' (" << where << ") is missing from lessons/README.md with its type '" << k.type << "'";
+        << "key '" << k.name << "' (" << where << ") is missing from lessons/README.md with its type '" << k.type
+        << "'";
   }
 }
 

@@ -1,8 +1,9 @@
 // --only ranges.
+#include "lesson/step_range.hpp"
+
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
-#include "lesson/step_range.hpp"
 
 namespace linkage::lesson {
 namespace {

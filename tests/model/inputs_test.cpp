@@ -1,10 +1,11 @@
+#include "model/inputs.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "core/error.hpp"
 #include "core/limits.hpp"
-#include "model/inputs.hpp"
 #include "model/inputs_toml.hpp"
 #include "support/test_support.hpp"
 
@@ -44,7 +45,8 @@ TEST(Inputs, RangeErrorsNameValueOriginAndRange) {
   Inputs negative;
   negative.set(*find_input_key("g"), -9.81, "--g");
   EXPECT_NE(error_of([&] { negative.validate(); }).find("g must be >= 0"), std::string::npos);
-  EXPECT_NE(error_of([&] { negative.set(*find_input_key("m"), NAN, "--m"); }).find("not a finite number"), std::string::npos);
+  EXPECT_NE(error_of([&] { negative.set(*find_input_key("m"), NAN, "--m"); }).find("not a finite number"),
+            std::string::npos);
 }
 
 TEST(Inputs, TomlFileErrorsNameFileLineAndColumn) {
@@ -52,11 +54,13 @@ TEST(Inputs, TomlFileErrorsNameFileLineAndColumn) {
   const auto file = dir / "run.toml";
   test::write_text(file, "L = 0.5\n  thetta1 = 0.3\n");
   const std::string message = error_of([&] { Inputs().apply_file(file); });
-  EXPECT_NE(message.find(file.string() + ":2:3: unknown key 'thetta1' (did you mean 'theta1'?)"), std::string::npos) << message;
+  EXPECT_NE(message.find(file.string() + ":2:3: unknown key 'thetta1' (did you mean 'theta1'?)"), std::string::npos)
+      << message;
   EXPECT_NE(message.find("valid keys: L, w, b, m, g, x1"), std::string::npos) << message;
 
   test::write_text(file, "m = \"heavy\"\n");
-  EXPECT_NE(error_of([&] { Inputs().apply_file(file); }).find(":1:5: m must be a number in kg, got a string"), std::string::npos);
+  EXPECT_NE(error_of([&] { Inputs().apply_file(file); }).find(":1:5: m must be a number in kg, got a string"),
+            std::string::npos);
 
   test::write_text(file, "m = 0.2\nL = = 3\n");
   EXPECT_NE(error_of([&] { Inputs().apply_file(file); }).find(file.string() + ":2:"), std::string::npos);

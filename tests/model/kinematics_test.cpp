@@ -1,8 +1,9 @@
+#include "model/kinematics.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "model/kinematics.hpp"
 #include "support/test_support.hpp"
 
 namespace linkage {

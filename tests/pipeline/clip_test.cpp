@@ -1,4 +1,6 @@
 // The one render pipeline: a clip is a value, producing it is one call.
+#include "pipeline/clip.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -6,7 +8,6 @@
 #include <vector>
 
 #include "core/error.hpp"
-#include "pipeline/clip.hpp"
 #include "support/test_support.hpp"
 
 namespace linkage {
@@ -49,7 +50,8 @@ TEST(Clip, FramesFolderIsMadeWithItsParentsAndFilled) {
   std::vector<std::string> names;
   for (const auto& entry : fs::directory_iterator(*clip.frames)) names.push_back(entry.path().filename().string());
   std::sort(names.begin(), names.end());
-  EXPECT_EQ(names, (std::vector<std::string>{"frame_00000.png", "frame_00001.png", "frame_00002.png", "frame_00003.png"}));
+  EXPECT_EQ(names,
+            (std::vector<std::string>{"frame_00000.png", "frame_00001.png", "frame_00002.png", "frame_00003.png"}));
 }
 
 TEST(Clip, StillDrawsOneFrameAndOpensNoEncoder) {

@@ -1,6 +1,6 @@
-#include <gtest/gtest.h>
-
 #include "render/camera.hpp"
+
+#include <gtest/gtest.h>
 
 namespace linkage {
 namespace {

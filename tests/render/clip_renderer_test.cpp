@@ -1,3 +1,5 @@
+#include "render/clip_renderer.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -6,7 +8,6 @@
 
 #include "core/error.hpp"
 #include "model/kinematics.hpp"
-#include "render/clip_renderer.hpp"
 #include "render_test_support.hpp"
 
 namespace linkage {
@@ -16,9 +17,9 @@ namespace {
 // colour can only come from that element.
 Theme marked_theme() {
   Theme theme = load_theme("light", {}, "--theme");
-  theme.pin_fill = {1, 0, 1, 1};          // magenta
-  theme.pin_force = {0, 0.8, 0, 1};       // pure green
-  theme.gravity = {0, 0, 0.8, 1};         // pure blue
+  theme.pin_fill = {1, 0, 1, 1};     // magenta
+  theme.pin_force = {0, 0.8, 0, 1};  // pure green
+  theme.gravity = {0, 0, 0.8, 1};    // pure blue
   return theme;
 }
 
@@ -91,7 +92,8 @@ TEST(ClipRenderer, ForceArrowsPointTheRightWay) {
     const Vec2 direction(world_direction.x(), -world_direction.y());  // y down in pixels
     const Vec2 normal(-direction.y(), direction.x());
     // The shaft runs from P along the force...
-    for (double f = 0.25; f <= 0.65; f += 0.05) EXPECT_TRUE(near(frame, pin + f * length * direction, theme.pin_force)) << sign << " " << f;
+    for (double f = 0.25; f <= 0.65; f += 0.05)
+      EXPECT_TRUE(near(frame, pin + f * length * direction, theme.pin_force)) << sign << " " << f;
     // ...the head, wider than the shaft, is at its far end...
     const double off = 0.43 * style.arrow_head_half_width();
     const Vec2 head = pin + (length - 0.6 * style.arrow_head_length()) * direction;
@@ -158,7 +160,8 @@ void check_golden(const std::string& name, const RenderSettings& settings, const
   ClipRenderer renderer(p, motion, settings, load_theme(settings.theme, {}, "--theme"), "Case 3 \u00b7 dop853");
   Frame frame(settings.width, settings.height);
   renderer.draw(index, frame);
-  const std::filesystem::path golden = std::filesystem::path(LINKAGE_SOURCE_DIR) / "tests/data/render" / (name + ".png");
+  const std::filesystem::path golden =
+      std::filesystem::path(LINKAGE_SOURCE_DIR) / "tests/data/render" / (name + ".png");
   if (const char* update = std::getenv("LINKAGE_UPDATE_GOLDENS"); update != nullptr && std::string(update) == "1") {
     test::write_png_file(frame, golden);
     GTEST_SKIP() << "wrote " << golden;

@@ -16,7 +16,8 @@ long pin_pixels(const std::string& name, RenderSettings settings, const Motion& 
   ClipRenderer renderer(p, motion, settings, theme, "Case 3 \u00b7 dop853");
   Frame frame(settings.width, settings.height);
   renderer.draw(index, frame);
-  if (const auto folder = test::picture_folder(); !folder.empty()) test::write_png_file(frame, folder / (name + ".png"));
+  if (const auto folder = test::picture_folder(); !folder.empty())
+    test::write_png_file(frame, folder / (name + ".png"));
   theme.pin_fill = {1, 0, 1, 1};  // again with a unique pin colour, to measure it
   ClipRenderer marked(p, motion, settings, theme, "Case 3");
   marked.draw(index, frame);

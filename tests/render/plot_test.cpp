@@ -1,6 +1,8 @@
 // The plot library: tick generation, markup, data cleaning and clipping, and the
 // written PNG / SVG / PDF files (size, pixels where the axis mapping says, determinism,
 // atomic failure).
+#include "render/plot.hpp"
+
 #include <cairo.h>
 #include <gtest/gtest.h>
 
@@ -13,7 +15,6 @@
 #include <vector>
 
 #include "core/error.hpp"
-#include "render/plot.hpp"
 #include "render/plot_data.hpp"
 #include "render/plot_text.hpp"
 #include "render/plot_ticks.hpp"
@@ -60,15 +61,14 @@ TEST(PlotTicks, LinearFiner) {
 
 TEST(PlotTicks, LinearNegativeUsesMinusSign) {
   const Ticks ticks = linear_ticks(-2.6, 1.1, 8);
-  EXPECT_EQ(labels(ticks.major),
-            (std::vector<std::string>{minus + "2.5", minus + "2.0", minus + "1.5", minus + "1.0", minus + "0.5",
-                                      "0.0", "0.5", "1.0"}));
+  EXPECT_EQ(labels(ticks.major), (std::vector<std::string>{minus + "2.5", minus + "2.0", minus + "1.5", minus + "1.0",
+                                                           minus + "0.5", "0.0", "0.5", "1.0"}));
 }
 
 TEST(PlotTicks, LinearSmallMagnitudesAreScientific) {
   const Ticks ticks = linear_ticks(0.0, 3.1e-9, 5);
-  EXPECT_EQ(labels(ticks.major), (std::vector<std::string>{"0", "1×10^{" + minus + "9}", "2×10^{" + minus + "9}",
-                                                           "3×10^{" + minus + "9}"}));
+  EXPECT_EQ(labels(ticks.major),
+            (std::vector<std::string>{"0", "1×10^{" + minus + "9}", "2×10^{" + minus + "9}", "3×10^{" + minus + "9}"}));
   const Ticks halves = linear_ticks(1e-9, 3e-9, 5);
   EXPECT_EQ(halves.major[1].label, "1.5×10^{" + minus + "9}");
   const Ticks large = linear_ticks(0.0, 2.5e6, 6);
@@ -305,7 +305,9 @@ Plot sample_plot() {
   plot.x = {"time t (s)", Scale::linear, 0.0, 10.0};
   plot.y = {"|E − E_{0}| (J)", Scale::log, std::nullopt, std::nullopt};
   for (int run = 0; run < 3; ++run) {
-    Series s{"run " + std::to_string(run + 1), {}, run == 2 ? Style::line_and_markers : Style::line,
+    Series s{"run " + std::to_string(run + 1),
+             {},
+             run == 2 ? Style::line_and_markers : Style::line,
              run == 1 ? Dash::dashed : Dash::solid};
     for (int i = 0; i <= 100; ++i) {
       const double t = i / 10.0;
@@ -334,7 +336,7 @@ TEST(PlotFile, SeriesPixelsWhereTheMappingSays) {
   plot.x = {"x (m)", Scale::linear, 0.0, 10.0};
   plot.y = {"y (m)", Scale::linear, 0.0, 4.0};
   plot.legend = LegendPlace::none;
-  plot.series.push_back({"line", {{0, 1}, {10, 3}}});                        // slot 0
+  plot.series.push_back({"line", {{0, 1}, {10, 3}}});                     // slot 0
   plot.series.push_back({"dots", {{2, 3.5}, {8, 0.5}}, Style::markers});  // slot 1
   const TempDir dir;
   const Report report = write(plot, dir / "p.png");
@@ -376,8 +378,7 @@ TEST(PlotFile, LogAxisDropsNonPositiveValuesAndBreaksTheLine) {
   const Point a = g.to_device({2, 1e-1});
   const Point b = g.to_device({4, 1e2});
   EXPECT_FALSE(colour_near(image, {(a.x + b.x) / 2, (a.y + b.y) / 2}, colour, 2));
-  for (const double x : {3.0, 3.5})
-    EXPECT_FALSE(colour_near(image, {g.x(x), g.bottom - 2}, colour, 2));
+  for (const double x : {3.0, 3.5}) EXPECT_FALSE(colour_near(image, {g.x(x), g.bottom - 2}, colour, 2));
 }
 
 TEST(PlotFile, SvgIsWellFormed) {

@@ -29,7 +29,8 @@ inline Rgb8 rgb_at(const Frame& frame, int x, int y) {
   return {static_cast<int>((v >> 16) & 0xff), static_cast<int>((v >> 8) & 0xff), static_cast<int>(v & 0xff)};
 }
 inline Rgb8 rgb8(const Rgba& c) {
-  return {static_cast<int>(std::lround(c.r * 255)), static_cast<int>(std::lround(c.g * 255)), static_cast<int>(std::lround(c.b * 255))};
+  return {static_cast<int>(std::lround(c.r * 255)), static_cast<int>(std::lround(c.g * 255)),
+          static_cast<int>(std::lround(c.b * 255))};
 }
 /// Largest channel difference.
 inline int colour_distance(const Rgb8& a, const Rgb8& b) {

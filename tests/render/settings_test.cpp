@@ -1,9 +1,10 @@
+#include "render/settings.hpp"
+
 #include <gtest/gtest.h>
 
 #include <string>
 
 #include "core/error.hpp"
-#include "render/settings.hpp"
 
 namespace linkage {
 namespace {
@@ -63,7 +64,11 @@ TEST(RenderSettings, Ranges) {
   EXPECT_NE(with([](RenderSettings& s) { s.duration = 0; }).find("duration: "), std::string::npos);
   EXPECT_NE(with([](RenderSettings& s) { s.duration = -1; }).find("positive"), std::string::npos);
   EXPECT_NE(with([](RenderSettings& s) { s.duration = 3601; }).find("an hour"), std::string::npos);
-  EXPECT_EQ(with([](RenderSettings& s) { s.duration = 7200; s.speed = 2; }), "");  // one hour of video
+  EXPECT_EQ(with([](RenderSettings& s) {
+              s.duration = 7200;
+              s.speed = 2;
+            }),
+            "");  // one hour of video
   EXPECT_NE(with([](RenderSettings& s) { s.speed = 0; }).find("speed: "), std::string::npos);
   EXPECT_NE(with([](RenderSettings& s) { s.duration = 0.001; }).find("less than one frame"), std::string::npos);
   EXPECT_NE(with([](RenderSettings& s) { s.at = -1; }).find("at: "), std::string::npos);
@@ -76,14 +81,16 @@ TEST(RenderSettings, ViewsCamerasQualitiesAndExtensions) {
   EXPECT_DOUBLE_EQ(view.ymin, 0.5);
   EXPECT_DOUBLE_EQ(view.xmax, 2);
   EXPECT_DOUBLE_EQ(view.ymax, 3);
-  EXPECT_NE(input_error([] { (void)parse_view("0,0,0,1", "--view"); }).find("zero or negative area"), std::string::npos);
+  EXPECT_NE(input_error([] { (void)parse_view("0,0,0,1", "--view"); }).find("zero or negative area"),
+            std::string::npos);
   EXPECT_NE(input_error([] { (void)parse_view("0,0,1", "--view"); }).find("four numbers"), std::string::npos);
   EXPECT_NE(input_error([] { (void)parse_view("0,0,1,x", "--view"); }).find("not a finite number"), std::string::npos);
   EXPECT_EQ(parse_camera("fit", "--camera"), CameraMode::fit);
   EXPECT_NE(input_error([] { (void)parse_camera("orbit", "--camera"); }).find("follow, fixed, fit"), std::string::npos);
   EXPECT_EQ(parse_quality("4k", "--quality").height, 2160);
   EXPECT_EQ(parse_quality("low", "--quality").width, 854);
-  EXPECT_NE(input_error([] { (void)parse_quality("ultra", "--quality"); }).find("medium (1280x720@30)"), std::string::npos);
+  EXPECT_NE(input_error([] { (void)parse_quality("ultra", "--quality"); }).find("medium (1280x720@30)"),
+            std::string::npos);
   EXPECT_EQ(output_kind("a/b.svg", "--out"), OutputKind::svg);
   EXPECT_EQ(output_kind("clip.mp4", "--out"), OutputKind::mp4);
   EXPECT_NE(input_error([] { (void)output_kind("clip.avi", "--out"); }).find("'.avi'"), std::string::npos);

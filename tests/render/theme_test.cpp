@@ -1,3 +1,5 @@
+#include "render/theme.hpp"
+
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -5,7 +7,6 @@
 
 #include "core/error.hpp"
 #include "linkage/embedded_themes.hpp"
-#include "render/theme.hpp"
 
 namespace linkage {
 namespace {
@@ -45,7 +46,7 @@ TEST(Theme, ShippedThemesLoadAndMatchTheAssets) {
 TEST(Theme, LightThemeColours) {
   const Theme light = load_theme("light", {}, "--theme");
   EXPECT_EQ(light.background, (Rgba{1, 1, 1, 1}));
-  EXPECT_NEAR(light.pin_force.r, 0xD5 / 255.0, 1e-15);  // Okabe-Ito vermillion
+  EXPECT_NEAR(light.pin_force.r, 0xD5 / 255.0, 1e-15);      // Okabe-Ito vermillion
   EXPECT_NEAR(light.block_fill[0].a, 0x4D / 255.0, 1e-15);  // translucent
 }
 
@@ -61,9 +62,11 @@ TEST(Theme, UnknownThemeNamesTheChoices) {
 TEST(Theme, BadPalettesNameFileLineAndColumn) {
   std::string light(kEmbeddedThemes[1].toml);
   EXPECT_EQ(error_of(light), "");
-  EXPECT_NE(error_of("[colors]\nbackground = \"#FFFFFF\"\nvelocty = \"#000000\"\n").find("t.toml:3:1: unknown colour 'velocty'"),
+  EXPECT_NE(error_of("[colors]\nbackground = \"#FFFFFF\"\nvelocty = \"#000000\"\n")
+                .find("t.toml:3:1: unknown colour 'velocty'"),
             std::string::npos);
-  EXPECT_NE(error_of("[colors]\nbackground = \"#FFF\"\n").find("t.toml:2:14: background must be a colour"), std::string::npos);
+  EXPECT_NE(error_of("[colors]\nbackground = \"#FFF\"\n").find("t.toml:2:14: background must be a colour"),
+            std::string::npos);
   EXPECT_NE(error_of("[colors]\nbackground = 3\n").find("must be a colour"), std::string::npos);
   EXPECT_NE(error_of("[colors]\nbackground = \"#FFFFFF\"\n").find("is missing grid, text"), std::string::npos);
   EXPECT_NE(error_of("[colors\n").find("t.toml:1:"), std::string::npos);

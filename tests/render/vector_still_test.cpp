@@ -1,10 +1,11 @@
+#include "render/vector_still.hpp"
+
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <sstream>
 
 #include "core/error.hpp"
-#include "render/vector_still.hpp"
 #include "render_test_support.hpp"
 #include "support/test_support.hpp"
 #include "xml_check.hpp"

@@ -97,7 +97,8 @@ inline std::string xml_error(std::string_view text) {
         }
         std::string attribute;
         if (!read_name(attribute)) return "bad attribute in <" + name + ">" + at(i);
-        if (!attributes.insert(attribute).second) return "duplicate attribute " + attribute + " in <" + name + ">" + at(i);
+        if (!attributes.insert(attribute).second)
+          return "duplicate attribute " + attribute + " in <" + name + ">" + at(i);
         skip_space();
         if (i >= text.size() || text[i] != '=') return "attribute " + attribute + " has no value" + at(i);
         ++i;

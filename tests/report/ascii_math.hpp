@@ -106,7 +106,8 @@ class AsciiMath {
   }
   double number() {
     std::size_t end = pos_;
-    while (end < text_.size() && (std::isdigit(static_cast<unsigned char>(text_[end])) != 0 || text_[end] == '.')) ++end;
+    while (end < text_.size() && (std::isdigit(static_cast<unsigned char>(text_[end])) != 0 || text_[end] == '.'))
+      ++end;
     if (end < text_.size() && text_[end] == 'e') {  // exponent: e-05, e+22
       ++end;
       if (end < text_.size() && (text_[end] == '-' || text_[end] == '+')) ++end;

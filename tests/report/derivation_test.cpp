@@ -1,23 +1,23 @@
 // The worked steps before the equations of motion: every printed formula evaluates to
 // the model's value (so the text cannot drift from src/model), in its symbolic and its
 // substituted spelling, and reads as a worked solution should.
+#include "report/derivation.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "report/derivation.hpp"
-#include "report/notation.hpp"
-#include "report/text_layout.hpp"
 #include "report/ascii_math.hpp"
+#include "report/notation.hpp"
 #include "report/random_inputs.hpp"
+#include "report/text_layout.hpp"
 
 namespace linkage {
 namespace {
 
 WorkedSolution worked_at(const Params& p, const State& s) {
   Inputs inputs;
-  for (const InputKey& key : kInputKeys)
-    inputs.set(key, key.param != nullptr ? p.*key.param : s.*key.state, "test");
+  for (const InputKey& key : kInputKeys) inputs.set(key, key.param != nullptr ? p.*key.param : s.*key.state, "test");
   return work_out(inputs, {});
 }
 
@@ -109,7 +109,8 @@ TEST(Derivation, NegativeValuesAreParenthesizedWhenSubstituted) {
   s.x1 = -1;
   const std::vector<DerivationGroup> groups = derivation(worked_at(p, s));
   const DerivationStep& pin_x = groups[1].steps[0];
-  EXPECT_EQ(strip_marks(pin_x.formula.print(expr::Style::unicode, Spelling::substituted, 6)), "(-1) + (-0.1) × cos 0.1");
+  EXPECT_EQ(strip_marks(pin_x.formula.print(expr::Style::unicode, Spelling::substituted, 6)),
+            "(-1) + (-0.1) × cos 0.1");
   EXPECT_EQ(strip_marks(groups[0].steps[2].formula.print(expr::Style::ascii, Spelling::substituted, 6)),
             "0.000833333 + 0.1 * (-0.1)^2");
 }

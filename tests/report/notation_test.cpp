@@ -35,8 +35,8 @@ TEST(Notation, ReciprocalCoefficientsReadAsDivision) {
 }
 
 TEST(Notation, SumCoefficientsGetParentheses) {
-  const EquationSides eq = equation_sides({"a + b", "-(c - d)", "0"}, "0", {Unknown::x1_ddot, Unknown::F_x, Unknown::F_y},
-                                          Style::ascii);
+  const EquationSides eq =
+      equation_sides({"a + b", "-(c - d)", "0"}, "0", {Unknown::x1_ddot, Unknown::F_x, Unknown::F_y}, Style::ascii);
   EXPECT_EQ(strip_marks(eq.lhs), "(a + b) x1'' - (c - d) Fx");
   EXPECT_EQ(strip_marks(equation_sides({"0", "0"}, "g", {Unknown::F_x, Unknown::F_y}, Style::ascii).lhs), "0");
 }

@@ -9,21 +9,21 @@
 #include <random>
 
 #include "formulations/formulation.hpp"
-#include "report/notation.hpp"
-#include "report/text_layout.hpp"
 #include "report/ascii_math.hpp"
+#include "report/notation.hpp"
 #include "report/random_inputs.hpp"
+#include "report/text_layout.hpp"
 
 namespace linkage {
 namespace {
 
-using test::Sample;
 using test::random_samples;
+using test::Sample;
 
 std::map<std::string, double> entry_symbols(const Sample& x) {
-  return {{"m", x.p.m},         {"I", x.p.inertia_centroidal()}, {"D", x.p.pin_offset()},
-          {"g", x.p.g},         {"th1", x.s.theta1},             {"th2", x.s.theta2},
-          {"th1'", x.s.theta1_dot}, {"th2'", x.s.theta2_dot}};
+  return {
+      {"m", x.p.m},        {"I", x.p.inertia_centroidal()}, {"D", x.p.pin_offset()}, {"g", x.p.g}, {"th1", x.s.theta1},
+      {"th2", x.s.theta2}, {"th1'", x.s.theta1_dot},        {"th2'", x.s.theta2_dot}};
 }
 
 // Round-off of one evaluation, relative to the size of the row it sits in.

@@ -10,9 +10,9 @@ namespace {
 TEST(TextLayout, DisplayWidthCountsCombiningMarksAsZero) {
   EXPECT_EQ(display_width("abc"), 3u);
   EXPECT_EQ(display_width("θ₁"), 2u);
-  EXPECT_EQ(display_width("θ̇₁"), 2u);   // θ + U+0307 + ₁
-  EXPECT_EQ(display_width("θ̈₂"), 2u);   // θ + U+0308 + ₂
-  EXPECT_EQ(display_width("ẍ₁"), 2u);   // precomposed U+1E8D
+  EXPECT_EQ(display_width("θ̇₁"), 2u);  // θ + U+0307 + ₁
+  EXPECT_EQ(display_width("θ̈₂"), 2u);  // θ + U+0308 + ₂
+  EXPECT_EQ(display_width("ẍ₁"), 2u);  // precomposed U+1E8D
   EXPECT_EQ(display_width("‖A q - B‖₂"), 10u);
   EXPECT_EQ(display_width(std::string("a") + kBreakMark + " + b"), 5u);
   EXPECT_EQ(pad_right("θ̇₁", 4), "θ̇₁  ");
@@ -23,7 +23,8 @@ TEST(TextLayout, WrapPrefersTheOutermostSum) {
   const std::string m(1, kBreakMark);
   const std::string text = "a (bbbbbbbbbb" + m + " + cccccccccc)" + m + " + dddddddddd" + m + " + e";
   // Everything fits: one line, marks removed.
-  EXPECT_EQ(wrap("x = ", text, "      ", 80), std::vector<std::string>{"x = a (bbbbbbbbbb + cccccccccc) + dddddddddd + e"});
+  EXPECT_EQ(wrap("x = ", text, "      ", 80),
+            std::vector<std::string>{"x = a (bbbbbbbbbb + cccccccccc) + dddddddddd + e"});
   // 30 columns: the inner break would fit more, but the outer one is taken.
   const auto lines = wrap("x = ", text, "      ", 30);
   ASSERT_EQ(lines.size(), 3u);

@@ -54,8 +54,8 @@ TEST(TextReport, ShowsEveryStepOfTheWorkedSolution) {
   for (const char* expected :
        {"I_zz^C = m (w^2 + L^2) / 12 = 0.1 * (0.1^2 + 0.3^2) / 12 = 0.000833333 kg m^2", "D      = L / 2 - b",
         "x2  = xP + D cos(th2) = 1.10945 + 0.11 * cos(0.2) = 1.21726 m", "(8.1)  y1'' + D cos(th1) th1''",
-        "(6.2)  y1'' + D cos(th1) th1'' + D cos(th2) th2'' + Fy/m", "Residual ||A q - B||_2 = ",
-        "Condition number cond_2(A) = ", "The cases agree", "-0.017575*"})
+        "(6.2)  y1'' + D cos(th1) th1'' + D cos(th2) th2'' + Fy/m",
+        "Residual ||A q - B||_2 = ", "Condition number cond_2(A) = ", "The cases agree", "-0.017575*"})
     EXPECT_NE(text.find(expected), std::string::npos) << expected;
 }
 
@@ -70,8 +70,10 @@ TEST(TextReport, StyleFollowsTheLocale) {
   if (have_utf8) {
     EXPECT_EQ(text_style_from_locale(), expr::Style::unicode);
   }
-  if (saved != nullptr) ::setenv("LC_ALL", previous.c_str(), 1);
-  else ::unsetenv("LC_ALL");
+  if (saved != nullptr)
+    ::setenv("LC_ALL", previous.c_str(), 1);
+  else
+    ::unsetenv("LC_ALL");
   EXPECT_STREQ(std::setlocale(LC_CTYPE, nullptr), "C");  // restored
 }
 

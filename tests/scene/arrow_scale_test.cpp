@@ -1,8 +1,8 @@
+#include "scene/arrow_scale.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
-
-#include "scene/arrow_scale.hpp"
 
 namespace linkage {
 namespace {

@@ -1,7 +1,8 @@
+#include "scene/elements.hpp"
+
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
-#include "scene/elements.hpp"
 
 namespace linkage {
 namespace {

@@ -1,10 +1,11 @@
+#include "scene/scene_builder.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "model/kinematics.hpp"
 #include "scene/scene_test_support.hpp"
-#include "scene/scene_builder.hpp"
 
 namespace linkage {
 namespace {

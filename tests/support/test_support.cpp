@@ -55,7 +55,8 @@ RunResult run_linkage(const std::vector<std::string>& args, const std::string& i
     const nfds_t count = in[1] >= 0 ? 3 : 2;
     if (::poll(fds.data(), count, -1) < 0) continue;
     for (int i = 0; i < 2; ++i) {
-      if (fds[static_cast<std::size_t>(i)].fd < 0 || !(fds[static_cast<std::size_t>(i)].revents & (POLLIN | POLLHUP))) continue;
+      if (fds[static_cast<std::size_t>(i)].fd < 0 || !(fds[static_cast<std::size_t>(i)].revents & (POLLIN | POLLHUP)))
+        continue;
       const ssize_t n = ::read(fds[static_cast<std::size_t>(i)].fd, buffer.data(), buffer.size());
       if (n <= 0) {
         ::close(fds[static_cast<std::size_t>(i)].fd);
@@ -84,8 +85,7 @@ RunResult run_linkage(const std::vector<std::string>& args, const std::string& i
 
 TempDir::TempDir() {
   static std::atomic<int> counter{0};
-  path_ = fs::temp_directory_path() /
-          ("linkage-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+  path_ = fs::temp_directory_path() / ("linkage-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
   fs::remove_all(path_);
   fs::create_directories(path_);
 }

@@ -2,10 +2,9 @@
 // Shared helpers for the test suites: running the linkage binary, temporary folders,
 // and the spec's example files.
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 namespace linkage::test {
 
