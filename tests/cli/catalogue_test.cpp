@@ -409,6 +409,8 @@ TEST_P(Catalogue, Case) {
   // How it ended.
   if (r.timed_out)
     fault(hang, "still running after " + std::to_string(c.timeout) + " s" + context);
+  else if (r.killed_by != 0 && r.killed_by == c.signal)
+    fault(other, "ended by the signal it was sent, unhandled" + context);
   else if (r.killed_by != 0)
     fault(crash, "ended by signal " + std::to_string(r.killed_by) + context);
   if (r.err.find("internal error") != std::string::npos || r.err.find("Sanitizer") != std::string::npos ||
