@@ -8,11 +8,14 @@
 // ran), e.g. `test_cli --gtest_filter='Cases/Catalogue.*'`.
 #include <fcntl.h>
 #include <gtest/gtest.h>
+#include <poll.h>
 #include <sys/stat.h>
 #include <toml++/toml.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -289,36 +292,50 @@ std::map<std::string, std::string> make_setup(const Case& c, const fs::path& dir
   return contents;
 }
 
-/// Reads a FIFO to its end on its own thread while the case runs.
+/// Reads a FIFO on its own thread while the case runs, until its writer closes it or the
+/// case is over (a program that never opens it, or replaces it, must not hang the test).
 class FifoReader {
  public:
-  explicit FifoReader(fs::path path) : path_(std::move(path)) {
+  explicit FifoReader(const fs::path& path) : fd_(::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC)) {
+    if (fd_ < 0) throw std::runtime_error("cannot open the FIFO " + path.string());
     thread_ = std::thread([this] {
-      const int fd = ::open(path_.c_str(), O_RDONLY);  // blocks until a writer opens it
-      if (fd < 0) return;
       char buffer[65536];
-      for (ssize_t n; (n = ::read(fd, buffer, sizeof buffer)) > 0;) {
-        const std::lock_guard lock(mutex_);
-        text_.append(buffer, static_cast<std::size_t>(n));
+      bool written = false;  // a writer came: its end of file ends the reading
+      while (!done_) {
+        pollfd p{fd_, POLLIN, 0};
+        if (::poll(&p, 1, 20) <= 0) continue;
+        const ssize_t n = ::read(fd_, buffer, sizeof buffer);
+        if (n > 0) {
+          written = true;
+          const std::lock_guard lock(mutex_);
+          text_.append(buffer, static_cast<std::size_t>(n));
+        } else if (n == 0 && (written || (p.revents & POLLHUP))) {
+          break;
+        } else if (n == 0) {
+          std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        }
       }
-      ::close(fd);
+      const std::lock_guard lock(mutex_);  // what is left once the case is over
+      for (ssize_t n; (n = ::read(fd_, buffer, sizeof buffer)) > 0;) text_.append(buffer, static_cast<std::size_t>(n));
     });
   }
   FifoReader(const FifoReader&) = delete;
   FifoReader& operator=(const FifoReader&) = delete;
-  /// Everything read; a reader still waiting for a writer is released first.
+  /// Everything read (called once the program has ended).
   std::string finish() {
-    const int fd = ::open(path_.c_str(), O_WRONLY | O_NONBLOCK);  // fails (ENXIO) once the reader is done
-    if (fd >= 0) ::close(fd);
-    thread_.join();
+    done_ = true;
+    if (thread_.joinable()) thread_.join();
+    const std::lock_guard lock(mutex_);
     return text_;
   }
   ~FifoReader() {
-    if (thread_.joinable()) (void)finish();
+    (void)finish();
+    ::close(fd_);
   }
 
  private:
-  fs::path path_;
+  int fd_;
+  std::atomic<bool> done_{false};
   std::thread thread_;
   std::mutex mutex_;
   std::string text_;
