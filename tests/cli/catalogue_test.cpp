@@ -444,7 +444,7 @@ TEST_P(Catalogue, Case) {
 
   // What it said.
   const long lines = std::count(r.err.begin(), r.err.end(), '\n');
-  if (c.exit_code != 0 && !r.timed_out && r.killed_by == 0) {
+  if (r.exit_code != 0 && !r.timed_out && r.killed_by == 0) {  // it failed: one line saying why
     if (r.err.empty())
       fault(other, "failed without a word on stderr" + context);
     else if (lines != 1 || r.err.back() != '\n')
