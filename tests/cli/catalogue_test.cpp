@@ -68,6 +68,7 @@ struct Case {
   std::string when_entry, when_stdout, when_stderr;  // send the signal once one of these matches
   double within = 3;                                 // seconds from the signal to the process's end
   double timeout = 10;
+  bool needs_bench = false;  // skipped in a build without `linkage bench` (-DLINKAGE_BUILD_BENCH=OFF)
 };
 
 // ---------------------------------------------------------------------------------------
@@ -139,10 +140,10 @@ SetupEntry setup_entry(const toml::table& t) {
   return e;
 }
 
-const std::set<std::string> kCaseKeys{"name",        "args",   "stdin",   "stdin_open",  "stdout_to",
-                                      "setup",       "exit",   "stderr",  "stdout",      "after",
-                                      "changed",     "files",  "signal",  "when_entry",  "when_stdout",
-                                      "when_stderr", "within", "timeout", "fifo_reader", "fifo_content"};
+const std::set<std::string> kCaseKeys{
+    "name",        "args",        "stdin",  "stdin_open", "stdout_to",   "setup",        "exit",
+    "stderr",      "stdout",      "after",  "changed",    "files",       "signal",       "when_entry",
+    "when_stdout", "when_stderr", "within", "timeout",    "fifo_reader", "fifo_content", "requires"};
 
 Case read_case(const toml::table& t, const std::string& where) {
   for (const auto& [key, value] : t)
@@ -190,6 +191,10 @@ Case read_case(const toml::table& t, const std::string& where) {
     c.when_stderr = t["when_stderr"].value_or(std::string());
     if (c.when_entry.empty() && c.when_stdout.empty() && c.when_stderr.empty())
       throw std::runtime_error("a signal case needs when_entry, when_stdout or when_stderr");
+  }
+  if (auto r = t["requires"].value<std::string>()) {
+    if (*r != "bench") throw std::runtime_error("'requires' can only be \"bench\"");
+    c.needs_bench = true;
   }
   c.within = t["within"].value_or(c.within);
   c.timeout = t["timeout"].value_or(c.timeout);
@@ -382,9 +387,15 @@ void PrintTo(const Case& c, std::ostream* out) { *out << c.name << " (" << c.whe
 
 class Catalogue : public ::testing::TestWithParam<Case> {};
 
+bool has_bench() {
+  static const bool built = run_linkage({"bench", "--help"}).out.find("\n  accuracy ") != std::string::npos;
+  return built;
+}
+
 TEST_P(Catalogue, Case) {
   const Case& c = GetParam();
   SCOPED_TRACE(c.where);
+  if (c.needs_bench && !has_bench()) GTEST_SKIP() << "this build has no `linkage bench`";
   TempDir dir;
   const std::map<std::string, std::string> before = make_setup(c, dir.path());
   const std::vector<std::string> listed_before = listing(dir.path());

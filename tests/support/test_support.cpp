@@ -72,6 +72,22 @@ void close_fd(int& fd) {
   fd = -1;
 }
 
+/// This process's environment, but LeakSanitizer does not list the suppressions it used
+/// when the program exits (a sanitizer build's stderr would not be one line otherwise).
+std::vector<std::string> child_environment() {
+  std::vector<std::string> env;
+  bool lsan = false;
+  for (char** e = environ; *e != nullptr; ++e) {
+    env.emplace_back(*e);
+    if (env.back().rfind("LSAN_OPTIONS=", 0) == 0) {
+      env.back() += ":print_suppressions=0";
+      lsan = true;
+    }
+  }
+  if (!lsan) env.emplace_back("LSAN_OPTIONS=print_suppressions=0");
+  return env;
+}
+
 }  // namespace
 
 RunResult run_linkage(const RunOptions& options) {
@@ -107,7 +123,11 @@ RunResult run_linkage(const RunOptions& options) {
   argv.push_back(nullptr);
   pid_t pid = 0;
   posix_spawnattr_t attributes = child_attributes();
-  const int rc = ::posix_spawn(&pid, linkage_binary().c_str(), &actions, &attributes, argv.data(), environ);
+  std::vector<std::string> env_storage = child_environment();
+  std::vector<char*> env;
+  for (auto& e : env_storage) env.push_back(e.data());
+  env.push_back(nullptr);
+  const int rc = ::posix_spawn(&pid, linkage_binary().c_str(), &actions, &attributes, argv.data(), env.data());
   posix_spawnattr_destroy(&attributes);
   posix_spawn_file_actions_destroy(&actions);
   close_fd(terminal.slave);
