@@ -383,12 +383,13 @@ class AdaptiveRun final : public CaseRun<Case> {
 
   /// The floor under adaptive steps, relative to t and the duration: at the mean step
   /// of the last kBudgetIntervals x kCheckInterval steps, the run must reach its end
-  /// within kMaxSteps steps in all (the limit a fixed-step run is refused at: an hour or
-  /// so of work), else it ends now instead of grinding for hours and then, often,
-  /// underflowing. A physical time scale (the spin period, sqrt(L / g)) was measured
-  /// and rejected as the floor: at angles of 1e7 rad and more, round-off in the angle
-  /// holds the step near 1e-7 of the spin period for thousands of steps, and such runs
-  /// still end well. The long window lets such dips pass.
+  /// within kMaxSteps steps in all (the limit a fixed-step run is refused at: from a
+  /// quarter of an hour of DOP853 steps to hours), else it ends now instead of
+  /// grinding for hours and then, often, underflowing (1e8 rad/s did, after 6e7
+  /// steps). A physical time scale (the spin period, sqrt(L / g)) was measured and
+  /// rejected as the floor: at angles of 1e7 rad and more, round-off in the angle holds
+  /// the step near 1e-7 of the spin period for thousands of steps, and such runs still
+  /// end well. The long window lets such dips pass.
   void check_budget() {
     const double t = stepper_.t(), duration = this->options.duration;
     const double then = checked_at_[next_check_ % kBudgetIntervals];  // kBudgetIntervals checks ago
