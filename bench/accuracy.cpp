@@ -11,6 +11,7 @@
 #include "bench/rhs.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
+#include "core/number_format.hpp"
 #include "core/progress.hpp"
 #include "formulations/linear_solve.hpp"
 #include "integrate/linkage_rhs.hpp"
@@ -205,7 +206,7 @@ void validate(const AccuracyOptions& o) {
       throw Error::input("--integrators: '" + id + "' is not an integrator; valid: " + valid);
     }
   if (o.duration && !(*o.duration > 0 && *o.duration <= 1e4))
-    throw Error::input("--duration: " + std::to_string(*o.duration) + " s is out of range; valid: (0, 10000] s");
+    throw Error::input("--duration: " + format_roundtrip(*o.duration) + " s is out of range; valid: (0, 10000] s");
 }
 
 std::vector<std::string> method_ids() {

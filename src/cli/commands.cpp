@@ -22,11 +22,13 @@ void refuse_empty_values(CLI::App& app) {
     refuse_empty_values(*sub);
     for (CLI::Option* option : sub->get_options()) {
       if (option->get_type_size() == 0 || option->get_name() == "--title") continue;
+      const bool positional = option->get_positional();
       option->check(CLI::Validator(
-          [](std::string& value) {
-            return value.empty()
-                       ? std::string("the value is empty; give a value, or leave the option out for its default")
-                       : std::string();
+          [positional](std::string& value) {
+            if (!value.empty()) return std::string();
+            return std::string(positional ? "the value is empty; give one"
+                                          : "the value is empty; give a value, or leave the option out for its "
+                                            "default");
           },
           ""));
     }

@@ -2,8 +2,11 @@
 #include <sys/ioctl.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <charconv>
+#include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <iostream>
 #include <memory>
 
@@ -76,6 +79,11 @@ void run_lesson_command(const LessonOptions& o) {
   options.style = text_style_from_locale();
   options.assets = assets_dir(LINKAGE_ASSETS_DIR);
   const lesson::RunSummary summary = lesson::run_lesson(lesson, options, std::cin, std::cout, std::cerr);
+  // The lesson's text must have arrived before the summary says it ran.
+  errno = 0;
+  if (!std::cout.flush() || std::fflush(stdout) != 0 || std::ferror(stdout) != 0)
+    throw Error::failure("cannot write standard output: " +
+                         std::string(errno != 0 ? std::strerror(errno) : "write error"));
   std::cerr << "lesson: ran " << summary.steps_run << " of " << lesson.steps.size() << " steps; " << summary.made
             << " made, " << summary.reused << " reused; "
             << (summary.document.empty() ? "lesson.md left as it was (--only ran part of the lesson)"

@@ -79,21 +79,39 @@ void print_error(const std::string& message, const char* tail = "") {
   std::fprintf(stderr, "linkage: error: %s%s\n", one_line(message).c_str(), tail);
 }
 
-/// "linkage solv": name the unknown word and the nearest command (CLI11 would only say
-/// that a subcommand is required).
-void check_command_word(const CLI::App& app, int argc, char** argv) {
-  if (argc < 2 || argv[1][0] == '-') return;
-  const std::string word = argv[1];
-  std::vector<std::string> names;
-  for (const CLI::App* sub : app.get_subcommands({})) {
-    if (sub->get_name() == word) return;
-    names.push_back(sub->get_name());
+/// "linkage solv", "linkage bench acuracy", "linkage --frobnicate": name the unknown word
+/// and the nearest command (CLI11 would only say that a subcommand is required).
+void check_command_words(const CLI::App& app, int argc, char** argv) {
+  const CLI::App* level = &app;
+  std::string path = "linkage";
+  for (int i = 1; i < argc; ++i) {
+    const std::string word = argv[i];
+    std::vector<std::string> names;
+    const CLI::App* chosen = nullptr;
+    for (const CLI::App* sub : level->get_subcommands({})) {
+      if (sub->get_name() == word) chosen = sub;
+      names.push_back(sub->get_name());
+    }
+    if (names.empty()) return;  // a command's own arguments: CLI11 checks them
+    const std::vector<std::string_view> candidates(names.begin(), names.end());
+    if (word.size() > 1 && word[0] == '-' && word != "--") {
+      const std::string flag = word.substr(0, word.find('='));
+      for (const CLI::Option* option : level->get_options())
+        if (option->check_name(flag)) return;  // --help, --version
+      throw linkage::Error::input("'" + flag + "' is not an option of '" + path +
+                                  "'; give a command first; valid: " + linkage::lesson::join(candidates));
+    }
+    if (chosen != nullptr) {
+      level = chosen;
+      path += " " + word;
+      continue;
+    }
+    std::string message =
+        "'" + word + "' is not a " + (level == &app ? std::string() : "'" + level->get_name() + "' ") + "command";
+    if (auto close = linkage::lesson::closest_match(word, candidates))
+      message += " (did you mean '" + std::string(*close) + "'?)";
+    throw linkage::Error::input(message + "; valid: " + linkage::lesson::join(candidates));
   }
-  const std::vector<std::string_view> candidates(names.begin(), names.end());
-  std::string message = "'" + word + "' is not a command";
-  if (auto close = linkage::lesson::closest_match(word, candidates))
-    message += " (did you mean '" + std::string(*close) + "'?)";
-  throw linkage::Error::input(message + "; valid: " + linkage::lesson::join(candidates));
 }
 
 }  // namespace
@@ -110,7 +128,7 @@ int main(int argc, char** argv) {
   cli::register_commands(app);
   install_interrupt_handler();
   try {
-    check_command_word(app, argc, argv);
+    check_command_words(app, argc, argv);
     app.parse(argc, argv);
     cli::run_selected(app);
   } catch (const CLI::ParseError& e) {

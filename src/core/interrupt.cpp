@@ -1,5 +1,8 @@
 #include "core/interrupt.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <atomic>
 #include <csignal>
 #include <cstring>
@@ -14,9 +17,17 @@ constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP};
 std::atomic<int> g_signal{0};
 static_assert(std::atomic<int>::is_always_lock_free);
 
+int g_null_input = -1;  // /dev/null, opened before any handler runs
+
 extern "C" void on_signal(int signal) {
   int none = 0;
-  if (g_signal.compare_exchange_strong(none, signal, std::memory_order_relaxed)) return;
+  if (g_signal.compare_exchange_strong(none, signal, std::memory_order_relaxed)) {
+    // A prompt about to read standard input would miss a signal that came just before
+    // its read() and wait forever; with stdin at /dev/null that read ends at once. The
+    // program is ending, so nothing else needs stdin.
+    if (g_null_input >= 0) ::dup2(g_null_input, STDIN_FILENO);
+    return;
+  }
   // A second signal: the user insists, or the work does not poll. End now.
   std::signal(signal, SIG_DFL);
   std::raise(signal);
@@ -24,6 +35,7 @@ extern "C" void on_signal(int signal) {
 }  // namespace
 
 void install_interrupt_handler() {
+  if (g_null_input < 0) g_null_input = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
   struct sigaction action {};
   action.sa_handler = on_signal;
   sigemptyset(&action.sa_mask);

@@ -6,8 +6,9 @@
 
 namespace linkage {
 
-/// Installs the handlers (idempotent). Blocking reads return early (no SA_RESTART), so
-/// a prompt waiting for input stops at once.
+/// Installs the handlers (idempotent). Blocking reads return early (no SA_RESTART), and
+/// the first signal puts /dev/null in standard input's place, so a prompt waiting for input stops at once
+/// even when the signal came just before its read.
 void install_interrupt_handler();
 /// True once a terminating signal has been received.
 [[nodiscard]] bool interrupt_requested() noexcept;

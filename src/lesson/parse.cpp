@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 #include "core/number_format.hpp"
 #include "encode/video_writer.hpp"
 #include "lesson/canonical.hpp"
@@ -18,6 +19,7 @@
 #include "lesson/suggest.hpp"
 #include "model/inputs_toml.hpp"
 #include "render/theme.hpp"
+#include "report/worked_solution.hpp"
 
 namespace linkage::lesson {
 namespace {
@@ -132,6 +134,14 @@ std::vector<std::string> keys_in_file_order(const toml::table& table,
   return out;
 }
 
+/// Lesson text with {{...}} placeholders, each a finite number at `inputs` (where the
+/// text is shown), so a lesson that would print inf or nan fails when it is read.
+TextTemplate text_template(std::string_view text, const std::string& origin, const Inputs& inputs) {
+  TextTemplate t = TextTemplate::parse(text, origin);
+  if (text.find("{{") != std::string_view::npos) t.require_finite(evaluate_quantities(inputs), origin);
+  return t;
+}
+
 class Parser {
  public:
   explicit Parser(const fs::path& file) : file_(file), file_text_(file.string()), dir_(file.parent_path()) {}
@@ -164,7 +174,7 @@ class Parser {
     inputs.validate();
     lesson.inputs = inputs;
     if (auto d = top.string("description"))
-      lesson.description = TextTemplate::parse(*d, top.prefix("description") + "description");
+      lesson.description = text_template(*d, top.prefix("description") + "description", inputs);
 
     top.require("step");
     const auto steps = top.tables("step");
@@ -178,8 +188,12 @@ class Parser {
   fs::path referenced_file(const TableReader& r, std::string_view key, const std::string& name) const {
     const fs::path path = fs::path(name).is_absolute() ? fs::path(name) : dir_ / name;
     std::error_code ec;
-    if (!fs::is_regular_file(path, ec))
-      r.fail(key, "the file '" + name + "' does not exist (looked for " + path.string() + ")");
+    if (!fs::exists(path, ec)) r.fail(key, "the file '" + name + "' does not exist (looked for " + path.string() + ")");
+    try {
+      require_regular_file(path, std::string(key));  // not a folder, a FIFO or a device
+    } catch (const Error& e) {
+      r.fail(key, e.detail());
+    }
     return path;
   }
 
@@ -228,7 +242,7 @@ class Parser {
 
     switch (step.kind) {
       case StepKind::say:
-        step.body = parse_say(r);
+        step.body = parse_say(r, inputs);
         break;
       case StepKind::set:
         step.body = parse_set(r, inputs);
@@ -240,7 +254,7 @@ class Parser {
         step.body = parse_exercise(r, inputs);
         break;
       case StepKind::solve:
-        step.body = parse_solve(r);
+        step.body = parse_solve(r, inputs);
         break;
       case StepKind::simulate:
         step.body = parse_simulate(r, inputs);
@@ -265,18 +279,18 @@ class Parser {
     return step;
   }
 
-  SayStep parse_say(const TableReader& r) const {
+  SayStep parse_say(const TableReader& r, const Inputs& inputs) const {
     const auto text = r.string("text");
     const auto file = r.string("file");
     if (text && file) r.fail("file", "give either 'text' or 'file', not both");
     if (!text && !file) r.require("text");
-    if (text) return {TextTemplate::parse(*text, r.prefix("text") + "text")};
+    if (text) return {text_template(*text, r.prefix("text") + "text", inputs)};
     const fs::path path = referenced_file(r, "file", *file);
     std::ifstream in(path, std::ios::binary);
     std::stringstream content;
     content << in.rdbuf();
     if (!in && !in.eof()) r.fail("file", "cannot read '" + path.string() + "'");
-    return {TextTemplate::parse(content.str(), r.prefix("file") + path.string())};
+    return {text_template(content.str(), r.prefix("file") + path.string(), inputs)};
   }
 
   SetStep parse_set(const TableReader& r, Inputs& inputs) const {
@@ -300,7 +314,7 @@ class Parser {
     ExerciseStep e;
     r.require("question");
     r.require("answer");
-    e.question = TextTemplate::parse(*r.string("question"), r.prefix("question") + "question");
+    e.question = text_template(*r.string("question"), r.prefix("question") + "question", inputs);
     const toml::node& answer = *r.node("answer");
     if (const auto* s = answer.as_string()) {
       e.answer = Expression::parse(s->get(), r.prefix("answer") + "answer");
@@ -322,13 +336,13 @@ class Parser {
     e.relative_tolerance = r.number("relative_tolerance", 0, 1, "valid: 0 to 1").value_or(e.tolerance ? 0.0 : 0.01);
     e.attempts = static_cast<int>(r.integer("attempts", 1, 10).value_or(3));
     e.digits = static_cast<int>(r.integer("digits", 1, 17).value_or(6));
-    if (auto hint = r.string("hint")) e.hint = TextTemplate::parse(*hint, r.prefix("hint") + "hint");
+    if (auto hint = r.string("hint")) e.hint = text_template(*hint, r.prefix("hint") + "hint", inputs);
     if (auto x = r.string("explanation"))
-      e.explanation = TextTemplate::parse(*x, r.prefix("explanation") + "explanation");
+      e.explanation = text_template(*x, r.prefix("explanation") + "explanation", inputs);
     return e;
   }
 
-  SolveStep parse_solve(const TableReader& r) const {
+  SolveStep parse_solve(const TableReader& r, const Inputs& inputs) const {
     SolveStep s;
     const toml::node* c = r.node("case");
     if (c == nullptr || (c->is_string() && c->as_string()->get() == "all")) {
@@ -345,6 +359,11 @@ class Parser {
       }
     } else {
       r.fail("case", "'case' must be 1, 2, 3, a list of them like [1, 3], or \"all\"");
+    }
+    try {  // inputs that overflow a derived quantity or make a matrix singular: refused now
+      (void)work_out(inputs, s.cases);
+    } catch (const Error& e) {
+      throw e.rephrased(r.prefix("") + e.what());
     }
     const std::vector<std::string_view> parts(kSolvePartNames.begin(), kSolvePartNames.end());
     if (!r.has("show")) s.parts.fill(true);

@@ -4,9 +4,11 @@
 #include "lesson/runner.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <istream>
 #include <ostream>
 
@@ -25,8 +27,13 @@ namespace fs = std::filesystem;
 // --- shared pieces --------------------------------------------------------------------
 
 void RunContext::flush() {
+  errno = 0;
   out << terminal->take();
   out.flush();
+  // A full disk or a closed pipe ends the lesson now, with the reason, not at its end.
+  if (!out)
+    throw Error::failure("cannot write standard output: " +
+                         std::string(errno != 0 ? std::strerror(errno) : "write error"));
 }
 
 void RunContext::note(const Step& step, const std::string& text) {

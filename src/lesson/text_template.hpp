@@ -18,6 +18,10 @@ class TextTemplate {
   static TextTemplate parse(std::string_view text, const std::string& origin);
   /// The text with every placeholder replaced by its value at `values`.
   [[nodiscard]] std::string render(const QuantityValues& values) const;
+  /// Throws Error::input, starting with `origin` and naming the placeholder's line and
+  /// column in the text, when a placeholder is not a finite number at `values` ({{1/0}},
+  /// {{sqrt(-1)}}): the text must never show inf or nan.
+  void require_finite(const QuantityValues& values, const std::string& origin) const;
   [[nodiscard]] bool empty() const { return parts_.empty(); }
 
  private:
@@ -25,6 +29,7 @@ class TextTemplate {
     std::string literal;            // text before the placeholder
     std::vector<Expression> value;  // zero or one expression
     int digits = 6;
+    std::size_t line = 0, column = 0;  // of the placeholder's "{{" in the text, from 1
   };
   std::vector<Part> parts_;
 };

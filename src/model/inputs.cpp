@@ -53,7 +53,8 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
 std::string toml_type_name(const toml::node& node) {
   std::ostringstream name;
   name << node.type();
-  return "a " + name.str();
+  const std::string type = name.str();
+  return (std::string("aeiou").find(type.front()) != std::string::npos ? "an " : "a ") + type;
 }
 
 std::size_t index_of(const InputKey& key) { return static_cast<std::size_t>(&key - kInputKeys.data()); }
@@ -124,8 +125,13 @@ void Inputs::validate() const {
   if (!(params_.w > 0)) fail("w", "the block width must be > 0");
   if (!(params_.m > 0)) fail("m", "the mass must be > 0");
   if (!(params_.g >= 0)) fail("g", "g must be >= 0 (gravity points along -y)");
-  if (!(params_.b >= 0 && params_.b <= params_.L))
+  if (!(params_.b >= 0 && params_.b <= params_.L)) {
+    // b was left at its default: the L given is what made it invalid.
+    if (origin(*find_input_key("b")) == "default" && origin(*find_input_key("L")) != "default")
+      fail("L", "the default b = " + format_roundtrip(params_.b) + " m must lie in [0, L] = [0, " +
+                    format_roundtrip(params_.L) + "] m; give a smaller b too");
     fail("b", "b must lie in [0, L] = [0, " + format_roundtrip(params_.L) + "] m");
+  }
 }
 
 void Inputs::apply_file(const std::filesystem::path& path) {

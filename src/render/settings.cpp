@@ -47,19 +47,19 @@ void RenderSettings::validate() const {
     throw Error::invalid("fps", std::to_string(fps) + " is outside 1 .. " + std::to_string(kMaxFps));
   if (!(speed > 0) || !std::isfinite(speed))
     throw Error::invalid(
-        "speed", format_significant(speed, 6) + " must be a positive number (simulated seconds per second of video)");
+        "speed", format_roundtrip(speed) + " must be a positive number (simulated seconds per second of video)");
   if (!(duration > 0) || !std::isfinite(duration))
-    throw Error::invalid("duration", format_significant(duration, 6) + " s must be positive");
+    throw Error::invalid("duration", format_roundtrip(duration) + " s must be positive");
   if (duration / speed > kMaxVideoSeconds)
-    throw Error::invalid("duration", format_significant(duration, 6) + " s at speed " + format_significant(speed, 6) +
-                                         " makes " + format_significant(duration / speed, 6) + " s of video; at most " +
+    throw Error::invalid("duration", format_roundtrip(duration) + " s at speed " + format_roundtrip(speed) + " makes " +
+                                         format_significant(duration / speed, 6) + " s of video; at most " +
                                          format_significant(kMaxVideoSeconds, 6) + " s (an hour)");
   if (frame_count() < 1)
     throw Error::invalid("duration", format_significant(duration, 6) + " s at speed " + format_significant(speed, 6) +
                                          " and " + std::to_string(fps) + " fps is less than one frame");
   if (!(at >= 0) || at > kMaxStillTime)
-    throw Error::invalid(
-        "at", format_significant(at, 6) + " s is outside 0 .. " + format_significant(kMaxStillTime, 6) + " s");
+    throw Error::invalid("at",
+                         format_roundtrip(at) + " s is outside 0 .. " + format_significant(kMaxStillTime, 6) + " s");
   if (camera == CameraMode::fixed && !(view.xmax > view.xmin && view.ymax > view.ymin))
     throw Error::invalid("view", "the fixed camera needs a view with positive width and height");
 }

@@ -103,5 +103,27 @@ TEST(TextTemplate, RejectsUnclosedAndBadDigits) {
   EXPECT_THROW((void)TextTemplate::parse("a {{Dx}}", "t"), Error);
 }
 
+// A placeholder that is inf or nan where the text is shown is an error naming it, its line
+// and its column (in characters): the text never shows inf or nan.
+TEST(TextTemplate, RefusesValuesThatAreNotFinite) {
+  const QuantityValues v = evaluate_quantities(Inputs{});
+  const auto error = [&](const std::string& text) {
+    try {
+      TextTemplate::parse(text, "f:3:8: text").require_finite(v, "f:3:8: text");
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), ExitCode::bad_input);
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(error("a {{1/0}}"),
+            "f:3:8: text: line 1, column 3: {{1/0}} is inf at these inputs; text can show only "
+            "finite numbers");
+  const std::string second_line = error("ok {{D}}\n\u03b8 = {{sqrt(-1) : 3}}");
+  EXPECT_EQ(second_line.substr(0, 51), "f:3:8: text: line 2, column 5: {{sqrt(-1) }} is nan") << second_line;
+  EXPECT_NE(error("{{log(0)}}").find("{{log(0)}} is -inf"), std::string::npos);
+  EXPECT_EQ(error("{{D}} and {{1/g}} are finite"), "");
+}
+
 }  // namespace
 }  // namespace linkage::lesson

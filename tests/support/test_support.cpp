@@ -9,6 +9,10 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -18,69 +22,168 @@ extern char** environ;
 namespace linkage::test {
 namespace fs = std::filesystem;
 
-RunResult run_linkage(const std::vector<std::string>& args, const std::string& input) {
-  std::array<int, 2> in{}, out{}, err{};
-  if (::pipe(in.data()) != 0 || ::pipe(out.data()) != 0 || ::pipe(err.data()) != 0)
+const std::string& linkage_binary() {
+  static const std::string binary = [] {
+    const char* other = std::getenv("LINKAGE_BINARY_UNDER_TEST");
+    return std::string(other != nullptr && *other != '\0' ? other : LINKAGE_BINARY);
+  }();
+  return binary;
+}
+
+namespace {
+
+/// A pseudo-terminal pair: the child writes to `slave`, we drain `master`. The slave
+/// is open here until the child has it, so the master never reads as hung up early.
+struct Terminal {
+  int master = -1;
+  int slave = -1;
+};
+
+Terminal open_terminal() {
+  Terminal t;
+  t.master = ::posix_openpt(O_RDWR | O_NOCTTY | O_CLOEXEC);
+  if (t.master < 0 || ::grantpt(t.master) != 0 || ::unlockpt(t.master) != 0)
+    throw std::runtime_error("cannot open a pseudo-terminal");
+  t.slave = ::open(::ptsname(t.master), O_WRONLY | O_NOCTTY | O_CLOEXEC);
+  if (t.slave < 0) throw std::runtime_error("cannot open the pseudo-terminal's slave");
+  return t;
+}
+
+/// The child starts with default signal dispositions and nothing blocked, whatever this
+/// process does (it ignores SIGPIPE, so that a child closing its stdin early is no crash
+/// here).
+posix_spawnattr_t child_attributes() {
+  static const bool ignored = [] { return std::signal(SIGPIPE, SIG_IGN) != SIG_ERR; }();
+  (void)ignored;
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  sigset_t defaults, none;
+  sigemptyset(&defaults);
+  for (int s : {SIGPIPE, SIGINT, SIGTERM, SIGHUP, SIGQUIT}) sigaddset(&defaults, s);
+  sigemptyset(&none);
+  posix_spawnattr_setsigdefault(&attributes, &defaults);
+  posix_spawnattr_setsigmask(&attributes, &none);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
+  return attributes;
+}
+
+void close_fd(int& fd) {
+  if (fd >= 0) ::close(fd);
+  fd = -1;
+}
+
+}  // namespace
+
+RunResult run_linkage(const RunOptions& options) {
+  using Clock = std::chrono::steady_clock;
+  std::array<int, 2> in{-1, -1}, out{-1, -1}, err{-1, -1};
+  if (::pipe2(in.data(), O_CLOEXEC) != 0 || ::pipe2(err.data(), O_CLOEXEC) != 0)
     throw std::runtime_error("pipe failed");
+  Terminal terminal;
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_adddup2(&actions, in[0], 0);
-  posix_spawn_file_actions_adddup2(&actions, out[1], 1);
+  switch (options.stdout_to) {
+    case RunOptions::Stdout::pipe:
+      if (::pipe2(out.data(), O_CLOEXEC) != 0) throw std::runtime_error("pipe failed");
+      posix_spawn_file_actions_adddup2(&actions, out[1], 1);
+      break;
+    case RunOptions::Stdout::dev_full:  // opened for writing only: every write fails with ENOSPC
+      posix_spawn_file_actions_addopen(&actions, 1, "/dev/full", O_WRONLY, 0);
+      break;
+    case RunOptions::Stdout::terminal:
+      terminal = open_terminal();
+      out[0] = terminal.master;
+      posix_spawn_file_actions_adddup2(&actions, terminal.slave, 1);
+      break;
+  }
   posix_spawn_file_actions_adddup2(&actions, err[1], 2);
-  for (int fd : {in[0], in[1], out[0], out[1], err[0], err[1]}) posix_spawn_file_actions_addclose(&actions, fd);
+  if (!options.cwd.empty()) posix_spawn_file_actions_addchdir_np(&actions, options.cwd.c_str());
 
-  std::vector<std::string> argv_storage{LINKAGE_BINARY};
-  argv_storage.insert(argv_storage.end(), args.begin(), args.end());
+  std::vector<std::string> argv_storage{linkage_binary()};
+  argv_storage.insert(argv_storage.end(), options.args.begin(), options.args.end());
   std::vector<char*> argv;
   for (auto& a : argv_storage) argv.push_back(a.data());
   argv.push_back(nullptr);
   pid_t pid = 0;
-  const int rc = ::posix_spawn(&pid, LINKAGE_BINARY, &actions, nullptr, argv.data(), environ);
+  posix_spawnattr_t attributes = child_attributes();
+  const int rc = ::posix_spawn(&pid, linkage_binary().c_str(), &actions, &attributes, argv.data(), environ);
+  posix_spawnattr_destroy(&attributes);
   posix_spawn_file_actions_destroy(&actions);
-  ::close(in[0]);
-  ::close(out[1]);
-  ::close(err[1]);
-  if (rc != 0) throw std::runtime_error("cannot start " LINKAGE_BINARY);
+  close_fd(terminal.slave);
+  close_fd(in[0]);
+  close_fd(out[1]);
+  close_fd(err[1]);
+  if (rc != 0) {
+    close_fd(in[1]);
+    close_fd(out[0]);
+    close_fd(err[0]);
+    throw std::runtime_error("cannot start " + linkage_binary());
+  }
 
   RunResult result;
   std::size_t written = 0;
-  if (input.empty()) {
-    ::close(in[1]);
-    in[1] = -1;
-  }
-  std::array<pollfd, 3> fds{pollfd{out[0], POLLIN, 0}, pollfd{err[0], POLLIN, 0}, pollfd{in[1], POLLOUT, 0}};
-  int open_outputs = 2;
+  if (options.input.empty() && !options.keep_stdin_open) close_fd(in[1]);
+  const auto start = Clock::now();
+  const auto deadline =
+      start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.timeout_seconds));
+  Clock::time_point signalled;
   std::array<char, 65536> buffer{};
-  while (open_outputs > 0) {
-    const nfds_t count = in[1] >= 0 ? 3 : 2;
-    if (::poll(fds.data(), count, -1) < 0) continue;
-    for (int i = 0; i < 2; ++i) {
-      if (fds[static_cast<std::size_t>(i)].fd < 0 || !(fds[static_cast<std::size_t>(i)].revents & (POLLIN | POLLHUP)))
-        continue;
-      const ssize_t n = ::read(fds[static_cast<std::size_t>(i)].fd, buffer.data(), buffer.size());
-      if (n <= 0) {
-        ::close(fds[static_cast<std::size_t>(i)].fd);
-        fds[static_cast<std::size_t>(i)].fd = -1;
-        --open_outputs;
+  // 0: stdout, 1: stderr, 2: stdin while there is input to write.
+  std::array<pollfd, 3> fds{pollfd{out[0], POLLIN, 0}, pollfd{err[0], POLLIN, 0}, pollfd{-1, POLLOUT, 0}};
+  while (fds[0].fd >= 0 || fds[1].fd >= 0) {
+    fds[2].fd = in[1] >= 0 && written < options.input.size() ? in[1] : -1;
+    const bool waiting_to_signal = options.signal != 0 && !result.signal_sent;
+    const auto now = Clock::now();
+    if (now >= deadline && !result.timed_out) {
+      ::kill(pid, SIGKILL);
+      result.timed_out = true;
+    }
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now).count();
+    const int wait_ms =
+        result.timed_out ? -1 : static_cast<int>(std::clamp<long long>(left, 0, waiting_to_signal ? 5 : 200));
+    if (::poll(fds.data(), fds.size(), wait_ms) < 0 && errno != EINTR) break;
+    for (std::size_t i = 0; i < 2; ++i) {
+      if (fds[i].fd < 0 || !(fds[i].revents & (POLLIN | POLLHUP | POLLERR))) continue;
+      const ssize_t n = ::read(fds[i].fd, buffer.data(), buffer.size());
+      if (n <= 0) {  // end of file (or EIO from a terminal whose other end closed)
+        ::close(fds[i].fd);
+        fds[i].fd = -1;
       } else {
         (i == 0 ? result.out : result.err).append(buffer.data(), static_cast<std::size_t>(n));
       }
     }
-    if (in[1] >= 0 && (fds[2].revents & (POLLOUT | POLLERR | POLLHUP))) {
-      const ssize_t n = ::write(in[1], input.data() + written, input.size() - written);
+    if (fds[2].fd >= 0 && (fds[2].revents & (POLLOUT | POLLERR | POLLHUP))) {
+      const ssize_t n = ::write(in[1], options.input.data() + written, options.input.size() - written);
       if (n > 0) written += static_cast<std::size_t>(n);
-      if (n <= 0 || written == input.size()) {
-        ::close(in[1]);
-        in[1] = -1;
-        fds[2].fd = -1;
-      }
+      if (n <= 0 || (written == options.input.size() && !options.keep_stdin_open)) close_fd(in[1]);
+    }
+    if (waiting_to_signal && options.ready && options.ready(result.out, result.err)) {
+      ::kill(pid, options.signal);
+      result.signal_sent = true;
+      signalled = Clock::now();
     }
   }
-  if (in[1] >= 0) ::close(in[1]);
   int status = 0;
-  ::waitpid(pid, &status, 0);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (result.signal_sent) result.seconds_after_signal = std::chrono::duration<double>(Clock::now() - signalled).count();
+  close_fd(in[1]);
+  if (WIFEXITED(status)) {
+    result.exit_code = WEXITSTATUS(status);
+  } else {
+    result.killed_by = WTERMSIG(status);
+    result.exit_code = 128 + result.killed_by;
+  }
   return result;
+}
+
+RunResult run_linkage(const std::vector<std::string>& args, const std::string& input) {
+  RunOptions options;
+  options.args = args;
+  options.input = input;
+  options.timeout_seconds = 600;  // the ctest timeout of a whole test
+  return run_linkage(options);
 }
 
 TempDir::TempDir() {

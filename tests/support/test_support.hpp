@@ -2,6 +2,7 @@
 // Shared helpers for the test suites: running the linkage binary, temporary folders,
 // and the spec's example files.
 #include <filesystem>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -9,12 +10,38 @@
 namespace linkage::test {
 
 struct RunResult {
-  int exit_code = -1;
+  int exit_code = -1;  // the exit status, or 128 + the signal that ended the process
   std::string out;
   std::string err;
+  int killed_by = 0;                // the signal that ended the process (a crash, or our kill), else 0
+  bool timed_out = false;           // still running at the timeout: killed with SIGKILL
+  bool signal_sent = false;         // RunOptions::signal was sent
+  double seconds_after_signal = 0;  // from sending it to the process's end
 };
 
-/// Runs the built `linkage` with `args` (no shell), stdin from `input`, and captures
+/// The program the CLI tests run: $LINKAGE_BINARY_UNDER_TEST when set (to hold another
+/// build to the same tests), else the one this build made.
+const std::string& linkage_binary();
+
+/// What a run of the program sees.
+struct RunOptions {
+  std::vector<std::string> args;
+  std::string input;             // written to stdin, which is then closed...
+  bool keep_stdin_open = false;  // ...unless this is set: a pipe open until the process ends
+  enum class Stdout { pipe, dev_full, terminal } stdout_to = Stdout::pipe;  // terminal: a pseudo-terminal
+  std::filesystem::path cwd;                                                // empty: this process's
+  double timeout_seconds = 60;                                              // then SIGKILL and RunResult::timed_out
+  /// When set: sent once `ready(stdout so far, stderr so far)` returns true (it is
+  /// polled every few milliseconds).
+  int signal = 0;
+  std::function<bool(const std::string& out, const std::string& err)> ready;
+};
+
+/// Runs linkage_binary() with `options.args` (no shell) and captures stdout, stderr and
+/// how it ended.
+RunResult run_linkage(const RunOptions& options);
+
+/// Runs linkage_binary() with `args` (no shell), stdin from `input`, and captures
 /// stdout, stderr and the exit code.
 RunResult run_linkage(const std::vector<std::string>& args, const std::string& input = "");
 
