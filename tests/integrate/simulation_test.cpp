@@ -396,14 +396,14 @@ TEST(ResultWarning, ComesFromARealRunAndNotFromTheSpecExample) {
 TEST(Simulation, ReportsProgressWithinOneLongInterval) {
   SimulationOptions o = options(3, IntegratorKind::gauss2);
   o.dt = 1e-3;
-  o.duration = 100.0;
+  o.duration = 20.0;
   Simulation fixed = reference_run(o);
   std::vector<double> reported;
   fixed.on_progress([&](double t) { reported.push_back(t); });
-  (void)fixed.state_at(100.0);
-  ASSERT_EQ(reported.size(), 24u);  // 4.096 s, 8.192 s, ... 98.304 s
+  (void)fixed.state_at(20.0);
+  ASSERT_EQ(reported.size(), 4u);  // 4.096 s, 8.192 s, 12.288 s, 16.384 s
   EXPECT_NEAR(reported.front(), 4.096, 1e-9);
-  EXPECT_NEAR(reported.back(), 98.304, 1e-9);
+  EXPECT_NEAR(reported.back(), 16.384, 1e-9);
 
   Simulation adaptive = spinning_run(1e3, -1.75e3, 1.0);
   reported.clear();
