@@ -131,6 +131,7 @@ void run_render(const RenderFlags& flags) {
   if (progress) progress->finish();
   if (!flags.quiet)
     for (const std::string& note : result.notes) std::fprintf(stderr, "linkage: %s\n", note.c_str());
+  for (const std::string& warning : result.warnings) std::fprintf(stderr, "linkage: warning: %s\n", warning.c_str());
   if (flags.stats) print_stats(result.stats);
 }
 

@@ -36,6 +36,7 @@ struct SimulateOptions {
   std::string out;
   std::string format;
   std::string columns = "all";
+  bool quiet = false;
 };
 
 enum class Format { csv, json };
@@ -200,14 +201,16 @@ void run_simulate(const SimulateOptions& o) {
   const std::vector<Column> columns = parse_columns(o.columns, "--columns");
   const Format format = choose_format(o);
   const Inputs inputs = resolve_inputs(o.inputs);
-  note_ignored_simulation_flags(o.simulation, s);
+  if (!o.quiet) note_ignored_simulation_flags(o.simulation, s);
 
   Simulation simulation(inputs.params(), inputs.state(), s);
   std::optional<AtomicFile> file;
   if (!o.out.empty()) file.emplace(o.out, "out");
   TableWriter writer(format, stdout, file ? &*file : nullptr);
   writer.begin(columns, format == Format::json ? json_header(inputs, s, every, columns) : "");
-  Progress progress("simulate", samples.count, "rows");
+  // In simulated time, reported from inside long steps too: one row may take minutes.
+  Progress progress("simulate", s.duration, "s simulated", o.quiet);
+  simulation.on_progress([&progress](double t) { progress.update(t); });
   std::vector<double> values;
   for (long i = 0; i < samples.count; ++i) {
     const double t = samples.at(i);
@@ -218,7 +221,7 @@ void run_simulate(const SimulateOptions& o) {
                               " s is not a finite number; the run stopped" +
                               (likely_causes(inputs).empty() ? "" : " (inputs: " + likely_causes(inputs) + ")"));
     writer.row(values);
-    progress.update(i + 1);
+    progress.update(t);
     throw_if_interrupted();
   }
   progress.finish();
@@ -227,6 +230,8 @@ void run_simulate(const SimulateOptions& o) {
   if (file) file->commit();
   std::fflush(stdout);
   print_summary(s, samples.count, simulation.stats(), wall);
+  const std::string warning = result_warning(s, inputs.params(), simulation.stats());
+  if (!warning.empty()) std::fprintf(stderr, "linkage: warning: %s\n", warning.c_str());
 }
 
 }  // namespace
@@ -252,6 +257,7 @@ void register_simulate(CLI::App& app) {
   sub->add_option("--columns", o->columns,
                   "Comma-separated columns to compute and write, or all (default all): " + column_names)
       ->type_name("LIST");
+  sub->add_flag("--quiet", o->quiet, "No progress or notes on stderr (the summary and warnings stay)");
   add_input_options(sub, o->inputs);
   add_runner(sub, [o] { run_simulate(*o); });
 }

@@ -1,33 +1,61 @@
 #pragma once
-// Progress of long work on stderr: shown only when stderr is a terminal (and not
-// silenced), redrawn at most ten times a second, erased when done.
+// Progress of long work on stderr. On a terminal: one line redrawn at most ten times a
+// second and erased when done. Elsewhere (a log, a CI job, a pipe): a plain line every
+// few seconds, "linkage: simulate: 41% (410000 of 1e+06 s simulated), 12 s so far",
+// only once the work has lasted that long, so short runs stay silent. `quiet` silences
+// both. LINKAGE_PROGRESS_INTERVAL (seconds) overrides the interval of plain lines.
 #include <chrono>
+#include <cstdio>
+#include <functional>
 #include <string>
 
 namespace linkage {
 
+/// Where and how a Progress reports; the defaults come from the environment.
+struct ProgressOutput {
+  using Clock = std::chrono::steady_clock;
+  std::FILE* sink = stderr;
+  bool terminal = false;                        // redraw one line in place instead of printing plain lines
+  std::chrono::duration<double> interval{5.0};  // between plain lines, and before the first
+  std::function<Clock::time_point()> now = [] { return Clock::now(); };
+
+  /// stderr, a terminal if it is one, the interval from LINKAGE_PROGRESS_INTERVAL if
+  /// that is a positive number of seconds (else 5 s).
+  static ProgressOutput from_environment();
+};
+
 class Progress {
  public:
-  /// `total` units of work named `what` (e.g. "frames"); quiet forces silence.
-  Progress(std::string label, long total, std::string unit, bool quiet = false);
+  /// `total` units of work named `unit` (e.g. "frames", "s simulated"); quiet forces silence.
+  Progress(std::string label, double total, std::string unit, bool quiet = false);
+  Progress(std::string label, long total, std::string unit, bool quiet = false)
+      : Progress(std::move(label), static_cast<double>(total), std::move(unit), quiet) {}
+  /// The same, reporting to `output` (tests give a clock and a file).
+  Progress(std::string label, double total, std::string unit, ProgressOutput output);
   Progress(const Progress&) = delete;
   Progress& operator=(const Progress&) = delete;
   ~Progress();
 
   /// Reports that `done` units are complete.
-  void update(long done);
-  /// Erases the line.
+  void update(double done);
+  void update(long done) { update(static_cast<double>(done)); }
+  /// Erases the terminal line (plain lines stay).
   void finish();
+  /// Whether anything may be shown (false when quiet).
   [[nodiscard]] bool visible() const { return visible_; }
 
  private:
+  void draw_terminal_line(double done, double elapsed);
+  void print_plain_line(double done, double elapsed);
+
   std::string label_;
   std::string unit_;
-  long total_;
+  double total_;
+  ProgressOutput output_;
   bool visible_;
   bool finished_ = false;
-  std::chrono::steady_clock::time_point start_;
-  std::chrono::steady_clock::time_point last_draw_;
+  ProgressOutput::Clock::time_point start_;
+  ProgressOutput::Clock::time_point last_draw_;
 };
 
 /// True when stderr is a terminal.

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -80,37 +81,57 @@ void convert_pixels(const Frame& frame, bool alpha, std::uint8_t* out) {
   }
 }
 
-void check_spng(int status, const char* what, const fs::path& path) {
-  if (status != 0)
-    throw Error::failure(std::string("cannot write PNG '") + path.string() + "': " + what + ": " +
-                         spng_strerror(status));
+/// Where libspng's bytes go: a FILE, and the system's reason when a write fails (libspng
+/// itself would only say "stream error").
+struct PngSink {
+  std::FILE* file = nullptr;
+  int error = 0;  // errno of the failed write
+};
+
+int write_to_sink(spng_ctx* /*context*/, void* user, void* data, std::size_t length) {
+  auto& sink = *static_cast<PngSink*>(user);
+  errno = 0;
+  if (std::fwrite(data, 1, length, sink.file) == length) return 0;
+  sink.error = errno != 0 ? errno : EIO;
+  return SPNG_IO_ERROR;
 }
 
 // Compresses packed rows (as convert_pixels makes them) into a new file at `path`.
-void encode_png_file(const std::uint8_t* image, int width, int height, const PngOptions& options,
-                     const fs::path& path) {
-  const std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "wb"));
-  if (!file) throw Error::failure("cannot create '" + path.string() + "': " + std::strerror(errno));
+// Errors name `shown` (the file the user asked for, not a temporary) and, for a failed
+// write, the system's reason ("No space left on device").
+void encode_png_file(const std::uint8_t* image, int width, int height, const PngOptions& options, const fs::path& path,
+                     const fs::path& shown) {
+  std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "wb"));
+  if (!file) throw Error::failure("cannot create '" + shown.string() + "': " + std::strerror(errno));
+  PngSink sink{file.get()};
+  const auto check = [&](int status, const char* what) {
+    if (status == 0) return;
+    if (sink.error != 0) throw Error::failure(write_failure(shown, sink.error));
+    throw Error::failure(std::string("cannot write PNG '") + shown.string() + "': " + what + ": " +
+                         spng_strerror(status));
+  };
   {
     const std::unique_ptr<spng_ctx, SpngDeleter> context(spng_ctx_new(SPNG_CTX_ENCODER));
-    if (!context) throw Error::failure("cannot write PNG '" + path.string() + "': out of memory");
-    check_spng(spng_set_png_file(context.get(), file.get()), "set file", path);
+    if (!context) throw Error::failure("cannot write PNG '" + shown.string() + "': out of memory");
+    check(spng_set_png_stream(context.get(), write_to_sink, &sink), "set stream");
     spng_ihdr header{};
     header.width = static_cast<std::uint32_t>(width);
     header.height = static_cast<std::uint32_t>(height);
     header.bit_depth = 8;
     header.color_type = options.alpha ? SPNG_COLOR_TYPE_TRUECOLOR_ALPHA : SPNG_COLOR_TYPE_TRUECOLOR;
-    check_spng(spng_set_ihdr(context.get(), &header), "header", path);
-    check_spng(spng_set_option(context.get(), SPNG_IMG_COMPRESSION_LEVEL, options.compression_level), "level", path);
-    check_spng(spng_set_option(context.get(), SPNG_IMG_COMPRESSION_STRATEGY, Z_DEFAULT_STRATEGY), "strategy", path);
-    check_spng(spng_set_option(context.get(), SPNG_FILTER_CHOICE, SPNG_FILTER_CHOICE_NONE), "filter", path);
-    check_spng(spng_encode_image(context.get(), image, image_bytes(width, height, options), SPNG_FMT_PNG,
-                                 SPNG_ENCODE_FINALIZE),
-               "encode", path);
+    check(spng_set_ihdr(context.get(), &header), "header");
+    check(spng_set_option(context.get(), SPNG_IMG_COMPRESSION_LEVEL, options.compression_level), "level");
+    check(spng_set_option(context.get(), SPNG_IMG_COMPRESSION_STRATEGY, Z_DEFAULT_STRATEGY), "strategy");
+    check(spng_set_option(context.get(), SPNG_FILTER_CHOICE, SPNG_FILTER_CHOICE_NONE), "filter");
+    check(spng_encode_image(context.get(), image, image_bytes(width, height, options), SPNG_FMT_PNG,
+                            SPNG_ENCODE_FINALIZE),
+          "encode");
   }
-  std::FILE* raw = file.get();
-  if (std::fflush(raw) != 0 || std::ferror(raw) != 0)
-    throw Error::failure("cannot write '" + path.string() + "': " + std::strerror(errno));
+  // What the FILE still buffers fails here, or on close (e.g. a full disk over NFS).
+  errno = 0;
+  if (std::fflush(file.get()) != 0 || std::ferror(file.get()) != 0) throw Error::failure(write_failure(shown, errno));
+  errno = 0;
+  if (std::fclose(file.release()) != 0) throw Error::failure(write_failure(shown, errno));
 }
 
 void require_frame_size(const Frame& frame, int width, int height) {
@@ -146,7 +167,7 @@ void write_png(const Frame& frame, const fs::path& target, const std::string& or
   std::vector<std::uint8_t> image(image_bytes(frame.width, frame.height, options));
   convert_pixels(frame, options.alpha, image.data());
   AtomicFile file(target, origin, true);
-  encode_png_file(image.data(), frame.width, frame.height, options, file.temp_path());
+  encode_png_file(image.data(), frame.width, frame.height, options, file.temp_path(), target);
   file.commit();
 }
 
@@ -185,7 +206,7 @@ struct PngSequenceWriter::Impl {
   void compress(std::size_t slot_number) {
     const Slot& slot = slots[slot_number];
     const auto start = Clock::now();
-    encode_png_file(slot.image.data(), width, height, options, staging / name(slot.index));
+    encode_png_file(slot.image.data(), width, height, options, staging / name(slot.index), folder / name(slot.index));
     const double seconds = seconds_since(start);
     const std::lock_guard lock(encode_mutex);
     encode_seconds += seconds;

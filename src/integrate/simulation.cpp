@@ -1,8 +1,10 @@
 #include "integrate/simulation.hpp"
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
@@ -43,8 +45,13 @@ constexpr std::array<std::pair<Stabilization, std::string_view>, 3> kStabilizati
 constexpr double kMaxDuration = 1e6;  // s
 constexpr double kMinRtol = 1e-14, kMaxTol = 1.0;
 constexpr double kMinAtol = 1e-20;
-constexpr double kMaxGain = 1e6;  // 1/s
-constexpr double kMaxFixedSteps = 1e9;
+constexpr double kMaxGain = 1e6;   // 1/s
+constexpr double kMaxSteps = 1e9;  // fixed-step runs by validation, adaptive ones as they go
+// Steps between polls for Ctrl-C, progress reports and checks of the adaptive step
+// budget: milliseconds of work.
+constexpr unsigned kCheckInterval = 4096;
+// The adaptive step budget judges the mean step over this many of those intervals.
+constexpr std::size_t kBudgetIntervals = 16;
 
 std::string num(double v) { return format_roundtrip(v); }
 
@@ -91,7 +98,7 @@ void SimulationOptions::validate() const {
   require(std::isfinite(duration) && duration > 0 && duration <= kMaxDuration, "duration", duration, "s",
           "0 < duration <= " + num(kMaxDuration) + " s");
   require(std::isfinite(dt) && dt > 0 && dt <= duration, "dt", dt, "s", "0 < dt <= duration (" + num(duration) + " s)");
-  if (!info(integrator).adaptive && duration / dt > kMaxFixedSteps)
+  if (!info(integrator).adaptive && duration / dt > kMaxSteps)
     throw Error::invalid("dt", num(dt) + " s needs " + format_significant(duration / dt, 3) + " steps of " +
                                    std::string(info(integrator).name) + " for a duration of " + num(duration) +
                                    " s; the limit is 1e9 steps (use a larger dt or an adaptive integrator)");
@@ -109,23 +116,51 @@ void SimulationOptions::validate() const {
 
 namespace {
 
-/// Ends a run that cannot go on: one line naming the time, the step and what to try.
-[[noreturn]] void fail(const SimulationOptions& o, std::string_view what, std::string hint, double t, double h) {
-  if (o.case_id == 1 && o.stabilization != Stabilization::projection) hint += ", or stabilization by projection";
+/// "try A, B or C".
+std::string try_list(const std::vector<std::string>& options) {
+  std::string text = "try ";
+  for (std::size_t i = 0; i < options.size(); ++i)
+    text += (i == 0 ? "" : i + 1 == options.size() ? " or " : ", ") + options[i];
+  return text;
+}
+
+/// Ends a run that cannot go on: one line naming the time, the step, the case and
+/// integrator, what happened and what to try.
+[[noreturn]] void fail(const SimulationOptions& o, std::string_view what, const std::string& hint, double t, double h) {
   throw Error::diverged("the simulation failed at t = " + format_significant(t, 6) + " s with step " +
                         format_significant(h, 3) + " s (" + std::string(info(o.integrator).name) + ", Case " +
                         std::to_string(o.case_id) + "): " + std::string(what) + "; " + hint);
 }
 
+/// What might change the outcome of a failed step, never the case or integrator in use.
+std::string what_to_try(const SimulationOptions& o, ode::StepStatus status, double t, double h) {
+  std::vector<std::string> options;
+  const bool baumgarte = o.case_id == 1 && o.stabilization == Stabilization::baumgarte;
+  if (status == ode::StepStatus::newton_failed) {
+    options = {"a smaller step dt", "an explicit integrator (dop853)"};
+  } else if (!info(o.integrator).adaptive) {
+    options = {"a smaller step dt", "an adaptive integrator (dop853)"};
+    // gains well beyond 1/dt make the stabilization itself the unstable part
+    if (baumgarte && std::max(o.baumgarte_alpha, o.baumgarte_beta) * h > 1)
+      options.emplace_back("smaller Baumgarte gains");
+  } else {
+    // the controller wants ever smaller steps: tolerances at round-off of the state, or
+    // equations that need something other than an explicit method's steps
+    if (o.rtol < 1e-6 || o.atol < 1e-6) options.emplace_back("a looser rtol/atol");
+    if (o.case_id != 3) options.emplace_back("Case 3");
+  }
+  if (o.case_id == 1 && o.stabilization != Stabilization::projection)
+    options.emplace_back("stabilization by projection");
+  if (options.empty())
+    options.push_back(t > 0 ? "a duration under " + format_significant(t, 3) + " s" : "gentler initial conditions");
+  return try_list(options);
+}
+
 [[noreturn]] void fail(const SimulationOptions& o, ode::StepStatus status, double t, double h) {
-  std::string hint;
-  if (status == ode::StepStatus::newton_failed)
-    hint = "try a smaller step dt or an explicit integrator (dop853)";
-  else if (info(o.integrator).adaptive)
-    hint = "the equations may be singular or stiff here; try a looser rtol/atol or Case 3";
-  else
-    hint = "try a smaller step dt or an adaptive integrator (dop853)";
-  fail(o, ode::describe(status), hint, t, h);
+  std::string what(ode::describe(status));
+  if (info(o.integrator).adaptive && status != ode::StepStatus::newton_failed)
+    what += "; the equations may be stiff or beyond double precision here";
+  fail(o, what, what_to_try(o, status, t, h), t, h);
 }
 
 /// A run of one case with one integrator; the stepping lives in the two subclasses.
@@ -152,6 +187,7 @@ class Run {
   double energy0 = 0;
   double last_t = 0;
   SimulationStats stats;
+  std::function<void(double)> report;  // progress, with the integrator's time
 };
 
 /// Everything that depends on the case: its right-hand side, the map between the
@@ -229,18 +265,22 @@ class CaseRun : public Run {
     if constexpr (Model::can_drift) {
       if (project_ && !project_onto_constraint(params, y).converged)
         fail(options, "the projection onto the pin constraint did not converge",
-             "try a smaller step dt or a tighter rtol/atol", t, h);
+             info(options.integrator).adaptive ? "try a tighter rtol/atol" : "try a smaller step dt", t, h);
     }
   }
 
-  /// Lets Ctrl-C stop long runs between steps.
-  void poll_interrupt() {
-    if ((++poll_ & 4095) == 0) throw_if_interrupted();
+  /// After each step: every kCheckInterval steps, lets Ctrl-C stop the run and reports
+  /// progress at time t. True on those steps.
+  bool after_step(double t) {
+    if (++steps_ % kCheckInterval != 0) return false;
+    throw_if_interrupted();
+    if (report) report(t);
+    return true;
   }
 
   typename Model::Rhs rhs_;
   bool project_;
-  unsigned poll_ = 0;
+  unsigned steps_ = 0;
 };
 
 /// Fixed steps on the grid t_k = k dt. A sample between grid points is a shorter step
@@ -266,7 +306,7 @@ class FixedStepRun final : public CaseRun<Case> {
     while (k_ < n) {
       take(stepper_, y_, static_cast<double>(k_) * dt, dt);
       ++k_;
-      this->poll_interrupt();
+      this->after_step(static_cast<double>(k_) * dt);
     }
     if (on_grid) return Model::to_body(this->params, y_);
     Vector sample = y_;
@@ -323,7 +363,7 @@ class AdaptiveRun final : public CaseRun<Case> {
         this->stabilize(y, stepper_.t(), stepper_.last_step());
         stepper_.replace_state(this->rhs_, y);
       }
-      this->poll_interrupt();
+      if (this->after_step(stepper_.t())) check_budget();
     }
     Vector sample;
     stepper_.dense(this->rhs_, t, sample);
@@ -341,7 +381,44 @@ class AdaptiveRun final : public CaseRun<Case> {
     return s;
   }
 
+  /// The floor under adaptive steps, relative to t and the duration: at the mean step
+  /// of the last kBudgetIntervals x kCheckInterval steps, the run must reach its end
+  /// within kMaxSteps steps in all (the limit a fixed-step run is refused at: from a
+  /// quarter of an hour of DOP853 steps to hours), else it ends now instead of
+  /// grinding for hours and then, often, underflowing (1e8 rad/s did, after 6e7
+  /// steps). A physical time scale (the spin period, sqrt(L / g)) was measured and
+  /// rejected as the floor: at angles of 1e7 rad and more, round-off in the angle holds
+  /// the step near 1e-7 of the spin period for thousands of steps, and such runs still
+  /// end well. The long window lets such dips pass.
+  void check_budget() {
+    const double t = stepper_.t(), duration = this->options.duration;
+    const double then = checked_at_[next_check_ % kBudgetIntervals];  // kBudgetIntervals checks ago
+    checked_at_[next_check_++ % kBudgetIntervals] = t;
+    if (next_check_ < kBudgetIntervals) return;
+    const auto steps = static_cast<double>(stepper_.counters().steps_accepted);
+    const double mean_step = (t - then) / (kBudgetIntervals * kCheckInterval);
+    const double needed = steps + std::max(0.0, duration - t) / mean_step;
+    if (!(needed > kMaxSteps)) return;
+    const SimulationOptions& o = this->options;
+    std::vector<std::string> remedies;
+    // Smooth steps grow about as tol^(1 / order); steps held down by round-off (far below
+    // the run's mean so far) grow much faster with a looser tolerance.
+    const double rtol = o.rtol * std::pow(needed / kMaxSteps, info(o.integrator).order);
+    if (mean_step < 1e-3 * t / steps && (o.rtol < 1e-6 || o.atol < 1e-6))
+      remedies.emplace_back("a looser rtol/atol");
+    else if (rtol <= 1e-6)
+      remedies.push_back("an rtol/atol of " + format_significant(rtol, 1) + " or looser");
+    remedies.push_back("a duration under " + format_significant(t + (kMaxSteps - steps) * mean_step, 2) + " s");
+    fail(o,
+         "at its recent steps (" + format_significant(mean_step, 2) + " s on average) it needs about " +
+             format_significant(needed, 2) + " steps to reach " + format_significant(duration, 6) +
+             " s, more than the limit of " + format_significant(kMaxSteps, 1),
+         try_list(remedies), t, stepper_.last_step());
+  }
+
   Stepper stepper_;
+  std::array<double, kBudgetIntervals> checked_at_{};  // t at the last budget checks (and 0 at the start)
+  std::size_t next_check_ = 0;
 };
 
 template <class Case>
@@ -409,12 +486,21 @@ BodyState Simulation::state_at(double t) {
   if (!(t >= run.last_t && t <= run.options.duration))
     throw Error::failure("state_at(" + format_roundtrip(t) + "): times must be non-decreasing and within [0, " +
                          format_roundtrip(run.options.duration) + "] s");
-  const BodyState s = timed(run.stats.wall_seconds, [&] { return run.advance(t); });
+  // The work done is counted even when the run fails part way.
+  struct CountWork {
+    Run& run;
+    ~CountWork() {
+      const ode::Counters c = run.counters();
+      run.stats.steps_accepted = c.steps_accepted;
+      run.stats.steps_rejected = c.steps_rejected;
+      run.stats.rhs_evaluations = c.rhs_evaluations;
+    }
+  };
+  const BodyState s = [&] {
+    const CountWork count{run};
+    return timed(run.stats.wall_seconds, [&] { return run.advance(t); });
+  }();
   run.last_t = t;
-  const ode::Counters c = run.counters();
-  run.stats.steps_accepted = c.steps_accepted;
-  run.stats.steps_rejected = c.steps_rejected;
-  run.stats.rhs_evaluations = c.rhs_evaluations;
   const double energy_error = std::fabs(invariants(run.params, s).energy - run.energy0) / run.stats.energy_scale;
   const double constraint = constraint_error(run.params, s).position.norm();
   run.stats.max_energy_error = std::max(run.stats.max_energy_error, energy_error);
@@ -428,8 +514,56 @@ Dynamics Simulation::dynamics(const BodyState& state) {
   return timed(run.stats.wall_seconds, [&] { return run.dynamics(state); });
 }
 
+void Simulation::on_progress(std::function<void(double)> report) { impl_->run->report = std::move(report); }
+
 const SimulationStats& Simulation::stats() const { return impl_->run->stats; }
+
 const Params& Simulation::params() const { return impl_->run->params; }
 const SimulationOptions& Simulation::options() const { return impl_->run->options; }
+
+// --- results that mean nothing ------------------------------------------------------
+
+namespace {
+
+// Past these a finished run's numbers no longer describe the motion.
+// An energy error of 1 is a run that made or lost as much energy as the energy scale
+// holds (kinetic energy plus m g (|y1| + |y2| + L)): every velocity is off by a factor,
+// not a digit. The shipped lessons' deliberately poor runs (explicit and symplectic
+// Euler) stay below 0.3.
+constexpr double kMeaninglessEnergyError = 1.0;
+// A pin error of a quarter of the block length draws the blocks visibly apart, and
+// the pin force acts at two points that far apart: it is no longer the linkage. The
+// drift lesson shows 0.13 L on purpose.
+constexpr double kMeaninglessPinError = 0.25;  // of L
+
+}  // namespace
+
+std::string result_warning(const SimulationOptions& o, const Params& p, const SimulationStats& st) {
+  const bool energy = st.max_energy_error > kMeaninglessEnergyError;
+  const bool pin = st.max_constraint_error > kMeaninglessPinError * p.L;
+  if (!energy && !pin) return "";
+  std::vector<std::string> what;
+  if (energy)
+    what.push_back("the energy error reached " + format_significant(st.max_energy_error, 2) +
+                   " times the energy scale (" + format_significant(st.energy_scale, 3) + " J)");
+  if (pin)
+    what.push_back("the pin came " + format_significant(st.max_constraint_error, 2) + " m apart (" +
+                   format_significant(st.max_constraint_error / p.L, 2) + " of the block length L)");
+  std::vector<std::string> remedies;
+  if (pin) {
+    if (o.stabilization != Stabilization::projection) remedies.emplace_back("stabilization by projection");
+    remedies.emplace_back("Case 3 (it cannot drift)");
+  }
+  if (!info(o.integrator).adaptive) {
+    remedies.emplace_back("a smaller step dt");
+    remedies.emplace_back("an adaptive integrator (dop853)");
+  } else if (o.rtol > 1e-12 || o.atol > 1e-12) {
+    remedies.emplace_back("a tighter rtol/atol");
+  } else {
+    remedies.emplace_back("a shorter duration");
+  }
+  return "the run's numbers do not describe the motion: " + what.front() +
+         (pin && energy ? " and " + what.back() : "") + "; " + try_list(remedies);
+}
 
 }  // namespace linkage

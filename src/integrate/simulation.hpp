@@ -4,6 +4,7 @@
 // lesson, bench); integrators themselves know nothing about the linkage.
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -76,8 +77,14 @@ class Simulation {
   /// The state at time t, for t non-decreasing across calls and within [0, duration].
   /// Adaptive methods step past t and interpolate by dense output; they never shorten a
   /// step to hit t. Throws Error::diverged (exit 3) naming the time, the step size and
-  /// what to try when the state stops being finite, the step underflows or Newton fails.
+  /// what to try when the state stops being finite, the step underflows, Newton fails,
+  /// or adaptive steps would need more than 1e9 steps to reach the duration. stats()
+  /// counts the work done either way.
   [[nodiscard]] BodyState state_at(double t);
+
+  /// Calls `report(t)` with the integrator's time every few thousand steps, so a caller
+  /// can show progress within one long state_at().
+  void on_progress(std::function<void(double t)> report);
 
   /// Accelerations and pin force at a state (counts a force evaluation). With
   /// Baumgarte stabilization they include its correction, as integrated.
@@ -91,5 +98,12 @@ class Simulation {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+/// One line for the user when a finished run's figures say its numbers are meaningless
+/// (an energy error far beyond the energy scale, a pin drifting by a good part of a
+/// block), naming the figure and what to try; empty when they are not. Neutral wording:
+/// settings by name ("dt", "rtol"), never a flag.
+[[nodiscard]] std::string result_warning(const SimulationOptions& options, const Params& params,
+                                         const SimulationStats& stats);
 
 }  // namespace linkage

@@ -41,6 +41,13 @@ void RunContext::note(const Step& step, const std::string& text) {
   status.flush();
 }
 
+void RunContext::warn(const Step& step, const nlohmann::json& results) {
+  const auto warnings = results.find("warnings");
+  if (warnings == results.end() || !warnings->is_array()) return;
+  for (const nlohmann::json& warning : *warnings)
+    if (warning.is_string()) note(step, "warning: " + warning.get<std::string>());
+}
+
 FigureRef RunContext::figure(const std::string& file, FigureRef::Kind kind, const std::string& caption) const {
   return {options.out_dir / file, file, kind, caption};
 }

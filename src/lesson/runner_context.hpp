@@ -33,6 +33,9 @@ struct RunContext {
   void flush();
   /// A status line on `status`: "lesson: step 5 (render): ...".
   void note(const Step& step, const std::string& text);
+  /// A "warning: ..." status line for each of `results`' "warnings" (runs whose numbers
+  /// are meaningless, see result_warning), whether the results are new or reused.
+  void warn(const Step& step, const nlohmann::json& results);
   /// A file the step wrote, for the writers.
   [[nodiscard]] FigureRef figure(const std::string& name, FigureRef::Kind kind, const std::string& caption) const;
   /// Runs `make` (which writes the step's artifacts and returns what it printed) unless

@@ -82,8 +82,8 @@ constexpr std::array<KeySpec, 3> kSimulateKeys{{
 constexpr std::array<KeySpec, 13> kRenderKeys{{
     {"out", "string", "(required)", "The file in the output folder: .mp4 (a clip), .png, .svg or .pdf (a still)."},
     {"caption", "string", "none", "Text under the clip or still in the lesson document."},
-    {"fps", "integer", "30", "Frames per second (as `linkage render --fps`); --quality draft lowers it to 15."},
-    {"size", "string", "\"1280x720\"", "Frame size WxH, even numbers; --quality draft renders 480x270."},
+    {"fps", "integer", "30", "Frames per second (as the render command's fps); draft quality lowers it to 15."},
+    {"size", "string", "\"1280x720\"", "Frame size WxH, even numbers; draft quality renders 480x270."},
     {"quality", "string", "\"medium\"", "A size and fps preset: low, medium, high or 4k."},
     {"at", "number", "0", "The time in s a still shows (stills only; a clip shows 0 .. duration)."},
     {"speed", "number", "1", "Simulated seconds per video second (below 1 is slow motion)."},
@@ -146,7 +146,7 @@ const std::array<KindEntry, 9>& kinds() {
        kExerciseKeys, false},
       {"solve", "The worked solution of `linkage solve`, showing the chosen parts.", kSolveKeys, false},
       {"simulate", "Runs the motion and prints a summary; optionally writes the trajectory.", kSimulateKeys, true},
-      {"render", "A clip or a still, with any `linkage render` option.", kRenderKeys, true},
+      {"render", "A clip or a still, with any option of the render command.", kRenderKeys, true},
       {"plot", "Series against time for several runs, to PNG and SVG.", kPlotKeys, true},
       {"compare", "Several runs side by side in a table, optionally with plots.", kCompareKeys, true},
   }};

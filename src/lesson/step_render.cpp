@@ -24,16 +24,19 @@ Clip render_clip(const RenderStep& render, Quality quality, const std::filesyste
 }
 
 void run_render(RunContext& c, const Step& step, const RenderStep& s) {
-  c.cached(step, [&] {
+  const nlohmann::json results = c.cached(step, [&] {
     const Clip clip = render_clip(s, c.options.quality, c.options.out_dir, c.options.assets);
     std::optional<Progress> progress;
-    (void)produce_clip(clip, [&](ClipStage stage, long done, long total) {
+    const ClipResult made = produce_clip(clip, [&](ClipStage stage, long done, long total) {
       if (stage != ClipStage::draw) return;
       if (!progress) progress.emplace("render " + s.out, total, "frames");
       progress->update(done);
     });
-    return nlohmann::json::object();
+    nlohmann::json made_results = nlohmann::json::object();
+    if (!made.warnings.empty()) made_results["warnings"] = made.warnings;
+    return made_results;
   });
+  c.warn(step, results);
   const FigureRef::Kind kind = is_still(s.kind) ? FigureRef::Kind::image : FigureRef::Kind::video;
   c.both([&](Writer& w) { w.figure(c.figure(s.out, kind, s.caption)); });
 }

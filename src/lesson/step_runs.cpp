@@ -85,7 +85,10 @@ nlohmann::json simulate(const RunContext& c, const SimulateStep& s) {
     file->stream() << line << "\n";
   }
   if (file) file->commit();
-  return {{"table", to_json(simulate_summary(s, sim.stats(), state))}};
+  nlohmann::json results = {{"table", to_json(simulate_summary(s, sim.stats(), state))}};
+  const std::string warning = result_warning(run.options, run.inputs.params(), sim.stats());
+  if (!warning.empty()) results["warnings"] = {warning};
+  return results;
 }
 
 // --- plots ---------------------------------------------------------------------------
@@ -234,8 +237,11 @@ plot::Plot cost_plot(const CompareStep& s, const std::vector<RunFigures>& figure
 nlohmann::json compare(const RunContext& c, const Step& step, const CompareStep& s) {
   std::map<std::string, State> references;  // by inputs and duration
   std::vector<RunFigures> figures;
+  nlohmann::json warnings = nlohmann::json::array();
   for (const Run& run : s.runs) {
     const SampledRun data = sample_run(run, s.every, {});
+    const std::string warning = result_warning(run.options, run.inputs.params(), data.stats);
+    if (!warning.empty()) warnings.push_back("run '" + run.label + "': " + warning);
     const std::string key = canonical_text(run.inputs) + ";" + format_roundtrip(run.options.duration);
     if (!references.count(key)) references[key] = reference_final_state(run);
     RunFigures f;
@@ -271,13 +277,16 @@ nlohmann::json compare(const RunContext& c, const Step& step, const CompareStep&
   write_file_atomically(c.options.out_dir / (s.out + ".csv"), csv, step.where);
   if (s.plot) write_plot(c, step, time_plot(*s.plot, s.runs), s.out, s.width, s.height);
   if (s.cost_plot) write_plot(c, step, cost_plot(s, figures), s.out + "-cost", s.width, s.height);
-  return {{"table", to_json(table)}};
+  nlohmann::json results = {{"table", to_json(table)}};
+  if (!warnings.empty()) results["warnings"] = warnings;
+  return results;
 }
 
 }  // namespace
 
 void run_simulate(RunContext& c, const Step& step, const SimulateStep& s) {
   const nlohmann::json results = s.trajectory.empty() ? simulate(c, s) : c.cached(step, [&] { return simulate(c, s); });
+  c.warn(step, results);
   const ResultTable table = table_from_json(results.at("table"));
   c.both([&](Writer& w) { w.table(table, "Simulated with " + method_text(s.run.options) + "."); });
   if (!s.trajectory.empty())
@@ -296,6 +305,7 @@ void run_plot(RunContext& c, const Step& step, const PlotStep& s) {
 
 void run_compare(RunContext& c, const Step& step, const CompareStep& s) {
   const nlohmann::json results = c.cached(step, [&] { return compare(c, step, s); });
+  c.warn(step, results);
   const ResultTable table = table_from_json(results.at("table"));
   const std::string note =
       "Final error: largest difference of x1, y1, θ1, θ2 at the end from DOP853 at rtol = atol = " +

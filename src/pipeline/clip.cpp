@@ -26,9 +26,11 @@ auto timed(double& seconds, Work work) {
   return result;
 }
 
-/// Samples the motion at `times` with its own simulation of `options`.
+/// Samples the motion at `times` with its own simulation of `options`; warns when the
+/// run's numbers are meaningless.
 Motion simulate(const Clip& clip, const SimulationOptions& options, const std::vector<double>& times,
-                const ClipProgress& progress, RenderStats& stats) {
+                const ClipProgress& progress, ClipResult& result) {
+  RenderStats& stats = result.stats;
   Simulation simulation(clip.inputs.params(), clip.inputs.state(), options);
   const bool forces = clip.settings.elements.has(Element::pin_force);
   const long total = static_cast<long>(times.size());
@@ -39,6 +41,9 @@ Motion simulate(const Clip& clip, const SimulationOptions& options, const std::v
   });
   stats.force_evaluations += simulation.stats().force_evaluations;
   stats.samples += static_cast<std::int64_t>(times.size());
+  const std::string warning = result_warning(options, clip.inputs.params(), simulation.stats());
+  if (!warning.empty() && std::find(result.warnings.begin(), result.warnings.end(), warning) == result.warnings.end())
+    result.warnings.push_back(warning);
   return motion;
 }
 
@@ -58,7 +63,7 @@ void produce_motion(const Clip& clip, const ClipProgress& progress, ClipResult& 
   std::vector<double> times(static_cast<std::size_t>(count));
   for (long k = 0; k < count; ++k) times[static_cast<std::size_t>(k)] = s.frame_time(k);
   RenderStats& stats = result.stats;
-  const Motion motion = simulate(clip, clip.simulation, times, progress, stats);
+  const Motion motion = simulate(clip, clip.simulation, times, progress, result);
   ClipRenderer renderer(clip.inputs.params(), motion, s, clip.theme, run_label(clip.simulation));
 
   std::optional<VideoWriter> video;
@@ -116,7 +121,7 @@ void produce_still(const Clip& clip, const ClipProgress& progress, ClipResult& r
   SimulationOptions options = clip.simulation;
   options.duration = std::max(s.at, options.dt);
   options.validate();
-  const Motion motion = simulate(clip, options, times, progress, result.stats);
+  const Motion motion = simulate(clip, options, times, progress, result);
   ClipRenderer renderer(clip.inputs.params(), motion, s, clip.theme, run_label(clip.simulation));
   const std::size_t last = times.size() - 1;
   if (clip.out_kind() == OutputKind::png) {

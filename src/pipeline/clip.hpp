@@ -52,11 +52,12 @@ using ClipProgress = std::function<void(ClipStage stage, long done, long total)>
 
 struct ClipResult {
   RenderStats stats;
-  double draw_waited_seconds = 0;   // the drawing thread waited for a free buffer
-  double encoder_idle_seconds = 0;  // the encoder thread waited for a drawn frame
-  std::int64_t video_bytes = 0;     // size of the MP4
-  std::string encoder;              // e.g. "libx264"
-  std::vector<std::string> notes;   // for the user (e.g. the encoder chosen instead)
+  double draw_waited_seconds = 0;     // the drawing thread waited for a free buffer
+  double encoder_idle_seconds = 0;    // the encoder thread waited for a drawn frame
+  std::int64_t video_bytes = 0;       // size of the MP4
+  std::string encoder;                // e.g. "libx264"
+  std::vector<std::string> notes;     // for the user (e.g. the encoder chosen instead)
+  std::vector<std::string> warnings;  // the simulation's numbers are meaningless (result_warning)
 };
 
 /// Produces every output of `clip` (validated first). Polls for terminating signals;

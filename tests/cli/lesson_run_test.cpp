@@ -230,6 +230,47 @@ TEST(LessonCache, AnUnreadableRecordIsMadeAgainWithANote) {
   EXPECT_EQ(read_text(record / "notes.txt"), "mine");
 }
 
+// A simulate or compare step whose run means nothing says so in one status line, made
+// or reused; sound runs say nothing.
+TEST(LessonWarnings, MeaninglessRunsAreNamedMadeOrReused) {
+  TempDir dir;
+  const std::string file = (dir / "w.toml").string(), out = (dir / "out").string();
+  write_text(file, R"(title = "Drift"
+[[step]]
+kind = "simulate"
+case = 1
+integrator = "euler"
+dt = 0.05
+theta1_dot = 20
+theta2_dot = -35
+[[step]]
+kind = "compare"
+out = "table"
+case = 1
+integrator = "euler"
+dt = 0.05
+theta1_dot = 20
+theta2_dot = -35
+duration = 10
+columns = ["constraint_error"]
+runs = [{ label = "drifting" }, { label = "sound", integrator = "dop853" }]
+[[step]]
+kind = "simulate"
+)");
+  for (int pass = 0; pass < 2; ++pass) {  // the compare step's table is reused the second time
+    const RunResult r = run_linkage({"lesson", file, "--out", out});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(count(r.err, "warning: "), 2) << r.err;
+    EXPECT_NE(r.err.find("lesson: step 1 (simulate): warning: the run's numbers do not describe the motion: "),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("lesson: step 2 (compare): warning: run 'drifting': the run's numbers"), std::string::npos)
+        << r.err;
+    EXPECT_EQ(r.err.find("'sound'"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("step 3 (simulate): warning"), std::string::npos) << r.err;
+  }
+}
+
 TEST(LessonOnly, KeepsTheStateEarlierSetStepsMade) {
   TempDir dir;
   const std::string file = (dir / "o.toml").string();

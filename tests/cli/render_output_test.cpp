@@ -3,6 +3,7 @@
 // well-formed SVG; and, through --stats, that it does only the work the picture needs.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -137,6 +138,22 @@ TEST(RenderCli, VideoAndSequenceTogether) {
       render({"--duration", "0.3", "--out", (dir / "c.mp4").string(), "--frames", (dir / "f").string()}).exit_code, 0);
   EXPECT_EQ(decode_video(dir / "c.mp4").times.size(), 3u);
   EXPECT_EQ(entries(dir / "f").size(), 3u);
+}
+
+// A clip of a run whose numbers mean nothing (explicit Euler, Case 1, no stabilization,
+// a large step: the pin drifts metres) is made, and ends with one warning, even with
+// --quiet; the spec's example gives none.
+TEST(RenderCli, AMeaninglessRunEndsWithOneWarning) {
+  TempDir dir;
+  const RunResult r = render({"--out", (dir / "drift.png").string(), "--at", "10", "--case", "1", "--integrator",
+                              "euler", "--dt", "0.05", "--theta1-dot", "20", "--theta2-dot", "-35"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err.rfind("linkage: warning: the run's numbers do not describe the motion: ", 0), 0u) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("the pin came "), std::string::npos) << r.err;
+  const RunResult example = render({"--out", (dir / "example.png").string(), "--at", "10"});
+  ASSERT_EQ(example.exit_code, 0) << example.err;
+  EXPECT_EQ(example.err, "");
 }
 
 TEST(RenderCli, HelpListsElementsQualitiesAndThemes) {

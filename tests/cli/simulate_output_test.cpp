@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -251,6 +253,100 @@ TEST(SimulateCli, DivergenceIsExit3WithOneLineAndNoFile) {
   EXPECT_EQ(out.out.back(), '\n') << "whole lines only";
   const Table table = parse_csv(out.out);
   EXPECT_EQ(table.columns.size(), 25u);
+}
+
+/// Sets an environment variable for the programs a test starts, until scope exit.
+class ScopedEnv {
+ public:
+  ScopedEnv(const char* name, const char* value) : name_(name) { ::setenv(name, value, 1); }
+  ScopedEnv(const ScopedEnv&) = delete;
+  ScopedEnv& operator=(const ScopedEnv&) = delete;
+  ~ScopedEnv() { ::unsetenv(name_); }
+
+ private:
+  const char* name_;
+};
+
+/// The stderr lines starting with `prefix`.
+std::vector<std::string> lines_starting(const std::string& text, const std::string& prefix) {
+  std::vector<std::string> found;
+  std::stringstream in(text);
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind(prefix, 0) == 0) found.push_back(line);
+  return found;
+}
+
+// Off a terminal a long run prints a plain line now and then (here every 10 ms), in
+// simulated time: the whole run is one row interval, and it still reports from inside.
+TEST(SimulateCli, ProgressOffATerminalIsPlainLinesInSimulatedTime) {
+  const std::vector<std::string> args{"simulate",   "--integrator", "gauss-legendre", "--dt", "0.001",
+                                      "--duration", "200",          "--every",        "200",  "--columns",
+                                      "t"};
+  {
+    const ScopedEnv interval("LINKAGE_PROGRESS_INTERVAL", "0.01");
+    const RunResult r = run_linkage(args);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::vector<std::string> lines = lines_starting(r.err, "linkage: simulate: ");
+    ASSERT_FALSE(lines.empty()) << r.err;
+    EXPECT_EQ(r.err.find('\r'), std::string::npos) << "no carriage returns off a terminal";
+    const std::regex line(R"(linkage: simulate: (\d+)% \(([0-9.e+]+) of 200 s simulated\), \d+ s so far)");
+    std::smatch m;
+    ASSERT_TRUE(std::regex_match(lines.front(), m, line)) << lines.front();
+    EXPECT_LT(std::stod(m[2].str()), 200.0) << "reported from inside the one row interval";
+    EXPECT_NE(r.err.find("linkage simulate: Case 3, gauss-legendre"), std::string::npos) << "the summary follows";
+
+    const std::vector<std::string> quiet_args = [&] {
+      std::vector<std::string> a = args;
+      a.emplace_back("--quiet");
+      return a;
+    }();
+    const RunResult quiet = run_linkage(quiet_args);
+    ASSERT_EQ(quiet.exit_code, 0) << quiet.err;
+    EXPECT_TRUE(lines_starting(quiet.err, "linkage: simulate: ").empty()) << quiet.err;
+    EXPECT_NE(quiet.err.find("linkage simulate: Case 3"), std::string::npos) << "--quiet keeps the summary";
+  }
+  // Without the variable the interval is seconds: a short run stays silent.
+  const RunResult short_run = run_linkage({"simulate", "--duration", "1", "--columns", "t"});
+  ASSERT_EQ(short_run.exit_code, 0) << short_run.err;
+  EXPECT_TRUE(lines_starting(short_run.err, "linkage: simulate: ").empty()) << short_run.err;
+}
+
+// 1e8 rad/s would need ~5e9 steps of DOP853 for the default 10 s: the run stops at once
+// (it used to grind for a minute, then blame the step size and suggest Case 3, in use).
+TEST(SimulateCli, ARunThatCannotEndWellStopsEarlyWithOneLine) {
+  TempDir dir;
+  const RunResult r =
+      run_linkage({"simulate", "--theta1-dot", "1e8", "--format", "json", "--out", (dir / "run.json").string()});
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_EQ(r.err.rfind("linkage: error: the simulation failed at t = ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find("(dop853, Case 3)"), std::string::npos) << r.err;
+  const std::string hint = r.err.substr(r.err.rfind("; try "));
+  EXPECT_NE(hint.find("a duration under"), std::string::npos) << r.err;
+  EXPECT_EQ(hint.find("Case 3"), std::string::npos) << r.err;
+  EXPECT_TRUE(dir.entries().empty()) << "no file";
+}
+
+// Explicit Euler on Case 1 at a large step, no stabilization: the pin drifts over a
+// hundred metres. The run ends with one warning line naming the figures; the spec's
+// example has none.
+TEST(SimulateCli, MeaninglessResultsEndWithOneWarning) {
+  const RunResult r = run_linkage({"simulate", "--case", "1", "--integrator", "euler", "--dt", "0.05", "--theta1-dot",
+                                   "20", "--theta2-dot", "-35", "--columns", "t"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::vector<std::string> warnings = lines_starting(r.err, "linkage: warning: ");
+  ASSERT_EQ(warnings.size(), 1u) << r.err;
+  EXPECT_NE(warnings[0].find("the pin came "), std::string::npos) << warnings[0];
+  EXPECT_NE(warnings[0].find("of the block length L"), std::string::npos) << warnings[0];
+  EXPECT_NE(warnings[0].find("stabilization by projection"), std::string::npos) << warnings[0];
+  EXPECT_EQ(r.err.substr(r.err.size() - warnings[0].size() - 1), warnings[0] + "\n") << "the last line";
+
+  const RunResult example = run_linkage(reference_args(3));
+  ASSERT_EQ(example.exit_code, 0) << example.err;
+  EXPECT_EQ(example.err.find("warning"), std::string::npos) << example.err;
+  const RunResult tight = run_linkage({"simulate", "--rtol", "1e-14", "--atol", "1e-14", "--columns", "t"});
+  ASSERT_EQ(tight.exit_code, 0) << tight.err;
+  EXPECT_EQ(tight.err.find("warning"), std::string::npos) << tight.err;
 }
 
 TEST(SimulateCli, HelpGivesUnitsAndDefaults) {

@@ -1,8 +1,12 @@
 #include "encode/png_writer.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 
+#include <cerrno>
+#include <csignal>
 #include <cstring>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -169,6 +173,102 @@ TEST(PngSequenceWriter, WorkerFailureReachesTheCaller) {
         writer.finish();
       },
       ExitCode::failure, "cannot create");
+}
+
+// --- write failures: the system's reason, the file the user named ------------------------
+
+/// Files of this process may not grow past `bytes` while it lives: writes beyond fail
+/// with EFBIG ("File too large") the way a full disk fails them with ENOSPC, without a
+/// full disk (and SIGXFSZ, which would end the process, is ignored meanwhile).
+class FileSizeLimit {
+ public:
+  explicit FileSizeLimit(rlim_t bytes) : old_handler_(std::signal(SIGXFSZ, SIG_IGN)) {
+    ::getrlimit(RLIMIT_FSIZE, &saved_);
+    rlimit limit = saved_;
+    limit.rlim_cur = bytes;
+    ::setrlimit(RLIMIT_FSIZE, &limit);
+  }
+  FileSizeLimit(const FileSizeLimit&) = delete;
+  FileSizeLimit& operator=(const FileSizeLimit&) = delete;
+  ~FileSizeLimit() {
+    ::setrlimit(RLIMIT_FSIZE, &saved_);
+    std::signal(SIGXFSZ, old_handler_);
+  }
+
+ private:
+  rlimit saved_{};
+  void (*old_handler_)(int);
+};
+
+/// A frame of noise: its PNG (~ 200 KB) overflows any stdio buffer, so the write fails in
+/// libspng's own write, not only at the final flush.
+Frame noise_frame(int w, int h) {
+  Frame frame(w, h);
+  std::uint32_t state = 12345;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      state = state * 1664525U + 1013904223U;
+      const std::uint32_t word = 0xff000000U | (state >> 8);
+      std::memcpy(frame.pixels.data() + static_cast<std::ptrdiff_t>(y) * frame.stride + 4 * x, &word, 4);
+    }
+  return frame;
+}
+
+// A failed write says why in the system's words and names the file asked for: not
+// libspng's "stream error", not the temporary it was written to. And leaves nothing.
+TEST(PngWriter, AFailedWriteGivesTheSystemsReasonAndTheTarget) {
+  const TempDir dir;
+  const std::string reason = std::strerror(EFBIG);
+  struct Case {
+    Frame frame;
+    rlim_t limit;
+  };
+  // ~200 KB: fails inside libspng's writes; ~70 bytes: buffered, fails at the final flush
+  for (const Case& c : {Case{noise_frame(256, 256), 1000}, Case{Frame(16, 16), 32}}) {
+    std::string message;
+    {
+      const FileSizeLimit limit(c.limit);
+      try {
+        write_png(c.frame, dir / "still.png", "out");
+      } catch (const Error& e) {
+        EXPECT_EQ(e.code(), ExitCode::failure);
+        message = e.what();
+      }
+    }
+    EXPECT_EQ(message, "cannot write '" + (dir / "still.png").string() + "': " + reason);
+    EXPECT_TRUE(dir.entries().empty()) << "no file, no temporary";
+  }
+}
+
+// A full disk, through a link to /dev/full (written directly: it is a device, and is
+// left as it was): "No space left on device", naming the link given.
+TEST(PngWriter, AFullDiskSaysSo) {
+  if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
+  const TempDir dir;
+  std::filesystem::create_symlink("/dev/full", dir / "full.png");
+  expect_error([&] { write_png(noise_frame(256, 256), dir / "full.png", "out"); }, ExitCode::failure,
+               "cannot write '" + (dir / "full.png").string() + "': " + std::strerror(ENOSPC));
+  expect_error([&] { write_png(gradient_frame(0), dir / "full.png", "out"); }, ExitCode::failure,
+               "cannot write '" + (dir / "full.png").string() + "': " + std::strerror(ENOSPC));
+}
+
+// A numbered frame that cannot be written is named as it would have been in the folder,
+// not in the hidden staging folder.
+TEST(PngSequenceWriter, AFailedWriteNamesTheFrameInTheFolder) {
+  const TempDir dir;
+  std::string message;
+  {
+    const FileSizeLimit limit(1000);
+    try {
+      PngSequenceWriter writer(dir.path(), 256, 256, "frames");
+      writer.write(noise_frame(256, 256));
+      writer.finish();
+    } catch (const Error& e) {
+      message = e.what();
+    }
+  }
+  EXPECT_EQ(message, "cannot write '" + (dir / "frame_00000.png").string() + "': " + std::strerror(EFBIG));
+  EXPECT_TRUE(dir.entries().empty()) << "the staging folder is gone";
 }
 
 }  // namespace

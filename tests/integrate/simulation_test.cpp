@@ -4,8 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "core/error.hpp"
 #include "integrate/explicit_rk.hpp"
@@ -233,6 +235,185 @@ TEST(Simulation, NewtonFailureStopsWithAClearMessage) {
   EXPECT_NE(m.find("step 0.5 s"), std::string::npos) << m;
   EXPECT_NE(m.find("Newton"), std::string::npos) << m;
   EXPECT_NE(m.find("explicit integrator"), std::string::npos) << m;
+}
+
+// --- runs that cannot end well, and runs that can ----------------------------------------
+
+/// The spec's example with other rates (and angle), adaptive DOP853 at rtol = atol = tol.
+Simulation spinning_run(double theta1_dot, double theta2_dot, double duration, double tol = 1e-10,
+                        double theta1 = 0.1) {
+  SimulationOptions o = options(3, IntegratorKind::dop853, tol);
+  o.duration = duration;
+  o.dt = std::min(1e-3, duration);
+  State initial = test::reference_initial_state();
+  initial.theta1 = theta1;
+  initial.theta1_dot = theta1_dot;
+  initial.theta2_dot = theta2_dot;
+  return {test::reference_params(), initial, o};
+}
+
+/// The one-line message of a run that must stop (exit code 3) before `t`.
+std::string failure_before(Simulation& sim, double t) {
+  try {
+    (void)sim.state_at(t);
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::diverged) << e.what();
+    const std::string m = e.what();
+    EXPECT_EQ(m.find('\n'), std::string::npos) << "one line: " << m;
+    EXPECT_EQ(m.find("--"), std::string::npos) << "settings by name, never a flag: " << m;
+    return m;
+  }
+  ADD_FAILURE() << "expected the run to stop";
+  return "";
+}
+
+/// The part of a failure message after "try ".
+std::string remedies(const std::string& message) {
+  const auto at = message.rfind("; try ");
+  return at == std::string::npos ? "" : message.substr(at + 6);
+}
+
+// 1e8 rad/s: DOP853 needs steps of ~2e-9 s, 5e9 of them for 10 s (it used to grind for
+// a minute and more, then underflow). The step budget stops it after 16 x 4096 steps
+// with the time, the step, the case and integrator, and a hint that changes something.
+TEST(Simulation, ARunThatWouldNeedBillionsOfStepsStopsAtOnce) {
+  Simulation sim = spinning_run(1e8, 0.45, 10.0);
+  const std::string m = failure_before(sim, 10.0);
+  EXPECT_NE(m.find("failed at t = "), std::string::npos) << m;
+  EXPECT_NE(m.find(" s with step "), std::string::npos) << m;
+  EXPECT_NE(m.find("(dop853, Case 3)"), std::string::npos) << m;
+  EXPECT_NE(m.find("more than the limit of 1e+09"), std::string::npos) << m;
+  EXPECT_NE(remedies(m).find("a duration under"), std::string::npos) << m;
+  EXPECT_EQ(remedies(m).find("Case"), std::string::npos) << "never the case in use: " << m;
+  EXPECT_EQ(remedies(m).find("dop853"), std::string::npos) << "never the integrator in use: " << m;
+  // work done, not clock time: one budget window (16 x 4096 steps), give or take a check
+  EXPECT_GE(sim.stats().steps_accepted, 16 * 4096);
+  EXPECT_LE(sim.stats().steps_accepted, 17 * 4096);
+}
+
+// At 1e8 rad/s and an angle of 1e8 rad, round-off in the angle holds the steps near 1e-14 s
+// (a millionth of the spin period) at rtol 1e-10: the hint is a looser tolerance (which
+// lets the same run through), never Case 3, which is in use.
+TEST(Simulation, StepsHeldDownByRoundOffSuggestALooserTolerance) {
+  Simulation sim = spinning_run(1e8, 0.45, 1e-4, 1e-10, 1e8);
+  const std::string m = failure_before(sim, 1e-4);
+  EXPECT_NE(remedies(m).find("a looser rtol/atol"), std::string::npos) << m;
+  EXPECT_EQ(remedies(m).find("Case"), std::string::npos) << m;
+  Simulation looser = spinning_run(1e8, 0.45, 1e-4, 1e-8, 1e8);
+  EXPECT_NO_THROW((void)looser.state_at(1e-4));
+}
+
+// Legitimate extremes still run: the stress study's fastest spins at rtol 1e-14, the
+// stiffest Baumgarte gains, and steps that dip far below the spin period and recover.
+TEST(Simulation, ExtremeButFeasibleRunsStillRun) {
+  Simulation fast = spinning_run(1e4, -1.75e4, 0.1, 1e-14);
+  EXPECT_NO_THROW((void)fast.state_at(0.1));
+  EXPECT_LT(fast.stats().max_energy_error, 1e-10);
+
+  SimulationOptions stiff = options(1, IntegratorKind::dop853, 1e-10);
+  stiff.stabilization = Stabilization::baumgarte;
+  stiff.baumgarte_alpha = stiff.baumgarte_beta = 1e6;
+  stiff.duration = 0.01;
+  Simulation baumgarte = reference_run(stiff);
+  EXPECT_NO_THROW((void)baumgarte.state_at(0.01));
+
+  Simulation dips = spinning_run(1e8, 0.45, 1e-4, 1e-10, 1.4e7);
+  EXPECT_NO_THROW((void)dips.state_at(1e-4));
+  EXPECT_LT(dips.stats().max_energy_error, 1e-6);
+}
+
+// An adaptive run that fails in Case 2 may be told to try Case 3; in Case 3, never.
+TEST(Simulation, HintsNeverNameTheCaseOrIntegratorInUse) {
+  const std::string rk4 = stiff_failure(IntegratorKind::rk4, 0.01);
+  EXPECT_EQ(remedies(rk4).find("rk4"), std::string::npos) << rk4;
+  EXPECT_NE(remedies(rk4).find("smaller Baumgarte gains"), std::string::npos) << rk4;
+  const std::string gauss = stiff_failure(IntegratorKind::gauss2, 0.5);
+  EXPECT_EQ(remedies(gauss).find("gauss-legendre"), std::string::npos) << gauss;
+}
+
+// --- meaningless results -----------------------------------------------------------------
+
+TEST(ResultWarning, NamesTheFigureAndWhatToTry) {
+  const Params p = test::reference_params();
+  SimulationOptions o = options(1, IntegratorKind::euler);
+  o.stabilization = Stabilization::none;
+  SimulationStats st;
+  st.energy_scale = 4.26;
+  st.max_energy_error = 0.9;
+  st.max_constraint_error = 0.24 * p.L;
+  EXPECT_EQ(result_warning(o, p, st), "") << "below both thresholds";
+
+  st.max_energy_error = 3.2e6;
+  const std::string energy = result_warning(o, p, st);
+  EXPECT_NE(energy.find("energy error reached 3.2e+06 times the energy scale (4.26 J)"), std::string::npos) << energy;
+  EXPECT_EQ(energy.find("pin"), std::string::npos) << energy;
+  EXPECT_NE(energy.find("try a smaller step dt or an adaptive integrator (dop853)"), std::string::npos) << energy;
+
+  st.max_energy_error = 0.5;
+  st.max_constraint_error = 1.2;
+  const std::string pin = result_warning(o, p, st);
+  EXPECT_NE(pin.find("the pin came 1.2 m apart (4 of the block length L)"), std::string::npos) << pin;
+  EXPECT_NE(pin.find("stabilization by projection"), std::string::npos) << pin;
+  EXPECT_EQ(pin.find("energy"), std::string::npos) << pin;
+  EXPECT_EQ(pin.find('\n'), std::string::npos);
+  EXPECT_EQ(pin.find("--"), std::string::npos);
+
+  o.integrator = IntegratorKind::dop853;
+  o.rtol = o.atol = 1e-3;
+  st.max_energy_error = 2;
+  const std::string both = result_warning(o, p, st);
+  EXPECT_NE(both.find(" and the pin came"), std::string::npos) << both;
+  EXPECT_NE(both.find("a tighter rtol/atol"), std::string::npos) << both;
+  EXPECT_EQ(both.find("dop853"), std::string::npos) << "never the integrator in use: " << both;
+}
+
+// Explicit Euler on Case 1 at a large step without stabilization: the pin drifts metres
+// and the energy doubles. The spec's example at rtol 1e-14 gives no warning.
+TEST(ResultWarning, ComesFromARealRunAndNotFromTheSpecExample) {
+  SimulationOptions o = options(1, IntegratorKind::euler);
+  o.stabilization = Stabilization::none;
+  o.dt = 0.05;
+  State spinning = test::reference_initial_state();
+  spinning.theta1_dot = 20;
+  spinning.theta2_dot = -35;
+  Simulation bad(test::reference_params(), spinning, o);
+  for (int k = 0; k <= 10; ++k) (void)bad.state_at(k);
+  EXPECT_GT(bad.stats().max_constraint_error, 10.0);
+  EXPECT_GT(bad.stats().max_energy_error, 1.0);
+  EXPECT_NE(result_warning(o, bad.params(), bad.stats()).find("the pin came"), std::string::npos);
+
+  for (int case_id : {1, 2, 3}) {
+    Simulation good = reference_run(options(case_id, IntegratorKind::dop853, 1e-14));
+    for (const test::ReferenceSample& ref : test::reference_samples()) (void)good.state_at(ref.t);
+    EXPECT_EQ(result_warning(good.options(), good.params(), good.stats()), "") << "Case " << case_id;
+  }
+}
+
+// --- progress ------------------------------------------------------------------------------
+
+// One long state_at() reports the integrator's time as it goes, not only at its end:
+// every 4096 steps, fixed or adaptive.
+TEST(Simulation, ReportsProgressWithinOneLongInterval) {
+  SimulationOptions o = options(3, IntegratorKind::gauss2);
+  o.dt = 1e-3;
+  o.duration = 20.0;
+  Simulation fixed = reference_run(o);
+  std::vector<double> reported;
+  fixed.on_progress([&](double t) { reported.push_back(t); });
+  (void)fixed.state_at(20.0);
+  ASSERT_EQ(reported.size(), 4u);  // 4.096 s, 8.192 s, 12.288 s, 16.384 s
+  EXPECT_NEAR(reported.front(), 4.096, 1e-9);
+  EXPECT_NEAR(reported.back(), 16.384, 1e-9);
+
+  Simulation adaptive = spinning_run(1e3, -1.75e3, 1.0);
+  reported.clear();
+  adaptive.on_progress([&](double t) { reported.push_back(t); });
+  (void)adaptive.state_at(1.0);
+  ASSERT_GE(reported.size(), 2u);
+  EXPECT_EQ(static_cast<std::int64_t>(reported.size()), adaptive.stats().steps_accepted / 4096);
+  EXPECT_TRUE(std::is_sorted(reported.begin(), reported.end()));
+  EXPECT_GT(reported.front(), 0.0);
+  EXPECT_LT(reported.back(), 1.0);
 }
 
 // --- options -------------------------------------------------------------------------
