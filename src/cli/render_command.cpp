@@ -81,18 +81,16 @@ Clip resolve_clip(const RenderFlags& f) {
   if (!f.frames.empty()) clip.frames = fs::path(f.frames);
   // --out defaults to linkage.mp4 unless only a PNG sequence was asked for.
   if (f.out_option->count() > 0 || !clip.frames) clip.out = fs::path(f.out);
-  if (clip.out && fs::is_directory(*clip.out))
-    throw Error::input("--out: '" + clip.out->string() + "' is a folder, expected a file name");
+  clip.theme = load_theme(clip.settings.theme, assets_dir(LINKAGE_ASSETS_DIR), "theme");
+  clip.simulation = resolve_simulation_flags(f.simulation, clip.settings.duration);
+  clip.inputs = resolve_inputs(f.inputs);
+  clip.validate();  // the output's checks first, then what only the flags can say
   const bool still = clip.is_still();
   if (f.at_option->count() > 0 && !still)
     throw Error::input("--at: applies to a still (--out FILE.png, .svg or .pdf); a clip shows 0 .. --duration");
   if (still && !clip.frames && f.duration_option->count() > 0 && !f.quiet)
     std::fprintf(stderr, "linkage: note: --duration applies to a clip; a still shows the time --at (default 0)\n");
-  clip.theme = load_theme(clip.settings.theme, assets_dir(LINKAGE_ASSETS_DIR), "theme");
-  clip.simulation = resolve_simulation_flags(f.simulation, clip.settings.duration);
-  clip.inputs = resolve_inputs(f.inputs);
   if (!f.quiet) note_ignored_simulation_flags(f.simulation, clip.simulation);
-  clip.validate();
   return clip;
 }
 

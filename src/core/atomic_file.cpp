@@ -17,12 +17,6 @@ namespace linkage {
 namespace fs = std::filesystem;
 
 namespace {
-std::string quoted(const fs::path& p) {
-  std::string text(1, '\'');  // appended, not "'" + ...: GCC 12 misreads that as overlapping (-Wrestrict)
-  text += p.string();
-  text += '\'';
-  return text;
-}
 
 bool process_alive(long pid) { return ::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH; }
 
@@ -38,6 +32,13 @@ fs::path resolve_links(const fs::path& target) {
   return path;
 }
 }  // namespace
+
+std::string quoted(const fs::path& p) {
+  std::string text(1, '\'');  // appended, not "'" + ...: GCC 12 misreads that as overlapping (-Wrestrict)
+  text += p.string();
+  text += '\'';
+  return text;
+}
 
 std::string temporary_suffix() {
   static std::atomic<unsigned> counter{0};

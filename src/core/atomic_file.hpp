@@ -64,6 +64,9 @@ void remove_stale_temporaries(const std::filesystem::path& folder, const std::st
 /// Writes `content` to `target` atomically.
 void write_file_atomically(const std::filesystem::path& target, const std::string& content, const std::string& setting);
 
+/// 'PATH' in single quotes, for messages.
+[[nodiscard]] std::string quoted(const std::filesystem::path& path);
+
 /// "cannot write 'FILE': REASON" from errno, for write failures.
 [[nodiscard]] std::string write_failure(const std::filesystem::path& file, int error_number);
 

@@ -1,5 +1,6 @@
 #include "core/input_file.hpp"
 
+#include "core/atomic_file.hpp"
 #include "core/error.hpp"
 
 namespace linkage {
@@ -8,9 +9,7 @@ namespace fs = std::filesystem;
 void require_regular_file(const fs::path& path, const std::string& setting) {
   std::error_code ec;
   const fs::file_status status = fs::status(path, ec);
-  std::string name(1, '\'');  // appended: GCC 12 misreads "'" + ... as overlapping (-Wrestrict)
-  name += path.string();
-  name += '\'';
+  const std::string name = quoted(path);
   if (!fs::exists(status)) throw Error::invalid(setting, "file " + name + " does not exist");
   if (fs::is_directory(status)) throw Error::invalid(setting, name + " is a folder, not a file");
   if (fs::is_fifo(status))
