@@ -1,0 +1,23 @@
+#include "model/mechanism.hpp"
+
+namespace linkage {
+
+const Body* Mechanism::find_body(const std::string& body_name) const {
+  for (const Body& body : bodies)
+    if (body.name == body_name) return &body;
+  return nullptr;
+}
+
+const Joint* Mechanism::find_joint(const std::string& joint_name) const {
+  for (const Joint& joint : joints)
+    if (joint.name == joint_name) return &joint;
+  return nullptr;
+}
+
+std::string where(const SourcePos& pos) {
+  if (pos.file.empty()) return {};
+  if (pos.line <= 0) return pos.file + ": ";
+  return pos.file + ":" + std::to_string(pos.line) + ":" + std::to_string(pos.column) + ": ";
+}
+
+}  // namespace linkage

@@ -1,0 +1,145 @@
+#pragma once
+// A mechanism as the lecturer wrote it (mechanisms/*.toml): bodies, their named points,
+// joints, springs, applied loads, parameters and the initial state. Plain data, read-only
+// once read: every quantity stays the text the file gave (a number or an expression in
+// the parameters), with its position in the file, so the symbolic layer can parse it and
+// name FILE:LINE:COLUMN when it is wrong. The file's contract is in mechanisms/README.md.
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace linkage {
+
+/// Where a value came from: "two-blocks.toml", line and column (1-based; 0 when built in code).
+struct SourcePos {
+  std::string file;
+  long line = 0;
+  long column = 0;
+};
+
+/// A quantity: a number written as text ("0.3") or an expression ("L/2 - b").
+struct Quantity {
+  std::string text;
+  SourcePos pos;
+};
+
+struct Vector2Quantity {
+  Quantity x, y;
+};
+
+struct NamedPoint {
+  std::string name;
+  Vector2Quantity at;  // body frame (origin at the centre of mass, x along the length); world for ground
+  SourcePos pos;
+};
+
+enum class Shape { rectangle, rod, disc, point };
+inline constexpr std::array<const char*, 4> kShapeNames{"rectangle", "rod", "disc", "point"};
+
+struct Body {
+  std::string name;
+  Shape shape = Shape::point;
+  Quantity mass;
+  std::optional<Quantity> length;   // rectangle, rod
+  std::optional<Quantity> width;    // rectangle
+  std::optional<Quantity> radius;   // disc
+  std::optional<Quantity> inertia;  // about the centre of mass; overrides the shape's formula
+  std::vector<NamedPoint> points;
+  SourcePos pos;
+};
+
+enum class JointType { pin, slider };
+inline constexpr std::array<const char*, 2> kJointTypeNames{"pin", "slider"};
+
+/// The name that stands for the fixed frame in `bodies` and in point references.
+inline constexpr const char* kGround = "ground";
+
+struct Joint {
+  std::string name;
+  JointType type = JointType::pin;
+  std::array<std::string, 2> bodies;  // kGround or a body name
+  std::array<std::string, 2> points;  // a named point of each body, in the order of `bodies`
+  // Pin only: a torsional spring-damper; torque on bodies[1] = -stiffness*(th_b - th_a -
+  // rest_angle) - damping*(th_b' - th_a'), the opposite on bodies[0].
+  std::optional<Quantity> stiffness, damping, rest_angle;
+  std::optional<Vector2Quantity> axis;  // slider only: direction in the frame of bodies[0]
+  SourcePos pos;
+};
+
+/// "body.point", e.g. "ground.O" or "1.P".
+struct PointRef {
+  std::string body;
+  std::string point;
+  SourcePos pos;
+};
+
+/// A linear spring-damper between two points: force along the line
+/// -stiffness*(l - rest_length) - damping*l'.
+struct Spring {
+  std::string name;
+  std::array<PointRef, 2> between;
+  Quantity stiffness, rest_length, damping;
+  SourcePos pos;
+};
+
+/// An applied force at a body's point, world frame; may use the time t.
+struct AppliedForce {
+  std::string body, point;
+  Vector2Quantity value;
+  SourcePos pos;
+};
+
+/// An applied torque on a body; may use the time t.
+struct AppliedTorque {
+  std::string body;
+  Quantity value;
+  SourcePos pos;
+};
+
+struct Parameter {
+  std::string name;
+  double value = 0;
+  SourcePos pos;
+};
+
+struct Definition {
+  std::string name;
+  Quantity value;
+  SourcePos pos;
+};
+
+/// One initial value: the generalized coordinate or rate `key` ("1.theta", "1.x_dot",
+/// "slider.s") as the file spelt it.
+struct InitialValue {
+  std::string key;
+  double value = 0;
+  SourcePos pos;
+};
+
+struct Mechanism {
+  std::string name;                 // file stem, e.g. "two-blocks"
+  std::string title;                // one line
+  std::string description;          // one paragraph: what it teaches
+  std::string source;               // the file path (or "built-in two-blocks.toml")
+  std::optional<Quantity> gravity;  // magnitude along -y; absent means none
+  std::vector<Parameter> parameters;
+  std::vector<Definition> definitions;
+  std::vector<NamedPoint> ground_points;
+  std::vector<Body> bodies;
+  std::vector<Joint> joints;
+  std::vector<Spring> springs;
+  std::vector<AppliedForce> forces;
+  std::vector<AppliedTorque> torques;
+  std::vector<InitialValue> initial;
+  std::vector<std::string> independent;  // loop closure keeps these coordinates
+  SourcePos independent_pos;
+
+  [[nodiscard]] const Body* find_body(const std::string& body_name) const;
+  [[nodiscard]] const Joint* find_joint(const std::string& joint_name) const;
+};
+
+/// "file:line:column: " or "" for a position built in code.
+[[nodiscard]] std::string where(const SourcePos& pos);
+
+}  // namespace linkage

@@ -1,0 +1,95 @@
+#include "model/spanning_tree.hpp"
+
+#include <deque>
+
+namespace linkage {
+namespace {
+
+// Index of a body by name, -1 for the ground.
+int body_index(const Mechanism& mechanism, const std::string& name) {
+  for (std::size_t i = 0; i < mechanism.bodies.size(); ++i)
+    if (mechanism.bodies[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+}  // namespace
+
+const char* coordinate_kind_name(CoordinateKind kind) {
+  switch (kind) {
+    case CoordinateKind::x:
+      return "x";
+    case CoordinateKind::y:
+      return "y";
+    case CoordinateKind::theta:
+      return "theta";
+    case CoordinateKind::s:
+      return "s";
+  }
+  return "?";
+}
+
+SpanningTree spanning_tree(const Mechanism& mechanism) {
+  const auto n = mechanism.bodies.size();
+  SpanningTree tree;
+  tree.bodies.resize(n);
+  std::vector<bool> reached(n, false);
+  std::vector<bool> used(mechanism.joints.size(), false);
+
+  // Breadth first from `start` (-1: the ground), joints in file order.
+  auto grow = [&](int start) {
+    std::deque<int> queue{start};
+    while (!queue.empty()) {
+      const int at = queue.front();
+      queue.pop_front();
+      for (std::size_t j = 0; j < mechanism.joints.size(); ++j) {
+        if (used[j]) continue;
+        const Joint& joint = mechanism.joints[j];
+        const int a = body_index(mechanism, joint.bodies[0]);
+        const int b = body_index(mechanism, joint.bodies[1]);
+        int other = -2;
+        if (a == at) other = b;
+        if (b == at) other = a;
+        if (other == -2 || other == -1 || reached[static_cast<std::size_t>(other)]) continue;
+        used[j] = true;
+        reached[static_cast<std::size_t>(other)] = true;
+        tree.bodies[static_cast<std::size_t>(other)] = {at, static_cast<int>(j), false};
+        tree.order.push_back(other);
+        tree.tree_joints.push_back(static_cast<int>(j));
+        queue.push_back(other);
+      }
+    }
+  };
+  grow(-1);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (reached[i]) continue;
+    reached[i] = true;
+    tree.bodies[i] = {-1, -1, true};
+    tree.order.push_back(static_cast<int>(i));
+    grow(static_cast<int>(i));
+  }
+  for (std::size_t j = 0; j < mechanism.joints.size(); ++j)
+    if (!used[j]) tree.loop_joints.push_back(static_cast<int>(j));
+
+  for (std::size_t i = 0; i < n; ++i) {
+    const Body& body = mechanism.bodies[i];
+    const TreeBody& node = tree.bodies[i];
+    const int index = static_cast<int>(i);
+    if (node.floating) {
+      for (CoordinateKind kind : {CoordinateKind::x, CoordinateKind::y, CoordinateKind::theta})
+        tree.coordinates.push_back({kind, index, -1, body.name + "." + coordinate_kind_name(kind)});
+      continue;
+    }
+    const Joint& joint = mechanism.joints[static_cast<std::size_t>(node.joint)];
+    if (joint.type == JointType::pin)
+      tree.coordinates.push_back({CoordinateKind::theta, index, -1, body.name + ".theta"});
+    else
+      tree.coordinates.push_back({CoordinateKind::s, index, node.joint, joint.name + ".s"});
+  }
+  return tree;
+}
+
+int degrees_of_freedom(const Mechanism& mechanism) {
+  return 3 * static_cast<int>(mechanism.bodies.size()) - 2 * static_cast<int>(mechanism.joints.size());
+}
+
+}  // namespace linkage
