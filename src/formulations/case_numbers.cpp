@@ -27,6 +27,30 @@ GiNaC::exmap state_values(const sym::System& system, const GiNaC::exmap& state, 
   return values;
 }
 
+std::optional<double> case_value(const CaseSystem& c, const CaseNumbers& numbers, const GiNaC::exmap& values,
+                                 const GiNaC::symbol& u, bool* recovered) {
+  for (std::size_t j = 0; j < c.unknowns.size(); ++j)
+    if (c.unknowns[j].is_equal(u)) {
+      if (recovered != nullptr) *recovered = false;
+      return numbers.solution(static_cast<Eigen::Index>(j));
+    }
+  for (const Recovered& r : c.recovered)
+    if (r.symbol.is_equal(u)) {
+      GiNaC::exmap with_solution = values;
+      for (std::size_t j = 0; j < c.unknowns.size(); ++j)
+        with_solution[c.unknowns[j]] = GiNaC::numeric(numbers.solution(static_cast<Eigen::Index>(j)));
+      // A recovered force may use forces recovered before it.
+      GiNaC::ex e = r.value;
+      for (const Recovered& earlier : c.recovered) {
+        if (&earlier == &r) break;
+        e = e.subs(GiNaC::exmap{{earlier.symbol, earlier.value}});
+      }
+      if (recovered != nullptr) *recovered = true;
+      return value_at(e, with_solution);
+    }
+  return std::nullopt;
+}
+
 CaseNumbers solve_numbers(const CaseSystem& c, const GiNaC::exmap& values) {
   const auto rows = static_cast<Eigen::Index>(c.A.size());
   const auto cols = static_cast<Eigen::Index>(c.unknowns.size());

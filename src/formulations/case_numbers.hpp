@@ -5,6 +5,7 @@
 #include <ginac/ginac.h>
 
 #include <Eigen/Core>
+#include <optional>
 
 #include "formulations/case_system.hpp"
 
@@ -25,6 +26,13 @@ struct CaseNumbers {
 /// Evaluates and solves; throws Error::diverged naming the case and the condition number
 /// when A is singular to working precision, and Error::input when an entry is not finite.
 [[nodiscard]] CaseNumbers solve_numbers(const CaseSystem& c, const GiNaC::exmap& values);
+
+/// The value of `u` (an acceleration or joint force symbol) in a solved case: from the
+/// solution, or from the case's recovered expressions; nullopt when the case has neither.
+/// `recovered` says which.
+[[nodiscard]] std::optional<double> case_value(const CaseSystem& c, const CaseNumbers& numbers,
+                                               const GiNaC::exmap& values, const GiNaC::symbol& u,
+                                               bool* recovered = nullptr);
 
 /// The value of an expression at `values` (every symbol in it must have one).
 [[nodiscard]] double value_at(const GiNaC::ex& e, const GiNaC::exmap& values);
