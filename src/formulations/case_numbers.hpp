@@ -23,7 +23,7 @@ struct CaseNumbers {
   double condition = 0;  // sigma_max / sigma_min
 };
 
-/// Evaluates and solves; throws Error::diverged naming the case and the condition number
+/// Evaluates and solves; throws Error::input naming the case and the condition number
 /// when A is singular to working precision, and Error::input when an entry is not finite.
 [[nodiscard]] CaseNumbers solve_numbers(const CaseSystem& c, const GiNaC::exmap& values);
 

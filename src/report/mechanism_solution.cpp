@@ -4,6 +4,7 @@
 
 #include "report/json_report.hpp"
 #include "symbolic/loop_closure.hpp"
+#include "symbolic/validate.hpp"
 
 namespace linkage {
 
@@ -21,7 +22,10 @@ MechanismSolution work_out_mechanism(const Mechanism& mechanism, const std::vect
   MechanismSolution out;
   out.system = std::make_shared<const sym::System>(mechanism);
   const sym::System& system = *out.system;
+  sym::validate_quantities(system);
+  sym::validate_constraints(system, system.initial_state());  // structural redundancy, before closing
   const sym::ClosedState closed = sym::close_loops(system, system.initial_state());
+  sym::validate_constraints(system, closed.state);
   out.state = closed.state;
   out.closure_note = closed.note;
   out.values = state_values(system, out.state, 0);

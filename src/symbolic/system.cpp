@@ -103,6 +103,9 @@ ex System::quantity(const Quantity& q, bool time_allowed) const {
     if (message.find("not found") != std::string::npos && !name.empty())
       throw Error::input(where(q.pos) + "unknown symbol '" + name + "' in \"" + q.text + "\"; valid: " +
                          names_of(names) + (time_allowed ? "" : " (t only in [[force]] and [[torque]] values)"));
+    if (message.find("division by zero") != std::string::npos)
+      throw Error::input(where(q.pos) + "the expression \"" + q.text +
+                         "\" divides by zero; valid: an expression finite at the given values");
     throw Error::input(where(q.pos) + "cannot read the expression \"" + q.text +
                        "\"; write numbers, names, + - * / ^, parentheses, sin cos tan sqrt exp, pi");
   }
