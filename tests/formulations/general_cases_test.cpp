@@ -6,37 +6,12 @@
 #include "formulations/case_numbers.hpp"
 #include "formulations/case_system.hpp"
 #include "formulations/formulation.hpp"
+#include "support/test_mechanisms.hpp"
 
 namespace linkage {
 namespace {
 
-Quantity q(const std::string& text) { return {text, {}}; }
-
-Mechanism homework() {
-  Mechanism m;
-  m.name = "two-blocks";
-  m.gravity = q("g");
-  m.parameters = {{"L", 0.3, {}}, {"w", 0.1, {}}, {"b", 0.04, {}}, {"m", 0.1, {}}, {"g", 9.81, {}}};
-  m.definitions = {{"D", q("L/2 - b"), {}}};
-  for (const char* name : {"1", "2"}) {
-    Body b;
-    b.name = name;
-    b.shape = Shape::rectangle;
-    b.mass = q("m");
-    b.length = q("L");
-    b.width = q("w");
-    b.points = {{"P", {q(name[0] == '1' ? "D" : "-D"), q("0")}, {}}};
-    m.bodies.push_back(b);
-  }
-  Joint p;
-  p.name = "P";
-  p.bodies = {"1", "2"};
-  p.points = {"P", "P"};
-  m.joints.push_back(p);
-  m.initial = {{"1.x", 1, {}},        {"1.y", 2, {}},        {"1.theta", 0.1, {}},      {"2.theta", 0.2, {}},
-               {"1.x_dot", 0.15, {}}, {"1.y_dot", 0.25, {}}, {"1.theta_dot", 0.35, {}}, {"2.theta_dot", 0.45, {}}};
-  return m;
-}
+using test::homework;
 
 TEST(GeneralCases, HomeworkMatchesTheClosedForm) {
   const sym::System system(homework());
