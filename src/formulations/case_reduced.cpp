@@ -2,7 +2,8 @@
 // forces of loop-closing joints stay unknown. From Case 2's rows, each tree force
 // component f is solved from the row that holds it alone among the tree forces,
 //   r = c f + rest = 0  =>  f = -rest / c,
-// preferring the row with the fewest accelerations (for the homework, the Newton rows of
+// preferring a row where c does not depend on the state, then the row with the fewest
+// accelerations (for the homework, the Newton rows of
 // block 1: Fx = m x1'', Fy = m (y1'' + g)), and substituted into every other row; that
 // row leaves the system. What remains is, for each tree joint, the moment about it of
 // everything beyond it, and for a floating base its total force (the homework's (1.3) to
@@ -48,7 +49,8 @@ CaseSystem reduced_case(const sym::System& system) {
         for (std::size_t other = 0; other < remaining.size(); ++other)
           alone = alone && (other == ci || rows[ri].coeff(remaining[other], 1).is_zero());
         if (!alone) continue;
-        std::size_t score = 0;
+        // A constant coefficient first (dividing by it is always safe), then the fewest accelerations.
+        std::size_t score = depends_on_state(rows[ri].coeff(remaining[ci], 1), system.table()) ? 1000 : 0;
         for (const GiNaC::symbol& a : accelerations) score += rows[ri].coeff(a, 1).is_zero() ? 0 : 1;
         if (score < best_score) {
           best_score = score;

@@ -11,7 +11,7 @@ CaseSystem linear_system(CaseId id, const std::vector<GiNaC::ex>& rows, const st
   GiNaC::exmap zero;
   for (const GiNaC::symbol& u : unknowns) zero[u] = 0;
   for (std::size_t i = 0; i < rows.size(); ++i) {
-    const GiNaC::ex row = GiNaC::expand(rows[i]);
+    const GiNaC::ex row = sym::simplify_trig(rows[i]);
     std::vector<GiNaC::ex> a;
     a.reserve(unknowns.size());
     for (const GiNaC::symbol& u : unknowns) a.push_back(row.coeff(u, 1));

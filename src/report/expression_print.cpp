@@ -108,6 +108,13 @@ class Printer {
       const bool single = f.denominator.size() == 1 && f.denominator[0].prec >= Prec::power;
       return {negative, unknown + (single ? "/" + f.denominator[0].text : " / " + paren(join(f.denominator)))};
     }
+    if (!f.denominator.empty()) {
+      // The unknown joins the numerator: "a sin θ₂ Fx / 2", not "a sin θ₂ / 2 Fx".
+      Fraction with_unknown = f;
+      with_unknown.numerator.push_back({unknown, Prec::atom});
+      with_unknown.symbol_denominator = false;
+      return {negative, fraction_text(with_unknown, space)};
+    }
     return {negative, magnitude(p, false).text + space + unknown};
   }
 
@@ -571,6 +578,16 @@ class Printer {
     }
     f.symbol_denominator = f.denominator.size() == 1 && symbols_below == 1;
     return f;
+  }
+
+  // numerator / denominator of a coefficient times an unknown (equation_sides).
+  [[nodiscard]] std::string fraction_text(const Fraction& f, const std::string& space) const {
+    std::string top;
+    for (const Piece& piece : f.numerator)
+      top += (top.empty() ? "" : space) + (piece.prec == Prec::sum ? paren(piece.text) : piece.text);
+    if (style_ == Style::latex) return "\\frac{" + top + "}{" + join(f.denominator) + "}";
+    const bool single = f.denominator.size() == 1 && f.denominator[0].prec >= Prec::power;
+    return top + " / " + (single ? f.denominator[0].text : paren(join(f.denominator)));
   }
 
   // The product without its sign.

@@ -20,6 +20,18 @@ Vec2 rotate(const ex& angle, const Vec2& v) {
 
 ex cross(const Vec2& a, const Vec2& b) { return a.x * b.y - a.y * b.x; }
 
+ex simplify_trig(const ex& e) {
+  ex out = GiNaC::expand(e);
+  GiNaC::exset arguments;
+  for (auto i = out.preorder_begin(); i != out.preorder_end(); ++i)
+    if (GiNaC::is_a<GiNaC::function>(*i) && GiNaC::ex_to<GiNaC::function>(*i).get_name() == "sin")
+      arguments.insert(i->op(0));
+  for (const ex& x : arguments)
+    out = GiNaC::expand(
+        out.subs(GiNaC::pow(GiNaC::sin(x), 2) == 1 - GiNaC::pow(GiNaC::cos(x), 2), GiNaC::subs_options::algebraic));
+  return out;
+}
+
 double to_double(const ex& e) {
   const ex value = GiNaC::evalf(e);
   if (!GiNaC::is_a<GiNaC::numeric>(value)) {

@@ -131,6 +131,10 @@ class System {
 [[nodiscard]] inline Vec2 operator-(const Vec2& a, const Vec2& b) { return {a.x - b.x, a.y - b.y}; }
 [[nodiscard]] inline Vec2 operator*(const GiNaC::ex& k, const Vec2& v) { return {k * v.x, k * v.y}; }
 
+/// `e` expanded with sin(x)^2 written 1 - cos(x)^2 for every argument x, so that
+/// sin² + cos² never survives as such.
+[[nodiscard]] GiNaC::ex simplify_trig(const GiNaC::ex& e);
+
 /// A number from a closed expression (no free symbol left); throws std::logic_error if not.
 [[nodiscard]] double to_double(const GiNaC::ex& e);
 
