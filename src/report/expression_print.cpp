@@ -81,7 +81,7 @@ class Printer {
   Printer(const sym::SymbolTable& table, Style style, const ValueText* values)
       : table_(table), style_(style), values_(values) {}
 
-  // The whole expression, sign included; `top` marks the sum operators of a top-level sum.
+  // The whole expression, sign included; text styles mark every sum operator for wrapping (the outermost first).
   [[nodiscard]] std::string expression(const ex& e, bool top) const {
     check(e);
     return signed_piece(build(e), top).text;
@@ -619,8 +619,8 @@ class Printer {
     return {"-" + (m.prec == Prec::sum ? paren(m.text) : m.text), Prec::sum};
   }
 
-  [[nodiscard]] Piece sum(const ex& s, bool top) const {
-    const std::string mark = top && style_ != Style::latex ? std::string(1, kBreakMark) : "";
+  [[nodiscard]] Piece sum(const ex& s, bool /*top*/) const {
+    const std::string mark = style_ != Style::latex ? std::string(1, kBreakMark) : "";
     std::string out;
     for (const Product& item : sum_items(s)) {
       const Piece m = magnitude(item, false);
