@@ -4,6 +4,7 @@
 // that depend on t; and seeded random states of any of them.
 #include <cmath>
 #include <functional>
+#include <ostream>
 #include <random>
 #include <string>
 #include <utility>
@@ -209,6 +210,9 @@ struct Named {
   std::string name;
   std::function<Mechanism()> make;
 };
+
+/// How GoogleTest prints a Named parameter.
+inline void PrintTo(const Named& named, std::ostream* out) { *out << named.name; }
 
 /// A random state of `system`: with no loop, every generalized coordinate and rate drawn
 /// (angles in [-pi, pi], x in [0.2, 1], y in [-1, -0.2], s in [0.1, 0.6] m, rates in
