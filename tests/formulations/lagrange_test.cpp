@@ -75,7 +75,10 @@ std::vector<built::Named> tree_mechanisms() {
           {"driven_spring_pendulum", [] { return built::spring_pendulum(true); }},
           {"double_pendulum_loaded", built::double_pendulum_loaded},
           {"cart_pendulum", built::cart_pendulum},
-          {"floating_pair", built::floating_pair}};
+          {"arm_collar", built::arm_collar},
+          {"reversed_joints", built::reversed_joints},
+          {"floating_pair", built::floating_pair},
+          {"floating_collar", built::floating_collar}};
 }
 
 class Lagrange : public testing::TestWithParam<built::Named> {};

@@ -166,6 +166,50 @@ inline Mechanism cart_pendulum() {
   return m;
 }
 
+/// A rod turning about a ground pin, driven by a torque that varies with t, with a collar
+/// sliding along it on a spring-damper from the pivot: a slider whose axis turns.
+inline Mechanism arm_collar() {
+  Mechanism m;
+  m.name = "arm-collar";
+  m.gravity = q("g");
+  m.parameters = {{"L", 0.8, {}}, {"m", 0.6, {}}, {"mc", 0.25, {}}, {"r", 0.04, {}},
+                  {"k", 12, {}},  {"c", 0.3, {}}, {"g", 9.81, {}}};
+  m.ground_points = {{"O", {q("0"), q("0")}, {}}};
+  m.bodies = {rod("arm", "m", "L", {{"O", {"-L/2", "0"}}}), disc("collar", "mc", "r", {{"C", {"0", "0"}}})};
+  Joint slider;
+  slider.name = "sleeve";
+  slider.type = JointType::slider;
+  slider.bodies = {"arm", "collar"};
+  slider.points = {"O", "C"};
+  slider.axis = Vector2Quantity{q("1"), q("0")};
+  m.joints = {pin("O", "ground", "O", "arm", "O"), slider};
+  m.springs = {spring("k1", "arm.O", "collar.C", "k", "0.3", "c")};
+  m.torques = {{"arm", q("0.5*sin(t)"), {}}};
+  return m;
+}
+
+/// Every tree joint written child first (bodies = [child, parent]): a cart on a rail along
+/// (1, -0.5), a pole pinned to it and a point-mass bob pinned at the pole's tip.
+inline Mechanism reversed_joints() {
+  Mechanism m;
+  m.name = "reversed-joints";
+  m.gravity = q("g");
+  m.parameters = {{"M", 0.9, {}}, {"m", 0.2, {}}, {"mb", 0.35, {}}, {"l", 0.6, {}}, {"g", 9.81, {}}};
+  m.ground_points = {{"Q", {q("0.2"), q("0.1")}, {}}};
+  m.bodies = {rectangle("cart", "M", "0.3", "0.1", {{"C", {"0", "-0.05"}}, {"H", {"0.1", "0.05"}}}),
+              rod("pole", "m", "l", {{"H", {"-l/2", "0"}}, {"T", {"l/2", "0"}}}),
+              body("bob", Shape::point, "mb", {{"B", {"0", "0"}}})};
+  Joint slider;
+  slider.name = "rail";
+  slider.type = JointType::slider;
+  slider.bodies = {"cart", "ground"};
+  slider.points = {"C", "Q"};
+  slider.axis = Vector2Quantity{q("1"), q("-0.5")};
+  m.joints = {slider, pin("H", "pole", "H", "cart", "H"), pin("T", "bob", "B", "pole", "T")};
+  m.forces = {{"bob", "B", {q("0.4*t"), q("0")}, {}}};
+  return m;
+}
+
 /// Two bodies joined by a pin with a torsional spring-damper and a linear spring-damper
 /// between them, no gravity: nothing external, so p and H_O stay constant.
 inline Mechanism floating_pair() {
@@ -180,6 +224,17 @@ inline Mechanism floating_pair() {
   m.joints[0].damping = q("ct");
   m.joints[0].rest_angle = q("-0.4");
   m.springs = {spring("k1", "1.S", "2.S", "k", "0.3", "c")};
+  return m;
+}
+
+/// A free rod with a collar sliding along it on a spring-damper, no gravity: a floating
+/// base with a slider child.
+inline Mechanism floating_collar() {
+  Mechanism m = arm_collar();
+  m.name = "floating-collar";
+  m.gravity.reset();
+  m.joints.erase(m.joints.begin());  // the ground pin
+  m.torques.clear();
   return m;
 }
 
