@@ -85,8 +85,7 @@ SpanningTree spanning_tree(const Mechanism& mechanism) {
     const Joint& joint = mechanism.joints[static_cast<std::size_t>(node.joint)];
     if (joint.type == JointType::pin) {
       if (rotates) tree.coordinates.push_back({CoordinateKind::theta, index, -1, body.name + ".theta"});
-    }
-    else
+    } else
       tree.coordinates.push_back({CoordinateKind::s, index, node.joint, joint.name + ".s"});
   }
   return tree;

@@ -341,7 +341,10 @@ void System::add_loads() {
     if (joint.type != JointType::pin || (!joint.stiffness && !joint.damping)) continue;
     const int a = body_index(mechanism_, joint.bodies[0]);
     const int b = body_index(mechanism_, joint.bodies[1]);
-    auto angle = [&](int i) { return i < 0 ? ex(0) : ex(bodies_[static_cast<std::size_t>(i)].theta.q); };
+    auto angle = [&](int i) {
+      return i < 0 || !bodies_[static_cast<std::size_t>(i)].rotates ? ex(0)
+                                                                    : ex(bodies_[static_cast<std::size_t>(i)].theta.q);
+    };
     const ex relative = angle(b) - angle(a);
     const ex rest = joint.rest_angle ? quantity(*joint.rest_angle, false) : ex(0);
     ex torque = 0;

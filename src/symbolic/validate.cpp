@@ -71,6 +71,14 @@ void validate_quantities(const System& system) {
     if (j.stiffness) require_non_negative(system, *j.stiffness, "stiffness of joint " + j.name);
     if (j.damping) require_non_negative(system, *j.damping, "damping of joint " + j.name);
     if (j.rest_angle) (void)checked_value(system, *j.rest_angle, false, "rest angle of joint " + j.name);
+    if (j.stiffness || j.damping)
+      for (const std::string& body : j.bodies) {
+        const Body* b = m.find_body(body);
+        if (b != nullptr && !body_rotates(*b))
+          throw Error::input(where(j.pos) + "the torsional spring-damper of joint " + j.name +
+                             " acts on the point mass '" + body +
+                             "', which has no angle; valid: a pin between bodies with a shape or an inertia");
+      }
     if (j.type == JointType::slider) {
       const double ax = checked_value(system, j.axis->x, false, "axis x of joint " + j.name);
       const double ay = checked_value(system, j.axis->y, false, "axis y of joint " + j.name);
