@@ -10,7 +10,7 @@
 
 #include "formulations/case_numbers.hpp"
 #include "formulations/case_system.hpp"
-#include "formulations/mechanisms_in_code.hpp"
+#include "support/mechanisms_in_code.hpp"
 #include "model/kinematics.hpp"
 
 namespace linkage {
@@ -85,7 +85,9 @@ std::vector<built::Named> energy_mechanisms() {
           {"reversed_joints", built::reversed_joints},
           {"floating_pair", built::floating_pair},
           {"floating_collar", built::floating_collar},
-          {"four_bar_loaded", built::four_bar_loaded}};
+          {"four_bar_loaded", built::four_bar_loaded},
+          {"four_bar", built::four_bar},
+          {"slider_crank", built::slider_crank}};
 }
 
 INSTANTIATE_TEST_SUITE_P(Mechanisms, EnergyRate, testing::ValuesIn(energy_mechanisms()), param_name);

@@ -6,12 +6,12 @@
 #include "formulations/case_numbers.hpp"
 #include "formulations/case_system.hpp"
 #include "formulations/formulation.hpp"
-#include "support/test_mechanisms.hpp"
+#include "support/mechanisms_in_code.hpp"
 
 namespace linkage {
 namespace {
 
-using test::homework;
+using built::homework;
 
 TEST(GeneralCases, HomeworkMatchesTheClosedForm) {
   const sym::System system(homework());

@@ -4,15 +4,15 @@
 
 #include "formulations/case_numbers.hpp"
 #include "formulations/case_system.hpp"
-#include "support/test_mechanisms.hpp"
+#include "support/mechanisms_in_code.hpp"
 #include "symbolic/loop_closure.hpp"
 
 namespace linkage {
 namespace {
 
-using test::double_pendulum;
-using test::four_bar;
-using test::slider_crank;
+using built::double_pendulum;
+using built::four_bar;
+using built::slider_crank;
 
 void expect_cases_agree(const Mechanism& mechanism) {
   const sym::System system(mechanism);

@@ -13,7 +13,7 @@
 
 #include "formulations/case_numbers.hpp"
 #include "formulations/case_system.hpp"
-#include "formulations/mechanisms_in_code.hpp"
+#include "support/mechanisms_in_code.hpp"
 #include "symbolic/energy.hpp"
 
 namespace linkage {

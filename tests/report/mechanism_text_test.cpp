@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "support/test_mechanisms.hpp"
+#include "support/mechanisms_in_code.hpp"
 #include "support/test_support.hpp"
 
 namespace linkage {
@@ -28,7 +28,7 @@ ReportOptions ascii() {
 
 TEST(MechanismText, HomeworkCaseEquationsAsTheGolden) {
   const MechanismSolution s =
-      work_out_mechanism(test::homework(), {CaseId::maximal, CaseId::generalized, CaseId::reduced});
+      work_out_mechanism(built::homework(), {CaseId::maximal, CaseId::generalized, CaseId::reduced});
   const std::string text = mechanism_text(s, ascii());
   const std::string golden =
       test::read_text(std::filesystem::path(LINKAGE_SOURCE_DIR) / "tests" / "data" / "solve" / "example-all-ascii.txt");
@@ -48,7 +48,7 @@ TEST(MechanismText, HomeworkCaseEquationsAsTheGolden) {
 
 TEST(MechanismText, FourBarPrintsEveryPart) {
   const MechanismSolution s =
-      work_out_mechanism(test::four_bar(), {CaseId::maximal, CaseId::generalized, CaseId::reduced});
+      work_out_mechanism(built::four_bar(), {CaseId::maximal, CaseId::generalized, CaseId::reduced});
   const std::string text = mechanism_text(s, ascii());
   for (const char* part : {"Inputs and definitions", "Moments of inertia", "Joint B: pin", "(closes a loop)",
                            "Forces and moments on each body", "Newton-Euler equations", "Case 3: ", "The cases agree",

@@ -83,6 +83,41 @@ inline Mechanism homework() {
   return m;
 }
 
+/// A Grashof crank-rocker: crank 2, coupler 3 (twice as heavy), rocker 4; the pin B closes
+/// the loop. The initial angles are only near a closed position.
+inline Mechanism four_bar() {
+  Mechanism m;
+  m.gravity = q("g");
+  m.parameters = {{"a", 0.1, {}}, {"b", 0.35, {}}, {"c", 0.3, {}}, {"d", 0.3, {}}, {"m", 0.1, {}}, {"g", 9.81, {}}};
+  m.ground_points = {{"O2", {q("0"), q("0")}, {}}, {"O4", {q("d"), q("0")}, {}}};
+  m.bodies = {rod("2", "m", "a", {{"O", {"-a/2", "0"}}, {"A", {"a/2", "0"}}}),
+              rod("3", "2*m", "b", {{"A", {"-b/2", "0"}}, {"B", {"b/2", "0"}}}),
+              rod("4", "m", "c", {{"O", {"-c/2", "0"}}, {"B", {"c/2", "0"}}})};
+  m.joints = {pin("O2", "ground", "O2", "2", "O"), pin("A", "2", "A", "3", "A"), pin("O4", "ground", "O4", "4", "O"),
+              pin("B", "3", "B", "4", "B")};
+  m.initial = {{"2.theta", 1.0, {}}, {"3.theta", 0.3, {}}, {"4.theta", 1.6, {}}, {"2.theta_dot", 2.0, {}}};
+  m.independent = {"2.theta"};
+  return m;
+}
+
+/// Crank 2, connecting rod 3, piston 4 on the ground slider s along x; the pin B closes the loop.
+inline Mechanism slider_crank() {
+  Mechanism m;
+  m.gravity = q("g");
+  m.parameters = {{"r", 0.1, {}}, {"l", 0.35, {}}, {"m", 0.1, {}}, {"g", 9.81, {}}};
+  m.ground_points = {{"O", {q("0"), q("0")}, {}}, {"Q", {q("0"), q("0")}, {}}};
+  Body piston = rectangle("4", "m", "0.08", "0.05", {{"B", {"0", "0"}}});
+  m.bodies = {rod("2", "m", "r", {{"O", {"-r/2", "0"}}, {"A", {"r/2", "0"}}}),
+              rod("3", "m", "l", {{"A", {"-l/2", "0"}}, {"B", {"l/2", "0"}}}), piston};
+  Joint slider = pin("s", "ground", "Q", "4", "B");
+  slider.type = JointType::slider;
+  slider.axis = Vector2Quantity{q("1"), q("0")};
+  m.joints = {pin("O", "ground", "O", "2", "O"), slider, pin("A", "2", "A", "3", "A"), pin("B", "3", "B", "4", "B")};
+  m.initial = {{"2.theta", 0.8, {}}, {"3.theta", -0.2, {}}, {"s.s", 0.43, {}}, {"2.theta_dot", 3.0, {}}};
+  m.independent = {"2.theta"};
+  return m;
+}
+
 /// Two rods from a ground pin.
 inline Mechanism double_pendulum() {
   Mechanism m;
