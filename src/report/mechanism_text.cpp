@@ -86,6 +86,25 @@ class MechanismWriter {
     line(equals + result);
   }
 
+  [[nodiscard]] int body_index(const std::string& name) const {
+    const auto& bodies = system_.mechanism().bodies;
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+      if (bodies[i].name == name) return static_cast<int>(i);
+    return -1;
+  }
+
+  // " at the centre of mass" or " at P": where a load acts, by the body's named points.
+  [[nodiscard]] std::string at_point(std::size_t body, const sym::Load& load) const {
+    const sym::BodySystem& b = system_.bodies()[body];
+    const sym::Vec2 offset = load.point - sym::Vec2{b.x.q, b.y.q};
+    if (GiNaC::expand(offset.x).is_zero() && GiNaC::expand(offset.y).is_zero()) return " at the centre of mass";
+    for (const auto& [name, local] : b.points) {
+      const sym::Vec2 d = offset - sym::rotate(b.rotates ? GiNaC::ex(b.theta.q) : GiNaC::ex(0), local);
+      if (GiNaC::expand(d.x).is_zero() && GiNaC::expand(d.y).is_zero()) return concat({" at ", name});
+    }
+    return "";
+  }
+
   [[nodiscard]] std::string body_label(int body) const {
     if (body < 0) return "the ground";
     const Body& b = system_.mechanism().bodies[static_cast<std::size_t>(body)];
@@ -161,14 +180,24 @@ class MechanismWriter {
       line(concat({"  Joint ", joint.name, ": ", kJointTypeNames[static_cast<std::size_t>(joint.type)], " between ",
                    joint.bodies[0], ".", joint.points[0], " and ", joint.bodies[1], ".", joint.points[1],
                    js.in_tree ? " (spanning tree)" : " (closes a loop)"}));
-      const char* levels[] = {"position    ", "velocity    ", "acceleration"};
-      for (const GiNaC::ex& phi : js.constraints) {
-        GiNaC::ex form = phi;
-        for (int level = 0; level < 3; ++level) {
-          lines(wrap(std::string("    ") + levels[level] + "  ", marked(GiNaC::expand(form)) + kBreakMark + " = 0",
-                     std::string(20, ' '), o_.width));
-          form = system_.time_derivative(form);
+      std::vector<const sym::SymbolInfo*> accelerations;
+      std::vector<GiNaC::symbol> acceleration_symbols;
+      for (const sym::SymbolInfo& info : system_.table().all())
+        if (info.role == sym::Role::acceleration && !info.key.ends_with(".s_ddot")) {
+          accelerations.push_back(&info);
+          acceleration_symbols.push_back(info.symbol);
         }
+      for (const GiNaC::ex& phi : js.constraints) {
+        lines(wrap("    position      ", concat({marked(GiNaC::expand(phi)), std::string(1, kBreakMark), " = 0"}),
+                   std::string(20, ' '), o_.width));
+        const GiNaC::ex rate = system_.time_derivative(phi);
+        lines(wrap("    velocity      ", concat({marked(GiNaC::expand(rate)), std::string(1, kBreakMark), " = 0"}),
+                   std::string(20, ' '), o_.width));
+        // The acceleration level as Case 1 writes it: the accelerations on the left.
+        const CaseSystem row = linear_system(CaseId::maximal, {system_.time_derivative(rate)}, acceleration_symbols);
+        const EquationSides eq = equation_sides(row.A[0], row.B[0], accelerations, system_.table(), style_);
+        lines(wrap("    acceleration  ", concat({eq.lhs, std::string(1, kBreakMark), " = ", eq.rhs}),
+                   std::string(20, ' '), o_.width));
       }
     }
   }
@@ -192,15 +221,16 @@ class MechanismWriter {
         std::string text = concat(
             {"    (", math(sign * js.force.x), ", ", math(sign * js.force.y), ") at ", joint.points[first ? 0 : 1]});
         if (!js.moment.is_zero()) text += concat({", moment ", math(sign * js.moment)});
-        line(concat({text, "  (", joint.name, ", from ", first ? joint.bodies[1] : joint.bodies[0], ")"}));
+        line(concat({text, ": ", kJointTypeNames[static_cast<std::size_t>(joint.type)], " ", joint.name, ", from ",
+                     body_label(body_index(first ? joint.bodies[1] : joint.bodies[0]))}));
       }
       for (const sym::Load& load : system_.loads()) {
         if (load.body != static_cast<int>(b)) continue;
         std::string text = "    ";
         if (!(load.force.x.is_zero() && load.force.y.is_zero()))
-          text += concat({"(", math(load.force.x), ", ", math(load.force.y), ")"});
+          text += concat({"(", math(load.force.x), ", ", math(load.force.y), ")", at_point(b, load)});
         if (!load.moment.is_zero()) text += concat({text.size() > 4 ? ", moment " : "moment ", math(load.moment)});
-        line(concat({text, "  (", load.source, ")"}));
+        line(concat({text, ": ", load.source}));
       }
     }
   }
