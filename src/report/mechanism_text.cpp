@@ -5,6 +5,7 @@
 #include "report/expression_print.hpp"
 #include "report/notation.hpp"
 #include "report/text_layout.hpp"
+#include "symbolic/energy.hpp"
 #include "symbolic/joints.hpp"
 
 namespace linkage {
@@ -25,8 +26,9 @@ class MechanismWriter {
     }
     if (o_.shows(ReportPart::inputs)) inputs();
     if (o_.shows(ReportPart::inertia)) inertia();
+    if (o_.shows(ReportPart::constraints)) constraints();
+    if (o_.shows(ReportPart::energy)) energy();
     if (o_.shows(ReportPart::constraints)) {
-      constraints();
       forces();
       newton_euler();
     }
@@ -60,8 +62,9 @@ class MechanismWriter {
   [[nodiscard]] std::string number(double value) const { return format_number(value, style_, o_.digits); }
   [[nodiscard]] std::string unit(std::string_view ascii) const { return unit_text(ascii, style_); }
   [[nodiscard]] double value(const GiNaC::ex& e) const { return value_at(e, s_.values); }
-  [[nodiscard]] std::string substituted(const GiNaC::ex& e) const {
-    return strip_marks(print_substituted(e, system_.table(), style_, [&](const sym::SymbolInfo& info) {
+  [[nodiscard]] std::string substituted(const GiNaC::ex& e) const { return strip_marks(substituted_marked(e)); }
+  [[nodiscard]] std::string substituted_marked(const GiNaC::ex& e) const {
+    return (print_substituted(e, system_.table(), style_, [&](const sym::SymbolInfo& info) {
       const double v = value(info.symbol);
       return format_number(v, style_, info.role == sym::Role::parameter ? 0 : o_.digits);
     }));
@@ -82,7 +85,8 @@ class MechanismWriter {
     }
     const std::string equals = std::string(display_width(lhs) + 2, ' ') + " = ";
     lines(wrap(concat({"  ", lhs, " = "}), marked(formula), std::string(display_width(equals) + 2, ' '), o_.width));
-    if (numbers != symbolic) line(equals + numbers);
+    if (numbers != symbolic)
+      lines(wrap(equals, substituted_marked(formula), std::string(display_width(equals) + 2, ' '), o_.width));
     line(equals + result);
   }
 
@@ -200,6 +204,42 @@ class MechanismWriter {
                    std::string(20, ' '), o_.width));
       }
     }
+  }
+
+  // Whether anything fixes the mechanism in the world: a joint or spring to the ground, or
+  // an applied force or torque.
+  [[nodiscard]] bool touches_ground() const {
+    const Mechanism& m = system_.mechanism();
+    for (const Joint& j : m.joints)
+      if (j.bodies[0] == kGround || j.bodies[1] == kGround) return true;
+    for (const Spring& sp : m.springs)
+      if (sp.between[0].body == kGround || sp.between[1].body == kGround) return true;
+    return !m.forces.empty() || !m.torques.empty();
+  }
+
+  void energy() {
+    heading("Energy and momentum", '-');
+    const GiNaC::ex power = sym::nonconservative_power(system_);
+    std::string note = power.is_zero()
+                           ? "Only conservative forces work on the mechanism: its energy E = T + V stays constant."
+                           : "The dampers and applied loads work at the rate P; E = T + V changes at that rate.";
+    if (!touches_ground())
+      note +=
+          " Nothing touches the ground: the horizontal momentum stays constant and the vertical one changes at "
+          "the rate of gravity.";
+    prose(note);
+    blank();
+    const GiNaC::ex T = sym::kinetic_energy(system_);
+    const GiNaC::ex V = sym::potential_energy(system_);
+    const sym::Vec2 p = sym::linear_momentum(system_);
+    const bool uni = style_ == Style::unicode;
+    step("T", T, "J");
+    step("V", V, "J");
+    line(concat({"  E = T + V = ", number(value(T) + value(V)), " J"}));
+    if (!power.is_zero()) step("P", power, "W");
+    step(uni ? "p_x" : "p_x", p.x, "kg m/s");
+    step(uni ? "p_y" : "p_y", p.y, "kg m/s");
+    step(uni ? "H_O" : "H_O", sym::angular_momentum(system_), "kg m^2/s");
   }
 
   void forces() {
