@@ -227,26 +227,36 @@ class Builder {
     return *acc;
   }
 
-  // coefficient * (numerator factors) / (denominator factors), the coefficient last so
-  // that 2 m D and m D share m D.
+  // coefficient * (numerator factors) / (denominator factors). Factors multiply in the
+  // order they were first computed, so products of the same early factors (parameters,
+  // m D) share their prefix; the coefficient comes last, so 2 m D and -m D share m D, and
+  // a negative one is a negative constant, not a negation.
   Index product(const GiNaC::ex& e) {
-    if (has_negative_coefficient(e)) return emit(Op::neg, value(-e));
     GiNaC::numeric coefficient = 1;
-    std::optional<Index> numerator, denominator;
+    std::vector<Index> numerator, denominator;
     for (std::size_t k = 0; k < e.nops(); ++k) {
       const GiNaC::ex f = e.op(k);
       if (GiNaC::is_a<GiNaC::numeric>(f)) {
         coefficient *= GiNaC::ex_to<GiNaC::numeric>(f);
       } else if (GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<GiNaC::numeric>(f.op(1)) &&
                  GiNaC::ex_to<GiNaC::numeric>(f.op(1)).is_negative()) {
-        denominator = accumulate(Op::mul, denominator, power(f.op(0), -f.op(1)));
+        denominator.push_back(power(f.op(0), -f.op(1)));
       } else {
-        numerator = accumulate(Op::mul, numerator, value(f));
+        numerator.push_back(value(f));
       }
     }
-    if (!numerator) return emit(Op::div, number(coefficient, e), *denominator);
-    const Index result = denominator ? emit(Op::div, *numerator, *denominator) : *numerator;
-    return coefficient != 1 ? emit(Op::mul, result, number(coefficient, e)) : result;
+    const auto chain = [this](std::vector<Index>& factors) {
+      std::sort(factors.begin(), factors.end());
+      std::optional<Index> acc;
+      for (const Index f : factors) acc = accumulate(Op::mul, acc, f);
+      return *acc;
+    };
+    if (numerator.empty()) return emit(Op::div, number(coefficient, e), chain(denominator));
+    Index result = chain(numerator);
+    if (!denominator.empty()) result = emit(Op::div, result, chain(denominator));
+    if (coefficient == 1) return result;
+    if (coefficient == -1) return emit(Op::neg, result);
+    return emit(Op::mul, result, number(coefficient, e));
   }
 
   Index power(const GiNaC::ex& base, const GiNaC::ex& exponent) {

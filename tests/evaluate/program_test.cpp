@@ -258,6 +258,24 @@ TEST(Program, CommonFactorsAndSignsShareTheirProduct) {
   EXPECT_EQ(p.instruction_count(), 3u) << p.dump();
   EXPECT_EQ(count(p, Op::neg), 0u);
   EXPECT_EQ(run(p, {3.0, 5.0}), (std::vector<double>{15.0, 30.0, -14.0}));
+  // A negative coefficient is a negative constant.
+  const Program scaled = compile_in({x * y, -2 * x * y}, {x, y});
+  EXPECT_EQ(scaled.instruction_count(), 2u) << scaled.dump();
+  EXPECT_EQ(count(scaled, Op::neg), 0u);
+  EXPECT_EQ(run(scaled, {3.0, 5.0}), (std::vector<double>{15.0, -30.0}));
+}
+
+TEST(Program, ProductsOverTheSameEarlyFactorsShareThem) {
+  const symbol m("m"), d("d"), g("g"), t("t");
+  // m d once, whatever order GiNaC keeps the factors in.
+  const Program p =
+      compile_in({m * d * GiNaC::sin(t), -m * d * GiNaC::cos(t), m * d * g * GiNaC::cos(t)}, {m, d, g, t});
+  // sincos, m d, (m d) sin, (m d) cos, its negation, (m d) g, (m d g) cos
+  EXPECT_EQ(p.instruction_count(), 7u) << p.dump();
+  const std::vector<double> v = run(p, {2.0, 3.0, 5.0, 0.5});
+  EXPECT_DOUBLE_EQ(v[0], 6.0 * std::sin(0.5));
+  EXPECT_DOUBLE_EQ(v[1], -6.0 * std::cos(0.5));
+  EXPECT_DOUBLE_EQ(v[2], 30.0 * std::cos(0.5));
 }
 
 TEST(Program, SinAndCosOfOneArgumentShareOneSincos) {
