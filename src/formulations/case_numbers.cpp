@@ -54,15 +54,22 @@ std::optional<double> case_value(const CaseSystem& c, const CaseNumbers& numbers
 CaseNumbers solve_numbers(const CaseSystem& c, const GiNaC::exmap& values) {
   const auto rows = static_cast<Eigen::Index>(c.A.size());
   const auto cols = static_cast<Eigen::Index>(c.unknowns.size());
-  CaseNumbers out;
-  out.A.resize(rows, cols);
-  out.B.resize(rows);
+  Eigen::MatrixXd A(rows, cols);
+  Eigen::VectorXd B(rows);
   for (Eigen::Index i = 0; i < rows; ++i) {
     for (Eigen::Index j = 0; j < cols; ++j)
-      out.A(i, j) = value_at(c.A[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)], values);
-    out.B(i) = value_at(c.B[static_cast<std::size_t>(i)], values);
+      A(i, j) = value_at(c.A[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)], values);
+    B(i) = value_at(c.B[static_cast<std::size_t>(i)], values);
   }
-  const std::string name = "the Case " + std::to_string(case_number(c.id)) + " matrix";
+  return solve_matrices(c.id, std::move(A), std::move(B));
+}
+
+CaseNumbers solve_matrices(CaseId id, Eigen::MatrixXd A, Eigen::VectorXd B) {
+  CaseNumbers out;
+  out.A = std::move(A);
+  out.B = std::move(B);
+  const Eigen::Index rows = out.A.rows(), cols = out.A.cols();
+  const std::string name = "the Case " + std::to_string(case_number(id)) + " matrix";
   if (!out.A.allFinite() || !out.B.allFinite())
     throw Error::input(name +
                        " has an entry that is not finite at this state: a parameter or the state makes a "
@@ -72,10 +79,11 @@ CaseNumbers solve_numbers(const CaseSystem& c, const GiNaC::exmap& values) {
   const double smallest = sigma.size() > 0 ? sigma[sigma.size() - 1] : 0;
   out.condition = smallest > 0 ? sigma[0] / smallest : std::numeric_limits<double>::infinity();
   if (rows != cols || !(smallest > sigma[0] * 64 * std::numeric_limits<double>::epsilon()))
-    throw Error::diverged(
+    throw Error::input(
         name + " is singular at this state (condition number " +
         (std::isfinite(out.condition) ? format_significant(out.condition, 3) : std::string("infinite")) +
-        "): the mechanism is at a dead point or change point, or a constraint is redundant");
+        "): the mechanism is at a dead point or change point, or a constraint is redundant; valid: a state where "
+        "the links are not aligned");
   out.solution = out.A.fullPivLu().solve(out.B);
   out.residual = (out.A * out.solution - out.B).norm();
   return out;

@@ -27,6 +27,9 @@ struct CaseNumbers {
 /// when A is singular to working precision, and Error::input when an entry is not finite.
 [[nodiscard]] CaseNumbers solve_numbers(const CaseSystem& c, const GiNaC::exmap& values);
 
+/// Solves numeric A and B of case `id`, with the same checks.
+[[nodiscard]] CaseNumbers solve_matrices(CaseId id, Eigen::MatrixXd A, Eigen::VectorXd B);
+
 /// The value of `u` (an acceleration or joint force symbol) in a solved case: from the
 /// solution, or from the case's recovered expressions; nullopt when the case has neither.
 /// `recovered` says which.

@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "evaluate/case_evaluator.hpp"
 #include "report/json_report.hpp"
 #include "symbolic/loop_closure.hpp"
 #include "symbolic/validate.hpp"
@@ -31,7 +32,12 @@ MechanismSolution work_out_mechanism(const Mechanism& mechanism, const std::vect
   out.values = state_values(system, out.state, 0);
   for (CaseId id : cases) {
     SolvedCase solved{derive_case(system, id), {}};
-    solved.numbers = solve_numbers(solved.system, out.values);
+    // The numbers from the case's own expressions, compiled.
+    const eval::CaseEvaluator evaluator(system, solved.system);
+    Eigen::MatrixXd A;
+    Eigen::VectorXd B;
+    evaluator.evaluate(evaluator.inputs(out.values), A, B);
+    solved.numbers = solve_matrices(id, std::move(A), std::move(B));
     out.cases.push_back(std::move(solved));
   }
   if (out.cases.size() >= 2) {
