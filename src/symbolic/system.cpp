@@ -1,6 +1,8 @@
 #include "symbolic/system.hpp"
 
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <sstream>
 
 #include "core/error.hpp"
@@ -45,6 +47,61 @@ double to_double(const ex& e) {
 }
 
 namespace {
+
+constexpr std::size_t kMaxExpressionLength = 500;
+constexpr int kMaxExponent = 12;
+
+// The functions a mechanism file may use, from GiNaC's reader.
+const GiNaC::prototype_table& allowed_functions() {
+  static const GiNaC::prototype_table table = [] {
+    GiNaC::prototype_table out;
+    for (const auto& [prototype, reader] : GiNaC::get_default_reader())
+      for (const char* name : {"sin", "cos", "tan", "sqrt", "exp"})
+        if (prototype.first == name && prototype.second == 1) out[prototype] = reader;
+    return out;
+  }();
+  return table;
+}
+
+// An exponent is a number of at most kMaxExponent, a name, or a parenthesized group
+// without powers: GiNaC computes numeric powers as it reads, so 9^9^9 must not get there.
+void check_exponents(const Quantity& q) {
+  const std::string& text = q.text;
+  auto refuse = [&] {
+    throw Error::input(where(q.pos) + "the power in \"" + text + "\" is too high or nested; valid: exponents " +
+                       "from -" + std::to_string(kMaxExponent) + " to " + std::to_string(kMaxExponent) +
+                       ", a name, or a group without ^");
+  };
+  for (std::size_t i = text.find('^'); i != std::string::npos; i = text.find('^', i + 1)) {
+    std::size_t k = i + 1;
+    while (k < text.size() && (text[k] == ' ' || text[k] == '-' || text[k] == '+')) ++k;
+    if (k >= text.size()) return;  // the parser reports it
+    if (text[k] == '(') {
+      int depth = 0;
+      std::size_t j = k;
+      for (; j < text.size(); ++j) {
+        if (text[j] == '(') ++depth;
+        if (text[j] == ')' && --depth == 0) break;
+        if (text[j] == '^') refuse();
+      }
+      ++j;
+      while (j < text.size() && text[j] == ' ') ++j;
+      if (j < text.size() && text[j] == '^') refuse();
+    } else if (std::isdigit(static_cast<unsigned char>(text[k])) != 0 || text[k] == '.') {
+      std::size_t end = k;
+      while (end < text.size() && (std::isalnum(static_cast<unsigned char>(text[end])) != 0 || text[end] == '.')) ++end;
+      const double value = std::strtod(text.substr(k, end - k).c_str(), nullptr);
+      if (!(value <= kMaxExponent)) refuse();
+      while (end < text.size() && text[end] == ' ') ++end;
+      if (end < text.size() && text[end] == '^') refuse();  // a tower: a^b^c
+    } else {
+      std::size_t end = k;
+      while (end < text.size() && (std::isalnum(static_cast<unsigned char>(text[end])) != 0 || text[end] == '_')) ++end;
+      while (end < text.size() && text[end] == ' ') ++end;
+      if (end < text.size() && text[end] == '^') refuse();
+    }
+  }
+}
 
 // The noun a report uses for a body of this shape: "block 1", "rod 2".
 std::string shape_noun(Shape shape) {
@@ -105,10 +162,14 @@ System::System(const Mechanism& mechanism) : mechanism_(mechanism), tree_(spanni
 ex System::quantity(const Quantity& q, bool time_allowed) const {
   GiNaC::symtab names = names_;
   if (time_allowed) names["t"] = t_;
-  GiNaC::parser reader(names);
-  reader.strict = true;
+  GiNaC::parser reader(names, true, allowed_functions());
+  if (q.text.size() > kMaxExpressionLength)
+    throw Error::input(where(q.pos) + "the expression is " + std::to_string(q.text.size()) +
+                       " characters long; valid: at most " + std::to_string(kMaxExpressionLength));
+  check_exponents(q);
+  ex parsed;
   try {
-    return reader(q.text);
+    parsed = reader(q.text);
   } catch (const std::exception& e) {
     const std::string message = e.what();
     const std::string name = missing_symbol(message);
@@ -118,9 +179,21 @@ ex System::quantity(const Quantity& q, bool time_allowed) const {
     if (message.find("division by zero") != std::string::npos)
       throw Error::input(where(q.pos) + "the expression \"" + q.text +
                          "\" divides by zero; valid: an expression finite at the given values");
+    if (message.find("no function") != std::string::npos || message.find("unknown function") != std::string::npos)
+      throw Error::input(where(q.pos) + "unknown function in \"" + q.text + "\"; valid: sin, cos, tan, sqrt, exp");
     throw Error::input(where(q.pos) + "cannot read the expression \"" + q.text +
                        "\"; write numbers, names, + - * / ^, parentheses, sin cos tan sqrt exp, pi");
   }
+  // Powers with a large whole exponent would make the equations explode when expanded.
+  for (auto it = parsed.preorder_begin(); it != parsed.preorder_end(); ++it)
+    if (GiNaC::is_a<GiNaC::power>(*it) && GiNaC::is_a<GiNaC::numeric>(it->op(1)) &&
+        !GiNaC::is_a<GiNaC::numeric>(it->op(0))) {
+      const auto& exponent = GiNaC::ex_to<GiNaC::numeric>(it->op(1));
+      if (!exponent.is_real() || GiNaC::abs(exponent) > kMaxExponent)
+        throw Error::input(where(q.pos) + "the power in \"" + q.text + "\" is too high; valid: exponents from -" +
+                           std::to_string(kMaxExponent) + " to " + std::to_string(kMaxExponent));
+    }
+  return parsed;
 }
 
 void System::add_parameters() {

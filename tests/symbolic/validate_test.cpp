@@ -102,3 +102,23 @@ TEST(Validate, ASliderOnAPointMassIsRefused) {
 
 }  // namespace
 }  // namespace linkage
+
+namespace linkage {
+namespace {
+
+TEST(Validate, ExpressionsThatWouldExplodeOrAreUnknownAreRefused) {
+  EXPECT_NE(error_of(pendulum("m", "L*9^9^9")).find("m.toml:8:9: the power in \"L*9^9^9\" is too high or nested"),
+            std::string::npos);
+  EXPECT_NE(error_of(pendulum("m", "L^100")).find("is too high"), std::string::npos);
+  EXPECT_NE(error_of(pendulum("m", "L*(9)^(9)^(9)")).find("is too high or nested"), std::string::npos);
+  EXPECT_NE(error_of(pendulum("m", "(L+1)^(2^9)")).find("is too high or nested"), std::string::npos);
+  EXPECT_NE(error_of(pendulum("m", std::string(600, '1'))).find("characters long; valid: at most 500"),
+            std::string::npos);
+  const std::string unknown = error_of(pendulum("m", "L*tgamma(2)"));
+  EXPECT_NE(unknown.find("m.toml:8:9: "), std::string::npos) << unknown;
+  EXPECT_NE(unknown.find("valid: sin, cos, tan, sqrt, exp"), std::string::npos) << unknown;
+  EXPECT_EQ(error_of(pendulum("m", "L^2/L + 0*sqrt(L)")), "");
+}
+
+}  // namespace
+}  // namespace linkage
