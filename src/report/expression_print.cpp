@@ -448,11 +448,27 @@ class Printer {
   }
 
   // A non-negative number: an integer, or a float in shortest round-trip form.
+  // A decimal the mechanism file wrote (0.3 is read exactly as 3/10) prints as one: a
+  // fraction whose denominator is a multiple of 5 made of 2s and 5s only. The structural
+  // fractions of the derivation (1/2, 1/12, 5/16) stay fractions.
+  [[nodiscard]] static bool decimal(const numeric& n) {
+    if (!n.is_rational() || n.is_integer()) return false;
+    numeric q = n.denom();
+    if (!GiNaC::irem(q, numeric(5)).is_zero()) return false;
+    while (GiNaC::irem(q, numeric(2)).is_zero()) q = q / 2;
+    while (GiNaC::irem(q, numeric(5)).is_zero()) q = q / 5;
+    return q.is_equal(numeric(1)) && abs(n.numer()) < numeric(1000000000);
+  }
+
   [[nodiscard]] Piece number(const numeric& n) const {
     if (n.is_integer()) {
       std::ostringstream out;
       out << n;
       return {out.str(), Prec::atom};
+    }
+    if (decimal(n)) {
+      const std::string text = format_number(n.to_double(), style_, 0);
+      return {text, text.find(' ') == std::string::npos ? Prec::atom : Prec::product};
     }
     if (n.is_rational()) {
       Piece p = number(n.numer());
@@ -560,7 +576,7 @@ class Printer {
   [[nodiscard]] Fraction fraction(Product p) const {
     Fraction f;
     const numeric magnitude = abs(p.coefficient);
-    if (magnitude.is_rational()) {
+    if (magnitude.is_rational() && !decimal(magnitude)) {
       if (!magnitude.numer().is_equal(numeric(1))) f.numerator.push_back(number(magnitude.numer()));
       if (!magnitude.denom().is_equal(numeric(1))) f.denominator.push_back(number(magnitude.denom()));
     } else if (!magnitude.is_equal(numeric(1))) {

@@ -103,6 +103,57 @@ void check_exponents(const Quantity& q) {
   }
 }
 
+// Decimal literals as exact fractions ("0.08" -> "(8/100)", "1.5e-3" -> "(15/10000)"), so
+// expanding never leaves a float residue whose size depends on GiNaC's term order.
+std::string exact_decimals(const std::string& text) {
+  std::string out;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const bool starts_number =
+        (std::isdigit(static_cast<unsigned char>(text[i])) != 0 ||
+         (text[i] == '.' && i + 1 < text.size() && std::isdigit(static_cast<unsigned char>(text[i + 1])) != 0)) &&
+        (i == 0 ||
+         (std::isalnum(static_cast<unsigned char>(text[i - 1])) == 0 && text[i - 1] != '_' && text[i - 1] != '.'));
+    if (!starts_number) {
+      out += text[i++];
+      continue;
+    }
+    std::string digits;
+    long scale = 0;  // value = digits * 10^-scale
+    bool point = false;
+    while (i < text.size() && (std::isdigit(static_cast<unsigned char>(text[i])) != 0 || (text[i] == '.' && !point))) {
+      if (text[i] == '.') {
+        point = true;
+      } else {
+        digits += text[i];
+        if (point) ++scale;
+      }
+      ++i;
+    }
+    if (i + 1 < text.size() && (text[i] == 'e' || text[i] == 'E') &&
+        (std::isdigit(static_cast<unsigned char>(text[i + 1])) != 0 ||
+         ((text[i + 1] == '-' || text[i + 1] == '+') && i + 2 < text.size() &&
+          std::isdigit(static_cast<unsigned char>(text[i + 2])) != 0))) {
+      std::size_t end = i + 1;
+      if (text[end] == '-' || text[end] == '+') ++end;
+      while (end < text.size() && std::isdigit(static_cast<unsigned char>(text[end])) != 0) ++end;
+      const long exponent = std::strtol(text.substr(i + 1, end - i - 1).c_str(), nullptr, 10);
+      if (exponent > 300 || exponent < -300) return text;  // left to the parser and the range checks
+      scale -= exponent;
+      i = end;
+    }
+    if (digits.empty()) digits = "0";
+    if (scale == 0) {
+      out += digits;
+    } else if (scale > 0) {
+      out += "(" + digits + "/1" + std::string(static_cast<std::size_t>(scale), '0') + ")";
+    } else {
+      out += "(" + digits + std::string(static_cast<std::size_t>(-scale), '0') + ")";
+    }
+  }
+  return out;
+}
+
 // The noun a report uses for a body of this shape: "block 1", "rod 2".
 std::string shape_noun(Shape shape) {
   switch (shape) {
@@ -169,7 +220,7 @@ ex System::quantity(const Quantity& q, bool time_allowed) const {
   check_exponents(q);
   ex parsed;
   try {
-    parsed = reader(q.text);
+    parsed = reader(exact_decimals(q.text));
   } catch (const std::exception& e) {
     const std::string message = e.what();
     const std::string name = missing_symbol(message);

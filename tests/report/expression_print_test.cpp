@@ -631,3 +631,20 @@ TEST(ExpressionPrint, RandomExpressionsPrintTheirValueWhateverGinacOrder) {
 
 }  // namespace
 }  // namespace linkage
+
+namespace linkage {
+namespace {
+
+TEST(ExpressionPrint, DecimalsFromTheFileStayDecimalsStructuralFractionsStayFractions) {
+  sym::SymbolTable table;
+  const GiNaC::symbol L = table.add({GiNaC::symbol("L"), sym::Role::parameter, "L", "L", "L", "L", "m", ""}).symbol;
+  using GiNaC::numeric;
+  EXPECT_EQ(print(numeric(3, 10) * L, table, Style::unicode), "0.3 L");
+  EXPECT_EQ(strip_marks(print(numeric(2, 25) + L, table, Style::unicode)), "L + 0.08");
+  EXPECT_EQ(print(numeric(1, 2) * L, table, Style::unicode), "L / 2");
+  EXPECT_EQ(print(numeric(5, 16) * L, table, Style::unicode), "5 L / 16");
+  EXPECT_EQ(print(numeric(1, 12) * L, table, Style::latex), "\\frac{L}{12}");
+}
+
+}  // namespace
+}  // namespace linkage
