@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <memory>
 #include <set>
 #include <sstream>
 #include <stdexcept>
 
 #include "core/number_format.hpp"
 #include "report/code_printer.hpp"
+#include "report/exact_decimals.hpp"
 
 namespace linkage {
 
@@ -53,9 +55,13 @@ struct GlossaryLine {
   std::string identifier, key, meaning;
 };
 
-// Everything both languages write, named once.
+// Everything both languages write, named once. The cases are derived again from the
+// mechanism with its decimals exact (exact_decimals.hpp), so the code is the same in
+// every run; their values agree with the solved cases to rounding.
 struct Plan {
   const MechanismSolution* solution = nullptr;
+  std::shared_ptr<const sym::System> system;
+  std::vector<CaseSystem> cases;
   std::string stem;
   Names names;
   std::vector<std::pair<std::string, double>> parameters;
@@ -78,10 +84,12 @@ double finite(double value, const std::string& what) {
 }
 
 Plan make_plan(const MechanismSolution& s, CodeLanguage language) {
-  const sym::System& system = *s.system;
-  const sym::SymbolTable& table = system.table();
   Plan plan;
   plan.solution = &s;
+  plan.system = std::make_shared<const sym::System>(with_exact_decimals(s.system->mechanism()));
+  const sym::System& system = *plan.system;
+  const sym::SymbolTable& table = system.table();
+  for (const SolvedCase& c : s.cases) plan.cases.push_back(derive_case(system, c.system.id));
   plan.stem = export_stem(s);
   std::set<std::string> taken = reserved(language);
   taken.insert(plan.stem);
@@ -109,11 +117,13 @@ Plan make_plan(const MechanismSolution& s, CodeLanguage language) {
     const std::string& id = plan.names.at(b.inertia);
     if (inertias.insert(id).second) plan.constants.push_back({id, b.inertia_formula});
   }
-  for (const sym::GeneralizedCoordinate& g : system.coordinates()) {
+  for (std::size_t k = 0; k < system.coordinates().size(); ++k) {
+    const sym::GeneralizedCoordinate& g = system.coordinates()[k];
+    const sym::CoordinateSymbols& solved = s.system->coordinates()[k].symbols;  // the same coordinate
     plan.q.push_back(plan.names.at(g.symbols.q));
     plan.qd.push_back(plan.names.at(g.symbols.q_dot));
-    plan.q0.push_back(finite(sym::to_double(s.state.at(g.symbols.q)), g.coordinate.key));
-    plan.qd0.push_back(finite(sym::to_double(s.state.at(g.symbols.q_dot)), g.coordinate.key + "_dot"));
+    plan.q0.push_back(finite(sym::to_double(s.state.at(solved.q)), g.coordinate.key));
+    plan.qd0.push_back(finite(sym::to_double(s.state.at(solved.q_dot)), g.coordinate.key + "_dot"));
   }
   for (const sym::Role role : {sym::Role::coordinate, sym::Role::rate})
     for (const sym::SymbolInfo& info : table.all()) {
@@ -163,8 +173,7 @@ std::string joined(const std::vector<std::string>& parts, const std::string& sep
 
 // The header both languages share, each line after `comment`.
 void write_header(std::ostream& out, const Plan& plan, const std::string& comment, const std::string& usage) {
-  const sym::System& system = *plan.solution->system;
-  const Mechanism& m = system.mechanism();
+  const Mechanism& m = plan.solution->system->mechanism();
   auto line = [&](const std::string& text) { out << comment << (text.empty() ? "" : " " + text) << '\n'; };
   line("The equations of motion of the mechanism " + (m.name.empty() ? std::string("built in code") : m.name) +
        ", each solved case as A u = B,");
@@ -339,7 +348,7 @@ std::string export_stem(const MechanismSolution& s) {
 
 std::string matlab_export(const MechanismSolution& s) {
   const Plan plan = make_plan(s, CodeLanguage::matlab);
-  const CodePrinter print(CodeLanguage::matlab, s.system->table(), plan.names);
+  const CodePrinter print(CodeLanguage::matlab, plan.system->table(), plan.names);
   std::string upper = plan.stem;
   for (char& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
 
@@ -355,14 +364,14 @@ std::string matlab_export(const MechanismSolution& s) {
         << "%       gives its functions, for any parameters and state:\n"
         << "%   p = model.parameters();                the file's parameters (a struct; change any field)\n"
         << "%   [q, qd] = model.state();               the file's generalized coordinates and rates\n";
-  for (const SolvedCase& c : s.cases)
-    usage << "%   [A, B, u] = model.case" << case_number(c.system.id) << "(p, q, qd, t);  Case "
-          << case_number(c.system.id) << " at time t, u = A \\ B\n";
+  for (const CaseSystem& c : plan.cases)
+    usage << "%   [A, B, u] = model.case" << case_number(c.id) << "(p, q, qd, t);  Case " << case_number(c.id)
+          << " at time t, u = A \\ B\n";
   usage << "%   model.demo(p, q, qd, t);               prints every case there\n";
   write_header(out, plan, "%", usage.str());
   out << "model.parameters = @parameters;\nmodel.state = @state;\n";
-  for (const SolvedCase& c : s.cases)
-    out << "model.case" << case_number(c.system.id) << " = @case" << case_number(c.system.id) << ";\n";
+  for (const CaseSystem& c : plan.cases)
+    out << "model.case" << case_number(c.id) << " = @case" << case_number(c.id) << ";\n";
   out << "model.demo = @demo;\n";
   out << "if nargout > 0\n  varargout{1} = model;\nelse\n  demo();\nend\nend\n";
 
@@ -373,18 +382,18 @@ std::string matlab_export(const MechanismSolution& s) {
   out << "\nfunction [q, qd] = state()\n% The file's generalized coordinates and rates.\n";
   out << "q = " << matlab_vector(plan.q0) << ";\n";
   out << "qd = " << matlab_vector(plan.qd0) << ";\nend\n";
-  for (const SolvedCase& c : s.cases) matlab_case(out, plan, c.system, print);
+  for (const CaseSystem& c : plan.cases) matlab_case(out, plan, c, print);
 
   out << "\nfunction demo(p, q, qd, t)\n"
       << "% Prints every case at a state: by default the file's, at t = 0.\n"
       << "if nargin < 1\n  p = parameters();\nend\n"
       << "if nargin < 3\n  [q, qd] = state();\nend\n"
       << "if nargin < 4\n  t = 0;\nend\n";
-  for (const SolvedCase& c : s.cases) {
-    const int n = case_number(c.system.id);
+  for (const CaseSystem& c : plan.cases) {
+    const int n = case_number(c.id);
     out << "[A, B, u] = case" << n << "(p, q, qd, t);\n";
-    out << "print_case(" << matlab_string(case_title(c.system)) << ", " << matlab_cell(c.system.labels) << ", "
-        << matlab_cell(unknown_names(plan, c.system)) << ", A, B, u);\n";
+    out << "print_case(" << matlab_string(case_title(c)) << ", " << matlab_cell(c.labels) << ", "
+        << matlab_cell(unknown_names(plan, c)) << ", A, B, u);\n";
   }
   out << "end\n";
   out << "\nfunction print_case(title, labels, unknowns, A, B, u)\n"
@@ -403,7 +412,7 @@ std::string matlab_export(const MechanismSolution& s) {
 
 std::string python_export(const MechanismSolution& s) {
   const Plan plan = make_plan(s, CodeLanguage::python);
-  const CodePrinter print(CodeLanguage::python, s.system->table(), plan.names);
+  const CodePrinter print(CodeLanguage::python, plan.system->table(), plan.names);
   std::ostringstream out;
   out << "#!/usr/bin/env python3\n";
   out << "# " << (s.system->mechanism().title.empty() ? "A planar mechanism" : s.system->mechanism().title) << '\n';
@@ -414,9 +423,9 @@ std::string python_export(const MechanismSolution& s) {
         << "# or use it at any parameters and state:\n"
         << "#   import " << plan.stem << " as mech\n"
         << "#   p = mech.parameters()                           # the file's; parameters(NAME=VALUE) changes some\n";
-  for (const SolvedCase& c : s.cases)
-    usage << "#   A, B, u = mech.case" << case_number(c.system.id) << "(p, mech.Q0, mech.QD0, t=0.0)  # Case "
-          << case_number(c.system.id) << ", u solves A u = B\n";
+  for (const CaseSystem& c : plan.cases)
+    usage << "#   A, B, u = mech.case" << case_number(c.id) << "(p, mech.Q0, mech.QD0, t=0.0)  # Case "
+          << case_number(c.id) << ", u solves A u = B\n";
   usage << "#   mech.demo(p, q, qd, t)                          # prints every case there\n";
   write_header(out, plan, "#", usage.str());
   out << "\nimport numpy as np\n\n";
@@ -435,13 +444,13 @@ std::string python_export(const MechanismSolution& s) {
       << "    p = dict(PARAMETERS)\n"
       << "    p.update({name: float(value) for name, value in changes.items()})\n"
       << "    return p\n";
-  for (const SolvedCase& c : s.cases) python_case(out, plan, c.system, print);
+  for (const CaseSystem& c : plan.cases) python_case(out, plan, c, print);
 
   out << "\n\n# Each case: its number, title, function, row labels and unknowns.\nCASES = [\n";
-  for (const SolvedCase& c : s.cases) {
-    const int n = case_number(c.system.id);
-    out << "    (" << n << ", " << python_string(case_title(c.system)) << ", case" << n << ", "
-        << python_strings(c.system.labels) << ", " << python_strings(unknown_names(plan, c.system)) << "),\n";
+  for (const CaseSystem& c : plan.cases) {
+    const int n = case_number(c.id);
+    out << "    (" << n << ", " << python_string(case_title(c)) << ", case" << n << ", " << python_strings(c.labels)
+        << ", " << python_strings(unknown_names(plan, c)) << "),\n";
   }
   out << "]\n";
   out << "\n\ndef demo(p=None, q=None, qd=None, t=0.0):\n"

@@ -3,8 +3,8 @@
 // (code_export.hpp). Numbers stay exact where GiNaC has them exact: a rational prints as
 // a/b (float division in both languages), a float as its shortest round-trip decimal.
 // Terms and factors print in an order fixed by their text and the symbol table's ranks,
-// never by GiNaC's internal order (which follows symbol creation), so the same mechanism
-// prints the same code in any process.
+// never by GiNaC's internal order (which follows symbol creation), and a sum factor takes
+// the sign its text prefers, so the same expressions print the same code in any process.
 #include <ginac/ginac.h>
 
 #include <map>

@@ -24,8 +24,8 @@ namespace {
 
 using built::q;
 
-// A disc on a spring-damper from a ground point, driven by a force and a torque that
-// change with time: its entries hold sqrt, tan, exp, divisions and t.
+// A disc on a spring-damper from a ground point placed by a definition, driven by a force
+// and a torque that change with t: its entries hold sqrt, tan, exp and divisions.
 Mechanism sprung_disc() {
   Mechanism m;
   m.name = "sprung-disc";
@@ -35,26 +35,34 @@ Mechanism sprung_disc() {
                   {"T", 1.5, {}},  {"beta", 0.3, {}}, {"g", 9.81, {}}};
   m.definitions = {{"h", q("l0*tan(beta)"), {}}};
   m.ground_points = {{"O", {q("0"), q("h")}, {}}};
-  Body disc;
-  disc.name = "1";
-  disc.shape = Shape::disc;
-  disc.mass = q("m");
-  disc.radius = q("r");
-  disc.points = {{"A", {q("0"), q("r")}, {}}};
-  m.bodies = {disc};
-  Spring spring;
-  spring.name = "k1";
-  spring.between = {PointRef{"ground", "O", {}}, PointRef{"1", "A", {}}};
-  spring.stiffness = q("k");
-  spring.rest_length = q("l0");
-  spring.damping = q("c");
-  m.springs = {spring};
+  m.bodies = {built::disc("1", "m", "r", {{"A", {"0", "r"}}})};
+  m.springs = {built::spring("k1", "ground.O", "1.A", "k", "l0", "c")};
   m.forces = {{"1", "A", {q("F0*sin(Omega*t)"), q("0")}, {}}};
   m.torques = {{"1", q("tau0*exp(-t/T)"), {}}};
   m.initial = {{"1.x", 0.1, {}},     {"1.y", -0.35, {}},    {"1.theta", 0.2, {}},
                {"1.x_dot", 0.3, {}}, {"1.y_dot", -0.1, {}}, {"1.theta_dot", 0.5, {}}};
   return m;
 }
+
+// The homework, the three mechanisms beyond it, and ones with every kind of load.
+const std::vector<built::Named> kMechanisms{
+    {"homework", built::homework},
+    {"double_pendulum", built::double_pendulum},
+    {"four_bar", built::four_bar},
+    {"slider_crank", built::slider_crank},
+    {"double_pendulum_loaded", built::double_pendulum_loaded},
+    {"four_bar_loaded", built::four_bar_loaded},
+    {"cart_pendulum", built::cart_pendulum},
+    {"driven_spring_pendulum",
+     [] {
+       Mechanism m = built::spring_pendulum(true);  // away from the spring's anchor
+       m.initial = {{"1.x", 0.2, {}}, {"1.y", -0.4, {}}, {"1.x_dot", 0.5, {}}, {"1.y_dot", -0.3, {}}};
+       return m;
+     }},
+    {"sprung_disc", sprung_disc},
+};
+
+std::string test_name(const testing::TestParamInfo<built::Named>& info) { return info.param.name; }
 
 const std::vector<CaseId> kCases(kAllCases.begin(), kAllCases.end());
 
@@ -194,11 +202,9 @@ void expect_python_agrees(const Mechanism& mechanism) {
   }
 }
 
-TEST(CodeExport, PythonHomeworkAgreesWithSolve) { expect_python_agrees(built::homework()); }
-TEST(CodeExport, PythonDoublePendulumAgreesWithSolve) { expect_python_agrees(built::double_pendulum()); }
-TEST(CodeExport, PythonFourBarAgreesWithSolve) { expect_python_agrees(built::four_bar()); }
-TEST(CodeExport, PythonSliderCrankAgreesWithSolve) { expect_python_agrees(built::slider_crank()); }
-TEST(CodeExport, PythonSprungDiscAgreesWithSolve) { expect_python_agrees(sprung_disc()); }
+class CodeExportOf : public testing::TestWithParam<built::Named> {};
+
+TEST_P(CodeExportOf, PythonAgreesWithSolve) { expect_python_agrees(GetParam().make()); }
 
 // ---------------------------------------------------------------- MATLAB structure
 
@@ -336,11 +342,9 @@ void expect_matlab_structure(const Mechanism& mechanism) {
   EXPECT_EQ(set.size(), mechanism.parameters.size());
 }
 
-TEST(CodeExport, MatlabHomeworkIsWellFormed) { expect_matlab_structure(built::homework()); }
-TEST(CodeExport, MatlabDoublePendulumIsWellFormed) { expect_matlab_structure(built::double_pendulum()); }
-TEST(CodeExport, MatlabFourBarIsWellFormed) { expect_matlab_structure(built::four_bar()); }
-TEST(CodeExport, MatlabSliderCrankIsWellFormed) { expect_matlab_structure(built::slider_crank()); }
-TEST(CodeExport, MatlabSprungDiscIsWellFormed) { expect_matlab_structure(sprung_disc()); }
+TEST_P(CodeExportOf, MatlabIsWellFormed) { expect_matlab_structure(GetParam().make()); }
+
+INSTANTIATE_TEST_SUITE_P(Mechanisms, CodeExportOf, testing::ValuesIn(kMechanisms), test_name);
 
 // The structure check itself catches a name read before it is assigned and a missing end.
 TEST(CodeExport, MatlabCheckCatchesFaults) {
@@ -370,6 +374,7 @@ TEST(CodeExport, PrinterSpellsEachLanguage) {
   EXPECT_EQ(python(mixed), "np.pi*theta_1**(3/2)/np.sqrt(L)");
   EXPECT_EQ(matlab(mixed), "pi*theta_1.^(3/2)/sqrt(L)");
   EXPECT_EQ(python(GiNaC::numeric("0.08") * m - 2), "0.08*m - 2");
+  EXPECT_EQ(matlab(GiNaC::numeric("1e-5") * L + GiNaC::numeric("-2.5e3") * m), "1e-05*L - 2500*m");
   // A sum factor prints with the sign its text prefers, whichever GiNaC chose.
   EXPECT_EQ(python(GiNaC::pow(m - L, 2) * GiNaC::pow(L + m, -2)), "(L - m)**2/(L + m)**2");
   EXPECT_EQ(python(GiNaC::pow(L - m, 2) * GiNaC::pow(L + m, -2)), "(L - m)**2/(L + m)**2");
@@ -409,11 +414,12 @@ TEST(CodeExport, ClashingNamesAreRenamed) {
 // The same mechanism exports the same bytes from a second, independent derivation (its
 // GiNaC symbols are new, so GiNaC's own term order may differ).
 TEST(CodeExport, OutputIsDeterministic) {
-  for (const Mechanism& m : {built::homework(), built::four_bar(), sprung_disc()}) {
+  for (const built::Named& named : kMechanisms) {
+    const Mechanism m = named.make();
     const MechanismSolution first = work_out_mechanism(m, kCases);
     const MechanismSolution second = work_out_mechanism(m, kCases);
-    EXPECT_EQ(python_export(first), python_export(second)) << m.name;
-    EXPECT_EQ(matlab_export(first), matlab_export(second)) << m.name;
+    EXPECT_TRUE(python_export(first) == python_export(second)) << named.name << ": the Python files differ";
+    EXPECT_TRUE(matlab_export(first) == matlab_export(second)) << named.name << ": the MATLAB files differ";
   }
 }
 
