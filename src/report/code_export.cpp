@@ -177,9 +177,9 @@ void write_header(std::ostream& out, const Plan& plan, const std::string& commen
   auto line = [&](const std::string& text) { out << comment << (text.empty() ? "" : " " + text) << '\n'; };
   line("The equations of motion of the mechanism " + (m.name.empty() ? std::string("built in code") : m.name) +
        ", each solved case as A u = B,");
-  line("written by linkage from the same symbolic expressions its worked solution prints and");
-  line("solves. The state is the generalized coordinates q and their rates qd; Case 1 computes");
-  line("every body's maximal coordinates from them.");
+  line("written by linkage from the symbolic derivation its worked solution prints and solves,");
+  line("with the file's decimals as exact fractions (0.15 as 3/20). The state is the generalized");
+  line("coordinates q and their rates qd; Case 1 computes every body's maximal coordinates from them.");
   if (!plan.solution->closure_note.empty()) line("Its state: " + plan.solution->closure_note);
   line("");
   out << usage;
