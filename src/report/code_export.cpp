@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/error.hpp"
 #include "core/number_format.hpp"
 #include "report/code_printer.hpp"
 #include "report/exact_decimals.hpp"
@@ -57,7 +58,8 @@ struct GlossaryLine {
 
 // Everything both languages write, named once. The cases are derived again from the
 // mechanism with its decimals exact (exact_decimals.hpp), so the code is the same in
-// every run; their values agree with the solved cases to rounding.
+// every run; their values agree with the solved cases to rounding. Should a fraction make
+// an expression too long for the reader, the solved system itself is printed.
 struct Plan {
   const MechanismSolution* solution = nullptr;
   std::shared_ptr<const sym::System> system;
@@ -86,7 +88,11 @@ double finite(double value, const std::string& what) {
 Plan make_plan(const MechanismSolution& s, CodeLanguage language) {
   Plan plan;
   plan.solution = &s;
-  plan.system = std::make_shared<const sym::System>(with_exact_decimals(s.system->mechanism()));
+  try {
+    plan.system = std::make_shared<const sym::System>(with_exact_decimals(s.system->mechanism()));
+  } catch (const Error&) {
+    plan.system = s.system;  // a fraction made an expression longer than the reader takes: the file's own
+  }
   const sym::System& system = *plan.system;
   const sym::SymbolTable& table = system.table();
   for (const SolvedCase& c : s.cases) plan.cases.push_back(derive_case(system, c.system.id));

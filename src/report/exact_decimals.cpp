@@ -9,8 +9,8 @@ namespace {
 bool digit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
 bool name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; }
 
-// A longer exponent is left as the file wrote it (GiNaC would not make it a double either).
-constexpr std::size_t kLongestExponent = 6;
+// A number needing more zeros is left as the file wrote it.
+constexpr long kMostZeros = 30;
 
 }  // namespace
 
@@ -47,7 +47,7 @@ std::string exact_decimal_text(const std::string& expression) {
       if (k < n && (s[k] == '+' || s[k] == '-')) ++k;
       const std::size_t first = k;
       while (k < n && digit(s[k])) ++k;
-      if (k > first && k - first <= kLongestExponent) {
+      if (k > first && k - first <= 3) {
         decimal = true;
         exponent += std::stol(s.substr(i + 1, k - i - 1));
         i = k;
@@ -61,12 +61,17 @@ std::string exact_decimal_text(const std::string& expression) {
       out += digits;
       continue;
     }
+    if (exponent < -kMostZeros || exponent > kMostZeros) {
+      out += s.substr(start, i - start);
+      continue;
+    }
+    // Whole numbers, not 10^k: the reader refuses large exponents.
     const auto nonzero = digits.find_first_not_of('0');
     digits = nonzero == std::string::npos ? "0" : digits.substr(nonzero);
-    out += "(" + digits;
-    if (exponent < 0) out += "/10^" + std::to_string(-exponent);
-    if (exponent > 0) out += "*10^" + std::to_string(exponent);
-    out += ")";
+    if (exponent >= 0)
+      out += digits + std::string(static_cast<std::size_t>(exponent), '0');
+    else
+      out += "(" + digits + "/1" + std::string(static_cast<std::size_t>(-exponent), '0') + ")";
   }
   return out;
 }

@@ -11,8 +11,9 @@
 namespace linkage {
 
 /// `expression` with every number that has a decimal point or an exponent written as an
-/// exact fraction: "L/2 - 0.04" -> "L/2 - (4/10^2)", "1.5e3*k" -> "(15*10^2)*k". Names
-/// ("L1", "tau0") and integers stay as they are.
+/// exact fraction or whole number: "L/2 - 0.04" -> "L/2 - (4/100)", "1.5e3*k" ->
+/// "1500*k". Names ("L1", "tau0"), integers and numbers needing more than 30 zeros stay
+/// as they are.
 [[nodiscard]] std::string exact_decimal_text(const std::string& expression);
 
 /// The mechanism with exact_decimal_text applied to every quantity.

@@ -202,6 +202,16 @@ void expect_python_agrees(const Mechanism& mechanism) {
   }
 }
 
+// An expression near the reader's length limit, whose exact fractions would pass it:
+// the export prints the solved system's own expressions instead, just as right.
+TEST(CodeExport, LongDecimalExpressionStillExports) {
+  Mechanism m = built::homework();
+  std::string definition = "L/2 - b";
+  while (definition.size() < 480) definition += " + 0.01 - 0.01";
+  m.definitions[0].value = q(definition);
+  expect_python_agrees(m);
+}
+
 class CodeExportOf : public testing::TestWithParam<built::Named> {};
 
 TEST_P(CodeExportOf, PythonAgreesWithSolve) { expect_python_agrees(GetParam().make()); }
