@@ -3,15 +3,12 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <memory>
 #include <set>
 #include <sstream>
 #include <stdexcept>
 
-#include "core/error.hpp"
 #include "core/number_format.hpp"
 #include "report/code_printer.hpp"
-#include "report/exact_decimals.hpp"
 
 namespace linkage {
 
@@ -56,14 +53,10 @@ struct GlossaryLine {
   std::string identifier, key, meaning;
 };
 
-// Everything both languages write, named once. The cases are derived again from the
-// mechanism with its decimals exact (exact_decimals.hpp), so the code is the same in
-// every run; their values agree with the solved cases to rounding. Should a fraction make
-// an expression too long for the reader, the solved system itself is printed.
+// Everything both languages write, named once.
 struct Plan {
   const MechanismSolution* solution = nullptr;
-  std::shared_ptr<const sym::System> system;
-  std::vector<CaseSystem> cases;
+  std::vector<CaseSystem> cases;  // the solved ones
   std::string stem;
   Names names;
   std::vector<std::pair<std::string, double>> parameters;
@@ -86,16 +79,11 @@ double finite(double value, const std::string& what) {
 }
 
 Plan make_plan(const MechanismSolution& s, CodeLanguage language) {
+  const sym::System& system = *s.system;
+  const sym::SymbolTable& table = system.table();
   Plan plan;
   plan.solution = &s;
-  try {
-    plan.system = std::make_shared<const sym::System>(with_exact_decimals(s.system->mechanism()));
-  } catch (const Error&) {
-    plan.system = s.system;  // a fraction made an expression longer than the reader takes: the file's own
-  }
-  const sym::System& system = *plan.system;
-  const sym::SymbolTable& table = system.table();
-  for (const SolvedCase& c : s.cases) plan.cases.push_back(derive_case(system, c.system.id));
+  for (const SolvedCase& c : s.cases) plan.cases.push_back(c.system);
   plan.stem = export_stem(s);
   std::set<std::string> taken = reserved(language);
   taken.insert(plan.stem);
@@ -123,13 +111,11 @@ Plan make_plan(const MechanismSolution& s, CodeLanguage language) {
     const std::string& id = plan.names.at(b.inertia);
     if (inertias.insert(id).second) plan.constants.push_back({id, b.inertia_formula});
   }
-  for (std::size_t k = 0; k < system.coordinates().size(); ++k) {
-    const sym::GeneralizedCoordinate& g = system.coordinates()[k];
-    const sym::CoordinateSymbols& solved = s.system->coordinates()[k].symbols;  // the same coordinate
+  for (const sym::GeneralizedCoordinate& g : system.coordinates()) {
     plan.q.push_back(plan.names.at(g.symbols.q));
     plan.qd.push_back(plan.names.at(g.symbols.q_dot));
-    plan.q0.push_back(finite(sym::to_double(s.state.at(solved.q)), g.coordinate.key));
-    plan.qd0.push_back(finite(sym::to_double(s.state.at(solved.q_dot)), g.coordinate.key + "_dot"));
+    plan.q0.push_back(finite(sym::to_double(s.state.at(g.symbols.q)), g.coordinate.key));
+    plan.qd0.push_back(finite(sym::to_double(s.state.at(g.symbols.q_dot)), g.coordinate.key + "_dot"));
   }
   for (const sym::Role role : {sym::Role::coordinate, sym::Role::rate})
     for (const sym::SymbolInfo& info : table.all()) {
@@ -183,9 +169,9 @@ void write_header(std::ostream& out, const Plan& plan, const std::string& commen
   auto line = [&](const std::string& text) { out << comment << (text.empty() ? "" : " " + text) << '\n'; };
   line("The equations of motion of the mechanism " + (m.name.empty() ? std::string("built in code") : m.name) +
        ", each solved case as A u = B,");
-  line("written by linkage from the symbolic derivation its worked solution prints and solves,");
-  line("with the file's decimals as exact fractions (0.15 as 3/20). The state is the generalized");
-  line("coordinates q and their rates qd; Case 1 computes every body's maximal coordinates from them.");
+  line("written by linkage from the same symbolic expressions its worked solution prints and");
+  line("solves. The state is the generalized coordinates q and their rates qd; Case 1 computes");
+  line("every body's maximal coordinates from them.");
   if (!plan.solution->closure_note.empty()) line("Its state: " + plan.solution->closure_note);
   line("");
   out << usage;
@@ -354,7 +340,7 @@ std::string export_stem(const MechanismSolution& s) {
 
 std::string matlab_export(const MechanismSolution& s) {
   const Plan plan = make_plan(s, CodeLanguage::matlab);
-  const CodePrinter print(CodeLanguage::matlab, plan.system->table(), plan.names);
+  const CodePrinter print(CodeLanguage::matlab, s.system->table(), plan.names);
   std::string upper = plan.stem;
   for (char& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
 
@@ -418,7 +404,7 @@ std::string matlab_export(const MechanismSolution& s) {
 
 std::string python_export(const MechanismSolution& s) {
   const Plan plan = make_plan(s, CodeLanguage::python);
-  const CodePrinter print(CodeLanguage::python, plan.system->table(), plan.names);
+  const CodePrinter print(CodeLanguage::python, s.system->table(), plan.names);
   std::ostringstream out;
   out << "#!/usr/bin/env python3\n";
   out << "# " << (s.system->mechanism().title.empty() ? "A planar mechanism" : s.system->mechanism().title) << '\n';

@@ -36,6 +36,18 @@ bool is_negative_rational(const GiNaC::ex& e) {
          GiNaC::ex_to<GiNaC::numeric>(e).is_negative();
 }
 
+// A decimal of the mechanism file (read exactly: 0.3 is 3/10) prints as that decimal: a
+// fraction whose denominator is a multiple of 5 made of 2s and 5s only, as the worked
+// solution prints it. The derivation's own fractions (1/2, 1/12) stay fractions. Either
+// way the value is the double nearest the fraction.
+bool file_decimal(const GiNaC::numeric& n) {
+  if (!n.is_rational() || n.is_integer() || !GiNaC::irem(n.denom(), 5).is_zero()) return false;
+  GiNaC::numeric rest = n.denom();
+  while (GiNaC::irem(rest, 2).is_zero()) rest = rest / 2;
+  while (GiNaC::irem(rest, 5).is_zero()) rest = rest / 5;
+  return rest.is_equal(1) && GiNaC::abs(n.numer()) < GiNaC::numeric(1000000000);
+}
+
 struct Ranked {
   int rank;
   std::string text;
@@ -101,6 +113,8 @@ CodePrinter::Text CodePrinter::print_number(const GiNaC::numeric& n) const {
   int level = kAtom;
   if (magnitude.is_integer()) {
     text = integer_text(magnitude);
+  } else if (file_decimal(magnitude)) {
+    text = format_roundtrip(magnitude.to_double());
   } else if (magnitude.is_rational()) {
     text = integer_text(magnitude.numer()) + "/" + integer_text(magnitude.denom());
     level = kProduct;
@@ -177,7 +191,7 @@ CodePrinter::Text CodePrinter::print_product(const GiNaC::numeric& coefficient, 
   negative = coefficient.is_negative() != flip;
   const GiNaC::numeric magnitude = GiNaC::abs(coefficient);
   std::vector<std::string> top, bottom;
-  if (magnitude.is_rational()) {
+  if (magnitude.is_rational() && !file_decimal(magnitude)) {
     if (magnitude.numer() != 1) top.push_back(integer_text(magnitude.numer()));
     if (magnitude.denom() != 1) bottom.push_back(integer_text(magnitude.denom()));
   } else {

@@ -1,7 +1,8 @@
 #pragma once
 // GiNaC expressions as MATLAB/Octave or Python (NumPy) source, for the exported cases
-// (code_export.hpp). Numbers stay exact where GiNaC has them exact: a rational prints as
-// a/b (float division in both languages), a float as its shortest round-trip decimal.
+// (code_export.hpp). Numbers are printed exactly: a rational as a/b (float division in
+// both languages), one that is a decimal of the mechanism file (3/10) as that decimal
+// (0.3), a float in its shortest round-trip form.
 // Terms and factors print in an order fixed by their text and the symbol table's ranks,
 // never by GiNaC's internal order (which follows symbol creation), and a sum factor takes
 // the sign its text prefers, so the same expressions print the same code in any process.
