@@ -10,8 +10,8 @@
 
 #include "formulations/case_numbers.hpp"
 #include "formulations/case_system.hpp"
-#include "support/mechanisms_in_code.hpp"
 #include "model/kinematics.hpp"
+#include "support/mechanisms_in_code.hpp"
 
 namespace linkage {
 namespace {
