@@ -66,7 +66,9 @@ Spelling with_index(Spelling base, const std::string& index) {
   if (index.empty()) return base;
   base.unicode += all_digits(index) ? subscript_digits(index) : "_" + index;
   base.ascii += all_digits(index) ? index : "_" + index;
-  base.latex += "_{" + latex_index(index) + "}";
+  // One character bare, as the homework writes \theta_1; longer ones braced.
+  const std::string latex = latex_index(index);
+  base.latex += latex.size() == 1 ? "_" + latex : "_{" + latex + "}";
   return base;
 }
 

@@ -306,7 +306,7 @@ void System::add_bodies() {
   ex shared_symbol = 0;
   if (shared && first != nullptr) {
     const SymbolInfo& info =
-        table_.add({symbol("I"), Role::inertia, "I", "I", "I", "I", "kg m^2", "centroidal moment of inertia"});
+        table_.add({symbol("I"), Role::inertia, "I", "I", "I", "I_{zz}^{C}", "kg m^2", "centroidal moment of inertia"});
     shared_symbol = info.symbol;
     constants_[info.symbol] = first->subs(constants_);
   }
@@ -404,6 +404,8 @@ void System::add_joints() {
     place(a, joint.points[0], ends.a, ends.point_a);
     place(b, joint.points[1], ends.b, ends.point_b);
     const std::string stem = joint.name + ".";
+    const std::string on =
+        a < 0 ? std::string("the ground") : body_phrase(mechanism_.bodies[static_cast<std::size_t>(a)]);
     if (joint.type == JointType::pin) {
       const std::string fx = single ? "Fx" : "Fx_" + joint.name;
       const std::string fy = single ? "Fy" : "Fy_" + joint.name;
@@ -411,11 +413,11 @@ void System::add_joints() {
       const std::string ly = single ? "F_y" : "F_{y," + joint.name + "}";
       js.unknowns.push_back(table_
                                 .add({symbol(stem + "force_x"), Role::force, stem + "force_x", fx, fx, lx, "N",
-                                      "pin force on " + joint.bodies[0] + ", x"})
+                                      "pin force on " + on + ", x"})
                                 .symbol);
       js.unknowns.push_back(table_
                                 .add({symbol(stem + "force_y"), Role::force, stem + "force_y", fy, fy, ly, "N",
-                                      "pin force on " + joint.bodies[0] + ", y"})
+                                      "pin force on " + on + ", y"})
                                 .symbol);
       js.constraints = pin_constraints(ends);
       pin_force(js, table_);
@@ -425,11 +427,11 @@ void System::add_joints() {
       const Spelling m = spell_indexed("M", 0, joint.name);
       js.unknowns.push_back(table_
                                 .add({symbol(stem + "normal"), Role::force, stem + "normal", n.unicode, n.ascii,
-                                      n.latex, "N", "slider force across the axis on " + joint.bodies[0]})
+                                      n.latex, "N", "slider force across the axis on " + on})
                                 .symbol);
       js.unknowns.push_back(table_
                                 .add({symbol(stem + "moment"), Role::force, stem + "moment", m.unicode, m.ascii,
-                                      m.latex, "N m", "slider moment on " + joint.bodies[0]})
+                                      m.latex, "N m", "slider moment on " + on})
                                 .symbol);
       js.constraints = slider_constraints(ends);
       slider_force(js, ends, table_);
