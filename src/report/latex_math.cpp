@@ -167,12 +167,18 @@ std::string equation_row(std::string_view lhs, std::string_view rhs, std::string
                          std::string_view indent) {
   const std::string pad(indent);
   if (visible_length(lhs) + visible_length(rhs) + 1 <= limit) return concat({pad, lhs, " &= ", rhs, suffix});
-  std::vector<std::string> left = wrap_math(mark_sums(lhs), limit, limit);
+  // A short right side stays whole after the left side's last row, else it wraps too.
+  const std::size_t right_width = visible_length(rhs) + 1;
+  const bool right_whole = 2 * right_width <= limit;
+  const std::size_t left_limit = right_whole ? limit - right_width : limit;
+  std::vector<std::string> left = wrap_math(mark_sums(lhs), left_limit, left_limit);
   std::string out = pad + left.front();
   // A continued left side starts with its operator: {} keeps it binary.
   for (std::size_t i = 1; i < left.size(); ++i) out += concat({" \\\\\n", pad, "{} ", left[i]});
   const std::size_t used = visible_length(left.back());
-  const std::vector<std::string> right = wrap_math(mark_sums(rhs), limit, used + 8 < limit ? limit - used : 8);
+  const std::vector<std::string> right = right_whole
+                                             ? std::vector<std::string>{std::string(rhs)}
+                                             : wrap_math(mark_sums(rhs), limit, used + 8 < limit ? limit - used : 8);
   out += concat({" &= ", right.front()});
   for (std::size_t i = 1; i < right.size(); ++i) out += concat({" \\\\\n", pad, "  &\\quad ", right[i]});
   return out + std::string(suffix);
