@@ -89,6 +89,7 @@ Plan make_plan(const MechanismSolution& s, CodeLanguage language) {
   taken.insert(plan.stem);
   plan.names[system.time()] = "t";
   for (const sym::SymbolInfo& info : table.all()) {
+    if (info.role == sym::Role::time) continue;  // named "t" above, in the glossary below
     std::string id = code_identifier(info.key);
     while (taken.count(id) != 0) id += "_";
     taken.insert(id);

@@ -203,6 +203,8 @@ int body_index(const Mechanism& m, const std::string& name) {
 
 System::System(const Mechanism& mechanism) : mechanism_(mechanism), tree_(spanning_tree(mechanism)) {
   add_parameters();
+  // The time of applied loads, printed like any symbol.
+  table_.add({t_, Role::time, "t", "t", "t", "t", "s", "time"});
   add_bodies();
   add_joints();
   add_loads();
