@@ -4,11 +4,13 @@
 
 #include <algorithm>
 #include <array>
-#include <cctype>
+#include <cmath>
 
 #include "report/expression_print.hpp"
 #include "report/latex_math.hpp"
+#include "report/mechanism_parts.hpp"
 #include "report/notation.hpp"
+#include "symbolic/energy.hpp"
 
 namespace linkage {
 
@@ -97,8 +99,9 @@ class DerivationWriter {
     title();
     if (o_.shows(ReportPart::inputs)) inputs();
     if (o_.shows(ReportPart::inertia)) inertia();
+    if (o_.shows(ReportPart::constraints)) constraints();
+    if (o_.shows(ReportPart::energy)) energy();
     if (o_.shows(ReportPart::constraints)) {
-      constraints();
       forces();
       newton_euler();
     }
@@ -218,14 +221,7 @@ class DerivationWriter {
     return {lhs, mark_sums(symbolic), mark_sums(numbers), result};
   }
 
-  [[nodiscard]] std::string body_label(int body) const {
-    if (body < 0) return "the ground";
-    const Body& b = system_.mechanism().bodies[static_cast<std::size_t>(body)];
-    bool numeric = !b.name.empty();
-    for (char c : b.name) numeric = numeric && std::isdigit(static_cast<unsigned char>(c)) != 0;
-    static constexpr std::array<const char*, 4> kNoun{"block", "rod", "disc", "mass"};
-    return numeric ? std::string(kNoun[static_cast<std::size_t>(b.shape)]) + " " + b.name : b.name;
-  }
+  [[nodiscard]] std::string body_label(int body) const { return linkage::body_label(system_.mechanism(), body); }
 
   // ---- the sections ----
 
@@ -302,16 +298,43 @@ class DerivationWriter {
       for (const GiNaC::ex& phi : js.constraints) {
         std::vector<std::string> rows;
         GiNaC::ex form = phi;
-        for (const char* level : kLevels) {
+        for (const char* level : {kLevels[0], kLevels[1]}) {
           rows.push_back(
               equation_row(tex(GiNaC::expand(form)), "0", concat({" && \\text{", level, "}"}), kEquationLimit, pad()));
           form = system_.time_derivative(form);
         }
+        // The acceleration level as Case 1 writes it: the accelerations on the left.
+        const EquationSides eq = acceleration_form(system_, phi, Style::latex);
+        rows.push_back(equation_row(eq.lhs, eq.rhs, concat({" && \\text{", kLevels[2], "}"}), kEquationLimit, pad()));
         groups.push_back(joined(rows, " \\\\\n"));
         groups.back().pop_back();
       }
       aligned(joined(groups, " \\\\[1ex]\n"));
     }
+  }
+
+  void energy() {
+    const GiNaC::ex power = sym::nonconservative_power(system_);
+    std::string note = power.is_zero()
+                           ? "Only conservative forces work on the mechanism: its energy $E = T + V$ stays constant."
+                           : "The dampers and applied loads work at the rate $P$; $E = T + V$ changes at that rate.";
+    if (!touches_ground(system_.mechanism()))
+      note +=
+          " Nothing touches the ground: the horizontal momentum stays constant and the vertical one changes at "
+          "the rate of gravity.";
+    heading("Energy and momentum", note);
+    const GiNaC::ex T = sym::kinetic_energy(system_);
+    const GiNaC::ex V = sym::potential_energy(system_);
+    const sym::Vec2 p = sym::linear_momentum(system_);
+    const double v = value(V);
+    std::vector<MathStep> steps{step("T", T, "J"), step("V", V, "J")};
+    steps.push_back({"E", "T + V", concat({number(value(T)), v < 0 ? " - " : " + ", number(std::abs(v))}),
+                     concat({number(value(T) + v), "\\ ", unit_text("J", Style::latex)})});
+    if (!power.is_zero()) steps.push_back(step("P", power, "W"));
+    steps.push_back(step("p_x", p.x, "kg m/s"));
+    steps.push_back(step("p_y", p.y, "kg m/s"));
+    steps.push_back(step("H_O", sym::angular_momentum(system_), "kg m^2/s"));
+    aligned(step_rows(steps, pad()));
   }
 
   void forces() {
@@ -332,17 +355,22 @@ class DerivationWriter {
             concat({inline_math(concat({"\\left(", tex(sign * js.force.x), ", ", tex(sign * js.force.y), "\\right)"})),
                     " at ", text(joint.points[first ? 0 : 1])});
         if (!js.moment.is_zero()) item += concat({", moment ", inline_math(tex(sign * js.moment))});
+        const std::string from = linkage::body_label(m, first ? joint.bodies[1] : joint.bodies[0]);
         items.push_back(concat(
-            {item, " (joint ", text(joint.name), ", from ", text(first ? joint.bodies[1] : joint.bodies[0]), ")"}));
+            {item, ": ",
+             text(concat({kJointTypeNames[static_cast<std::size_t>(joint.type)], " ", joint.name, ", from ", from}))}));
       }
       for (const sym::Load& load : system_.loads()) {
         if (load.body != static_cast<int>(b)) continue;
         std::string item;
-        if (!(load.force.x.is_zero() && load.force.y.is_zero()))
+        if (!(load.force.x.is_zero() && load.force.y.is_zero())) {
           item = inline_math(concat({"\\left(", tex(load.force.x), ", ", tex(load.force.y), "\\right)"}));
+          const std::string place = load_place(system_, b, load);
+          if (!place.empty()) item += concat({" at ", text(place)});
+        }
         if (!load.moment.is_zero())
           item += concat({item.empty() ? "moment " : ", moment ", inline_math(tex(load.moment))});
-        items.push_back(concat({item, " (", text(load.source), ")"}));
+        items.push_back(concat({item, ": ", text(load.source)}));
       }
       if (items.empty()) items.emplace_back("none");
       list(items);

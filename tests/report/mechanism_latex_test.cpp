@@ -7,13 +7,14 @@
 #include <gtest/gtest-spi.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <regex>
 #include <sstream>
 
 #include "report/latex_math.hpp"
-#include "support/test_mechanisms.hpp"
+#include "support/mechanisms_in_code.hpp"
 #include "support/test_support.hpp"
 
 namespace linkage {
@@ -48,7 +49,7 @@ std::string mask_last_cell(const std::string& text) {
   return std::regex_replace(out, markdown_cell, "| D |\n");
 }
 
-MechanismSolution homework() { return work_out_mechanism(test::homework(), kCases); }
+MechanismSolution homework() { return work_out_mechanism(built::homework(), kCases); }
 
 // Each residual the general route prints is rounding noise: under n eps (|A| |q| + |B|).
 void expect_residuals_at_rounding(const MechanismSolution& s) {
@@ -157,15 +158,15 @@ void expect_no_bad_numbers(const std::string& text) {
 }
 
 TEST(MechanismLatex, FourBarAndSliderCrankAreWellFormedAscii) {
-  for (const Mechanism& m : {test::four_bar(), test::slider_crank()}) {
+  for (const Mechanism& m : {built::four_bar(), built::slider_crank()}) {
     const std::string tex = mechanism_latex(work_out_mechanism(m, kCases), ReportOptions{});
     expect_balanced_latex(tex);
     expect_no_bad_numbers(tex);
     for (std::size_t i = 0; i < tex.size(); ++i)
       ASSERT_LT(static_cast<unsigned char>(tex[i]), 0x80) << "not ASCII near: " << tex.substr(i > 40 ? i - 40 : 0, 80);
     for (const char* part :
-         {"Inputs and definitions", "Moments of inertia", "(closes a loop)", "Forces and moments on each body",
-          "Newton-Euler equations", "Case 3: ", "The cases agree", "\\tag{17.1}"})
+         {"Inputs and definitions", "Moments of inertia", "(closes a loop)", "Energy and momentum",
+          "Forces and moments on each body", "Newton-Euler equations", "Case 3: ", "The cases agree", "\\tag{17.1}"})
       EXPECT_NE(tex.find(part), std::string::npos) << part;
   }
 }
@@ -198,7 +199,7 @@ std::vector<std::string> columns_after(const std::string& tex, const std::string
 // columns beside the unknowns q_k they multiply, together every unknown once in order,
 // each block with all 17 labelled rows; B once; the numbers split as the symbols do.
 TEST(MechanismLatex, WideMatrixSplitsIntoColumnBlocks) {
-  const MechanismSolution s = work_out_mechanism(test::four_bar(), {CaseId::maximal});
+  const MechanismSolution s = work_out_mechanism(built::four_bar(), {CaseId::maximal});
   const std::string tex = mechanism_latex(s, ReportOptions{});
   EXPECT_EQ(count(tex, "\\begin{multline*}"), 0);
   std::vector<std::string> unknowns;
@@ -256,7 +257,7 @@ void expect_well_formed_markdown(const std::string& md) {
 }
 
 TEST(MechanismMarkdown, FourBarAndSliderCrankAreWellFormed) {
-  for (const Mechanism& m : {test::four_bar(), test::slider_crank()}) {
+  for (const Mechanism& m : {built::four_bar(), built::slider_crank()}) {
     const std::string md = mechanism_markdown(work_out_mechanism(m, kCases), ReportOptions{});
     expect_well_formed_markdown(md);
     expect_no_bad_numbers(md);
@@ -271,6 +272,47 @@ TEST(MechanismMarkdown, FourBarAndSliderCrankAreWellFormed) {
 TEST(MechanismMarkdown, WellFormedCheckFindsARaggedTable) {
   EXPECT_NONFATAL_FAILURE(expect_well_formed_markdown("| a | b |\n| :-- | --: |\n| 1 |\n"), "cells");
   EXPECT_NONFATAL_FAILURE(expect_well_formed_markdown("\n$$\nx\n"), "$$ lines");
+}
+
+// Every mechanism built in code, with every kind of load (springs, dampers, applied
+// forces and torques), in both formats; but floating_pair, whose Case 3 entries swell
+// to 500 kB of LaTeX and take seconds to derive and print.
+std::vector<built::Named> every_built() {
+  return {{"homework", built::homework},
+          {"double_pendulum", built::double_pendulum},
+          {"triple_pendulum", built::triple_pendulum},
+          {"spring_pendulum", [] { return built::spring_pendulum(true); }},
+          {"double_pendulum_loaded", built::double_pendulum_loaded},
+          {"cart_pendulum", built::cart_pendulum},
+          {"arm_collar", built::arm_collar},
+          {"reversed_joints", built::reversed_joints},
+          {"floating_collar", built::floating_collar},
+          {"four_bar_loaded", built::four_bar_loaded}};
+}
+
+// `m` with a seeded random state as its [initial] (most of them give none).
+Mechanism at_random_state(Mechanism m) {
+  std::mt19937 rng(12);
+  const sym::System system(m);
+  const GiNaC::exmap state = built::random_state(system, rng);
+  m.initial.clear();
+  for (const sym::GeneralizedCoordinate& g : system.coordinates()) {
+    m.initial.push_back({g.coordinate.key, sym::to_double(state.at(g.symbols.q)), {}});
+    m.initial.push_back({g.coordinate.key + "_dot", sym::to_double(state.at(g.symbols.q_dot)), {}});
+  }
+  return m;
+}
+
+TEST(MechanismLatex, EveryBuiltMechanismIsWellFormed) {
+  for (const built::Named& named : every_built()) {
+    SCOPED_TRACE(named.name);
+    const MechanismSolution s = work_out_mechanism(at_random_state(named.make()), kCases);
+    const std::string tex = mechanism_latex(s, ReportOptions{});
+    expect_balanced_latex(tex);
+    expect_no_bad_numbers(tex);
+    EXPECT_TRUE(std::all_of(tex.begin(), tex.end(), [](char c) { return static_cast<unsigned char>(c) < 0x80; }));
+    expect_well_formed_markdown(mechanism_markdown(s, ReportOptions{}));
+  }
 }
 
 // ---- parts and wrapping ----
@@ -293,7 +335,7 @@ TEST(MechanismLatex, PartsChooseTheSections) {
 // four-bar's (3.1), 60 characters, goes over two rows, the second continuing the left
 // side; the homework's longest, (6.2) with 50, stays whole (HomeworkCasesAsTheGolden).
 TEST(MechanismLatex, LongEquationsWrapAtTheirSums) {
-  const std::string tex = mechanism_latex(work_out_mechanism(test::four_bar(), {CaseId::maximal}), ReportOptions{});
+  const std::string tex = mechanism_latex(work_out_mechanism(built::four_bar(), {CaseId::maximal}), ReportOptions{});
   const auto tag = tex.find("\\tag{3.1}");
   ASSERT_NE(tag, std::string::npos);
   const auto begin = tex.rfind("\\tag{2.1} \\\\\n", tag);
