@@ -1,6 +1,6 @@
 #pragma once
-// Pieces every writer of a mechanism's derivation uses alike (mechanism_latex; the text
-// writer keeps its own copies for now): how a body is called, where a load acts, whether
+// Pieces every writer of a mechanism's derivation uses alike (mechanism_latex
+// writer and mechanism_text): how a body is called, where a load acts, whether
 // anything ties the mechanism to the world, and a constraint's acceleration form.
 #include <string>
 

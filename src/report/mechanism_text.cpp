@@ -3,6 +3,7 @@
 #include "report/mechanism_text.hpp"
 
 #include "report/expression_print.hpp"
+#include "report/mechanism_parts.hpp"
 #include "report/notation.hpp"
 #include "report/text_layout.hpp"
 #include "symbolic/energy.hpp"
@@ -61,6 +62,10 @@ class MechanismWriter {
   }
   [[nodiscard]] std::string number(double value) const { return format_number(value, style_, o_.digits); }
   [[nodiscard]] std::string unit(std::string_view ascii) const { return unit_text(ascii, style_); }
+  [[nodiscard]] std::string place(std::size_t body, const sym::Load& load) const {
+    const std::string where = load_place(system_, body, load);
+    return where.empty() ? where : concat({" at ", where});
+  }
   [[nodiscard]] double value(const GiNaC::ex& e) const { return value_at(e, s_.values); }
   [[nodiscard]] std::string substituted(const GiNaC::ex& e) const { return strip_marks(substituted_marked(e)); }
   [[nodiscard]] std::string substituted_marked(const GiNaC::ex& e) const {
@@ -88,34 +93,6 @@ class MechanismWriter {
     if (numbers != symbolic)
       lines(wrap(equals, substituted_marked(formula), std::string(display_width(equals) + 2, ' '), o_.width));
     line(equals + result);
-  }
-
-  [[nodiscard]] int body_index(const std::string& name) const {
-    const auto& bodies = system_.mechanism().bodies;
-    for (std::size_t i = 0; i < bodies.size(); ++i)
-      if (bodies[i].name == name) return static_cast<int>(i);
-    return -1;
-  }
-
-  // " at the centre of mass" or " at P": where a load acts, by the body's named points.
-  [[nodiscard]] std::string at_point(std::size_t body, const sym::Load& load) const {
-    const sym::BodySystem& b = system_.bodies()[body];
-    const sym::Vec2 offset = load.point - sym::Vec2{b.x.q, b.y.q};
-    if (GiNaC::expand(offset.x).is_zero() && GiNaC::expand(offset.y).is_zero()) return " at the centre of mass";
-    for (const auto& [name, local] : b.points) {
-      const sym::Vec2 d = offset - sym::rotate(b.rotates ? GiNaC::ex(b.theta.q) : GiNaC::ex(0), local);
-      if (GiNaC::expand(d.x).is_zero() && GiNaC::expand(d.y).is_zero()) return concat({" at ", name});
-    }
-    return "";
-  }
-
-  [[nodiscard]] std::string body_label(int body) const {
-    if (body < 0) return "the ground";
-    const Body& b = system_.mechanism().bodies[static_cast<std::size_t>(body)];
-    bool numeric = true;
-    for (char c : b.name) numeric = numeric && std::isdigit(static_cast<unsigned char>(c)) != 0;
-    static constexpr std::array<const char*, 4> kNoun{"block", "rod", "disc", "mass"};
-    return numeric ? std::string(kNoun[static_cast<std::size_t>(b.shape)]) + " " + b.name : b.name;
   }
 
   void inputs() {
@@ -184,37 +161,17 @@ class MechanismWriter {
       line(concat({"  Joint ", joint.name, ": ", kJointTypeNames[static_cast<std::size_t>(joint.type)], " between ",
                    joint.bodies[0], ".", joint.points[0], " and ", joint.bodies[1], ".", joint.points[1],
                    js.in_tree ? " (spanning tree)" : " (closes a loop)"}));
-      std::vector<const sym::SymbolInfo*> accelerations;
-      std::vector<GiNaC::symbol> acceleration_symbols;
-      for (const sym::SymbolInfo& info : system_.table().all())
-        if (info.role == sym::Role::acceleration && !info.key.ends_with(".s_ddot")) {
-          accelerations.push_back(&info);
-          acceleration_symbols.push_back(info.symbol);
-        }
       for (const GiNaC::ex& phi : js.constraints) {
         lines(wrap("    position      ", concat({marked(GiNaC::expand(phi)), std::string(1, kBreakMark), " = 0"}),
                    std::string(20, ' '), o_.width));
         const GiNaC::ex rate = system_.time_derivative(phi);
         lines(wrap("    velocity      ", concat({marked(GiNaC::expand(rate)), std::string(1, kBreakMark), " = 0"}),
                    std::string(20, ' '), o_.width));
-        // The acceleration level as Case 1 writes it: the accelerations on the left.
-        const CaseSystem row = linear_system(CaseId::maximal, {system_.time_derivative(rate)}, acceleration_symbols);
-        const EquationSides eq = equation_sides(row.A[0], row.B[0], accelerations, system_.table(), style_);
+        const EquationSides eq = acceleration_form(system_, phi, style_);
         lines(wrap("    acceleration  ", concat({eq.lhs, std::string(1, kBreakMark), " = ", eq.rhs}),
                    std::string(20, ' '), o_.width));
       }
     }
-  }
-
-  // Whether anything fixes the mechanism in the world: a joint or spring to the ground, or
-  // an applied force or torque.
-  [[nodiscard]] bool touches_ground() const {
-    const Mechanism& m = system_.mechanism();
-    for (const Joint& j : m.joints)
-      if (j.bodies[0] == kGround || j.bodies[1] == kGround) return true;
-    for (const Spring& sp : m.springs)
-      if (sp.between[0].body == kGround || sp.between[1].body == kGround) return true;
-    return !m.forces.empty() || !m.torques.empty();
   }
 
   void energy() {
@@ -223,7 +180,7 @@ class MechanismWriter {
     std::string note = power.is_zero()
                            ? "Only conservative forces work on the mechanism: its energy E = T + V stays constant."
                            : "The dampers and applied loads work at the rate P; E = T + V changes at that rate.";
-    if (!touches_ground())
+    if (!touches_ground(system_.mechanism()))
       note +=
           " Nothing touches the ground: the horizontal momentum stays constant and the vertical one changes at "
           "the rate of gravity.";
@@ -250,7 +207,7 @@ class MechanismWriter {
     const Mechanism& m = system_.mechanism();
     for (std::size_t b = 0; b < system_.bodies().size(); ++b) {
       blank();
-      line(concat({"  ", body_label(static_cast<int>(b)), ":"}));
+      line(concat({"  ", body_label(system_.mechanism(), static_cast<int>(b)), ":"}));
       for (std::size_t j = 0; j < m.joints.size(); ++j) {
         const Joint& joint = m.joints[j];
         const sym::JointSystem& js = system_.joints()[j];
@@ -262,13 +219,13 @@ class MechanismWriter {
             {"    (", math(sign * js.force.x), ", ", math(sign * js.force.y), ") at ", joint.points[first ? 0 : 1]});
         if (!js.moment.is_zero()) text += concat({", moment ", math(sign * js.moment)});
         line(concat({text, ": ", kJointTypeNames[static_cast<std::size_t>(joint.type)], " ", joint.name, ", from ",
-                     body_label(body_index(first ? joint.bodies[1] : joint.bodies[0]))}));
+                     body_label(system_.mechanism(), first ? joint.bodies[1] : joint.bodies[0])}));
       }
       for (const sym::Load& load : system_.loads()) {
         if (load.body != static_cast<int>(b)) continue;
         std::string text = "    ";
         if (!(load.force.x.is_zero() && load.force.y.is_zero()))
-          text += concat({"(", math(load.force.x), ", ", math(load.force.y), ")", at_point(b, load)});
+          text += concat({"(", math(load.force.x), ", ", math(load.force.y), ")", place(b, load)});
         if (!load.moment.is_zero()) text += concat({text.size() > 4 ? ", moment " : "moment ", math(load.moment)});
         line(concat({text, ": ", load.source}));
       }
@@ -286,7 +243,7 @@ class MechanismWriter {
     std::size_t row = 0;
     for (std::size_t b = 0; b < system_.bodies().size(); ++b) {
       blank();
-      line(concat({"  ", body_label(static_cast<int>(b)), ":"}));
+      line(concat({"  ", body_label(system_.mechanism(), static_cast<int>(b)), ":"}));
       for (std::size_t k = 0; k < system_.newton_euler()[b].rows.size(); ++k, ++row) {
         const EquationSides eq = equation_sides(case1.A[row], case1.B[row], unknowns, system_.table(), style_);
         lines(wrap("    ", eq.lhs + kBreakMark + " = " + eq.rhs, "        ", o_.width));
