@@ -1,7 +1,7 @@
 #pragma once
-// Pieces every writer of a mechanism's derivation uses alike (mechanism_latex
-// writer and mechanism_text): how a body is called, where a load acts, whether
-// anything ties the mechanism to the world, and a constraint's acceleration form.
+// Pieces every writer of a mechanism's derivation uses alike (mechanism_text,
+// mechanism_latex): how a body is called, where a load acts, whether anything ties the
+// mechanism to the world, and a constraint's acceleration form.
 #include <string>
 
 #include "core/style.hpp"
