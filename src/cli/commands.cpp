@@ -42,6 +42,7 @@ void register_commands(CLI::App& app) {
   register_bench(app);
   register_lesson(app);
   register_simulate(app);
+  register_mechanisms(app);
   refuse_empty_values(app);
 }
 

@@ -20,5 +20,6 @@ void register_render(CLI::App& app);
 void register_bench(CLI::App& app);
 void register_lesson(CLI::App& app);
 void register_simulate(CLI::App& app);
+void register_mechanisms(CLI::App& app);
 
 }  // namespace linkage::cli

@@ -212,7 +212,10 @@ toml::table parse_toml_file(const std::string& path, const std::string& origin) 
   if (!in) throw Error::invalid(origin, "cannot read '" + path + "': " + std::strerror(errno));
   std::ostringstream text;
   text << in.rdbuf();
-  const std::string toml_text = text.str();
+  return parse_toml_text(text.str(), path, origin);
+}
+
+toml::table parse_toml_text(std::string_view toml_text, const std::string& path, const std::string& origin) {
   if (const auto at = overly_nested_key(toml_text)) {
     long line = 1, column = 1;
     for (std::size_t i = 0; i < *at; ++i) {

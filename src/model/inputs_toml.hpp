@@ -3,6 +3,7 @@
 #include <toml++/toml.h>
 
 #include <string>
+#include <string_view>
 
 #include "model/inputs.hpp"
 
@@ -16,5 +17,11 @@ void apply_toml(Inputs& inputs, const toml::table& table, const std::string& fil
 /// Parses a TOML file, turning a syntax error into Error::input with file:line:column
 /// and an unreadable file into Error::input naming `origin`.
 [[nodiscard]] toml::table parse_toml_file(const std::string& path, const std::string& origin);
+
+/// Parses TOML text read from `path` (a file name or a built-in's name) as
+/// parse_toml_file does: a syntax error or an overly nested key is Error::input with
+/// path:line:column.
+[[nodiscard]] toml::table parse_toml_text(std::string_view toml_text, const std::string& path,
+                                          const std::string& origin);
 
 }  // namespace linkage

@@ -132,6 +132,7 @@ struct Mechanism {
   std::vector<AppliedForce> forces;
   std::vector<AppliedTorque> torques;
   std::vector<InitialValue> initial;
+  SourcePos initial_pos;                 // the [initial] table (the file's start when absent)
   std::vector<std::string> independent;  // loop closure keeps these coordinates
   SourcePos independent_pos;
 

@@ -1,0 +1,46 @@
+#pragma once
+// Reading a mechanism file (mechanisms/README.md is the format): every structural mistake
+// is one line "FILE:LINE:COLUMN: what is wrong; valid: ..." thrown as Error::input.
+// Expressions are kept as text; the symbolic layer parses them and checks their values.
+#include <filesystem>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "model/mechanism.hpp"
+
+namespace linkage {
+
+/// Reads a mechanism from TOML text; `source_name` is the file name the positions name.
+/// Calls validate_initial.
+[[nodiscard]] Mechanism read_mechanism(std::string_view toml_text, const std::string& source_name);
+/// Reads a mechanism file (a regular file; otherwise Error::invalid("mechanism", ...)).
+[[nodiscard]] Mechanism read_mechanism_file(const std::filesystem::path& path);
+/// A shipped mechanism by NAME (no '/' and no ".toml": built into the program), or else a
+/// file path.
+[[nodiscard]] Mechanism load_mechanism(const std::string& name_or_file);
+/// The shipped mechanisms' names, sorted.
+[[nodiscard]] std::vector<std::string> shipped_mechanism_names();
+
+/// Checks [initial] against the spanning tree: every key a generalized coordinate or
+/// rate, every coordinate given (rates default to 0), `independent` naming coordinates.
+void validate_initial(const Mechanism& mechanism);
+
+/// `--set NAME=VALUE`: a parameter ("L") or an initial coordinate or rate ("2.theta",
+/// "1.x_dot", "slider.s"); `origin` says where the setting came from. Throws
+/// Error::invalid("set", ...) for an unknown name or a value that is not finite.
+void set_value(Mechanism& mechanism, const std::string& name, double value, const std::string& origin);
+
+/// One key of a mechanism file: the table it belongs to, its name, type, default and
+/// meaning. The reader accepts exactly these and mechanisms/README.md documents them.
+struct MechanismKey {
+  std::string_view table;  // "top level", "[[body]]", "[initial] body", ...
+  std::string_view name;
+  std::string_view type;
+  std::string_view default_text;
+  std::string_view doc;
+};
+[[nodiscard]] std::span<const MechanismKey> mechanism_keys();
+
+}  // namespace linkage

@@ -1,0 +1,21 @@
+#pragma once
+// "Did you mean ...?" and name lists for the mechanism reader's messages.
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace linkage {
+
+/// The candidate closest to `word` (edits ignoring case, a swap of neighbours counting as
+/// one), if it is close enough to be a typo: at most max(2, |word| / 3) edits.
+[[nodiscard]] std::optional<std::string> closest_name(std::string_view word,
+                                                      const std::vector<std::string>& candidates);
+
+/// "a, b, c", or `none` when the list is empty.
+[[nodiscard]] std::string join_names(const std::vector<std::string>& names, std::string_view none = "none");
+
+/// " (did you mean 'x'?)" when a candidate is close, else "".
+[[nodiscard]] std::string did_you_mean(std::string_view word, const std::vector<std::string>& candidates);
+
+}  // namespace linkage
