@@ -7,6 +7,8 @@
 #include "core/error.hpp"
 #include "report/json_report.hpp"
 #include "report/latex_report.hpp"
+#include "report/code_export.hpp"
+#include "report/mechanism_latex.hpp"
 #include "report/mechanism_solution.hpp"
 #include "report/mechanism_text.hpp"
 #include "model/mechanism_toml.hpp"
@@ -64,10 +66,16 @@ void run_mechanism(const SolveOptions& options, const std::vector<int>& cases, c
   const MechanismSolution solution = work_out_mechanism(mechanism, case_ids(cases));
   if (options.format == "json")
     write_stdout(mechanism_json(solution));
-  else if (options.format == "text")
-    write_stdout(mechanism_text(solution, report));
+  else if (options.format == "latex")
+    write_stdout(mechanism_latex(solution, report));
+  else if (options.format == "markdown")
+    write_stdout(mechanism_markdown(solution, report));
+  else if (options.format == "matlab")
+    write_stdout(matlab_export(solution));
+  else if (options.format == "python")
+    write_stdout(python_export(solution));
   else
-    throw Error::input("--format: '" + options.format + "' with --mechanism is not available yet; valid: text, json");
+    write_stdout(mechanism_text(solution, report));
 }
 
 std::vector<int> parse_case_selection(const std::string& which) {
@@ -92,15 +100,18 @@ void write_stdout(const std::string& text) {
 void run_solve(const SolveOptions& options) {
   const std::vector<int> cases = parse_case_selection(options.which);
   const std::string& format = options.format;
-  if (format != "text" && format != "latex" && format != "markdown" && format != "json")
-    throw Error::input("--format: '" + format + "' is not a format; valid: text, latex, markdown, json");
+  if (format != "text" && format != "latex" && format != "markdown" && format != "json" && format != "matlab" &&
+      format != "python")
+    throw Error::input("--format: '" + format +
+                       "' is not a format; valid: text, latex, markdown, json, matlab, python");
   if (options.ascii && options.unicode) throw Error::input("--ascii and --unicode exclude each other; give one");
   ReportOptions report;
   report.digits = parse_digits(options.digits);
   report.text_style = options.ascii     ? expr::Style::ascii
                       : options.unicode ? expr::Style::unicode
                                         : text_style_from_locale();
-  if (!options.mechanism.empty() || !options.settings.empty()) {
+  // The general procedure: any mechanism, --set, and the code exports.
+  if (!options.mechanism.empty() || !options.settings.empty() || format == "matlab" || format == "python") {
     run_mechanism(options, cases, report);
     return;
   }
@@ -131,7 +142,9 @@ void register_solve(CLI::App& app) {
       ->type_name("1|2|3|all");
   sub->add_option("--format", options->format,
                   "Output: text (aligned, 80 columns), latex (amsmath fragment: bmatrix, align*), markdown "
-                  "(headings, tables, $$ math blocks) or json (machine-readable, full precision) (default text)")
+                  "(headings, tables, $$ math blocks), json (machine-readable, full precision), or code to continue "
+                  "with: matlab (a function file, save it as NAME.m with NAME the mechanism's name, - for _) or "
+                  "python (NumPy); each has a function per case returning A, B and the solution (default text)")
       ->type_name("FORMAT");
   sub->add_option("--digits", options->digits,
                   "Significant digits of the numbers in text, latex and markdown, 1 to 17; json always prints "
