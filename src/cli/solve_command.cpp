@@ -5,13 +5,13 @@
 #include "cli/commands.hpp"
 #include "cli/input_options.hpp"
 #include "core/error.hpp"
+#include "model/mechanism_toml.hpp"
+#include "report/code_export.hpp"
 #include "report/json_report.hpp"
 #include "report/latex_report.hpp"
-#include "report/code_export.hpp"
 #include "report/mechanism_latex.hpp"
 #include "report/mechanism_solution.hpp"
 #include "report/mechanism_text.hpp"
-#include "model/mechanism_toml.hpp"
 #include "report/text_report.hpp"
 #include "report/worked_solution.hpp"
 
@@ -31,6 +31,11 @@ struct SolveOptions {
   CLI::Option* mechanism_option = nullptr;
   std::vector<std::string> settings;  // --set NAME=VALUE, in order
 };
+
+void write_stdout(const std::string& text) {
+  if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0)
+    throw Error::failure("cannot write the worked solution to standard output");
+}
 
 // --set NAME=VALUE applied in order; each names itself in errors.
 void apply_settings(Mechanism& mechanism, const std::vector<std::string>& settings) {
@@ -57,7 +62,8 @@ std::vector<CaseId> case_ids(const std::vector<int>& numbers) {
 void run_mechanism(const SolveOptions& options, const std::vector<int>& cases, const ReportOptions& report) {
   for (std::size_t i = 0; i < kInputKeys.size(); ++i)
     if (options.inputs.options[i] != nullptr && options.inputs.options[i]->count() > 0)
-      throw Error::input(flag_name(kInputKeys[i].key) + " is a flag of the built-in homework; with --mechanism use --set " +
+      throw Error::input(flag_name(kInputKeys[i].key) +
+                         " is a flag of the built-in homework; with --mechanism use --set " +
                          std::string(kInputKeys[i].key) + "=VALUE");
   if (options.inputs.config_option != nullptr && options.inputs.config_option->count() > 0)
     throw Error::input("--config is for the built-in homework; with --mechanism the file is the mechanism itself");
@@ -90,11 +96,6 @@ int parse_digits(const std::string& text) {
     throw Error::input("--digits: '" + text + "' is out of range; valid: a whole number from " +
                        std::to_string(kMinDigits) + " to " + std::to_string(kMaxDigits));
   return static_cast<int>(value);
-}
-
-void write_stdout(const std::string& text) {
-  if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0)
-    throw Error::failure("cannot write the worked solution to standard output");
 }
 
 void run_solve(const SolveOptions& options) {
