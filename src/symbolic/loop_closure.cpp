@@ -89,7 +89,12 @@ ClosedState close_loops(const System& system, const GiNaC::exmap& state) {
     for (std::size_t i : independent)
       rhs(r) -= value(jacobian[static_cast<std::size_t>(r)][i]) * to_double(out.state[coordinates[i].symbols.q_dot]);
   }
-  const Eigen::VectorXd rates = Jd.fullPivLu().solve(rhs);
+  const Eigen::FullPivLU<Eigen::MatrixXd> rate_lu(Jd);
+  if (!rate_lu.isInvertible())
+    throw Error::input(where(mechanism.independent_pos) + "the loop through " + loop_names +
+                       " is at a change point (its links in line) at the independent coordinates kept, so its "
+                       "rates are not determined; valid: independent values away from that position");
+  const Eigen::VectorXd rates = rate_lu.solve(rhs);
   for (Eigen::Index c = 0; c < n; ++c)
     out.state[coordinates[dependent[static_cast<std::size_t>(c)]].symbols.q_dot] = GiNaC::numeric(rates(c));
 

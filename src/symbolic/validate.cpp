@@ -137,8 +137,9 @@ void validate_constraints(const System& system, const GiNaC::exmap& state) {
       std::string earlier;
       for (std::size_t k = 0; k < j; ++k) earlier += (earlier.empty() ? "" : ", ") + m.joints[k].name;
       throw Error::input(where(m.joints[j].pos) + "joint " + m.joints[j].name +
-                         " is redundant: it constrains nothing that joints " + earlier +
-                         " do not already fix at the initial state; valid: remove it, or change the geometry");
+                         " is redundant at the initial state: joints " + earlier +
+                         " already fix what it constrains (one joint too many, or links in line at a change "
+                         "point); valid: remove the joint, or start away from that position");
     }
     rank = new_rank;
     rows = std::move(more);

@@ -11,6 +11,7 @@
 #include "formulations/case_numbers.hpp"
 #include "formulations/case_system.hpp"
 #include "model/kinematics.hpp"
+#include "model/mechanism_toml.hpp"
 #include "support/mechanisms_in_code.hpp"
 
 namespace linkage {
@@ -87,7 +88,11 @@ std::vector<built::Named> energy_mechanisms() {
           {"floating_collar", built::floating_collar},
           {"four_bar_loaded", built::four_bar_loaded},
           {"four_bar", built::four_bar},
-          {"slider_crank", built::slider_crank}};
+          {"slider_crank", built::slider_crank},
+          {"shipped_slider_crank", [] { return load_mechanism("slider-crank"); }},
+          {"shipped_four_bar", [] { return load_mechanism("four-bar"); }},
+          {"shipped_spring_pendulum", [] { return load_mechanism("spring-pendulum"); }},
+          {"shipped_triple_pendulum", [] { return load_mechanism("triple-pendulum"); }}};
 }
 
 INSTANTIATE_TEST_SUITE_P(Mechanisms, EnergyRate, testing::ValuesIn(energy_mechanisms()), param_name);

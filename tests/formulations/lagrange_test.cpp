@@ -13,6 +13,7 @@
 
 #include "formulations/case_numbers.hpp"
 #include "formulations/case_system.hpp"
+#include "model/mechanism_toml.hpp"
 #include "support/mechanisms_in_code.hpp"
 #include "symbolic/energy.hpp"
 
@@ -78,7 +79,13 @@ std::vector<built::Named> tree_mechanisms() {
           {"arm_collar", built::arm_collar},
           {"reversed_joints", built::reversed_joints},
           {"floating_pair", built::floating_pair},
-          {"floating_collar", built::floating_collar}};
+          {"floating_collar", built::floating_collar},
+          // The shipped tree mechanisms, as the program reads them.
+          {"shipped_two_blocks", [] { return load_mechanism("two-blocks"); }},
+          {"shipped_unequal_blocks", [] { return load_mechanism("unequal-blocks"); }},
+          {"shipped_double_pendulum", [] { return load_mechanism("double-pendulum"); }},
+          {"shipped_triple_pendulum", [] { return load_mechanism("triple-pendulum"); }},
+          {"shipped_spring_pendulum", [] { return load_mechanism("spring-pendulum"); }}};
 }
 
 class Lagrange : public testing::TestWithParam<built::Named> {};
