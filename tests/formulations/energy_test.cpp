@@ -91,7 +91,6 @@ std::vector<built::Named> energy_mechanisms() {
           {"slider_crank", built::slider_crank},
           {"shipped_slider_crank", [] { return load_mechanism("slider-crank"); }},
           {"shipped_four_bar", [] { return load_mechanism("four-bar"); }},
-          {"shipped_spring_pendulum", [] { return load_mechanism("spring-pendulum"); }},
           {"shipped_triple_pendulum", [] { return load_mechanism("triple-pendulum"); }}};
 }
 
