@@ -483,17 +483,16 @@ class MechanismReader {
     if (body.shape == Shape::rod) takes = {"length"};
     if (body.shape == Shape::disc) takes = {"radius"};
     const std::string shape = kShapeNames[static_cast<std::size_t>(body.shape)];
-    const std::string article = body.shape == Shape::rectangle ? "an " : "a ";
     for (const Size& size : kSizes) {
       const bool used = std::find(takes.begin(), takes.end(), size.key) != takes.end();
       const toml::node* node = table.get(size.key);
       if (!used && node != nullptr)
-        fail(node->source(), context + ": " + article + shape + " has no " + q(size.key) + "; " + article + shape +
-                                 " takes " + (takes.empty() ? std::string("no sizes") : join_names(takes)));
+        fail(node->source(), context + ": a " + shape + " has no " + q(size.key) + "; a " + shape + " takes " +
+                                 (takes.empty() ? std::string("no sizes") : join_names(takes)));
       if (!used) continue;
       if (node == nullptr)
-        fail(table.source(), context + ": " + article + shape + " needs " + q(size.key) + "; " + article + shape +
-                                 " takes " + join_names(takes));
+        fail(table.source(),
+             context + ": a " + shape + " needs " + q(size.key) + "; a " + shape + " takes " + join_names(takes));
       const ReadQuantity read = quantity_of(*node, q(size.key), context);
       require_bound(read, size.key, context, true, "m");
       body.*size.member = read.quantity;
