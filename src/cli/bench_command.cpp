@@ -17,6 +17,7 @@
 #ifdef LINKAGE_WITH_BENCH
 #include "bench/accuracy.hpp"
 #include "bench/accuracy_report.hpp"
+#include "bench/derive_bench.hpp"
 #include "bench/render_bench.hpp"
 #include "bench/stress.hpp"
 #include "bench/targets.hpp"
@@ -172,17 +173,32 @@ void add_render(CLI::App* bench) {
   });
 }
 
+void add_derive(CLI::App* bench) {
+  auto flags = std::make_shared<bench::DeriveBenchOptions>();
+  CLI::App* sub = bench->add_subcommand(
+      "derive", "Symbolic derivation time per shipped mechanism, and the homework's solve against the closed form");
+  sub->add_option("--out", flags->out, "Folder for derive.csv and derive.md (default bench-derive)")->type_name("DIR");
+  sub->add_flag("--quick", flags->quick, "One or two repeats: checks the report, not the timings (CI)");
+  add_runner(sub, [flags] {
+    const bench::DeriveBenchResult result = bench::run_derive_bench(*flags);
+    for (const std::string& line : result.lines) std::printf("%s\n", line.c_str());
+    for (const auto& file : result.files) std::printf("wrote %s\n", file.string().c_str());
+  });
+}
+
 #endif  // LINKAGE_WITH_BENCH
 
 }  // namespace
 
 void register_bench(CLI::App& app) {
-  CLI::App* bench = app.add_subcommand("bench", "Measure speed and accuracy: work-precision, stability, rendering");
+  CLI::App* bench =
+      app.add_subcommand("bench", "Measure speed and accuracy: work-precision, stability, rendering, derivation");
 #ifdef LINKAGE_WITH_BENCH
   bench->require_subcommand(1);
   add_accuracy(bench);
   add_stress(bench);
   add_render(bench);
+  add_derive(bench);
 #else
   add_runner(bench, [] {
     throw Error::input("bench: this build has no benchmarks; configure with -DLINKAGE_BUILD_BENCH=ON");

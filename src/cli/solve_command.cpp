@@ -5,8 +5,13 @@
 #include "cli/commands.hpp"
 #include "cli/input_options.hpp"
 #include "core/error.hpp"
+#include "model/mechanism_toml.hpp"
+#include "report/code_export.hpp"
 #include "report/json_report.hpp"
 #include "report/latex_report.hpp"
+#include "report/mechanism_latex.hpp"
+#include "report/mechanism_solution.hpp"
+#include "report/mechanism_text.hpp"
 #include "report/text_report.hpp"
 #include "report/worked_solution.hpp"
 
@@ -22,7 +27,62 @@ struct SolveOptions {
   std::string digits = "6";
   bool ascii = false;
   bool unicode = false;
+  std::string mechanism;
+  CLI::Option* mechanism_option = nullptr;
+  std::vector<std::string> settings;  // --set NAME=VALUE, in order
 };
+
+void write_stdout(const std::string& text) {
+  if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0)
+    throw Error::failure("cannot write the worked solution to standard output");
+}
+
+// --set NAME=VALUE applied in order; each names itself in errors.
+void apply_settings(Mechanism& mechanism, const std::vector<std::string>& settings) {
+  for (const std::string& setting : settings) {
+    const auto equals = setting.find('=');
+    if (equals == std::string::npos || equals == 0)
+      throw Error::input("--set: '" + setting + "' is not NAME=VALUE; e.g. --set L=0.4 or --set 2.theta=0.3");
+    const std::string name = setting.substr(0, equals);
+    const double value = parse_number(setting.substr(equals + 1), "--set " + name, "");
+    try {
+      set_value(mechanism, name, value, "--set " + setting);
+    } catch (const Error& e) {
+      throw Error::input(describe(e));
+    }
+  }
+}
+
+std::vector<CaseId> case_ids(const std::vector<int>& numbers) {
+  std::vector<CaseId> ids;
+  for (int n : numbers) ids.push_back(static_cast<CaseId>(n));
+  return ids;
+}
+
+void run_mechanism(const SolveOptions& options, const std::vector<int>& cases, const ReportOptions& report) {
+  for (std::size_t i = 0; i < kInputKeys.size(); ++i)
+    if (options.inputs.options[i] != nullptr && options.inputs.options[i]->count() > 0)
+      throw Error::input(flag_name(kInputKeys[i].key) +
+                         " is a flag of the built-in homework; with --mechanism use --set " +
+                         std::string(kInputKeys[i].key) + "=VALUE");
+  if (options.inputs.config_option != nullptr && options.inputs.config_option->count() > 0)
+    throw Error::input("--config is for the built-in homework; with --mechanism the file is the mechanism itself");
+  Mechanism mechanism = load_mechanism(options.mechanism.empty() ? "two-blocks" : options.mechanism);
+  apply_settings(mechanism, options.settings);
+  const MechanismSolution solution = work_out_mechanism(mechanism, case_ids(cases));
+  if (options.format == "json")
+    write_stdout(mechanism_json(solution));
+  else if (options.format == "latex")
+    write_stdout(mechanism_latex(solution, report));
+  else if (options.format == "markdown")
+    write_stdout(mechanism_markdown(solution, report));
+  else if (options.format == "matlab")
+    write_stdout(matlab_export(solution));
+  else if (options.format == "python")
+    write_stdout(python_export(solution));
+  else
+    write_stdout(mechanism_text(solution, report));
+}
 
 std::vector<int> parse_case_selection(const std::string& which) {
   if (which == "all") return {1, 2, 3};
@@ -38,22 +98,24 @@ int parse_digits(const std::string& text) {
   return static_cast<int>(value);
 }
 
-void write_stdout(const std::string& text) {
-  if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0)
-    throw Error::failure("cannot write the worked solution to standard output");
-}
-
 void run_solve(const SolveOptions& options) {
   const std::vector<int> cases = parse_case_selection(options.which);
   const std::string& format = options.format;
-  if (format != "text" && format != "latex" && format != "markdown" && format != "json")
-    throw Error::input("--format: '" + format + "' is not a format; valid: text, latex, markdown, json");
+  if (format != "text" && format != "latex" && format != "markdown" && format != "json" && format != "matlab" &&
+      format != "python")
+    throw Error::input("--format: '" + format +
+                       "' is not a format; valid: text, latex, markdown, json, matlab, python");
   if (options.ascii && options.unicode) throw Error::input("--ascii and --unicode exclude each other; give one");
   ReportOptions report;
   report.digits = parse_digits(options.digits);
   report.text_style = options.ascii     ? expr::Style::ascii
                       : options.unicode ? expr::Style::unicode
                                         : text_style_from_locale();
+  // The general procedure: any mechanism, --set, and the code exports.
+  if (!options.mechanism.empty() || !options.settings.empty() || format == "matlab" || format == "python") {
+    run_mechanism(options, cases, report);
+    return;
+  }
   const Inputs inputs = resolve_inputs(options.inputs);
   const WorkedSolution worked = work_out(inputs, cases);
   if (format == "json")
@@ -81,7 +143,9 @@ void register_solve(CLI::App& app) {
       ->type_name("1|2|3|all");
   sub->add_option("--format", options->format,
                   "Output: text (aligned, 80 columns), latex (amsmath fragment: bmatrix, align*), markdown "
-                  "(headings, tables, $$ math blocks) or json (machine-readable, full precision) (default text)")
+                  "(headings, tables, $$ math blocks), json (machine-readable, full precision), or code to continue "
+                  "with: matlab (a function file, save it as NAME.m with NAME the mechanism's name, - for _) or "
+                  "python (NumPy); each has a function per case returning A, B and the solution (default text)")
       ->type_name("FORMAT");
   sub->add_option("--digits", options->digits,
                   "Significant digits of the numbers in text, latex and markdown, 1 to 17; json always prints "
@@ -91,6 +155,17 @@ void register_solve(CLI::App& app) {
                 "Text format in plain ASCII (th1'', x1'') whatever the locale (default: Unicode symbols when "
                 "the locale uses UTF-8, else ASCII)");
   sub->add_flag("--unicode", options->unicode, "Text format with Unicode symbols whatever the locale");
+  options->mechanism_option =
+      sub->add_option("--mechanism", options->mechanism,
+                      "A shipped mechanism by name (linkage mechanisms lists them) or a mechanism file (.toml); "
+                      "default: the homework, two blocks joined by a pin")
+          ->type_name("NAME|FILE");
+  sub->add_option("--set", options->settings,
+                  "Set a parameter or an initial coordinate of the mechanism, repeatable: --set L=0.4 --set "
+                  "2.theta=0.3")
+      ->type_name("NAME=VALUE")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   add_input_options(sub, options->inputs);
   add_runner(sub, [options] { run_solve(*options); });
 }

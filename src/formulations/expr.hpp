@@ -10,6 +10,8 @@
 #include <string>
 #include <type_traits>
 
+#include "core/style.hpp"
+
 namespace linkage::expr {
 
 /// Values every entry may use: parameters and the trigonometry of the two angles.
@@ -19,7 +21,7 @@ struct Env {
   double w1 = 0, w2 = 0;                  // theta1_dot, theta2_dot
 };
 
-enum class Style { unicode, ascii, latex };
+using Style = linkage::Style;
 
 /// Binding strength, for parentheses: a sum inside a product needs them.
 enum class Prec { sum = 1, product = 2, atom = 3 };

@@ -74,22 +74,29 @@ SpanningTree spanning_tree(const Mechanism& mechanism) {
     const Body& body = mechanism.bodies[i];
     const TreeBody& node = tree.bodies[i];
     const int index = static_cast<int>(i);
+    // A point mass has no angle: it adds no theta.
+    const bool rotates = body_rotates(body);
     if (node.floating) {
       for (CoordinateKind kind : {CoordinateKind::x, CoordinateKind::y, CoordinateKind::theta})
-        tree.coordinates.push_back({kind, index, -1, body.name + "." + coordinate_kind_name(kind)});
+        if (kind != CoordinateKind::theta || rotates)
+          tree.coordinates.push_back({kind, index, -1, body.name + "." + coordinate_kind_name(kind)});
       continue;
     }
     const Joint& joint = mechanism.joints[static_cast<std::size_t>(node.joint)];
-    if (joint.type == JointType::pin)
-      tree.coordinates.push_back({CoordinateKind::theta, index, -1, body.name + ".theta"});
-    else
+    if (joint.type == JointType::pin) {
+      if (rotates) tree.coordinates.push_back({CoordinateKind::theta, index, -1, body.name + ".theta"});
+    } else
       tree.coordinates.push_back({CoordinateKind::s, index, node.joint, joint.name + ".s"});
   }
   return tree;
 }
 
+bool body_rotates(const Body& body) { return body.shape != Shape::point || body.inertia.has_value(); }
+
 int degrees_of_freedom(const Mechanism& mechanism) {
-  return 3 * static_cast<int>(mechanism.bodies.size()) - 2 * static_cast<int>(mechanism.joints.size());
+  int dof = 0;
+  for (const Body& body : mechanism.bodies) dof += body_rotates(body) ? 3 : 2;
+  return dof - 2 * static_cast<int>(mechanism.joints.size());
 }
 
 }  // namespace linkage

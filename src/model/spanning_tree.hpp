@@ -2,7 +2,7 @@
 // The spanning tree of a mechanism and its generalized coordinates (the contract in
 // mechanisms/README.md): grown breadth first from the ground, taking joints in file
 // order; a body the ground does not reach starts its own tree as a floating base (x, y,
-// theta), the first such body in file order. A body reached through a pin adds its
+// theta; a point mass has no theta), the first such body in file order. A body reached through a pin adds its
 // absolute angle theta, one reached through a slider adds the slider's s. A joint outside
 // the tree closes a loop.
 #include <string>
@@ -43,8 +43,11 @@ struct SpanningTree {
 /// "x", "y", "theta", "s".
 [[nodiscard]] const char* coordinate_kind_name(CoordinateKind kind);
 
-/// Degrees of freedom when no constraint is redundant: 3 per body, minus 2 per pin or
-/// slider.
+/// Whether a body has an angle: every shape but a point mass without an inertia.
+[[nodiscard]] bool body_rotates(const Body& body);
+
+/// Degrees of freedom when no constraint is redundant: 3 per body (2 per point mass),
+/// minus 2 per pin or slider.
 [[nodiscard]] int degrees_of_freedom(const Mechanism& mechanism);
 
 }  // namespace linkage

@@ -73,7 +73,7 @@ ClipRenderer::ClipRenderer(const Params& params, const Motion& motion, const Ren
     : params_(params), motion_(motion), settings_(settings), theme_(std::move(theme)) {
   if (motion_.samples.empty()) throw Error::failure("nothing to draw: the motion has no samples");
   style_.theme = &theme_;
-  style_.u = Style::unit_for(settings_.width, settings_.height);
+  style_.u = DrawStyle::unit_for(settings_.width, settings_.height);
   const bool follow = settings_.camera == CameraMode::follow;
   scene_options_ = scene_options_for(params_, motion_, settings_.elements, follow);
   base_camera_ = first_camera(params_, motion_, settings_, scene_options_);

@@ -89,7 +89,7 @@ class ClipRenderer {
   const Motion& motion_;
   RenderSettings settings_;
   Theme theme_;
-  Style style_;
+  DrawStyle style_;
   SceneOptions scene_options_;
   Camera base_camera_;
   GridSpec grid_;

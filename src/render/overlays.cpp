@@ -31,7 +31,7 @@ void rounded_rect(cairo_t* cr, const Rect& r, double radius) {
   cairo_close_path(cr);
 }
 
-void paint_panel(cairo_t* cr, const Style& style, const Rect& r) {
+void paint_panel(cairo_t* cr, const DrawStyle& style, const Rect& r) {
   // A whole number of pixels wide, inside the rectangle, on pixel boundaries.
   const double edge = std::max(1.0, std::round(0.6 * style.u));
   const Rect inner{r.x + 0.5 * edge, r.y + 0.5 * edge, r.width - edge, r.height - edge};
@@ -59,7 +59,7 @@ void use_minus_signs(std::array<char, N>& buffer) {
   buffer[out] = '\0';
 }
 
-double grid_line_width(const Style& style) { return std::max(1.0, std::round(style.grid_width())); }
+double grid_line_width(const DrawStyle& style) { return std::max(1.0, std::round(style.grid_width())); }
 
 // A pixel coordinate moved to where a line of `width` whole pixels draws crisply.
 double crisp(double pixel, double width) {
@@ -75,12 +75,13 @@ void for_each_grid_line(double low, double high, double anchor, double spacing, 
   for (long k = first; k <= last && k - first < 1000; ++k) line(k, anchor + static_cast<double>(k) * spacing);
 }
 
-constexpr double kLegendGlyphWidth = 30;  // in units of Style::u
+constexpr double kLegendGlyphWidth = 30;  // in units of DrawStyle::u
 constexpr double kTitleHalo = 0.3;        // halo width over font size
 
 // The widest glyph-and-name of the legend's rows, over rows with a note (where the
 // notes column starts) or over all rows.
-double legend_names_width(cairo_t* cr, const Style& style, const std::vector<LegendRow>& rows, bool with_notes_only) {
+double legend_names_width(cairo_t* cr, const DrawStyle& style, const std::vector<LegendRow>& rows,
+                          bool with_notes_only) {
   const text::Font font{style.text_size(), false};
   double names = 0;
   for (const LegendRow& row : rows) {
@@ -97,7 +98,7 @@ RoundLength grid_spacing_for(const Camera& camera, int width, int height) {
   return round_length_at_least(std::min(width, height) / camera.scale() / 10.0);
 }
 
-void paint_background(cairo_t* cr, const Style& style, int width, int height) {
+void paint_background(cairo_t* cr, const DrawStyle& style, int width, int height) {
   cairo_save(cr);
   cairo_set_operator(cr, CAIRO_OPERATOR_SOURCE);
   set_colour(cr, style.theme->background);
@@ -106,7 +107,8 @@ void paint_background(cairo_t* cr, const Style& style, int width, int height) {
   cairo_restore(cr);
 }
 
-void paint_grid(cairo_t* cr, const Style& style, const Camera& camera, const GridSpec& grid, int width, int height) {
+void paint_grid(cairo_t* cr, const DrawStyle& style, const Camera& camera, const GridSpec& grid, int width,
+                int height) {
   const View visible = camera.visible();
   const double spacing = grid.spacing.metres();
   const double line_width = grid_line_width(style);
@@ -126,7 +128,7 @@ void paint_grid(cairo_t* cr, const Style& style, const Camera& camera, const Gri
   cairo_stroke(cr);
 }
 
-void paint_axes(cairo_t* cr, const Style& style, const Camera& camera, const GridSpec& grid, int width, int height,
+void paint_axes(cairo_t* cr, const DrawStyle& style, const Camera& camera, const GridSpec& grid, int width, int height,
                 const std::vector<Rect>& avoid) {
   const View visible = camera.visible();
   const double spacing = grid.spacing.metres();
@@ -193,7 +195,7 @@ void paint_axes(cairo_t* cr, const Style& style, const Camera& camera, const Gri
   draw_axis(false, ticks, grid.relative ? "\u0394y" : "y");
 }
 
-TitleLayout title_layout(cairo_t* cr, const Style& style, const std::string& title, int width) {
+TitleLayout title_layout(cairo_t* cr, const DrawStyle& style, const std::string& title, int width) {
   if (title.empty()) return {};
   text::Font font{style.title_size(), true};
   const double room = 0.6 * width;
@@ -206,7 +208,7 @@ TitleLayout title_layout(cairo_t* cr, const Style& style, const std::string& tit
           font.size};
 }
 
-void paint_title(cairo_t* cr, const Style& style, const std::string& title, const TitleLayout& layout) {
+void paint_title(cairo_t* cr, const DrawStyle& style, const std::string& title, const TitleLayout& layout) {
   if (layout.rect.empty()) return;
   const text::Font font{layout.font_size, true};
   const text::Metrics m = text::metrics(cr, font);
@@ -215,7 +217,7 @@ void paint_title(cairo_t* cr, const Style& style, const std::string& title, cons
                        style.theme->background, halo);
 }
 
-Rect legend_rect(cairo_t* cr, const Style& style, const std::vector<LegendRow>& rows, int height) {
+Rect legend_rect(cairo_t* cr, const DrawStyle& style, const std::vector<LegendRow>& rows, int height) {
   if (rows.empty()) return {};
   const text::Font font{style.text_size(), false};
   const double u = style.u;
@@ -229,7 +231,7 @@ Rect legend_rect(cairo_t* cr, const Style& style, const std::vector<LegendRow>& 
   return snapped(style.padding(), height - style.padding() - box_height, inner_width + 2 * 10 * u, box_height);
 }
 
-void paint_legend(cairo_t* cr, const Style& style, const std::vector<LegendRow>& rows, const Rect& rect) {
+void paint_legend(cairo_t* cr, const DrawStyle& style, const std::vector<LegendRow>& rows, const Rect& rect) {
   if (rect.empty()) return;
   paint_panel(cr, style, rect);
   const Theme& theme = *style.theme;
@@ -277,7 +279,7 @@ void paint_legend(cairo_t* cr, const Style& style, const std::vector<LegendRow>&
   }
 }
 
-Rect scale_bar_rect(cairo_t* cr, const Style& style, const std::string& label, double length_px, int width,
+Rect scale_bar_rect(cairo_t* cr, const DrawStyle& style, const std::string& label, double length_px, int width,
                     int height) {
   const text::Font font{style.text_size(), false};
   const text::Metrics m = text::metrics(cr, font);
@@ -288,7 +290,8 @@ Rect scale_bar_rect(cairo_t* cr, const Style& style, const std::string& label, d
   return snapped(width - style.padding() - box_width, height - style.padding() - box_height, box_width, box_height);
 }
 
-void paint_scale_bar(cairo_t* cr, const Style& style, const std::string& label, double length_px, const Rect& rect) {
+void paint_scale_bar(cairo_t* cr, const DrawStyle& style, const std::string& label, double length_px,
+                     const Rect& rect) {
   paint_panel(cr, style, rect);
   const text::Font font{style.text_size(), false};
   const text::Metrics m = text::metrics(cr, font);
@@ -328,10 +331,10 @@ void format_hud(HudText& hud, double t, double energy_error, double constraint_e
 namespace {
 constexpr const char* kEnergyLabel = "energy error";
 constexpr const char* kConstraintLabel = "constraint error";
-text::Font hud_time_font(const Style& style) { return {1.25 * style.text_size(), true}; }
+text::Font hud_time_font(const DrawStyle& style) { return {1.25 * style.text_size(), true}; }
 }  // namespace
 
-Rect hud_rect(cairo_t* cr, const Style& style, const HudText& hud, int width) {
+Rect hud_rect(cairo_t* cr, const DrawStyle& style, const HudText& hud, int width) {
   const text::Font font{style.text_size(), false};
   const double u = style.u;
   const double values =
@@ -344,7 +347,7 @@ Rect hud_rect(cairo_t* cr, const Style& style, const HudText& hud, int width) {
   return snapped(width - style.padding() - box_width, style.padding(), box_width, box_height);
 }
 
-void paint_hud(cairo_t* cr, const Style& style, const HudText& hud, const Rect& rect) {
+void paint_hud(cairo_t* cr, const DrawStyle& style, const HudText& hud, const Rect& rect) {
   paint_panel(cr, style, rect);
   const Theme& theme = *style.theme;
   const text::Font font{style.text_size(), false};

@@ -29,12 +29,12 @@ struct GridSpec {
 /// Grid lines about every tenth of the frame's smaller side, at a round spacing.
 [[nodiscard]] RoundLength grid_spacing_for(const Camera& camera, int width, int height);
 
-void paint_background(cairo_t* cr, const Style& style, int width, int height);
-void paint_grid(cairo_t* cr, const Style& style, const Camera& camera, const GridSpec& grid, int width, int height);
+void paint_background(cairo_t* cr, const DrawStyle& style, int width, int height);
+void paint_grid(cairo_t* cr, const DrawStyle& style, const Camera& camera, const GridSpec& grid, int width, int height);
 /// Coordinate ticks in metres along the bottom and left edges, at the grid lines, except
 /// where a label would touch one of the `avoid` rectangles (the panels). One tick per
 /// axis names it: "x = 1.2 m" (or "Δx = 0.1 m" counted from G for a following camera).
-void paint_axes(cairo_t* cr, const Style& style, const Camera& camera, const GridSpec& grid, int width, int height,
+void paint_axes(cairo_t* cr, const DrawStyle& style, const Camera& camera, const GridSpec& grid, int width, int height,
                 const std::vector<Rect>& avoid);
 
 /// Where the title goes (top left) and its font size, shrunk to fit the frame's width.
@@ -42,8 +42,8 @@ struct TitleLayout {
   Rect rect;
   double font_size = 0;
 };
-[[nodiscard]] TitleLayout title_layout(cairo_t* cr, const Style& style, const std::string& title, int width);
-void paint_title(cairo_t* cr, const Style& style, const std::string& title, const TitleLayout& layout);
+[[nodiscard]] TitleLayout title_layout(cairo_t* cr, const DrawStyle& style, const std::string& title, int width);
+void paint_title(cairo_t* cr, const DrawStyle& style, const std::string& title, const TitleLayout& layout);
 
 /// A legend row: a glyph in a colour, a name, and a note (an arrow scale).
 struct LegendRow {
@@ -54,13 +54,13 @@ struct LegendRow {
   std::string note;
 };
 /// The legend, bottom left.
-[[nodiscard]] Rect legend_rect(cairo_t* cr, const Style& style, const std::vector<LegendRow>& rows, int height);
-void paint_legend(cairo_t* cr, const Style& style, const std::vector<LegendRow>& rows, const Rect& rect);
+[[nodiscard]] Rect legend_rect(cairo_t* cr, const DrawStyle& style, const std::vector<LegendRow>& rows, int height);
+void paint_legend(cairo_t* cr, const DrawStyle& style, const std::vector<LegendRow>& rows, const Rect& rect);
 
 /// The scale bar, bottom right: `length_px` pixels labelled `label` ("10 cm").
-[[nodiscard]] Rect scale_bar_rect(cairo_t* cr, const Style& style, const std::string& label, double length_px,
+[[nodiscard]] Rect scale_bar_rect(cairo_t* cr, const DrawStyle& style, const std::string& label, double length_px,
                                   int width, int height);
-void paint_scale_bar(cairo_t* cr, const Style& style, const std::string& label, double length_px, const Rect& rect);
+void paint_scale_bar(cairo_t* cr, const DrawStyle& style, const std::string& label, double length_px, const Rect& rect);
 
 /// The HUD's text for one frame: fixed buffers, so a frame allocates nothing.
 struct HudText {
@@ -72,7 +72,7 @@ struct HudText {
 /// Fills the time and error fields.
 void format_hud(HudText& hud, double t, double energy_error, double constraint_error);
 /// The HUD panel, top right, wide enough for any values.
-[[nodiscard]] Rect hud_rect(cairo_t* cr, const Style& style, const HudText& hud, int width);
-void paint_hud(cairo_t* cr, const Style& style, const HudText& hud, const Rect& rect);
+[[nodiscard]] Rect hud_rect(cairo_t* cr, const DrawStyle& style, const HudText& hud, int width);
+void paint_hud(cairo_t* cr, const DrawStyle& style, const HudText& hud, const Rect& rect);
 
 }  // namespace linkage

@@ -22,7 +22,7 @@ const Rgba& arrow_colour(const Theme& theme, ArrowKind kind) {
   return theme.text;
 }
 
-void paint_arrow(cairo_t* cr, const Style& style, const Vec2& tail, const Vec2& tip, const Rgba& colour) {
+void paint_arrow(cairo_t* cr, const DrawStyle& style, const Vec2& tail, const Vec2& tip, const Rgba& colour) {
   const Vec2 along = tip - tail;
   const double length = along.norm();
   if (length < 0.5) return;  // under half a pixel: nothing to see
@@ -51,7 +51,7 @@ void paint_arrow(cairo_t* cr, const Style& style, const Vec2& tail, const Vec2& 
   cairo_fill(cr);
 }
 
-void paint_com_symbol(cairo_t* cr, const Style& style, const Vec2& at, double radius) {
+void paint_com_symbol(cairo_t* cr, const DrawStyle& style, const Vec2& at, double radius) {
   const Theme& theme = *style.theme;
   constexpr double pi = std::numbers::pi;
   cairo_new_path(cr);
@@ -71,7 +71,7 @@ void paint_com_symbol(cairo_t* cr, const Style& style, const Vec2& at, double ra
   cairo_stroke(cr);
 }
 
-void paint_pin(cairo_t* cr, const Style& style, const Vec2& at) {
+void paint_pin(cairo_t* cr, const DrawStyle& style, const Vec2& at) {
   const Theme& theme = *style.theme;
   cairo_new_path(cr);
   cairo_arc(cr, at.x(), at.y(), style.pin_radius(), 0, 2 * std::numbers::pi);
@@ -84,7 +84,7 @@ void paint_pin(cairo_t* cr, const Style& style, const Vec2& at) {
 
 namespace {
 
-void paint_trail(cairo_t* cr, const Style& style, const DrawList& list, const Camera& camera) {
+void paint_trail(cairo_t* cr, const DrawStyle& style, const DrawList& list, const Camera& camera) {
   // Segment by segment, each as opaque as its newer end is young; butt caps so
   // neighbouring segments do not double up where they meet.
   cairo_set_line_width(cr, style.trail_width());
@@ -99,7 +99,7 @@ void paint_trail(cairo_t* cr, const Style& style, const DrawList& list, const Ca
   }
 }
 
-void paint_blocks(cairo_t* cr, const Style& style, const DrawList& list, const Camera& camera) {
+void paint_blocks(cairo_t* cr, const DrawStyle& style, const DrawList& list, const Camera& camera) {
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   cairo_set_line_width(cr, style.edge_width());
   for (const BlockShape& block : list.blocks) {
@@ -119,13 +119,13 @@ void paint_blocks(cairo_t* cr, const Style& style, const DrawList& list, const C
   }
 }
 
-void paint_arrows(cairo_t* cr, const Style& style, const DrawList& list, const Camera& camera) {
+void paint_arrows(cairo_t* cr, const DrawStyle& style, const DrawList& list, const Camera& camera) {
   for (const Arrow& arrow : list.arrows)
     paint_arrow(cr, style, camera.to_pixels(arrow.tail), camera.to_pixels(arrow.tail + arrow.vector),
                 arrow_colour(*style.theme, arrow.kind));
 }
 
-void paint_markers(cairo_t* cr, const Style& style, const DrawList& list, const Camera& camera) {
+void paint_markers(cairo_t* cr, const DrawStyle& style, const DrawList& list, const Camera& camera) {
   for (const Marker& marker : list.markers) {
     const Vec2 at = camera.to_pixels(marker.at);
     switch (marker.kind) {
@@ -144,7 +144,7 @@ void paint_markers(cairo_t* cr, const Style& style, const DrawList& list, const 
 
 // True when the blocks are large enough on screen for names beside them (a fit camera
 // over a long fall shows them a few pixels long).
-bool room_for_labels(const Style& style, const DrawList& list, const Camera& camera) {
+bool room_for_labels(const DrawStyle& style, const DrawList& list, const Camera& camera) {
   if (list.blocks.empty()) return true;
   const BlockShape& block = list.blocks.front();
   const double length = (camera.to_pixels(block.corners[1]) - camera.to_pixels(block.corners[2])).norm();
@@ -183,7 +183,7 @@ TakenBoxes::Box text_box(cairo_t* cr, const text::Font& font, const Vec2& at, co
           at.y() + 0.5 * e.height + margin};
 }
 
-void paint_labels(cairo_t* cr, const Style& style, const DrawList& list, const Camera& camera) {
+void paint_labels(cairo_t* cr, const DrawStyle& style, const DrawList& list, const Camera& camera) {
   if (!room_for_labels(style, list, camera)) return;
   const Theme& theme = *style.theme;
   const Rgba halo = with_alpha(theme.background, 0.85);
@@ -241,7 +241,7 @@ void paint_labels(cairo_t* cr, const Style& style, const DrawList& list, const C
 
 }  // namespace
 
-void paint_scene(cairo_t* cr, const Style& style, const DrawList& list, const Camera& camera) {
+void paint_scene(cairo_t* cr, const DrawStyle& style, const DrawList& list, const Camera& camera) {
   cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
   paint_trail(cr, style, list, camera);
   paint_blocks(cr, style, list, camera);

@@ -1,7 +1,7 @@
 #pragma once
 // Draws a scene's draw list (world units) onto a Cairo context through a camera:
 // trail, blocks, arrows, centre-of-mass symbols, the pin, then labels. Sizes of lines
-// and marks come from the Style, not from the world scale, so they stay readable at
+// and marks come from the DrawStyle, not from the world scale, so they stay readable at
 // any zoom.
 #include <cairo.h>
 
@@ -15,14 +15,14 @@ namespace linkage {
 [[nodiscard]] const Rgba& arrow_colour(const Theme& theme, ArrowKind kind);
 
 /// Draws everything in `list` (antialiased).
-void paint_scene(cairo_t* cr, const Style& style, const DrawList& list, const Camera& camera);
+void paint_scene(cairo_t* cr, const DrawStyle& style, const DrawList& list, const Camera& camera);
 
 /// An arrow in pixel coordinates from `tail` to `tip`: a shaft and a filled head. Heads
 /// shrink with very short arrows so they never overshoot the tip.
-void paint_arrow(cairo_t* cr, const Style& style, const Vec2& tail, const Vec2& tip, const Rgba& colour);
+void paint_arrow(cairo_t* cr, const DrawStyle& style, const Vec2& tail, const Vec2& tip, const Rgba& colour);
 /// The centre-of-mass symbol (a circle with two opposite quarters filled) at a pixel point.
-void paint_com_symbol(cairo_t* cr, const Style& style, const Vec2& at, double radius);
+void paint_com_symbol(cairo_t* cr, const DrawStyle& style, const Vec2& at, double radius);
 /// The pin symbol at a pixel point.
-void paint_pin(cairo_t* cr, const Style& style, const Vec2& at);
+void paint_pin(cairo_t* cr, const DrawStyle& style, const Vec2& at);
 
 }  // namespace linkage

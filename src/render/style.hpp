@@ -9,7 +9,7 @@
 
 namespace linkage {
 
-struct Style {
+struct DrawStyle {
   const Theme* theme = nullptr;
   double u = 1;  // pixels per unit
 

@@ -39,10 +39,14 @@ std::string latex_escape(std::string_view text) {
   return out;
 }
 
-namespace {
+std::string latex_heading(std::string_view title, std::string_view text) {
+  std::string out = concat({"\n% ---- ", title, " ----\n\\par\\medskip\\noindent\\textbf{", latex_escape(title), ".}"});
+  if (!text.empty()) out += concat({" ", text});
+  return out + "\n";
+}
 
-// Roughly how many characters wide LaTeX math prints: \sin counts 3, other commands
-// 1 (\theta) or 0 (\left, \frac, \dot), braces and script markers nothing.
+// \sin counts 3, other commands 1 (\theta) or 0 (\left, \frac, \dot), braces and
+// script markers nothing.
 std::size_t visible_length(std::string_view tex) {
   std::size_t n = 0;
   for (std::size_t i = 0; i < tex.size(); ++i) {
@@ -65,9 +69,26 @@ std::size_t visible_length(std::string_view tex) {
   return n;
 }
 
+std::string mark_sums(std::string_view tex) {
+  std::string out;
+  int depth = 0;
+  for (std::size_t i = 0; i < tex.size(); ++i) {
+    const char c = tex[i];
+    if (c == '(' || c == '{') ++depth;
+    if (c == ')' || c == '}') --depth;
+    const bool operator_follows = i + 2 < tex.size() && (tex[i + 1] == '+' || tex[i + 1] == '-') && tex[i + 2] == ' ';
+    if (depth == 0 && c == ' ' && operator_follows && !out.empty()) out += kBreakMark;
+    out += c;
+  }
+  return out;
+}
+
+namespace {
+
 // The pieces of a formula between break marks outside all parentheses and braces,
-// joined greedily into rows of at most `limit` visible characters.
-std::vector<std::string> wrap_math(std::string_view tex, std::size_t limit) {
+// joined greedily into rows of at most `limit` visible characters (`first_limit` for
+// the first row).
+std::vector<std::string> wrap_math(std::string_view tex, std::size_t limit, std::size_t first_limit) {
   std::vector<std::string> pieces(1);
   int depth = 0;
   for (char c : tex) {
@@ -81,7 +102,7 @@ std::vector<std::string> wrap_math(std::string_view tex, std::size_t limit) {
   }
   std::vector<std::string> rows(1, pieces.front());
   for (std::size_t i = 1; i < pieces.size(); ++i) {
-    if (visible_length(rows.back()) + visible_length(pieces[i]) <= limit) {
+    if (visible_length(rows.back()) + visible_length(pieces[i]) <= (rows.size() == 1 ? first_limit : limit)) {
       rows.back() += pieces[i];
     } else {
       std::string_view piece = pieces[i];
@@ -95,34 +116,72 @@ std::vector<std::string> wrap_math(std::string_view tex, std::size_t limit) {
 // `first` followed by `tex` wrapped onto align rows; continuation rows are indented
 // with \quad under the relation.
 std::string aligned_rows(const std::string& pad, const std::string& first, std::string_view tex, std::size_t limit) {
-  const std::vector<std::string> rows = wrap_math(tex, limit);
+  const std::vector<std::string> rows = wrap_math(tex, limit, limit);
   std::string out = pad + first + rows.front();
   for (std::size_t i = 1; i < rows.size(); ++i) out += " \\\\\n" + pad + "  &\\quad " + rows[i];
   return out;
 }
 
+constexpr std::size_t kRowLimit = 64;  // about the width of a 12 cm text block
+
 }  // namespace
 
-std::string derivation_rows(const DerivationGroup& group, int digits, std::string_view indent) {
-  constexpr std::size_t kRowLimit = 64;  // about the width of a 12 cm text block
+std::string step_rows(const std::vector<MathStep>& steps, std::string_view indent) {
   std::string out;
   const std::string pad(indent);
-  for (std::size_t i = 0; i < group.steps.size(); ++i) {
-    const DerivationStep& step = group.steps[i];
-    const std::string formula = step.formula.print(Style::latex, Spelling::symbolic, digits);
-    const std::string substituted = step.formula.print(Style::latex, Spelling::substituted, digits);
-    const std::string result =
-        format_number(step.quantity.value, Style::latex, digits) + "\\ " + unit_text(step.unit, Style::latex);
-    out += aligned_rows(pad, std::string(step.quantity.latex) + " &= ", formula, kRowLimit) + " \\\\\n";
-    if (visible_length(substituted) + visible_length(result) + 3 <= kRowLimit) {
-      out += pad + "  &= " + strip_marks(substituted) + " = " + result;
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    const MathStep& step = steps[i];
+    if (step.formula.empty()) {
+      out += concat({pad, step.quantity, " &= ", step.result});
+    } else if (step.substituted.empty()) {
+      out += aligned_rows(pad, step.quantity + " &= ", step.formula, kRowLimit);
+      out += visible_length(wrap_math(step.formula, kRowLimit, kRowLimit).back()) + visible_length(step.result) + 3 <=
+                     kRowLimit
+                 ? concat({" = ", step.result})
+                 : concat({" \\\\\n", pad, "  &= ", step.result});
     } else {
-      out += aligned_rows(pad, "  &= ", substituted, kRowLimit) + " \\\\\n";
-      out += pad + "  &= " + result;
+      out += aligned_rows(pad, step.quantity + " &= ", step.formula, kRowLimit) + " \\\\\n";
+      if (visible_length(step.substituted) + visible_length(step.result) + 3 <= kRowLimit) {
+        out += pad + "  &= " + strip_marks(step.substituted) + " = " + step.result;
+      } else {
+        out += aligned_rows(pad, "  &= ", step.substituted, kRowLimit) + " \\\\\n";
+        out += pad + "  &= " + step.result;
+      }
     }
-    out += i + 1 < group.steps.size() ? " \\\\[1ex]\n" : "\n";
+    out += i + 1 < steps.size() ? " \\\\[1ex]\n" : "\n";
   }
   return out;
+}
+
+std::string derivation_rows(const DerivationGroup& group, int digits, std::string_view indent) {
+  std::vector<MathStep> steps;
+  for (const DerivationStep& step : group.steps)
+    steps.push_back(
+        {std::string(step.quantity.latex), step.formula.print(Style::latex, Spelling::symbolic, digits),
+         step.formula.print(Style::latex, Spelling::substituted, digits),
+         format_number(step.quantity.value, Style::latex, digits) + "\\ " + unit_text(step.unit, Style::latex)});
+  return step_rows(steps, indent);
+}
+
+std::string equation_row(std::string_view lhs, std::string_view rhs, std::string_view suffix, std::size_t limit,
+                         std::string_view indent) {
+  const std::string pad(indent);
+  if (visible_length(lhs) + visible_length(rhs) + 1 <= limit) return concat({pad, lhs, " &= ", rhs, suffix});
+  // A short right side stays whole after the left side's last row, else it wraps too.
+  const std::size_t right_width = visible_length(rhs) + 1;
+  const bool right_whole = 2 * right_width <= limit;
+  const std::size_t left_limit = right_whole ? limit - right_width : limit;
+  std::vector<std::string> left = wrap_math(mark_sums(lhs), left_limit, left_limit);
+  std::string out = pad + left.front();
+  // A continued left side starts with its operator: {} keeps it binary.
+  for (std::size_t i = 1; i < left.size(); ++i) out += concat({" \\\\\n", pad, "{} ", left[i]});
+  const std::size_t used = visible_length(left.back());
+  const std::vector<std::string> right = right_whole
+                                             ? std::vector<std::string>{std::string(rhs)}
+                                             : wrap_math(mark_sums(rhs), limit, used + 8 < limit ? limit - used : 8);
+  out += concat({" &= ", right.front()});
+  for (std::size_t i = 1; i < right.size(); ++i) out += concat({" \\\\\n", pad, "  &\\quad ", right[i]});
+  return out + std::string(suffix);
 }
 
 std::string bmatrix(const std::vector<std::vector<std::string>>& rows, const std::vector<std::string>& row_comments,
@@ -139,21 +198,21 @@ std::string bmatrix(const std::vector<std::vector<std::string>>& rows, const std
   return out + pad + "\\end{bmatrix}\n";
 }
 
-namespace {
-
-std::vector<std::vector<std::string>> as_column(const std::vector<std::string>& entries) {
-  std::vector<std::vector<std::string>> rows;
-  for (const auto& e : entries) rows.push_back({e});
-  return rows;
-}
-
-// A short column vector on one line: \begin{bmatrix} a \\ b \end{bmatrix}.
 std::string inline_column(const std::vector<std::string>& entries, std::string_view indent,
-                          std::string_view environment = "bmatrix") {
+                          std::string_view environment) {
   std::string out = concat({indent, "\\begin{", environment, "} "});
   for (std::size_t i = 0; i < entries.size(); ++i) out += concat({i == 0 ? "" : " \\\\ ", entries[i]});
   return out + concat({" \\end{", environment, "}\n"});
 }
+
+std::string column_vector(const std::vector<std::string>& entries, const std::vector<std::string>& row_comments,
+                          std::string_view indent) {
+  std::vector<std::vector<std::string>> rows;
+  for (const auto& e : entries) rows.push_back({e});
+  return bmatrix(rows, row_comments, indent);
+}
+
+namespace {
 
 std::vector<std::string> unknown_names(const CaseSolution& c) {
   std::vector<std::string> names;
@@ -162,6 +221,16 @@ std::vector<std::string> unknown_names(const CaseSolution& c) {
 }
 
 }  // namespace
+
+std::string matrix_equation(const std::vector<std::vector<std::string>>& A, const std::vector<std::string>& unknowns,
+                            const std::vector<std::string>& B, const std::vector<std::string>& labels,
+                            const MatrixLayout& layout, std::string_view indent) {
+  std::vector<std::string> comments;
+  if (layout.row_comments)
+    for (const std::string& label : labels) comments.push_back(parenthesized(label));
+  return bmatrix(A, comments, indent) + inline_column(unknowns, indent) + std::string(indent) +
+         (layout.break_before_equals ? "\\\\ =\n" : "=\n") + column_vector(B, comments, indent);
+}
 
 std::string matrix_equation(const CaseSolution& c, const MatrixLayout& layout, int digits, std::string_view indent) {
   SymbolicSystem entries = symbolic_system(c.id, Style::latex);
@@ -173,11 +242,14 @@ std::string matrix_equation(const CaseSolution& c, const MatrixLayout& layout, i
       entries.B[static_cast<std::size_t>(r)] = format_number(c.B[r], Style::latex, digits);
     }
   }
-  std::vector<std::string> labels;
-  if (layout.row_comments)
-    for (std::string_view label : c.equations) labels.push_back(parenthesized(label));
-  return bmatrix(entries.A, labels, indent) + inline_column(unknown_names(c), indent) + std::string(indent) +
-         (layout.break_before_equals ? "\\\\ =\n" : "=\n") + bmatrix(as_column(entries.B), labels, indent);
+  const std::vector<std::string> labels(c.equations.begin(), c.equations.end());
+  return matrix_equation(entries.A, unknown_names(c), entries.B, labels, layout, indent);
+}
+
+std::string solution_equation(const std::vector<std::string>& unknowns, const std::vector<std::string>& values,
+                              const std::vector<std::string>& units, std::string_view indent) {
+  return inline_column(unknowns, indent) + std::string(indent) + "=\n" + inline_column(values, indent) +
+         inline_column(units, indent, "matrix");
 }
 
 std::string solution_equation(const CaseSolution& c, int digits, std::string_view indent) {
@@ -186,8 +258,20 @@ std::string solution_equation(const CaseSolution& c, int digits, std::string_vie
     values.push_back(format_number(c.solution[static_cast<Eigen::Index>(i)], Style::latex, digits));
     units.push_back(unit_text(info(c.unknowns[i]).unit, Style::latex));
   }
-  return inline_column(unknown_names(c), indent) + std::string(indent) + "=\n" + inline_column(values, indent) +
-         inline_column(units, indent, "matrix");
+  return solution_equation(unknown_names(c), values, units, indent);
+}
+
+std::string solution_markdown(const std::vector<SolutionRow>& rows, int digits) {
+  std::string out = "\n| unknown | value | unit | meaning |\n| :-- | --: | :-- | :-- |\n";
+  for (const SolutionRow& row : rows)
+    out += concat({"| $", row.latex, "$ | ", format_number(row.value, Style::unicode, digits), " | ",
+                   unit_text(row.unit, Style::unicode), " | ", row.meaning, " |\n"});
+  return out;
+}
+
+std::string residual_line(double residual, double condition) {
+  return "\\lVert A q - B \\rVert_2 = " + format_number(residual, Style::latex, 2) +
+         ", \\qquad \\kappa_2(A) = " + format_number(condition, Style::latex, 3);
 }
 
 std::vector<std::string> equation_rows(const CaseSolution& c) {
@@ -198,6 +282,40 @@ std::vector<std::string> equation_rows(const CaseSolution& c) {
     rows.push_back(eq.lhs + " &= " + eq.rhs);
   }
   return rows;
+}
+
+std::string agreement_tabular(const std::vector<int>& cases, const std::vector<AgreementRow>& rows, int digits) {
+  std::string out = "\\begin{center}\n\\begin{tabular}{l" + std::string(cases.size() + 1, 'r') + "}\n ";
+  for (int c : cases) out += " & Case " + std::to_string(c);
+  out += " & $\\max|\\Delta|$ \\\\\n  \\hline\n";
+  for (const AgreementRow& row : rows) {
+    out += "  $" + row.latex + "$";
+    for (std::size_t i = 0; i < row.values.size(); ++i)
+      out += row.values[i] ? concat({" & $", format_number(*row.values[i], Style::latex, digits), "$",
+                                     row.recovered[i] ? "$^{*}$" : ""})
+                           : std::string(" & --");
+    out += " & $" + format_number(row.max_abs_difference, Style::latex, 2) + "$ \\\\\n";
+  }
+  return out + "\\end{tabular}\n\\end{center}\n";
+}
+
+std::string agreement_markdown(const std::vector<int>& cases, const std::vector<AgreementRow>& rows, int digits) {
+  std::string out = "\n| unknown |";
+  std::string rule = "| :-- |";
+  for (int c : cases) {
+    out += " Case " + std::to_string(c) + " |";
+    rule += " --: |";
+  }
+  out += " max \\|Δ\\| |\n" + rule + " --: |\n";
+  for (const AgreementRow& row : rows) {
+    out += "| $" + row.latex + "$ |";
+    for (std::size_t i = 0; i < row.values.size(); ++i)
+      out += row.values[i] ? concat({" ", format_number(*row.values[i], Style::unicode, digits),
+                                     row.recovered[i] ? "\\*" : "", " |"})
+                           : std::string(" - |");
+    out += concat({" ", format_number(row.max_abs_difference, Style::unicode, 2), " |\n"});
+  }
+  return out;
 }
 
 }  // namespace linkage

@@ -22,13 +22,19 @@ std::string provenance(const Inputs& inputs) {
                        : "Given: " + given + "; the rest are the spec's example.";
 }
 
-std::string residual_line(const CaseSolution& c) {
-  return "\\lVert A q - B \\rVert_2 = " + format_number(c.residual, Style::latex, 2) +
-         ", \\qquad \\kappa_2(A) = " + format_number(c.condition_number, Style::latex, 3);
+std::vector<int> case_ids(const WorkedSolution& w) {
+  std::vector<int> ids;
+  for (const CaseSolution& c : w.cases) ids.push_back(c.id);
+  return ids;
 }
 
-std::string agreement_cell(const Agreement& a, std::size_t i, int digits, std::string_view mark) {
-  return concat({"$", format_number(a.values[i], Style::latex, digits), "$", a.recovered[i] ? mark : ""});
+std::vector<AgreementRow> agreement_rows(const WorkedSolution& w) {
+  std::vector<AgreementRow> rows;
+  for (const Agreement& a : w.agreement)
+    rows.push_back({std::string(unknown_name(a.unknown, Style::latex)),
+                    std::vector<std::optional<double>>(a.values.begin(), a.values.end()), a.recovered,
+                    a.max_abs_difference});
+  return rows;
 }
 
 class LatexWriter {
@@ -48,12 +54,7 @@ class LatexWriter {
 
   [[nodiscard]] const std::string& text() const { return out_; }
 
-  void heading(std::string_view title, std::string_view text) {
-    out_ += "\n% ---- " + std::string(title) + " ----\n";
-    out_ += "\\par\\medskip\\noindent\\textbf{" + latex_escape(title) + ".}";
-    if (!text.empty()) out_ += " " + std::string(text);
-    out_ += "\n";
-  }
+  void heading(std::string_view title, std::string_view text) { out_ += latex_heading(title, text); }
 
   void inputs() {
     heading("Inputs", latex_escape(provenance(w_.inputs)));
@@ -92,22 +93,15 @@ class LatexWriter {
       out_ += "Solution:\n";
       out_ += "\\begin{equation*}\n" + solution_equation(c, digits_, "  ") + "\\end{equation*}\n";
     }
-    if (o_.shows(ReportPart::residual)) out_ += "\\begin{equation*}\n  " + residual_line(c) + "\n\\end{equation*}\n";
+    if (o_.shows(ReportPart::residual))
+      out_ += "\\begin{equation*}\n  " + residual_line(c.residual, c.condition_number) + "\n\\end{equation*}\n";
   }
 
   void agreement() {
     heading("The cases agree",
             "Every unknown from every case; $^{*}$ marks a value the case recovers from the equations it "
             "eliminated rather than solves for.");
-    out_ += "\\begin{center}\n\\begin{tabular}{l" + std::string(w_.cases.size() + 1, 'r') + "}\n ";
-    for (const CaseSolution& c : w_.cases) out_ += " & Case " + std::to_string(c.id);
-    out_ += " & $\\max|\\Delta|$ \\\\\n  \\hline\n";
-    for (const Agreement& a : w_.agreement) {
-      out_ += "  $" + std::string(unknown_name(a.unknown, Style::latex)) + "$";
-      for (std::size_t i = 0; i < a.values.size(); ++i) out_ += " & " + agreement_cell(a, i, digits_, "$^{*}$");
-      out_ += " & $" + format_number(a.max_abs_difference, Style::latex, 2) + "$ \\\\\n";
-    }
-    out_ += "\\end{tabular}\n\\end{center}\n";
+    out_ += agreement_tabular(case_ids(w_), agreement_rows(w_), digits_);
   }
 
  private:
@@ -135,7 +129,6 @@ class MarkdownWriter {
   void heading(std::string_view title) { out_ += "\n## " + std::string(title) + "\n"; }
   void paragraph(const std::string& text) { out_ += "\n" + text + "\n"; }
   void math(const std::string& body) { out_ += "\n$$\n" + body + "$$\n"; }
-  [[nodiscard]] std::string number(double v) const { return format_number(v, Style::unicode, digits_); }
 
   void inputs() {
     heading("Inputs");
@@ -166,14 +159,15 @@ class MarkdownWriter {
     }
     if (o_.shows(ReportPart::solution)) {
       paragraph("Solution:");
-      out_ += "\n| unknown | value | unit | meaning |\n| :-- | --: | :-- | :-- |\n";
+      std::vector<SolutionRow> rows;
       for (std::size_t i = 0; i < c.unknowns.size(); ++i) {
         const UnknownInfo& u = info(c.unknowns[i]);
-        out_ += "| $" + std::string(u.latex) + "$ | " + number(c.solution[static_cast<Eigen::Index>(i)]) + " | " +
-                unit_text(u.unit, Style::unicode) + " | " + std::string(u.description) + " |\n";
+        rows.push_back({std::string(u.latex), c.solution[static_cast<Eigen::Index>(i)], std::string(u.unit),
+                        std::string(u.description)});
       }
+      out_ += solution_markdown(rows, digits_);
     }
-    if (o_.shows(ReportPart::residual)) math(residual_line(c) + "\n");
+    if (o_.shows(ReportPart::residual)) math(residual_line(c.residual, c.condition_number) + "\n");
   }
 
   void agreement() {
@@ -181,19 +175,7 @@ class MarkdownWriter {
     paragraph(
         "Every unknown from every case; \\* marks a value the case recovers from the equations it "
         "eliminated rather than solves for.");
-    out_ += "\n| unknown |";
-    std::string rule = "| :-- |";
-    for (const CaseSolution& c : w_.cases) {
-      out_ += " Case " + std::to_string(c.id) + " |";
-      rule += " --: |";
-    }
-    out_ += " max \\|Δ\\| |\n" + rule + " --: |\n";
-    for (const Agreement& a : w_.agreement) {
-      out_ += "| $" + std::string(unknown_name(a.unknown, Style::latex)) + "$ |";
-      for (std::size_t i = 0; i < a.values.size(); ++i)
-        out_ += concat({" ", number(a.values[i]), a.recovered[i] ? "\\*" : "", " |"});
-      out_ += concat({" ", format_number(a.max_abs_difference, Style::unicode, 2), " |\n"});
-    }
+    out_ += agreement_markdown(case_ids(w_), agreement_rows(w_), digits_);
   }
 
  private:

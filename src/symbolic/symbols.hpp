@@ -6,8 +6,8 @@
 // up here; nothing else knows a spelling.
 #include <ginac/ginac.h>
 
+#include <deque>
 #include <string>
-#include <vector>
 
 namespace linkage::sym {
 
@@ -44,10 +44,10 @@ class SymbolTable {
   /// The entry of `symbol`, or nullptr for a symbol this table did not make.
   [[nodiscard]] const SymbolInfo* find(const GiNaC::symbol& symbol) const;
   [[nodiscard]] const SymbolInfo* find(const std::string& key) const;
-  [[nodiscard]] const std::vector<SymbolInfo>& all() const { return entries_; }
+  [[nodiscard]] const std::deque<SymbolInfo>& all() const { return entries_; }
 
  private:
-  std::vector<SymbolInfo> entries_;
+  std::deque<SymbolInfo> entries_;  // a deque: entries stay where they are as the table grows
 };
 
 /// The band of ranks of each role, so a product's factors sort by role first.

@@ -81,7 +81,7 @@ TEST(ClipRenderer, ForceArrowsPointTheRightWay) {
   renderer.draw(0, frame);
   if (const auto folder = test::picture_folder(); !folder.empty()) test::write_png_file(frame, folder / "arrows.png");
   const Camera camera = renderer.camera_at(0);
-  const Style style{&theme, Style::unit_for(settings.width, settings.height)};
+  const DrawStyle style{&theme, DrawStyle::unit_for(settings.width, settings.height)};
 
   const Vec2 force = test::pin_force_at(p, s);  // from the Case 3 solve, independent of the scene
   const double length = force.norm() * renderer.scene_options().arrow_scales[0].metres_per_unit * camera.scale();

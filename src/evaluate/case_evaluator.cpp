@@ -1,0 +1,59 @@
+#include "evaluate/case_evaluator.hpp"
+
+#include <stdexcept>
+
+namespace linkage::eval {
+
+CaseEvaluator::CaseEvaluator(const sym::System& system, const CaseSystem& c)
+    : rows_(c.A.size()), cols_(c.unknowns.size()) {
+  for (const auto& [symbol, value] : system.parameter_values()) inputs_.push_back(GiNaC::ex_to<GiNaC::symbol>(symbol));
+  // parameter_values() is a map: put the parameters back in file order.
+  std::vector<GiNaC::symbol> ordered;
+  for (const sym::SymbolInfo& info : system.table().all())
+    if (info.role == sym::Role::parameter) ordered.push_back(info.symbol);
+  inputs_ = ordered;
+  for (const sym::GeneralizedCoordinate& g : system.coordinates()) {
+    inputs_.push_back(g.symbols.q);
+    inputs_.push_back(g.symbols.q_dot);
+  }
+  inputs_.push_back(system.time());
+
+  // Maximal positions and rates in the generalized ones (accelerations are unknowns).
+  GiNaC::exmap maximal;
+  for (const auto& [symbol, expression] : system.to_generalized()) {
+    const sym::SymbolInfo* info = system.table().find(GiNaC::ex_to<GiNaC::symbol>(symbol));
+    if (info != nullptr && info->role != sym::Role::acceleration) maximal[symbol] = expression;
+  }
+  std::vector<GiNaC::ex> outputs;
+  auto prepare = [&](const GiNaC::ex& e) { return e.subs(maximal).subs(system.constants()).subs(system.constants()); };
+  for (const auto& row : c.A)
+    for (const GiNaC::ex& e : row) outputs.push_back(prepare(e));
+  for (const GiNaC::ex& e : c.B) outputs.push_back(prepare(e));
+  program_ = compile(outputs, inputs_);
+  outputs_.resize(outputs.size());
+  scratch_.resize(program_.scratch_size());
+}
+
+std::vector<double> CaseEvaluator::inputs(const GiNaC::exmap& values) const {
+  std::vector<double> out;
+  out.reserve(inputs_.size());
+  for (const GiNaC::symbol& s : inputs_) {
+    const auto it = values.find(s);
+    if (it == values.end()) throw std::logic_error("no value for the input " + s.get_name());
+    out.push_back(sym::to_double(it->second));
+  }
+  return out;
+}
+
+void CaseEvaluator::evaluate(const std::vector<double>& inputs, Eigen::MatrixXd& A, Eigen::VectorXd& B) const {
+  program_.run(inputs.data(), outputs_.data(), scratch_.data());
+  A.resize(static_cast<Eigen::Index>(rows_), static_cast<Eigen::Index>(cols_));
+  B.resize(static_cast<Eigen::Index>(rows_));
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < rows_; ++i)
+    for (std::size_t j = 0; j < cols_; ++j)
+      A(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = outputs_[k++];
+  for (std::size_t i = 0; i < rows_; ++i) B(static_cast<Eigen::Index>(i)) = outputs_[k++];
+}
+
+}  // namespace linkage::eval

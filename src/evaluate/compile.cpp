@@ -1,0 +1,411 @@
+// compile(): GiNaC expressions to a Program in three passes. Values are numbered as the
+// expression DAG is walked (one node per distinct operation on distinct operands, so
+// shared subexpressions and shared prefixes of sums and products are computed once);
+// the nodes the outputs need are kept; then registers are assigned, a temporary's
+// register reused after its last read, and sin and cos of one argument paired.
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "evaluate/program.hpp"
+
+namespace linkage::eval {
+namespace {
+
+using Index = std::uint32_t;
+
+// Integer powers up to this are multiplied out; the rounding error of repeated
+// multiplication grows with the exponent, so higher ones go to std::pow.
+constexpr long kMaxMultipliedPower = 16;
+
+bool is_binary(Op op) { return op == Op::add || op == Op::sub || op == Op::mul || op == Op::div || op == Op::pow; }
+bool is_commutative(Op op) { return op == Op::add || op == Op::mul; }
+
+// The value of `op` on constants, folded while compiling with the functions run() uses.
+double fold(Op op, double x, double y) {
+  switch (op) {
+    case Op::add:
+      return x + y;
+    case Op::sub:
+      return x - y;
+    case Op::mul:
+      return x * y;
+    case Op::div:
+      return x / y;
+    case Op::neg:
+      return -x;
+    case Op::sqrt:
+      return std::sqrt(x);
+    case Op::pow:
+      return std::pow(x, y);
+    case Op::sin:
+      return std::sin(x);
+    case Op::cos:
+      return std::cos(x);
+    case Op::tan:
+      return std::tan(x);
+    case Op::exp:
+      return std::exp(x);
+    case Op::log:
+      return std::log(x);
+    case Op::abs:
+      return std::fabs(x);
+    case Op::sincos:
+      break;
+  }
+  throw std::logic_error("compile: sincos is made only when registers are assigned");
+}
+
+std::string printed(const GiNaC::ex& e) {
+  std::ostringstream out;
+  out << e;
+  return out.str();
+}
+
+enum class Kind : std::uint8_t { input, constant, operation };
+
+struct Node {
+  Kind kind = Kind::operation;
+  Op op = Op::add;
+  Index a = 0;
+  Index b = 0;
+  double value = 0.0;  // a constant's
+};
+
+// The distinct nodes an operation reads: x * x reads x once.
+std::vector<Index> operands(const Node& node) {
+  if (!is_binary(node.op) || node.a == node.b) return {node.a};
+  return {node.a, node.b};
+}
+
+// What compile() makes a Program of.
+struct Parts {
+  std::vector<std::string> input_names;
+  std::vector<double> constants;
+  std::vector<Instruction> code;
+  std::vector<Index> output_registers;
+  std::size_t register_count = 0;
+};
+
+class Builder {
+ public:
+  explicit Builder(const std::vector<GiNaC::symbol>& inputs) {
+    for (const GiNaC::symbol& s : inputs) {
+      const auto [it, fresh] = inputs_.emplace(s, static_cast<Index>(nodes_.size()));
+      if (!fresh) throw std::invalid_argument("compile: input symbol '" + s.get_name() + "' is given twice");
+      nodes_.push_back({Kind::input, Op::add, 0, 0, 0.0});
+      names_.push_back(s.get_name());
+    }
+  }
+
+  Index output(const GiNaC::ex& e, std::size_t index) {
+    output_ = index;
+    return value(e);
+  }
+
+  [[nodiscard]] Parts finish(const std::vector<Index>& outputs) const;
+
+ private:
+  struct Signed {
+    Index node;
+    bool negative;
+  };
+
+  Index value(const GiNaC::ex& e) {
+    if (const auto it = cache_.find(e); it != cache_.end()) return it->second;
+    const Index node = compute(e);
+    cache_.emplace(e, node);
+    return node;
+  }
+
+  Index compute(const GiNaC::ex& e) {
+    if (GiNaC::is_a<GiNaC::symbol>(e)) {
+      const auto it = inputs_.find(e);
+      if (it == inputs_.end())
+        throw std::invalid_argument("compile: symbol '" + printed(e) + "' in output " + std::to_string(output_) +
+                                    " is not among the inputs (" + input_list() + ")");
+      return it->second;
+    }
+    if (GiNaC::is_a<GiNaC::numeric>(e)) return number(GiNaC::ex_to<GiNaC::numeric>(e), e);
+    if (GiNaC::is_a<GiNaC::constant>(e)) {
+      const GiNaC::ex v = e.evalf();
+      if (!GiNaC::is_a<GiNaC::numeric>(v)) fail(e, "a constant without a numeric value");
+      return number(GiNaC::ex_to<GiNaC::numeric>(v), e);
+    }
+    if (GiNaC::is_a<GiNaC::add>(e)) return sum(e);
+    if (GiNaC::is_a<GiNaC::mul>(e)) return product(e);
+    if (GiNaC::is_a<GiNaC::power>(e)) return power(e.op(0), e.op(1));
+    if (GiNaC::is_a<GiNaC::function>(e)) return function(e);
+    fail(e, "a " + std::string(GiNaC::ex_to<GiNaC::basic>(e).class_name()));
+  }
+
+  [[noreturn]] void fail(const GiNaC::ex& e, const std::string& what) const {
+    throw std::invalid_argument("compile: output " + std::to_string(output_) + " contains " + printed(e) + ", " + what +
+                                ", which cannot be evaluated");
+  }
+
+  std::string input_list() const {
+    std::string list;
+    for (const std::string& n : names_) list += (list.empty() ? "" : ", ") + n;
+    return list.empty() ? "none" : list;
+  }
+
+  Index number(const GiNaC::numeric& n, const GiNaC::ex& source) {
+    if (!n.is_real()) fail(source, "a complex number");
+    return constant(n.to_double());
+  }
+
+  Index constant(double v) {
+    const auto bits = std::bit_cast<std::uint64_t>(v);
+    if (const auto it = constants_.find(bits); it != constants_.end()) return it->second;
+    const auto node = static_cast<Index>(nodes_.size());
+    nodes_.push_back({Kind::constant, Op::add, 0, 0, v});
+    constants_.emplace(bits, node);
+    return node;
+  }
+
+  Index emit(Op op, Index a, Index b = 0) {
+    if (!is_binary(op)) b = 0;
+    if (is_commutative(op) && b < a) std::swap(a, b);
+    const bool constant_operands =
+        nodes_[a].kind == Kind::constant && (!is_binary(op) || nodes_[b].kind == Kind::constant);
+    if (constant_operands) return constant(fold(op, nodes_[a].value, nodes_[b].value));
+    const auto key = std::make_tuple(op, a, b);
+    if (const auto it = numbering_.find(key); it != numbering_.end()) return it->second;
+    const auto node = static_cast<Index>(nodes_.size());
+    nodes_.push_back({Kind::operation, op, a, b, 0.0});
+    numbering_.emplace(key, node);
+    return node;
+  }
+
+  // acc op operand, or the operand alone for the first; each term or factor is folded in
+  // as soon as it is computed, so few temporaries are live at once.
+  Index accumulate(Op op, std::optional<Index> acc, Index operand) { return acc ? emit(op, *acc, operand) : operand; }
+
+  // A term of a sum as its magnitude and sign, so the sum subtracts instead of negating.
+  Signed signed_value(const GiNaC::ex& e) {
+    if (GiNaC::is_a<GiNaC::numeric>(e) && GiNaC::ex_to<GiNaC::numeric>(e).is_negative()) return {value(-e), true};
+    if (GiNaC::is_a<GiNaC::mul>(e) && has_negative_coefficient(e)) return {value(-e), true};
+    return {value(e), false};
+  }
+
+  static bool has_negative_coefficient(const GiNaC::ex& product) {
+    for (std::size_t k = 0; k < product.nops(); ++k)
+      if (GiNaC::is_a<GiNaC::numeric>(product.op(k)) && GiNaC::ex_to<GiNaC::numeric>(product.op(k)).is_negative())
+        return true;
+    return false;
+  }
+
+  Index sum(const GiNaC::ex& e) {
+    std::optional<Index> acc;
+    std::vector<Index> leading_negatives;  // subtracted once a positive term starts the sum
+    for (std::size_t k = 0; k < e.nops(); ++k) {
+      const Signed term = signed_value(e.op(k));
+      if (acc)
+        acc = emit(term.negative ? Op::sub : Op::add, *acc, term.node);
+      else if (term.negative)
+        leading_negatives.push_back(term.node);
+      else
+        acc = term.node;
+    }
+    if (!acc) {
+      std::optional<Index> magnitude;
+      for (const Index t : leading_negatives) magnitude = accumulate(Op::add, magnitude, t);
+      return emit(Op::neg, *magnitude);
+    }
+    for (const Index t : leading_negatives) acc = emit(Op::sub, *acc, t);
+    return *acc;
+  }
+
+  // coefficient * (numerator factors) / (denominator factors). Factors multiply in the
+  // order they were first computed, so products of the same early factors (parameters,
+  // m D) share their prefix; the coefficient comes last, so 2 m D and -m D share m D, and
+  // a negative one is a negative constant, not a negation.
+  Index product(const GiNaC::ex& e) {
+    GiNaC::numeric coefficient = 1;
+    std::vector<Index> numerator, denominator;
+    for (std::size_t k = 0; k < e.nops(); ++k) {
+      const GiNaC::ex f = e.op(k);
+      if (GiNaC::is_a<GiNaC::numeric>(f)) {
+        coefficient *= GiNaC::ex_to<GiNaC::numeric>(f);
+      } else if (GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<GiNaC::numeric>(f.op(1)) &&
+                 GiNaC::ex_to<GiNaC::numeric>(f.op(1)).is_negative()) {
+        denominator.push_back(power(f.op(0), -f.op(1)));
+      } else {
+        numerator.push_back(value(f));
+      }
+    }
+    const auto chain = [this](std::vector<Index>& factors) {
+      std::sort(factors.begin(), factors.end());
+      std::optional<Index> acc;
+      for (const Index f : factors) acc = accumulate(Op::mul, acc, f);
+      return *acc;
+    };
+    if (numerator.empty()) return emit(Op::div, number(coefficient, e), chain(denominator));
+    Index result = chain(numerator);
+    if (!denominator.empty()) result = emit(Op::div, result, chain(denominator));
+    if (coefficient == 1) return result;
+    if (coefficient == -1) return emit(Op::neg, result);
+    return emit(Op::mul, result, number(coefficient, e));
+  }
+
+  Index power(const GiNaC::ex& base, const GiNaC::ex& exponent) {
+    if (GiNaC::is_a<GiNaC::numeric>(exponent)) {
+      const GiNaC::numeric& k = GiNaC::ex_to<GiNaC::numeric>(exponent);
+      const bool negative = k.is_negative();
+      const GiNaC::numeric magnitude = GiNaC::abs(k);
+      std::optional<Index> positive;
+      if (k.is_integer() && magnitude <= kMaxMultipliedPower) {
+        positive = integer_power(value(base), magnitude.to_long());
+      } else if (k.is_rational() && k.denom() == 2 && magnitude <= kMaxMultipliedPower) {
+        // x^(p/2) = x^((p-1)/2) sqrt(x)
+        const Index b = value(base);
+        const Index root = emit(Op::sqrt, b);
+        const long whole = (magnitude.numer().to_long() - 1) / 2;
+        positive = whole == 0 ? root : emit(Op::mul, integer_power(b, whole), root);
+      }
+      if (positive) return negative ? emit(Op::div, constant(1.0), *positive) : *positive;
+    }
+    return emit(Op::pow, value(base), value(exponent));
+  }
+
+  // x^2 = x x, x^3 = x^2 x, x^4 = x^2 x^2: square-and-multiply, the squares shared.
+  Index integer_power(Index base, long n) {
+    if (n == 1) return base;
+    if (n % 2 == 0) {
+      const Index half = integer_power(base, n / 2);
+      return emit(Op::mul, half, half);
+    }
+    return emit(Op::mul, integer_power(base, n - 1), base);
+  }
+
+  Index function(const GiNaC::ex& e) {
+    static const std::map<std::string, Op> kFunctions = {{"sin", Op::sin}, {"cos", Op::cos}, {"tan", Op::tan},
+                                                         {"exp", Op::exp}, {"log", Op::log}, {"abs", Op::abs}};
+    const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
+    const auto it = kFunctions.find(name);
+    if (it == kFunctions.end() || e.nops() != 1)
+      fail(e, "the function " + name + " (valid: sin, cos, tan, exp, log, abs, powers)");
+    return emit(it->second, value(e.op(0)));
+  }
+
+  std::vector<Node> nodes_;
+  std::vector<std::string> names_;
+  std::map<GiNaC::ex, Index, GiNaC::ex_is_less> inputs_;
+  GiNaC::exhashmap<Index> cache_;
+  std::map<std::tuple<Op, Index, Index>, Index> numbering_;
+  std::map<std::uint64_t, Index> constants_;
+  std::size_t output_ = 0;
+};
+
+Parts Builder::finish(const std::vector<Index>& outputs) const {
+  const std::size_t n = nodes_.size();
+  constexpr std::size_t kNever = std::numeric_limits<std::size_t>::max();
+  // Keep what the outputs need; a node's last read decides when its register is free.
+  std::vector<bool> live(n, false);
+  std::vector<std::size_t> last_read(n, 0);
+  for (const Index o : outputs) {
+    live[o] = true;
+    last_read[o] = kNever;
+  }
+  for (std::size_t k = n; k-- > 0;) {
+    if (!live[k] || nodes_[k].kind != Kind::operation) continue;
+    for (const Index operand : operands(nodes_[k])) {
+      live[operand] = true;
+      last_read[operand] = std::max(last_read[operand], k);
+    }
+  }
+  // sin and cos of one argument: one sincos where the first of the two stood.
+  std::map<Index, Index> sin_of, cos_of;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!live[k] || nodes_[k].kind != Kind::operation) continue;
+    if (nodes_[k].op == Op::sin) sin_of[nodes_[k].a] = static_cast<Index>(k);
+    if (nodes_[k].op == Op::cos) cos_of[nodes_[k].a] = static_cast<Index>(k);
+  }
+  std::vector<std::optional<Index>> partner(n);
+  for (const auto& [argument, s] : sin_of) {
+    if (const auto it = cos_of.find(argument); it != cos_of.end()) {
+      partner[s] = it->second;
+      partner[it->second] = s;
+    }
+  }
+
+  Parts parts;
+  parts.input_names = names_;
+  std::vector<Index> reg(n, 0);
+  Index next = 0;
+  for (std::size_t k = 0; k < n; ++k)
+    if (nodes_[k].kind == Kind::input) reg[k] = next++;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (nodes_[k].kind == Kind::constant && live[k]) {
+      reg[k] = next++;
+      parts.constants.push_back(nodes_[k].value);
+    }
+  }
+  std::vector<Index> free;  // temporaries past their last read, reused last-freed first
+  const auto allocate = [&] {
+    if (free.empty()) return next++;
+    const Index r = free.back();
+    free.pop_back();
+    return r;
+  };
+  std::vector<bool> done(n, false);
+  for (std::size_t k = 0; k < n; ++k) {
+    const Node& node = nodes_[k];
+    if (!live[k] || node.kind != Kind::operation) continue;
+    for (const Index operand : operands(node))
+      if (nodes_[operand].kind == Kind::operation && last_read[operand] == k) free.push_back(reg[operand]);
+    if (done[k]) continue;
+    if (partner[k]) {
+      const Index other = *partner[k];
+      const Index s = node.op == Op::sin ? static_cast<Index>(k) : other;
+      const Index c = node.op == Op::sin ? other : static_cast<Index>(k);
+      reg[s] = allocate();
+      reg[c] = allocate();
+      done[other] = true;
+      parts.code.push_back({Op::sincos, reg[s], reg[node.a], reg[c]});
+      continue;
+    }
+    reg[k] = allocate();
+    parts.code.push_back({node.op, reg[k], reg[node.a], is_binary(node.op) ? reg[node.b] : 0});
+  }
+  for (const Index o : outputs) parts.output_registers.push_back(reg[o]);
+  parts.register_count = next;
+  return parts;
+}
+
+}  // namespace
+
+Program compile(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::symbol>& inputs) {
+  Builder builder(inputs);
+  std::vector<Index> nodes;
+  nodes.reserve(outputs.size());
+  for (std::size_t k = 0; k < outputs.size(); ++k) nodes.push_back(builder.output(outputs[k], k));
+  Parts parts = builder.finish(nodes);
+  return Program(std::move(parts.input_names), std::move(parts.constants), std::move(parts.code),
+                 std::move(parts.output_registers), parts.register_count);
+}
+
+Program compile(const GiNaC::matrix& outputs, const std::vector<GiNaC::symbol>& inputs) {
+  return compile(flatten(outputs), inputs);
+}
+
+std::vector<GiNaC::ex> flatten(const GiNaC::matrix& m) {
+  std::vector<GiNaC::ex> entries;
+  entries.reserve(m.nops());
+  for (unsigned i = 0; i < m.rows(); ++i)
+    for (unsigned j = 0; j < m.cols(); ++j) entries.push_back(m(i, j));
+  return entries;
+}
+
+}  // namespace linkage::eval

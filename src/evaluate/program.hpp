@@ -1,0 +1,72 @@
+#pragma once
+// GiNaC expressions compiled once into a flat register program, so the numbers of a
+// mechanism come from the very expressions that are printed, at the cost of a few
+// arithmetic instructions per call: no allocation, no expression tree walked per call.
+//
+// The register file is one array of doubles: the inputs, then the constants, then the
+// temporaries (reused once dead). Every distinct subexpression is computed once, sin and
+// cos of one argument by one sincos, integer powers by multiplication. The same inputs
+// give the same bits: the order of operations is fixed when compiling.
+#include <ginac/ginac.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace linkage::eval {
+
+enum class Op : std::uint8_t { add, sub, mul, div, neg, sqrt, pow, sin, cos, sincos, tan, exp, log, abs };
+
+/// r[dst] = r[a] op r[b]; for sincos, r[dst] = sin(r[a]) and r[b] = cos(r[a]).
+struct Instruction {
+  Op op = Op::add;
+  std::uint32_t dst = 0;
+  std::uint32_t a = 0;
+  std::uint32_t b = 0;
+};
+
+class Program {
+ public:
+  Program() = default;  // no inputs, no outputs
+
+  /// Evaluates every output. `scratch` holds scratch_size() doubles; nothing is allocated.
+  void run(const double* inputs, double* outputs, double* scratch) const;
+
+  [[nodiscard]] std::size_t input_count() const { return input_names_.size(); }
+  [[nodiscard]] std::size_t output_count() const { return output_registers_.size(); }
+  [[nodiscard]] std::size_t scratch_size() const { return register_count_; }
+  [[nodiscard]] std::size_t instruction_count() const { return code_.size(); }
+  [[nodiscard]] std::size_t constant_count() const { return constants_.size(); }
+  [[nodiscard]] const std::vector<Instruction>& instructions() const { return code_; }
+  /// One line per register load, instruction and output, e.g. "r7, r8 = sincos(r3)".
+  [[nodiscard]] std::string dump() const;
+
+ private:
+  friend Program compile(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::symbol>& inputs);
+  Program(std::vector<std::string> input_names, std::vector<double> constants, std::vector<Instruction> code,
+          std::vector<std::uint32_t> output_registers, std::size_t register_count)
+      : input_names_(std::move(input_names)),
+        constants_(std::move(constants)),
+        code_(std::move(code)),
+        output_registers_(std::move(output_registers)),
+        register_count_(register_count) {}
+
+  std::vector<std::string> input_names_;         // registers 0 .. inputs-1
+  std::vector<double> constants_;                // the registers after the inputs
+  std::vector<Instruction> code_;                // in evaluation order
+  std::vector<std::uint32_t> output_registers_;  // where each output ends
+  std::size_t register_count_ = 0;
+};
+
+/// Compiles `outputs` over `inputs` (the order of run()'s arrays). Throws
+/// std::invalid_argument naming a symbol that is not an input, a duplicate input, a
+/// function it cannot compile or a non-real number.
+[[nodiscard]] Program compile(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::symbol>& inputs);
+/// The entries of `outputs`, row by row.
+[[nodiscard]] Program compile(const GiNaC::matrix& outputs, const std::vector<GiNaC::symbol>& inputs);
+/// The entries of a matrix, row by row; append several to compile A and B as one program.
+[[nodiscard]] std::vector<GiNaC::ex> flatten(const GiNaC::matrix& m);
+
+}  // namespace linkage::eval

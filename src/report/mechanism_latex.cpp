@@ -1,0 +1,525 @@
+// The worked derivation of any mechanism as LaTeX or Markdown: one writer, the two formats
+// differing only in how a heading, a paragraph, a display, a list and a table are written.
+#include "report/mechanism_latex.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "report/expression_print.hpp"
+#include "report/latex_math.hpp"
+#include "report/mechanism_parts.hpp"
+#include "report/notation.hpp"
+#include "symbolic/energy.hpp"
+
+namespace linkage {
+
+namespace {
+
+enum class Format { latex, markdown };
+
+// Equation rows wrap beyond this many visible characters (latex_math's visible_length,
+// which counts no spaces): the homework's longest row, (6.2), takes 50 and stays whole
+// as in its golden files; 56 leaves room for a tag in a 12 cm text block.
+constexpr std::size_t kEquationLimit = 56;
+// A q = B prints in one display, as the homework's, when A has at most 8 columns and
+// they take at most kMatrixWidth characters (the homework's widest A, Case 1's numbers,
+// takes 60); otherwise in blocks of at most 8 columns and kBlockWidth characters, which
+// leaves room for "A_1 =" and the column of unknowns beside each block.
+constexpr std::size_t kMaxColumns = 8;
+constexpr std::size_t kMatrixWidth = 64;
+constexpr std::size_t kBlockWidth = 52;
+
+using Matrix = std::vector<std::vector<std::string>>;
+
+struct ColumnBlock {
+  std::size_t begin = 0, end = 0;
+};
+
+std::string markdown_escape(std::string_view text) {
+  std::string out;
+  for (char c : text) {
+    if (std::string_view("\\`*_[]<>|").find(c) != std::string_view::npos) out += '\\';
+    out += c;
+  }
+  return out;
+}
+
+// A_1 ... A_9, then A_{10}.
+std::string subscript(std::string_view base, std::size_t index) {
+  const std::string digits = std::to_string(index);
+  return digits.size() == 1 ? concat({base, "_", digits}) : concat({base, "_{", digits, "}"});
+}
+
+std::string joined(const std::vector<std::string>& rows, std::string_view separator) {
+  std::string out;
+  for (std::size_t i = 0; i < rows.size(); ++i) out += concat({rows[i], i + 1 < rows.size() ? separator : "\n"});
+  return out;
+}
+
+// Columns [begin, end) of every row.
+Matrix columns(const Matrix& m, const ColumnBlock& block) {
+  Matrix out;
+  for (const auto& row : m)
+    out.emplace_back(row.begin() + static_cast<std::ptrdiff_t>(block.begin),
+                     row.begin() + static_cast<std::ptrdiff_t>(block.end));
+  return out;
+}
+
+// One block when A fits as the homework's does, else greedy blocks; widths are each
+// column's widest entry, symbolic or numeric, so both split at the same columns.
+std::vector<ColumnBlock> column_blocks(const Matrix& symbolic, const Matrix& numeric) {
+  const std::size_t n = symbolic.empty() ? 0 : symbolic.front().size();
+  std::vector<std::size_t> width(n, 0);
+  for (const Matrix* m : {&symbolic, &numeric})
+    for (const auto& row : *m)
+      for (std::size_t c = 0; c < n; ++c) width[c] = std::max(width[c], visible_length(row[c]) + 1);
+  std::size_t total = 0;
+  for (std::size_t w : width) total += w;
+  if (n <= kMaxColumns && total <= kMatrixWidth) return {{0, n}};
+  std::vector<ColumnBlock> blocks;
+  std::size_t used = 0;
+  for (std::size_t c = 0; c < n; ++c) {
+    if (blocks.empty() || c - blocks.back().begin == kMaxColumns || used + width[c] > kBlockWidth) {
+      blocks.push_back({c, c});
+      used = 0;
+    }
+    blocks.back().end = c + 1;
+    used += width[c];
+  }
+  return blocks;
+}
+
+class DerivationWriter {
+ public:
+  DerivationWriter(const MechanismSolution& s, const ReportOptions& options, Format format)
+      : s_(s), system_(*s.system), o_(options), format_(format) {}
+
+  std::string run() {
+    title();
+    if (o_.shows(ReportPart::inputs)) inputs();
+    if (o_.shows(ReportPart::inertia)) inertia();
+    if (o_.shows(ReportPart::constraints)) constraints();
+    if (o_.shows(ReportPart::energy)) energy();
+    if (o_.shows(ReportPart::constraints)) {
+      forces();
+      newton_euler();
+    }
+    const bool case_parts = o_.shows(ReportPart::symbolic) || o_.shows(ReportPart::numeric) ||
+                            o_.shows(ReportPart::solution) || o_.shows(ReportPart::residual);
+    if (case_parts)
+      for (const SolvedCase& c : s_.cases) one_case(c);
+    if (!s_.agreement.empty() && o_.shows(ReportPart::comparison)) agreement();
+    return out_;
+  }
+
+ private:
+  [[nodiscard]] bool latex() const { return format_ == Format::latex; }
+  [[nodiscard]] std::string pad() const { return latex() ? "  " : ""; }
+
+  // ---- the two formats' building blocks ----
+
+  [[nodiscard]] std::string text(std::string_view plain) const {
+    return latex() ? latex_escape(plain) : markdown_escape(plain);
+  }
+  // `note` is already in the format (it may hold $...$ math).
+  void heading(std::string_view title, std::string_view note) {
+    if (latex()) {
+      out_ += latex_heading(title, note);
+      return;
+    }
+    out_ += concat({"\n## ", markdown_escape(title), "\n"});
+    if (!note.empty()) paragraph(note);
+  }
+  void paragraph(std::string_view formatted) {
+    out_ += latex() ? concat({formatted, "\n"}) : concat({"\n", formatted, "\n"});
+  }
+  // A paragraph that starts afresh in LaTeX rather than continuing after a display.
+  void new_paragraph(std::string_view formatted) {
+    paragraph(latex() ? concat({"\\par\\noindent ", formatted}) : std::string(formatted));
+  }
+  void math(std::string_view body) { out_ += concat({"\n$$\n", body, "$$\n"}); }
+  void display(std::string_view body) {
+    if (latex())
+      out_ += concat({"\\begin{equation*}\n", body, "\\end{equation*}\n"});
+    else
+      math(body);
+  }
+  void aligned(std::string_view rows) {
+    if (latex())
+      out_ += concat({"\\begin{align*}\n", rows, "\\end{align*}\n"});
+    else
+      math(concat({"\\begin{aligned}\n", rows, "\\end{aligned}\n"}));
+  }
+  [[nodiscard]] std::string tag(std::string_view label) const {
+    return latex() ? concat({" \\tag{", label, "}"}) : concat({" && \\text{(", label, ")}"});
+  }
+  void list(const std::vector<std::string>& items) {
+    if (latex()) {
+      out_ += "\\begin{itemize}\n";
+      for (const std::string& item : items) out_ += concat({"  \\item ", item, "\n"});
+      out_ += "\\end{itemize}\n";
+      return;
+    }
+    out_ += "\n";
+    for (const std::string& item : items) out_ += concat({"- ", item, "\n"});
+  }
+  // `align` holds one of l, r per column; cells are already in the format.
+  void table(const std::vector<std::string>& headers, std::string_view align, const Matrix& rows) {
+    if (latex()) {
+      out_ += concat({"\\begin{center}\n\\begin{tabular}{", align, "}\n  "});
+      for (std::size_t c = 0; c < headers.size(); ++c) out_ += concat({c == 0 ? "" : " & ", headers[c]});
+      out_ += " \\\\\n  \\hline\n";
+      for (const auto& row : rows) {
+        out_ += "  ";
+        for (std::size_t c = 0; c < row.size(); ++c) out_ += concat({c == 0 ? "" : " & ", row[c]});
+        out_ += " \\\\\n";
+      }
+      out_ += "\\end{tabular}\n\\end{center}\n";
+      return;
+    }
+    out_ += "\n|";
+    for (const std::string& h : headers) out_ += concat({" ", h, " |"});
+    out_ += "\n|";
+    for (char a : align) out_ += a == 'r' ? " --: |" : " :-- |";
+    out_ += "\n";
+    for (const auto& row : rows) {
+      out_ += "|";
+      for (const std::string& cell : row) out_ += concat({" ", cell, " |"});
+      out_ += "\n";
+    }
+  }
+  [[nodiscard]] std::string inline_math(std::string_view tex) const { return concat({"$", tex, "$"}); }
+  // A number in a table cell: LaTeX math, or plain Markdown as the homework's tables.
+  [[nodiscard]] std::string number_cell(double value, int digits) const {
+    return latex() ? inline_math(format_number(value, Style::latex, digits))
+                   : format_number(value, Style::unicode, digits);
+  }
+  [[nodiscard]] std::string unit_cell(const std::string& ascii) const {
+    if (ascii.empty()) return "";
+    return latex() ? inline_math(unit_text(ascii, Style::latex)) : unit_text(ascii, Style::unicode);
+  }
+
+  // ---- the mechanism's expressions ----
+
+  [[nodiscard]] std::string tex(const GiNaC::ex& e) const { return print(e, system_.table(), Style::latex); }
+  [[nodiscard]] const sym::SymbolInfo& info(const GiNaC::symbol& s) const { return *system_.table().find(s); }
+  [[nodiscard]] double value(const GiNaC::ex& e) const { return value_at(e, s_.values); }
+  [[nodiscard]] std::string number(double v) const { return format_number(v, Style::latex, o_.digits); }
+
+  // "lhs &= formula \\ &= substituted = value unit", as the homework's derivation.
+  [[nodiscard]] MathStep step(const std::string& lhs, const GiNaC::ex& formula, const std::string& unit_ascii) const {
+    std::string result = number(value(formula));
+    if (!unit_ascii.empty()) result += "\\ " + unit_text(unit_ascii, Style::latex);
+    const std::string symbolic = tex(formula);
+    const std::string numbers =
+        print_substituted(formula, system_.table(), Style::latex, [&](const sym::SymbolInfo& symbol) {
+          return format_number(value(symbol.symbol), Style::latex, symbol.role == sym::Role::parameter ? 0 : o_.digits);
+        });
+    if (symbolic == number(value(formula))) return {lhs, "", "", result};
+    if (numbers == symbolic || numbers == number(value(formula))) return {lhs, mark_sums(symbolic), "", result};
+    return {lhs, mark_sums(symbolic), mark_sums(numbers), result};
+  }
+
+  [[nodiscard]] std::string body_label(int body) const { return linkage::body_label(system_.mechanism(), body); }
+
+  // ---- the sections ----
+
+  void title() {
+    const Mechanism& m = system_.mechanism();
+    const std::string name = m.title.empty() ? m.name : m.title;
+    if (latex()) {
+      out_ += "% Worked solution of a mechanism, from `linkage solve`.\n";
+      out_ += "% Paste into a document or a slide; needs \\usepackage{amsmath}.\n";
+      if (!name.empty() || !m.description.empty())
+        heading(concat({"Worked solution", name.empty() ? "" : ": ", name}), latex_escape(m.description));
+      return;
+    }
+    out_ += concat({"# Worked solution", name.empty() ? "" : ": ", markdown_escape(name), "\n"});
+    if (!m.description.empty()) paragraph(markdown_escape(m.description));
+  }
+
+  void inputs() {
+    const Mechanism& m = system_.mechanism();
+    heading("Inputs and definitions", "The parameters, in SI units, and the definitions in them.");
+    Matrix rows;
+    for (const Parameter& p : m.parameters)
+      rows.push_back({inline_math(system_.table().find(p.name)->latex), number_cell(p.value, 0), "parameter"});
+    table({"symbol", "value", "meaning"}, "lrl", rows);
+    if (!m.definitions.empty()) {
+      std::vector<MathStep> steps;
+      for (const Definition& d : m.definitions) {
+        const sym::SymbolInfo* symbol = system_.table().find(d.name);
+        steps.push_back(step(symbol->latex, system_.constants().at(symbol->symbol), ""));
+      }
+      aligned(step_rows(steps, pad()));
+    }
+    new_paragraph("The initial state, in the generalized coordinates of the spanning tree:");
+    Matrix state;
+    for (const sym::GeneralizedCoordinate& g : system_.coordinates())
+      for (const GiNaC::symbol* q : {&g.symbols.q, &g.symbols.q_dot}) {
+        const sym::SymbolInfo& symbol = info(*q);
+        state.push_back({inline_math(symbol.latex), number_cell(sym::to_double(s_.state.at(*q)), 0),
+                         unit_cell(symbol.unit), text(symbol.meaning)});
+      }
+    table({"symbol", "value", "unit", "meaning"}, "lrll", state);
+    if (!s_.closure_note.empty()) new_paragraph(text(s_.closure_note));
+  }
+
+  void inertia() {
+    heading("Moments of inertia",
+            "Each body's moment of inertia about its centre of mass, from its shape: the area integral for a "
+            "rectangle, $m L^2/12$ for a rod, $m r^2/2$ for a disc, none for a point mass.");
+    std::vector<MathStep> steps;
+    std::vector<std::string> done;
+    for (const sym::BodySystem& b : system_.bodies()) {
+      if (!b.rotates) continue;
+      const std::string name = info(GiNaC::ex_to<GiNaC::symbol>(b.inertia)).latex;
+      if (std::find(done.begin(), done.end(), name) != done.end()) continue;
+      done.push_back(name);
+      steps.push_back(step(name, b.inertia_formula, "kg m^2"));
+    }
+    if (!steps.empty()) aligned(step_rows(steps, pad()));
+  }
+
+  void constraints() {
+    heading("The joints: constraints at position, velocity and acceleration level",
+            "Each joint's constraint in the maximal coordinates of its bodies; the velocity and acceleration forms "
+            "are its first and second time derivatives.");
+    const Mechanism& m = system_.mechanism();
+    for (std::size_t j = 0; j < m.joints.size(); ++j) {
+      const Joint& joint = m.joints[j];
+      const sym::JointSystem& js = system_.joints()[j];
+      new_paragraph(text(concat({"Joint ", joint.name, ": ", kJointTypeNames[static_cast<std::size_t>(joint.type)],
+                                 " between ", joint.bodies[0], ".", joint.points[0], " and ", joint.bodies[1], ".",
+                                 joint.points[1], js.in_tree ? " (spanning tree)." : " (closes a loop)."})));
+      static constexpr std::array<const char*, 3> kLevels{"position", "velocity", "acceleration"};
+      std::vector<std::string> groups;
+      for (const GiNaC::ex& phi : js.constraints) {
+        std::vector<std::string> rows;
+        GiNaC::ex form = phi;
+        for (const char* level : {kLevels[0], kLevels[1]}) {
+          rows.push_back(
+              equation_row(tex(GiNaC::expand(form)), "0", concat({" && \\text{", level, "}"}), kEquationLimit, pad()));
+          form = system_.time_derivative(form);
+        }
+        // The acceleration level as Case 1 writes it: the accelerations on the left.
+        const EquationSides eq = acceleration_form(system_, phi, Style::latex);
+        rows.push_back(equation_row(eq.lhs, eq.rhs, concat({" && \\text{", kLevels[2], "}"}), kEquationLimit, pad()));
+        groups.push_back(joined(rows, " \\\\\n"));
+        groups.back().pop_back();
+      }
+      aligned(joined(groups, " \\\\[1ex]\n"));
+    }
+  }
+
+  void energy() {
+    const GiNaC::ex power = sym::nonconservative_power(system_);
+    std::string note = power.is_zero()
+                           ? "Only conservative forces work on the mechanism: its energy $E = T + V$ stays constant."
+                           : "The dampers and applied loads work at the rate $P$; $E = T + V$ changes at that rate.";
+    if (!touches_ground(system_.mechanism()))
+      note +=
+          " Nothing touches the ground: the horizontal momentum stays constant and the vertical one changes at "
+          "the rate of gravity.";
+    heading("Energy and momentum", note);
+    const GiNaC::ex T = sym::kinetic_energy(system_);
+    const GiNaC::ex V = sym::potential_energy(system_);
+    const sym::Vec2 p = sym::linear_momentum(system_);
+    const double v = value(V);
+    std::vector<MathStep> steps{step("T", T, "J"), step("V", V, "J")};
+    steps.push_back({"E", "T + V", concat({number(value(T)), v < 0 ? " - " : " + ", number(std::abs(v))}),
+                     concat({number(value(T) + v), "\\ ", unit_text("J", Style::latex)})});
+    if (!power.is_zero()) steps.push_back(step("P", power, "W"));
+    steps.push_back(step("p_x", p.x, "kg m/s"));
+    steps.push_back(step("p_y", p.y, "kg m/s"));
+    steps.push_back(step("H_O", sym::angular_momentum(system_), "kg m^2/s"));
+    aligned(step_rows(steps, pad()));
+  }
+
+  void forces() {
+    heading("Forces and moments on each body",
+            "Each body's free-body diagram as a list: a joint's force is the force its second body exerts on its "
+            "first, so the first body feels $+F$ and the second $-F$.");
+    const Mechanism& m = system_.mechanism();
+    for (std::size_t b = 0; b < system_.bodies().size(); ++b) {
+      new_paragraph(text(concat({"On ", body_label(static_cast<int>(b)), ":"})));
+      std::vector<std::string> items;
+      for (std::size_t j = 0; j < m.joints.size(); ++j) {
+        const Joint& joint = m.joints[j];
+        const sym::JointSystem& js = system_.joints()[j];
+        const bool first = m.bodies[b].name == joint.bodies[0];
+        if (!first && m.bodies[b].name != joint.bodies[1]) continue;
+        const GiNaC::ex sign = first ? 1 : -1;
+        std::string item =
+            concat({inline_math(concat({"\\left(", tex(sign * js.force.x), ", ", tex(sign * js.force.y), "\\right)"})),
+                    " at ", text(joint.points[first ? 0 : 1])});
+        if (!js.moment.is_zero()) item += concat({", moment ", inline_math(tex(sign * js.moment))});
+        const std::string from = linkage::body_label(m, first ? joint.bodies[1] : joint.bodies[0]);
+        items.push_back(concat(
+            {item, ": ",
+             text(concat({kJointTypeNames[static_cast<std::size_t>(joint.type)], " ", joint.name, ", from ", from}))}));
+      }
+      for (const sym::Load& load : system_.loads()) {
+        if (load.body != static_cast<int>(b)) continue;
+        std::string item;
+        if (!(load.force.x.is_zero() && load.force.y.is_zero())) {
+          item = inline_math(concat({"\\left(", tex(load.force.x), ", ", tex(load.force.y), "\\right)"}));
+          const std::string place = load_place(system_, b, load);
+          if (!place.empty()) item += concat({" at ", text(place)});
+        }
+        if (!load.moment.is_zero())
+          item += concat({item.empty() ? "moment " : ", moment ", inline_math(tex(load.moment))});
+        items.push_back(concat({item, ": ", text(load.source)}));
+      }
+      if (items.empty()) items.emplace_back("none");
+      list(items);
+    }
+  }
+
+  void newton_euler() {
+    heading("Newton-Euler equations of each body",
+            "$m a$ = the sum of the forces, and $I \\alpha$ = the sum of the moments about the centre of mass, in "
+            "maximal coordinates; Case 1 takes them as they are, Cases 2 and 3 write them in the generalized "
+            "coordinates.");
+    const CaseSystem case1 = maximal_case(system_);
+    std::vector<const sym::SymbolInfo*> unknowns;
+    for (const GiNaC::symbol& u : case1.unknowns) unknowns.push_back(&info(u));
+    std::size_t row = 0;
+    for (std::size_t b = 0; b < system_.bodies().size(); ++b) {
+      new_paragraph(text(concat({"For ", body_label(static_cast<int>(b)), ":"})));
+      std::vector<std::string> rows;
+      for (std::size_t k = 0; k < system_.newton_euler()[b].rows.size(); ++k, ++row) {
+        const EquationSides eq = equation_sides(case1.A[row], case1.B[row], unknowns, system_.table(), Style::latex);
+        rows.push_back(equation_row(eq.lhs, eq.rhs, "", kEquationLimit, pad()));
+      }
+      aligned(joined(rows, " \\\\\n"));
+    }
+  }
+
+  // A q = B in one display as the homework's, or A in column blocks beside their unknowns.
+  void matrix_display(const Matrix& A, const std::vector<std::string>& B, const CaseSystem& c,
+                      const std::vector<ColumnBlock>& blocks) {
+    std::vector<std::string> names;
+    for (const GiNaC::symbol& u : c.unknowns) names.push_back(info(u).latex);
+    const std::string gaps = latex() ? "  \\setlength{\\arraycolsep}{3pt}\n" : "";
+    if (blocks.size() == 1) {
+      const std::string equation = matrix_equation(A, names, B, c.labels, {false, latex(), latex()}, pad());
+      if (latex())
+        out_ += concat({"\\begin{multline*}\n", gaps, equation, "\\end{multline*}\n"});
+      else
+        math(equation);
+      return;
+    }
+    std::vector<std::string> comments;
+    if (latex())
+      for (const std::string& label : c.labels) comments.push_back(parenthesized(label));
+    for (std::size_t k = 0; k < blocks.size(); ++k) {
+      const std::vector<std::string> block_names(names.begin() + static_cast<std::ptrdiff_t>(blocks[k].begin),
+                                                 names.begin() + static_cast<std::ptrdiff_t>(blocks[k].end));
+      display(concat({gaps, pad(), subscript("A", k + 1), " =\n", bmatrix(columns(A, blocks[k]), comments, pad()),
+                      pad(), ", \\qquad ", subscript("q", k + 1), " =\n", inline_column(block_names, pad())}));
+    }
+    display(concat({pad(), "B =\n", column_vector(B, comments, pad())}));
+  }
+
+  [[nodiscard]] static std::string block_sum(std::size_t blocks) {
+    std::string sum;
+    for (std::size_t k = 1; k <= blocks; ++k)
+      sum += concat({k == 1 ? "" : " + ", subscript("A", k), " ", subscript("q", k)});
+    return sum + " = B";
+  }
+
+  void one_case(const SolvedCase& solved) {
+    const CaseSystem& c = solved.system;
+    const CaseNumbers& n = solved.numbers;
+    const bool symbolic = o_.shows(ReportPart::symbolic);
+    heading(concat({"Case ", std::to_string(case_number(c.id)), ": ", c.title}),
+            symbolic ? "The equations, one per row of $A q = B$:" : "");
+    std::vector<const sym::SymbolInfo*> unknowns;
+    for (const GiNaC::symbol& u : c.unknowns) unknowns.push_back(&info(u));
+    Matrix A_symbolic, A_numeric;
+    std::vector<std::string> B_symbolic, B_numeric;
+    for (std::size_t r = 0; r < c.A.size(); ++r) {
+      A_symbolic.emplace_back();
+      A_numeric.emplace_back();
+      for (std::size_t col = 0; col < c.unknowns.size(); ++col) {
+        A_symbolic.back().push_back(tex(c.A[r][col]));
+        A_numeric.back().push_back(number(n.A(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(col))));
+      }
+      B_symbolic.push_back(tex(c.B[r]));
+      B_numeric.push_back(number(n.B[static_cast<Eigen::Index>(r)]));
+    }
+    const std::vector<ColumnBlock> blocks = column_blocks(A_symbolic, A_numeric);
+    const std::string in_blocks = blocks.size() == 1
+                                      ? ""
+                                      : concat({", with $A$ in blocks of columns, $", block_sum(blocks.size()),
+                                                "$, each $A_k$ beside the unknowns $q_k$ its columns multiply"});
+    if (symbolic) {
+      std::vector<std::string> rows;
+      for (std::size_t r = 0; r < c.A.size(); ++r) {
+        const EquationSides eq = equation_sides(c.A[r], c.B[r], unknowns, system_.table(), Style::latex);
+        rows.push_back(equation_row(eq.lhs, eq.rhs, tag(c.labels[r]), kEquationLimit, pad()));
+      }
+      aligned(joined(rows, " \\\\\n"));
+      paragraph(concat({"In matrix form, rows in the order of the equations", in_blocks, ":"}));
+      matrix_display(A_symbolic, B_symbolic, c, blocks);
+    }
+    if (o_.shows(ReportPart::numeric)) {
+      paragraph(symbolic || blocks.size() == 1 ? "Numerically:" : concat({"Numerically", in_blocks, ":"}));
+      matrix_display(A_numeric, B_numeric, c, blocks);
+    }
+    if (o_.shows(ReportPart::solution)) {
+      paragraph("Solution:");
+      std::vector<std::string> names, values, units;
+      std::vector<SolutionRow> rows;
+      for (std::size_t i = 0; i < c.unknowns.size(); ++i) {
+        const double v = n.solution[static_cast<Eigen::Index>(i)];
+        names.push_back(unknowns[i]->latex);
+        values.push_back(number(v));
+        units.push_back(unit_text(unknowns[i]->unit, Style::latex));
+        rows.push_back({unknowns[i]->latex, v, unknowns[i]->unit, markdown_escape(unknowns[i]->meaning)});
+      }
+      if (latex())
+        display(solution_equation(names, values, units, pad()));
+      else
+        out_ += solution_markdown(rows, o_.digits);
+    }
+    if (o_.shows(ReportPart::residual)) display(concat({pad(), residual_line(n.residual, n.condition), "\n"}));
+  }
+
+  void agreement() {
+    const std::string star = latex() ? "$^{*}$" : "\\*";
+    heading("The cases agree",
+            concat({"Every body's acceleration and every joint force from every case, and the largest difference "
+                    "between cases. A ",
+                    star,
+                    " marks a value the case does not solve for but recovers: a body's acceleration through the "
+                    "kinematics of the spanning tree, a tree joint's force through the equation it was eliminated "
+                    "with."}));
+    std::vector<int> cases;
+    for (const SolvedCase& c : s_.cases) cases.push_back(case_number(c.system.id));
+    std::vector<AgreementRow> rows;
+    for (const MechanismAgreement& a : s_.agreement)
+      rows.push_back({info(a.unknown).latex, a.values, a.recovered, a.max_abs_difference});
+    out_ += latex() ? agreement_tabular(cases, rows, o_.digits) : agreement_markdown(cases, rows, o_.digits);
+  }
+
+  const MechanismSolution& s_;
+  const sym::System& system_;
+  const ReportOptions& o_;
+  Format format_;
+  std::string out_;
+};
+
+}  // namespace
+
+std::string mechanism_latex(const MechanismSolution& solution, const ReportOptions& options) {
+  return DerivationWriter(solution, options, Format::latex).run();
+}
+
+std::string mechanism_markdown(const MechanismSolution& solution, const ReportOptions& options) {
+  return DerivationWriter(solution, options, Format::markdown).run();
+}
+
+}  // namespace linkage

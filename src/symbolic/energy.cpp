@@ -1,0 +1,111 @@
+#include "symbolic/energy.hpp"
+
+namespace linkage::sym {
+
+using GiNaC::ex;
+
+namespace {
+
+// Index into System::bodies(), -1 for the ground.
+int body_of(const System& system, const std::string& name) {
+  const auto& bodies = system.mechanism().bodies;
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    if (bodies[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+// A body's angle and its rate; 0 for the ground and for a point mass.
+ex angle_of(const System& system, int body) {
+  if (body < 0) return 0;
+  const BodySystem& b = system.bodies()[static_cast<std::size_t>(body)];
+  return b.rotates ? ex(b.theta.q) : ex(0);
+}
+
+ex spring_length(const System& system, const Spring& spring) {
+  const Vec2 d = system.point_position(body_of(system, spring.between[1].body), spring.between[1].point) -
+                 system.point_position(body_of(system, spring.between[0].body), spring.between[0].point);
+  return GiNaC::sqrt(d.x * d.x + d.y * d.y);
+}
+
+// th_b - th_a of a pin.
+ex relative_angle(const System& system, const Joint& joint) {
+  return angle_of(system, body_of(system, joint.bodies[1])) - angle_of(system, body_of(system, joint.bodies[0]));
+}
+
+}  // namespace
+
+ex kinetic_energy(const System& system) {
+  ex T = 0;
+  for (const BodySystem& b : system.bodies()) {
+    T += b.mass * (GiNaC::pow(b.x.q_dot, 2) + GiNaC::pow(b.y.q_dot, 2)) / 2;
+    if (b.rotates) T += b.inertia * GiNaC::pow(b.theta.q_dot, 2) / 2;
+  }
+  return T;
+}
+
+ex potential_energy(const System& system) {
+  const Mechanism& mechanism = system.mechanism();
+  ex V = 0;
+  if (mechanism.gravity) {
+    const ex g = system.quantity(*mechanism.gravity, false);
+    for (const BodySystem& b : system.bodies()) V += b.mass * g * b.y.q;
+  }
+  for (const Spring& spring : mechanism.springs) {
+    const ex stretch = spring_length(system, spring) - system.quantity(spring.rest_length, false);
+    V += system.quantity(spring.stiffness, false) * GiNaC::pow(stretch, 2) / 2;
+  }
+  for (const Joint& joint : mechanism.joints) {
+    if (joint.type != JointType::pin || !joint.stiffness) continue;
+    const ex rest = joint.rest_angle ? system.quantity(*joint.rest_angle, false) : ex(0);
+    V += system.quantity(*joint.stiffness, false) * GiNaC::pow(relative_angle(system, joint) - rest, 2) / 2;
+  }
+  return V;
+}
+
+std::vector<PowerTerm> nonconservative_power_terms(const System& system) {
+  const Mechanism& mechanism = system.mechanism();
+  std::vector<PowerTerm> terms;
+  for (const Spring& spring : mechanism.springs) {
+    const ex damping = system.quantity(spring.damping, false);
+    if (damping.is_zero()) continue;
+    const ex rate = system.time_derivative(spring_length(system, spring));
+    terms.push_back({-damping * rate, rate});
+  }
+  for (const Joint& joint : mechanism.joints) {
+    if (joint.type != JointType::pin || !joint.damping) continue;
+    const ex rate = system.time_derivative(relative_angle(system, joint));
+    terms.push_back({-system.quantity(*joint.damping, false) * rate, rate});
+  }
+  for (const AppliedForce& force : mechanism.forces) {
+    const Vec2 at = system.point_position(body_of(system, force.body), force.point);
+    terms.push_back({system.quantity(force.value.x, true), system.time_derivative(at.x)});
+    terms.push_back({system.quantity(force.value.y, true), system.time_derivative(at.y)});
+  }
+  for (const AppliedTorque& torque : mechanism.torques)
+    terms.push_back(
+        {system.quantity(torque.value, true), system.time_derivative(angle_of(system, body_of(system, torque.body)))});
+  return terms;
+}
+
+ex nonconservative_power(const System& system) {
+  ex P = 0;
+  for (const PowerTerm& term : nonconservative_power_terms(system)) P += term.load * term.rate;
+  return P;
+}
+
+Vec2 linear_momentum(const System& system) {
+  Vec2 p;
+  for (const BodySystem& b : system.bodies()) p = p + b.mass * Vec2{b.x.q_dot, b.y.q_dot};
+  return p;
+}
+
+ex angular_momentum(const System& system) {
+  ex H = 0;
+  for (const BodySystem& b : system.bodies()) {
+    H += b.mass * (b.x.q * b.y.q_dot - b.y.q * b.x.q_dot);
+    if (b.rotates) H += b.inertia * b.theta.q_dot;
+  }
+  return H;
+}
+
+}  // namespace linkage::sym

@@ -1,0 +1,118 @@
+#include "symbolic/loop_closure.hpp"
+
+#include <Eigen/Core>
+#include <Eigen/LU>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "core/number_format.hpp"
+
+namespace linkage::sym {
+
+ClosedState close_loops(const System& system, const GiNaC::exmap& state) {
+  ClosedState out{state, false, 0, {}};
+  const SpanningTree& tree = system.tree();
+  if (tree.loop_joints.empty()) return out;
+  const Mechanism& mechanism = system.mechanism();
+
+  std::vector<GiNaC::ex> phi;
+  std::string loop_names;
+  for (int j : tree.loop_joints) {
+    for (const GiNaC::ex& row : system.joints()[static_cast<std::size_t>(j)].constraints)
+      phi.push_back(row.subs(system.to_generalized()));
+    loop_names += (loop_names.empty() ? "" : ", ") + mechanism.joints[static_cast<std::size_t>(j)].name;
+  }
+  const auto& coordinates = system.coordinates();
+  std::vector<std::size_t> independent, dependent;
+  const std::size_t free_count = coordinates.size() >= phi.size() ? coordinates.size() - phi.size() : 0;
+  for (std::size_t c = 0; c < coordinates.size(); ++c) {
+    bool listed = false;
+    for (const std::string& key : mechanism.independent) listed = listed || key == coordinates[c].coordinate.key;
+    if (mechanism.independent.empty()) listed = c < free_count;
+    (listed ? independent : dependent).push_back(c);
+  }
+  std::string all;
+  for (const auto& g : coordinates) all += (all.empty() ? "" : ", ") + g.coordinate.key;
+  if (dependent.size() != phi.size())
+    throw Error::input(where(mechanism.independent_pos) + "independent lists " + std::to_string(independent.size()) +
+                       " coordinates, but the loops through " + loop_names + " leave " + std::to_string(free_count) +
+                       " free; list " + std::to_string(free_count) + " of: " + all);
+
+  GiNaC::exmap constants;
+  for (const auto& [symbol, expression] : system.constants())
+    constants[symbol] = GiNaC::evalf(expression.subs(system.parameter_values()));
+  for (const auto& [symbol, value] : system.parameter_values()) constants[symbol] = value;
+  const auto n = static_cast<Eigen::Index>(phi.size());
+  std::vector<std::vector<GiNaC::ex>> jacobian(phi.size(), std::vector<GiNaC::ex>(coordinates.size()));
+  for (std::size_t r = 0; r < phi.size(); ++r) {
+    phi[r] = phi[r].subs(constants);
+    for (std::size_t c = 0; c < coordinates.size(); ++c) jacobian[r][c] = GiNaC::diff(phi[r], coordinates[c].symbols.q);
+  }
+  auto value = [&](const GiNaC::ex& e) { return to_double(e.subs(out.state)); };
+
+  const GiNaC::exmap start = state;
+  double residual = 0;
+  for (int iteration = 0; iteration < 50; ++iteration) {
+    Eigen::VectorXd f(n);
+    Eigen::MatrixXd J(n, n);
+    for (Eigen::Index r = 0; r < n; ++r) {
+      f(r) = value(phi[static_cast<std::size_t>(r)]);
+      for (Eigen::Index c = 0; c < n; ++c)
+        J(r, c) = value(jacobian[static_cast<std::size_t>(r)][dependent[static_cast<std::size_t>(c)]]);
+    }
+    residual = f.norm();
+    if (!std::isfinite(residual)) break;
+    if (residual < 1e-14) break;
+    const Eigen::FullPivLU<Eigen::MatrixXd> lu(J);
+    if (!lu.isInvertible()) {
+      residual = std::numeric_limits<double>::infinity();
+      break;
+    }
+    const Eigen::VectorXd step = lu.solve(f);
+    for (Eigen::Index c = 0; c < n; ++c) {
+      const GiNaC::symbol& q = coordinates[dependent[static_cast<std::size_t>(c)]].symbols.q;
+      out.state[q] = GiNaC::numeric(to_double(out.state[q]) - step(c));
+    }
+  }
+  if (!(residual < 1e-10))
+    throw Error::input(where(mechanism.independent_pos) + "the loop through " + loop_names + " cannot close with " +
+                       (independent.empty() ? std::string("these values") : "the independent coordinates kept") +
+                       " (constraint error " + format_significant(residual, 3) +
+                       " m); valid: independent values at which the links can meet (check the lengths and the angles)");
+
+  // Rates: Phi_q q' = 0 with the independent rates kept.
+  Eigen::MatrixXd Jd(n, n);
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n);
+  for (Eigen::Index r = 0; r < n; ++r) {
+    for (Eigen::Index c = 0; c < n; ++c)
+      Jd(r, c) = value(jacobian[static_cast<std::size_t>(r)][dependent[static_cast<std::size_t>(c)]]);
+    for (std::size_t i : independent)
+      rhs(r) -= value(jacobian[static_cast<std::size_t>(r)][i]) * to_double(out.state[coordinates[i].symbols.q_dot]);
+  }
+  const Eigen::FullPivLU<Eigen::MatrixXd> rate_lu(Jd);
+  if (!rate_lu.isInvertible())
+    throw Error::input(where(mechanism.independent_pos) + "the loop through " + loop_names +
+                       " is at a change point (its links in line) at the independent coordinates kept, so its "
+                       "rates are not determined; valid: independent values away from that position");
+  const Eigen::VectorXd rates = rate_lu.solve(rhs);
+  for (Eigen::Index c = 0; c < n; ++c)
+    out.state[coordinates[dependent[static_cast<std::size_t>(c)]].symbols.q_dot] = GiNaC::numeric(rates(c));
+
+  std::string moved;
+  for (std::size_t d : dependent) {
+    const auto& s = coordinates[d].symbols;
+    const double change = std::abs(to_double(out.state[s.q]) - to_double(start.at(s.q)));
+    out.largest_change = std::max(out.largest_change, change);
+    moved += (moved.empty() ? "" : ", ") + coordinates[d].coordinate.key + " = " +
+             format_significant(to_double(out.state[s.q]), 6);
+  }
+  out.changed = true;
+  std::string kept;
+  for (std::size_t i : independent) kept += (kept.empty() ? "" : ", ") + coordinates[i].coordinate.key;
+  out.note = "The loop through " + loop_names + " was closed keeping " + (kept.empty() ? "nothing" : kept) + ": " +
+             moved + " (largest change " + format_significant(out.largest_change, 3) +
+             "); the dependent rates follow from the constraints.";
+  return out;
+}
+
+}  // namespace linkage::sym

@@ -1,0 +1,643 @@
+#include "symbolic/system.hpp"
+
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "symbolic/joints.hpp"
+#include "symbolic/spelling.hpp"
+
+namespace linkage::sym {
+
+using GiNaC::ex;
+using GiNaC::symbol;
+
+Vec2 rotate(const ex& angle, const Vec2& v) {
+  const ex c = GiNaC::cos(angle);
+  const ex s = GiNaC::sin(angle);
+  return {c * v.x - s * v.y, s * v.x + c * v.y};
+}
+
+ex cross(const Vec2& a, const Vec2& b) { return a.x * b.y - a.y * b.x; }
+
+ex simplify_trig(const ex& e) {
+  ex out = GiNaC::expand(e);
+  GiNaC::exset arguments;
+  for (auto i = out.preorder_begin(); i != out.preorder_end(); ++i)
+    if (GiNaC::is_a<GiNaC::function>(*i) && GiNaC::ex_to<GiNaC::function>(*i).get_name() == "sin")
+      arguments.insert(i->op(0));
+  for (const ex& x : arguments)
+    out = GiNaC::expand(
+        out.subs(GiNaC::pow(GiNaC::sin(x), 2) == 1 - GiNaC::pow(GiNaC::cos(x), 2), GiNaC::subs_options::algebraic));
+  return out;
+}
+
+double to_double(const ex& e) {
+  const ex value = GiNaC::evalf(e);
+  if (!GiNaC::is_a<GiNaC::numeric>(value)) {
+    std::ostringstream text;
+    text << value;
+    throw std::logic_error("not a number: " + text.str());
+  }
+  const auto& n = GiNaC::ex_to<GiNaC::numeric>(value);
+  if (!n.is_real()) return std::nan("");
+  return n.to_double();
+}
+
+namespace {
+
+constexpr std::size_t kMaxExpressionLength = 500;
+constexpr int kMaxExponent = 12;
+
+// The functions a mechanism file may use, from GiNaC's reader.
+const GiNaC::prototype_table& allowed_functions() {
+  static const GiNaC::prototype_table table = [] {
+    GiNaC::prototype_table out;
+    for (const auto& [prototype, reader] : GiNaC::get_default_reader())
+      for (const char* name : {"sin", "cos", "tan", "sqrt", "exp"})
+        if (prototype.first == name && prototype.second == 1) out[prototype] = reader;
+    return out;
+  }();
+  return table;
+}
+
+// An exponent is a number of at most kMaxExponent, a name, or a parenthesized group
+// without powers: GiNaC computes numeric powers as it reads, so 9^9^9 must not get there.
+void check_exponents(const Quantity& q) {
+  const std::string& text = q.text;
+  auto refuse = [&] {
+    throw Error::input(where(q.pos) + "the power in \"" + text + "\" is too high or nested; valid: exponents " +
+                       "from -" + std::to_string(kMaxExponent) + " to " + std::to_string(kMaxExponent) +
+                       ", a name, or a group without ^");
+  };
+  for (std::size_t i = text.find('^'); i != std::string::npos; i = text.find('^', i + 1)) {
+    std::size_t k = i + 1;
+    while (k < text.size() && (text[k] == ' ' || text[k] == '-' || text[k] == '+')) ++k;
+    if (k >= text.size()) return;  // the parser reports it
+    if (text[k] == '(') {
+      int depth = 0;
+      std::size_t j = k;
+      for (; j < text.size(); ++j) {
+        if (text[j] == '(') ++depth;
+        if (text[j] == ')' && --depth == 0) break;
+        if (text[j] == '^') refuse();
+      }
+      ++j;
+      while (j < text.size() && text[j] == ' ') ++j;
+      if (j < text.size() && text[j] == '^') refuse();
+    } else if (std::isdigit(static_cast<unsigned char>(text[k])) != 0 || text[k] == '.') {
+      std::size_t end = k;
+      while (end < text.size() && (std::isalnum(static_cast<unsigned char>(text[end])) != 0 || text[end] == '.')) ++end;
+      const double value = std::strtod(text.substr(k, end - k).c_str(), nullptr);
+      if (!(value <= kMaxExponent)) refuse();
+      while (end < text.size() && text[end] == ' ') ++end;
+      if (end < text.size() && text[end] == '^') refuse();  // a tower: a^b^c
+    } else {
+      std::size_t end = k;
+      while (end < text.size() && (std::isalnum(static_cast<unsigned char>(text[end])) != 0 || text[end] == '_')) ++end;
+      while (end < text.size() && text[end] == ' ') ++end;
+      if (end < text.size() && text[end] == '^') refuse();
+    }
+  }
+}
+
+// Decimal literals as exact fractions ("0.08" -> "(8/100)", "1.5e-3" -> "(15/10000)"), so
+// expanding never leaves a float residue whose size depends on GiNaC's term order.
+std::string exact_decimals(const std::string& text) {
+  std::string out;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const bool starts_number =
+        (std::isdigit(static_cast<unsigned char>(text[i])) != 0 ||
+         (text[i] == '.' && i + 1 < text.size() && std::isdigit(static_cast<unsigned char>(text[i + 1])) != 0)) &&
+        (i == 0 ||
+         (std::isalnum(static_cast<unsigned char>(text[i - 1])) == 0 && text[i - 1] != '_' && text[i - 1] != '.'));
+    if (!starts_number) {
+      out += text[i++];
+      continue;
+    }
+    std::string digits;
+    long scale = 0;  // value = digits * 10^-scale
+    bool point = false;
+    while (i < text.size() && (std::isdigit(static_cast<unsigned char>(text[i])) != 0 || (text[i] == '.' && !point))) {
+      if (text[i] == '.') {
+        point = true;
+      } else {
+        digits += text[i];
+        if (point) ++scale;
+      }
+      ++i;
+    }
+    if (i + 1 < text.size() && (text[i] == 'e' || text[i] == 'E') &&
+        (std::isdigit(static_cast<unsigned char>(text[i + 1])) != 0 ||
+         ((text[i + 1] == '-' || text[i + 1] == '+') && i + 2 < text.size() &&
+          std::isdigit(static_cast<unsigned char>(text[i + 2])) != 0))) {
+      std::size_t end = i + 1;
+      if (text[end] == '-' || text[end] == '+') ++end;
+      while (end < text.size() && std::isdigit(static_cast<unsigned char>(text[end])) != 0) ++end;
+      const long exponent = std::strtol(text.substr(i + 1, end - i - 1).c_str(), nullptr, 10);
+      if (exponent > 300 || exponent < -300) return text;  // left to the parser and the range checks
+      scale -= exponent;
+      i = end;
+    }
+    if (digits.empty()) digits = "0";
+    if (scale == 0) {
+      out += digits;
+    } else if (scale > 0) {
+      out += "(" + digits + "/1" + std::string(static_cast<std::size_t>(scale), '0') + ")";
+    } else {
+      out += "(" + digits + std::string(static_cast<std::size_t>(-scale), '0') + ")";
+    }
+  }
+  return out;
+}
+
+// The noun a report uses for a body of this shape: "block 1", "rod 2".
+std::string shape_noun(Shape shape) {
+  switch (shape) {
+    case Shape::rectangle:
+      return "block";
+    case Shape::rod:
+      return "rod";
+    case Shape::disc:
+      return "disc";
+    case Shape::point:
+      return "mass";
+  }
+  return "body";
+}
+
+std::string body_phrase(const Body& body) {
+  bool numeric = !body.name.empty();
+  for (char c : body.name) numeric = numeric && std::isdigit(static_cast<unsigned char>(c)) != 0;
+  return numeric ? shape_noun(body.shape) + " " + body.name : body.name;
+}
+
+std::string names_of(const GiNaC::symtab& names) {
+  std::string out;
+  for (const auto& [name, value] : names) {
+    if (name == "pi") continue;
+    if (!out.empty()) out += ", ";
+    out += name;
+  }
+  return out.empty() ? "(none)" : out;
+}
+
+// The first symbol name in GiNaC's "symbol \"z\" not found" message.
+std::string missing_symbol(const std::string& message) {
+  const auto open = message.find('"');
+  const auto close = open == std::string::npos ? open : message.find('"', open + 1);
+  if (close == std::string::npos) return {};
+  return message.substr(open + 1, close - open - 1);
+}
+
+int body_index(const Mechanism& m, const std::string& name) {
+  for (std::size_t i = 0; i < m.bodies.size(); ++i)
+    if (m.bodies[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+}  // namespace
+
+System::System(const Mechanism& mechanism) : mechanism_(mechanism), tree_(spanning_tree(mechanism)) {
+  add_parameters();
+  // The time of applied loads, printed like any symbol.
+  table_.add({t_, Role::time, "t", "t", "t", "t", "s", "time"});
+  add_bodies();
+  add_joints();
+  add_loads();
+  add_generalized();
+  add_newton_euler();
+}
+
+ex System::quantity(const Quantity& q, bool time_allowed) const {
+  GiNaC::symtab names = names_;
+  if (time_allowed) names["t"] = t_;
+  GiNaC::parser reader(names, true, allowed_functions());
+  if (q.text.size() > kMaxExpressionLength)
+    throw Error::input(where(q.pos) + "the expression is " + std::to_string(q.text.size()) +
+                       " characters long; valid: at most " + std::to_string(kMaxExpressionLength));
+  check_exponents(q);
+  ex parsed;
+  try {
+    parsed = reader(exact_decimals(q.text));
+  } catch (const std::exception& e) {
+    const std::string message = e.what();
+    const std::string name = missing_symbol(message);
+    if (message.find("not found") != std::string::npos && !name.empty())
+      throw Error::input(where(q.pos) + "unknown symbol '" + name + "' in \"" + q.text + "\"; valid: " +
+                         names_of(names) + (time_allowed ? "" : " (t only in [[force]] and [[torque]] values)"));
+    if (message.find("division by zero") != std::string::npos)
+      throw Error::input(where(q.pos) + "the expression \"" + q.text +
+                         "\" divides by zero; valid: an expression finite at the given values");
+    if (message.find("no function") != std::string::npos || message.find("unknown function") != std::string::npos)
+      throw Error::input(where(q.pos) + "unknown function in \"" + q.text + "\"; valid: sin, cos, tan, sqrt, exp");
+    throw Error::input(where(q.pos) + "cannot read the expression \"" + q.text +
+                       "\"; write numbers, names, + - * / ^, parentheses, sin cos tan sqrt exp, pi");
+  }
+  // Powers with a large whole exponent would make the equations explode when expanded.
+  for (auto it = parsed.preorder_begin(); it != parsed.preorder_end(); ++it)
+    if (GiNaC::is_a<GiNaC::power>(*it) && GiNaC::is_a<GiNaC::numeric>(it->op(1)) &&
+        !GiNaC::is_a<GiNaC::numeric>(it->op(0))) {
+      const auto& exponent = GiNaC::ex_to<GiNaC::numeric>(it->op(1));
+      if (!exponent.is_real() || GiNaC::abs(exponent) > kMaxExponent)
+        throw Error::input(where(q.pos) + "the power in \"" + q.text + "\" is too high; valid: exponents from -" +
+                           std::to_string(kMaxExponent) + " to " + std::to_string(kMaxExponent));
+    }
+  return parsed;
+}
+
+void System::add_parameters() {
+  names_["pi"] = GiNaC::Pi;
+  for (const Parameter& p : mechanism_.parameters) {
+    const Spelling spelling = spell_name(p.name);
+    const SymbolInfo& info =
+        table_.add({symbol(p.name), Role::parameter, p.name, spelling.unicode, spelling.ascii, spelling.latex, "", ""});
+    names_[p.name] = info.symbol;
+    parameter_values_[info.symbol] = GiNaC::numeric(p.value);
+  }
+  for (const Definition& d : mechanism_.definitions) {
+    const ex value = quantity(d.value, false).subs(constants_);
+    const Spelling spelling = spell_name(d.name);
+    const SymbolInfo& info = table_.add(
+        {symbol(d.name), Role::definition, d.name, spelling.unicode, spelling.ascii, spelling.latex, "", ""});
+    names_[d.name] = info.symbol;
+    constants_[info.symbol] = value;
+  }
+}
+
+void System::add_bodies() {
+  // One inertia symbol "I" when every rotating body has the same formula (the homework's
+  // identical blocks), else one per body.
+  std::vector<ex> formulas;
+  for (const Body& body : mechanism_.bodies) {
+    const ex mass = quantity(body.mass, false);
+    auto size = [&](const std::optional<Quantity>& q) { return q ? quantity(*q, false) : ex(0); };
+    ex formula = 0;
+    if (body.inertia) {
+      formula = quantity(*body.inertia, false);
+    } else {
+      switch (body.shape) {
+        case Shape::rectangle:
+          formula = mass * (GiNaC::pow(size(body.width), 2) + GiNaC::pow(size(body.length), 2)) / 12;
+          break;
+        case Shape::rod:
+          formula = mass * GiNaC::pow(size(body.length), 2) / 12;
+          break;
+        case Shape::disc:
+          formula = mass * GiNaC::pow(size(body.radius), 2) / 2;
+          break;
+        case Shape::point:
+          formula = 0;
+          break;
+      }
+    }
+    formulas.push_back(formula);
+  }
+  bool shared = true;
+  const ex* first = nullptr;
+  for (std::size_t i = 0; i < formulas.size(); ++i) {
+    if (!body_rotates(mechanism_.bodies[i])) continue;
+    if (first == nullptr)
+      first = &formulas[i];
+    else
+      shared = shared && (formulas[i] - *first).expand().is_zero();
+  }
+  ex shared_symbol = 0;
+  if (shared && first != nullptr) {
+    const SymbolInfo& info =
+        table_.add({symbol("I"), Role::inertia, "I", "I", "I", "I_{zz}^{C}", "kg m^2", "centroidal moment of inertia"});
+    shared_symbol = info.symbol;
+    constants_[info.symbol] = first->subs(constants_);
+  }
+
+  for (std::size_t i = 0; i < mechanism_.bodies.size(); ++i) {
+    const Body& body = mechanism_.bodies[i];
+    BodySystem b;
+    b.name = body.name;
+    b.mass = quantity(body.mass, false);
+    b.rotates = body_rotates(body);
+    b.inertia_formula = formulas[i];
+    if (b.rotates) {
+      if (shared) {
+        b.inertia = shared_symbol;
+      } else {
+        const Spelling s = spell_indexed("I", 0, body.name);
+        const SymbolInfo& info =
+            table_.add({symbol("I_" + body.name), Role::inertia, body.name + ".inertia", s.unicode, s.ascii, s.latex,
+                        "kg m^2", "centroidal moment of inertia of " + body_phrase(body)});
+        b.inertia = info.symbol;
+        constants_[info.symbol] = formulas[i].subs(constants_);
+      }
+    }
+    const std::string phrase = body_phrase(body);
+    auto make = [&](const char* base, const char* unit0, const char* meaning0, const char* unit1, const char* meaning1,
+                    const char* unit2, const char* meaning2) {
+      CoordinateSymbols c;
+      const std::string stem = body.name + "." + base;
+      const Spelling s0 = spell_indexed(base, 0, body.name);
+      const Spelling s1 = spell_indexed(base, 1, body.name);
+      const Spelling s2 = spell_indexed(base, 2, body.name);
+      c.q = table_
+                .add({symbol(stem), Role::coordinate, stem, s0.unicode, s0.ascii, s0.latex, unit0,
+                      std::string(meaning0) + phrase})
+                .symbol;
+      c.q_dot = table_
+                    .add({symbol(stem + "_dot"), Role::rate, stem + "_dot", s1.unicode, s1.ascii, s1.latex, unit1,
+                          std::string(meaning1) + phrase})
+                    .symbol;
+      c.q_ddot = table_
+                     .add({symbol(stem + "_ddot"), Role::acceleration, stem + "_ddot", s2.unicode, s2.ascii, s2.latex,
+                           unit2, std::string(meaning2) + phrase})
+                     .symbol;
+      derivative_[c.q] = c.q_dot;
+      derivative_[c.q_dot] = c.q_ddot;
+      return c;
+    };
+    b.x = make("x", "m", "x of the centre of mass of ", "m/s", "x velocity of ", "m/s^2", "x acceleration of ");
+    b.y = make("y", "m", "y of the centre of mass of ", "m/s", "y velocity of ", "m/s^2", "y acceleration of ");
+    if (b.rotates)
+      b.theta = make("theta", "rad", "angle from +x of ", "rad/s", "angular velocity of ", "rad/s^2",
+                     "angular acceleration of ");
+    for (const NamedPoint& p : body.points) {
+      const Vec2 at{quantity(p.at.x, false), quantity(p.at.y, false)};
+      if (!b.rotates && !(at.x.is_zero() && at.y.is_zero()))
+        throw Error::input(where(p.pos) + "point '" + p.name + "' of the point mass '" + body.name +
+                           "' is not at its centre; valid: [0, 0] (a point mass has no extent)");
+      b.points[p.name] = at;
+    }
+    bodies_.push_back(std::move(b));
+  }
+}
+
+Vec2 System::point_position(int body, const std::string& point) const {
+  if (body < 0) {
+    for (const NamedPoint& p : mechanism_.ground_points)
+      if (p.name == point) return {quantity(p.at.x, false), quantity(p.at.y, false)};
+    throw std::logic_error("ground point missing: " + point);
+  }
+  const BodySystem& b = bodies_[static_cast<std::size_t>(body)];
+  const Vec2 origin{b.x.q, b.y.q};
+  return origin + rotate(b.rotates ? ex(b.theta.q) : ex(0), b.points.at(point));
+}
+
+void System::add_joints() {
+  const bool single = mechanism_.joints.size() == 1;
+  for (std::size_t j = 0; j < mechanism_.joints.size(); ++j) {
+    const Joint& joint = mechanism_.joints[j];
+    JointSystem js;
+    js.index = static_cast<int>(j);
+    for (int t : tree_.tree_joints) js.in_tree = js.in_tree || t == js.index;
+    const int a = body_index(mechanism_, joint.bodies[0]);
+    const int b = body_index(mechanism_, joint.bodies[1]);
+    JointEnds ends;
+    auto place = [&](int body, const std::string& point, Placement& placement, Vec2& local) {
+      if (body < 0) {
+        placement = {};
+        local = point_position(-1, point);
+        return;
+      }
+      const BodySystem& bs = bodies_[static_cast<std::size_t>(body)];
+      placement = {{bs.x.q, bs.y.q}, bs.rotates ? ex(bs.theta.q) : ex(0)};
+      local = bs.points.at(point);
+    };
+    place(a, joint.points[0], ends.a, ends.point_a);
+    place(b, joint.points[1], ends.b, ends.point_b);
+    const std::string stem = joint.name + ".";
+    const std::string on =
+        a < 0 ? std::string("the ground") : body_phrase(mechanism_.bodies[static_cast<std::size_t>(a)]);
+    if (joint.type == JointType::pin) {
+      const std::string fx = single ? "Fx" : "Fx_" + joint.name;
+      const std::string fy = single ? "Fy" : "Fy_" + joint.name;
+      const std::string lx = single ? "F_x" : "F_{x," + joint.name + "}";
+      const std::string ly = single ? "F_y" : "F_{y," + joint.name + "}";
+      js.unknowns.push_back(table_
+                                .add({symbol(stem + "force_x"), Role::force, stem + "force_x", fx, fx, lx, "N",
+                                      "pin force on " + on + ", x"})
+                                .symbol);
+      js.unknowns.push_back(table_
+                                .add({symbol(stem + "force_y"), Role::force, stem + "force_y", fy, fy, ly, "N",
+                                      "pin force on " + on + ", y"})
+                                .symbol);
+      js.constraints = pin_constraints(ends);
+      pin_force(js, table_);
+    } else {
+      ends.axis = {quantity(joint.axis->x, false), quantity(joint.axis->y, false)};
+      const Spelling n = spell_indexed("N", 0, joint.name);
+      const Spelling m = spell_indexed("M", 0, joint.name);
+      js.unknowns.push_back(table_
+                                .add({symbol(stem + "normal"), Role::force, stem + "normal", n.unicode, n.ascii,
+                                      n.latex, "N", "slider force across the axis on " + on})
+                                .symbol);
+      js.unknowns.push_back(table_
+                                .add({symbol(stem + "moment"), Role::force, stem + "moment", m.unicode, m.ascii,
+                                      m.latex, "N m", "slider moment on " + on})
+                                .symbol);
+      js.constraints = slider_constraints(ends);
+      slider_force(js, ends, table_);
+    }
+    joints_.push_back(std::move(js));
+  }
+}
+
+void System::add_loads() {
+  if (mechanism_.gravity) {
+    const ex g = quantity(*mechanism_.gravity, false);
+    if (!g.is_zero())
+      for (std::size_t i = 0; i < bodies_.size(); ++i) {
+        const BodySystem& b = bodies_[i];
+        loads_.push_back({static_cast<int>(i), {0, -b.mass * g}, {b.x.q, b.y.q}, 0, "gravity"});
+      }
+  }
+  for (const Spring& spring : mechanism_.springs) {
+    const int a = body_index(mechanism_, spring.between[0].body);
+    const int b = body_index(mechanism_, spring.between[1].body);
+    const Vec2 pa = point_position(a, spring.between[0].point);
+    const Vec2 pb = point_position(b, spring.between[1].point);
+    const Vec2 d = pb - pa;
+    const ex length = GiNaC::sqrt(d.x * d.x + d.y * d.y);
+    const ex tension = quantity(spring.stiffness, false) * (length - quantity(spring.rest_length, false)) +
+                       quantity(spring.damping, false) * time_derivative(length);
+    // Tension pulls b towards a and a towards b.
+    const Vec2 on_b = (-tension / length) * d;
+    if (b >= 0) loads_.push_back({b, on_b, pb, 0, spring.name});
+    if (a >= 0) loads_.push_back({a, ex(-1) * on_b, pa, 0, spring.name});
+  }
+  for (const Joint& joint : mechanism_.joints) {
+    if (joint.type != JointType::pin || (!joint.stiffness && !joint.damping)) continue;
+    const int a = body_index(mechanism_, joint.bodies[0]);
+    const int b = body_index(mechanism_, joint.bodies[1]);
+    auto angle = [&](int i) {
+      return i < 0 || !bodies_[static_cast<std::size_t>(i)].rotates ? ex(0)
+                                                                    : ex(bodies_[static_cast<std::size_t>(i)].theta.q);
+    };
+    const ex relative = angle(b) - angle(a);
+    const ex rest = joint.rest_angle ? quantity(*joint.rest_angle, false) : ex(0);
+    ex torque = 0;
+    if (joint.stiffness) torque -= quantity(*joint.stiffness, false) * (relative - rest);
+    if (joint.damping) torque -= quantity(*joint.damping, false) * time_derivative(relative);
+    if (b >= 0) loads_.push_back({b, {}, {}, torque, joint.name});
+    if (a >= 0) loads_.push_back({a, {}, {}, -torque, joint.name});
+  }
+  int count = 0;
+  for (const AppliedForce& force : mechanism_.forces) {
+    const int body = body_index(mechanism_, force.body);
+    const Vec2 value{quantity(force.value.x, true), quantity(force.value.y, true)};
+    loads_.push_back({body, value, point_position(body, force.point), 0, "force " + std::to_string(++count)});
+  }
+  count = 0;
+  for (const AppliedTorque& torque : mechanism_.torques) {
+    const int body = body_index(mechanism_, torque.body);
+    loads_.push_back({body, {}, {}, quantity(torque.value, true), "torque " + std::to_string(++count)});
+  }
+}
+
+ex System::time_derivative(const ex& e) const {
+  ex out = GiNaC::diff(e, t_);
+  for (const auto& [q, q_dot] : derivative_)
+    if (e.has(q)) out += GiNaC::diff(e, GiNaC::ex_to<symbol>(q)) * q_dot;
+  return out;
+}
+
+void System::add_generalized() {
+  std::vector<Placement> placed(bodies_.size());
+  std::vector<bool> done(bodies_.size(), false);
+  auto placement_of = [&](int body) {
+    if (body < 0) return Placement{};
+    return placed[static_cast<std::size_t>(body)];
+  };
+  for (int body : tree_.order) {
+    const auto i = static_cast<std::size_t>(body);
+    const TreeBody& node = tree_.bodies[i];
+    const BodySystem& bs = bodies_[i];
+    if (node.floating) {
+      placed[i] = {{bs.x.q, bs.y.q}, bs.rotates ? ex(bs.theta.q) : ex(0)};
+      continue;
+    }
+    const Joint& joint = mechanism_.joints[static_cast<std::size_t>(node.joint)];
+    const int a = body_index(mechanism_, joint.bodies[0]);
+    const bool child_is_b = a != body;
+    JointEnds ends;
+    const int other = child_is_b ? a : body_index(mechanism_, joint.bodies[1]);
+    Placement parent = placement_of(other);
+    auto local = [&](int b, const std::string& point) {
+      return b < 0 ? point_position(-1, point) : bodies_[static_cast<std::size_t>(b)].points.at(point);
+    };
+    ends.point_a = local(a, joint.points[0]);
+    ends.point_b = local(body_index(mechanism_, joint.bodies[1]), joint.points[1]);
+    (child_is_b ? ends.a : ends.b) = parent;
+    if (joint.type == JointType::pin) {
+      placed[i] = pin_place(ends, child_is_b, bs.rotates ? ex(bs.theta.q) : ex(0));
+    } else {
+      ends.axis = {quantity(joint.axis->x, false), quantity(joint.axis->y, false)};
+      const Spelling s0 = spell_indexed("s", 0, joint.name);
+      const Spelling s1 = spell_indexed("s", 1, joint.name);
+      const Spelling s2 = spell_indexed("s", 2, joint.name);
+      const std::string stem = joint.name + ".s";
+      CoordinateSymbols c;
+      c.q = table_
+                .add({symbol(stem), Role::coordinate, stem, s0.unicode, s0.ascii, s0.latex, "m",
+                      "position along slider " + joint.name})
+                .symbol;
+      c.q_dot = table_
+                    .add({symbol(stem + "_dot"), Role::rate, stem + "_dot", s1.unicode, s1.ascii, s1.latex, "m/s",
+                          "velocity along slider " + joint.name})
+                    .symbol;
+      c.q_ddot = table_
+                     .add({symbol(stem + "_ddot"), Role::acceleration, stem + "_ddot", s2.unicode, s2.ascii, s2.latex,
+                           "m/s^2", "acceleration along slider " + joint.name})
+                     .symbol;
+      derivative_[c.q] = c.q_dot;
+      derivative_[c.q_dot] = c.q_ddot;
+      slider_symbols_[node.joint] = c;
+      placed[i] = slider_place(ends, child_is_b, c.q);
+    }
+    done[i] = true;
+  }
+
+  for (const Coordinate& c : tree_.coordinates) {
+    const BodySystem& b = bodies_[static_cast<std::size_t>(c.body)];
+    GeneralizedCoordinate g{c, {}};
+    switch (c.kind) {
+      case CoordinateKind::x:
+        g.symbols = b.x;
+        break;
+      case CoordinateKind::y:
+        g.symbols = b.y;
+        break;
+      case CoordinateKind::theta:
+        g.symbols = b.theta;
+        break;
+      case CoordinateKind::s:
+        g.symbols = slider_symbols_.at(c.joint);
+        break;
+    }
+    coordinates_.push_back(g);
+  }
+
+  // Every maximal symbol that is not itself generalized, as an expression in them.
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    const BodySystem& b = bodies_[i];
+    const Placement& p = placed[i];
+    auto map = [&](const CoordinateSymbols& c, const ex& position) {
+      if (position.is_equal(c.q)) return;
+      const ex rate = time_derivative(position);
+      to_generalized_[c.q] = position;
+      to_generalized_[c.q_dot] = rate;
+      to_generalized_[c.q_ddot] = time_derivative(rate);
+    };
+    map(b.x, p.position.x);
+    map(b.y, p.position.y);
+    if (b.rotates) map(b.theta, p.angle);
+  }
+}
+
+void System::add_newton_euler() {
+  std::vector<Vec2> sum_force(bodies_.size());
+  std::vector<ex> sum_moment(bodies_.size(), ex(0));
+  auto apply = [&](int body, const Vec2& force, const Vec2& point, const ex& moment) {
+    if (body < 0) return;
+    const auto i = static_cast<std::size_t>(body);
+    const BodySystem& b = bodies_[i];
+    sum_force[i] = sum_force[i] + force;
+    if (b.rotates) sum_moment[i] += cross(point - Vec2{b.x.q, b.y.q}, force) + moment;
+  };
+  // Joint forces first, in joint order, so each row reads as the homework's: "m x1'' - Fx".
+  for (const JointSystem& js : joints_) {
+    const Joint& joint = mechanism_.joints[static_cast<std::size_t>(js.index)];
+    const int a = body_index(mechanism_, joint.bodies[0]);
+    const int b = body_index(mechanism_, joint.bodies[1]);
+    const Vec2 at_a =
+        joint.type == JointType::pin ? point_position(a, joint.points[0]) : point_position(b, joint.points[1]);
+    const Vec2 at_b = point_position(b, joint.points[1]);
+    apply(a, js.force, at_a, js.moment);
+    apply(b, ex(-1) * js.force, at_b, -js.moment);
+  }
+  for (const Load& load : loads_) apply(load.body, load.force, load.point, load.moment);
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    const BodySystem& b = bodies_[i];
+    NewtonEulerRows rows{static_cast<int>(i), {}};
+    rows.rows.push_back(GiNaC::expand(b.mass * b.x.q_ddot - sum_force[i].x));
+    rows.rows.push_back(GiNaC::expand(b.mass * b.y.q_ddot - sum_force[i].y));
+    if (b.rotates) rows.rows.push_back(GiNaC::expand(b.inertia * b.theta.q_ddot - sum_moment[i]));
+    newton_euler_.push_back(std::move(rows));
+  }
+}
+
+GiNaC::exmap System::initial_state() const {
+  GiNaC::exmap state;
+  for (const GeneralizedCoordinate& g : coordinates_) {
+    double q = 0, rate = 0;
+    for (const InitialValue& v : mechanism_.initial) {
+      if (v.key == g.coordinate.key) q = v.value;
+      if (v.key == g.coordinate.key + "_dot") rate = v.value;
+    }
+    state[g.symbols.q] = GiNaC::numeric(q);
+    state[g.symbols.q_dot] = GiNaC::numeric(rate);
+  }
+  return state;
+}
+
+}  // namespace linkage::sym

@@ -1,0 +1,141 @@
+#pragma once
+// A mechanism's equations as GiNaC expressions, built from the file by one procedure:
+//   each body b: maximal coordinates x_b, y_b, theta_b (a point mass has no theta), a point
+//     s of b at r_b + R(theta_b) s in the world;
+//   each joint: its position constraint rows Phi(q) = 0 (joint_pin.cpp, joint_slider.cpp)
+//     and its force (the force bodies[1] exerts on bodies[0]) as unknown symbols;
+//   loads: gravity, springs and dampers, joint springs, applied forces and torques;
+//   Newton-Euler of each body, each row an expression r(q, q', q'', F) = 0:
+//     m_b x_b'' - sum F_x,  m_b y_b'' - sum F_y,  I_b theta_b'' - sum (p - r_b) x F - sum M;
+//   the spanning tree's generalized coordinates, with every maximal coordinate, rate and
+//   acceleration as an expression in them (for Case 2 and Case 3).
+// Time derivatives are taken by the chain rule over coordinate and rate symbols.
+#include <ginac/ginac.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "model/mechanism.hpp"
+#include "model/spanning_tree.hpp"
+#include "symbolic/symbols.hpp"
+
+namespace linkage::sym {
+
+struct Vec2 {
+  GiNaC::ex x = 0, y = 0;
+};
+
+/// A maximal coordinate with its rate and acceleration symbols.
+struct CoordinateSymbols {
+  GiNaC::symbol q, q_dot, q_ddot;
+};
+
+struct BodySystem {
+  std::string name;
+  GiNaC::ex mass;             // in parameters and definitions
+  GiNaC::ex inertia;          // the symbol printed in the equations (I, I₁) or 0 for a point mass
+  GiNaC::ex inertia_formula;  // its value in parameters and definitions
+  bool rotates = true;        // false for a point mass: no theta
+  CoordinateSymbols x, y, theta;
+  std::map<std::string, Vec2> points;  // body frame
+};
+
+/// A force and moment on one body. `point` is where it acts, world frame, in maximal
+/// coordinates; `moment` a pure couple.
+struct Load {
+  int body = -1;
+  Vec2 force;
+  Vec2 point;
+  GiNaC::ex moment = 0;
+  std::string source;  // "gravity", a spring, joint or "force 1" name
+};
+
+struct JointSystem {
+  int index = -1;                       // into Mechanism::joints
+  std::vector<GiNaC::ex> constraints;   // Phi(q) = 0, maximal coordinates
+  std::vector<GiNaC::symbol> unknowns;  // force components: Fx, Fy (pin); N, M (slider)
+  Vec2 force;                           // the force bodies[1] exerts on bodies[0], world frame
+  GiNaC::ex moment = 0;                 // and its moment (slider)
+  bool in_tree = false;
+};
+
+/// One generalized coordinate: its symbols (for a floating base and a pin, the body's own
+/// maximal symbols; a slider's s its own).
+struct GeneralizedCoordinate {
+  Coordinate coordinate;
+  CoordinateSymbols symbols;
+};
+
+struct NewtonEulerRows {
+  int body = -1;
+  std::vector<GiNaC::ex> rows;  // x, y[, theta]: each = 0
+};
+
+class System {
+ public:
+  explicit System(const Mechanism& mechanism);
+
+  [[nodiscard]] const Mechanism& mechanism() const { return mechanism_; }
+  [[nodiscard]] const SymbolTable& table() const { return table_; }
+  [[nodiscard]] const SpanningTree& tree() const { return tree_; }
+  [[nodiscard]] const GiNaC::symbol& time() const { return t_; }
+  [[nodiscard]] const std::vector<BodySystem>& bodies() const { return bodies_; }
+  [[nodiscard]] const std::vector<JointSystem>& joints() const { return joints_; }
+  [[nodiscard]] const std::vector<Load>& loads() const { return loads_; }
+  [[nodiscard]] const std::vector<GeneralizedCoordinate>& coordinates() const { return coordinates_; }
+  [[nodiscard]] const std::vector<NewtonEulerRows>& newton_euler() const { return newton_euler_; }
+  /// Definition and inertia symbols -> their expressions in parameters (for numbers).
+  [[nodiscard]] const GiNaC::exmap& constants() const { return constants_; }
+  /// Parameter symbols -> values.
+  [[nodiscard]] const GiNaC::exmap& parameter_values() const { return parameter_values_; }
+  /// Maximal coordinates, rates and accelerations -> expressions in generalized ones.
+  [[nodiscard]] const GiNaC::exmap& to_generalized() const { return to_generalized_; }
+
+  /// d/dt by the chain rule over every coordinate and rate symbol, and t.
+  [[nodiscard]] GiNaC::ex time_derivative(const GiNaC::ex& e) const;
+  /// World position of a body's point, maximal coordinates (body -1: the ground).
+  [[nodiscard]] Vec2 point_position(int body, const std::string& point) const;
+  /// A parsed quantity of the file, in parameters, definitions (and t where allowed).
+  [[nodiscard]] GiNaC::ex quantity(const Quantity& q, bool time_allowed) const;
+
+  /// Generalized coordinate and rate symbols -> values from the file's [initial].
+  [[nodiscard]] GiNaC::exmap initial_state() const;
+
+ private:
+  void add_parameters();
+  void add_bodies();
+  void add_joints();
+  void add_loads();
+  void add_generalized();
+  void add_newton_euler();
+
+  Mechanism mechanism_;
+  SymbolTable table_;
+  SpanningTree tree_;
+  GiNaC::symbol t_{"t"};
+  GiNaC::symtab names_;  // parser symbols: parameters, definitions
+  std::vector<BodySystem> bodies_;
+  std::vector<JointSystem> joints_;
+  std::vector<Load> loads_;
+  std::vector<GeneralizedCoordinate> coordinates_;
+  std::vector<NewtonEulerRows> newton_euler_;
+  GiNaC::exmap constants_, parameter_values_, to_generalized_;
+  std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less> derivative_;  // q -> q', q' -> q''
+  std::map<int, CoordinateSymbols> slider_symbols_;               // by joint index
+};
+
+[[nodiscard]] Vec2 rotate(const GiNaC::ex& angle, const Vec2& v);
+[[nodiscard]] GiNaC::ex cross(const Vec2& a, const Vec2& b);
+[[nodiscard]] inline Vec2 operator+(const Vec2& a, const Vec2& b) { return {a.x + b.x, a.y + b.y}; }
+[[nodiscard]] inline Vec2 operator-(const Vec2& a, const Vec2& b) { return {a.x - b.x, a.y - b.y}; }
+[[nodiscard]] inline Vec2 operator*(const GiNaC::ex& k, const Vec2& v) { return {k * v.x, k * v.y}; }
+
+/// `e` expanded with sin(x)^2 written 1 - cos(x)^2 for every argument x, so that
+/// sin² + cos² never survives as such.
+[[nodiscard]] GiNaC::ex simplify_trig(const GiNaC::ex& e);
+
+/// A number from a closed expression (no free symbol left); throws std::logic_error if not.
+[[nodiscard]] double to_double(const GiNaC::ex& e);
+
+}  // namespace linkage::sym

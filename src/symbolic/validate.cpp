@@ -1,0 +1,149 @@
+#include "symbolic/validate.hpp"
+
+#include <Eigen/Core>
+#include <Eigen/LU>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "core/number_format.hpp"
+
+namespace linkage::sym {
+
+namespace {
+
+// The quantity's value at the parameters (t = 0), or an error naming it.
+double checked_value(const System& system, const Quantity& q, bool time_allowed, const std::string& what) {
+  GiNaC::exmap values = system.parameter_values();
+  for (const auto& [symbol, expression] : system.constants())
+    values[symbol] = expression.subs(system.parameter_values());
+  values[system.time()] = 0;
+  double v = std::nan("");
+  try {
+    v = to_double(system.quantity(q, time_allowed).subs(values).subs(values));
+  } catch (const Error&) {
+    throw;
+  } catch (const std::exception&) {
+    v = std::nan("");
+  }
+  if (!std::isfinite(v))
+    throw Error::input(where(q.pos) + what + " \"" + q.text +
+                       "\" is not a finite number at the parameters (a division by zero, or the square root or "
+                       "logarithm of a negative number); valid: an expression finite at the given values");
+  return v;
+}
+
+void require_positive(const System& system, const Quantity& q, const std::string& what) {
+  const double v = checked_value(system, q, false, what);
+  if (!(v > 0))
+    throw Error::input(where(q.pos) + what + " \"" + q.text + "\" is " + format_significant(v, 6) +
+                       " at the parameters; valid: > 0");
+}
+
+void require_non_negative(const System& system, const Quantity& q, const std::string& what) {
+  const double v = checked_value(system, q, false, what);
+  if (!(v >= 0))
+    throw Error::input(where(q.pos) + what + " \"" + q.text + "\" is " + format_significant(v, 6) +
+                       " at the parameters; valid: >= 0");
+}
+
+}  // namespace
+
+void validate_quantities(const System& system) {
+  const Mechanism& m = system.mechanism();
+  for (const Definition& d : m.definitions) (void)checked_value(system, d.value, false, "definition " + d.name);
+  if (m.gravity) (void)checked_value(system, *m.gravity, false, "gravity");
+  for (const NamedPoint& p : m.ground_points) {
+    (void)checked_value(system, p.at.x, false, "ground point " + p.name + " x");
+    (void)checked_value(system, p.at.y, false, "ground point " + p.name + " y");
+  }
+  for (const Body& b : m.bodies) {
+    require_positive(system, b.mass, "mass of body " + b.name);
+    if (b.length) require_positive(system, *b.length, "length of body " + b.name);
+    if (b.width) require_positive(system, *b.width, "width of body " + b.name);
+    if (b.radius) require_positive(system, *b.radius, "radius of body " + b.name);
+    if (b.inertia) require_positive(system, *b.inertia, "inertia of body " + b.name);
+    for (const NamedPoint& p : b.points) {
+      (void)checked_value(system, p.at.x, false, "point " + b.name + "." + p.name + " x");
+      (void)checked_value(system, p.at.y, false, "point " + b.name + "." + p.name + " y");
+    }
+  }
+  for (const Joint& j : m.joints) {
+    if (j.stiffness) require_non_negative(system, *j.stiffness, "stiffness of joint " + j.name);
+    if (j.damping) require_non_negative(system, *j.damping, "damping of joint " + j.name);
+    if (j.rest_angle) (void)checked_value(system, *j.rest_angle, false, "rest angle of joint " + j.name);
+    if (j.stiffness || j.damping)
+      for (const std::string& body : j.bodies) {
+        const Body* b = m.find_body(body);
+        if (b != nullptr && !body_rotates(*b))
+          throw Error::input(where(j.pos) + "the torsional spring-damper of joint " + j.name +
+                             " acts on the point mass '" + body +
+                             "', which has no angle; valid: a pin between bodies with a shape or an inertia");
+      }
+    if (j.type == JointType::slider) {
+      const double ax = checked_value(system, j.axis->x, false, "axis x of joint " + j.name);
+      const double ay = checked_value(system, j.axis->y, false, "axis y of joint " + j.name);
+      if (ax == 0 && ay == 0)
+        throw Error::input(where(j.axis->x.pos) + "the axis of slider " + j.name +
+                           " is zero at the parameters; valid: a direction of non-zero length");
+      for (const std::string& body : j.bodies) {
+        const Body* b = m.find_body(body);
+        if (b != nullptr && !body_rotates(*b))
+          throw Error::input(where(j.pos) + "slider " + j.name + " joins the point mass '" + body +
+                             "', which has no angle to keep; valid: bodies with a shape or an inertia");
+      }
+    }
+  }
+  for (const Spring& s : m.springs) {
+    require_non_negative(system, s.stiffness, "stiffness of spring " + s.name);
+    require_non_negative(system, s.rest_length, "rest length of spring " + s.name);
+    require_non_negative(system, s.damping, "damping of spring " + s.name);
+  }
+  for (const AppliedForce& f : m.forces) {
+    (void)checked_value(system, f.value.x, true, "force on " + f.body + " x");
+    (void)checked_value(system, f.value.y, true, "force on " + f.body + " y");
+  }
+  for (const AppliedTorque& t : m.torques) (void)checked_value(system, t.value, true, "torque on " + t.body);
+}
+
+void validate_constraints(const System& system, const GiNaC::exmap& state) {
+  // The Jacobian of every joint's rows in maximal coordinates, at the state.
+  std::vector<GiNaC::symbol> coordinates;
+  for (const BodySystem& b : system.bodies()) {
+    coordinates.push_back(b.x.q);
+    coordinates.push_back(b.y.q);
+    if (b.rotates) coordinates.push_back(b.theta.q);
+  }
+  GiNaC::exmap values = system.parameter_values();
+  for (const auto& [symbol, expression] : system.constants())
+    values[symbol] = GiNaC::evalf(expression.subs(system.parameter_values()));
+  for (const auto& [symbol, value] : state) values[symbol] = value;
+  for (const auto& [symbol, expression] : system.to_generalized())
+    if (!expression.has(system.time())) values[symbol] = GiNaC::evalf(expression.subs(values));
+  const Mechanism& m = system.mechanism();
+  Eigen::MatrixXd rows(0, static_cast<Eigen::Index>(coordinates.size()));
+  Eigen::Index rank = 0;
+  for (std::size_t j = 0; j < system.joints().size(); ++j) {
+    const auto& phi = system.joints()[j].constraints;
+    Eigen::MatrixXd more(rows.rows() + static_cast<Eigen::Index>(phi.size()), rows.cols());
+    more.topRows(rows.rows()) = rows;
+    for (std::size_t r = 0; r < phi.size(); ++r)
+      for (std::size_t c = 0; c < coordinates.size(); ++c)
+        more(rows.rows() + static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) =
+            to_double(GiNaC::diff(phi[r], coordinates[c]).subs(values));
+    Eigen::FullPivLU<Eigen::MatrixXd> lu(more);
+    lu.setThreshold(1e-9);
+    const Eigen::Index new_rank = lu.rank();
+    if (new_rank < rank + static_cast<Eigen::Index>(phi.size())) {
+      std::string earlier;
+      for (std::size_t k = 0; k < j; ++k) earlier += (earlier.empty() ? "" : ", ") + m.joints[k].name;
+      throw Error::input(where(m.joints[j].pos) + "joint " + m.joints[j].name +
+                         " is redundant at the initial state: joints " + earlier +
+                         " already fix what it constrains (one joint too many, or links in line at a change "
+                         "point); valid: remove the joint, or start away from that position");
+    }
+    rank = new_rank;
+    rows = std::move(more);
+  }
+}
+
+}  // namespace linkage::sym

@@ -1,0 +1,124 @@
+// Bad mechanisms found by the symbolic layer: each a one-line error with the file
+// position, the value and the valid range.
+#include "symbolic/validate.hpp"
+
+#include <gtest/gtest.h>
+
+#include "core/error.hpp"
+#include "symbolic/loop_closure.hpp"
+
+namespace linkage {
+namespace {
+
+Quantity q(const std::string& text, long line = 0) { return {text, {"m.toml", line, 9}}; }
+
+// A pendulum rod hanging from ground point O, and optionally a second pin at the same place.
+Mechanism pendulum(const std::string& mass = "m", const std::string& length = "L") {
+  Mechanism m;
+  m.source = "m.toml";
+  m.gravity = q("g");
+  m.parameters = {{"L", 0.3, {}}, {"m", 0.1, {}}, {"g", 9.81, {}}};
+  m.ground_points = {{"O", {q("0"), q("0")}, {}}};
+  Body rod;
+  rod.name = "1";
+  rod.shape = Shape::rod;
+  rod.mass = q(mass, 7);
+  rod.length = q(length, 8);
+  rod.points = {{"O", {q("-L/2"), q("0")}, {}}};
+  m.bodies = {rod};
+  Joint pin;
+  pin.name = "O";
+  pin.bodies = {"ground", "1"};
+  pin.points = {"O", "O"};
+  pin.pos = {"m.toml", 12, 1};
+  m.joints = {pin};
+  m.initial = {{"1.theta", -1.0, {}}};
+  return m;
+}
+
+std::string error_of(const Mechanism& m) {
+  try {
+    const sym::System system(m);
+    sym::validate_quantities(system);
+    sym::validate_constraints(system, system.initial_state());
+    sym::validate_constraints(system, sym::close_loops(system, system.initial_state()).state);
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::bad_input);
+    EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Validate, AGoodPendulumPasses) { EXPECT_EQ(error_of(pendulum()), ""); }
+
+TEST(Validate, UnknownSymbolNamesTheValidOnes) {
+  EXPECT_EQ(error_of(pendulum("mass")),
+            "m.toml:7:9: unknown symbol 'mass' in \"mass\"; valid: L, g, m (t only in [[force]] and [[torque]] "
+            "values)");
+}
+
+TEST(Validate, NonPositiveMassAtTheParameters) {
+  EXPECT_EQ(error_of(pendulum("m - 0.2")),
+            "m.toml:7:9: mass of body 1 \"m - 0.2\" is -0.1 at the parameters; valid: > 0");
+}
+
+TEST(Validate, DivisionByZero) {
+  const std::string e = error_of(pendulum("m", "L/(L - 0.3)"));
+  EXPECT_NE(e.find("m.toml:8:9: "), std::string::npos) << e;
+  EXPECT_NE(e.find("L/(L - 0.3)"), std::string::npos) << e;
+}
+
+TEST(Validate, ARedundantJointIsNamed) {
+  Mechanism m = pendulum();
+  Joint again = m.joints[0];
+  again.name = "O2";
+  again.pos = {"m.toml", 20, 1};
+  m.joints.push_back(again);
+  const std::string e = error_of(m);
+  EXPECT_NE(e.find("m.toml:20:1: joint O2 is redundant"), std::string::npos) << e;
+  EXPECT_NE(e.find("joints O"), std::string::npos) << e;
+}
+
+TEST(Validate, ASliderOnAPointMassIsRefused) {
+  Mechanism m = pendulum();
+  Body bead;
+  bead.name = "bead";
+  bead.shape = Shape::point;
+  bead.mass = q("m");
+  bead.points = {{"C", {q("0"), q("0")}, {}}};
+  m.bodies.push_back(bead);
+  m.bodies[0].points.push_back({"A", {q("L/2"), q("0")}, {}});
+  Joint slider;
+  slider.name = "s";
+  slider.type = JointType::slider;
+  slider.bodies = {"1", "bead"};
+  slider.points = {"A", "C"};
+  slider.axis = Vector2Quantity{q("1"), q("0")};
+  m.joints.push_back(slider);
+  const std::string e = error_of(m);
+  EXPECT_NE(e.find("slider s joins the point mass 'bead'"), std::string::npos) << e;
+}
+
+}  // namespace
+}  // namespace linkage
+
+namespace linkage {
+namespace {
+
+TEST(Validate, ExpressionsThatWouldExplodeOrAreUnknownAreRefused) {
+  EXPECT_NE(error_of(pendulum("m", "L*9^9^9")).find("m.toml:8:9: the power in \"L*9^9^9\" is too high or nested"),
+            std::string::npos);
+  EXPECT_NE(error_of(pendulum("m", "L^100")).find("is too high"), std::string::npos);
+  EXPECT_NE(error_of(pendulum("m", "L*(9)^(9)^(9)")).find("is too high or nested"), std::string::npos);
+  EXPECT_NE(error_of(pendulum("m", "(L+1)^(2^9)")).find("is too high or nested"), std::string::npos);
+  EXPECT_NE(error_of(pendulum("m", std::string(600, '1'))).find("characters long; valid: at most 500"),
+            std::string::npos);
+  const std::string unknown = error_of(pendulum("m", "L*tgamma(2)"));
+  EXPECT_NE(unknown.find("m.toml:8:9: "), std::string::npos) << unknown;
+  EXPECT_NE(unknown.find("valid: sin, cos, tan, sqrt, exp"), std::string::npos) << unknown;
+  EXPECT_EQ(error_of(pendulum("m", "L^2/L + 0*sqrt(L)")), "");
+}
+
+}  // namespace
+}  // namespace linkage
