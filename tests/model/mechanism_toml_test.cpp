@@ -322,9 +322,14 @@ TEST(MechanismToml, ShapesAndTheirSizes) {
   EXPECT_EQ(disc.bodies[0].radius->text, "0.1");
   EXPECT_EQ(disc.bodies[0].inertia->text, "1");
   EXPECT_FALSE(disc.bodies[0].length.has_value());
-  const Mechanism point = read_mechanism(pendulum_with({{11, "shape = \"point\""}, {13, ""}}), "m.toml");
+  // A point mass has no angle: on a pin it has no coordinate at all.
+  const Mechanism point = read_mechanism(
+      pendulum_with({{11, "shape = \"point\""}, {13, ""}, {14, "points = { O = [0, 0] }"}, {21, ""}}), "m.toml");
   EXPECT_EQ(point.bodies[0].shape, Shape::point);
   EXPECT_FALSE(point.bodies[0].length.has_value());
+  expect_error(pendulum_with({{11, "shape = \"point\""}, {13, ""}, {14, "points = { O = [0, 0] }"}}), "21:17",
+               {"[initial] 1.theta is not a generalized coordinate or rate of this mechanism (body '1' is carried by "
+                "pin 'O', a point mass with no angle: its coordinates: none); valid: none"});
 }
 
 TEST(MechanismToml, PlainNumbersOutOfRange) {
@@ -423,7 +428,7 @@ TEST(MechanismToml, SliderReads) {
   const std::string wrong = text.substr(0, text.find("slide = {")) + "block = { theta = 0 }\nslide = { s = 0 }\n";
   const std::string message = read_error(wrong);
   EXPECT_EQ(message.rfind("m.toml:17:19: [initial] block.theta is not a generalized coordinate", 0), 0u) << message;
-  EXPECT_NE(message.find("(body 'block' is carried by slider 'slide': its coordinate is slide.s)"), std::string::npos)
+  EXPECT_NE(message.find("(body 'block' is carried by slider 'slide': its coordinates: slide.s)"), std::string::npos)
       << message;
 }
 
@@ -470,7 +475,7 @@ TEST(MechanismToml, NoBodies) {
 TEST(MechanismToml, InitialState) {
   expect_error(pendulum_with(21, "\"1\" = { theta = -1, x = 0 }"), "21:25",
                {"[initial] 1.x is not a generalized coordinate or rate of this mechanism",
-                "(body '1' is carried by pin 'O': its coordinate is 1.theta)",
+                "(body '1' is carried by pin 'O': its coordinates: 1.theta)",
                 "valid: 1.theta and their rates (1.theta_dot, ...)"});
   expect_error(pendulum_with(21, "\"1\" = { theta_dot = 0 }"), "20:1",
                {"[initial] misses 1.theta; give every generalized coordinate: 1.theta (rates default to 0)"});

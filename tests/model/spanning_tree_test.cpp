@@ -124,5 +124,13 @@ pendulum = { theta = -1 }
   EXPECT_EQ(degrees_of_freedom(m), 5);
 }
 
+// A point mass without an inertia has no angle: a floating one keeps x and y only.
+TEST(SpanningTree, AFloatingPointMassHasNoAngle) {
+  const Mechanism m = read_mechanism(
+      "[[body]]\nname = \"p\"\nshape = \"point\"\nmass = 1\n[initial]\np = { x = 0, y = 1 }\n", "p.toml");
+  EXPECT_EQ(coordinate_keys(spanning_tree(m)), (std::vector<std::string>{"p.x", "p.y"}));
+  EXPECT_EQ(degrees_of_freedom(m), 2);
+}
+
 }  // namespace
 }  // namespace linkage
