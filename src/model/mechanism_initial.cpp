@@ -45,12 +45,19 @@ bool is_coordinate_or_rate(const std::vector<std::string>& coordinates, const st
 std::string reason(const Mechanism& mechanism, const SpanningTree& tree, const std::string& key) {
   const std::string part = key.substr(0, key.find('.'));
   for (std::size_t i = 0; i < mechanism.bodies.size(); ++i) {
-    if (mechanism.bodies[i].name != part || tree.bodies[i].floating) continue;
-    const Joint& joint = mechanism.joints[static_cast<std::size_t>(tree.bodies[i].joint)];
-    const std::string coordinate =
-        joint.type == JointType::pin ? part + ".theta" : joint.name + "." + coordinate_kind_name(CoordinateKind::s);
-    return " (body " + q(part) + " is carried by " + kJointTypeNames[static_cast<std::size_t>(joint.type)] + " " +
-           q(joint.name) + ": its coordinate is " + coordinate + ")";
+    const Body& body = mechanism.bodies[i];
+    if (body.name != part) continue;
+    const TreeBody& node = tree.bodies[i];
+    std::vector<std::string> own;
+    for (const Coordinate& c : tree.coordinates)
+      if (c.body == static_cast<int>(i)) own.push_back(c.key);
+    std::string how = "a floating base";
+    if (!node.floating) {
+      const Joint& joint = mechanism.joints[static_cast<std::size_t>(node.joint)];
+      how = "carried by " + std::string(kJointTypeNames[static_cast<std::size_t>(joint.type)]) + " " + q(joint.name);
+    }
+    if (!body_rotates(body)) how += ", a point mass with no angle";
+    return " (body " + q(part) + " is " + how + ": its coordinates: " + join_names(own) + ")";
   }
   for (int j : tree.loop_joints)
     if (mechanism.joints[static_cast<std::size_t>(j)].name == part)
@@ -59,6 +66,7 @@ std::string reason(const Mechanism& mechanism, const SpanningTree& tree, const s
 }
 
 std::string valid_coordinates(const std::vector<std::string>& coordinates) {
+  if (coordinates.empty()) return "none (this mechanism has no generalized coordinates)";
   return join_names(coordinates) + " and their rates (" + coordinates.front() + std::string(kRate) + ", ...)";
 }
 

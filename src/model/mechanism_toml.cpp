@@ -67,14 +67,14 @@ constexpr MechanismKey kKeys[] = {
     {"[[torque]]", "value", kQuantity, "(required)", "torque, counter-clockwise, N m; may use the time t"},
     {"[initial]", "independent", "list of strings", "none",
      "coordinates the loop closure keeps as given (\"2.theta\"); the others are adjusted"},
-    {"[initial] body", "x", "number", "(required if a coordinate)", "x of the centre of mass, m"},
-    {"[initial] body", "y", "number", "(required if a coordinate)", "y of the centre of mass, m"},
-    {"[initial] body", "theta", "number", "(required if a coordinate)", "angle of the body x axis from +x, rad"},
-    {"[initial] body", "x_dot", "number", "0", "rate of x, m/s"},
-    {"[initial] body", "y_dot", "number", "0", "rate of y, m/s"},
-    {"[initial] body", "theta_dot", "number", "0", "rate of theta, rad/s"},
-    {"[initial] slider", "s", "number", "(required if a coordinate)", "the slider's travel, m"},
-    {"[initial] slider", "s_dot", "number", "0", "rate of s, m/s"},
+    {"[initial.BODY]", "x", "number", "(required if a coordinate)", "x of the centre of mass, m"},
+    {"[initial.BODY]", "y", "number", "(required if a coordinate)", "y of the centre of mass, m"},
+    {"[initial.BODY]", "theta", "number", "(required if a coordinate)", "angle of the body x axis from +x, rad"},
+    {"[initial.BODY]", "x_dot", "number", "0", "rate of x, m/s"},
+    {"[initial.BODY]", "y_dot", "number", "0", "rate of y, m/s"},
+    {"[initial.BODY]", "theta_dot", "number", "0", "rate of theta, rad/s"},
+    {"[initial.SLIDER]", "s", "number", "(required if a coordinate)", "the slider's travel, m"},
+    {"[initial.SLIDER]", "s_dot", "number", "0", "rate of s, m/s"},
 };
 
 std::vector<std::string> keys_of(std::string_view table) {
@@ -483,17 +483,16 @@ class MechanismReader {
     if (body.shape == Shape::rod) takes = {"length"};
     if (body.shape == Shape::disc) takes = {"radius"};
     const std::string shape = kShapeNames[static_cast<std::size_t>(body.shape)];
-    const std::string article = body.shape == Shape::rectangle ? "an " : "a ";
     for (const Size& size : kSizes) {
       const bool used = std::find(takes.begin(), takes.end(), size.key) != takes.end();
       const toml::node* node = table.get(size.key);
       if (!used && node != nullptr)
-        fail(node->source(), context + ": " + article + shape + " has no " + q(size.key) + "; " + article + shape +
-                                 " takes " + (takes.empty() ? std::string("no sizes") : join_names(takes)));
+        fail(node->source(), context + ": a " + shape + " has no " + q(size.key) + "; a " + shape + " takes " +
+                                 (takes.empty() ? std::string("no sizes") : join_names(takes)));
       if (!used) continue;
       if (node == nullptr)
-        fail(table.source(), context + ": " + article + shape + " needs " + q(size.key) + "; " + article + shape +
-                                 " takes " + join_names(takes));
+        fail(table.source(),
+             context + ": a " + shape + " needs " + q(size.key) + "; a " + shape + " takes " + join_names(takes));
       const ReadQuantity read = quantity_of(*node, q(size.key), context);
       require_bound(read, size.key, context, true, "m");
       body.*size.member = read.quantity;
@@ -723,9 +722,9 @@ class MechanismReader {
                                  (body != nullptr ? "theta = 0.1, theta_dot = 0" : "s = 0.1, s_dot = 0") + " }, got " +
                                  type_phrase(*node));
       std::vector<std::string> allowed;
-      if (body != nullptr) allowed = keys_of("[initial] body");
+      if (body != nullptr) allowed = keys_of("[initial.BODY]");
       if (slider)
-        for (const std::string& k : keys_of("[initial] slider")) allowed.push_back(k);
+        for (const std::string& k : keys_of("[initial.SLIDER]")) allowed.push_back(k);
       check_keys(*values, allowed, context);
       for (const auto& [value_key, value] : in_file_order(*values)) {
         const std::string full = name + "." + std::string(value_key->str());

@@ -35,7 +35,7 @@ void set_value(Mechanism& mechanism, const std::string& name, double value, cons
 /// One key of a mechanism file: the table it belongs to, its name, type, default and
 /// meaning. The reader accepts exactly these and mechanisms/README.md documents them.
 struct MechanismKey {
-  std::string_view table;  // "top level", "[[body]]", "[initial] body", ...
+  std::string_view table;  // "top level", "[[body]]", "[initial.BODY]", ...
   std::string_view name;
   std::string_view type;
   std::string_view default_text;

@@ -36,7 +36,8 @@ std::optional<std::string> closest_name(std::string_view word, const std::vector
   for (const std::string& c : candidates) {
     if (c.size() > kLongest) continue;
     const std::size_t distance = osa_distance(word, c);
-    if (distance < best_distance) {
+    // Not when every letter differs ('2' for '1'): that is no typo.
+    if (distance < best_distance && distance < std::max(word.size(), c.size())) {
       best_distance = distance;
       best = c;
     }

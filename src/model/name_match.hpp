@@ -8,7 +8,8 @@
 namespace linkage {
 
 /// The candidate closest to `word` (edits ignoring case, a swap of neighbours counting as
-/// one), if it is close enough to be a typo: at most max(2, |word| / 3) edits.
+/// one), if it is close enough to be a typo: at most max(2, |word| / 3) edits, and not
+/// every letter.
 [[nodiscard]] std::optional<std::string> closest_name(std::string_view word,
                                                       const std::vector<std::string>& candidates);
 
