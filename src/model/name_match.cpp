@@ -8,8 +8,10 @@ namespace {
 
 char lower(char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); }
 
+}  // namespace
+
 // Optimal string alignment: Levenshtein plus swaps of neighbours ("lenght" -> "length").
-std::size_t osa_distance(std::string_view a, std::string_view b) {
+std::size_t typo_distance(std::string_view a, std::string_view b) {
   const std::size_t n = a.size(), m = b.size();
   std::vector<std::size_t> d((n + 1) * (m + 1));
   auto at = [&](std::size_t i, std::size_t j) -> std::size_t& { return d[i * (m + 1) + j]; };
@@ -25,8 +27,6 @@ std::size_t osa_distance(std::string_view a, std::string_view b) {
   return at(n, m);
 }
 
-}  // namespace
-
 std::optional<std::string> closest_name(std::string_view word, const std::vector<std::string>& candidates) {
   // A long word against many names would cost |word| * |name| each: a typo is short.
   constexpr std::size_t kLongest = 200;
@@ -35,7 +35,7 @@ std::optional<std::string> closest_name(std::string_view word, const std::vector
   std::size_t best_distance = std::max<std::size_t>(2, word.size() / 3) + 1;
   for (const std::string& c : candidates) {
     if (c.size() > kLongest) continue;
-    const std::size_t distance = osa_distance(word, c);
+    const std::size_t distance = typo_distance(word, c);
     // Not when every letter differs ('2' for '1'): that is no typo.
     if (distance < best_distance && distance < std::max(word.size(), c.size())) {
       best_distance = distance;

@@ -1,11 +1,15 @@
 #pragma once
-// "Did you mean ...?" and name lists for the mechanism reader's messages.
+// "Did you mean ...?" and name lists for messages (the mechanism reader, lessons).
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace linkage {
+
+/// Edits between two words, ignoring case, a swap of neighbours counting as one (optimal
+/// string alignment).
+[[nodiscard]] std::size_t typo_distance(std::string_view a, std::string_view b);
 
 /// The candidate closest to `word` (edits ignoring case, a swap of neighbours counting as
 /// one), if it is close enough to be a typo: at most max(2, |word| / 3) edits, and not
