@@ -116,9 +116,14 @@ std::string describe_mechanism(const Mechanism& m) {
   out += "\nGravity: " + (m.gravity ? m.gravity->text + " along -y" : std::string("none")) + "\n";
   out += "Ground points: " + points_text(m.ground_points) + "\n";
 
-  rows.clear();
-  for (const Body& b : m.bodies) rows.push_back({b.name, body_sizes(b), "points " + points_text(b.points)});
-  section("Bodies", table(rows, "  "));
+  // Each body on two lines: what it is, then its points (a long list wraps).
+  std::size_t name_width = 0;
+  for (const Body& b : m.bodies) name_width = std::max(name_width, b.name.size());
+  std::string bodies;
+  for (const Body& b : m.bodies)
+    bodies += "  " + pad(b.name, name_width) + "  " + body_sizes(b) + "\n" +
+              wrap("points " + points_text(b.points), std::string(name_width + 4, ' '));
+  section("Bodies", bodies);
 
   rows.clear();
   for (std::size_t j = 0; j < m.joints.size(); ++j) {

@@ -55,7 +55,7 @@ TEST(MechanismsCommand, DescribesOne) {
   for (const std::string& piece :
        {std::string("\nA closed loop: crank 2 and rocker 4"), std::string("\n  a   = 0.1\n"),
         std::string("Ground points: O2 = (0, 0), O4 = (d, 0)\n"),
-        std::string("  2  rod, mass ma, length a  points O2 = (-a/2, 0), A = (a/2, 0)\n"),
+        std::string("  2  rod, mass ma, length a\n     points O2 = (-a/2, 0), A = (a/2, 0)\n"),
         std::string("  O2  pin  ground.O2 - 2.O2  tree, adds 2.theta\n"),
         std::string("  B   pin  3.B - 4.B         loop\n"), std::string("Degrees of freedom: 1\n"),
         std::string("Generalized coordinates (Case 2 and Case 3): 2.theta, 3.theta, 4.theta\n"),
@@ -63,6 +63,13 @@ TEST(MechanismsCommand, DescribesOne) {
         std::string("  2.theta     1         3\n"),
         std::string("  independent (kept when the loops are closed): 2.theta\n")})
     EXPECT_NE(r.out.find(piece), std::string::npos) << piece << "\n" << r.out;
+
+  for (const std::string name :
+       {"double-pendulum", "slider-crank", "spring-pendulum", "triple-pendulum", "two-blocks", "unequal-blocks"}) {
+    const test::RunResult each = test::run_linkage({"mechanisms", name});
+    ASSERT_EQ(each.exit_code, 0) << name << ": " << each.err;
+    for (const std::string& line : lines_of(each.out)) EXPECT_LE(line.size(), 80u) << name << ": " << line;
+  }
 
   const test::RunResult spring = test::run_linkage({"mechanisms", "spring-pendulum"});
   ASSERT_EQ(spring.exit_code, 0) << spring.err;
