@@ -101,6 +101,8 @@ struct Parameter {
   std::string name;
   double value = 0;
   SourcePos pos;
+  std::string unit{};     // ASCII, e.g. "m/s^2"; empty when the file gives none
+  std::string meaning{};  // e.g. "block length"
 };
 
 struct Definition {

@@ -26,7 +26,8 @@ constexpr MechanismKey kKeys[] = {
     {"top level", "description", "string", "none", "one paragraph: what the mechanism teaches"},
     {"top level", "gravity", kQuantity, "none",
      "magnitude of the gravitational acceleration along -y, m/s^2; 0 or absent for none"},
-    {"top level", "parameters", "table of numbers", "none", "symbols with their values, SI units"},
+    {"top level", "parameters", "table of numbers or { value, unit, meaning }", "none",
+     "symbols with their values, SI units; the unit (\"m\", \"kg\", \"m/s^2\") and meaning print in the reports"},
     {"top level", "definitions", "table of expressions", "none", "named expressions, printed as their own symbol"},
     {"top level", "ground", "table", "none", "the fixed frame's named points"},
     {"top level", "body", "list of tables", "(required)", "the moving bodies, at least one"},
@@ -382,15 +383,27 @@ class MechanismReader {
       const std::string name(key->str());
       check_symbol_name(name, pos(key->source()), "parameter");
       const std::string context = "parameter " + q(name);
+      // A number, or { value = 0.3, unit = "m", meaning = "block length" } for the reports.
+      const toml::node* number = node;
+      std::string unit, meaning;
+      if (const auto* described = node->as_table()) {
+        check_keys(*described, std::vector<std::string>{"value", "unit", "meaning"}, context);
+        number = described->get("value");
+        if (number == nullptr) fail(node->source(), context + ": the key \"value\" is required");
+        if (auto u = string_at(*described, "unit", context, false)) unit = u->first;
+        if (auto text = string_at(*described, "meaning", context, false)) meaning = text->first;
+      }
       std::optional<double> value;
-      if (const auto* i = node->as_integer()) value = static_cast<double>(i->get());
-      if (const auto* f = node->as_floating_point()) value = f->get();
+      if (const auto* i = number->as_integer()) value = static_cast<double>(i->get());
+      if (const auto* f = number->as_floating_point()) value = f->get();
       if (!value)
-        fail(node->source(),
-             context + " must be a number, got " + type_phrase(*node) + "; an expression belongs in [definitions]");
+        fail(number->source(), context +
+                                   " must be a number or { value = NUMBER, unit = \"...\", meaning = \"...\" }, "
+                                   "got " +
+                                   type_phrase(*number) + "; an expression belongs in [definitions]");
       if (!std::isfinite(*value))
-        fail(node->source(), context + " = " + format_roundtrip(*value) + " is not a finite number");
-      m_.parameters.push_back({name, *value, pos(node->source())});
+        fail(number->source(), context + " = " + format_roundtrip(*value) + " is not a finite number");
+      m_.parameters.push_back({name, *value, pos(number->source()), unit, meaning});
     }
   }
 

@@ -244,8 +244,9 @@ class DerivationWriter {
     heading("Inputs and definitions", "The parameters, in SI units, and the definitions in them.");
     Matrix rows;
     for (const Parameter& p : m.parameters)
-      rows.push_back({inline_math(system_.table().find(p.name)->latex), number_cell(p.value, 0), "parameter"});
-    table({"symbol", "value", "meaning"}, "lrl", rows);
+      rows.push_back({inline_math(system_.table().find(p.name)->latex), number_cell(p.value, 0), unit_cell(p.unit),
+                      text(p.meaning.empty() ? "parameter" : p.meaning)});
+    table({"symbol", "value", "unit", "meaning"}, "lrll", rows);
     if (!m.definitions.empty()) {
       std::vector<MathStep> steps;
       for (const Definition& d : m.definitions) {

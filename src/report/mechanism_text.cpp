@@ -99,11 +99,12 @@ class MechanismWriter {
     const Mechanism& m = system_.mechanism();
     heading("Inputs and definitions", '-');
     Table table;
-    table.headers = {"value", "meaning"};
+    table.headers = {"value", "unit", "meaning"};
     for (const Parameter& p : m.parameters) {
       const sym::SymbolInfo* info = system_.table().find(p.name);
       table.row_labels.push_back(style_ == Style::unicode ? info->unicode : info->ascii);
-      table.cells.push_back({format_number(p.value, style_, 0), "parameter (SI units)"});
+      table.cells.push_back(
+          {format_number(p.value, style_, 0), unit(p.unit), p.meaning.empty() ? "parameter" : p.meaning});
     }
     lines(layout_table(table, "  ", o_.width));
     if (!m.definitions.empty()) {

@@ -253,8 +253,8 @@ void System::add_parameters() {
   names_["pi"] = GiNaC::Pi;
   for (const Parameter& p : mechanism_.parameters) {
     const Spelling spelling = spell_name(p.name);
-    const SymbolInfo& info =
-        table_.add({symbol(p.name), Role::parameter, p.name, spelling.unicode, spelling.ascii, spelling.latex, "", ""});
+    const SymbolInfo& info = table_.add(
+        {symbol(p.name), Role::parameter, p.name, spelling.unicode, spelling.ascii, spelling.latex, p.unit, p.meaning});
     names_[p.name] = info.symbol;
     parameter_values_[info.symbol] = GiNaC::numeric(p.value);
   }

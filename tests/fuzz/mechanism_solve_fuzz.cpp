@@ -18,6 +18,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     linkage::Mechanism mechanism = linkage::read_mechanism(text, "fuzz.toml");
     mechanism.title.clear();  // the check below is for numbers, not for the file's prose
     mechanism.description.clear();
+    for (linkage::Parameter& p : mechanism.parameters) p.unit = p.meaning = "";
     if (mechanism.bodies.size() > 8 || mechanism.joints.size() > 8) return 0;  // keeps each input quick
     const linkage::MechanismSolution solution = linkage::work_out_mechanism(
         mechanism, {linkage::CaseId::maximal, linkage::CaseId::generalized, linkage::CaseId::reduced});

@@ -289,7 +289,8 @@ TEST(MechanismToml, WrongTypes) {
   expect_error(pendulum_with(1, "title = 3"), "1:9", {"'title' must be a string, got an integer"});
   expect_error(pendulum_with(1, "title = \"two\\nlines\""), "1:9", {"the title must be one line"});
   expect_error(pendulum_with(4, "l = \"0.3\""), "4:5",
-               {"parameter 'l' must be a number, got a string; an expression belongs in [definitions]"});
+               {"parameter 'l' must be a number or { value = NUMBER, unit = \"...\", meaning = \"...\" }, got a "
+                "string; an expression belongs in [definitions]"});
   expect_error("body = 3\n", "1:8", {"'body' must be a list of tables, each written [[body]]"});
   expect_error(pendulum_with(14, "points = { O = [0] }"), "14:16",
                {"point 'O' must be [x, y], two numbers or expressions, got an array of 1 entries"});
@@ -557,6 +558,45 @@ TEST(MechanismToml, LoadByNameOrFile) {
   test::write_text(dir / "bad.toml", pendulum_with(12, "mass = 0"));
   const std::string message = error_of([&] { (void)read_mechanism_file(dir / "bad.toml"); });
   EXPECT_EQ(message.rfind((dir / "bad.toml").string() + ":12:8: body '1': 'mass' = 0 kg", 0), 0u) << message;
+}
+
+}  // namespace
+}  // namespace linkage
+
+namespace linkage {
+namespace {
+
+TEST(MechanismToml, ParametersMayCarryUnitAndMeaning) {
+  const Mechanism m = read_mechanism(R"(
+[parameters]
+L = { value = 0.3, unit = "m", meaning = "block length" }
+g = 9.81
+[[body]]
+name = "1"
+shape = "point"
+mass = 1
+[initial]
+"1" = { x = 0, y = 0 }
+)",
+                                     "m.toml");
+  ASSERT_EQ(m.parameters.size(), 2u);
+  EXPECT_EQ(m.parameters[0].value, 0.3);
+  EXPECT_EQ(m.parameters[0].unit, "m");
+  EXPECT_EQ(m.parameters[0].meaning, "block length");
+  EXPECT_EQ(m.parameters[1].unit, "");
+  try {
+    (void)read_mechanism("[parameters]\nL = { value = 0.3, units = \"m\" }\n", "m.toml");
+    ADD_FAILURE() << "an unknown key was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("m.toml:2:"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("'unit'"), std::string::npos) << e.what();
+  }
+  try {
+    (void)read_mechanism("[parameters]\nL = { unit = \"m\" }\n", "m.toml");
+    ADD_FAILURE() << "a parameter without a value was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("\"value\" is required"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
