@@ -22,31 +22,6 @@ std::string position(const std::string& file, const toml::source_region& where) 
   return file + ":" + std::to_string(where.begin.line) + ":" + std::to_string(where.begin.column);
 }
 
-std::string type_phrase(const toml::node& node) {
-  switch (node.type()) {
-    case toml::node_type::string:
-      return "a string";
-    case toml::node_type::integer:
-      return "an integer";
-    case toml::node_type::floating_point:
-      return "a float";
-    case toml::node_type::boolean:
-      return "a boolean";
-    case toml::node_type::array:
-      return "an array";
-    case toml::node_type::table:
-      return "a table";
-    case toml::node_type::date:
-      return "a date";
-    case toml::node_type::time:
-      return "a time";
-    case toml::node_type::date_time:
-      return "a date-time";
-    default:
-      return "nothing";
-  }
-}
-
 TableReader::TableReader(const toml::table& table, std::string file, std::string context, std::span<const KeySpec> keys,
                          std::vector<std::string_view> extra_keys)
     : table_(table),

@@ -11,6 +11,8 @@
 #include <string_view>
 #include <vector>
 
+#include "model/inputs_toml.hpp"
+
 namespace linkage::lesson {
 
 /// One allowed key of a table: its name, type, default and meaning (also the source of
@@ -71,7 +73,6 @@ class TableReader {
   std::vector<std::string_view> extra_keys_;
 };
 
-/// "a string", "an integer", ... for messages.
-[[nodiscard]] std::string type_phrase(const toml::node& node);
+using linkage::type_phrase;  // model/inputs_toml.hpp
 
 }  // namespace linkage::lesson

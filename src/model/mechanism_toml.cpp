@@ -110,31 +110,6 @@ bool is_part_name(const std::string& name) {
          std::all_of(name.begin(), name.end(), [](char c) { return alnum(c) || c == '_' || c == '-'; });
 }
 
-std::string type_phrase(const toml::node& node) {
-  switch (node.type()) {
-    case toml::node_type::string:
-      return "a string";
-    case toml::node_type::integer:
-      return "an integer";
-    case toml::node_type::floating_point:
-      return "a float";
-    case toml::node_type::boolean:
-      return "a boolean";
-    case toml::node_type::array:
-      return "an array";
-    case toml::node_type::table:
-      return "a table";
-    case toml::node_type::date:
-      return "a date";
-    case toml::node_type::time:
-      return "a time";
-    case toml::node_type::date_time:
-      return "a date-time";
-    default:
-      return "nothing";
-  }
-}
-
 // 'text', built by appending ("literal" + std::string trips GCC 12's -Wrestrict, bug 105329).
 std::string q(std::string_view text) {
   std::string out(1, '\'');

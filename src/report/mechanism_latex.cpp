@@ -96,24 +96,14 @@ class DerivationWriter {
       : s_(s), system_(*s.system), o_(options), format_(format) {}
 
   std::string run() {
-    title();
-    if (o_.shows(ReportPart::inputs)) inputs();
-    if (o_.shows(ReportPart::inertia)) inertia();
-    if (o_.shows(ReportPart::constraints)) constraints();
-    if (o_.shows(ReportPart::energy)) energy();
-    if (o_.shows(ReportPart::constraints)) {
-      forces();
-      newton_euler();
-    }
-    const bool case_parts = o_.shows(ReportPart::symbolic) || o_.shows(ReportPart::numeric) ||
-                            o_.shows(ReportPart::solution) || o_.shows(ReportPart::residual);
-    if (case_parts)
-      for (const SolvedCase& c : s_.cases) one_case(c);
-    if (!s_.agreement.empty() && o_.shows(ReportPart::comparison)) agreement();
+    write_mechanism_sections(*this, s_, o_);
     return out_;
   }
 
  private:
+  template <class Writer>
+  friend void linkage::write_mechanism_sections(Writer& w, const MechanismSolution& s, const ReportOptions& o);
+
   [[nodiscard]] bool latex() const { return format_ == Format::latex; }
   [[nodiscard]] std::string pad() const { return latex() ? "  " : ""; }
 

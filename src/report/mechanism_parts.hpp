@@ -6,7 +6,9 @@
 
 #include "core/style.hpp"
 #include "model/mechanism.hpp"
+#include "report/mechanism_solution.hpp"
 #include "report/notation.hpp"
+#include "report/worked_solution.hpp"
 #include "symbolic/system.hpp"
 
 namespace linkage {
@@ -29,5 +31,26 @@ namespace linkage {
 /// The second time derivative of the constraint row `phi` as Case 1 writes it: the
 /// accelerations on the left (in the order of the symbol table), the rest on the right.
 [[nodiscard]] EquationSides acceleration_form(const sym::System& system, const GiNaC::ex& phi, Style style);
+
+/// The order of a mechanism's worked derivation, shared by every format: the title, the
+/// parts `options` shows, each case, the agreement table. `Writer` has title(), inputs(),
+/// inertia(), constraints(), energy(), forces(), newton_euler(), one_case(const
+/// SolvedCase&) and agreement() (a friend of the writer may call them private).
+template <class Writer>
+void write_mechanism_sections(Writer& w, const MechanismSolution& s, const ReportOptions& o) {
+  w.title();
+  if (o.shows(ReportPart::inputs)) w.inputs();
+  if (o.shows(ReportPart::inertia)) w.inertia();
+  if (o.shows(ReportPart::constraints)) w.constraints();
+  if (o.shows(ReportPart::energy)) w.energy();
+  if (o.shows(ReportPart::constraints)) {
+    w.forces();
+    w.newton_euler();
+  }
+  if (o.shows(ReportPart::symbolic) || o.shows(ReportPart::numeric) || o.shows(ReportPart::solution) ||
+      o.shows(ReportPart::residual))
+    for (const SolvedCase& c : s.cases) w.one_case(c);
+  if (!s.agreement.empty() && o.shows(ReportPart::comparison)) w.agreement();
+}
 
 }  // namespace linkage

@@ -19,29 +19,23 @@ class MechanismWriter {
       : s_(s), system_(*s.system), o_(options), style_(options.text_style) {}
 
   std::string run() {
+    write_mechanism_sections(*this, s_, o_);
+    return out_;
+  }
+
+ private:
+  template <class Writer>
+  friend void linkage::write_mechanism_sections(Writer& w, const MechanismSolution& s, const ReportOptions& o);
+
+  void title() {
     const Mechanism& m = system_.mechanism();
     heading(concat({"Worked solution: ", m.title.empty() ? m.name : m.title}), '=');
     if (!m.description.empty()) {
       blank();
       prose(m.description, "");
     }
-    if (o_.shows(ReportPart::inputs)) inputs();
-    if (o_.shows(ReportPart::inertia)) inertia();
-    if (o_.shows(ReportPart::constraints)) constraints();
-    if (o_.shows(ReportPart::energy)) energy();
-    if (o_.shows(ReportPart::constraints)) {
-      forces();
-      newton_euler();
-    }
-    const bool case_parts = o_.shows(ReportPart::symbolic) || o_.shows(ReportPart::numeric) ||
-                            o_.shows(ReportPart::solution) || o_.shows(ReportPart::residual);
-    if (case_parts)
-      for (const SolvedCase& c : s_.cases) one_case(c);
-    if (!s_.agreement.empty() && o_.shows(ReportPart::comparison)) agreement();
-    return out_;
   }
 
- private:
   void line(const std::string& text) { out_ += text + "\n"; }
   void lines(const std::vector<std::string>& text) {
     for (const auto& l : text) line(l);
