@@ -6,12 +6,9 @@ namespace linkage::eval {
 
 CaseEvaluator::CaseEvaluator(const sym::System& system, const CaseSystem& c)
     : rows_(c.A.size()), cols_(c.unknowns.size()) {
-  for (const auto& [symbol, value] : system.parameter_values()) inputs_.push_back(GiNaC::ex_to<GiNaC::symbol>(symbol));
-  // parameter_values() is a map: put the parameters back in file order.
-  std::vector<GiNaC::symbol> ordered;
+  // The parameters in file order (the symbol table's), not parameter_values()'s map order.
   for (const sym::SymbolInfo& info : system.table().all())
-    if (info.role == sym::Role::parameter) ordered.push_back(info.symbol);
-  inputs_ = ordered;
+    if (info.role == sym::Role::parameter) inputs_.push_back(info.symbol);
   for (const sym::GeneralizedCoordinate& g : system.coordinates()) {
     inputs_.push_back(g.symbols.q);
     inputs_.push_back(g.symbols.q_dot);

@@ -503,7 +503,6 @@ ex System::time_derivative(const ex& e) const {
 
 void System::add_generalized() {
   std::vector<Placement> placed(bodies_.size());
-  std::vector<bool> done(bodies_.size(), false);
   auto placement_of = [&](int body) {
     if (body < 0) return Placement{};
     return placed[static_cast<std::size_t>(body)];
@@ -554,7 +553,6 @@ void System::add_generalized() {
       slider_symbols_[node.joint] = c;
       placed[i] = slider_place(ends, child_is_b, c.q);
     }
-    done[i] = true;
   }
 
   for (const Coordinate& c : tree_.coordinates) {

@@ -19,7 +19,7 @@ double checked_value(const System& system, const Quantity& q, bool time_allowed,
   values[system.time()] = 0;
   double v = std::nan("");
   try {
-    v = to_double(system.quantity(q, time_allowed).subs(values).subs(values));
+    v = to_double(system.quantity(q, time_allowed).subs(values));
   } catch (const Error&) {
     throw;
   } catch (const std::exception&) {
