@@ -53,4 +53,13 @@ void CaseEvaluator::evaluate(const std::vector<double>& inputs, Eigen::MatrixXd&
   for (std::size_t i = 0; i < rows_; ++i) B(static_cast<Eigen::Index>(i)) = outputs_[k++];
 }
 
+double CaseEvaluator::solve(const std::vector<double>& inputs, Eigen::VectorXd& unknowns) const {
+  evaluate(inputs, A_, B_);
+  lu_.compute(A_);
+  const double rcond = lu_.rcond();
+  if (!(rcond > 0)) return 0;  // NaN entries count as singular
+  unknowns = lu_.solve(B_);
+  return rcond;
+}
+
 }  // namespace linkage::eval

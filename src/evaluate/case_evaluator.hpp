@@ -7,6 +7,7 @@
 #include <ginac/ginac.h>
 
 #include <Eigen/Core>
+#include <Eigen/LU>
 #include <vector>
 
 #include "evaluate/program.hpp"
@@ -24,12 +25,19 @@ class CaseEvaluator {
   [[nodiscard]] std::vector<double> inputs(const GiNaC::exmap& values) const;
   /// A and B at `inputs` (sized to the case).
   void evaluate(const std::vector<double>& inputs, Eigen::MatrixXd& A, Eigen::VectorXd& B) const;
+  /// Solves A u = B at `inputs` into `unknowns` (in the case's order) and returns an
+  /// estimate of A's reciprocal condition number: near 0 means singular, and then
+  /// `unknowns` is not to be used. The one seam for the accelerations of any mechanism.
+  double solve(const std::vector<double>& inputs, Eigen::VectorXd& unknowns) const;
 
  private:
   std::vector<GiNaC::symbol> inputs_;
   Program program_;
   std::size_t rows_ = 0, cols_ = 0;
   mutable std::vector<double> outputs_, scratch_;
+  mutable Eigen::MatrixXd A_;
+  mutable Eigen::VectorXd B_;
+  mutable Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
 };
 
 }  // namespace linkage::eval

@@ -47,5 +47,30 @@ TEST(CaseEvaluator, MatchesTheExpressionsAtRandomStates) {
   }
 }
 
+// solve() returns A's unknowns: the residual of A u = B is at rounding level, and every
+// case of the homework gives the same accelerations.
+TEST(CaseEvaluator, SolveGivesTheUnknownsOfEachCase) {
+  const sym::System system(built::homework());
+  std::mt19937 rng(11);
+  const GiNaC::exmap values = state_values(system, built::random_state(system, rng), 0.0);
+  std::vector<Eigen::VectorXd> solutions;
+  for (CaseId id : kAllCases) {
+    const CaseSystem c = derive_case(system, id);
+    const eval::CaseEvaluator evaluator(system, c);
+    const std::vector<double> inputs = evaluator.inputs(values);
+    Eigen::VectorXd u;
+    EXPECT_GT(evaluator.solve(inputs, u), 1e-8) << "Case " << case_number(id);
+    Eigen::MatrixXd A;
+    Eigen::VectorXd B;
+    evaluator.evaluate(inputs, A, B);
+    EXPECT_LT((A * u - B).norm(), 1e-12 * (1 + B.norm())) << "Case " << case_number(id);
+    solutions.push_back(u);
+  }
+  // Case 1's unknowns start x1'', y1'', theta1'', x2'', y2'', theta2''; Case 3's are
+  // x1'', y1'', theta1'', theta2'' (the generalized coordinates' order).
+  for (int k : {0, 1, 2}) EXPECT_NEAR(solutions[0](k), solutions[2](k), 1e-10 * (1 + std::abs(solutions[0](k))));
+  EXPECT_NEAR(solutions[0](5), solutions[2](3), 1e-10 * (1 + std::abs(solutions[0](5))));
+}
+
 }  // namespace
 }  // namespace linkage
