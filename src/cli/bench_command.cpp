@@ -176,9 +176,14 @@ void add_render(CLI::App* bench) {
 void add_derive(CLI::App* bench) {
   auto flags = std::make_shared<bench::DeriveBenchOptions>();
   CLI::App* sub = bench->add_subcommand(
-      "derive", "Symbolic derivation time per shipped mechanism, and the homework's solve against the closed form");
+      "derive", "Symbolic derivation time per shipped mechanism, and the homework's solve against a baseline build");
   sub->add_option("--out", flags->out, "Folder for derive.csv and derive.md (default bench-derive)")->type_name("DIR");
   sub->add_flag("--quick", flags->quick, "One or two repeats: checks the report, not the timings (CI)");
+  sub->add_option("--baseline", flags->baseline,
+                  "Another linkage binary (an earlier build) whose `solve` this one's is timed against, "
+                  "interleaved in the same run (default: none, the ratio is not measured)")
+      ->type_name("BINARY")
+      ->check(CLI::ExistingFile);
   add_runner(sub, [flags] {
     const bench::DeriveBenchResult result = bench::run_derive_bench(*flags);
     for (const std::string& line : result.lines) std::printf("%s\n", line.c_str());

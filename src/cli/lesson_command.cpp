@@ -16,7 +16,7 @@
 #include "lesson/runner.hpp"
 #include "lesson/step_range.hpp"
 #include "render/theme.hpp"
-#include "report/text_report.hpp"
+#include "report/report_options.hpp"
 
 namespace linkage::cli {
 namespace {

@@ -7,13 +7,10 @@
 #include "core/error.hpp"
 #include "model/mechanism_toml.hpp"
 #include "report/code_export.hpp"
-#include "report/json_report.hpp"
-#include "report/latex_report.hpp"
 #include "report/mechanism_latex.hpp"
 #include "report/mechanism_solution.hpp"
 #include "report/mechanism_text.hpp"
-#include "report/text_report.hpp"
-#include "report/worked_solution.hpp"
+#include "report/report_options.hpp"
 
 namespace linkage::cli {
 namespace {
@@ -53,35 +50,24 @@ void apply_settings(Mechanism& mechanism, const std::vector<std::string>& settin
   }
 }
 
-std::vector<CaseId> case_ids(const std::vector<int>& numbers) {
-  std::vector<CaseId> ids;
-  for (int n : numbers) ids.push_back(static_cast<CaseId>(n));
-  return ids;
-}
-
-void run_mechanism(const SolveOptions& options, const std::vector<int>& cases, const ReportOptions& report) {
+// The mechanism to derive: a file or shipped name with --mechanism, else the homework with
+// its flags and --config (validated as the homework's inputs always are); then --set.
+Mechanism chosen_mechanism(const SolveOptions& options) {
+  if (options.mechanism.empty()) {
+    Mechanism mechanism = homework_mechanism(resolve_inputs(options.inputs));
+    apply_settings(mechanism, options.settings);
+    return mechanism;
+  }
   for (std::size_t i = 0; i < kInputKeys.size(); ++i)
     if (options.inputs.options[i] != nullptr && options.inputs.options[i]->count() > 0)
       throw Error::input(flag_name(kInputKeys[i].key) +
                          " is a flag of the built-in homework; with --mechanism use --set " +
-                         std::string(kInputKeys[i].key) + "=VALUE");
+                         std::string(kInputKeys[i].mechanism_key) + "=VALUE");
   if (options.inputs.config_option != nullptr && options.inputs.config_option->count() > 0)
     throw Error::input("--config is for the built-in homework; with --mechanism the file is the mechanism itself");
-  Mechanism mechanism = load_mechanism(options.mechanism.empty() ? "two-blocks" : options.mechanism);
+  Mechanism mechanism = load_mechanism(options.mechanism);
   apply_settings(mechanism, options.settings);
-  const MechanismSolution solution = work_out_mechanism(mechanism, case_ids(cases));
-  if (options.format == "json")
-    write_stdout(mechanism_json(solution));
-  else if (options.format == "latex")
-    write_stdout(mechanism_latex(solution, report));
-  else if (options.format == "markdown")
-    write_stdout(mechanism_markdown(solution, report));
-  else if (options.format == "matlab")
-    write_stdout(matlab_export(solution));
-  else if (options.format == "python")
-    write_stdout(python_export(solution));
-  else
-    write_stdout(mechanism_text(solution, report));
+  return mechanism;
 }
 
 std::vector<int> parse_case_selection(const std::string& which) {
@@ -108,24 +94,20 @@ void run_solve(const SolveOptions& options) {
   if (options.ascii && options.unicode) throw Error::input("--ascii and --unicode exclude each other; give one");
   ReportOptions report;
   report.digits = parse_digits(options.digits);
-  report.text_style = options.ascii     ? expr::Style::ascii
-                      : options.unicode ? expr::Style::unicode
-                                        : text_style_from_locale();
-  // The general procedure: any mechanism, --set, and the code exports.
-  if (!options.mechanism.empty() || !options.settings.empty() || format == "matlab" || format == "python") {
-    run_mechanism(options, cases, report);
-    return;
-  }
-  const Inputs inputs = resolve_inputs(options.inputs);
-  const WorkedSolution worked = work_out(inputs, cases);
+  report.text_style = options.ascii ? Style::ascii : options.unicode ? Style::unicode : text_style_from_locale();
+  const MechanismSolution solution = work_out_mechanism(chosen_mechanism(options), case_ids(cases));
   if (format == "json")
-    write_stdout(json_report(worked));
+    write_stdout(mechanism_json(solution));
   else if (format == "latex")
-    write_stdout(latex_report(worked, report));
+    write_stdout(mechanism_latex(solution, report));
   else if (format == "markdown")
-    write_stdout(markdown_report(worked, report));
+    write_stdout(mechanism_markdown(solution, report));
+  else if (format == "matlab")
+    write_stdout(matlab_export(solution));
+  else if (format == "python")
+    write_stdout(python_export(solution));
   else
-    write_stdout(text_report(worked, report));
+    write_stdout(mechanism_text(solution, report));
 }
 
 }  // namespace

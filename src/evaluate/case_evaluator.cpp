@@ -22,7 +22,11 @@ CaseEvaluator::CaseEvaluator(const sym::System& system, const CaseSystem& c)
     if (info != nullptr && info->role != sym::Role::acceleration) maximal[symbol] = expression;
   }
   std::vector<GiNaC::ex> outputs;
-  auto prepare = [&](const GiNaC::ex& e) { return e.subs(maximal).subs(system.constants()).subs(system.constants()); };
+  // Expanded: GiNaC may build equal entries in differently nested forms from run to run
+  // (its term order follows address-dependent hashes); the expanded form is one.
+  auto prepare = [&](const GiNaC::ex& e) {
+    return GiNaC::expand(e.subs(maximal).subs(system.constants()).subs(system.constants()));
+  };
   for (const auto& row : c.A)
     for (const GiNaC::ex& e : row) outputs.push_back(prepare(e));
   for (const GiNaC::ex& e : c.B) outputs.push_back(prepare(e));

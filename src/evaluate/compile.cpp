@@ -206,11 +206,52 @@ class Builder {
     return false;
   }
 
+  // GiNaC orders the terms of sums and products by hash values that change from run to
+  // run (they involve addresses), so operands are walked in an order of their own
+  // structure: the same inputs then give the same program and the same bits every run.
+  std::uint64_t stable_hash(const GiNaC::ex& e) {
+    if (const auto it = stable_.find(e); it != stable_.end()) return it->second;
+    const auto mix = [](std::uint64_t h, std::uint64_t v) {
+      h ^= v + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+      return h * 0x100000001b3ULL;
+    };
+    const auto text = [&](std::uint64_t h, const std::string& t) {
+      for (const char c : t) h = mix(h, static_cast<unsigned char>(c));
+      return h;
+    };
+    std::uint64_t h = 0xcbf29ce484222325ULL;
+    if (GiNaC::is_a<GiNaC::symbol>(e)) {
+      h = text(mix(h, 1), GiNaC::ex_to<GiNaC::symbol>(e).get_name());
+    } else if (GiNaC::is_a<GiNaC::numeric>(e) || e.nops() == 0) {
+      h = text(mix(h, 2), printed(e));
+    } else if (GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e)) {
+      std::vector<std::uint64_t> parts;
+      for (std::size_t k = 0; k < e.nops(); ++k) parts.push_back(stable_hash(e.op(k)));
+      std::sort(parts.begin(), parts.end());  // a sum is a set of terms: order-free
+      h = mix(h, GiNaC::is_a<GiNaC::add>(e) ? 3 : 4);
+      for (const std::uint64_t part : parts) h = mix(h, part);
+    } else {
+      h = GiNaC::is_a<GiNaC::function>(e) ? text(mix(h, 5), GiNaC::ex_to<GiNaC::function>(e).get_name()) : mix(h, 6);
+      for (std::size_t k = 0; k < e.nops(); ++k) h = mix(h, stable_hash(e.op(k)));
+    }
+    stable_.emplace(e, h);
+    return h;
+  }
+
+  std::vector<GiNaC::ex> ordered_operands(const GiNaC::ex& e) {
+    std::vector<std::pair<std::uint64_t, GiNaC::ex>> keyed;
+    for (std::size_t k = 0; k < e.nops(); ++k) keyed.emplace_back(stable_hash(e.op(k)), e.op(k));
+    std::stable_sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<GiNaC::ex> out;
+    for (auto& [key, operand] : keyed) out.push_back(operand);
+    return out;
+  }
+
   Index sum(const GiNaC::ex& e) {
     std::optional<Index> acc;
     std::vector<Index> leading_negatives;  // subtracted once a positive term starts the sum
-    for (std::size_t k = 0; k < e.nops(); ++k) {
-      const Signed term = signed_value(e.op(k));
+    for (const GiNaC::ex& operand : ordered_operands(e)) {
+      const Signed term = signed_value(operand);
       if (acc)
         acc = emit(term.negative ? Op::sub : Op::add, *acc, term.node);
       else if (term.negative)
@@ -234,8 +275,7 @@ class Builder {
   Index product(const GiNaC::ex& e) {
     GiNaC::numeric coefficient = 1;
     std::vector<Index> numerator, denominator;
-    for (std::size_t k = 0; k < e.nops(); ++k) {
-      const GiNaC::ex f = e.op(k);
+    for (const GiNaC::ex& f : ordered_operands(e)) {
       if (GiNaC::is_a<GiNaC::numeric>(f)) {
         coefficient *= GiNaC::ex_to<GiNaC::numeric>(f);
       } else if (GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<GiNaC::numeric>(f.op(1)) &&
@@ -303,6 +343,7 @@ class Builder {
   std::vector<std::string> names_;
   std::map<GiNaC::ex, Index, GiNaC::ex_is_less> inputs_;
   GiNaC::exhashmap<Index> cache_;
+  GiNaC::exhashmap<std::uint64_t> stable_;
   std::map<std::tuple<Op, Index, Index>, Index> numbering_;
   std::map<std::uint64_t, Index> constants_;
   std::size_t output_ = 0;

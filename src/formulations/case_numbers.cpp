@@ -10,19 +10,35 @@
 
 namespace linkage {
 
-double value_at(const GiNaC::ex& e, const GiNaC::exmap& values) { return sym::to_double(e.subs(values)); }
+double value_at(const GiNaC::ex& e, const GiNaC::exmap& values) { return sym::evaluate(e, values); }
+
+void require_finite(const std::string& name, double value) {
+  if (std::isnan(value))
+    throw Error::input(name + " is not a number in double precision (an overflow, or zero over zero)");
+  if (!std::isfinite(value)) throw Error::input(name + " = " + format_roundtrip(value) + " overflows double precision");
+}
+
+namespace {
+
+GiNaC::numeric finite_number(const sym::System& system, const GiNaC::ex& symbol, double value) {
+  const sym::SymbolInfo* info = system.table().find(GiNaC::ex_to<GiNaC::symbol>(symbol));
+  require_finite(info != nullptr ? info->ascii : GiNaC::ex_to<GiNaC::symbol>(symbol).get_name(), value);
+  return GiNaC::numeric(value);
+}
+
+}  // namespace
 
 GiNaC::exmap state_values(const sym::System& system, const GiNaC::exmap& state, double time) {
   GiNaC::exmap values = system.parameter_values();
   for (const auto& [symbol, expression] : system.constants())
-    values[symbol] = GiNaC::evalf(expression.subs(system.parameter_values()));
+    values[symbol] = finite_number(system, symbol, sym::evaluate(expression, system.parameter_values()));
   for (const auto& [symbol, value] : state) values[symbol] = value;
   values[system.time()] = GiNaC::numeric(time);
   // Maximal positions and rates from the generalized state (accelerations stay unknown).
   for (const auto& [symbol, expression] : system.to_generalized()) {
     const sym::SymbolInfo* info = system.table().find(GiNaC::ex_to<GiNaC::symbol>(symbol));
     if (info == nullptr || info->role == sym::Role::acceleration) continue;
-    values[symbol] = GiNaC::evalf(expression.subs(values));
+    values[symbol] = finite_number(system, symbol, sym::evaluate(expression, values));
   }
   return values;
 }
@@ -82,10 +98,10 @@ CaseNumbers solve_matrices(CaseId id, Eigen::MatrixXd A, Eigen::VectorXd B) {
     throw Error::input(
         name + " is singular at this state (condition number " +
         (std::isfinite(out.condition) ? format_significant(out.condition, 3) : std::string("infinite")) +
-        "): the mechanism is at a dead point or change point, or a constraint is redundant; valid: a state where "
-        "the links are not aligned");
+        "): the mechanism is at a dead point or change point, a constraint is redundant, or its sizes are too far "
+        "apart for double precision; valid: a state where the links are not aligned, sizes within a few decades");
   out.solution = out.A.fullPivLu().solve(out.B);
-  out.residual = (out.A * out.solution - out.B).norm();
+  out.residual = (out.A * out.solution - out.B).stableNorm();  // no overflow of the squares
   return out;
 }
 

@@ -6,13 +6,15 @@
 
 #include <Eigen/Core>
 #include <optional>
+#include <string>
 
 #include "formulations/case_system.hpp"
 
 namespace linkage {
 
 /// Every symbol's value at a state: parameters, definitions and inertias, the generalized
-/// coordinates and rates in `state`, the maximal ones they imply, and the time.
+/// coordinates and rates in `state`, the maximal ones they imply, and the time. Throws
+/// Error::input (require_finite) naming a value that overflows.
 [[nodiscard]] GiNaC::exmap state_values(const sym::System& system, const GiNaC::exmap& state, double time);
 
 struct CaseNumbers {
@@ -36,6 +38,10 @@ struct CaseNumbers {
 [[nodiscard]] std::optional<double> case_value(const CaseSystem& c, const CaseNumbers& numbers,
                                                const GiNaC::exmap& values, const GiNaC::symbol& u,
                                                bool* recovered = nullptr);
+
+/// Throws Error::input "NAME = inf overflows double precision" (or "is not a number")
+/// unless `value` is finite.
+void require_finite(const std::string& name, double value);
 
 /// The value of an expression at `values` (every symbol in it must have one).
 [[nodiscard]] double value_at(const GiNaC::ex& e, const GiNaC::exmap& values);

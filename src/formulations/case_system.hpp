@@ -19,6 +19,12 @@ enum class CaseId { maximal = 1, generalized = 2, reduced = 3 };
 inline constexpr std::array<CaseId, 3> kAllCases{CaseId::maximal, CaseId::generalized, CaseId::reduced};
 
 [[nodiscard]] constexpr int case_number(CaseId id) { return static_cast<int>(id); }
+/// Case numbers (each 1, 2 or 3, checked by the caller) as ids, in their order.
+[[nodiscard]] inline std::vector<CaseId> case_ids(const std::vector<int>& numbers) {
+  std::vector<CaseId> ids;
+  for (int n : numbers) ids.push_back(static_cast<CaseId>(n));
+  return ids;
+}
 
 /// A quantity a case does not solve for but yields from its unknowns: a body's
 /// acceleration through the kinematics, or an eliminated joint force through the

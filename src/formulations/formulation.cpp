@@ -42,14 +42,6 @@ CaseSolution solve_typed(const Params& p, const State& s) {
   return out;
 }
 
-template <class Case>
-SymbolicSystem symbolic_typed(expr::Style style) {
-  SymbolicSystem out;
-  out.A = decltype(Case::A)::print(style);
-  for (auto& row : decltype(Case::B)::print(style)) out.B.push_back(row.front());
-  return out;
-}
-
 }  // namespace
 
 CaseSolution solve_case(int id, const Params& p, const State& s) {
@@ -60,19 +52,6 @@ CaseSolution solve_case(int id, const Params& p, const State& s) {
       return solve_typed<Case2>(p, s);
     case 3:
       return solve_typed<Case3>(p, s);
-    default:
-      throw Error::input("case " + std::to_string(id) + " does not exist; valid cases: 1, 2, 3");
-  }
-}
-
-SymbolicSystem symbolic_system(int id, expr::Style style) {
-  switch (id) {
-    case 1:
-      return symbolic_typed<Case1>(style);
-    case 2:
-      return symbolic_typed<Case2>(style);
-    case 3:
-      return symbolic_typed<Case3>(style);
     default:
       throw Error::input("case " + std::to_string(id) + " does not exist; valid cases: 1, 2, 3");
   }

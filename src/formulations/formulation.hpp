@@ -1,7 +1,8 @@
 #pragma once
-// The three formulations behind one runtime interface, for reports and the CLI:
-// `solve_case` evaluates and solves a case at a state; `symbolic_system` prints its
-// definition. Both come from the one definition in case1/2/3.hpp.
+// The homework's closed-form cases behind one runtime interface: `solve_case` evaluates
+// and solves a case at a state from the definitions in case1/2/3.hpp (the fast path the
+// lessons' quantities and the homework's simulation use; tests hold it to the general
+// procedure).
 #include <Eigen/Core>
 #include <string>
 #include <string_view>
@@ -31,13 +32,6 @@ struct CaseSolution {
 /// Evaluates and solves case `id` (1, 2 or 3) at the state. Throws Error::diverged
 /// when the matrix is singular to working precision.
 [[nodiscard]] CaseSolution solve_case(int id, const Params& p, const State& s);
-
-struct SymbolicSystem {
-  std::vector<std::vector<std::string>> A;  // printed entries, row by row
-  std::vector<std::string> B;
-};
-/// The printed A and B of case `id`.
-[[nodiscard]] SymbolicSystem symbolic_system(int id, expr::Style style);
 
 /// The value of `u` in a case's solution, if the case has that unknown. Cases 2 and 3
 /// also yield x2'', y2'' (and Case 3 the pin force) through the eliminated equations.

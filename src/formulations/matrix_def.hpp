@@ -1,10 +1,8 @@
 #pragma once
 // Matrices whose entries are expr:: expressions: `matrix(row(...), ...)` and
-// `column(...)` build a type that can fill a fixed-size Eigen matrix, print every
-// entry, and say which entries are identically zero, all from the one definition.
+// `column(...)` build a type that can fill a fixed-size Eigen matrix and say which
+// entries are identically zero, both from the one definition.
 #include <array>
-#include <string>
-#include <vector>
 
 #include "core/types.hpp"
 #include "formulations/expr.hpp"
@@ -20,9 +18,6 @@ struct RowDef {
   static void eval(Out& out, int r, const expr::Env& env) {
     int c = 0;
     ((out(r, c++) = E::eval(env)), ...);
-  }
-  static void print(std::vector<std::string>& out, expr::Style style) {
-    (out.push_back(expr::to_string(E{}, style)), ...);
   }
 };
 
@@ -43,23 +38,10 @@ struct MatrixDef {
     eval(out, env);
     return out;
   }
-  /// Printed entries, row by row.
-  [[nodiscard]] static std::vector<std::vector<std::string>> print(expr::Style style) {
-    std::vector<std::vector<std::string>> out;
-    (print_row<Rows>(out, style), ...);
-    return out;
-  }
   /// True when entry (r, c) is zero by construction, whatever the state.
   [[nodiscard]] static constexpr bool structural_zero(int r, int c) {
     constexpr std::array<const bool*, rows> table{Rows::zeros.data()...};
     return table[static_cast<std::size_t>(r)][c];
-  }
-
- private:
-  template <class Row>
-  static void print_row(std::vector<std::vector<std::string>>& out, expr::Style style) {
-    out.emplace_back();
-    Row::print(out.back(), style);
   }
 };
 

@@ -4,9 +4,9 @@
 
 #include "lesson/markdown.hpp"
 #include "report/latex_math.hpp"
-#include "report/latex_report.hpp"
+#include "report/mechanism_latex.hpp"
+#include "report/mechanism_text.hpp"
 #include "report/text_layout.hpp"
-#include "report/text_report.hpp"
 
 namespace linkage::lesson {
 namespace {
@@ -18,7 +18,7 @@ bool file_exists(const std::filesystem::path& p) {
 
 class TextWriter final : public Writer {
  public:
-  TextWriter(std::size_t width, expr::Style style) : width_(width), style_(style) {}
+  TextWriter(std::size_t width, Style style) : width_(width), style_(style) {}
 
   void title(const std::string& title, const std::string& description) override {
     const std::string rule(std::min<std::size_t>(width_, std::max<std::size_t>(display_width(title), 1)), '=');
@@ -35,12 +35,12 @@ class TextWriter final : public Writer {
     out_ += "\n";
     out_ += markdown_to_text(text, width_);
   }
-  void worked_solution(const WorkedSolution& worked, const ReportOptions& options) override {
+  void worked_solution(const MechanismSolution& worked, const ReportOptions& options) override {
     ReportOptions o = options;
     o.width = width_;
     o.text_style = style_;
     out_ += "\n";
-    out_ += text_report(worked, o);
+    out_ += mechanism_text(worked, o);
   }
   void table(const ResultTable& table, const std::string& caption) override {
     Table t;
@@ -69,7 +69,7 @@ class TextWriter final : public Writer {
 
  private:
   std::size_t width_;
-  expr::Style style_;
+  Style style_;
 };
 
 class MarkdownWriter final : public Writer {
@@ -80,8 +80,8 @@ class MarkdownWriter final : public Writer {
   }
   void heading(const std::string& text) override { out_ += "\n## " + text + "\n"; }
   void markdown(const std::string& text) override { out_ += "\n" + text + "\n"; }
-  void worked_solution(const WorkedSolution& worked, const ReportOptions& options) override {
-    const std::string report = markdown_report(worked, options);
+  void worked_solution(const MechanismSolution& worked, const ReportOptions& options) override {
+    const std::string report = mechanism_markdown(worked, options);
     // The report's headings sit two levels below the lesson's step headings.
     std::string shifted;
     std::size_t start = 0;
@@ -139,8 +139,8 @@ class LatexWriter final : public Writer {
   }
   void heading(const std::string& text) override { out_ += "\\subsection*{" + inline_latex(text) + "}\n\n"; }
   void markdown(const std::string& text) override { out_ += markdown_to_latex(text); }
-  void worked_solution(const WorkedSolution& worked, const ReportOptions& options) override {
-    out_ += latex_report(worked, options) + "\n";
+  void worked_solution(const MechanismSolution& worked, const ReportOptions& options) override {
+    out_ += mechanism_latex(worked, options) + "\n";
   }
   void table(const ResultTable& table, const std::string& caption) override {
     out_ += "\\begin{center}\n\\begin{tabular}{l" + std::string(table.headers.size() - 1, 'r') + "}\n  ";
@@ -180,13 +180,13 @@ class LatexWriter final : public Writer {
 
 }  // namespace
 
-std::unique_ptr<Writer> make_text_writer(std::size_t width, expr::Style style) {
+std::unique_ptr<Writer> make_text_writer(std::size_t width, Style style) {
   return std::make_unique<TextWriter>(width, style);
 }
 std::unique_ptr<Writer> make_markdown_writer() { return std::make_unique<MarkdownWriter>(); }
 std::unique_ptr<Writer> make_latex_writer() { return std::make_unique<LatexWriter>(); }
 
-std::unique_ptr<Writer> make_writer(Format format, std::size_t width, expr::Style style) {
+std::unique_ptr<Writer> make_writer(Format format, std::size_t width, Style style) {
   switch (format) {
     case Format::text:
       return make_text_writer(width, style);

@@ -8,7 +8,8 @@
 #include <utility>
 #include <vector>
 
-#include "report/worked_solution.hpp"
+#include "report/mechanism_solution.hpp"
+#include "report/report_options.hpp"
 
 namespace linkage::lesson {
 
@@ -40,7 +41,7 @@ class Writer {
   /// A Markdown paragraph (say steps, questions, notes).
   virtual void markdown(const std::string& text) = 0;
   /// The worked solution of a solve step.
-  virtual void worked_solution(const WorkedSolution& worked, const ReportOptions& options) = 0;
+  virtual void worked_solution(const MechanismSolution& worked, const ReportOptions& options) = 0;
   virtual void table(const ResultTable& table, const std::string& caption) = 0;
   /// A still, a clip, a plot or a data file. Writers that link files link only files
   /// that exist.
@@ -56,12 +57,12 @@ class Writer {
 };
 
 /// Aligned text for a terminal `width` columns wide, symbols in `style`.
-[[nodiscard]] std::unique_ptr<Writer> make_text_writer(std::size_t width, expr::Style style);
+[[nodiscard]] std::unique_ptr<Writer> make_text_writer(std::size_t width, Style style);
 /// Markdown: matrices as $$ math, figures as image embeds, clips as <video> with a link,
 /// exercise answers folded in <details>.
 [[nodiscard]] std::unique_ptr<Writer> make_markdown_writer();
 /// A LaTeX fragment (needs amsmath, graphicx, hyperref).
 [[nodiscard]] std::unique_ptr<Writer> make_latex_writer();
-[[nodiscard]] std::unique_ptr<Writer> make_writer(Format format, std::size_t width, expr::Style style);
+[[nodiscard]] std::unique_ptr<Writer> make_writer(Format format, std::size_t width, Style style);
 
 }  // namespace linkage::lesson

@@ -18,8 +18,9 @@
 #include "lesson/series.hpp"
 #include "lesson/suggest.hpp"
 #include "model/inputs_toml.hpp"
+#include "model/mechanism_toml.hpp"
 #include "render/theme.hpp"
-#include "report/worked_solution.hpp"
+#include "report/mechanism_solution.hpp"
 
 namespace linkage::lesson {
 namespace {
@@ -361,7 +362,7 @@ class Parser {
       r.fail("case", "'case' must be 1, 2, 3, a list of them like [1, 3], or \"all\"");
     }
     try {  // inputs that overflow a derived quantity or make a matrix singular: refused now
-      (void)work_out(inputs, s.cases);
+      (void)work_out_mechanism(homework_mechanism(inputs), case_ids(s.cases));
     } catch (const Error& e) {
       throw e.rephrased(r.prefix("") + e.what());
     }

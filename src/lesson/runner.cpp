@@ -19,6 +19,7 @@
 #include "lesson/canonical.hpp"
 #include "lesson/runner_context.hpp"
 #include "linkage/version.hpp"
+#include "model/mechanism_toml.hpp"
 
 namespace linkage::lesson {
 
@@ -186,7 +187,7 @@ void run_exercise(RunContext& c, const Step& step, const ExerciseStep& e) {
 }
 
 void run_solve(RunContext& c, const Step& step, const SolveStep& s) {
-  const WorkedSolution worked = work_out(step.inputs, s.cases);
+  const MechanismSolution worked = work_out_mechanism(homework_mechanism(step.inputs), case_ids(s.cases));
   ReportOptions options;
   options.width = c.options.width;
   options.text_style = c.options.style;

@@ -28,7 +28,7 @@ struct RunnerOptions {
   std::vector<bool> selected;    // per step (--only); empty: every step
   bool force = false;            // make everything, cached or not
   std::size_t width = 80;        // terminal columns for text
-  expr::Style style = expr::Style::unicode;
+  Style style = Style::unicode;
   std::filesystem::path assets;  // theme folder for render steps (empty: built-in palettes)
 };
 

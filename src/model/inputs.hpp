@@ -19,22 +19,23 @@ struct InputKey {
   std::string_view description;  // e.g. "angular velocity of block 1"
   double Params::*param = nullptr;
   double State::*state = nullptr;
+  std::string_view mechanism_key{};  // the same value in mechanisms/two-blocks.toml, e.g. "2.theta_dot"
 };
 
 inline constexpr std::array<InputKey, 13> kInputKeys{{
-    {"L", "m", "block length", &Params::L, nullptr},
-    {"w", "m", "block width", &Params::w, nullptr},
-    {"b", "m", "pin distance from one end of each block, in [0, L]", &Params::b, nullptr},
-    {"m", "kg", "mass of each block", &Params::m, nullptr},
-    {"g", "m/s^2", "gravitational acceleration along -y", &Params::g, nullptr},
-    {"x1", "m", "x of block 1's centre of mass", nullptr, &State::x1},
-    {"y1", "m", "y of block 1's centre of mass", nullptr, &State::y1},
-    {"theta1", "rad", "angle of block 1 from +x", nullptr, &State::theta1},
-    {"theta2", "rad", "angle of block 2 from +x", nullptr, &State::theta2},
-    {"x1_dot", "m/s", "x velocity of block 1's centre of mass", nullptr, &State::x1_dot},
-    {"y1_dot", "m/s", "y velocity of block 1's centre of mass", nullptr, &State::y1_dot},
-    {"theta1_dot", "rad/s", "angular velocity of block 1", nullptr, &State::theta1_dot},
-    {"theta2_dot", "rad/s", "angular velocity of block 2", nullptr, &State::theta2_dot},
+    {"L", "m", "block length", &Params::L, nullptr, "L"},
+    {"w", "m", "block width", &Params::w, nullptr, "w"},
+    {"b", "m", "pin distance from one end of each block, in [0, L]", &Params::b, nullptr, "b"},
+    {"m", "kg", "mass of each block", &Params::m, nullptr, "m"},
+    {"g", "m/s^2", "gravitational acceleration along -y", &Params::g, nullptr, "g"},
+    {"x1", "m", "x of block 1's centre of mass", nullptr, &State::x1, "1.x"},
+    {"y1", "m", "y of block 1's centre of mass", nullptr, &State::y1, "1.y"},
+    {"theta1", "rad", "angle of block 1 from +x", nullptr, &State::theta1, "1.theta"},
+    {"theta2", "rad", "angle of block 2 from +x", nullptr, &State::theta2, "2.theta"},
+    {"x1_dot", "m/s", "x velocity of block 1's centre of mass", nullptr, &State::x1_dot, "1.x_dot"},
+    {"y1_dot", "m/s", "y velocity of block 1's centre of mass", nullptr, &State::y1_dot, "1.y_dot"},
+    {"theta1_dot", "rad/s", "angular velocity of block 1", nullptr, &State::theta1_dot, "1.theta_dot"},
+    {"theta2_dot", "rad/s", "angular velocity of block 2", nullptr, &State::theta2_dot, "2.theta_dot"},
 }};
 
 /// The input named `key` (TOML spelling), or nullptr.

@@ -8,6 +8,12 @@ const Body* Mechanism::find_body(const std::string& body_name) const {
   return nullptr;
 }
 
+int Mechanism::body_index(const std::string& body_name) const {
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    if (bodies[i].name == body_name) return static_cast<int>(i);
+  return -1;
+}
+
 const Joint* Mechanism::find_joint(const std::string& joint_name) const {
   for (const Joint& joint : joints)
     if (joint.name == joint_name) return &joint;

@@ -139,6 +139,8 @@ struct Mechanism {
   SourcePos independent_pos;
 
   [[nodiscard]] const Body* find_body(const std::string& body_name) const;
+  /// Index into `bodies`, -1 for the ground or a name that is not a body.
+  [[nodiscard]] int body_index(const std::string& body_name) const;
   [[nodiscard]] const Joint* find_joint(const std::string& joint_name) const;
 };
 

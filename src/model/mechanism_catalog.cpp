@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "core/input_file.hpp"
 #include "linkage/embedded_mechanisms.hpp"
+#include "model/inputs.hpp"
 #include "model/mechanism_toml.hpp"
 #include "model/name_match.hpp"
 
@@ -19,6 +20,14 @@ std::vector<std::string> shipped_mechanism_names() {
   for (const EmbeddedMechanism& shipped : kEmbeddedMechanisms) names.emplace_back(shipped.name);
   std::sort(names.begin(), names.end());
   return names;
+}
+
+Mechanism homework_mechanism(const Inputs& inputs) {
+  Mechanism mechanism = load_mechanism("two-blocks");
+  for (const InputKey& key : kInputKeys)
+    if (inputs.origin(key) != "default")
+      set_value(mechanism, std::string(key.mechanism_key), inputs.value(key), inputs.origin(key));
+  return mechanism;
 }
 
 Mechanism read_mechanism_file(const std::filesystem::path& path) {

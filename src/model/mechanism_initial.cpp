@@ -130,4 +130,34 @@ void set_value(Mechanism& mechanism, const std::string& name, double value, cons
                                   join_names(parameters) + "; coordinates: " + valid_coordinates(coordinates));
 }
 
+std::string likely_causes(const Mechanism& mechanism) {
+  struct Given {
+    std::string name;
+    double value;
+    const SourcePos* pos;
+  };
+  std::vector<Given> all;
+  for (const Parameter& p : mechanism.parameters) all.push_back({p.name, p.value, &p.pos});
+  for (const InitialValue& v : mechanism.initial) all.push_back({v.key, v.value, &v.pos});
+  const auto where = [](const SourcePos& pos) {
+    return pos.line == 0 ? pos.file : pos.file + ":" + std::to_string(pos.line) + ":" + std::to_string(pos.column);
+  };
+  const auto list = [&](auto&& keep) {
+    std::string out;
+    for (const Given& g : all) {
+      if (!keep(g)) continue;
+      out += out.empty() ? "" : ", ";
+      out += g.name + " = " + format_roundtrip(g.value) + " (" + where(*g.pos) + ")";
+    }
+    return out;
+  };
+  const std::string extreme = list([](const Given& g) {
+    const double v = std::fabs(g.value);
+    return v >= 1e50 || (v > 0 && v <= 1e-50);
+  });
+  if (!extreme.empty()) return extreme;
+  // Nothing extreme on its own: the combination overflowed; name what was set.
+  return list([](const Given& g) { return g.pos->line == 0 && !g.pos->file.empty(); });
+}
+
 }  // namespace linkage

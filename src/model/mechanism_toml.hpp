@@ -20,6 +20,10 @@ namespace linkage {
 /// A shipped mechanism by NAME (no '/' and no ".toml": built into the program), or else a
 /// file path.
 [[nodiscard]] Mechanism load_mechanism(const std::string& name_or_file);
+/// The homework's inputs (flags, --config) on mechanisms/two-blocks.toml: every value not
+/// at its default is set there with its origin, so the general derivation takes them.
+class Inputs;
+[[nodiscard]] Mechanism homework_mechanism(const Inputs& inputs);
 /// The shipped mechanisms' names, sorted.
 [[nodiscard]] std::vector<std::string> shipped_mechanism_names();
 
@@ -31,6 +35,12 @@ void validate_initial(const Mechanism& mechanism);
 /// "1.x_dot", "slider.s"); `origin` says where the setting came from. Throws
 /// Error::invalid("set", ...) for an unknown name or a value that is not finite.
 void set_value(Mechanism& mechanism, const std::string& name, double value, const std::string& origin);
+
+/// For a number that overflowed: the parameters and initial values far outside physical
+/// sizes (|v| >= 1e50 or <= 1e-50), else every value set from outside the file, each
+/// with where it came from ("L = 1e+200 (--L)", "m = 2 (pendulum.toml:7:5)"); empty
+/// when there is none of either.
+[[nodiscard]] std::string likely_causes(const Mechanism& mechanism);
 
 /// One key of a mechanism file: the table it belongs to, its name, type, default and
 /// meaning. The reader accepts exactly these and mechanisms/README.md documents them.

@@ -3,16 +3,6 @@
 #include <deque>
 
 namespace linkage {
-namespace {
-
-// Index of a body by name, -1 for the ground.
-int body_index(const Mechanism& mechanism, const std::string& name) {
-  for (std::size_t i = 0; i < mechanism.bodies.size(); ++i)
-    if (mechanism.bodies[i].name == name) return static_cast<int>(i);
-  return -1;
-}
-
-}  // namespace
 
 const char* coordinate_kind_name(CoordinateKind kind) {
   switch (kind) {
@@ -44,8 +34,8 @@ SpanningTree spanning_tree(const Mechanism& mechanism) {
       for (std::size_t j = 0; j < mechanism.joints.size(); ++j) {
         if (used[j]) continue;
         const Joint& joint = mechanism.joints[j];
-        const int a = body_index(mechanism, joint.bodies[0]);
-        const int b = body_index(mechanism, joint.bodies[1]);
+        const int a = mechanism.body_index(joint.bodies[0]);
+        const int b = mechanism.body_index(joint.bodies[1]);
         int other = -2;
         if (a == at) other = b;
         if (b == at) other = a;

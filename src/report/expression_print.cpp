@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string_view>
 
-#include "report/formula.hpp"
+#include "report/notation.hpp"
 
 namespace linkage {
 

@@ -30,7 +30,7 @@
 //   5. A sum that is a factor of a product (GiNaC keeps c (a - b) or -c (b - a) as its
 //      hash order falls) is written with fewer negative terms, on a tie with its last
 //      term positive: "m (x₂ - x₁)", "-m (b - a + c)".
-//   Text styles put kBreakMark (report/formula.hpp) before each operator of the top-level
+//   Text styles put kBreakMark (report/notation.hpp) before each operator of the top-level
 //   sum, where report/text_layout may wrap; LaTeX carries none.
 // A symbol missing from the table, or an expression with no notation here (a relation, a
 // matrix, a complex number, an unknown function), is a programming error: std::logic_error.

@@ -7,8 +7,6 @@
 
 namespace linkage {
 
-using expr::Style;
-
 std::string latex_escape(std::string_view text) {
   std::string out;
   for (char c : text) {
@@ -153,16 +151,6 @@ std::string step_rows(const std::vector<MathStep>& steps, std::string_view inden
   return out;
 }
 
-std::string derivation_rows(const DerivationGroup& group, int digits, std::string_view indent) {
-  std::vector<MathStep> steps;
-  for (const DerivationStep& step : group.steps)
-    steps.push_back(
-        {std::string(step.quantity.latex), step.formula.print(Style::latex, Spelling::symbolic, digits),
-         step.formula.print(Style::latex, Spelling::substituted, digits),
-         format_number(step.quantity.value, Style::latex, digits) + "\\ " + unit_text(step.unit, Style::latex)});
-  return step_rows(steps, indent);
-}
-
 std::string equation_row(std::string_view lhs, std::string_view rhs, std::string_view suffix, std::size_t limit,
                          std::string_view indent) {
   const std::string pad(indent);
@@ -212,16 +200,6 @@ std::string column_vector(const std::vector<std::string>& entries, const std::ve
   return bmatrix(rows, row_comments, indent);
 }
 
-namespace {
-
-std::vector<std::string> unknown_names(const CaseSolution& c) {
-  std::vector<std::string> names;
-  for (Unknown u : c.unknowns) names.emplace_back(unknown_name(u, Style::latex));
-  return names;
-}
-
-}  // namespace
-
 std::string matrix_equation(const std::vector<std::vector<std::string>>& A, const std::vector<std::string>& unknowns,
                             const std::vector<std::string>& B, const std::vector<std::string>& labels,
                             const MatrixLayout& layout, std::string_view indent) {
@@ -232,33 +210,10 @@ std::string matrix_equation(const std::vector<std::vector<std::string>>& A, cons
          (layout.break_before_equals ? "\\\\ =\n" : "=\n") + column_vector(B, comments, indent);
 }
 
-std::string matrix_equation(const CaseSolution& c, const MatrixLayout& layout, int digits, std::string_view indent) {
-  SymbolicSystem entries = symbolic_system(c.id, Style::latex);
-  if (layout.numeric) {
-    for (Eigen::Index r = 0; r < c.A.rows(); ++r) {
-      for (Eigen::Index col = 0; col < c.A.cols(); ++col)
-        entries.A[static_cast<std::size_t>(r)][static_cast<std::size_t>(col)] =
-            format_number(c.A(r, col), Style::latex, digits);
-      entries.B[static_cast<std::size_t>(r)] = format_number(c.B[r], Style::latex, digits);
-    }
-  }
-  const std::vector<std::string> labels(c.equations.begin(), c.equations.end());
-  return matrix_equation(entries.A, unknown_names(c), entries.B, labels, layout, indent);
-}
-
 std::string solution_equation(const std::vector<std::string>& unknowns, const std::vector<std::string>& values,
                               const std::vector<std::string>& units, std::string_view indent) {
   return inline_column(unknowns, indent) + std::string(indent) + "=\n" + inline_column(values, indent) +
          inline_column(units, indent, "matrix");
-}
-
-std::string solution_equation(const CaseSolution& c, int digits, std::string_view indent) {
-  std::vector<std::string> values, units;
-  for (std::size_t i = 0; i < c.unknowns.size(); ++i) {
-    values.push_back(format_number(c.solution[static_cast<Eigen::Index>(i)], Style::latex, digits));
-    units.push_back(unit_text(info(c.unknowns[i]).unit, Style::latex));
-  }
-  return solution_equation(unknown_names(c), values, units, indent);
 }
 
 std::string solution_markdown(const std::vector<SolutionRow>& rows, int digits) {
@@ -272,16 +227,6 @@ std::string solution_markdown(const std::vector<SolutionRow>& rows, int digits) 
 std::string residual_line(double residual, double condition) {
   return "\\lVert A q - B \\rVert_2 = " + format_number(residual, Style::latex, 2) +
          ", \\qquad \\kappa_2(A) = " + format_number(condition, Style::latex, 3);
-}
-
-std::vector<std::string> equation_rows(const CaseSolution& c) {
-  const SymbolicSystem symbolic = symbolic_system(c.id, Style::latex);
-  std::vector<std::string> rows;
-  for (std::size_t r = 0; r < symbolic.A.size(); ++r) {
-    const EquationSides eq = equation_sides(symbolic.A[r], symbolic.B[r], c.unknowns, Style::latex);
-    rows.push_back(eq.lhs + " &= " + eq.rhs);
-  }
-  return rows;
 }
 
 std::string agreement_tabular(const std::vector<int>& cases, const std::vector<AgreementRow>& rows, int digits) {

@@ -1,15 +1,13 @@
 #pragma once
-// LaTeX pieces shared by the LaTeX and Markdown reports, of the homework and of any
-// mechanism: headings, the derivation steps as align rows, equations wrapped at their
-// top-level sums, matrices as bmatrix, the labelled equations of a case, the solution,
-// the residual line and the table of how closely the cases agree.
+// LaTeX pieces shared by the LaTeX and Markdown reports of a mechanism: headings, the derivation steps as align rows,
+// equations wrapped at their top-level sums, matrices as bmatrix, the labelled equations of a case, the solution, the
+// residual line and the table of how closely the cases agree.
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include "report/derivation.hpp"
-#include "report/worked_solution.hpp"
+#include "report/notation.hpp"
 
 namespace linkage {
 
@@ -38,10 +36,6 @@ struct MathStep {
 
 /// Rows for an align*/aligned environment, steps separated by \\[1ex].
 [[nodiscard]] std::string step_rows(const std::vector<MathStep>& steps, std::string_view indent);
-
-/// Rows for an align*/aligned environment, two per step: "quantity &= formula", then
-/// "&= substituted = value unit", e.g. I_{zz}^{C} &= \frac{m \left(w^2 + L^2\right)}{12}.
-[[nodiscard]] std::string derivation_rows(const DerivationGroup& group, int digits, std::string_view indent);
 
 /// "lhs &= rhs" followed by `suffix` (a \tag or "&& \text{...}"), wrapped at the sums of
 /// either side (see mark_sums) when longer than `limit` visible characters: the left
@@ -76,17 +70,10 @@ struct MatrixLayout {
                                           const std::vector<std::string>& labels, const MatrixLayout& layout,
                                           std::string_view indent);
 
-/// The case's A q = B as three bmatrices.
-[[nodiscard]] std::string matrix_equation(const CaseSolution& c, const MatrixLayout& layout, int digits,
-                                          std::string_view indent);
-
 /// The solution as q = [values] with a column of units, all printed LaTeX.
 [[nodiscard]] std::string solution_equation(const std::vector<std::string>& unknowns,
                                             const std::vector<std::string>& values,
                                             const std::vector<std::string>& units, std::string_view indent);
-
-/// The solution as q = [values] with a column of units.
-[[nodiscard]] std::string solution_equation(const CaseSolution& c, int digits, std::string_view indent);
 
 /// One unknown of a solution table.
 struct SolutionRow {
@@ -101,9 +88,6 @@ struct SolutionRow {
 
 /// "\lVert A q - B \rVert_2 = ..., \qquad \kappa_2(A) = ...".
 [[nodiscard]] std::string residual_line(double residual, double condition);
-
-/// The labelled rows "lhs &= rhs" of the case's equations, without the labels.
-[[nodiscard]] std::vector<std::string> equation_rows(const CaseSolution& c);
 
 /// One quantity across the solved cases, for the closing table: its LaTeX name, its
 /// value in each case (none where the case has none), which of them are recovered

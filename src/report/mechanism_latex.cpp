@@ -241,7 +241,7 @@ class DerivationWriter {
       std::vector<MathStep> steps;
       for (const Definition& d : m.definitions) {
         const sym::SymbolInfo* symbol = system_.table().find(d.name);
-        steps.push_back(step(symbol->latex, system_.constants().at(symbol->symbol), ""));
+        steps.push_back(step(symbol->latex, system_.constants().at(symbol->symbol), symbol->unit));
       }
       aligned(step_rows(steps, pad()));
     }
@@ -254,13 +254,18 @@ class DerivationWriter {
                          unit_cell(symbol.unit), text(symbol.meaning)});
       }
     table({"symbol", "value", "unit", "meaning"}, "lrll", state);
+    new_paragraph(text(given_note(m)));
     if (!s_.closure_note.empty()) new_paragraph(text(s_.closure_note));
   }
 
   void inertia() {
+    const std::vector<PinInertia> pins = pin_inertias(system_);
     heading("Moments of inertia",
-            "Each body's moment of inertia about its centre of mass, from its shape: the area integral for a "
-            "rectangle, $m L^2/12$ for a rod, $m r^2/2$ for a disc, none for a point mass.");
+            std::string("Each body's moment of inertia about its centre of mass, from its shape: the area integral for "
+                        "a rectangle, $m L^2/12$ for a rod, $m r^2/2$ for a disc, none for a point mass.") +
+                (pins.empty() ? ""
+                              : " The parallel-axis theorem moves it to each pin $P$: $I^P = I + m \\lvert r "
+                                "\\rvert^2$, $r$ from the centre of mass to $P$."));
     std::vector<MathStep> steps;
     std::vector<std::string> done;
     for (const sym::BodySystem& b : system_.bodies()) {
@@ -270,6 +275,7 @@ class DerivationWriter {
       done.push_back(name);
       steps.push_back(step(name, b.inertia_formula, "kg m^2"));
     }
+    for (const PinInertia& p : pins) steps.push_back(step(p.latex, p.formula, "kg m^2"));
     if (!steps.empty()) aligned(step_rows(steps, pad()));
   }
 
@@ -311,7 +317,8 @@ class DerivationWriter {
                            : "The dampers and applied loads work at the rate $P$; $E = T + V$ changes at that rate.";
     if (!touches_ground(system_.mechanism()))
       note +=
-          " Nothing touches the ground: the horizontal momentum stays constant and the vertical one changes at "
+          " Nothing touches the ground: the horizontal momentum and the angular momentum $H_c$ about the centre of "
+          "mass stay constant, and the vertical momentum changes at "
           "the rate of gravity.";
     heading("Energy and momentum", note);
     const GiNaC::ex T = sym::kinetic_energy(system_);
@@ -325,6 +332,8 @@ class DerivationWriter {
     steps.push_back(step("p_x", p.x, "kg m/s"));
     steps.push_back(step("p_y", p.y, "kg m/s"));
     steps.push_back(step("H_O", sym::angular_momentum(system_), "kg m^2/s"));
+    if (!touches_ground(system_.mechanism()))
+      steps.push_back(step("H_c", sym::angular_momentum_about_centre(system_), "kg m^2/s"));
     aligned(step_rows(steps, pad()));
   }
 

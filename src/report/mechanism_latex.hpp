@@ -14,7 +14,7 @@
 #include <string>
 
 #include "report/mechanism_solution.hpp"
-#include "report/worked_solution.hpp"
+#include "report/report_options.hpp"
 
 namespace linkage {
 

@@ -1,8 +1,10 @@
 #include "report/mechanism_parts.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 
+#include "core/number_format.hpp"
 #include "formulations/case_system.hpp"
 #include "report/expression_print.hpp"
 
@@ -32,6 +34,50 @@ std::string load_place(const sym::System& system, std::size_t body, const sym::L
     if (GiNaC::expand(d.x).is_zero() && GiNaC::expand(d.y).is_zero()) return name;
   }
   return "";
+}
+
+std::vector<PinInertia> pin_inertias(const sym::System& system) {
+  std::vector<PinInertia> out;
+  const Mechanism& m = system.mechanism();
+  for (const sym::BodySystem& b : system.bodies()) {
+    if (!b.rotates) continue;
+    const sym::SymbolInfo* inertia = system.table().find(GiNaC::ex_to<GiNaC::symbol>(b.inertia));
+    for (const Joint& joint : m.joints) {
+      if (joint.type != JointType::pin) continue;
+      for (std::size_t end = 0; end < 2; ++end) {
+        if (joint.bodies[end] != b.name) continue;
+        const std::string& point = joint.points[end];
+        const sym::Vec2& r = b.points.at(point);
+        const GiNaC::ex r2 = GiNaC::expand(r.x * r.x + r.y * r.y);
+        if (r2.is_zero()) continue;
+        std::string latex = inertia->latex;
+        if (latex.ends_with("^{C}")) latex.resize(latex.size() - 4);
+        PinInertia p{concat({inertia->unicode, "^", point}), concat({inertia->ascii, "^", point}),
+                     concat({latex, "^{", point, "}"}), b.inertia + b.mass * r2};
+        const bool seen = std::any_of(out.begin(), out.end(), [&](const PinInertia& q) {
+          return q.ascii == p.ascii && (q.formula - p.formula).expand().is_zero();
+        });
+        if (!seen) out.push_back(std::move(p));
+      }
+    }
+  }
+  return out;
+}
+
+std::string given_note(const Mechanism& mechanism) {
+  std::string given;
+  const auto add = [&](const std::string& name, double value, const SourcePos& pos) {
+    if (pos.line != 0 || pos.file.empty()) return;  // from the file itself
+    if (!given.empty()) given += ", ";
+    given += concat({name, " = ", format_roundtrip(value), " (", pos.file, ")"});
+  };
+  for (const Parameter& p : mechanism.parameters) add(p.name, p.value, p.pos);
+  for (const InitialValue& v : mechanism.initial) add(v.key, v.value, v.pos);
+  const std::string source = mechanism.source.starts_with("built-in ")
+                                 ? concat({"the shipped ", std::string_view(mechanism.source).substr(9)})
+                                 : mechanism.source;
+  if (given.empty()) return concat({"All values as in ", source, "."});
+  return concat({"Given: ", given, "; the rest as in ", source, "."});
 }
 
 bool touches_ground(const Mechanism& mechanism) {

@@ -8,7 +8,7 @@
 #include "model/mechanism.hpp"
 #include "report/mechanism_solution.hpp"
 #include "report/notation.hpp"
-#include "report/worked_solution.hpp"
+#include "report/report_options.hpp"
 #include "symbolic/system.hpp"
 
 namespace linkage {
@@ -23,6 +23,20 @@ namespace linkage {
 /// Where `load` acts on body `body`: "the centre of mass", a named point of the body, or ""
 /// when it is neither.
 [[nodiscard]] std::string load_place(const sym::System& system, std::size_t body, const sym::Load& load);
+
+/// A body's moment of inertia about one of its pins, by the parallel-axis theorem:
+/// I^P = I + m |r|², r from the centre of mass to the pin point (the homework's I_zz^P).
+struct PinInertia {
+  std::string unicode, ascii, latex;  // "I^P", "I^P", "I_{zz}^{P}"
+  GiNaC::ex formula;
+};
+/// One per rotating body and pin point away from its centre of mass, in body and joint
+/// order; equal ones (the same symbol, point name and formula) once.
+[[nodiscard]] std::vector<PinInertia> pin_inertias(const sym::System& system);
+
+/// Where the values came from: "Given: m = 2 (run.toml:1:5), 2.theta = 0.7 (--theta2);
+/// the rest as in the shipped two-blocks.toml." or "All values as in pendulum.toml."
+[[nodiscard]] std::string given_note(const Mechanism& mechanism);
 
 /// Whether a joint or spring holds the mechanism to the ground, or an applied force or
 /// torque acts: otherwise its horizontal momentum stays constant.

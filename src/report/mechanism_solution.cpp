@@ -2,8 +2,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/error.hpp"
 #include "evaluate/case_evaluator.hpp"
-#include "report/json_report.hpp"
+#include "model/mechanism_toml.hpp"
+#include "report/json_layout.hpp"
+#include "report/mechanism_parts.hpp"
+#include "report/notation.hpp"
+#include "symbolic/energy.hpp"
 #include "symbolic/loop_closure.hpp"
 #include "symbolic/validate.hpp"
 
@@ -17,19 +22,28 @@ double solved_value(const MechanismSolution& s, const SolvedCase& c, const GiNaC
   return *value;
 }
 
-}  // namespace
+// Every number the reports print besides the matrices (solve_matrices checks those):
+// the definitions and inertias (state_values checks them), the energy and momenta.
+void require_printed_finite(const MechanismSolution& s) {
+  const sym::System& system = *s.system;
+  const GiNaC::ex T = sym::kinetic_energy(system), V = sym::potential_energy(system);
+  const sym::Vec2 p = sym::linear_momentum(system);
+  const std::pair<const char*, GiNaC::ex> quantities[] = {
+      {"the kinetic energy T", T},
+      {"the potential energy V", V},
+      {"the energy E = T + V", T + V},
+      {"the power P", sym::nonconservative_power(system)},
+      {"the momentum p_x", p.x},
+      {"the momentum p_y", p.y},
+      {"the angular momentum H_O", sym::angular_momentum(system)},
+      {"the angular momentum H_c", sym::angular_momentum_about_centre(system)}};
+  for (const auto& [name, e] : quantities) require_finite(name, value_at(e, s.values));
+}
 
-MechanismSolution work_out_mechanism(const Mechanism& mechanism, const std::vector<CaseId>& cases) {
-  MechanismSolution out;
-  out.system = std::make_shared<const sym::System>(mechanism);
+void work_out_numbers(MechanismSolution& out, const std::vector<CaseId>& cases) {
   const sym::System& system = *out.system;
-  sym::validate_quantities(system);
-  sym::validate_constraints(system, system.initial_state());  // structural redundancy, before closing
-  const sym::ClosedState closed = sym::close_loops(system, system.initial_state());
-  sym::validate_constraints(system, closed.state);
-  out.state = closed.state;
-  out.closure_note = closed.note;
   out.values = state_values(system, out.state, 0);
+  require_printed_finite(out);
   for (CaseId id : cases) {
     SolvedCase solved{derive_case(system, id), {}};
     // The numbers from the case's own expressions, compiled.
@@ -55,6 +69,75 @@ MechanismSolution work_out_mechanism(const Mechanism& mechanism, const std::vect
             row.max_abs_difference = std::max(row.max_abs_difference, std::abs(*row.values[a] - *row.values[b]));
       out.agreement.push_back(std::move(row));
     }
+  }
+  for (const SolvedCase& c : out.cases) {
+    for (Eigen::Index i = 0; i < c.numbers.solution.size(); ++i)
+      require_finite(concat({"the Case ", std::to_string(case_number(c.system.id)), " solution"}),
+                     c.numbers.solution(i));
+    require_finite(concat({"the Case ", std::to_string(case_number(c.system.id)), " residual"}), c.numbers.residual);
+  }
+  for (const MechanismAgreement& row : out.agreement) {
+    for (const auto& v : row.values)
+      if (v) require_finite("a recovered value", *v);
+    require_finite("a difference between cases", row.max_abs_difference);
+  }
+}
+
+// What the worked derivation computes before the cases, keyed as the symbols are: the
+// definitions and inertias, the inertias about the pins, each joint's position, the
+// maximal coordinates and rates the generalized ones imply, the energy and momenta.
+nlohmann::ordered_json derived_json(const MechanismSolution& s) {
+  const sym::System& system = *s.system;
+  nlohmann::ordered_json derived = nlohmann::ordered_json::object();
+  for (const sym::SymbolInfo& info : system.table().all())
+    if (info.role == sym::Role::definition || info.role == sym::Role::inertia)
+      derived[info.key] = value_at(info.symbol, s.values);
+  for (const PinInertia& p : pin_inertias(system)) derived[p.ascii] = value_at(p.formula, s.values);
+  const Mechanism& m = system.mechanism();
+  for (const Joint& joint : m.joints) {
+    const int body = m.body_index(joint.bodies[0]);
+    const sym::Vec2 at = system.point_position(body, joint.points[0]);
+    derived[joint.name + ".x"] = value_at(at.x, s.values);
+    derived[joint.name + ".y"] = value_at(at.y, s.values);
+  }
+  for (const sym::SymbolInfo& info : system.table().all()) {
+    if (info.role != sym::Role::coordinate && info.role != sym::Role::rate) continue;
+    if (info.key.ends_with(".s") || info.key.ends_with(".s_dot")) continue;
+    if (s.state.find(info.symbol) != s.state.end()) continue;  // in "state" already
+    derived[info.key] = value_at(info.symbol, s.values);
+  }
+  const GiNaC::ex T = sym::kinetic_energy(system), V = sym::potential_energy(system);
+  derived["kinetic_energy"] = value_at(T, s.values);
+  derived["potential_energy"] = value_at(V, s.values);
+  derived["energy"] = value_at(T + V, s.values);
+  const GiNaC::ex P = sym::nonconservative_power(system);
+  if (!P.is_zero()) derived["power"] = value_at(P, s.values);
+  const sym::Vec2 p = sym::linear_momentum(system);
+  derived["momentum_x"] = value_at(p.x, s.values);
+  derived["momentum_y"] = value_at(p.y, s.values);
+  derived["angular_momentum_O"] = value_at(sym::angular_momentum(system), s.values);
+  if (!touches_ground(system.mechanism()))
+    derived["angular_momentum_c"] = value_at(sym::angular_momentum_about_centre(system), s.values);
+  return derived;
+}
+
+}  // namespace
+
+MechanismSolution work_out_mechanism(const Mechanism& mechanism, const std::vector<CaseId>& cases) {
+  MechanismSolution out;
+  out.system = std::make_shared<const sym::System>(mechanism);
+  const sym::System& system = *out.system;
+  sym::validate_quantities(system);
+  sym::validate_constraints(system, system.initial_state());  // structural redundancy, before closing
+  const sym::ClosedState closed = sym::close_loops(system, system.initial_state());
+  sym::validate_constraints(system, closed.state);
+  out.state = closed.state;
+  out.closure_note = closed.note;
+  try {  // a number that overflows, or a singular matrix: name the values that likely caused it
+    work_out_numbers(out, cases);
+  } catch (const Error& e) {
+    const std::string causes = likely_causes(mechanism);
+    throw causes.empty() ? e : e.rephrased(concat({e.what(), "; likely causes: ", causes}));
   }
   return out;
 }
@@ -96,6 +179,7 @@ std::string mechanism_json(const MechanismSolution& s) {
   }
   doc["state"] = state;
   if (!s.closure_note.empty()) doc["loop_closure"] = s.closure_note;
+  doc["derived"] = derived_json(s);
   auto key = [&](const GiNaC::symbol& u) { return system.table().find(u)->key; };
   ordered_json cases = ordered_json::array();
   for (const SolvedCase& c : s.cases) {

@@ -105,7 +105,7 @@ class MechanismWriter {
       blank();
       for (const Definition& d : m.definitions) {
         const sym::SymbolInfo* info = system_.table().find(d.name);
-        step(style_ == Style::unicode ? info->unicode : info->ascii, system_.constants().at(info->symbol), "");
+        step(style_ == Style::unicode ? info->unicode : info->ascii, system_.constants().at(info->symbol), info->unit);
       }
     }
     blank();
@@ -121,6 +121,8 @@ class MechanismWriter {
       }
     }
     lines(layout_table(state, "    ", o_.width));
+    blank();
+    prose(given_note(m));
     if (!s_.closure_note.empty()) {
       blank();
       prose(s_.closure_note);
@@ -129,9 +131,19 @@ class MechanismWriter {
 
   void inertia() {
     heading("Moments of inertia", '-');
-    prose(
-        "Each body's moment of inertia about its centre of mass, from its shape: the area integral for a "
-        "rectangle, m L²/12 for a rod, m r²/2 for a disc, none for a point mass.");
+    const bool uni = style_ == Style::unicode;
+    const std::vector<PinInertia> pins = pin_inertias(system_);
+    std::string note =
+        concat({"Each body's moment of inertia about its centre of mass, from its shape: the area "
+                "integral for a rectangle, m L",
+                uni ? "²" : "^2", "/12 for a rod, m r", uni ? "²" : "^2", "/2 for a disc, none for a point mass."});
+    if (const sym::SymbolInfo* shared = system_.table().find("I");
+        shared != nullptr && shared->role == sym::Role::inertia)
+      note += " I stands for I_zz^C.";
+    if (!pins.empty())
+      note += concat({" The parallel-axis theorem moves it to each pin P: I^P = I + m |r|", uni ? "²" : "^2",
+                      ", r from the centre of mass to P."});
+    prose(note);
     blank();
     std::vector<std::string> done;
     for (const sym::BodySystem& b : system_.bodies()) {
@@ -141,6 +153,7 @@ class MechanismWriter {
       done.push_back(name);
       step(name, b.inertia_formula, "kg m^2");
     }
+    for (const PinInertia& p : pins) step(uni ? p.unicode : p.ascii, p.formula, "kg m^2");
   }
 
   void constraints() {
@@ -177,7 +190,8 @@ class MechanismWriter {
                            : "The dampers and applied loads work at the rate P; E = T + V changes at that rate.";
     if (!touches_ground(system_.mechanism()))
       note +=
-          " Nothing touches the ground: the horizontal momentum stays constant and the vertical one changes at "
+          " Nothing touches the ground: the horizontal momentum and the angular momentum H_c about the centre of mass "
+          "stay constant, and the vertical momentum changes at "
           "the rate of gravity.";
     prose(note);
     blank();
@@ -191,7 +205,8 @@ class MechanismWriter {
     if (!power.is_zero()) step("P", power, "W");
     step(uni ? "p_x" : "p_x", p.x, "kg m/s");
     step(uni ? "p_y" : "p_y", p.y, "kg m/s");
-    step(uni ? "H_O" : "H_O", sym::angular_momentum(system_), "kg m^2/s");
+    step("H_O", sym::angular_momentum(system_), "kg m^2/s");
+    if (!touches_ground(system_.mechanism())) step("H_c", sym::angular_momentum_about_centre(system_), "kg m^2/s");
   }
 
   void forces() {

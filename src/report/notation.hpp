@@ -1,28 +1,24 @@
 #pragma once
-// How the reports spell things in each style: the input symbols (θ₁ / th1 /
-// \theta_1), the unknowns, units, and one row of A q = B as an equation,
-//   (3.1)  I θ̈₁ + D sin θ₁ Fx - D cos θ₁ Fy = 0
-// built from the printed entries of symbolic_system(), never retyped.
+// How the reports spell what is not an expression: numbers, units, labels, and the
+// two sides of an equation (expression_print.hpp prints the expressions themselves).
 #include <initializer_list>
 #include <string>
 #include <string_view>
-#include <vector>
 
-#include "formulations/expr.hpp"
-#include "formulations/unknowns.hpp"
-#include "model/inputs.hpp"
-#include "report/formula.hpp"
+#include "core/style.hpp"
 
 namespace linkage {
 
-/// The input `key` as a symbol with its value (exact: substituted as given).
-[[nodiscard]] Symbol input_symbol(const InputKey& key, const Inputs& inputs);
+/// Marks the places where a long text formula may be wrapped (before the operator of a
+/// sum); text_layout and latex_math break there and remove the marks.
+inline constexpr char kBreakMark = '\x1f';
 
-/// The name of an unknown in `style` (ẍ₁, x1'', \ddot{x}_1).
-[[nodiscard]] std::string_view unknown_name(Unknown u, expr::Style style);
+/// A number as a report prints it: `digits` significant digits, or the shortest
+/// round-trip form when `digits` is 0; LaTeX writes an exponent as "\times 10^{-5}".
+[[nodiscard]] std::string format_number(double value, Style style, int digits);
 
 /// An ASCII unit ("kg m^2", "m/s^2") in `style`: "kg m²"; LaTeX "\mathrm{kg\,m^2}".
-[[nodiscard]] std::string unit_text(std::string_view ascii_unit, expr::Style style);
+[[nodiscard]] std::string unit_text(std::string_view ascii_unit, Style style);
 
 /// The pieces joined. Appending only also sidesteps GCC 12's false -Wrestrict on
 /// `"literal" + std::string` (GCC bug 105329).
@@ -36,11 +32,5 @@ struct EquationSides {
   std::string lhs;  // e.g. "m ẍ₁ - Fx"
   std::string rhs;  // e.g. "0"
 };
-/// Each nonzero entry of `A_row` times its unknown, zero terms skipped, "1/m Fx"
-/// written "Fx/m", a sum coefficient in parentheses; the right side is `B_entry`.
-/// `A_row` and `B_entry` are symbolic_system() entries in `style`. In text styles the
-/// left side carries kBreakMark before each term's sign.
-[[nodiscard]] EquationSides equation_sides(const std::vector<std::string>& A_row, const std::string& B_entry,
-                                           const std::vector<Unknown>& unknowns, expr::Style style);
 
 }  // namespace linkage

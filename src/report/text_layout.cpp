@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "report/formula.hpp"
+#include "report/notation.hpp"
 
 namespace linkage {
 

@@ -108,4 +108,23 @@ ex angular_momentum(const System& system) {
   return H;
 }
 
+ex angular_momentum_about_centre(const System& system) {
+  // sum over body pairs a < b of m_a m_b / M (r_a - r_b) x (r_a' - r_b'), plus the spins:
+  // the same as sum m (r - r_c) x (r' - r_c'), written in relative positions that read
+  // well (the homework's m (x1 - x2) (y1' - y2') / 2 - ...).
+  const std::vector<BodySystem>& bodies = system.bodies();
+  ex M = 0;
+  for (const BodySystem& b : bodies) M += b.mass;
+  ex H = 0;
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    for (std::size_t j = i + 1; j < bodies.size(); ++j) {
+      const BodySystem &a = bodies[i], &b = bodies[j];
+      H +=
+          a.mass * b.mass / M * ((a.x.q - b.x.q) * (a.y.q_dot - b.y.q_dot) - (a.y.q - b.y.q) * (a.x.q_dot - b.x.q_dot));
+    }
+  for (const BodySystem& b : bodies)
+    if (b.rotates) H += b.inertia * b.theta.q_dot;
+  return H;
+}
+
 }  // namespace linkage::sym

@@ -44,4 +44,8 @@ struct PowerTerm {
 /// H_O = sum_b m_b (x_b y_b' - y_b x_b') + I_b theta_b', about the world origin.
 [[nodiscard]] GiNaC::ex angular_momentum(const System& system);
 
+/// H_c, about the mechanism's centre of mass: constant when only uniform gravity acts
+/// from outside (a floating mechanism), where H_O is not.
+[[nodiscard]] GiNaC::ex angular_momentum_about_centre(const System& system);
+
 }  // namespace linkage::sym

@@ -40,15 +40,19 @@ ClosedState close_loops(const System& system, const GiNaC::exmap& state) {
 
   GiNaC::exmap constants;
   for (const auto& [symbol, expression] : system.constants())
-    constants[symbol] = GiNaC::evalf(expression.subs(system.parameter_values()));
+    constants[symbol] = GiNaC::numeric(evaluate(expression, system.parameter_values()));
   for (const auto& [symbol, value] : system.parameter_values()) constants[symbol] = value;
   const auto n = static_cast<Eigen::Index>(phi.size());
   std::vector<std::vector<GiNaC::ex>> jacobian(phi.size(), std::vector<GiNaC::ex>(coordinates.size()));
   for (std::size_t r = 0; r < phi.size(); ++r) {
-    phi[r] = phi[r].subs(constants);
     for (std::size_t c = 0; c < coordinates.size(); ++c) jacobian[r][c] = GiNaC::diff(phi[r], coordinates[c].symbols.q);
   }
-  auto value = [&](const GiNaC::ex& e) { return to_double(e.subs(out.state)); };
+  // Values looked up, never substituted: GiNaC would combine the floats in a run-dependent order.
+  auto value = [&](const GiNaC::ex& e) {
+    GiNaC::exmap at = constants;
+    for (const auto& [symbol, v] : out.state) at[symbol] = v;
+    return evaluate(e, at);
+  };
 
   const GiNaC::exmap start = state;
   double residual = 0;

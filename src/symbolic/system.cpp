@@ -8,6 +8,7 @@
 #include "core/error.hpp"
 #include "symbolic/joints.hpp"
 #include "symbolic/spelling.hpp"
+#include "symbolic/units.hpp"
 
 namespace linkage::sym {
 
@@ -34,17 +35,56 @@ ex simplify_trig(const ex& e) {
   return out;
 }
 
-double to_double(const ex& e) {
-  const ex value = GiNaC::evalf(e);
-  if (!GiNaC::is_a<GiNaC::numeric>(value)) {
-    std::ostringstream text;
-    text << value;
-    throw std::logic_error("not a number: " + text.str());
+double evaluate(const ex& e, const GiNaC::exmap& values) {
+  if (GiNaC::is_a<GiNaC::numeric>(e)) {
+    const auto& n = GiNaC::ex_to<GiNaC::numeric>(e);
+    return n.is_real() ? n.to_double() : std::nan("");
   }
-  const auto& n = GiNaC::ex_to<GiNaC::numeric>(value);
-  if (!n.is_real()) return std::nan("");
-  return n.to_double();
+  if (GiNaC::is_a<GiNaC::symbol>(e)) {
+    const auto it = values.find(e);
+    if (it == values.end())
+      throw std::logic_error("not a number: no value for " + GiNaC::ex_to<GiNaC::symbol>(e).get_name());
+    return evaluate(it->second, values);
+  }
+  if (GiNaC::is_a<GiNaC::constant>(e)) return GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(e)).to_double();
+  if (GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e)) {
+    const bool sum = GiNaC::is_a<GiNaC::add>(e);
+    std::vector<double> parts;
+    parts.reserve(e.nops());
+    for (std::size_t k = 0; k < e.nops(); ++k) {
+      parts.push_back(evaluate(e.op(k), values));
+      if (std::isnan(parts.back())) return std::nan("");
+    }
+    std::sort(parts.begin(), parts.end());
+    double acc = sum ? 0.0 : 1.0;
+    for (const double p : parts) acc = sum ? acc + p : acc * p;
+    return acc;
+  }
+  if (GiNaC::is_a<GiNaC::power>(e)) {
+    const double base = evaluate(e.op(0), values);
+    const ex exponent = e.op(1);
+    if (GiNaC::is_a<GiNaC::numeric>(exponent) && GiNaC::ex_to<GiNaC::numeric>(exponent).is_integer())
+      return std::pow(base, GiNaC::ex_to<GiNaC::numeric>(exponent).to_int());
+    if (exponent.is_equal(GiNaC::numeric(1, 2))) return std::sqrt(base);
+    if (exponent.is_equal(GiNaC::numeric(-1, 2))) return 1 / std::sqrt(base);
+    return std::pow(base, evaluate(exponent, values));
+  }
+  if (GiNaC::is_a<GiNaC::function>(e) && e.nops() == 1) {
+    const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
+    const double x = evaluate(e.op(0), values);
+    if (name == "sin") return std::sin(x);
+    if (name == "cos") return std::cos(x);
+    if (name == "tan") return std::tan(x);
+    if (name == "exp") return std::exp(x);
+    if (name == "log") return x < 0 ? std::nan("") : std::log(x);
+    if (name == "abs") return std::abs(x);
+  }
+  std::ostringstream text;
+  text << e;
+  throw std::logic_error("not a number: " + text.str());
 }
+
+double to_double(const ex& e) { return evaluate(e, {}); }
 
 namespace {
 
@@ -261,8 +301,8 @@ void System::add_parameters() {
   for (const Definition& d : mechanism_.definitions) {
     const ex value = quantity(d.value, false).subs(constants_);
     const Spelling spelling = spell_name(d.name);
-    const SymbolInfo& info = table_.add(
-        {symbol(d.name), Role::definition, d.name, spelling.unicode, spelling.ascii, spelling.latex, "", ""});
+    const SymbolInfo& info = table_.add({symbol(d.name), Role::definition, d.name, spelling.unicode, spelling.ascii,
+                                         spelling.latex, unit_of(value, table_).value_or(""), ""});
     names_[d.name] = info.symbol;
     constants_[info.symbol] = value;
   }

@@ -138,4 +138,11 @@ class System {
 /// A number from a closed expression (no free symbol left); throws std::logic_error if not.
 [[nodiscard]] double to_double(const GiNaC::ex& e);
 
+/// The value of `e` with each symbol's value taken from `values` (itself evaluated), in
+/// double precision. Deterministic where GiNaC's own evalf is not: GiNaC orders the terms
+/// of a sum by hash values that change from run to run, so adding floats in its order
+/// changes the last bits; here the terms' values are added in sorted order. NaN when a
+/// value is not real; std::logic_error naming a symbol without a value.
+[[nodiscard]] double evaluate(const GiNaC::ex& e, const GiNaC::exmap& values);
+
 }  // namespace linkage::sym

@@ -136,10 +136,11 @@ TEST(SolveBadInput, UnreadableConfigFile) {
 TEST(SolveBadInput, OverflowIsABadInputAndASingularMatrixIsNamed) {
   expect_one_line_error(solve({"--m", "1e300", "--g", "1e10"}),
                         {{}, {"overflows double precision", "m = 1e+300 (--m)"}});
-  expect_one_line_error(solve({"--theta1-dot", "1e200"}), {{}, {"overflows", "theta1_dot = 1e+200 (--theta1-dot)"}});
-  // A mass so small the matrices are singular to working precision: a run that cannot
-  // go on (exit 3), still one line and no NaN.
-  expect_one_line_error(solve({"--m", "1e-300"}), {{}, {"singular", "condition number"}}, 3);
+  expect_one_line_error(solve({"--theta1-dot", "1e200"}), {{}, {"overflows", "1.theta_dot = 1e+200 (--theta1-dot)"}});
+  // A mass so small the matrices are singular to working precision: bad input (exit 2),
+  // one line naming the case, the condition number and the likely cause, no NaN.
+  expect_one_line_error(solve({"--m", "1e-300"}),
+                        {{}, {"Case 1 matrix is singular", "condition number", "likely causes: m = 1e-300 (--m)"}});
 }
 
 }  // namespace

@@ -137,11 +137,12 @@ INSTANTIATE_TEST_SUITE_P(Mechanisms, FreeMomentum,
                          param_name);
 
 // Under gravity the same sums change as the external loads say: dp/dt = (0, -2 m g) and
-// dH_O/dt = -m g (x1 + x2), the moment of gravity about O.
+// dH_O/dt = -m g (x1 + x2), the moment of gravity about O; H_c does not change.
 TEST(Momentum, HomeworkChangesByGravityAlone) {
   const sym::System system(built::homework());
   const sym::Vec2 p = sym::linear_momentum(system);
   const ex H_rate = system.time_derivative(sym::angular_momentum(system));
+  const ex Hc_rate = system.time_derivative(sym::angular_momentum_about_centre(system));
   const double m = 0.1, g = 9.81;
   std::vector<CaseSystem> cases;
   for (CaseId id : kAllCases) cases.push_back(derive_case(system, id));
@@ -154,6 +155,8 @@ TEST(Momentum, HomeworkChangesByGravityAlone) {
       EXPECT_NEAR(value_at(system.time_derivative(p.y), solved), -2 * m * g, 1e-12) << "Case " << case_number(c.id);
       const double x1 = value_at(system.bodies()[0].x.q, solved), x2 = value_at(system.bodies()[1].x.q, solved);
       EXPECT_NEAR(value_at(H_rate, solved), -m * g * (x1 + x2), 1e-12) << "Case " << case_number(c.id);
+      // About the centre of mass gravity has no moment: H_c stays constant.
+      EXPECT_NEAR(value_at(Hc_rate, solved), 0, 1e-12) << "Case " << case_number(c.id);
     }
   }
 }
@@ -183,6 +186,7 @@ TEST(Energy, HomeworkMatchesTheClosedForm) {
   EXPECT_NEAR(value_at(sym::linear_momentum(system).x, values), expected.momentum.x(), 1e-15);
   EXPECT_NEAR(value_at(sym::linear_momentum(system).y, values), expected.momentum.y(), 1e-15);
   EXPECT_NEAR(value_at(sym::angular_momentum(system), values), H_O, 1e-15);
+  EXPECT_NEAR(value_at(sym::angular_momentum_about_centre(system), values), expected.angular_momentum, 1e-15);
   EXPECT_TRUE(sym::nonconservative_power_terms(system).empty());
 }
 

@@ -11,6 +11,7 @@
 #include <map>
 
 #include "core/error.hpp"
+#include "model/inputs.hpp"
 #include "model/spanning_tree.hpp"
 #include "support/test_support.hpp"
 
@@ -238,6 +239,25 @@ TEST(MechanismToml, TwoBlocksIsTheSpecExample) {
   EXPECT_EQ(m.bodies[1].points[0].at.x.text, "-D");
   EXPECT_EQ(m.joints[0].name, "P");
   EXPECT_EQ(m.joints[0].bodies, (std::array<std::string, 2>{"1", "2"}));
+}
+
+// The homework's flags land on two-blocks.toml under their mechanism names, with their
+// origin; values left at their defaults keep the file's positions.
+TEST(MechanismToml, HomeworkInputsSetTheTwoBlocksFile) {
+  const Mechanism plain = homework_mechanism(Inputs{});
+  for (const InputKey& key : kInputKeys) {
+    const std::string name(key.mechanism_key);
+    const bool is_parameter = key.param != nullptr;
+    EXPECT_EQ(is_parameter ? parameter(plain, name) : initial(plain, name), Inputs{}.value(key)) << name;
+  }
+  Inputs inputs;
+  inputs.set(*find_input_key("theta2_dot"), 1.25, "--theta2-dot");
+  inputs.set(*find_input_key("L"), 0.5, "run.toml:2:5");
+  const Mechanism set = homework_mechanism(inputs);
+  EXPECT_EQ(initial(set, "2.theta_dot"), 1.25);
+  EXPECT_EQ(parameter(set, "L"), 0.5);
+  for (const Parameter& p : set.parameters)
+    EXPECT_EQ(p.pos.file, p.name == "L" ? "run.toml:2:5" : "two-blocks.toml") << p.name;
 }
 
 // The loops of the shipped closed mechanisms are closed to the six digits written.

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "report/formula.hpp"
+#include "report/notation.hpp"
 
 namespace linkage {
 namespace {
