@@ -91,7 +91,7 @@ CaseSystem reduced_case(const sym::System& system) {
   for (Recovered& r : forces) out.recovered.push_back(std::move(r));
   const bool loops = unknowns.size() > accelerations.size();
   out.title = count_word(kept.size()) + " equations in generalized coordinates, " +
-              (loops ? "only the loop-closing joint forces" : "no " + force_phrase(system));
+              (loops ? "only loop-closing forces" : "no " + force_phrase(system));
   return out;
 }
 

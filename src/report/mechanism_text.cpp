@@ -233,11 +233,14 @@ class MechanismWriter {
       }
       for (const sym::Load& load : system_.loads()) {
         if (load.body != static_cast<int>(b)) continue;
-        std::string text = "    ";
+        // A long load (a spring's, a damper's) wraps at its sums and between its components.
+        const std::string mark(1, kBreakMark);
+        std::string text;
         if (!(load.force.x.is_zero() && load.force.y.is_zero()))
-          text += concat({"(", math(load.force.x), ", ", math(load.force.y), ")", place(b, load)});
-        if (!load.moment.is_zero()) text += concat({text.size() > 4 ? ", moment " : "moment ", math(load.moment)});
-        line(concat({text, ": ", load.source}));
+          text += concat({"(", marked(load.force.x), ",", mark, " ", marked(load.force.y), ")", place(b, load)});
+        if (!load.moment.is_zero())
+          text += concat({text.empty() ? "moment " : concat({",", mark, " moment "}), marked(load.moment)});
+        lines(wrap("    ", concat({text, ": ", load.source}), "      ", o_.width));
       }
     }
   }
@@ -289,8 +292,8 @@ class MechanismWriter {
     table.separator_before = c.unknowns.size();
     for (std::size_t r = 0; r < c.A.size(); ++r) {
       std::vector<std::string> row;
-      for (const GiNaC::ex& e : c.A[r]) row.push_back(math(e));
-      row.push_back(math(c.B[r]));
+      for (const GiNaC::ex& e : c.A[r]) row.push_back(marked(e));
+      row.push_back(marked(c.B[r]));
       table.cells.push_back(std::move(row));
     }
     if (o_.shows(ReportPart::symbolic)) {

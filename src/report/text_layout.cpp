@@ -70,8 +70,8 @@ Column format_column(const Table& table, std::size_t c) {
     col.width = std::max(int_width + frac_width, display_width(col.header));
   } else {
     col.width = header_width;
-    for (const auto& row : table.cells) col.width = std::max(col.width, display_width(row[c]));
-    for (const auto& row : table.cells) col.cells.push_back(row[c]);
+    for (const auto& row : table.cells) col.width = std::max(col.width, display_width(strip_marks(row[c])));
+    for (const auto& row : table.cells) col.cells.push_back(row[c]);  // marks kept for wrapping
     col.header = table.headers[c];
   }
   return col;
@@ -201,13 +201,21 @@ std::vector<std::string> layout_table(const Table& table, std::string_view inden
       for (std::size_t c = begin; c < end; ++c) {
         const bool sep = c == table.separator_before && c != begin && c != 0;
         line += sep ? std::string(separator) : std::string(gap, ' ');
-        line += pad_right(cell(c), columns[c].width);
+        line += pad_right(strip_marks(cell(c)), columns[c].width);
       }
       return rstrip(line);
     };
     lines.push_back(row_line("", [&](std::size_t c) -> const std::string& { return columns[c].header; }));
+    // A column alone that is still too wide wraps its cells at their break marks.
+    const bool wrapped = end == begin + 1 && used > width;
+    const std::string continuation = std::string(base + gap + 4, ' ');
     for (std::size_t r = 0; r < table.cells.size(); ++r) {
       const std::string label = r < table.row_labels.size() ? table.row_labels[r] : std::string();
+      if (wrapped) {
+        const std::string first = std::string(indent) + pad_right(label, label_width) + std::string(gap, ' ');
+        for (std::string& l : wrap(first, columns[begin].cells[r], continuation, width)) lines.push_back(std::move(l));
+        continue;
+      }
       lines.push_back(row_line(label, [&](std::size_t c) -> const std::string& { return columns[c].cells[r]; }));
     }
     begin = end;

@@ -40,7 +40,8 @@ struct Table {
 
 /// The table's lines, each at most `width` columns when possible, indented by `indent`:
 /// when all columns do not fit, they split into blocks printed one below the other,
-/// each with the row labels again.
+/// each with the row labels again. Text cells may carry kBreakMark: a column that alone
+/// is too wide wraps its cells there.
 [[nodiscard]] std::vector<std::string> layout_table(const Table& table, std::string_view indent, std::size_t width);
 
 }  // namespace linkage
