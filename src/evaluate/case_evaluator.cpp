@@ -25,7 +25,7 @@ CaseEvaluator::CaseEvaluator(const sym::System& system, const CaseSystem& c)
   // Expanded: GiNaC may build equal entries in differently nested forms from run to run
   // (its term order follows address-dependent hashes); the expanded form is one.
   auto prepare = [&](const GiNaC::ex& e) {
-    return GiNaC::expand(e.subs(maximal).subs(system.constants()).subs(system.constants()));
+    return GiNaC::expand(e.subs(system.lengths()).subs(maximal).subs(system.constants()).subs(system.constants()));
   };
   for (const auto& row : c.A)
     for (const GiNaC::ex& e : row) outputs.push_back(prepare(e));

@@ -90,7 +90,8 @@ CaseSystem generalized_case(const sym::System& system) {
   GeneralizedRows g = generalized_rows(system);
   CaseSystem out = linear_system(CaseId::generalized, g.rows, g.unknowns);
   out.recovered = std::move(g.recovered);
-  out.title = count_word(g.rows.size()) + " equations in generalized coordinates with the " + force_phrase(system);
+  out.title = count_word(g.rows.size()) + " equations in generalized coordinates" +
+              (system.mechanism().joints.empty() ? ", no joints" : " with the " + force_phrase(system));
   return out;
 }
 

@@ -25,7 +25,10 @@ CaseSystem maximal_case(const sym::System& system) {
 
   CaseSystem out = linear_system(CaseId::maximal, rows, unknowns);
   out.maximal = true;
-  out.title = count_word(rows.size()) + " DAEs in maximal coordinates with the " + force_phrase(system);
+  // With no joint there is no constraint: ordinary equations, and no force to keep.
+  out.title = system.mechanism().joints.empty()
+                  ? count_word(rows.size()) + " equations in maximal coordinates, no joints"
+                  : count_word(rows.size()) + " DAEs in maximal coordinates with the " + force_phrase(system);
   return out;
 }
 

@@ -40,6 +40,15 @@ GiNaC::exmap state_values(const sym::System& system, const GiNaC::exmap& state, 
     if (info == nullptr || info->role == sym::Role::acceleration) continue;
     values[symbol] = finite_number(system, symbol, sym::evaluate(expression, values));
   }
+  for (const auto& [symbol, expression] : system.lengths()) {
+    values[symbol] = finite_number(system, symbol, sym::evaluate(expression, values));
+    if (values[symbol].is_zero()) {
+      const std::string& key = system.table().find(GiNaC::ex_to<GiNaC::symbol>(symbol))->key;
+      throw Error::input("spring " + key.substr(0, key.rfind('.')) +
+                         " has length 0 at this state: its two points coincide and its direction is undefined; "
+                         "valid: a state with its ends apart");
+    }
+  }
   return values;
 }
 

@@ -13,7 +13,8 @@
 namespace linkage {
 
 /// Every symbol's value at a state: parameters, definitions and inertias, the generalized
-/// coordinates and rates in `state`, the maximal ones they imply, and the time. Throws
+/// coordinates and rates in `state`, the maximal ones they imply, the springs' lengths,
+/// and the time. Throws
 /// Error::input (require_finite) naming a value that overflows.
 [[nodiscard]] GiNaC::exmap state_values(const sym::System& system, const GiNaC::exmap& state, double time);
 

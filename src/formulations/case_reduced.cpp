@@ -20,7 +20,9 @@ namespace {
 
 bool depends_on_state(const GiNaC::ex& e, const sym::SymbolTable& table) {
   for (const sym::SymbolInfo& info : table.all())
-    if ((info.role == sym::Role::coordinate || info.role == sym::Role::rate) && e.has(info.symbol)) return true;
+    if ((info.role == sym::Role::coordinate || info.role == sym::Role::length || info.role == sym::Role::rate) &&
+        e.has(info.symbol))
+      return true;
   return false;
 }
 
@@ -91,7 +93,9 @@ CaseSystem reduced_case(const sym::System& system) {
   for (Recovered& r : forces) out.recovered.push_back(std::move(r));
   const bool loops = unknowns.size() > accelerations.size();
   out.title = count_word(kept.size()) + " equations in generalized coordinates, " +
-              (loops ? "only loop-closing forces" : "no " + force_phrase(system));
+              (loops                               ? "only loop-closing forces"
+               : system.mechanism().joints.empty() ? std::string("no joints")
+                                                   : "no " + force_phrase(system));
   return out;
 }
 

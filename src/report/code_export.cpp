@@ -64,6 +64,8 @@ struct Plan {
   std::vector<std::string> q, qd;     // generalized coordinates and rates
   std::vector<double> q0, qd0;
   std::vector<Assignment> maximal;  // Case 1: the other maximal coordinates, then their rates
+  // The springs' lengths: in maximal coordinates for Case 1, in generalized ones otherwise.
+  std::vector<Assignment> lengths_maximal, lengths_generalized;
   std::vector<GlossaryLine> glossary;
 };
 
@@ -124,6 +126,12 @@ Plan make_plan(const MechanismSolution& s, CodeLanguage language) {
       const auto it = system.to_generalized().find(info.symbol);
       if (it != system.to_generalized().end()) plan.maximal.push_back({plan.names.at(info.symbol), it->second});
     }
+  for (const sym::SymbolInfo& info : table.all()) {
+    if (info.role != sym::Role::length) continue;
+    const GiNaC::ex& length = system.lengths().at(info.symbol);
+    plan.lengths_maximal.push_back({plan.names.at(info.symbol), length});
+    plan.lengths_generalized.push_back({plan.names.at(info.symbol), length.subs(system.to_generalized())});
+  }
   return plan;
 }
 
@@ -136,6 +144,7 @@ void require_defined(const Plan& plan, const CaseSystem& c) {
   defined.insert(plan.qd.begin(), plan.qd.end());
   if (c.maximal)
     for (const Assignment& a : plan.maximal) defined.insert(a.name);
+  for (const Assignment& a : plan.lengths_maximal) defined.insert(a.name);
   auto check = [&](const GiNaC::ex& e) {
     for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
       if (!GiNaC::is_a<GiNaC::symbol>(*it)) continue;
@@ -237,6 +246,9 @@ void matlab_case(std::ostream& out, const Plan& plan, const CaseSystem& c, const
     out << "% Maximal coordinates and rates from them\n";
     for (const Assignment& a : plan.maximal) out << a.name << " = " << print(a.value) << ";\n";
   }
+  if (!plan.lengths_maximal.empty()) out << "% Spring lengths\n";
+  for (const Assignment& a : c.maximal ? plan.lengths_maximal : plan.lengths_generalized)
+    out << a.name << " = " << print(a.value) << ";\n";
   out << "A = zeros(" << c.A.size() << ", " << c.unknowns.size() << ");\n";
   out << "B = zeros(" << c.B.size() << ", 1);\n";
   for (std::size_t i = 0; i < c.A.size(); ++i) {
@@ -301,6 +313,9 @@ void python_case(std::ostream& out, const Plan& plan, const CaseSystem& c, const
     out << in << "# Maximal coordinates and rates from them\n";
     for (const Assignment& a : plan.maximal) out << in << a.name << " = " << print(a.value) << '\n';
   }
+  if (!plan.lengths_maximal.empty()) out << in << "# Spring lengths\n";
+  for (const Assignment& a : c.maximal ? plan.lengths_maximal : plan.lengths_generalized)
+    out << in << a.name << " = " << print(a.value) << '\n';
   out << in << "A = np.zeros((" << c.A.size() << ", " << c.unknowns.size() << "))\n";
   out << in << "B = np.zeros(" << c.B.size() << ")\n";
   for (std::size_t i = 0; i < c.A.size(); ++i) {

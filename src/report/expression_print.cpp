@@ -45,8 +45,8 @@ constexpr int kFunctionBand = 7000;
 constexpr int kCompoundBand = 7500;
 
 bool is_varying(sym::Role role) {
-  return role == sym::Role::time || role == sym::Role::coordinate || role == sym::Role::rate ||
-         role == sym::Role::acceleration || role == sym::Role::force;
+  return role == sym::Role::time || role == sym::Role::coordinate || role == sym::Role::length ||
+         role == sym::Role::rate || role == sym::Role::acceleration || role == sym::Role::force;
 }
 
 const std::string& spelling(const sym::SymbolInfo& info, Style style) {

@@ -321,14 +321,19 @@ class DerivationWriter {
           "mass stay constant, and the vertical momentum changes at "
           "the rate of gravity.";
     heading("Energy and momentum", note);
+    std::vector<MathStep> steps;
+    for (const sym::SymbolInfo& symbol : system_.table().all())  // the springs' lengths, used from here on
+      if (symbol.role == sym::Role::length)
+        steps.push_back(step(symbol.latex, system_.lengths().at(symbol.symbol), "m"));
     const GiNaC::ex T = sym::kinetic_energy(system_);
-    const GiNaC::ex V = sym::potential_energy(system_);
+    const GiNaC::ex V = with_lengths(system_, sym::potential_energy(system_));
     const sym::Vec2 p = sym::linear_momentum(system_);
     const double v = value(V);
-    std::vector<MathStep> steps{step("T", T, "J"), step("V", V, "J")};
+    steps.push_back(step("T", T, "J"));
+    steps.push_back(step("V", V, "J"));
     steps.push_back({"E", "T + V", concat({number(value(T)), v < 0 ? " - " : " + ", number(std::abs(v))}),
                      concat({number(value(T) + v), "\\ ", unit_text("J", Style::latex)})});
-    if (!power.is_zero()) steps.push_back(step("P", power, "W"));
+    if (!power.is_zero()) steps.push_back(step("P", with_lengths(system_, power), "W"));
     steps.push_back(step("p_x", p.x, "kg m/s"));
     steps.push_back(step("p_y", p.y, "kg m/s"));
     steps.push_back(step("H_O", sym::angular_momentum(system_), "kg m^2/s"));
@@ -341,6 +346,10 @@ class DerivationWriter {
     heading("Forces and moments on each body",
             "Each body's free-body diagram as a list: a joint's force is the force its second body exerts on its "
             "first, so the first body feels $+F$ and the second $-F$.");
+    if (!system_.lengths().empty())
+      new_paragraph(
+          "A spring of length $l$ (above) between points $A$ and $B$ pulls each towards the other with "
+          "$k (l - l_0) + c \\dot{l}$, $\\dot{l} = (B - A) \\cdot (\\dot{B} - \\dot{A}) / l$.");
     const Mechanism& m = system_.mechanism();
     for (std::size_t b = 0; b < system_.bodies().size(); ++b) {
       new_paragraph(text(concat({"On ", body_label(static_cast<int>(b)), ":"})));

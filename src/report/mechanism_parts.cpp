@@ -80,6 +80,15 @@ std::string given_note(const Mechanism& mechanism) {
   return concat({"Given: ", given, "; the rest as in ", source, "."});
 }
 
+GiNaC::ex with_lengths(const sym::System& system, const GiNaC::ex& e) {
+  GiNaC::exmap roots, squares;
+  for (const auto& [symbol, length] : system.lengths()) {
+    roots[length] = symbol;
+    squares[length.op(0)] = GiNaC::pow(symbol, 2);  // the square under the root, as a damper's power has it
+  }
+  return e.subs(roots).subs(squares);  // the roots first, so they do not become sqrt(l^2)
+}
+
 bool touches_ground(const Mechanism& mechanism) {
   for (const Joint& j : mechanism.joints)
     if (j.bodies[0] == kGround || j.bodies[1] == kGround) return true;

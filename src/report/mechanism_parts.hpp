@@ -38,6 +38,10 @@ struct PinInertia {
 /// the rest as in the shipped two-blocks.toml." or "All values as in pendulum.toml."
 [[nodiscard]] std::string given_note(const Mechanism& mechanism);
 
+/// `e` with each spring's length written out, |r_b - r_a| in maximal coordinates, and its
+/// square replaced by its symbol (l_k1), so energies print with the symbol the loads use.
+[[nodiscard]] GiNaC::ex with_lengths(const sym::System& system, const GiNaC::ex& e);
+
 /// Whether a joint or spring holds the mechanism to the ground, or an applied force or
 /// torque acts: otherwise its horizontal momentum stays constant.
 [[nodiscard]] bool touches_ground(const Mechanism& mechanism);

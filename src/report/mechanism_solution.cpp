@@ -101,7 +101,7 @@ nlohmann::ordered_json derived_json(const MechanismSolution& s) {
     derived[joint.name + ".y"] = value_at(at.y, s.values);
   }
   for (const sym::SymbolInfo& info : system.table().all()) {
-    if (info.role != sym::Role::coordinate && info.role != sym::Role::rate) continue;
+    if (info.role != sym::Role::coordinate && info.role != sym::Role::rate && info.role != sym::Role::length) continue;
     if (info.key.ends_with(".s") || info.key.ends_with(".s_dot")) continue;
     if (s.state.find(info.symbol) != s.state.end()) continue;  // in "state" already
     derived[info.key] = value_at(info.symbol, s.values);

@@ -195,14 +195,16 @@ class MechanismWriter {
           "the rate of gravity.";
     prose(note);
     blank();
+    for (const sym::SymbolInfo& info : system_.table().all())  // the springs' lengths, used from here on
+      if (info.role == sym::Role::length) step(spelling(info.symbol), system_.lengths().at(info.symbol), "m");
     const GiNaC::ex T = sym::kinetic_energy(system_);
-    const GiNaC::ex V = sym::potential_energy(system_);
+    const GiNaC::ex V = with_lengths(system_, sym::potential_energy(system_));
     const sym::Vec2 p = sym::linear_momentum(system_);
     const bool uni = style_ == Style::unicode;
     step("T", T, "J");
     step("V", V, "J");
     line(concat({"  E = T + V = ", number(value(T) + value(V)), " J"}));
-    if (!power.is_zero()) step("P", power, "W");
+    if (!power.is_zero()) step("P", with_lengths(system_, power), "W");
     step(uni ? "p_x" : "p_x", p.x, "kg m/s");
     step(uni ? "p_y" : "p_y", p.y, "kg m/s");
     step("H_O", sym::angular_momentum(system_), "kg m^2/s");
@@ -214,6 +216,12 @@ class MechanismWriter {
     prose(
         "Each body's free-body diagram as a list: a joint's force is the force its second body exerts on its "
         "first, so the first body feels +F and the second -F.");
+    if (!system_.lengths().empty()) {
+      blank();
+      prose(
+          "A spring of length l (above) between points A and B pulls each towards the other with k (l - l0) + "
+          "c l', l' = (B - A) . (B' - A') / l.");
+    }
     const Mechanism& m = system_.mechanism();
     for (std::size_t b = 0; b < system_.bodies().size(); ++b) {
       blank();

@@ -16,6 +16,8 @@ int role_band(Role role) {
       return 5000;
     case Role::coordinate:
       return 6000;
+    case Role::length:
+      return 5500;
     case Role::acceleration:
       return 8000;
     case Role::force:

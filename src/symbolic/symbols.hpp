@@ -17,6 +17,7 @@ enum class Role {
   inertia,       // a body's centroidal moment of inertia
   time,          // t
   coordinate,    // x1, theta1, s
+  length,        // a spring's length, a function of the coordinates
   rate,          // x1', theta1'
   acceleration,  // x1'', theta1'' (unknowns)
   force,         // a joint force component or slider moment (unknowns)

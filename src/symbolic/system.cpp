@@ -497,7 +497,15 @@ void System::add_loads() {
     const Vec2 pa = point_position(a, spring.between[0].point);
     const Vec2 pb = point_position(b, spring.between[1].point);
     const Vec2 d = pb - pa;
-    const ex length = GiNaC::sqrt(d.x * d.x + d.y * d.y);
+    // The length as a symbol of its own, so the loads read k (l - l0) d / l rather than
+    // with the square root written out everywhere; its rate is d . d' / l.
+    const Spelling spelling = spell_indexed("l", 0, spring.name);
+    const ex length = table_
+                          .add({symbol("l_" + spring.name), Role::length, spring.name + ".length", spelling.unicode,
+                                spelling.ascii, spelling.latex, "m", "length of spring " + spring.name})
+                          .symbol;
+    lengths_[length] = GiNaC::sqrt(d.x * d.x + d.y * d.y);
+    derivative_[length] = (d.x * time_derivative(d.x) + d.y * time_derivative(d.y)) / length;
     const ex tension = quantity(spring.stiffness, false) * (length - quantity(spring.rest_length, false)) +
                        quantity(spring.damping, false) * time_derivative(length);
     // Tension pulls b towards a and a towards b.

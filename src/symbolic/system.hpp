@@ -91,6 +91,9 @@ class System {
   [[nodiscard]] const GiNaC::exmap& parameter_values() const { return parameter_values_; }
   /// Maximal coordinates, rates and accelerations -> expressions in generalized ones.
   [[nodiscard]] const GiNaC::exmap& to_generalized() const { return to_generalized_; }
+  /// Each spring's length symbol (l_k1, in its loads) -> |r_b - r_a| in maximal
+  /// coordinates: the equations print the symbol, the numbers substitute this.
+  [[nodiscard]] const GiNaC::exmap& lengths() const { return lengths_; }
 
   /// d/dt by the chain rule over every coordinate and rate symbol, and t.
   [[nodiscard]] GiNaC::ex time_derivative(const GiNaC::ex& e) const;
@@ -120,7 +123,7 @@ class System {
   std::vector<Load> loads_;
   std::vector<GeneralizedCoordinate> coordinates_;
   std::vector<NewtonEulerRows> newton_euler_;
-  GiNaC::exmap constants_, parameter_values_, to_generalized_;
+  GiNaC::exmap constants_, parameter_values_, to_generalized_, lengths_;
   std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less> derivative_;  // q -> q', q' -> q''
   std::map<int, CoordinateSymbols> slider_symbols_;               // by joint index
 };

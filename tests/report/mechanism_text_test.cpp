@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/error.hpp"
 #include "support/mechanisms_in_code.hpp"
 #include "support/test_support.hpp"
 
@@ -55,6 +56,32 @@ TEST(MechanismText, FourBarPrintsEveryPart) {
                            "The loop through B was closed"})
     EXPECT_NE(text.find(part), std::string::npos) << part << "\n" << text;
   EXPECT_EQ(text.find("nan"), std::string::npos);
+}
+
+// A spring's length is a symbol of its own: defined once, in the forces section, and
+// written l_k1 in the loads and every case's equations instead of the square root.
+TEST(MechanismText, SpringLengthIsOneSymbolDefinedOnce) {
+  Mechanism m = built::spring_pendulum(false);
+  m.initial = {{"1.x", 0.2, {}}, {"1.y", -0.35, {}}, {"1.x_dot", 0.1, {}}};
+  const MechanismSolution s = work_out_mechanism(m, {CaseId::maximal, CaseId::generalized, CaseId::reduced});
+  const std::string text = mechanism_text(s, ascii());
+  const auto definition = text.find("  l_k1 = sqrt(x1^2 + y1^2) = ");
+  ASSERT_NE(definition, std::string::npos) << text;
+  EXPECT_EQ(text.find("sqrt", text.find('\n', definition)), std::string::npos) << "the root is written once\n" << text;
+  EXPECT_NE(text.find("(1.1)  m x1'' = x1 (k l0 / l_k1 - c (x1' x1 + y1' y1) / l_k1^2 - k)"), std::string::npos)
+      << text;
+  for (const char* part : {"Case 1: two equations in maximal coordinates, no joints",
+                           "Case 3: two equations in generalized coordinates, no joints",
+                           "V = m g y1 + k (l0 - l_k1)^2 / 2", "P = -c (x1' x1 + y1' y1)^2 / l_k1^2"})
+    EXPECT_NE(text.find(part), std::string::npos) << part << "\n" << text;
+  // Both ends at one place: one line naming the spring, no NaN.
+  m.initial = {{"1.x", 0, {}}, {"1.y", 0, {}}};
+  try {
+    (void)work_out_mechanism(m, {CaseId::maximal});
+    ADD_FAILURE() << "a spring of length 0 was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("spring k1 has length 0 at this state"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
