@@ -7,6 +7,7 @@
 #include "report/mechanism_latex.hpp"
 #include "report/mechanism_text.hpp"
 #include "report/text_layout.hpp"
+#include "report/unicode_tex.hpp"
 
 namespace linkage::lesson {
 namespace {
@@ -120,11 +121,17 @@ class MarkdownWriter final : public Writer {
       out_ += "\n<video src=\"" + f.name + "\" controls muted loop width=\"640\"></video>\n\n";
       out_ += "[▶ " + f.name + "](" + f.name + ")";
     } else {
-      out_ += "\n![" + alt + "](" + f.name + ")";
+      // The caption in the image's own paragraph: once in every reader (pandoc makes a
+      // lone image a figure captioned with its alt text, which would repeat it).
+      out_ += "\n![" + alt + "](" + f.name + ")\n";
+      if (!f.caption.empty()) out_ += "*" + f.caption + "*\n";
+      return;
     }
     out_ += "\n";
     if (!f.caption.empty()) out_ += "\n*" + f.caption + "*\n";
   }
+  // Unicode math in prose (θ₂, m/s², −) as TeX inline math, so pandoc's PDF builds.
+  [[nodiscard]] std::string take() override { return tex_math_in_prose(Writer::take()); }
   void exercise(const std::string& question, const std::string& answer, const std::string& explanation) override {
     out_ += "\n**Exercise.** " + question + "\n\n<details><summary>Answer</summary>\n\n" + answer +
             (explanation.empty() ? "" : "\n\n" + explanation) + "\n\n</details>\n";

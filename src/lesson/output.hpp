@@ -50,7 +50,7 @@ class Writer {
   virtual void exercise(const std::string& question, const std::string& answer, const std::string& explanation) = 0;
 
   /// The text written since the last take().
-  [[nodiscard]] std::string take() { return std::exchange(out_, {}); }
+  [[nodiscard]] virtual std::string take() { return std::exchange(out_, {}); }
 
  protected:
   std::string out_;

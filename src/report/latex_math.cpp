@@ -1,5 +1,6 @@
 #include "report/latex_math.hpp"
 
+#include <algorithm>
 #include <cctype>
 
 #include "report/notation.hpp"
@@ -56,13 +57,19 @@ std::size_t visible_length(std::string_view tex) {
       if (name.empty()) ++end;  // \, \; \\ and the like
       if (name == "sin" || name == "cos")
         n += 3;
+      else if (name == "times" || name == "cdot")
+        n += 2;  // a binary operator with the medium spaces around it
       else if (!name.empty() && name != "left" && name != "right" && name != "frac" && name != "dot" &&
                name != "mathrm")
         n += 1;
       i = end - 1;
       continue;
     }
-    if (c != '{' && c != '}' && c != '^' && c != '_' && c != ' ' && c != kBreakMark) ++n;
+    const bool binary = (c == '+' || c == '-' || c == '=') && i > 0 && tex[i - 1] == ' ';
+    if (binary)
+      n += 2;  // the operator and the medium spaces around it
+    else if (c != '{' && c != '}' && c != '^' && c != '_' && c != ' ' && c != kBreakMark)
+      ++n;
   }
   return n;
 }
@@ -139,7 +146,14 @@ std::string step_rows(const std::vector<MathStep>& steps, std::string_view inden
                  : concat({" \\\\\n", pad, "  &= ", step.result});
     } else {
       out += aligned_rows(pad, step.quantity + " &= ", step.formula, kRowLimit) + " \\\\\n";
-      if (visible_length(step.substituted) + visible_length(step.result) + 3 <= kRowLimit) {
+      // Numbers that cannot wrap (inside a fraction) and would run off the page are left
+      // out: the formula and the value say what the step does.
+      const std::vector<std::string> numbers = wrap_math(step.substituted, kRowLimit, kRowLimit);
+      const bool fits = std::all_of(numbers.begin(), numbers.end(),
+                                    [](const std::string& row) { return visible_length(row) <= kRowLimit; });
+      if (!fits) {
+        out += pad + "  &= " + step.result;
+      } else if (visible_length(step.substituted) + visible_length(step.result) + 3 <= kRowLimit) {
         out += pad + "  &= " + strip_marks(step.substituted) + " = " + step.result;
       } else {
         out += aligned_rows(pad, "  &= ", step.substituted, kRowLimit) + " \\\\\n";

@@ -17,7 +17,8 @@ namespace linkage {
 /// A bold run-in heading after a "% ---- title ----" comment line, then `text` (LaTeX).
 [[nodiscard]] std::string latex_heading(std::string_view title, std::string_view text);
 
-/// Roughly how many characters wide LaTeX math prints (\sin 3, \theta 1, \frac 0).
+/// Roughly how many characters wide LaTeX math prints (\sin 3, \theta 1, \frac 0, a
+/// binary operator with its spacing 2).
 [[nodiscard]] std::size_t visible_length(std::string_view tex);
 
 /// `tex` with kBreakMark before each + and - of its top-level sum (outside braces and

@@ -1,0 +1,57 @@
+// A lesson's handout builds as the README says: `pandoc lesson.md -o lesson.pdf` in the
+// lesson's folder (pdflatex, the default engine; rsvg-convert for its SVG still). The
+// numerical-example lesson has them all: Unicode symbols in prose and captions, matrices,
+// a table, a clip and a vector still. Every caption shows once. The test command installs
+// pandoc and TeX; without them the test is skipped, except in CI, where that is a failure.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+
+#include "support/test_support.hpp"
+
+namespace linkage {
+namespace {
+
+bool on_path(const std::string& program) {
+  const char* path = std::getenv("PATH");
+  if (path == nullptr) return false;
+  std::istringstream dirs(path);
+  for (std::string dir; std::getline(dirs, dir, ':');)
+    if (!dir.empty() && std::filesystem::exists(std::filesystem::path(dir) / program)) return true;
+  return false;
+}
+
+int count(const std::string& text, const std::string& what) {
+  int n = 0;
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+TEST(LessonHandout, PandocBuildsThePdfAndEachCaptionShowsOnce) {
+  for (const char* tool : {"pandoc", "pdflatex", "rsvg-convert"}) {
+    if (on_path(tool)) continue;
+    if (std::getenv("CI") != nullptr) FAIL() << tool << " is missing: ./scripts/install-deps --tests installs it";
+    GTEST_SKIP() << tool << " is not installed";
+  }
+  test::TempDir dir;
+  const std::filesystem::path lesson =
+      std::filesystem::path(LINKAGE_SOURCE_DIR) / "lessons" / "06-numerical-example.toml";
+  const test::RunResult r =
+      test::run_linkage({"lesson", lesson.string(), "--out", dir.path().string(), "--quality", "draft"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string cd = "cd '" + dir.path().string() + "' && ";
+  ASSERT_EQ(std::system((cd + "pandoc lesson.md -o lesson.pdf > pandoc.log 2>&1").c_str()), 0)
+      << test::read_text(dir / "pandoc.log");
+  EXPECT_EQ(test::read_text(dir / "lesson.pdf").rfind("%PDF", 0), 0u);
+
+  // What a reader sees: each caption once (pandoc would caption a lone image with its alt text too).
+  ASSERT_EQ(std::system((cd + "pandoc lesson.md -t plain -o lesson.txt").c_str()), 0);
+  const std::string seen = test::read_text(dir / "lesson.txt");
+  for (const char* caption : {"The instant section 6 solves for, as a vector figure for handouts."})
+    EXPECT_EQ(count(seen, caption), 1) << caption << "\n" << seen;
+}
+
+}  // namespace
+}  // namespace linkage

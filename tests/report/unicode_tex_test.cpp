@@ -1,0 +1,34 @@
+// Unicode math in prose becomes TeX inline math; math, code and other text stay as they are.
+#include "report/unicode_tex.hpp"
+
+#include <gtest/gtest.h>
+
+namespace linkage {
+namespace {
+
+TEST(UnicodeTex, SymbolsBecomeInlineMath) {
+  EXPECT_EQ(tex_math_in_prose("block 1 at θ₁ = 0.1 rad"), "block 1 at $\\theta_{1}$ = 0.1 rad");
+  EXPECT_EQ(tex_math_in_prose("ẍ₁ and ÿ₂ and θ̈₂"), "$\\ddot{x}_{1}$ and $\\ddot{y}_{2}$ and $\\ddot{\\theta}_{2}$");
+  // Latin-1 ¹ ² ³ and · print in pdflatex text as they are (units stay upright).
+  EXPECT_EQ(tex_math_in_prose("I = 0.1 kg m², g in m/s², 01 · Title, θ²"),
+            "I = 0.1 kg m², g in m/s², 01 · Title, $\\theta^{2}$");
+  EXPECT_EQ(tex_math_in_prose("x₁'' − 2 × 3 → ‖A‖"), "$x_{1}$'' $-$ 2 $\\times$ 3 $\\to$ $\\|$A$\\|$");
+  EXPECT_EQ(tex_math_in_prose("10⁻⁹ and ⁴alone"), "10${}^{-9}$ and ${}^{4}$alone");
+  EXPECT_EQ(tex_math_in_prose("[▶ clip.mp4](clip.mp4)"), "[$\\blacktriangleright$ clip.mp4](clip.mp4)");
+  // pandoc does not close math at a "$" followed by a digit: the digits join the span.
+  EXPECT_EQ(tex_math_in_prose("an 8×8 matrix, θ1 and θ₂2"), "an 8$\\times 8$ matrix, $\\theta 1$ and $\\theta_{2}2$");
+}
+
+TEST(UnicodeTex, MathCodeAndTypographyStay) {
+  const std::string kept =
+      "Say $\\theta_1 = θ$ and $$x² + y$$ and `θ₁ code` and ’quotes’ — dashes… café\n"
+      "```\nθ₂ in a fence\n```\nafter θ";
+  EXPECT_EQ(tex_math_in_prose(kept),
+            "Say $\\theta_1 = θ$ and $$x² + y$$ and `θ₁ code` and ’quotes’ — dashes… café\n"
+            "```\nθ₂ in a fence\n```\nafter $\\theta$");
+  EXPECT_EQ(tex_math_in_prose(""), "");
+  EXPECT_EQ(tex_math_in_prose("a $ lone dollar θ"), "a $ lone dollar $\\theta$");
+}
+
+}  // namespace
+}  // namespace linkage
