@@ -38,7 +38,9 @@ SweepLimits sweep_limits(bool quick) {
     s.min_time = 0.0;
     s.max_run = 0.5;
   } else {
-    for (int k = 0; k <= 20; ++k) s.tolerances.push_back(std::pow(10.0, -3.0 - 0.5 * k));
+    // Down to 1e-16: each method goes as tight as it can (its sweep stops at its round-off
+    // floor or the time cap), so a ratio is against a peer's best, not an arbitrary end.
+    for (int k = 0; k <= 26; ++k) s.tolerances.push_back(std::pow(10.0, -3.0 - 0.5 * k));
     s.max_step_counts = 18;
     s.min_time = 0.02;
     s.max_run = 1.0;
@@ -80,16 +82,24 @@ AccuracyPoint measure(const Method& m, const Scenario& s, const Reference& ref, 
 /// settings cannot tell more (a run over the time cap, a round-off floor).
 void sweep(const Method& m, const Scenario& s, const Reference& ref, const SweepLimits& limits,
            std::vector<AccuracyPoint>& out, Progress& progress, long& done) {
+  double best = std::numeric_limits<double>::infinity();
   if (m.adaptive) {
+    int stalled = 0;
     for (const double tol : limits.tolerances) {
       throw_if_interrupted();
       out.push_back(measure(m, s, ref, tol, limits.min_time));
       progress.update(++done);
-      if (out.back().timing.median_seconds > limits.max_run) break;
+      const AccuracyPoint& p = out.back();
+      if (!p.outcome.failure.empty() || p.timing.median_seconds > limits.max_run) break;
+      if (p.error < 0.9 * best) {
+        best = p.error;
+        stalled = 0;
+      } else if (++stalled >= 3) {
+        break;  // three tighter settings no better: the round-off floor
+      }
     }
     return;
   }
-  double best = std::numeric_limits<double>::infinity();
   int stalled = 0;
   double n = first_step_count(s.duration);
   for (int k = 0; k < limits.max_step_counts; ++k, n *= 2) {

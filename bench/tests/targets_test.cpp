@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 #include "bench/timing.hpp"
 
@@ -113,6 +114,27 @@ TEST(Targets, WithAPeerMissingTheFigureSaysItIsTheBestOfThoseBuilt) {
   EXPECT_EQ(shared_1e8.note, "not measured: peer not built: SUNDIALS");
   // All peers built: the same figure, and no word of a missing peer.
   EXPECT_EQ(peer_rows(r, {})[0].note.find("not built"), std::string::npos);
+}
+
+// A peer that never gets to the error says how close it came and why it stopped.
+TEST(Targets, APeerThatFallsShortSaysHowCloseItCameAndWhy) {
+  ScenarioResult r;
+  r.points = {point(1e-3, 1e-11)};
+  for (const auto& [knob, error] : {std::pair{1e-12, 6e-10}, std::pair{1e-13, 5e-10}, std::pair{1e-14, 5.5e-10}}) {
+    AccuracyPoint p = point(5e-3, error);
+    p.method = "odeint-rkf78";
+    p.library = "Boost.Odeint";
+    p.label = "Odeint RKF78";
+    p.rhs = RhsKind::user;
+    p.knob = knob;
+    r.points.push_back(p);
+  }
+  const std::vector<TargetRow> rows = peer_rows(r, {});
+  const TargetRow& user_1e10 = rows[2];
+  EXPECT_EQ(user_1e10.measured, "n/a");
+  EXPECT_NE(user_1e10.note.find("no peer reached the error: Odeint RKF78"), std::string::npos) << user_1e10.note;
+  EXPECT_NE(user_1e10.note.find("best 5e-10 at 1e-13, tighter settings no better (round-off)"), std::string::npos)
+      << user_1e10.note;
 }
 
 }  // namespace
