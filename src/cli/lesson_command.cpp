@@ -12,6 +12,7 @@
 
 #include "cli/commands.hpp"
 #include "core/error.hpp"
+#include "core/program_path.hpp"
 #include "lesson/lesson.hpp"
 #include "lesson/runner.hpp"
 #include "lesson/step_range.hpp"
@@ -30,6 +31,7 @@ struct LessonOptions {
   std::string only;
   bool force = false;
   bool check = false;
+  bool pdf = false;
 };
 
 /// $COLUMNS when set, else the terminal's width, else 80; never below 40.
@@ -74,6 +76,11 @@ void run_lesson_command(const LessonOptions& o) {
   }
   options.out_dir = o.out.empty() ? std::filesystem::path(lesson.name) : std::filesystem::path(o.out);
   options.interactive = o.step;
+  options.pdf = o.pdf;
+  if (o.pdf && !on_path("pdflatex"))
+    throw Error::input(
+        "--pdf: pdflatex is not installed; install Debian's texlive-latex-recommended and lmodern, or leave out "
+        "--pdf (lesson.tex is written either way)");
   options.force = o.force;
   options.width = terminal_width();
   options.style = text_style_from_locale();
@@ -88,7 +95,8 @@ void run_lesson_command(const LessonOptions& o) {
             << " made, " << summary.reused << " reused; "
             << (summary.document.empty() ? "lesson.md left as it was (--only ran part of the lesson)"
                                          : "document " + summary.document.string())
-            << "\n";
+            << (summary.handout.empty() ? "" : ", handout " + summary.handout.string())
+            << (summary.pdf.empty() ? "" : " and " + summary.pdf.string()) << "\n";
 }
 
 }  // namespace
@@ -114,6 +122,8 @@ void register_lesson(CLI::App& app) {
       ->type_name("RANGE");
   sub->add_flag("--force", o->force, "Make every artifact again, even if unchanged since the last run");
   sub->add_flag("--check", o->check, "Only validate the lesson and list the files it would write");
+  sub->add_flag("--pdf", o->pdf,
+                "Also compile the handout lesson.tex (always written beside lesson.md) to lesson.pdf with pdflatex");
   add_runner(sub, [o] { run_lesson_command(*o); });
 }
 

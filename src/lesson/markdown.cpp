@@ -346,6 +346,16 @@ int script_digit(char32_t c, bool& superscript) {
   return -1;
 }
 
+// A subscript or superscript digit or sign as its ASCII character, or 0.
+char script_char(char32_t c, bool& superscript) {
+  const int digit = script_digit(c, superscript);
+  if (digit >= 0) return static_cast<char>('0' + digit);
+  superscript = c == U'⁻' || c == U'⁺';
+  if (c == U'⁻' || c == U'₋') return '-';
+  if (c == U'⁺' || c == U'₊') return '+';
+  return 0;
+}
+
 // Converts plain characters (no markup) to text-mode LaTeX.
 std::string latex_chars(std::string_view s) {
   std::string out;
@@ -373,15 +383,23 @@ std::string latex_chars(std::string_view s) {
         break;
       j += n;
     }
-    std::string scripts;
-    while (j < s.size()) {
+    // Scripts, each run in one group (10⁻¹² is 10^{-12}): after a letter, or starting at
+    // c itself; a digit's scripts (10²) start after it, with the digit kept as text.
+    bool c_superscript = false;
+    const bool c_is_script = script_char(c, c_superscript) != 0;
+    if (base.empty() && c_is_script) j = i;
+    std::string sub, sup;
+    while ((!base.empty() || c_is_script) && j < s.size()) {
       std::size_t n = 0;
       bool superscript = false;
-      const int digit = script_digit(decode(s, j, n), superscript);
-      if (digit < 0) break;
-      scripts += std::string(superscript ? "^{" : "_{") + std::to_string(digit) + "}";
+      const char script = script_char(decode(s, j, n), superscript);
+      if (script == 0) break;
+      (superscript ? sup : sub) += script;
       j += n;
     }
+    std::string scripts;
+    if (!sub.empty()) scripts += "_{" + sub + "}";
+    if (!sup.empty()) scripts += "^{" + sup + "}";
     const bool needs_math = !greek(c).empty() || math != base || !scripts.empty();
     if (needs_math) {
       if (base.empty()) base = "{}";  // a script with nothing before it

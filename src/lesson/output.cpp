@@ -140,6 +140,9 @@ class MarkdownWriter final : public Writer {
 
 class LatexWriter final : public Writer {
  public:
+  /// `relative_files`: figures by their names in the output folder (a handout compiled
+  /// there), else by their paths (LaTeX printed to the terminal).
+  explicit LatexWriter(bool relative_files) : relative_files_(relative_files) {}
   void title(const std::string& title, const std::string& description) override {
     out_ += "% Needs \\usepackage{amsmath,graphicx,hyperref}.\n\\section*{" + inline_latex(title) + "}\n\n";
     if (!description.empty()) out_ += markdown_to_latex(description);
@@ -165,7 +168,7 @@ class LatexWriter final : public Writer {
   }
   void figure(const FigureRef& f) override {
     if (!file_exists(f.path)) return;
-    const std::string file = f.path.generic_string();
+    const std::string file = relative_files_ ? f.name : f.path.generic_string();
     // graphicx reads PNG and PDF: clips, data files and SVG figures are linked instead.
     if (f.kind != FigureRef::Kind::image || f.path.extension() == ".svg") {
       out_ += std::string(f.kind == FigureRef::Kind::video ? "\\noindent Clip: " : "\\noindent File: ") + "\\href{" +
@@ -183,6 +186,9 @@ class LatexWriter final : public Writer {
         "\\paragraph{Exercise.} " + markdown_to_latex(question) + "\\textbf{Answer:} " + inline_latex(answer) + "\n\n";
     if (!explanation.empty()) out_ += markdown_to_latex(explanation);
   }
+
+ private:
+  bool relative_files_ = false;
 };
 
 }  // namespace
@@ -191,7 +197,15 @@ std::unique_ptr<Writer> make_text_writer(std::size_t width, Style style) {
   return std::make_unique<TextWriter>(width, style);
 }
 std::unique_ptr<Writer> make_markdown_writer() { return std::make_unique<MarkdownWriter>(); }
-std::unique_ptr<Writer> make_latex_writer() { return std::make_unique<LatexWriter>(); }
+std::unique_ptr<Writer> make_latex_writer(bool relative_files) { return std::make_unique<LatexWriter>(relative_files); }
+
+std::string latex_document(const std::string& body) {
+  return "\\documentclass[11pt]{article}\n"
+         "\\usepackage[T1]{fontenc}\n\\usepackage[utf8]{inputenc}\n\\usepackage{lmodern}\n"
+         "\\usepackage{amsmath,amssymb,graphicx}\n\\usepackage[margin=2.5cm]{geometry}\n"
+         "\\usepackage[hidelinks]{hyperref}\n\\begin{document}\n" +
+         body + "\\end{document}\n";
+}
 
 std::unique_ptr<Writer> make_writer(Format format, std::size_t width, Style style) {
   switch (format) {

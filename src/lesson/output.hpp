@@ -62,7 +62,9 @@ class Writer {
 /// exercise answers folded in <details>.
 [[nodiscard]] std::unique_ptr<Writer> make_markdown_writer();
 /// A LaTeX fragment (needs amsmath, graphicx, hyperref).
-[[nodiscard]] std::unique_ptr<Writer> make_latex_writer();
+[[nodiscard]] std::unique_ptr<Writer> make_latex_writer(bool relative_files = false);
+/// A whole LaTeX document around a LaTeX writer's text: the handout lesson.tex.
+[[nodiscard]] std::string latex_document(const std::string& body);
 [[nodiscard]] std::unique_ptr<Writer> make_writer(Format format, std::size_t width, Style style);
 
 }  // namespace linkage::lesson

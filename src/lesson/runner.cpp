@@ -3,14 +3,19 @@
 // step_runs.cpp and step_render.cpp.
 #include "lesson/runner.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <istream>
 #include <ostream>
+#include <sstream>
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
@@ -227,6 +232,41 @@ void run_step(RunContext& c, const Step& step) {
 
 }  // namespace
 
+namespace {
+
+std::string read_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// lesson.pdf from lesson.tex with pdflatex, made under a temporary job name and renamed,
+// so a failed run leaves no partial PDF (and its log as lesson.log, which the error names).
+std::filesystem::path make_pdf(const std::filesystem::path& dir) {
+  const std::string job = "lesson-pdf-partial";  // not a dot file: TeX refuses to write those
+  std::string quoted = "'";
+  for (const char ch : dir.string()) quoted += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+  quoted += "'";
+  const std::string command = "cd " + quoted + " && pdflatex -interaction=nonstopmode -halt-on-error -jobname=" + job +
+                              " lesson.tex < /dev/null > /dev/null 2>&1";
+  const int result = std::system(command.c_str());
+  std::error_code ignored;
+  for (const char* ext : {".aux", ".out"}) std::filesystem::remove(dir / (job + ext), ignored);
+  if (result != 0 || !std::filesystem::exists(dir / (job + ".pdf"))) {
+    std::filesystem::remove(dir / (job + ".pdf"), ignored);
+    std::filesystem::rename(dir / (job + ".log"), dir / "lesson.log", ignored);
+    throw Error::failure("--pdf: pdflatex could not compile " + (dir / "lesson.tex").string() + "; its log is " +
+                         (dir / "lesson.log").string());
+  }
+  std::filesystem::remove(dir / (job + ".log"), ignored);
+  std::filesystem::remove(dir / "lesson.log", ignored);
+  std::filesystem::rename(dir / (job + ".pdf"), dir / "lesson.pdf");
+  return dir / "lesson.pdf";
+}
+
+}  // namespace
+
 RunSummary run_lesson(const Lesson& lesson, const RunnerOptions& options, std::istream& in, std::ostream& out,
                       std::ostream& status) {
   ensure_directory(options.out_dir, "out");
@@ -237,6 +277,7 @@ RunSummary run_lesson(const Lesson& lesson, const RunnerOptions& options, std::i
                status,
                make_writer(options.format, options.width, options.style),
                make_markdown_writer(),
+               make_latex_writer(true),
                ArtifactCache(options.out_dir, options.force, status),
                {}};
   const std::string description = lesson.description.render(evaluate_quantities(lesson.inputs));
@@ -260,6 +301,15 @@ RunSummary run_lesson(const Lesson& lesson, const RunnerOptions& options, std::i
   if (whole) {
     c.summary.document = options.out_dir / "lesson.md";
     write_file_atomically(c.summary.document, c.document->take(), "out");
+    c.summary.handout = options.out_dir / "lesson.tex";
+    const std::string tex = latex_document(c.handout->take());
+    const bool same = std::filesystem::exists(c.summary.handout) && read_file(c.summary.handout) == tex &&
+                      std::filesystem::exists(options.out_dir / "lesson.pdf");
+    write_file_atomically(c.summary.handout, tex, "out");
+    if (same && options.pdf)
+      c.summary.pdf = options.out_dir / "lesson.pdf";  // made from this very text before
+    else if (options.pdf)
+      c.summary.pdf = make_pdf(options.out_dir);
   }
   return c.summary;
 }

@@ -30,6 +30,7 @@ struct RunnerOptions {
   std::size_t width = 80;        // terminal columns for text
   Style style = Style::unicode;
   std::filesystem::path assets;  // theme folder for render steps (empty: built-in palettes)
+  bool pdf = false;              // --pdf: compile lesson.tex to lesson.pdf with pdflatex
 };
 
 struct RunSummary {
@@ -37,6 +38,8 @@ struct RunSummary {
   int made = 0;                    // steps that wrote their artifacts
   int reused = 0;                  // steps whose artifacts were reused
   std::filesystem::path document;  // lesson.md; empty when --only ran part of the lesson
+  std::filesystem::path handout;   // lesson.tex, likewise
+  std::filesystem::path pdf;       // lesson.pdf, with --pdf
 };
 
 /// Runs the selected steps. Terminal output goes to `out`, status lines (what was made

@@ -20,14 +20,16 @@ struct RunContext {
   std::ostream& status;
   std::unique_ptr<Writer> terminal;
   std::unique_ptr<Writer> document;
+  std::unique_ptr<Writer> handout;  // lesson.tex
   ArtifactCache cache;
   RunSummary summary;
 
-  /// Calls `f` on the terminal writer and on the document writer.
+  /// Calls `f` on the terminal writer and on the document writers (lesson.md, lesson.tex).
   template <class F>
   void both(F&& f) {
     f(*terminal);
     f(*document);
+    f(*handout);
   }
   /// Sends the terminal writer's text to `out`.
   void flush();

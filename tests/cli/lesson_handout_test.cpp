@@ -1,4 +1,5 @@
-// A lesson's handout builds as the README says: `pandoc lesson.md -o lesson.pdf` in the
+// A lesson's handout builds both ways: `linkage lesson --pdf` writes lesson.tex and
+// compiles it to lesson.pdf with pdflatex, and, as the README says, `pandoc lesson.md -o lesson.pdf` in the
 // lesson's folder (pdflatex, the default engine; rsvg-convert for its SVG still). The
 // numerical-example lesson has them all: Unicode symbols in prose and captions, matrices,
 // a table, a clip and a vector still. Every caption shows once. The test command installs
@@ -9,19 +10,11 @@
 #include <filesystem>
 #include <sstream>
 
+#include "core/program_path.hpp"
 #include "support/test_support.hpp"
 
 namespace linkage {
 namespace {
-
-bool on_path(const std::string& program) {
-  const char* path = std::getenv("PATH");
-  if (path == nullptr) return false;
-  std::istringstream dirs(path);
-  for (std::string dir; std::getline(dirs, dir, ':');)
-    if (!dir.empty() && std::filesystem::exists(std::filesystem::path(dir) / program)) return true;
-  return false;
-}
 
 int count(const std::string& text, const std::string& what) {
   int n = 0;
@@ -29,7 +22,7 @@ int count(const std::string& text, const std::string& what) {
   return n;
 }
 
-TEST(LessonHandout, PandocBuildsThePdfAndEachCaptionShowsOnce) {
+TEST(LessonHandout, BuildsThePdfBothWaysAndEachCaptionShowsOnce) {
   for (const char* tool : {"pandoc", "pdflatex", "rsvg-convert"}) {
     if (on_path(tool)) continue;
     if (std::getenv("CI") != nullptr) FAIL() << tool << " is missing: ./scripts/install-deps --tests installs it";
@@ -39,12 +32,21 @@ TEST(LessonHandout, PandocBuildsThePdfAndEachCaptionShowsOnce) {
   const std::filesystem::path lesson =
       std::filesystem::path(LINKAGE_SOURCE_DIR) / "lessons" / "06-numerical-example.toml";
   const test::RunResult r =
-      test::run_linkage({"lesson", lesson.string(), "--out", dir.path().string(), "--quality", "draft"});
+      test::run_linkage({"lesson", lesson.string(), "--out", dir.path().string(), "--quality", "draft", "--pdf"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const std::string cd = "cd '" + dir.path().string() + "' && ";
-  ASSERT_EQ(std::system((cd + "pandoc lesson.md -o lesson.pdf > pandoc.log 2>&1").c_str()), 0)
-      << test::read_text(dir / "pandoc.log");
+  // linkage lesson made the LaTeX handout itself: lesson.tex, compiled to lesson.pdf.
+  EXPECT_NE(r.err.find("handout " + (dir / "lesson.tex").string() + " and " + (dir / "lesson.pdf").string()),
+            std::string::npos)
+      << r.err;
   EXPECT_EQ(test::read_text(dir / "lesson.pdf").rfind("%PDF", 0), 0u);
+  EXPECT_NE(test::read_text(dir / "lesson.tex").find("\\begin{document}"), std::string::npos);
+  for (const char* leftover : {"lesson-pdf-partial.aux", "lesson-pdf-partial.log", "lesson.log"})
+    EXPECT_FALSE(std::filesystem::exists(dir / leftover)) << leftover;
+
+  const std::string cd = "cd '" + dir.path().string() + "' && ";
+  ASSERT_EQ(std::system((cd + "pandoc lesson.md -o pandoc.pdf > pandoc.log 2>&1").c_str()), 0)
+      << test::read_text(dir / "pandoc.log");
+  EXPECT_EQ(test::read_text(dir / "pandoc.pdf").rfind("%PDF", 0), 0u);
 
   // What a reader sees: each caption once (pandoc would caption a lone image with its alt text too).
   ASSERT_EQ(std::system((cd + "pandoc lesson.md -t plain -o lesson.txt").c_str()), 0);

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "core/program_path.hpp"
 #include "report/text_layout.hpp"
 #include "support/test_support.hpp"
 
@@ -73,14 +74,6 @@ TEST(SolveOutput, HelpExplainsEveryOptionWithUnitAndDefault) {
 }
 
 // Finds `program` on PATH.
-bool on_path(const std::string& program) {
-  const char* path = std::getenv("PATH");
-  if (path == nullptr) return false;
-  std::istringstream dirs(path);
-  for (std::string dir; std::getline(dirs, dir, ':');)
-    if (!dir.empty() && std::filesystem::exists(std::filesystem::path(dir) / program)) return true;
-  return false;
-}
 
 TEST(SolveOutput, LatexCompilesInAStandardDocument) {
   if (!on_path("pdflatex")) GTEST_SKIP() << "pdflatex is not installed";

@@ -5,5 +5,5 @@
 if(COMMAND set_tests_properties)
   set_tests_properties(ShippedLessons.RunAtDraftQualityAndCache PROPERTIES LABELS no-sanitize)
   # pandoc and pdflatex make the handout: the same under sanitizers, and slow.
-  set_tests_properties(LessonHandout.PandocBuildsThePdfAndEachCaptionShowsOnce PROPERTIES LABELS no-sanitize)
+  set_tests_properties(LessonHandout.BuildsThePdfBothWaysAndEachCaptionShowsOnce PROPERTIES LABELS no-sanitize)
 endif()
