@@ -10,6 +10,7 @@
 #include "lesson/latex_text.hpp"
 #include "report/latex_math.hpp"
 #include "report/text_layout.hpp"
+#include "report/unicode_tex.hpp"
 
 namespace linkage::lesson {
 namespace {
@@ -313,25 +314,8 @@ char32_t decode(std::string_view s, std::size_t i, std::size_t& length) {
   return c;
 }
 
-struct MathSymbol {
-  char32_t code;
-  std::string_view latex;
-};
-constexpr std::array<MathSymbol, 33> kGreek{{
-    {U'ẋ', "\\dot{x}"}, {U'ẍ', "\\ddot{x}"}, {U'ẏ', "\\dot{y}"}, {U'ÿ', "\\ddot{y}"},    {U'α', "\\alpha"},
-    {U'β', "\\beta"},   {U'γ', "\\gamma"},   {U'δ', "\\delta"},  {U'ε', "\\varepsilon"}, {U'θ', "\\theta"},
-    {U'λ', "\\lambda"}, {U'μ', "\\mu"},      {U'π', "\\pi"},     {U'ρ', "\\rho"},        {U'σ', "\\sigma"},
-    {U'τ', "\\tau"},    {U'φ', "\\varphi"},  {U'ω', "\\omega"},  {U'Δ', "\\Delta"},      {U'Σ', "\\Sigma"},
-    {U'Ω', "\\Omega"},  {U'×', "\\times"},   {U'−', "-"},        {U'≈', "\\approx"},     {U'≤', "\\le"},
-    {U'≥', "\\ge"},     {U'→', "\\to"},      {U'·', "\\cdot"},   {U'‖', "\\|"},          {U'≠', "\\neq"},
-    {U'∞', "\\infty"},  {U'∝', "\\propto"},  {U'±', "\\pm"},
-}};
-
-std::string_view greek(char32_t c) {
-  for (const MathSymbol& g : kGreek)
-    if (g.code == c) return g.latex;
-  return {};
-}
+// Greek letters, dotted x and y, and operators: report/unicode_tex's one table.
+std::string_view greek(char32_t c) { return tex_symbol(c); }
 
 // Subscript (₀..₉) or superscript (⁰ ¹ ² ³ ⁴..⁹) digit, or -1.
 int script_digit(char32_t c, bool& superscript) {

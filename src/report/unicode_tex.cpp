@@ -208,6 +208,12 @@ void convert_prose(std::string_view s, std::string& out) {
 
 }  // namespace
 
+std::string_view tex_symbol(char32_t cp) {
+  if (const char* letter = find(kLetters, cp)) return letter;
+  if (const char* op = find(kOperators, cp)) return op;
+  return {};
+}
+
 std::string tex_math_in_prose(std::string_view md) {
   std::string out;
   out.reserve(md.size() + md.size() / 8);

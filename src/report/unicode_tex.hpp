@@ -15,4 +15,8 @@ namespace linkage {
 /// accented letters pass through unchanged.
 [[nodiscard]] std::string tex_math_in_prose(std::string_view markdown);
 
+/// TeX math for one Unicode character: a Greek letter ("\theta"), a dotted x or y
+/// ("\dot{x}"), or an operator ("\times", "-"); empty for any other character.
+[[nodiscard]] std::string_view tex_symbol(char32_t cp);
+
 }  // namespace linkage
