@@ -117,8 +117,9 @@ void build_scene(const Params& p, const SceneOptions& options, const Motion& mot
     add_arrow(out, options, ArrowKind::velocity, c2, Vec2(s.x2_dot, s.y2_dot) - frame_velocity, tags ? "v2" : "");
   }
   if (shown.has(Element::pin_force) && motion.has_pin_force) {
-    add_arrow(out, options, ArrowKind::pin_force, pin1, sample.pin_force, tags ? "F" : "");
-    add_arrow(out, options, ArrowKind::pin_force, pin2, -sample.pin_force, tags ? "\u2212F" : "");
+    // Named by the body each acts on, in the homework's convention: F is the force on block 1.
+    add_arrow(out, options, ArrowKind::pin_force, pin1, sample.pin_force, tags ? "F on 1" : "");
+    add_arrow(out, options, ArrowKind::pin_force, pin2, -sample.pin_force, tags ? "\u2212F on 2" : "");
   }
 
   if (shown.has(Element::labels) && shown.has(Element::blocks)) {
