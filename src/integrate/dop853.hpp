@@ -139,7 +139,7 @@ struct Dop853Method {
     const Scalar err3 = e.cwiseQuotient(sk).squaredNorm();
     Scalar denominator = err5 + Scalar(0.01) * err3;
     if (denominator <= 0) denominator = 1;
-    return std::fabs(h) * err5 / std::sqrt(denominator * static_cast<Scalar>(N));
+    return std::fabs(h) * err5 / std::sqrt(denominator * static_cast<Scalar>(sk.size()));
   }
 
   /// Evaluates stages 14..16 and fills r = F0..F6; returns the 3 evaluations it made.

@@ -52,7 +52,7 @@ class GaussLegendre2 {
     if (status == StepStatus::newton_failed) {
       f(t, y, f0_);
       jacobian(f, t, y);
-      counters_.rhs_evaluations += 1 + N;
+      counters_.rhs_evaluations += 1 + static_cast<std::int64_t>(y.size());
       if (!all_finite(f0_) || !jacobian_.allFinite()) return fail(StepStatus::non_finite);
       factor(h);
       if (continues) {
@@ -77,8 +77,8 @@ class GaussLegendre2 {
 
  private:
   using Matrix = Eigen::Matrix<Scalar, N, N>;
-  using Big = Eigen::Matrix<Scalar, 2 * N, 1>;
-  using BigMatrix = Eigen::Matrix<Scalar, 2 * N, 2 * N>;
+  using Big = Eigen::Matrix<Scalar, twice(N), 1>;
+  using BigMatrix = Eigen::Matrix<Scalar, twice(N), twice(N)>;
 
   static Scalar r3() { return std::sqrt(Scalar(3)); }
   static Scalar c1() { return Scalar(0.5) - r3() / 6; }
@@ -94,11 +94,12 @@ class GaussLegendre2 {
 
   /// Newton matrix I - h A (x) J, factored.
   void factor(Scalar h) {
-    newton_.setIdentity();
-    newton_.template topLeftCorner<N, N>() -= h * a11 * jacobian_;
-    newton_.template topRightCorner<N, N>() -= h * a12() * jacobian_;
-    newton_.template bottomLeftCorner<N, N>() -= h * a21() * jacobian_;
-    newton_.template bottomRightCorner<N, N>() -= h * a22 * jacobian_;
+    const Eigen::Index n = jacobian_.rows();
+    newton_.setIdentity(2 * n, 2 * n);
+    newton_.topLeftCorner(n, n) -= h * a11 * jacobian_;
+    newton_.topRightCorner(n, n) -= h * a12() * jacobian_;
+    newton_.bottomLeftCorner(n, n) -= h * a21() * jacobian_;
+    newton_.bottomRightCorner(n, n) -= h * a22 * jacobian_;
     lu_.compute(newton_);
   }
 
@@ -128,20 +129,22 @@ class GaussLegendre2 {
       f(t + c2() * h, stage_, f2_);
       counters_.rhs_evaluations += 2;
       ++counters_.newton_iterations;
-      residual_.template head<N>() = -z1_ + h * (a11 * f1_ + a12() * f2_);
-      residual_.template tail<N>() = -z2_ + h * (a21() * f1_ + a22 * f2_);
+      const Eigen::Index n = y.size();
+      residual_.resize(2 * n);
+      residual_.head(n) = -z1_ + h * (a11 * f1_ + a12() * f2_);
+      residual_.tail(n) = -z2_ + h * (a21() * f1_ + a22 * f2_);
       delta_ = lu_.solve(residual_);
       if (!delta_.allFinite()) return StepStatus::non_finite;
-      z1_ += delta_.template head<N>();
-      z2_ += delta_.template tail<N>();
+      z1_ += delta_.head(n);
+      z2_ += delta_.tail(n);
 
       // The update in units of the residual's round-off: each stage input Y_j carries
       // eps |Y_j| of rounding, which reaches component i through h |J_ij|.
       magnitude_ = y.cwiseAbs() + z1_.cwiseAbs() + z2_.cwiseAbs();
       noise_ = eps * (magnitude_ + h * (jacobian_.cwiseAbs() * magnitude_));
       Scalar change = 0;
-      for (int i = 0; i < N; ++i) {
-        const Scalar d = std::max(std::fabs(delta_[i]), std::fabs(delta_[N + i]));
+      for (Eigen::Index i = 0; i < n; ++i) {
+        const Scalar d = std::max(std::fabs(delta_[i]), std::fabs(delta_[n + i]));
         if (d > 0) change = std::max(change, d / std::max(noise_[i], std::numeric_limits<Scalar>::min()));
       }
       const bool at_round_off = change <= 10;
@@ -163,7 +166,8 @@ class GaussLegendre2 {
   template <class F>
   void jacobian(F& f, Scalar t, const Vector& y) {
     const Scalar delta0 = std::sqrt(std::numeric_limits<Scalar>::epsilon());
-    for (int j = 0; j < N; ++j) {
+    jacobian_.resize(y.size(), y.size());
+    for (Eigen::Index j = 0; j < y.size(); ++j) {
       stage_ = y;
       const Scalar delta = delta0 * std::max(Scalar(1), std::fabs(y[j]));
       stage_[j] += delta;

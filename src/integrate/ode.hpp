@@ -14,9 +14,13 @@
 
 namespace linkage::ode {
 
-/// A fixed-size state column.
+/// A state column: fixed-size, or Eigen::Dynamic for a mechanism read from a file
+/// (sized once by the first right-hand side; no allocation in later steps).
 template <class Scalar, int N>
 using State = Eigen::Matrix<Scalar, N, 1>;
+
+/// 2 N, or Dynamic for Dynamic: the size of a pair of stages.
+[[nodiscard]] constexpr int twice(int n) { return n == Eigen::Dynamic ? Eigen::Dynamic : 2 * n; }
 
 /// A right-hand side f(t, y, dydt) that writes y' into dydt.
 template <class F, class Scalar, int N>
@@ -57,7 +61,7 @@ struct Counters {
 /// True when every entry is finite.
 template <class Scalar, int N>
 [[nodiscard]] bool all_finite(const State<Scalar, N>& y) {
-  for (int i = 0; i < N; ++i)
+  for (Eigen::Index i = 0; i < y.size(); ++i)
     if (!std::isfinite(y[i])) return false;
   return true;
 }

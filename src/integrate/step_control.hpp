@@ -35,7 +35,7 @@ inline void error_scale(const Tolerances<Scalar>& tol, const State<Scalar, N>& a
 /// sqrt(1/N sum (e_i / sk_i)^2).
 template <class Scalar, int N>
 [[nodiscard]] inline Scalar rms_norm(const State<Scalar, N>& e, const State<Scalar, N>& sk) {
-  return std::sqrt(e.cwiseQuotient(sk).squaredNorm() / static_cast<Scalar>(N));
+  return std::sqrt(e.cwiseQuotient(sk).squaredNorm() / static_cast<Scalar>(e.size()));
 }
 
 /// Hairer's step size controller with an optional PI term.

@@ -15,8 +15,7 @@ namespace linkage::ode {
 
 template <class Scalar, int N>
 class SymplecticEuler {
-  static_assert(N % 2 == 0, "the state must be (positions, velocities) of equal length");
-  static constexpr int n = N / 2;
+  static_assert(N == Eigen::Dynamic || N % 2 == 0, "the state must be (positions, velocities) of equal length");
 
  public:
   using Vector = State<Scalar, N>;
@@ -27,8 +26,16 @@ class SymplecticEuler {
     f(t, y, dydt_);
     ++counters_.rhs_evaluations;
     next_ = y;
-    next_.template tail<n>() += h * dydt_.template tail<n>();
-    next_.template head<n>() += h * next_.template tail<n>();
+    if constexpr (N == Eigen::Dynamic) {
+      // (q, v, extra): an odd last entry (a mechanism run's accumulated work) steps
+      // with the velocities.
+      const Eigen::Index n = y.size() / 2, rest = y.size() - n;
+      next_.tail(rest) += h * dydt_.tail(rest);
+      next_.head(n) += h * next_.segment(n, n);
+    } else {
+      next_.template tail<N / 2>() += h * dydt_.template tail<N / 2>();
+      next_.template head<N / 2>() += h * next_.template tail<N / 2>();
+    }
     if (!all_finite(next_)) return StepStatus::non_finite;
     y = next_;
     ++counters_.steps_accepted;

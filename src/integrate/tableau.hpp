@@ -35,7 +35,9 @@ struct Tableau {
 template <auto W, class Scalar, int N, std::size_t K, class Base>
 inline void combine(const Base& base, Scalar h, const std::array<State<Scalar, N>, K>& k, State<Scalar, N>& out) {
   static_assert(W.size() <= K, "more weights than stages");
-  for (int i = 0; i < N; ++i) {
+  if constexpr (N == Eigen::Dynamic) out.resize(k[0].size());
+  const auto n = static_cast<int>(k[0].size());
+  for (int i = 0; i < n; ++i) {
     Scalar acc = 0;
     [&]<std::size_t... J>(std::index_sequence<J...>) {
       ((W[J] != 0 ? void(acc += static_cast<Scalar>(W[J]) * k[J][i]) : void()), ...);

@@ -127,10 +127,7 @@ MechanismSolution work_out_mechanism(const Mechanism& mechanism, const std::vect
   MechanismSolution out;
   out.system = std::make_shared<const sym::System>(mechanism);
   const sym::System& system = *out.system;
-  sym::validate_quantities(system);
-  sym::validate_constraints(system, system.initial_state());  // structural redundancy, before closing
-  const sym::ClosedState closed = sym::close_loops(system, system.initial_state());
-  sym::validate_constraints(system, closed.state);
+  const sym::ClosedState closed = sym::checked_initial_state(system);
   out.state = closed.state;
   out.closure_note = closed.note;
   try {  // a number that overflows, or a singular matrix: name the values that likely caused it

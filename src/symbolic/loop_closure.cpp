@@ -6,6 +6,7 @@
 
 #include "core/error.hpp"
 #include "core/number_format.hpp"
+#include "symbolic/validate.hpp"
 
 namespace linkage::sym {
 
@@ -117,6 +118,14 @@ ClosedState close_loops(const System& system, const GiNaC::exmap& state) {
              moved + " (largest change " + format_significant(out.largest_change, 3) +
              "); the dependent rates follow from the constraints.";
   return out;
+}
+
+ClosedState checked_initial_state(const System& system) {
+  validate_quantities(system);
+  validate_constraints(system, system.initial_state());  // structural redundancy, before closing
+  ClosedState closed = close_loops(system, system.initial_state());
+  validate_constraints(system, closed.state);
+  return closed;
 }
 
 }  // namespace linkage::sym

@@ -22,4 +22,9 @@ struct ClosedState {
 /// Newton's method does not converge or the independent coordinates do not fit.
 [[nodiscard]] ClosedState close_loops(const System& system, const GiNaC::exmap& state);
 
+/// The file's initial state checked and closed, as every command starts from it: the
+/// quantities evaluate (validate_quantities), no constraint is redundant before or after
+/// closing (validate_constraints), the loops are closed (close_loops).
+[[nodiscard]] ClosedState checked_initial_state(const System& system);
+
 }  // namespace linkage::sym

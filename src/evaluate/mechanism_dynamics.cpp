@@ -1,0 +1,311 @@
+#include "evaluate/mechanism_dynamics.hpp"
+
+#include <Eigen/Cholesky>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "symbolic/energy.hpp"
+#include "symbolic/joints.hpp"
+
+namespace linkage::eval {
+
+namespace {
+
+using GiNaC::ex;
+
+Eigen::Index idx(std::size_t i) { return static_cast<Eigen::Index>(i); }
+
+// A Newton projection that has not met the constraints in this many iterations will not.
+constexpr int kProjectionIterations = 12;
+
+}  // namespace
+
+MechanismDynamics::MechanismDynamics(const sym::System& system, CaseId id) : id_(id) {
+  const CaseSystem c = derive_case(system, id);
+  const Mechanism& mechanism = system.mechanism();
+  bodies_ = system.bodies().size();
+  joints_ = system.joints().size();
+
+  // The state's coordinates: every body's own for Case 1, the tree's otherwise.
+  std::vector<GiNaC::symbol> q, q_dot;
+  if (c.maximal) {
+    for (const sym::BodySystem& b : system.bodies()) {
+      q.push_back(b.x.q);
+      q_dot.push_back(b.x.q_dot);
+      coordinate_names_.push_back(b.name + ".x");
+      q.push_back(b.y.q);
+      q_dot.push_back(b.y.q_dot);
+      coordinate_names_.push_back(b.name + ".y");
+      if (!b.rotates) continue;
+      q.push_back(b.theta.q);
+      q_dot.push_back(b.theta.q_dot);
+      coordinate_names_.push_back(b.name + ".theta");
+    }
+  } else {
+    for (const sym::GeneralizedCoordinate& g : system.coordinates()) {
+      q.push_back(g.symbols.q);
+      q_dot.push_back(g.symbols.q_dot);
+      coordinate_names_.push_back(g.coordinate.key);
+    }
+  }
+  n_ = q.size();
+  // The state at the file's generalized values: Case 1 places the bodies by them.
+  constants_ = system.parameter_values();
+  for (const auto& [symbol, value] : system.constants()) constants_[symbol] = value;
+  auto in_generalized = [&](const GiNaC::symbol& s) {
+    const auto it = system.to_generalized().find(s);
+    return c.maximal && it != system.to_generalized().end() ? it->second : ex(s);
+  };
+  for (const GiNaC::symbol& s : q) initial_expressions_.push_back(in_generalized(s));
+  for (const GiNaC::symbol& s : q_dot) initial_expressions_.push_back(in_generalized(s));
+  state_symbols_ = q;
+  state_symbols_.insert(state_symbols_.end(), q_dot.begin(), q_dot.end());
+
+  std::vector<GiNaC::symbol> inputs;
+  for (const sym::SymbolInfo& info : system.table().all())
+    if (info.role == sym::Role::parameter) {
+      inputs.push_back(info.symbol);
+      parameter_values_.push_back(sym::to_double(system.parameter_values().at(info.symbol)));
+    }
+  parameters_ = inputs.size();
+  inputs.insert(inputs.end(), state_symbols_.begin(), state_symbols_.end());
+  inputs.push_back(system.time());
+
+  // Maximal positions and rates in the state's coordinates (none to replace for Case 1).
+  GiNaC::exmap to_state;
+  if (!c.maximal)
+    for (const auto& [symbol, expression] : system.to_generalized()) {
+      const sym::SymbolInfo* info = system.table().find(GiNaC::ex_to<GiNaC::symbol>(symbol));
+      if (info != nullptr && info->role != sym::Role::acceleration) to_state[symbol] = expression;
+    }
+  // Expanded, as CaseEvaluator does: one form whatever GiNaC's term order.
+  auto prepare = [&](const ex& e) {
+    return GiNaC::expand(e.subs(system.lengths()).subs(to_state).subs(system.constants()).subs(system.constants()));
+  };
+
+  rows_ = c.A.size();
+  cols_ = c.unknowns.size();
+  if (rows_ != cols_ || cols_ < n_)
+    throw std::logic_error("a case's system is not square with the accelerations first");
+  std::vector<ex> rhs;
+  for (const auto& row : c.A)
+    for (const ex& e : row) rhs.push_back(prepare(e));
+  for (const ex& e : c.B) rhs.push_back(prepare(e));
+  rhs.push_back(prepare(sym::nonconservative_power(system)));
+  rhs_ = compile(rhs, inputs);
+
+  // The kept constraints: the last rows of the case, in joint order.
+  std::vector<ex> kept;
+  auto keep = [&](int j) {
+    for (const ex& phi : system.joints()[static_cast<std::size_t>(j)].constraints) {
+      kept.push_back(prepare(phi));
+      constraint_joint_.push_back(j);
+    }
+  };
+  if (c.maximal)
+    for (std::size_t j = 0; j < joints_; ++j) keep(static_cast<int>(j));
+  else
+    for (int j : system.tree().loop_joints) keep(j);
+  constraint_rows_ = static_cast<int>(kept.size());
+  std::vector<ex> constraint_outputs = kept;
+  for (const ex& phi : kept)
+    for (const GiNaC::symbol& s : q) constraint_outputs.push_back(GiNaC::expand(phi.diff(s)));
+  const ex kinetic = prepare(sym::kinetic_energy(system));
+  for (const GiNaC::symbol& a : q_dot)
+    for (const GiNaC::symbol& b : q_dot) constraint_outputs.push_back(GiNaC::expand(kinetic.diff(a).diff(b)));
+  constraints_ = compile(constraint_outputs, inputs);
+
+  // The sample: with the unknowns as inputs, and the eliminated forces recovered from them.
+  GiNaC::exmap recovered;
+  for (const Recovered& r : c.recovered) recovered[r.symbol] = r.value;
+  auto prepare_output = [&](const ex& e) { return prepare(e.subs(recovered)); };
+  std::vector<GiNaC::symbol> output_inputs = inputs;
+  output_inputs.insert(output_inputs.end(), c.unknowns.begin(), c.unknowns.end());
+  std::vector<ex> out;
+  for (const sym::BodySystem& b : system.bodies()) {
+    out.push_back(prepare(b.x.q));
+    out.push_back(prepare(b.y.q));
+    out.push_back(b.rotates ? prepare(b.theta.q) : ex(0));
+  }
+  for (const sym::BodySystem& b : system.bodies()) {
+    out.push_back(prepare(b.x.q_dot));
+    out.push_back(prepare(b.y.q_dot));
+    out.push_back(b.rotates ? prepare(b.theta.q_dot) : ex(0));
+  }
+  for (const sym::JointSystem& j : system.joints()) {
+    const Joint& joint = mechanism.joints[static_cast<std::size_t>(j.index)];
+    ex s = 0;
+    if (joint.type == JointType::slider) {
+      const int a = mechanism.body_index(joint.bodies[0]), b = mechanism.body_index(joint.bodies[1]);
+      const ex angle = a < 0 || !system.bodies()[static_cast<std::size_t>(a)].rotates
+                           ? ex(0)
+                           : ex(system.bodies()[static_cast<std::size_t>(a)].theta.q);
+      const ex ax = system.quantity(joint.axis->x, false), ay = system.quantity(joint.axis->y, false);
+      const ex length = GiNaC::sqrt(ax * ax + ay * ay);
+      const sym::Vec2 u = sym::rotate(angle, {ax / length, ay / length});
+      const sym::Vec2 d = system.point_position(b, joint.points[1]) - system.point_position(a, joint.points[0]);
+      s = u.x * d.x + u.y * d.y;
+    }
+    out.push_back(prepare(s));
+    out.push_back(prepare_output(j.force.x));
+    out.push_back(prepare_output(j.force.y));
+    out.push_back(prepare_output(j.moment));
+    // Each row on its own: |C| of an expanded C^2 would cancel to sqrt(round-off).
+    for (std::size_t r = 0; r < 2; ++r) out.push_back(r < j.constraints.size() ? prepare(j.constraints[r]) : ex(0));
+  }
+  out.push_back(kinetic);
+  out.push_back(prepare(sym::potential_energy(system)));
+  out.push_back(prepare(sym::nonconservative_power(system)));
+  const sym::Vec2 p = sym::linear_momentum(system);
+  out.push_back(prepare(p.x));
+  out.push_back(prepare(p.y));
+  out.push_back(prepare(sym::angular_momentum_about_centre(system)));
+  outputs_ = compile(out, output_inputs);
+
+  inputs_.assign(inputs.size(), 0.0);
+  for (std::size_t i = 0; i < parameters_; ++i) inputs_[i] = parameter_values_[i];
+  output_inputs_.assign(output_inputs.size(), 0.0);
+  values_.resize(std::max({rhs_.output_count(), constraints_.output_count(), outputs_.output_count()}));
+  scratch_.resize(std::max({rhs_.scratch_size(), constraints_.scratch_size(), outputs_.scratch_size()}));
+  A_.resize(idx(rows_), idx(cols_));
+  B_.resize(idx(rows_));
+  J_.resize(constraint_rows_, idx(n_));
+  M_.resize(idx(n_), idx(n_));
+  constraint_values_.resize(static_cast<std::size_t>(constraint_rows_));
+}
+
+Eigen::VectorXd MechanismDynamics::initial_state(const GiNaC::exmap& values) const {
+  // Case 1 starts from the maximal coordinates the generalized state places the bodies at.
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(state_size()));
+  GiNaC::exmap all = constants_;
+  for (const auto& [symbol, value] : values) all[symbol] = value;
+  for (std::size_t i = 0; i < initial_expressions_.size(); ++i) y[idx(i)] = sym::evaluate(initial_expressions_[i], all);
+  return y;
+}
+
+void MechanismDynamics::set_baumgarte(double alpha, double beta) {
+  two_alpha_ = 2 * alpha;
+  beta_squared_ = beta * beta;
+}
+
+void MechanismDynamics::fill_inputs(double t, const Eigen::VectorXd& y) const {
+  for (std::size_t i = 0; i < 2 * n_; ++i) inputs_[parameters_ + i] = y[idx(i)];
+  inputs_[parameters_ + 2 * n_] = t;
+}
+
+void MechanismDynamics::evaluate_constraints(double t, const Eigen::VectorXd& y) const {
+  fill_inputs(t, y);
+  constraints_.run(inputs_.data(), values_.data(), scratch_.data());
+  const auto m = static_cast<std::size_t>(constraint_rows_);
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < m; ++i) constraint_values_[i] = values_[k++];
+  for (std::size_t i = 0; i < m; ++i)
+    for (std::size_t j = 0; j < n_; ++j) J_(idx(i), idx(j)) = values_[k++];
+  for (std::size_t i = 0; i < n_; ++i)
+    for (std::size_t j = 0; j < n_; ++j) M_(idx(i), idx(j)) = values_[k++];
+}
+
+double MechanismDynamics::unknowns(double t, const Eigen::VectorXd& y, Eigen::VectorXd& u) const {
+  const bool baumgarte = constraint_rows_ > 0 && (two_alpha_ != 0 || beta_squared_ != 0);
+  if (baumgarte) evaluate_constraints(t, y);  // first: values_ ends with the right-hand side's outputs
+  fill_inputs(t, y);
+  rhs_.run(inputs_.data(), values_.data(), scratch_.data());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < rows_; ++i)
+    for (std::size_t j = 0; j < cols_; ++j) A_(idx(i), idx(j)) = values_[k++];
+  for (std::size_t i = 0; i < rows_; ++i) B_[idx(i)] = values_[k++];
+  if (baumgarte) {
+    const auto m = static_cast<Eigen::Index>(constraint_rows_);
+    const Eigen::Map<const Eigen::VectorXd> C(constraint_values_.data(), m);
+    B_.tail(m) -= two_alpha_ * (J_ * y.segment(idx(n_), idx(n_))) + beta_squared_ * C;
+  }
+  lu_.compute(A_);
+  const double rcond = lu_.rcond();
+  if (!(rcond > std::numeric_limits<double>::epsilon())) return 0;  // NaN entries count as singular
+  u = lu_.solve(B_);
+  return rcond;
+}
+
+bool MechanismDynamics::derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) const {
+  dydt.resize(y.size());
+  if (unknowns(t, y, u_) == 0) {
+    dydt.setConstant(std::numeric_limits<double>::quiet_NaN());
+    return false;
+  }
+  // values_ still holds the right-hand side program's outputs: P is its last.
+  const double power = values_[rows_ * cols_ + rows_];
+  dydt.head(idx(n_)) = y.segment(idx(n_), idx(n_));
+  dydt.segment(idx(n_), idx(n_)) = u_.head(idx(n_));
+  dydt[idx(2 * n_)] = power;
+  return true;
+}
+
+double MechanismDynamics::constraint_violation(double t, const Eigen::VectorXd& y) const {
+  if (constraint_rows_ == 0) return 0;
+  evaluate_constraints(t, y);
+  double largest = 0;
+  for (double v : constraint_values_) largest = std::max(largest, std::fabs(v));
+  return largest;
+}
+
+double MechanismDynamics::project(double t, Eigen::VectorXd& y) const {
+  if (constraint_rows_ == 0) return 0;
+  const auto m = static_cast<Eigen::Index>(constraint_rows_);
+  const auto n = idx(n_);
+  Eigen::Map<const Eigen::VectorXd> C(constraint_values_.data(), m);
+  // Round-off of the coordinates: Newton stops when |C| is there or stops falling.
+  const double floor = 4 * std::numeric_limits<double>::epsilon() * (1 + y.head(n).cwiseAbs().maxCoeff());
+  double previous = std::numeric_limits<double>::infinity();
+  for (int iteration = 0; iteration < kProjectionIterations; ++iteration) {
+    evaluate_constraints(t, y);
+    const double violation = C.cwiseAbs().maxCoeff();
+    if (!(violation > floor) || !(violation < 0.5 * previous)) break;
+    previous = violation;
+    const Eigen::LDLT<Eigen::MatrixXd> metric(M_);
+    const Eigen::MatrixXd MinvJt = metric.solve(J_.transpose());
+    const Eigen::VectorXd lambda = (J_ * MinvJt).fullPivLu().solve(C);
+    y.head(n) -= MinvJt * lambda;
+  }
+  evaluate_constraints(t, y);
+  const Eigen::LDLT<Eigen::MatrixXd> metric(M_);
+  const Eigen::MatrixXd MinvJt = metric.solve(J_.transpose());
+  const Eigen::VectorXd rate = J_ * y.segment(n, n);
+  y.segment(n, n) -= MinvJt * (J_ * MinvJt).fullPivLu().solve(rate);
+  return C.cwiseAbs().maxCoeff();
+}
+
+void MechanismDynamics::sample(double t, const Eigen::VectorXd& y, MechanismSample& out) const {
+  Eigen::VectorXd u;
+  const bool solved = unknowns(t, y, u) > 0;
+  fill_inputs(t, y);
+  std::copy(inputs_.begin(), inputs_.end(), output_inputs_.begin());
+  for (std::size_t i = 0; i < cols_; ++i)
+    output_inputs_[inputs_.size() + i] = solved ? u[idx(i)] : std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> values(outputs_.output_count());
+  std::vector<double> scratch(outputs_.scratch_size());
+  outputs_.run(output_inputs_.data(), values.data(), scratch.data());
+  std::size_t k = 0;
+  out.pose.assign(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(3 * bodies_));
+  k += 3 * bodies_;
+  out.rates.assign(values.begin() + static_cast<std::ptrdiff_t>(k),
+                   values.begin() + static_cast<std::ptrdiff_t>(k + 3 * bodies_));
+  k += 3 * bodies_;
+  out.slider.assign(joints_, 0.0);
+  out.force.assign(3 * joints_, 0.0);
+  out.constraint.assign(joints_, 0.0);
+  for (std::size_t j = 0; j < joints_; ++j) {
+    out.slider[j] = values[k++];
+    for (std::size_t c = 0; c < 3; ++c) out.force[3 * j + c] = values[k++];
+    out.constraint[j] = std::hypot(values[k], values[k + 1]);
+    k += 2;
+  }
+  out.kinetic = values[k++];
+  out.potential = values[k++];
+  out.power = values[k++];
+  out.momentum_x = values[k++];
+  out.momentum_y = values[k++];
+  out.angular_momentum = values[k++];
+}
+
+}  // namespace linkage::eval

@@ -1,0 +1,96 @@
+#pragma once
+// One case of any mechanism as a first-order system for the integrators, compiled once
+// from the case's GiNaC rows (the very expressions `solve` prints):
+//   state y = (q, q', W): the case's coordinates (Case 1: x, y, theta of every body;
+//   Cases 2 and 3: the tree's generalized coordinates), their rates, and W, the work done
+//   so far by dampers and applied loads, so that E(t) - E(0) - W(t) = 0 is a check even
+//   when the energy is not conserved;
+//   y' = (q', q'', P) with A(q, q', t) u = B(q, q', t) solved for u, whose first entries are
+//   q'' (the remaining ones joint forces), and P the power of dampers and applied loads.
+// Constraints C(q) = 0 that the case keeps (Case 1: every joint; Cases 2 and 3: the joints
+// that close loops) are met at the acceleration level only; Baumgarte's correction asks
+//   C'' + 2 alpha C' + beta^2 C = 0,   so   B <- B - 2 alpha C' - beta^2 C   on their rows,
+// and a projection moves q and q' back onto C = 0, C' = 0 in the kinetic-energy metric
+// M = d^2 T / dq'^2 (mass-weighted, so free mechanisms keep their momentum).
+#include <Eigen/Core>
+#include <Eigen/LU>
+#include <string>
+#include <vector>
+
+#include "evaluate/program.hpp"
+#include "formulations/case_system.hpp"
+
+namespace linkage::eval {
+
+/// What one sample of a run reports, for the columns of `simulate` and the drawing.
+struct MechanismSample {
+  std::vector<double> pose;        // per body: x, y, theta (0 for a point mass)
+  std::vector<double> rates;       // per body: x', y', theta'
+  std::vector<double> slider;      // per joint: s for a slider, 0 for a pin
+  std::vector<double> force;       // per joint: force x, force y, moment (the force bodies[1] exerts on bodies[0])
+  std::vector<double> constraint;  // per joint: |C| of its position rows, m (and rad)
+  double kinetic = 0, potential = 0;
+  double power = 0;  // of dampers and applied loads, W
+  double momentum_x = 0, momentum_y = 0;
+  double angular_momentum = 0;  // about the centre of mass
+};
+
+class MechanismDynamics {
+ public:
+  MechanismDynamics(const sym::System& system, CaseId id);
+
+  [[nodiscard]] CaseId case_id() const { return id_; }
+  /// Coordinates n; the state has 2 n + 1 values.
+  [[nodiscard]] int coordinates() const { return static_cast<int>(coordinate_names_.size()); }
+  [[nodiscard]] int state_size() const { return 2 * coordinates() + 1; }
+  /// "1.x", "2.theta", "slider.s": the state's coordinates in order.
+  [[nodiscard]] const std::vector<std::string>& coordinate_names() const { return coordinate_names_; }
+  /// Constraint rows kept by the case (met at the acceleration level).
+  [[nodiscard]] int constraint_rows() const { return constraint_rows_; }
+  /// The joint each kept constraint row belongs to (index into Mechanism::joints).
+  [[nodiscard]] const std::vector<int>& constraint_joints() const { return constraint_joint_; }
+
+  /// The state at the mechanism's (closed) initial generalized state `values`, W = 0.
+  [[nodiscard]] Eigen::VectorXd initial_state(const GiNaC::exmap& values) const;
+
+  /// Baumgarte gains in 1/s (both 0: the plain equations).
+  void set_baumgarte(double alpha, double beta);
+
+  /// y' at (t, y). False when A is singular there (rcond below round-off): dydt is then NaN.
+  bool derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) const;
+  /// The case's unknowns u at (t, y) and A's reciprocal condition estimate (0: singular).
+  double unknowns(double t, const Eigen::VectorXd& y, Eigen::VectorXd& u) const;
+
+  /// Moves y onto C(q) = 0 and C'(q, q') = 0 (Newton in the kinetic-energy metric); the
+  /// largest |C| left. Does nothing without kept constraints.
+  double project(double t, Eigen::VectorXd& y) const;
+  /// The largest |C| of the kept constraints at y (0 without).
+  [[nodiscard]] double constraint_violation(double t, const Eigen::VectorXd& y) const;
+
+  /// Everything a sample reports at (t, y), from one evaluation of the unknowns.
+  void sample(double t, const Eigen::VectorXd& y, MechanismSample& out) const;
+
+ private:
+  void fill_inputs(double t, const Eigen::VectorXd& y) const;
+  void evaluate_constraints(double t, const Eigen::VectorXd& y) const;
+
+  CaseId id_;
+  std::size_t parameters_ = 0, n_ = 0, rows_ = 0, cols_ = 0, bodies_ = 0, joints_ = 0;
+  int constraint_rows_ = 0;
+  std::vector<int> constraint_joint_;
+  std::vector<std::string> coordinate_names_;
+  std::vector<double> parameter_values_;
+  std::vector<GiNaC::symbol> state_symbols_;    // q, then q'
+  std::vector<GiNaC::ex> initial_expressions_;  // the state in generalized coordinates and rates
+  GiNaC::exmap constants_;                      // parameters, definitions and inertias
+  Program rhs_;                                 // A (row major), B, P
+  Program constraints_;                         // C, dC/dq (row major), M (row major)
+  Program outputs_;                             // the sample, with the unknowns as inputs too
+  double two_alpha_ = 0, beta_squared_ = 0;
+  mutable std::vector<double> inputs_, values_, scratch_, constraint_values_, output_inputs_;
+  mutable Eigen::MatrixXd A_, J_, M_;
+  mutable Eigen::VectorXd B_, u_;
+  mutable Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+};
+
+}  // namespace linkage::eval

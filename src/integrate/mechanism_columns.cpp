@@ -1,0 +1,131 @@
+#include "integrate/mechanism_columns.hpp"
+
+#include <sstream>
+
+#include "core/error.hpp"
+#include "model/name_match.hpp"
+
+namespace linkage {
+
+namespace {
+
+/// Whether anything holds the mechanism to the ground: then its momenta are not constant.
+bool grounded(const Mechanism& m) {
+  for (const Joint& j : m.joints)
+    if (j.bodies[0] == kGround || j.bodies[1] == kGround) return true;
+  for (const Spring& s : m.springs)
+    if (s.between[0].body == kGround || s.between[1].body == kGround) return true;
+  return false;
+}
+
+}  // namespace
+
+std::vector<MechanismColumn> mechanism_columns(const sym::System& system) {
+  const Mechanism& m = system.mechanism();
+  std::vector<MechanismColumn> out;
+  using Q = MechanismQuantity;
+  out.push_back({"t", "s", "time", Q::time, 0, true});
+  const char* axes[] = {"x", "y", "theta"};
+  for (std::size_t b = 0; b < system.bodies().size(); ++b) {
+    const sym::BodySystem& body = system.bodies()[b];
+    for (std::size_t c = 0; c < (body.rotates ? 3U : 2U); ++c)
+      out.push_back({body.name + "." + axes[c], c == 2 ? "rad" : "m",
+                     c == 2 ? "angle of body " + body.name + " (not wrapped)"
+                            : std::string(axes[c]) + " of body " + body.name + "'s centre of mass",
+                     Q::position, 3 * b + c, true});
+  }
+  for (std::size_t j = 0; j < m.joints.size(); ++j)
+    if (m.joints[j].type == JointType::slider)
+      out.push_back({m.joints[j].name + ".s", "m", "position along slider " + m.joints[j].name, Q::slider, j, true});
+  for (std::size_t b = 0; b < system.bodies().size(); ++b) {
+    const sym::BodySystem& body = system.bodies()[b];
+    for (std::size_t c = 0; c < (body.rotates ? 3U : 2U); ++c)
+      out.push_back({body.name + "." + axes[c] + "_dot", c == 2 ? "rad/s" : "m/s",
+                     "rate of " + body.name + "." + axes[c], Q::rate, 3 * b + c, false});
+  }
+  for (std::size_t j = 0; j < m.joints.size(); ++j) {
+    const Joint& joint = m.joints[j];
+    const std::string on = "force of joint " + joint.name + " on " +
+                           (joint.bodies[0] == kGround ? std::string("the ground") : "body " + joint.bodies[0]);
+    out.push_back({joint.name + ".force_x", "N", on + ", x", Q::force, 3 * j, false});
+    out.push_back({joint.name + ".force_y", "N", on + ", y", Q::force, 3 * j + 1, false});
+    if (joint.type == JointType::slider)
+      out.push_back({joint.name + ".moment", "N m", "moment of joint " + joint.name, Q::force, 3 * j + 2, false});
+    out.push_back({joint.name + ".constraint_error", joint.type == JointType::slider ? "m, rad" : "m",
+                   "|C| of joint " + joint.name + "'s position constraint", Q::constraint, j, false});
+  }
+  out.push_back({"energy", "J", "kinetic plus potential energy", Q::energy, 0, false});
+  out.push_back({"work", "J", "work done by dampers and applied loads since t = 0", Q::work, 0, false});
+  out.push_back({"energy_error", "J", "energy balance E - E(0) - work: 0 up to the integration error", Q::energy_error,
+                 0, false});
+  if (!grounded(m)) {
+    out.push_back({"momentum_x", "kg m/s", "linear momentum, x", Q::momentum_x, 0, false});
+    out.push_back({"momentum_y", "kg m/s", "linear momentum, y", Q::momentum_y, 0, false});
+    out.push_back(
+        {"angular_momentum", "kg m^2/s", "angular momentum about the centre of mass", Q::angular_momentum, 0, false});
+  }
+  return out;
+}
+
+std::vector<MechanismColumn> select_mechanism_columns(const std::vector<MechanismColumn>& all, const std::string& spec,
+                                                      const std::string& origin) {
+  std::vector<MechanismColumn> out;
+  if (spec == "default") {
+    for (const MechanismColumn& c : all)
+      if (c.by_default) out.push_back(c);
+    return out;
+  }
+  if (spec == "all") return all;
+  std::vector<std::string> names;
+  for (const MechanismColumn& c : all) names.push_back(c.name);
+  std::stringstream in(spec);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    bool found = false;
+    for (const MechanismColumn& c : all)
+      if (c.name == item) {
+        out.push_back(c);
+        found = true;
+      }
+    if (!found)
+      throw Error::input(origin + ": '" + item + "' is not a column of this mechanism" + did_you_mean(item, names) +
+                         "; valid: default, all, " + join_names(names));
+  }
+  if (out.empty()) throw Error::input(origin + ": empty list; valid: default, all, " + join_names(names));
+  if (out.front().quantity != MechanismQuantity::time) out.insert(out.begin(), all.front());
+  return out;
+}
+
+double column_value(const MechanismColumn& c, double t, const Eigen::VectorXd& y, const eval::MechanismSample& s,
+                    double energy0) {
+  const double work = y[y.size() - 1];
+  switch (c.quantity) {
+    case MechanismQuantity::time:
+      return t;
+    case MechanismQuantity::position:
+      return s.pose[c.index];
+    case MechanismQuantity::rate:
+      return s.rates[c.index];
+    case MechanismQuantity::slider:
+      return s.slider[c.index];
+    case MechanismQuantity::force:
+      return s.force[c.index];
+    case MechanismQuantity::constraint:
+      return s.constraint[c.index];
+    case MechanismQuantity::energy:
+      return s.kinetic + s.potential;
+    case MechanismQuantity::energy_error:
+      return s.kinetic + s.potential - energy0 - work;
+    case MechanismQuantity::work:
+      return work;
+    case MechanismQuantity::momentum_x:
+      return s.momentum_x;
+    case MechanismQuantity::momentum_y:
+      return s.momentum_y;
+    case MechanismQuantity::angular_momentum:
+      return s.angular_momentum;
+  }
+  return 0;
+}
+
+}  // namespace linkage

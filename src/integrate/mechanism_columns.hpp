@@ -1,0 +1,51 @@
+#pragma once
+// The columns of a mechanism's trajectory table (`linkage simulate --mechanism`), named
+// as the mechanism file's contract says: t; for every body <body>.x, <body>.y,
+// <body>.theta (no theta for a point mass); <joint>.s for sliders (the default); on
+// request the rates, each joint's force and constraint error, the energy and its
+// balance, and the momenta when nothing holds the mechanism to the ground.
+#include <string>
+#include <vector>
+
+#include "evaluate/mechanism_dynamics.hpp"
+#include "symbolic/system.hpp"
+
+namespace linkage {
+
+enum class MechanismQuantity {
+  time,
+  position,    // index: 3 body + component (x, y, theta)
+  rate,        // the same, of the rates
+  slider,      // index: joint
+  force,       // index: 3 joint + component (x, y, moment)
+  constraint,  // index: joint
+  energy,
+  energy_error,  // E - E0 - W: the balance, 0 up to the integration error
+  work,          // W, of dampers and applied loads since t = 0
+  momentum_x,
+  momentum_y,
+  angular_momentum,
+};
+
+struct MechanismColumn {
+  std::string name;  // "1.theta", "P.force_x", "energy_error"
+  std::string unit;
+  std::string meaning;
+  MechanismQuantity quantity = MechanismQuantity::time;
+  std::size_t index = 0;
+  bool by_default = false;
+};
+
+/// Every column this mechanism has, in table order.
+[[nodiscard]] std::vector<MechanismColumn> mechanism_columns(const sym::System& system);
+
+/// "default", "all" or a comma-separated list of names; an unknown name is an
+/// Error::input naming `origin` and the nearest column.
+[[nodiscard]] std::vector<MechanismColumn> select_mechanism_columns(const std::vector<MechanismColumn>& all,
+                                                                    const std::string& spec, const std::string& origin);
+
+/// A column's value at a sample; `y` the state (its last entry W), `energy0` E at t = 0.
+[[nodiscard]] double column_value(const MechanismColumn& column, double t, const Eigen::VectorXd& y,
+                                  const eval::MechanismSample& sample, double energy0);
+
+}  // namespace linkage

@@ -1,0 +1,290 @@
+#include "integrate/mechanism_simulation.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <type_traits>
+
+#include "core/error.hpp"
+#include "core/interrupt.hpp"
+#include "core/number_format.hpp"
+#include "integrate/adaptive_rk.hpp"
+#include "integrate/dop853.hpp"
+#include "integrate/dopri5.hpp"
+#include "integrate/explicit_rk.hpp"
+#include "integrate/gauss_legendre.hpp"
+#include "integrate/symplectic_euler.hpp"
+
+namespace linkage {
+
+namespace {
+
+using Vector = Eigen::VectorXd;
+constexpr int kDynamic = Eigen::Dynamic;
+// Steps between polls for Ctrl-C and progress reports.
+constexpr unsigned kCheckInterval = 4096;
+// A loop whose constraint error passes this, in metres (or radians), has come apart: the
+// numbers no longer describe the mechanism.
+constexpr double kOpenLoop = 1e-3;
+
+/// f(t, y) for the integrators; remembers where the case's matrix was singular.
+struct Rhs {
+  const eval::MechanismDynamics* dynamics;
+  double singular_at = std::numeric_limits<double>::quiet_NaN();
+  void operator()(double t, const Vector& y, Vector& dydt) {
+    if (!dynamics->derivative(t, y, dydt) && std::isnan(singular_at)) singular_at = t;
+  }
+};
+
+std::string case_text(const SimulationOptions& o) {
+  return std::string(info(o.integrator).name) + ", Case " + std::to_string(o.case_id);
+}
+
+[[noreturn]] void fail(const SimulationOptions& o, const std::string& what, const std::string& hint, double t) {
+  throw Error::diverged("the simulation failed at t = " + format_significant(t, 6) + " s (" + case_text(o) +
+                        "): " + what + "; " + hint);
+}
+
+}  // namespace
+
+struct MechanismSimulation::Impl {
+  Impl(const sym::System& system, const GiNaC::exmap& initial, const SimulationOptions& o)
+      : options(o), dynamics(system, static_cast<CaseId>(o.case_id)), rhs{&dynamics, std::nan("")} {
+    if (o.stabilization == Stabilization::baumgarte) dynamics.set_baumgarte(o.baumgarte_alpha, o.baumgarte_beta);
+    project = o.stabilization == Stabilization::projection && dynamics.constraint_rows() > 0;
+    y = dynamics.initial_state(initial);
+    Vector u;
+    const double rcond = dynamics.unknowns(0, y, u);
+    if (rcond == 0)
+      throw Error::input(system.mechanism().source + ": the matrix of Case " + std::to_string(o.case_id) +
+                         " is singular at the initial state (a dead point or change point): the equations do "
+                         "not fix the accelerations there; start from another state");
+    eval::MechanismSample s;
+    dynamics.sample(0, y, s);
+    energy0 = s.kinetic + s.potential;
+    double total_mass = 0, spread = 0;
+    for (const sym::BodySystem& b : system.bodies())
+      total_mass += sym::to_double(b.mass.subs(system.constants()).subs(system.parameter_values()));
+    const std::size_t bodies = s.pose.size() / 3;
+    for (std::size_t i = 0; i < bodies; ++i)
+      for (std::size_t j = 0; j < bodies; ++j)
+        spread = std::max(spread, std::hypot(s.pose[3 * i] - s.pose[3 * j], s.pose[3 * i + 1] - s.pose[3 * j + 1]));
+    double height = 0;
+    for (std::size_t i = 0; i < bodies; ++i) height = std::max(height, std::fabs(s.pose[3 * i + 1]));
+    double g = 0;
+    if (system.mechanism().gravity)
+      g = std::fabs(sym::to_double(system.quantity(*system.mechanism().gravity, false)
+                                       .subs(system.constants())
+                                       .subs(system.constants())
+                                       .subs(system.parameter_values())));
+    stats.energy_scale = s.kinetic + std::fabs(s.potential) + total_mass * g * (spread + height);
+    if (!(stats.energy_scale > 0)) stats.energy_scale = 1;  // nothing moves and nothing pulls: report in J
+    if (project) dynamics.project(0, y);
+    start_stepper();
+  }
+
+  void start_stepper();
+  void advance(double t);
+  void after_step(double t) {
+    if (++steps % kCheckInterval != 0) return;
+    throw_if_interrupted();
+    if (report) report(t);
+  }
+  void check_loop(double t) {
+    if (dynamics.constraint_rows() == 0) return;
+    const double violation = project ? dynamics.project(t, y) : dynamics.constraint_violation(t, y);
+    if (violation > kOpenLoop)
+      fail(options, "the constraints came " + format_significant(violation, 2) + " m apart (the loop opened)",
+           project ? "try a smaller step or tighter rtol/atol" : "try stabilization by projection", t);
+  }
+  [[noreturn]] void fail_step(ode::StepStatus status, double t) {
+    if (!std::isnan(rhs.singular_at))
+      fail(options,
+           "the matrix of Case " + std::to_string(options.case_id) +
+               " turned singular at t = " + format_significant(rhs.singular_at, 6) +
+               " s: the mechanism reached a dead point or change point where its equations do not fix the "
+               "accelerations",
+           "try another initial state, more inertia on the driving body, or a duration under " +
+               format_significant(rhs.singular_at, 3) + " s",
+           t);
+    std::string hint = info(options.integrator).adaptive ? "try a looser rtol/atol or a shorter duration"
+                                                         : "try a smaller step dt or an adaptive integrator (dop853)";
+    fail(options, std::string(ode::describe(status)), hint, t);
+  }
+
+  SimulationOptions options;
+  eval::MechanismDynamics dynamics;
+  Rhs rhs;
+  bool project = false;
+  Vector y, sample_y;
+  double energy0 = 0, last_t = 0;
+  MechanismStats stats;
+  std::function<void(double)> report;
+  unsigned steps = 0;
+  // One of these steps, by the integrator chosen.
+  std::unique_ptr<ode::ExplicitEuler<double, kDynamic>> euler;
+  std::unique_ptr<ode::SymplecticEuler<double, kDynamic>> symplectic;
+  std::unique_ptr<ode::Rk4<double, kDynamic>> rk4;
+  std::unique_ptr<ode::GaussLegendre2<double, kDynamic>> gauss;
+  std::unique_ptr<ode::Dopri5<double, kDynamic>> dopri5;
+  std::unique_ptr<ode::Dop853<double, kDynamic>> dop853;
+  std::int64_t k = 0;  // fixed steps taken
+};
+
+void MechanismSimulation::Impl::start_stepper() {
+  switch (options.integrator) {
+    case IntegratorKind::euler:
+      euler = std::make_unique<ode::ExplicitEuler<double, kDynamic>>();
+      break;
+    case IntegratorKind::symplectic_euler:
+      symplectic = std::make_unique<ode::SymplecticEuler<double, kDynamic>>();
+      break;
+    case IntegratorKind::rk4:
+      rk4 = std::make_unique<ode::Rk4<double, kDynamic>>();
+      break;
+    case IntegratorKind::gauss2:
+      gauss = std::make_unique<ode::GaussLegendre2<double, kDynamic>>();
+      break;
+    case IntegratorKind::dopri5:
+    case IntegratorKind::dop853: {
+      auto settings = [&](auto& stepper) {
+        typename std::remove_reference_t<decltype(*stepper)>::Settings s;
+        s.tolerances = {options.rtol, options.atol};
+        s.first_step = options.dt;
+        return s;
+      };
+      if (options.integrator == IntegratorKind::dopri5) {
+        dopri5 = std::make_unique<ode::Dopri5<double, kDynamic>>(settings(dopri5));
+        dopri5->start(rhs, 0.0, y);
+      } else {
+        dop853 = std::make_unique<ode::Dop853<double, kDynamic>>(settings(dop853));
+        dop853->start(rhs, 0.0, y);
+      }
+      break;
+    }
+  }
+}
+
+void MechanismSimulation::Impl::advance(double t) {
+  if (dopri5 || dop853) {
+    auto run = [&](auto& stepper) {
+      while (stepper.t() < t) {
+        const ode::StepStatus status = stepper.step(rhs);
+        if (status != ode::StepStatus::ok) fail_step(status, stepper.t());
+        y = stepper.y();
+        check_loop(stepper.t());
+        if (project) stepper.replace_state(rhs, y);
+        after_step(stepper.t());
+      }
+      stepper.dense(rhs, t, sample_y);
+      if (project && t != stepper.t()) dynamics.project(t, sample_y);
+    };
+    if (dopri5)
+      run(*dopri5);
+    else
+      run(*dop853);
+    return;
+  }
+  // Fixed steps on the grid t_k = k dt; a sample between grid points is a short step
+  // from the grid point before it, on a copy.
+  const double dt = options.dt;
+  auto take = [&](double from, double h, Vector& state) {
+    ode::StepStatus status = ode::StepStatus::ok;
+    if (euler) status = euler->step(rhs, from, h, state);
+    if (symplectic) status = symplectic->step(rhs, from, h, state);
+    if (rk4) status = rk4->step(rhs, from, h, state);
+    if (gauss) status = gauss->step(rhs, from, h, state);
+    if (status != ode::StepStatus::ok || !std::isnan(rhs.singular_at)) fail_step(status, from);
+  };
+  const double tolerance = 1e-9 * dt + 8 * std::numeric_limits<double>::epsilon() * t;
+  auto n = static_cast<std::int64_t>(std::llround(t / dt));
+  const bool on_grid = std::fabs(t - static_cast<double>(n) * dt) <= tolerance;
+  if (!on_grid) n = static_cast<std::int64_t>(std::floor(t / dt));
+  while (k < n) {
+    take(static_cast<double>(k) * dt, dt, y);
+    ++k;
+    check_loop(static_cast<double>(k) * dt);
+    after_step(static_cast<double>(k) * dt);
+  }
+  sample_y = y;
+  if (!on_grid) {
+    const double t_grid = static_cast<double>(k) * dt;
+    // A fresh stepper of the same method: what one keeps between steps (Gauss-Legendre's
+    // Newton start) never sees the samples.
+    auto partial = [&](const auto& stepper) {
+      if (!stepper) return;
+      std::remove_cvref_t<decltype(*stepper)> fresh;
+      const ode::StepStatus status = fresh.step(rhs, t_grid, t - t_grid, sample_y);
+      if (status != ode::StepStatus::ok || !std::isnan(rhs.singular_at)) fail_step(status, t_grid);
+    };
+    partial(euler);
+    partial(symplectic);
+    partial(rk4);
+    partial(gauss);
+    if (project) dynamics.project(t, sample_y);
+  }
+}
+
+MechanismSimulation::MechanismSimulation(const sym::System& system, const GiNaC::exmap& initial,
+                                         const SimulationOptions& options) {
+  options.validate();
+  impl_ = std::make_unique<Impl>(system, initial, options);
+}
+
+MechanismSimulation::~MechanismSimulation() = default;
+MechanismSimulation::MechanismSimulation(MechanismSimulation&&) noexcept = default;
+MechanismSimulation& MechanismSimulation::operator=(MechanismSimulation&&) noexcept = default;
+
+const Eigen::VectorXd& MechanismSimulation::state_at(double t) {
+  Impl& run = *impl_;
+  if (!(t >= run.last_t && t <= run.options.duration))
+    throw Error::failure("state_at(" + format_roundtrip(t) + "): times must be non-decreasing and within [0, " +
+                         format_roundtrip(run.options.duration) + "] s");
+  const auto start = std::chrono::steady_clock::now();
+  struct Count {
+    Impl& run;
+    std::chrono::steady_clock::time_point start;
+    ~Count() {
+      ode::Counters c;
+      if (run.euler) c = run.euler->counters();
+      if (run.symplectic) c = run.symplectic->counters();
+      if (run.rk4) c = run.rk4->counters();
+      if (run.gauss) c = run.gauss->counters();
+      if (run.dopri5) c = run.dopri5->counters();
+      if (run.dop853) c = run.dop853->counters();
+      run.stats.steps_accepted = c.steps_accepted;
+      run.stats.steps_rejected = c.steps_rejected;
+      run.stats.rhs_evaluations = c.rhs_evaluations;
+      run.stats.wall_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+  } count{run, start};
+  run.advance(t);
+  run.last_t = t;
+  return run.sample_y;
+}
+
+void MechanismSimulation::sample(double t, const Eigen::VectorXd& y, eval::MechanismSample& out) {
+  Impl& run = *impl_;
+  run.dynamics.sample(t, y, out);
+  const double work = y[y.size() - 1];
+  const double balance = std::fabs(out.kinetic + out.potential - run.energy0 - work) / run.stats.energy_scale;
+  run.stats.max_energy_error = std::max(run.stats.max_energy_error, balance);
+  for (double c : out.constraint) run.stats.max_constraint_error = std::max(run.stats.max_constraint_error, c);
+}
+
+void MechanismSimulation::on_progress(std::function<void(double)> report) { impl_->report = std::move(report); }
+const eval::MechanismDynamics& MechanismSimulation::dynamics() const { return impl_->dynamics; }
+const MechanismStats& MechanismSimulation::stats() const { return impl_->stats; }
+double MechanismSimulation::energy0() const { return impl_->energy0; }
+const SimulationOptions& MechanismSimulation::options() const { return impl_->options; }
+
+std::string mechanism_result_warning(const SimulationOptions& o, const MechanismStats& st) {
+  if (!(st.max_energy_error > 1.0)) return "";
+  return "the run's numbers do not describe the motion: the energy balance is off by " +
+         format_significant(st.max_energy_error, 2) + " times the energy scale (" +
+         format_significant(st.energy_scale, 3) + " J); try " +
+         (info(o.integrator).adaptive ? std::string("a tighter rtol/atol")
+                                      : std::string("a smaller step dt or dop853"));
+}
+
+}  // namespace linkage

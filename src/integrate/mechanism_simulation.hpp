@@ -1,0 +1,60 @@
+#pragma once
+// The motion of any mechanism over time: one case's compiled equations
+// (evaluate/mechanism_dynamics.hpp), one integrator, one stabilization, sampled at
+// increasing times. The integrators are the homework's, on a state sized at run time.
+#include <Eigen/Core>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "evaluate/mechanism_dynamics.hpp"
+#include "integrate/simulation.hpp"
+#include "symbolic/system.hpp"
+
+namespace linkage {
+
+struct MechanismStats {
+  std::int64_t steps_accepted = 0;
+  std::int64_t steps_rejected = 0;
+  std::int64_t rhs_evaluations = 0;
+  double energy_scale = 0;          // J: T + |V| at the start plus M g times the bodies' spread
+  double max_energy_error = 0;      // |E - E0 - W| / energy_scale over samples (W: work of dampers and loads)
+  double max_constraint_error = 0;  // m (rad for a slider's angle), over samples and joints
+  double wall_seconds = 0;          // in state_at()
+};
+
+class MechanismSimulation {
+ public:
+  /// `initial`: the generalized coordinates and rates with every loop closed
+  /// (sym::close_loops). Validates the options; throws Error::input when the case's matrix
+  /// is singular at the start, naming the case and its condition estimate.
+  MechanismSimulation(const sym::System& system, const GiNaC::exmap& initial, const SimulationOptions& options);
+  ~MechanismSimulation();
+  MechanismSimulation(MechanismSimulation&&) noexcept;
+  MechanismSimulation& operator=(MechanismSimulation&&) noexcept;
+
+  /// The state y = (q, q', W) at t, for t non-decreasing and within [0, duration]. Throws
+  /// Error::diverged naming the time, the case and what to try when the run cannot go on:
+  /// a state that stops being finite, a matrix that turns singular (a dead point, a
+  /// change point), a loop that opens.
+  [[nodiscard]] const Eigen::VectorXd& state_at(double t);
+  /// Everything a sample reports at (t, y); updates the energy and constraint figures.
+  void sample(double t, const Eigen::VectorXd& y, eval::MechanismSample& out);
+
+  void on_progress(std::function<void(double t)> report);
+  [[nodiscard]] const eval::MechanismDynamics& dynamics() const;
+  [[nodiscard]] const MechanismStats& stats() const;
+  /// Kinetic plus potential energy at t = 0, J.
+  [[nodiscard]] double energy0() const;
+  [[nodiscard]] const SimulationOptions& options() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// One line for the user when a finished run's figures say its numbers are meaningless,
+/// empty when they are not (as result_warning does for the homework).
+[[nodiscard]] std::string mechanism_result_warning(const SimulationOptions& options, const MechanismStats& stats);
+
+}  // namespace linkage

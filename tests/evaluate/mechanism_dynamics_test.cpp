@@ -1,0 +1,119 @@
+// The compiled dynamics of any mechanism: its accelerations agree with the homework's
+// closed form (a second derivation, by hand) at random states to 1e-13, the three cases
+// give the same motion of every body, and a projection lands on the constraints.
+#include "evaluate/mechanism_dynamics.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+
+#include "integrate/linkage_rhs.hpp"
+#include "support/mechanisms_in_code.hpp"
+#include "symbolic/loop_closure.hpp"
+
+namespace linkage {
+namespace {
+
+// Case 3 of the general path against the homework's closed form, which is written out by
+// hand (formulations/case3_fast.hpp): same coordinates (x1, y1, theta1, theta2) and rates.
+TEST(MechanismDynamics, HomeworkMatchesTheClosedFormAtRandomStates) {
+  const sym::System system(built::homework());
+  Params p;
+  p.w = 0.1;  // the mechanism built in code: L 0.3, w 0.1, b 0.04, m 0.1, g 9.81
+  const GeneralizedRhs<Case3> closed(p);
+  std::mt19937 rng(3);
+  for (CaseId id : kAllCases) {
+    if (id == CaseId::maximal) continue;  // Case 1 integrates other coordinates; compared below
+    const eval::MechanismDynamics dynamics(system, id);
+    ASSERT_EQ(dynamics.coordinate_names(), (std::vector<std::string>{"1.x", "1.y", "1.theta", "2.theta"}));
+    for (int trial = 0; trial < 20; ++trial) {
+      const Eigen::VectorXd y = dynamics.initial_state(built::random_state(system, rng));
+      Vec<8> y8;
+      for (int i = 0; i < 8; ++i) y8[i] = y[i];
+      Vec<8> expected;
+      closed(0, y8, expected);
+      Eigen::VectorXd dydt;
+      ASSERT_TRUE(dynamics.derivative(0, y, dydt));
+      for (int i = 0; i < 8; ++i)
+        EXPECT_NEAR(dydt[i], expected[i], 1e-13 * (1 + std::abs(expected[i])))
+            << "Case " << case_number(id) << " entry " << i << " trial " << trial;
+    }
+  }
+}
+
+// Each case's sample reports the same bodies' motion and joint forces at the same state.
+TEST(MechanismDynamics, CasesAgreeOnEveryBodyAndJoint) {
+  const std::vector<built::Named> mechanisms = {{"homework", built::homework},
+                                                {"double_pendulum", built::double_pendulum},
+                                                {"triple_pendulum", built::triple_pendulum},
+                                                {"four_bar", built::four_bar},
+                                                {"slider_crank", built::slider_crank},
+                                                {"arm_collar", built::arm_collar},
+                                                {"loaded", built::double_pendulum_loaded}};
+  std::mt19937 rng(5);
+  for (const built::Named& named : mechanisms) {
+    const sym::System system(named.make());
+    const GiNaC::exmap state = built::random_state(system, rng);
+    std::vector<eval::MechanismSample> samples;
+    for (CaseId id : kAllCases) {
+      const eval::MechanismDynamics dynamics(system, id);
+      const Eigen::VectorXd y = dynamics.initial_state(state);
+      eval::MechanismSample s;
+      dynamics.sample(0.2, y, s);
+      samples.push_back(s);
+    }
+    for (std::size_t k = 1; k < samples.size(); ++k) {
+      for (std::size_t i = 0; i < samples[0].pose.size(); ++i) {
+        EXPECT_NEAR(samples[k].pose[i], samples[0].pose[i], 1e-13) << named.name << " pose " << i;
+        EXPECT_NEAR(samples[k].rates[i], samples[0].rates[i], 1e-12) << named.name << " rate " << i;
+      }
+      for (std::size_t i = 0; i < samples[0].force.size(); ++i)
+        EXPECT_NEAR(samples[k].force[i], samples[0].force[i], 1e-11 * (1 + std::abs(samples[0].force[i])))
+            << named.name << " Case " << k + 1 << " force " << i;
+      EXPECT_NEAR(samples[k].kinetic, samples[0].kinetic, 1e-13) << named.name;
+      EXPECT_NEAR(samples[k].potential, samples[0].potential, 1e-13) << named.name;
+    }
+  }
+}
+
+// Case 1 integrates every body's x, y, theta; its angular accelerations equal those of
+// Case 3, which integrates the angles alone.
+TEST(MechanismDynamics, MaximalAccelerationsAreTheGeneralizedOnes) {
+  const sym::System system(built::double_pendulum());
+  std::mt19937 rng(9);
+  const GiNaC::exmap state = built::random_state(system, rng);
+  const eval::MechanismDynamics maximal(system, CaseId::maximal), reduced(system, CaseId::reduced);
+  const Eigen::VectorXd ym = maximal.initial_state(state), yr = reduced.initial_state(state);
+  Eigen::VectorXd dm, dr;
+  ASSERT_TRUE(maximal.derivative(0, ym, dm));
+  ASSERT_TRUE(reduced.derivative(0, yr, dr));
+  auto acceleration = [](const eval::MechanismDynamics& d, const Eigen::VectorXd& dydt, const std::string& name) {
+    const auto& names = d.coordinate_names();
+    const auto at = std::find(names.begin(), names.end(), name) - names.begin();
+    return dydt[d.coordinates() + at];
+  };
+  for (const std::string name : {"1.theta", "2.theta"})
+    EXPECT_NEAR(acceleration(maximal, dm, name), acceleration(reduced, dr, name), 1e-12) << name;
+}
+
+// A projection moves a perturbed four-bar back onto its loop, to round-off, and its rates
+// onto the loop's velocity constraint.
+TEST(MechanismDynamics, ProjectionClosesTheLoop) {
+  const sym::System system(built::four_bar());
+  const sym::ClosedState closed = sym::checked_initial_state(system);
+  for (CaseId id : kAllCases) {
+    const eval::MechanismDynamics dynamics(system, id);
+    ASSERT_GT(dynamics.constraint_rows(), 0);
+    Eigen::VectorXd y = dynamics.initial_state(closed.state);
+    EXPECT_LT(dynamics.constraint_violation(0, y), 1e-9);
+    y.head(dynamics.coordinates()).array() += 1e-3;
+    y.segment(dynamics.coordinates(), dynamics.coordinates()).array() += 0.1;
+    EXPECT_GT(dynamics.constraint_violation(0, y), 1e-4);
+    EXPECT_LT(dynamics.project(0, y), 1e-14) << "Case " << case_number(id);
+    EXPECT_LT(dynamics.constraint_violation(0, y), 1e-14);
+  }
+}
+
+}  // namespace
+}  // namespace linkage
