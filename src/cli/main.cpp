@@ -1,4 +1,6 @@
 // linkage: worked solutions, simulation and animation of two pinned blocks.
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 #include <cerrno>
 #include <cstdio>
@@ -25,7 +27,10 @@ int finish_standard_output() {
   std::cout.flush();
   const bool ok = static_cast<bool>(std::cout) && std::fflush(stdout) == 0 && std::ferror(stdout) == 0;
   if (ok) return 0;
-  const int error_number = errno;
+  int error_number = errno;
+  // A long text (a command's help) fails while it is written, and errno is gone by now:
+  // one more byte asks the output why.
+  if (error_number == 0 && ::write(STDOUT_FILENO, "\n", 1) < 0) error_number = errno;
   std::fprintf(stderr, "linkage: error: cannot write standard output: %s\n",
                error_number != 0 ? std::strerror(error_number) : "write error");
   return static_cast<int>(linkage::ExitCode::failure);

@@ -15,6 +15,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/input_options.hpp"
+#include "cli/mechanism_options.hpp"
 #include "cli/simulation_flags.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
@@ -22,7 +23,10 @@
 #include "core/number_format.hpp"
 #include "core/progress.hpp"
 #include "integrate/columns.hpp"
+#include "integrate/mechanism_columns.hpp"
+#include "integrate/mechanism_simulation.hpp"
 #include "integrate/simulation.hpp"
+#include "symbolic/loop_closure.hpp"
 
 namespace linkage::cli {
 namespace {
@@ -36,7 +40,9 @@ struct SimulateOptions {
   std::string out;
   std::string format;
   std::string columns = "all";
+  CLI::Option* columns_option = nullptr;
   bool quiet = false;
+  MechanismOptions mechanism;
 };
 
 enum class Format { csv, json };
@@ -80,10 +86,10 @@ class TableWriter {
   TableWriter(Format format, std::FILE* stdout_file, AtomicFile* file)
       : format_(format), stdout_(stdout_file), file_(file) {}
 
-  void begin(const std::vector<Column>& columns, const std::string& json_header) {
+  void begin(const std::vector<std::string>& names, const std::string& json_header) {
     if (format_ == Format::csv) {
       std::string line;
-      for (std::size_t i = 0; i < columns.size(); ++i) line += (i ? "," : "") + std::string(info(columns[i]).name);
+      for (std::size_t i = 0; i < names.size(); ++i) line += (i ? "," : "") + names[i];
       emit(line + "\n");
     } else {
       json_ = json_header + "  \"rows\": [";
@@ -132,21 +138,25 @@ std::string json_line(const std::string& key, const nlohmann::ordered_json& valu
   return "  " + nlohmann::json(key).dump() + ": " + value.dump();
 }
 
+nlohmann::ordered_json options_json(const SimulationOptions& s, double every) {
+  return {{"case", s.case_id},
+          {"integrator", info(s.integrator).name},
+          {"dt", s.dt},
+          {"rtol", s.rtol},
+          {"atol", s.atol},
+          {"duration", s.duration},
+          {"every", every},
+          {"stabilize", name(s.stabilization)},
+          {"baumgarte_alpha", s.baumgarte_alpha},
+          {"baumgarte_beta", s.baumgarte_beta}};
+}
+
 std::string json_header(const Inputs& inputs, const SimulationOptions& s, double every,
                         const std::vector<Column>& columns) {
   nlohmann::ordered_json params = nlohmann::ordered_json::object(), state = nlohmann::ordered_json::object();
   for (const InputKey& key : kInputKeys)
     (key.param != nullptr ? params : state)[std::string(key.key)] = inputs.value(key);
-  const nlohmann::ordered_json options = {{"case", s.case_id},
-                                          {"integrator", info(s.integrator).name},
-                                          {"dt", s.dt},
-                                          {"rtol", s.rtol},
-                                          {"atol", s.atol},
-                                          {"duration", s.duration},
-                                          {"every", every},
-                                          {"stabilize", name(s.stabilization)},
-                                          {"baumgarte_alpha", s.baumgarte_alpha},
-                                          {"baumgarte_beta", s.baumgarte_beta}};
+  const nlohmann::ordered_json options = options_json(s, every);
   nlohmann::ordered_json names = nlohmann::ordered_json::array(), units = nlohmann::ordered_json::object();
   for (const Column c : columns) {
     names.push_back(info(c).name);
@@ -188,6 +198,99 @@ void print_summary(const SimulationOptions& s, long rows, const SimulationStats&
                format_significant(st.wall_seconds, 3).c_str());
 }
 
+std::string mechanism_json_header(const sym::System& system, const GiNaC::exmap& initial, const SimulationOptions& s,
+                                  double every, const std::vector<MechanismColumn>& columns) {
+  nlohmann::ordered_json params = nlohmann::ordered_json::object(), state = nlohmann::ordered_json::object();
+  for (const Parameter& p : system.mechanism().parameters) params[p.name] = p.value;
+  for (const sym::GeneralizedCoordinate& g : system.coordinates()) {
+    state[g.coordinate.key] = sym::to_double(initial.at(g.symbols.q));
+    state[g.coordinate.key + "_dot"] = sym::to_double(initial.at(g.symbols.q_dot));
+  }
+  nlohmann::ordered_json names = nlohmann::ordered_json::array(), units = nlohmann::ordered_json::object();
+  for (const MechanismColumn& c : columns) {
+    names.push_back(c.name);
+    units[c.name] = c.unit;
+  }
+  return "{\n" + json_line("mechanism", system.mechanism().name) + ",\n" + json_line("parameters", params) + ",\n" +
+         json_line("initial_state", state) + ",\n" + json_line("options", options_json(s, every)) + ",\n" +
+         json_line("columns", names) + ",\n" + json_line("units", units) + ",\n";
+}
+
+std::string mechanism_json_summary(const MechanismStats& st, double wall) {
+  const nlohmann::ordered_json summary = {{"steps_accepted", st.steps_accepted},
+                                          {"steps_rejected", st.steps_rejected},
+                                          {"rhs_evaluations", st.rhs_evaluations},
+                                          {"max_energy_error", st.max_energy_error},
+                                          {"energy_scale", st.energy_scale},
+                                          {"max_constraint_error", st.max_constraint_error},
+                                          {"wall_seconds", wall}};
+  return json_line("summary", summary) + "\n}\n";
+}
+
+void run_simulate_mechanism(const SimulateOptions& o, const SimulationOptions& s, double every, Format format) {
+  const auto start = std::chrono::steady_clock::now();
+  const Samples samples(s.duration, every);
+  const sym::System system(chosen_mechanism(o.mechanism, o.inputs));
+  const sym::ClosedState closed = sym::checked_initial_state(system);
+  const std::vector<MechanismColumn> all = mechanism_columns(system);
+  const bool asked = o.columns_option != nullptr && o.columns_option->count() > 0;
+  const std::vector<MechanismColumn> columns =
+      select_mechanism_columns(all, asked ? o.columns : "default", "--columns");
+  MechanismSimulation simulation(system, closed.state, s);
+  if (!o.quiet) {
+    note_ignored_simulation_flags(o.simulation, s, simulation.dynamics().constraint_rows());
+    if (!closed.note.empty()) std::fprintf(stderr, "linkage: note: %s\n", closed.note.c_str());
+  }
+  std::optional<AtomicFile> file;
+  if (!o.out.empty()) file.emplace(o.out, "out");
+  TableWriter writer(format, stdout, file ? &*file : nullptr);
+  std::vector<std::string> names;
+  for (const MechanismColumn& c : columns) names.push_back(c.name);
+  writer.begin(names, format == Format::json ? mechanism_json_header(system, closed.state, s, every, columns) : "");
+  Progress progress("simulate", s.duration, "s simulated", o.quiet);
+  simulation.on_progress([&progress](double t) { progress.update(t); });
+  eval::MechanismSample sample;
+  std::vector<double> values(columns.size());
+  for (long i = 0; i < samples.count; ++i) {
+    const double t = samples.at(i);
+    const Eigen::VectorXd& y = simulation.state_at(t);
+    simulation.sample(t, y, sample);
+    for (std::size_t j = 0; j < columns.size(); ++j) {
+      values[j] = column_value(columns[j], t, y, sample, simulation.energy0());
+      if (!std::isfinite(values[j]))
+        throw Error::diverged(columns[j].name + " at t = " + format_roundtrip(t) +
+                              " s is not a finite number; the run stopped (Case " + std::to_string(s.case_id) + ")");
+    }
+    writer.row(values);
+    progress.update(t);
+    throw_if_interrupted();
+  }
+  progress.finish();
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  writer.end(mechanism_json_summary(simulation.stats(), wall));
+  if (file) file->commit();
+  std::fflush(stdout);
+  const MechanismStats& st = simulation.stats();
+  const IntegratorInfo& integrator = info(s.integrator);
+  const std::string method = integrator.adaptive
+                                 ? std::string(integrator.name) + " (rtol " + format_roundtrip(s.rtol) + ", atol " +
+                                       format_roundtrip(s.atol) + ")"
+                                 : std::string(integrator.name) + " (dt " + format_roundtrip(s.dt) + " s)";
+  std::fprintf(stderr,
+               "linkage simulate: %s, Case %d, %s, stabilize %s, 0 to %s s, %ld rows\n"
+               "  steps: %lld accepted, %lld rejected; right-hand side evaluations: %lld\n"
+               "  largest energy balance error: %s of the energy scale %s J; largest constraint error: %s\n"
+               "  wall time: %s s (integration %s s)\n",
+               system.mechanism().name.c_str(), s.case_id, method.c_str(), std::string(name(s.stabilization)).c_str(),
+               format_roundtrip(s.duration).c_str(), samples.count, static_cast<long long>(st.steps_accepted),
+               static_cast<long long>(st.steps_rejected), static_cast<long long>(st.rhs_evaluations),
+               format_significant(st.max_energy_error, 3).c_str(), format_significant(st.energy_scale, 4).c_str(),
+               format_significant(st.max_constraint_error, 3).c_str(), format_significant(wall, 3).c_str(),
+               format_significant(st.wall_seconds, 3).c_str());
+  const std::string warning = mechanism_result_warning(s, st);
+  if (!warning.empty()) std::fprintf(stderr, "linkage: warning: %s\n", warning.c_str());
+}
+
 void run_simulate(const SimulateOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   const SimulationOptions defaults;
@@ -197,6 +300,10 @@ void run_simulate(const SimulateOptions& o) {
   if (!(every > 0 && every <= s.duration))
     throw Error::input("--every: " + format_roundtrip(every) + " s is out of range; valid: 0 < every <= duration (" +
                        format_roundtrip(s.duration) + " s)");
+  if (o.mechanism.chosen()) {
+    run_simulate_mechanism(o, s, every, choose_format(o));
+    return;
+  }
   const Samples samples(s.duration, every);
   const std::vector<Column> columns = parse_columns(o.columns, "--columns");
   const Format format = choose_format(o);
@@ -207,7 +314,9 @@ void run_simulate(const SimulateOptions& o) {
   std::optional<AtomicFile> file;
   if (!o.out.empty()) file.emplace(o.out, "out");
   TableWriter writer(format, stdout, file ? &*file : nullptr);
-  writer.begin(columns, format == Format::json ? json_header(inputs, s, every, columns) : "");
+  std::vector<std::string> names;
+  for (const Column c : columns) names.emplace_back(info(c).name);
+  writer.begin(names, format == Format::json ? json_header(inputs, s, every, columns) : "");
   // In simulated time, reported from inside long steps too: one row may take minutes.
   Progress progress("simulate", s.duration, "s simulated", o.quiet);
   simulation.on_progress([&progress](double t) { progress.update(t); });
@@ -254,10 +363,15 @@ void register_simulate(CLI::App& app) {
   std::string column_names;
   for (const ColumnInfo& c : kColumns)
     column_names += (column_names.empty() ? "" : ", ") + std::string(c.name) + " (" + std::string(c.unit) + ")";
-  sub->add_option("--columns", o->columns,
-                  "Comma-separated columns to compute and write, or all (default all): " + column_names)
-      ->type_name("LIST");
+  o->columns_option =
+      sub->add_option("--columns", o->columns,
+                      "Comma-separated columns to compute and write, or all (default all): " + column_names +
+                          ". With --mechanism: default (t, every body's x, y, theta, every "
+                          "slider's s), all, or names such as 2.theta_dot, B.force_x, "
+                          "energy_error")
+          ->type_name("LIST");
   sub->add_flag("--quiet", o->quiet, "No progress or notes on stderr (the summary and warnings stay)");
+  add_mechanism_options(sub, o->mechanism);
   add_input_options(sub, o->inputs);
   add_runner(sub, [o] { run_simulate(*o); });
 }

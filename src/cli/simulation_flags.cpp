@@ -74,9 +74,13 @@ SimulationOptions resolve_simulation_flags(const SimulationFlags& o, double dura
   return s;
 }
 
-void note_ignored_simulation_flags(const SimulationFlags& o, const SimulationOptions& s) {
+void note_ignored_simulation_flags(const SimulationFlags& o, const SimulationOptions& s, int kept_constraints) {
   const auto note = [](const std::string& text) { std::fprintf(stderr, "linkage: note: %s\n", text.c_str()); };
-  if (s.case_id != 1 && s.stabilization != Stabilization::none)
+  if (kept_constraints == 0 && s.stabilization != Stabilization::none)
+    note("Case " + std::to_string(s.case_id) +
+         " keeps no constraint here (its coordinates meet every joint by construction); --stabilize " +
+         std::string(name(s.stabilization)) + " has nothing to do");
+  if (kept_constraints < 0 && s.case_id != 1 && s.stabilization != Stabilization::none)
     note("Case " + std::to_string(s.case_id) +
          " integrates (x1, y1, theta1, theta2), so the pin constraint holds by construction; --stabilize " +
          std::string(name(s.stabilization)) + " has nothing to do");

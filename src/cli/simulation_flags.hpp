@@ -25,7 +25,9 @@ void add_simulation_flags(CLI::App* sub, SimulationFlags& flags);
 /// The options the flags give, with `duration`; validated (Error::input naming the flag).
 [[nodiscard]] SimulationOptions resolve_simulation_flags(const SimulationFlags& flags, double duration);
 /// Notes on stderr for flags that do nothing in this configuration (e.g. --stabilize
-/// with Case 3, --rtol with a fixed-step integrator).
-void note_ignored_simulation_flags(const SimulationFlags& flags, const SimulationOptions& options);
+/// with Case 3, --rtol with a fixed-step integrator). `kept_constraints`: for a mechanism
+/// file, how many constraint rows the case keeps; -1 for the homework.
+void note_ignored_simulation_flags(const SimulationFlags& flags, const SimulationOptions& options,
+                                   int kept_constraints = -1);
 
 }  // namespace linkage::cli

@@ -4,8 +4,8 @@
 
 #include "cli/commands.hpp"
 #include "cli/input_options.hpp"
+#include "cli/mechanism_options.hpp"
 #include "core/error.hpp"
-#include "model/mechanism_toml.hpp"
 #include "report/code_export.hpp"
 #include "report/mechanism_latex.hpp"
 #include "report/mechanism_solution.hpp"
@@ -24,50 +24,12 @@ struct SolveOptions {
   std::string digits = "6";
   bool ascii = false;
   bool unicode = false;
-  std::string mechanism;
-  CLI::Option* mechanism_option = nullptr;
-  std::vector<std::string> settings;  // --set NAME=VALUE, in order
+  MechanismOptions mechanism;
 };
 
 void write_stdout(const std::string& text) {
   if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0)
     throw Error::failure("cannot write the worked solution to standard output");
-}
-
-// --set NAME=VALUE applied in order; each names itself in errors.
-void apply_settings(Mechanism& mechanism, const std::vector<std::string>& settings) {
-  for (const std::string& setting : settings) {
-    const auto equals = setting.find('=');
-    if (equals == std::string::npos || equals == 0)
-      throw Error::input("--set: '" + setting + "' is not NAME=VALUE; e.g. --set L=0.4 or --set 2.theta=0.3");
-    const std::string name = setting.substr(0, equals);
-    const double value = parse_number(setting.substr(equals + 1), "--set " + name, "");
-    try {
-      set_value(mechanism, name, value, "--set " + setting);
-    } catch (const Error& e) {
-      throw Error::input(describe(e));
-    }
-  }
-}
-
-// The mechanism to derive: a file or shipped name with --mechanism, else the homework with
-// its flags and --config (validated as the homework's inputs always are); then --set.
-Mechanism chosen_mechanism(const SolveOptions& options) {
-  if (options.mechanism.empty()) {
-    Mechanism mechanism = homework_mechanism(resolve_inputs(options.inputs));
-    apply_settings(mechanism, options.settings);
-    return mechanism;
-  }
-  for (std::size_t i = 0; i < kInputKeys.size(); ++i)
-    if (options.inputs.options[i] != nullptr && options.inputs.options[i]->count() > 0)
-      throw Error::input(flag_name(kInputKeys[i].key) +
-                         " is a flag of the built-in homework; with --mechanism use --set " +
-                         std::string(kInputKeys[i].mechanism_key) + "=VALUE");
-  if (options.inputs.config_option != nullptr && options.inputs.config_option->count() > 0)
-    throw Error::input("--config is for the built-in homework; with --mechanism the file is the mechanism itself");
-  Mechanism mechanism = load_mechanism(options.mechanism);
-  apply_settings(mechanism, options.settings);
-  return mechanism;
 }
 
 std::vector<int> parse_case_selection(const std::string& which) {
@@ -95,7 +57,8 @@ void run_solve(const SolveOptions& options) {
   ReportOptions report;
   report.digits = parse_digits(options.digits);
   report.text_style = options.ascii ? Style::ascii : options.unicode ? Style::unicode : text_style_from_locale();
-  const MechanismSolution solution = work_out_mechanism(chosen_mechanism(options), case_ids(cases));
+  const MechanismSolution solution =
+      work_out_mechanism(chosen_mechanism(options.mechanism, options.inputs), case_ids(cases));
   if (format == "json")
     write_stdout(mechanism_json(solution));
   else if (format == "latex")
@@ -137,17 +100,7 @@ void register_solve(CLI::App& app) {
                 "Text format in plain ASCII (th1'', x1'') whatever the locale (default: Unicode symbols when "
                 "the locale uses UTF-8, else ASCII)");
   sub->add_flag("--unicode", options->unicode, "Text format with Unicode symbols whatever the locale");
-  options->mechanism_option =
-      sub->add_option("--mechanism", options->mechanism,
-                      "A shipped mechanism by name (linkage mechanisms lists them) or a mechanism file (.toml); "
-                      "default: the homework, two blocks joined by a pin")
-          ->type_name("NAME|FILE");
-  sub->add_option("--set", options->settings,
-                  "Set a parameter or an initial coordinate of the mechanism, repeatable: --set L=0.4 --set "
-                  "2.theta=0.3")
-      ->type_name("NAME=VALUE")
-      ->expected(1)
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  add_mechanism_options(sub, options->mechanism);
   add_input_options(sub, options->inputs);
   add_runner(sub, [options] { run_solve(*options); });
 }
