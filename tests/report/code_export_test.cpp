@@ -202,9 +202,73 @@ void expect_python_agrees(const Mechanism& mechanism) {
   }
 }
 
+// ---------------------------------------------------------------- running MATLAB (GNU Octave)
+
+// The MATLAB file run by GNU Octave (octave-cli): its demo at the file's state, and at
+// other parameters, state and time through the model's functions, compared with
+// solve_numbers as the Python file is.
+void expect_matlab_agrees(const Mechanism& mechanism) {
+  if (std::system("octave-cli --version >/dev/null 2>&1") != 0)
+    GTEST_SKIP() << "no octave-cli; ./scripts/install-deps --tests installs octave";
+  const MechanismSolution s = work_out_mechanism(mechanism, kCases);
+  const sym::System& system = *s.system;
+  Mechanism other = mechanism;
+  std::vector<double> parameters, q, qd;
+  for (std::size_t i = 0; i < other.parameters.size(); ++i) {
+    other.parameters[i].value *= 1 + 0.03 * static_cast<double>(i + 1);
+    parameters.push_back(other.parameters[i].value);
+  }
+  other.initial.clear();
+  for (std::size_t k = 0; k < system.coordinates().size(); ++k) {
+    const sym::GeneralizedCoordinate& g = system.coordinates()[k];
+    q.push_back(sym::to_double(s.state.at(g.symbols.q)) + 0.05 * static_cast<double>(k + 1));
+    qd.push_back(sym::to_double(s.state.at(g.symbols.q_dot)) + 0.1 * static_cast<double>(k + 1) - 0.2);
+    other.initial.push_back({g.coordinate.key, q.back(), {}});
+    other.initial.push_back({g.coordinate.key + "_dot", qd.back(), {}});
+  }
+  const double t = 0.7;
+  const sym::System other_system(other);
+  const GiNaC::exmap other_values = state_values(other_system, other_system.initial_state(), t);
+
+  const test::TempDir dir;
+  const std::string stem = export_stem(s);
+  test::write_text(dir / (stem + ".m"), matlab_export(s));
+  auto column = [](const std::vector<double>& v) {
+    std::string out = "[";
+    for (double x : v) out += (out.size() > 1 ? "; " : "") + format_roundtrip(x);
+    return out + "]";
+  };
+  // parameters() lists the fields in the file's order.
+  std::string row = "[";
+  for (double x : parameters) row += (row.size() > 1 ? " " : "") + format_roundtrip(x);
+  row += "]";
+  const std::string script = stem + "; m = " + stem + "(); p = m.parameters(); f = fieldnames(p); v = " + row +
+                             "; for i = 1:numel(f), p.(f{i}) = v(i); end; m.demo(p, " + column(q) + ", " + column(qd) +
+                             ", " + format_roundtrip(t) + ")";
+  int status = -1;
+  const auto errors = dir / "stderr.txt";
+  const std::string out = run("(cd '" + dir.path().string() + "' && octave-cli --no-gui --quiet --norc --eval '" +
+                                  script + "' 2>'" + errors.string() + "')",
+                              status);
+  ASSERT_EQ(status, 0) << out << test::read_text(errors);
+  // Octave 7 says this on its way out when its output is not a terminal, after a
+  // successful run (exit status 0); anything else on stderr is a fault of the file.
+  std::istringstream error_lines(test::read_text(errors));
+  for (std::string line; std::getline(error_lines, line);)
+    EXPECT_EQ(line, "error: ignoring const execution_exception& while preparing to exit");
+  const std::vector<PrintedCase> printed = parse_demo(out);
+  ASSERT_EQ(printed.size(), 2 * s.cases.size()) << out;
+  for (std::size_t k = 0; k < s.cases.size(); ++k) {
+    expect_same(printed[k], s.cases[k].system, s.cases[k].numbers, "at the file's state (Octave)");
+    const CaseSystem c = derive_case(other_system, s.cases[k].system.id);
+    expect_same(printed[s.cases.size() + k], c, solve_numbers(c, other_values), "elsewhere (Octave)");
+  }
+}
+
 class CodeExportOf : public testing::TestWithParam<built::Named> {};
 
 TEST_P(CodeExportOf, PythonAgreesWithSolve) { expect_python_agrees(GetParam().make()); }
+TEST_P(CodeExportOf, MatlabRunsInOctaveAndAgreesWithSolve) { expect_matlab_agrees(GetParam().make()); }
 
 // ---------------------------------------------------------------- MATLAB structure
 
