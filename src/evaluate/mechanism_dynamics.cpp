@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "evaluate/tree_dynamics.hpp"
 #include "symbolic/energy.hpp"
 #include "symbolic/joints.hpp"
 
@@ -21,15 +22,14 @@ constexpr int kProjectionIterations = 12;
 
 }  // namespace
 
-MechanismDynamics::MechanismDynamics(const sym::System& system, CaseId id) : id_(id) {
-  const CaseSystem c = derive_case(system, id);
-  const Mechanism& mechanism = system.mechanism();
+MechanismDynamics::MechanismDynamics(const sym::System& system, CaseId id) : id_(id), system_(&system) {
+  const bool maximal = id == CaseId::maximal;
   bodies_ = system.bodies().size();
   joints_ = system.joints().size();
 
   // The state's coordinates: every body's own for Case 1, the tree's otherwise.
   std::vector<GiNaC::symbol> q, q_dot;
-  if (c.maximal) {
+  if (maximal) {
     for (const sym::BodySystem& b : system.bodies()) {
       q.push_back(b.x.q);
       q_dot.push_back(b.x.q_dot);
@@ -55,7 +55,7 @@ MechanismDynamics::MechanismDynamics(const sym::System& system, CaseId id) : id_
   for (const auto& [symbol, value] : system.constants()) constants_[symbol] = value;
   auto in_generalized = [&](const GiNaC::symbol& s) {
     const auto it = system.to_generalized().find(s);
-    return c.maximal && it != system.to_generalized().end() ? it->second : ex(s);
+    return maximal && it != system.to_generalized().end() ? it->second : ex(s);
   };
   for (const GiNaC::symbol& s : q) initial_expressions_.push_back(in_generalized(s));
   for (const GiNaC::symbol& s : q_dot) initial_expressions_.push_back(in_generalized(s));
@@ -73,27 +73,15 @@ MechanismDynamics::MechanismDynamics(const sym::System& system, CaseId id) : id_
   inputs.push_back(system.time());
 
   // Maximal positions and rates in the state's coordinates (none to replace for Case 1).
-  GiNaC::exmap to_state;
-  if (!c.maximal)
+  if (!maximal)
     for (const auto& [symbol, expression] : system.to_generalized()) {
       const sym::SymbolInfo* info = system.table().find(GiNaC::ex_to<GiNaC::symbol>(symbol));
-      if (info != nullptr && info->role != sym::Role::acceleration) to_state[symbol] = expression;
+      if (info != nullptr && info->role != sym::Role::acceleration) to_state_[symbol] = expression;
     }
-  // Expanded, as CaseEvaluator does: one form whatever GiNaC's term order.
-  auto prepare = [&](const ex& e) {
-    return GiNaC::expand(e.subs(system.lengths()).subs(to_state).subs(system.constants()).subs(system.constants()));
-  };
-
-  rows_ = c.A.size();
-  cols_ = c.unknowns.size();
-  if (rows_ != cols_ || cols_ < n_)
-    throw std::logic_error("a case's system is not square with the accelerations first");
-  std::vector<ex> rhs;
-  for (const auto& row : c.A)
-    for (const ex& e : row) rhs.push_back(prepare(e));
-  for (const ex& e : c.B) rhs.push_back(prepare(e));
-  rhs.push_back(prepare(sym::nonconservative_power(system)));
-  rhs_ = compile(rhs, inputs);
+  input_symbols_ = inputs;
+  auto prepare = [&](const ex& e) { return this->prepare(e); };
+  power_ = compile({prepare(sym::nonconservative_power(system))}, inputs);
+  if (id == CaseId::reduced && TreeDynamics::applies(system)) tree_ = std::make_unique<TreeDynamics>(system);
 
   // The kept constraints: the last rows of the case, in joint order.
   std::vector<ex> kept;
@@ -103,11 +91,21 @@ MechanismDynamics::MechanismDynamics(const sym::System& system, CaseId id) : id_
       constraint_joint_.push_back(j);
     }
   };
-  if (c.maximal)
+  if (maximal)
     for (std::size_t j = 0; j < joints_; ++j) keep(static_cast<int>(j));
   else
     for (int j : system.tree().loop_joints) keep(j);
   constraint_rows_ = static_cast<int>(kept.size());
+  inputs_.assign(inputs.size(), 0.0);
+  for (std::size_t i = 0; i < parameters_; ++i) inputs_[i] = parameter_values_[i];
+  J_.resize(constraint_rows_, idx(n_));
+  M_.resize(idx(n_), idx(n_));
+  constraint_values_.resize(static_cast<std::size_t>(constraint_rows_));
+  power_values_.resize(1);
+  scratch_.resize(power_.scratch_size());
+  // A mechanism without kept constraints needs no metric: T is not expanded (for long
+  // chains its expansion is the costliest expression of all).
+  if (constraint_rows_ == 0) return;
   std::vector<ex> constraint_outputs = kept;
   for (const ex& phi : kept)
     for (const GiNaC::symbol& s : q) constraint_outputs.push_back(GiNaC::expand(phi.diff(s)));
@@ -115,12 +113,37 @@ MechanismDynamics::MechanismDynamics(const sym::System& system, CaseId id) : id_
   for (const GiNaC::symbol& a : q_dot)
     for (const GiNaC::symbol& b : q_dot) constraint_outputs.push_back(GiNaC::expand(kinetic.diff(a).diff(b)));
   constraints_ = compile(constraint_outputs, inputs);
+  values_.resize(constraints_.output_count());
+  scratch_.resize(std::max(scratch_.size(), constraints_.scratch_size()));
+}
+
+GiNaC::ex MechanismDynamics::prepare(const GiNaC::ex& e) const {
+  // Expanded, as CaseEvaluator does: one form whatever GiNaC's term order.
+  return GiNaC::expand(
+      e.subs(system_->lengths()).subs(to_state_).subs(system_->constants()).subs(system_->constants()));
+}
+
+void MechanismDynamics::compile_case() const {
+  if (compiled_) return;
+  const sym::System& system = *system_;
+  const Mechanism& mechanism = system.mechanism();
+  const CaseSystem c = derive_case(system, id_);
+  auto prepare = [&](const ex& e) { return this->prepare(e); };
+  rows_ = c.A.size();
+  cols_ = c.unknowns.size();
+  if (rows_ != cols_ || cols_ < n_)
+    throw std::logic_error("a case's system is not square with the accelerations first");
+  std::vector<ex> rhs;
+  for (const auto& row : c.A)
+    for (const ex& e : row) rhs.push_back(prepare(e));
+  for (const ex& e : c.B) rhs.push_back(prepare(e));
+  rhs_ = compile(rhs, input_symbols_);
 
   // The sample: with the unknowns as inputs, and the eliminated forces recovered from them.
   GiNaC::exmap recovered;
   for (const Recovered& r : c.recovered) recovered[r.symbol] = r.value;
   auto prepare_output = [&](const ex& e) { return prepare(e.subs(recovered)); };
-  std::vector<GiNaC::symbol> output_inputs = inputs;
+  std::vector<GiNaC::symbol> output_inputs = input_symbols_;
   output_inputs.insert(output_inputs.end(), c.unknowns.begin(), c.unknowns.end());
   std::vector<ex> out;
   for (const sym::BodySystem& b : system.bodies()) {
@@ -154,7 +177,7 @@ MechanismDynamics::MechanismDynamics(const sym::System& system, CaseId id) : id_
     // Each row on its own: |C| of an expanded C^2 would cancel to sqrt(round-off).
     for (std::size_t r = 0; r < 2; ++r) out.push_back(r < j.constraints.size() ? prepare(j.constraints[r]) : ex(0));
   }
-  out.push_back(kinetic);
+  out.push_back(prepare(sym::kinetic_energy(system)));
   out.push_back(prepare(sym::potential_energy(system)));
   out.push_back(prepare(sym::nonconservative_power(system)));
   const sym::Vec2 p = sym::linear_momentum(system);
@@ -163,17 +186,17 @@ MechanismDynamics::MechanismDynamics(const sym::System& system, CaseId id) : id_
   out.push_back(prepare(sym::angular_momentum_about_centre(system)));
   outputs_ = compile(out, output_inputs);
 
-  inputs_.assign(inputs.size(), 0.0);
-  for (std::size_t i = 0; i < parameters_; ++i) inputs_[i] = parameter_values_[i];
   output_inputs_.assign(output_inputs.size(), 0.0);
-  values_.resize(std::max({rhs_.output_count(), constraints_.output_count(), outputs_.output_count()}));
-  scratch_.resize(std::max({rhs_.scratch_size(), constraints_.scratch_size(), outputs_.scratch_size()}));
+  values_.resize(std::max({values_.size(), rhs_.output_count(), outputs_.output_count()}));
+  scratch_.resize(std::max({scratch_.size(), rhs_.scratch_size(), outputs_.scratch_size()}));
   A_.resize(idx(rows_), idx(cols_));
   B_.resize(idx(rows_));
-  J_.resize(constraint_rows_, idx(n_));
-  M_.resize(idx(n_), idx(n_));
-  constraint_values_.resize(static_cast<std::size_t>(constraint_rows_));
+  compiled_ = true;
 }
+
+MechanismDynamics::~MechanismDynamics() = default;
+MechanismDynamics::MechanismDynamics(MechanismDynamics&&) noexcept = default;
+MechanismDynamics& MechanismDynamics::operator=(MechanismDynamics&&) noexcept = default;
 
 Eigen::VectorXd MechanismDynamics::initial_state(const GiNaC::exmap& values) const {
   // Case 1 starts from the maximal coordinates the generalized state places the bodies at.
@@ -207,6 +230,7 @@ void MechanismDynamics::evaluate_constraints(double t, const Eigen::VectorXd& y)
 }
 
 double MechanismDynamics::unknowns(double t, const Eigen::VectorXd& y, Eigen::VectorXd& u) const {
+  compile_case();
   const bool baumgarte = constraint_rows_ > 0 && (two_alpha_ != 0 || beta_squared_ != 0);
   if (baumgarte) evaluate_constraints(t, y);  // first: values_ ends with the right-hand side's outputs
   fill_inputs(t, y);
@@ -229,15 +253,22 @@ double MechanismDynamics::unknowns(double t, const Eigen::VectorXd& y, Eigen::Ve
 
 bool MechanismDynamics::derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) const {
   dydt.resize(y.size());
-  if (unknowns(t, y, u_) == 0) {
+  const bool baumgarte = constraint_rows_ > 0 && (two_alpha_ != 0 || beta_squared_ != 0);
+  bool solved = false;
+  if (tree_ && !baumgarte) {
+    solved = tree_->accelerations(t, y, u_);
+  } else {
+    solved = unknowns(t, y, u_) > 0;
+  }
+  if (!solved) {
     dydt.setConstant(std::numeric_limits<double>::quiet_NaN());
     return false;
   }
-  // values_ still holds the right-hand side program's outputs: P is its last.
-  const double power = values_[rows_ * cols_ + rows_];
+  fill_inputs(t, y);
+  power_.run(inputs_.data(), power_values_.data(), scratch_.data());
   dydt.head(idx(n_)) = y.segment(idx(n_), idx(n_));
   dydt.segment(idx(n_), idx(n_)) = u_.head(idx(n_));
-  dydt[idx(2 * n_)] = power;
+  dydt[idx(2 * n_)] = power_values_[0];
   return true;
 }
 
@@ -276,6 +307,7 @@ double MechanismDynamics::project(double t, Eigen::VectorXd& y) const {
 }
 
 void MechanismDynamics::sample(double t, const Eigen::VectorXd& y, MechanismSample& out) const {
+  compile_case();
   Eigen::VectorXd u;
   const bool solved = unknowns(t, y, u) > 0;
   fill_inputs(t, y);

@@ -14,6 +14,7 @@
 // M = d^2 T / dq'^2 (mass-weighted, so free mechanisms keep their momentum).
 #include <Eigen/Core>
 #include <Eigen/LU>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,8 @@
 #include "formulations/case_system.hpp"
 
 namespace linkage::eval {
+
+class TreeDynamics;
 
 /// What one sample of a run reports, for the columns of `simulate` and the drawing.
 struct MechanismSample {
@@ -37,7 +40,11 @@ struct MechanismSample {
 
 class MechanismDynamics {
  public:
+  /// `system` must outlive this.
   MechanismDynamics(const sym::System& system, CaseId id);
+  ~MechanismDynamics();
+  MechanismDynamics(MechanismDynamics&&) noexcept;
+  MechanismDynamics& operator=(MechanismDynamics&&) noexcept;
 
   [[nodiscard]] CaseId case_id() const { return id_; }
   /// Coordinates n; the state has 2 n + 1 values.
@@ -71,11 +78,22 @@ class MechanismDynamics {
   void sample(double t, const Eigen::VectorXd& y, MechanismSample& out) const;
 
  private:
+  [[nodiscard]] GiNaC::ex prepare(const GiNaC::ex& e) const;
+  /// Derives the case and compiles A, B and the sample, on first need: a long chain's
+  /// Case 3 integrates by the tree's recursion without ever expanding them.
+  void compile_case() const;
   void fill_inputs(double t, const Eigen::VectorXd& y) const;
   void evaluate_constraints(double t, const Eigen::VectorXd& y) const;
 
   CaseId id_;
-  std::size_t parameters_ = 0, n_ = 0, rows_ = 0, cols_ = 0, bodies_ = 0, joints_ = 0;
+  const sym::System* system_;
+  std::size_t parameters_ = 0, n_ = 0, bodies_ = 0, joints_ = 0;
+  mutable std::size_t rows_ = 0, cols_ = 0;
+  mutable bool compiled_ = false;
+  GiNaC::exmap to_state_;  // maximal coordinates and rates in the state's (none for Case 1)
+  std::vector<GiNaC::symbol> input_symbols_;
+  Program power_;                       // P, of dampers and applied loads
+  std::unique_ptr<TreeDynamics> tree_;  // Case 3 of a tree: the O(n) recursion
   int constraint_rows_ = 0;
   std::vector<int> constraint_joint_;
   std::vector<std::string> coordinate_names_;
@@ -83,11 +101,11 @@ class MechanismDynamics {
   std::vector<GiNaC::symbol> state_symbols_;    // q, then q'
   std::vector<GiNaC::ex> initial_expressions_;  // the state in generalized coordinates and rates
   GiNaC::exmap constants_;                      // parameters, definitions and inertias
-  Program rhs_;                                 // A (row major), B, P
+  mutable Program rhs_;                         // A (row major), B
   Program constraints_;                         // C, dC/dq (row major), M (row major)
-  Program outputs_;                             // the sample, with the unknowns as inputs too
+  mutable Program outputs_;                     // the sample, with the unknowns as inputs too
   double two_alpha_ = 0, beta_squared_ = 0;
-  mutable std::vector<double> inputs_, values_, scratch_, constraint_values_, output_inputs_;
+  mutable std::vector<double> inputs_, values_, scratch_, constraint_values_, output_inputs_, power_values_;
   mutable Eigen::MatrixXd A_, J_, M_;
   mutable Eigen::VectorXd B_, u_;
   mutable Eigen::PartialPivLU<Eigen::MatrixXd> lu_;

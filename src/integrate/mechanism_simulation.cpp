@@ -53,9 +53,8 @@ struct MechanismSimulation::Impl {
     if (o.stabilization == Stabilization::baumgarte) dynamics.set_baumgarte(o.baumgarte_alpha, o.baumgarte_beta);
     project = o.stabilization == Stabilization::projection && dynamics.constraint_rows() > 0;
     y = dynamics.initial_state(initial);
-    Vector u;
-    const double rcond = dynamics.unknowns(0, y, u);
-    if (rcond == 0)
+    Vector dydt;
+    if (!dynamics.derivative(0, y, dydt))
       throw Error::input(system.mechanism().source + ": the matrix of Case " + std::to_string(o.case_id) +
                          " is singular at the initial state (a dead point or change point): the equations do "
                          "not fix the accelerations there; start from another state");
