@@ -18,6 +18,7 @@
 #include "bench/accuracy.hpp"
 #include "bench/accuracy_report.hpp"
 #include "bench/derive_bench.hpp"
+#include "bench/mechanisms_bench.hpp"
 #include "bench/render_bench.hpp"
 #include "bench/stress.hpp"
 #include "bench/targets.hpp"
@@ -191,19 +192,40 @@ void add_derive(CLI::App* bench) {
   });
 }
 
+void add_mechanisms(CLI::App* bench) {
+  auto flags = std::make_shared<bench::MechanismsBenchOptions>();
+  CLI::App* sub = bench->add_subcommand(
+      "mechanisms",
+      "Any mechanism's motion: ns per right-hand side for every shipped mechanism and case, a pendulum chain of 2 to "
+      "64 links against MuJoCo, work against precision on the double pendulum against Odeint and MuJoCo");
+  sub->add_option("--out", flags->out,
+                  "Folder for mechanisms.csv, work-precision.csv, mechanisms.md and the plots (default "
+                  "bench-mechanisms)")
+      ->type_name("DIR");
+  sub->add_flag("--quick", flags->quick,
+                "Chains to 8 links, few settings, short batches: checks the report, not the timings (CI)");
+  sub->add_flag("--quiet", flags->quiet, "No progress line on stderr");
+  add_runner(sub, [flags] {
+    const bench::MechanismsBenchResult result = bench::run_mechanisms_bench(*flags);
+    for (const std::string& line : result.lines) std::printf("%s\n", line.c_str());
+    for (const auto& file : result.files) std::printf("wrote %s\n", file.string().c_str());
+  });
+}
+
 #endif  // LINKAGE_WITH_BENCH
 
 }  // namespace
 
 void register_bench(CLI::App& app) {
-  CLI::App* bench =
-      app.add_subcommand("bench", "Measure speed and accuracy: work-precision, stability, rendering, derivation");
+  CLI::App* bench = app.add_subcommand(
+      "bench", "Measure speed and accuracy: work-precision, stability, rendering, derivation, mechanisms");
 #ifdef LINKAGE_WITH_BENCH
   bench->require_subcommand(1);
   add_accuracy(bench);
   add_stress(bench);
   add_render(bench);
   add_derive(bench);
+  add_mechanisms(bench);
 #else
   add_runner(bench, [] {
     throw Error::input("bench: this build has no benchmarks; configure with -DLINKAGE_BUILD_BENCH=ON");

@@ -80,7 +80,9 @@ MechanismDynamics::MechanismDynamics(const sym::System& system, CaseId id) : id_
     }
   input_symbols_ = inputs;
   auto prepare = [&](const ex& e) { return this->prepare(e); };
-  power_ = compile({prepare(sym::nonconservative_power(system))}, inputs);
+  const ex power = prepare(sym::nonconservative_power(system));
+  power_zero_ = power.is_zero();  // no damper, no applied load: nothing to evaluate per step
+  power_ = compile({power}, inputs);
   if (id == CaseId::reduced && TreeDynamics::applies(system)) tree_ = std::make_unique<TreeDynamics>(system);
 
   // The kept constraints: the last rows of the case, in joint order.
@@ -264,11 +266,15 @@ bool MechanismDynamics::derivative(double t, const Eigen::VectorXd& y, Eigen::Ve
     dydt.setConstant(std::numeric_limits<double>::quiet_NaN());
     return false;
   }
-  fill_inputs(t, y);
-  power_.run(inputs_.data(), power_values_.data(), scratch_.data());
   dydt.head(idx(n_)) = y.segment(idx(n_), idx(n_));
   dydt.segment(idx(n_), idx(n_)) = u_.head(idx(n_));
-  dydt[idx(2 * n_)] = power_values_[0];
+  if (power_zero_) {
+    dydt[idx(2 * n_)] = 0;
+  } else {
+    fill_inputs(t, y);
+    power_.run(inputs_.data(), power_values_.data(), scratch_.data());
+    dydt[idx(2 * n_)] = power_values_[0];
+  }
   return true;
 }
 

@@ -92,7 +92,8 @@ class MechanismDynamics {
   mutable bool compiled_ = false;
   GiNaC::exmap to_state_;  // maximal coordinates and rates in the state's (none for Case 1)
   std::vector<GiNaC::symbol> input_symbols_;
-  Program power_;                       // P, of dampers and applied loads
+  Program power_;  // P, of dampers and applied loads
+  bool power_zero_ = false;
   std::unique_ptr<TreeDynamics> tree_;  // Case 3 of a tree: the O(n) recursion
   int constraint_rows_ = 0;
   std::vector<int> constraint_joint_;

@@ -35,7 +35,7 @@ struct Node {
 /// Per node, the numbers of one pass.
 struct Work {
   Vec2 centre = Vec2::Zero();
-  double angle = 0;
+  double angle = 0, cos_angle = 1, sin_angle = 0;                       // each angle's cosine and sine once
   Eigen::Matrix<double, 3, 3> S = Eigen::Matrix<double, 3, 3>::Zero();  // first dof columns used
   Vec3 v = Vec3::Zero(), c = Vec3::Zero(), a = Vec3::Zero();
   Mat3 IA = Mat3::Zero();
@@ -47,10 +47,8 @@ struct Work {
   double omega = 0, alpha = 0;                       // absolute angular velocity and acceleration
 };
 
-Vec2 rotate(double angle, const Vec2& v) {
-  const double c = std::cos(angle), s = std::sin(angle);
-  return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
-}
+/// R(angle) v, with cos and sin of the angle given.
+Vec2 rotate(double c, double s, const Vec2& v) { return {c * v.x() - s * v.y(), s * v.x() + c * v.y()}; }
 
 /// v x* u for planar motion vectors.
 Vec3 cross_motion(const Vec3& v, const Vec3& u) { return {0, -v[0] * u[2] + v[2] * u[0], v[0] * u[1] - v[1] * u[0]}; }
@@ -59,6 +57,34 @@ Mat3 spatial_inertia(double m, double I, const Vec2& c) {
   Mat3 out;
   out << I + m * c.squaredNorm(), -m * c.y(), m * c.x(), -m * c.y(), m, 0, m * c.x(), 0, m;
   return out;
+}
+
+}  // namespace
+
+namespace {
+
+/// The leaves-to-root step of a node with D > 1 degrees of freedom (a floating base),
+/// in fixed-size matrices.
+template <int D>
+void backward(Work& w, Work* p, const Vec3& c) {
+  const Eigen::Matrix<double, 3, D> S = w.S.leftCols<D>();
+  const Eigen::Matrix<double, 3, D> U = w.IA * S;
+  w.U.leftCols<D>() = U;
+  const Eigen::Matrix<double, D, D> Dinv = (S.transpose() * U).inverse();
+  w.Dinv.topLeftCorner<D, D>() = Dinv;
+  w.u.head<D>() -= S.transpose() * w.pA;
+  if (p == nullptr) return;
+  const Mat3 Ia = w.IA - U * Dinv * U.transpose();
+  p->IA += Ia;
+  p->pA += w.pA + Ia * c + U * (Dinv * w.u.head<D>());
+}
+
+/// The root-to-leaves step of such a node.
+template <int D>
+void forward(Work& w, const Vec3& a_in) {
+  const Eigen::Matrix<double, D, D> Dinv = w.Dinv.topLeftCorner<D, D>();
+  w.q_ddot.head<D>() = Dinv * (w.u.head<D>() - w.U.leftCols<D>().transpose() * a_in);
+  w.a = a_in + w.S.leftCols<D>() * w.q_ddot.head<D>();
 }
 
 }  // namespace
@@ -240,16 +266,18 @@ void TreeDynamics::Impl::kinematics(const Eigen::VectorXd& y) const {
     Work& w = work[k];
     const Work* p = node.parent >= 0 ? &work[static_cast<std::size_t>(node.parent)] : nullptr;
     const double parent_angle = p != nullptr ? p->angle : 0.0;
+    const double pc = p != nullptr ? p->cos_angle : 1.0, ps = p != nullptr ? p->sin_angle : 0.0;
     const double parent_omega = p != nullptr ? p->omega : 0.0;
     const Vec3 parent_v = p != nullptr ? p->v : Vec3::Zero();
-    const Vec2 parent_point =
-        p != nullptr ? Vec2(p->centre + rotate(parent_angle, node.parent_point)) : node.parent_point;
+    const Vec2 parent_point = p != nullptr ? Vec2(p->centre + rotate(pc, ps, node.parent_point)) : node.parent_point;
     w.S.setZero();
     w.c.setZero();
     switch (node.kind) {
       case NodeKind::floating: {
         w.centre = {q(node.coordinate[0]), q(node.coordinate[1])};
         w.angle = node.rotates ? q(node.coordinate[2]) : 0.0;
+        w.cos_angle = std::cos(w.angle);
+        w.sin_angle = std::sin(w.angle);
         w.q_dot[0] = q_dot(node.coordinate[0]);
         w.q_dot[1] = q_dot(node.coordinate[1]);
         w.q_dot[2] = node.rotates ? q_dot(node.coordinate[2]) : 0.0;
@@ -268,7 +296,9 @@ void TreeDynamics::Impl::kinematics(const Eigen::VectorXd& y) const {
         w.angle = q(node.coordinate[0]);
         w.omega = q_dot(node.coordinate[0]);
         w.q_dot[0] = w.omega - parent_omega;
-        w.centre = parent_point - rotate(w.angle, node.child_point);
+        w.cos_angle = std::cos(w.angle);
+        w.sin_angle = std::sin(w.angle);
+        w.centre = parent_point - rotate(w.cos_angle, w.sin_angle, node.child_point);
         const Vec2 r = parent_point - origin;
         w.S.col(0) << 1, r.y(), -r.x();
         w.v = parent_v + w.S.col(0) * w.q_dot[0];
@@ -276,11 +306,13 @@ void TreeDynamics::Impl::kinematics(const Eigen::VectorXd& y) const {
         break;
       }
       case NodeKind::slider: {
-        const Vec2 u = p != nullptr ? rotate(parent_angle, node.axis) : node.axis;
+        const Vec2 u = rotate(pc, ps, node.axis);
         w.angle = parent_angle;
+        w.cos_angle = pc;
+        w.sin_angle = ps;
         w.omega = parent_omega;
         w.q_dot[0] = q_dot(node.coordinate[0]);
-        w.centre = parent_point + node.sign * q(node.coordinate[0]) * u - rotate(w.angle, node.child_point);
+        w.centre = parent_point + node.sign * q(node.coordinate[0]) * u - rotate(pc, ps, node.child_point);
         w.S.col(0) << 0, node.sign * u.x(), node.sign * u.y();
         w.v = parent_v + w.S.col(0) * w.q_dot[0];
         w.c = cross_motion(parent_v, w.S.col(0)) * w.q_dot[0];
@@ -355,17 +387,10 @@ void TreeDynamics::Impl::recursion(bool loaded, const Eigen::VectorXd& tau_absol
       p->pA += w.pA + Ia * c + U * (w.u[0] / D);
       continue;
     }
-    const int d = node.dof;
-    const auto S = w.S.leftCols(d);
-    w.U.leftCols(d) = w.IA * S;
-    const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3> D = S.transpose() * w.U.leftCols(d);
-    w.Dinv.topLeftCorner(d, d) = D.inverse();
-    w.u.head(d) -= S.transpose() * w.pA;
-    if (p == nullptr) continue;
-    const auto U = w.U.leftCols(d);
-    const Mat3 Ia = w.IA - U * w.Dinv.topLeftCorner(d, d) * U.transpose();
-    p->IA += Ia;
-    p->pA += w.pA + Ia * c + U * (w.Dinv.topLeftCorner(d, d) * w.u.head(d));
+    if (node.dof == 3)
+      backward<3>(w, p, c);
+    else
+      backward<2>(w, p, c);
   }
   for (std::size_t k = 0; k < nodes.size(); ++k) {
     const Node& node = nodes[k];
@@ -376,9 +401,10 @@ void TreeDynamics::Impl::recursion(bool loaded, const Eigen::VectorXd& tau_absol
     if (d == 1) {
       w.q_ddot[0] = w.Dinv(0, 0) * (w.u[0] - w.U.col(0).dot(a_in));
       w.a = a_in + w.S.col(0) * w.q_ddot[0];
+    } else if (d == 3) {
+      forward<3>(w, a_in);
     } else {
-      w.q_ddot.head(d) = w.Dinv.topLeftCorner(d, d) * (w.u.head(d) - w.U.leftCols(d).transpose() * a_in);
-      w.a = a_in + w.S.leftCols(d) * w.q_ddot.head(d);
+      forward<2>(w, a_in);
     }
     const double parent_alpha = p != nullptr ? p->alpha : 0.0;
     switch (node.kind) {

@@ -1,0 +1,429 @@
+#include "bench/mechanisms_bench.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <sstream>
+
+#include "bench/double_pendulum_user.hpp"
+#include "bench/timing.hpp"
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
+#include "core/number_format.hpp"
+#include "core/progress.hpp"
+#include "evaluate/mechanism_dynamics.hpp"
+#include "integrate/linkage_rhs.hpp"
+#include "integrate/mechanism_simulation.hpp"
+#include "model/mechanism_toml.hpp"
+#include "render/plot.hpp"
+#include "symbolic/loop_closure.hpp"
+#if LINKAGE_PEER_ODEINT
+#include "bench/peer_odeint_pendulum.hpp"
+#endif
+#if LINKAGE_PEER_MUJOCO
+#include <mujoco/mujoco.h>
+
+#include "bench/peer_mujoco.hpp"
+#endif
+
+namespace linkage::bench {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kEnd = 10.0;  // s, the work-precision study's end time
+constexpr double kNotMeasured = std::numeric_limits<double>::quiet_NaN();
+
+std::string sig(double v, int digits = 3) { return format_significant(v, digits); }
+
+/// Wall nanoseconds per f'(y) of one case at y, its last coordinate (an angle for most)
+/// nudged by round-off each call so no call can be folded into the last.
+double ns_per_rhs(const eval::MechanismDynamics& d, Eigen::VectorXd y, double min_batch, int batches) {
+  Eigen::VectorXd dydt(y.size());
+  const Eigen::Index at = d.coordinates() - 1;
+  const double base = y[at];
+  double sink = 0;
+  const PerCall per = nanoseconds_per_call(
+      [&](std::size_t i) {
+        y[at] = base + 1e-15 * static_cast<double>(i & 7U);
+        (void)d.derivative(0, y, dydt);
+        sink += dydt.sum();
+      },
+      min_batch, batches);
+  if (!std::isfinite(sink)) throw Error::failure("bench mechanisms: a right-hand side was not finite");
+  return per.wall_ns;
+}
+
+struct Loaded {
+  std::unique_ptr<sym::System> system;
+  GiNaC::exmap state;
+};
+
+Loaded load(const Mechanism& mechanism) {
+  Loaded out;
+  out.system = std::make_unique<sym::System>(mechanism);
+  out.state = sym::checked_initial_state(*out.system).state;
+  return out;
+}
+
+/// The homework's closed form (formulations/case3_fast.hpp and friends) at its file's values.
+void closed_form_rows(const sym::System& system, const GiNaC::exmap& state, double min_batch, int batches,
+                      std::vector<RhsRow>& rows) {
+  Params p;
+  for (const Parameter& q : system.mechanism().parameters) {
+    if (q.name == "L") p.L = q.value;
+    if (q.name == "w") p.w = q.value;
+    if (q.name == "b") p.b = q.value;
+    if (q.name == "m") p.m = q.value;
+    if (q.name == "g") p.g = q.value;
+  }
+  const eval::MechanismDynamics generalized(system, CaseId::reduced);
+  const Eigen::VectorXd y = generalized.initial_state(state);
+  Vec<8> y8;
+  for (int i = 0; i < 8; ++i) y8[i] = y[i];
+  auto time = [&](auto& f, auto yv) {
+    auto out = yv;
+    double sink = 0;
+    // theta2 (the last coordinate of Cases 2 and 3, the sixth of Case 1), as for the general path
+    const int at = yv.size() == 8 ? 3 : 5;
+    const double base = yv[at];
+    const PerCall per = nanoseconds_per_call(
+        [&](std::size_t i) {
+          yv[at] = base + 1e-15 * static_cast<double>(i & 7U);
+          f(0.0, yv, out);
+          sink += out.sum();
+        },
+        min_batch, batches);
+    if (!std::isfinite(sink)) throw Error::failure("bench mechanisms: a closed-form right-hand side was not finite");
+    return per.wall_ns;
+  };
+  const GeneralizedRhs<Case3> case3(p);
+  const GeneralizedRhs<Case2> case2(p);
+  const MaximalRhs case1(p, 0, 0);
+  const eval::MechanismDynamics maximal(system, CaseId::maximal);
+  const Eigen::VectorXd ym = maximal.initial_state(state);
+  Vec<12> y12;
+  for (int i = 0; i < 12; ++i) y12[i] = ym[i];
+  rows.push_back({"two-blocks", 1, "closed-form", 2, time(case1, y12)});
+  rows.push_back({"two-blocks", 2, "closed-form", 2, time(case2, y8)});
+  rows.push_back({"two-blocks", 3, "closed-form", 2, time(case3, y8)});
+}
+
+const RhsRow* find(const std::vector<RhsRow>& rows, const std::string& mechanism, int case_id,
+                   const std::string& path) {
+  for (const RhsRow& r : rows)
+    if (r.mechanism == mechanism && r.case_id == case_id && r.path == path) return &r;
+  return nullptr;
+}
+
+// --- the double pendulum, work against precision -------------------------------------
+
+struct Pendulum {
+  double l1 = 0, m1 = 0, l2 = 0, m2 = 0, g = 0, theta1 = 0, theta2 = 0;
+};
+
+Pendulum pendulum_values(const Mechanism& m) {
+  Pendulum p;
+  for (const Parameter& q : m.parameters) {
+    if (q.name == "l1") p.l1 = q.value;
+    if (q.name == "m1") p.m1 = q.value;
+    if (q.name == "l2") p.l2 = q.value;
+    if (q.name == "m2") p.m2 = q.value;
+    if (q.name == "g") p.g = q.value;
+  }
+  for (const InitialValue& v : m.initial) {
+    if (v.key == "1.theta") p.theta1 = v.value;
+    if (v.key == "2.theta") p.theta2 = v.value;
+  }
+  return p;
+}
+
+/// Our run to t = 10 s: the angles at the end and the time of state_at() alone, the
+/// median of `repeats`.
+struct OurRun {
+  double theta1 = 0, theta2 = 0, seconds = 0;
+};
+
+OurRun run_ours(const sym::System& system, const GiNaC::exmap& state, SimulationOptions o, int repeats) {
+  o.duration = kEnd;
+  std::vector<double> times;
+  OurRun out;
+  for (int r = 0; r < repeats; ++r) {
+    MechanismSimulation simulation(system, state, o);
+    const auto start = std::chrono::steady_clock::now();
+    const Eigen::VectorXd& y = simulation.state_at(kEnd);
+    times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    out.theta1 = y[0];
+    out.theta2 = y[1];
+  }
+  out.seconds = median(times);
+  return out;
+}
+
+/// The fastest run of `method` whose error is at most `error`; nullptr if none.
+const WorkPoint* fastest_within(const std::vector<WorkPoint>& work, const std::string& prefix, double error) {
+  const WorkPoint* best = nullptr;
+  for (const WorkPoint& w : work)
+    if (w.method.rfind(prefix, 0) == 0 && w.error <= error && (best == nullptr || w.seconds < best->seconds)) best = &w;
+  return best;
+}
+
+// --- the report ---------------------------------------------------------------------
+
+void write_plots(const MechanismsBenchResult& r, const fs::path& out, std::vector<fs::path>& files) {
+  plot::Plot wp;
+  wp.title = "Double pendulum to t = 10 s: work against precision";
+  wp.x = {"run time (s)", plot::Scale::log, std::nullopt, std::nullopt};
+  wp.y = {"error at t = 10 s: max |Δθ| (rad)", plot::Scale::log, std::nullopt, std::nullopt};
+  wp.legend = plot::LegendPlace::outside_right;
+  std::vector<std::string> methods;
+  for (const WorkPoint& w : r.work)
+    if (std::find(methods.begin(), methods.end(), w.method) == methods.end()) methods.push_back(w.method);
+  for (std::size_t i = 0; i < methods.size(); ++i) {
+    plot::Series s;
+    s.name = methods[i];
+    s.style = plot::Style::line_and_markers;
+    s.dash = methods[i].rfind("ours", 0) == 0 ? plot::Dash::solid : plot::Dash::dashed;
+    s.color = i % plot::palette_size;
+    for (const WorkPoint& w : r.work)
+      if (w.method == methods[i]) s.points.push_back({w.seconds, std::max(w.error, 1e-16)});
+    wp.series.push_back(s);
+  }
+  const plot::Canvas canvas{1250, 720, 14};
+  (void)plot::write(wp, out / "work-precision.png", canvas, "out");
+  files.push_back(out / "work-precision.png");
+
+  plot::Plot chain;
+  chain.title = "Pendulum chain: one evaluation of the dynamics";
+  chain.x = {"links n", plot::Scale::log, std::nullopt, std::nullopt};
+  chain.y = {"time per evaluation (ns)", plot::Scale::log, std::nullopt, std::nullopt};
+  for (const std::string path : {"general", "mujoco"}) {
+    plot::Series s;
+    s.name = path == "general" ? "ours: Case 3, O(n) recursion" : "MuJoCo 2.2 mj_forward";
+    s.style = plot::Style::line_and_markers;
+    for (const RhsRow& row : r.rows)
+      if (row.mechanism.rfind("chain-", 0) == 0 && row.path == path)
+        s.points.push_back({static_cast<double>(row.bodies), row.ns_per_rhs});
+    if (!s.points.empty()) chain.series.push_back(s);
+  }
+  (void)plot::write(chain, out / "chain-scaling.png", canvas, "out");
+  files.push_back(out / "chain-scaling.png");
+}
+
+void write_report(const MechanismsBenchOptions& o, MechanismsBenchResult& r) {
+  std::ostringstream csv, md;
+  csv << "mechanism,case,path,bodies,ns_per_rhs\n";
+  for (const RhsRow& row : r.rows)
+    csv << row.mechanism << "," << row.case_id << "," << row.path << "," << row.bodies << ","
+        << format_roundtrip(row.ns_per_rhs) << "\n";
+  std::ostringstream work;
+  work << "method,setting,seconds,error\n";
+  for (const WorkPoint& w : r.work)
+    work << w.method << "," << format_roundtrip(w.setting) << "," << format_roundtrip(w.seconds) << ","
+         << format_roundtrip(w.error) << "\n";
+
+  md << "# Mechanisms: the cost of any mechanism's motion\n\n"
+     << "Reproduce: `linkage bench mechanisms" << (o.quick ? " --quick" : "") << " --out " << o.out.string()
+     << "`. Every figure comes from this one run on this machine; compare ratios, not "
+        "absolute times (shared machines are noisy). Times are wall clock, the median of batches.\n\n";
+  md << "## Targets\n\n| target | measured | goal | verdict |\n|---|---|---|---|\n";
+  for (const TargetLine& t : r.targets)
+    md << "| " << t.target << " | " << t.measured << " | " << t.goal << " | "
+       << (t.note.empty() ? (t.met ? "met" : "**missed**") : t.note) << " |\n";
+  md << "\n## Nanoseconds per right-hand side\n\n"
+        "`general`: the mechanism's equations compiled from the symbolic system (Case 3 of a tree: the O(n) "
+        "recursion over the spanning tree, with a Schur complement for loops; Cases 1 and 2: the compiled rows "
+        "solved by LU). `closed-form`: the homework's equations written out by hand. `mujoco`: mj_forward on "
+        "the same chain.\n\n| mechanism | case | path | bodies | ns |\n|---|---|---|---|---|\n";
+  for (const RhsRow& row : r.rows)
+    md << "| " << row.mechanism << " | " << row.case_id << " | " << row.path << " | " << row.bodies << " | "
+       << sig(row.ns_per_rhs) << " |\n";
+  md << "\n![chain scaling](chain-scaling.png)\n\n## Double pendulum, work against precision\n\n"
+     << "Error: the largest |Δθ| of the two rods at t = 10 s against our DOP853 at rtol = atol = 1e-14 in Case 3; "
+        "the same run in Case 2 (the compiled rows, LU) differs from it by "
+     << sig(r.reference_check, 2)
+     << " rad, so errors down to about 1e-13 are real. Odeint runs the right-hand side a user writes "
+        "by hand (bench/double_pendulum_user.hpp); MuJoCo its own model of the same rods (bench/peer_mujoco.cpp). "
+        "MuJoCo's Euler is semi-implicit in the velocity.\n\n"
+        "| method | setting | run time (s) | error (rad) |\n|---|---|---|---|\n";
+  for (const WorkPoint& w : r.work)
+    md << "| " << w.method << " | " << sig(w.setting, 2) << " | " << sig(w.seconds) << " | " << sig(w.error, 2)
+       << " |\n";
+  md << "\n![work-precision](work-precision.png)\n";
+
+  ensure_directory(o.out, "out");
+  write_file_atomically(o.out / "mechanisms.csv", csv.str(), "out");
+  write_file_atomically(o.out / "work-precision.csv", work.str(), "out");
+  write_file_atomically(o.out / "mechanisms.md", md.str(), "out");
+  r.files = {o.out / "mechanisms.csv", o.out / "work-precision.csv", o.out / "mechanisms.md"};
+  write_plots(r, o.out, r.files);
+}
+
+void judge(const MechanismsBenchOptions& o, MechanismsBenchResult& r) {
+  auto ratio_line = [&](const std::string& target, double measured, double goal, bool below, const std::string& why) {
+    TargetLine t;
+    t.target = target;
+    t.measured = std::isfinite(measured) ? sig(measured) + "x" : "-";
+    t.goal = (below ? "<= " : ">= ") + sig(goal) + "x";
+    t.met = std::isfinite(measured) && (below ? measured <= goal : measured >= goal);
+    if (!std::isfinite(measured)) t.note = why;
+    r.targets.push_back(t);
+  };
+  const RhsRow* general = find(r.rows, "two-blocks", 3, "general");
+  const RhsRow* closed = find(r.rows, "two-blocks", 3, "closed-form");
+  ratio_line("homework Case 3: general path / closed form", general->ns_per_rhs / closed->ns_per_rhs,
+             kMaxGeneralOverClosed, true, "");
+  const RhsRow* c8 = find(r.rows, "chain-8", 3, "general");
+  const RhsRow* c64 = find(r.rows, "chain-64", 3, "general");
+  ratio_line("chain: time at 64 links / at 8", c8 && c64 ? c64->ns_per_rhs / c8->ns_per_rhs : kNotMeasured,
+             kMaxChainGrowth, true, "not measured: --quick stops at 8 links");
+  const RhsRow* ours32 = find(r.rows, "chain-32", 3, "general");
+  const RhsRow* mujoco32 = find(r.rows, "chain-32", 3, "mujoco");
+  ratio_line("chain of 32: mj_forward / ours (ours faster above 1)",
+             ours32 && mujoco32 ? mujoco32->ns_per_rhs / ours32->ns_per_rhs : kNotMeasured, 1.0, false,
+             o.quick ? "not measured: --quick stops at 8 links" : "not measured: MuJoCo not built");
+  const WorkPoint* ours = fastest_within(r.work, "ours", kPendulumTargetError);
+  const WorkPoint* rk4 = fastest_within(r.work, "mujoco rk4", kPendulumTargetError);
+  std::string why = "not measured: MuJoCo not built";
+#if LINKAGE_PEER_MUJOCO
+  if (rk4 == nullptr) why = "MuJoCo's RK4 reached no error of 1e-8 at the steps tried";
+#endif
+  ratio_line("double pendulum, error 1e-8 at t = 10 s: MuJoCo RK4's best time / ours",
+             ours && rk4 ? rk4->seconds / ours->seconds : kNotMeasured, kMinSpeedupOverMujocoRk4, false, why);
+}
+
+}  // namespace
+
+std::string pendulum_chain_toml(int links) {
+  std::ostringstream t;
+  t << "title = \"A chain of " << links << " rods from a ground pin\"\ngravity = \"g\"\n\n[parameters]\n"
+    << "l = 0.3\nm = 0.1\ng = 9.81\n\n[ground]\npoints = { O = [0, 0] }\n";
+  for (int k = 1; k <= links; ++k)
+    t << "\n[[body]]\nname = \"" << k << "\"\nshape = \"rod\"\nmass = \"m\"\nlength = \"l\"\n"
+      << "points = { S = [\"-l/2\", 0], E = [\"l/2\", 0] }\n";
+  for (int k = 1; k <= links; ++k)
+    t << "\n[[joint]]\nname = \"J" << k << "\"\ntype = \"pin\"\nbodies = [\""
+      << (k == 1 ? std::string("ground") : std::to_string(k - 1)) << "\", \"" << k << "\"]\npoints = [\""
+      << (k == 1 ? "O" : "E") << "\", \"S\"]\n";
+  t << "\n[initial]\n";
+  for (int k = 1; k <= links; ++k)
+    t << "\"" << k << "\" = { theta = " << format_roundtrip(-1.2 + 0.05 * k)
+      << ", theta_dot = " << format_roundtrip(0.1 * (k % 3)) << " }\n";
+  return t.str();
+}
+
+MechanismsBenchResult run_mechanisms_bench(const MechanismsBenchOptions& o) {
+  MechanismsBenchResult r;
+  const double min_batch = o.quick ? 0.002 : 0.05;
+  const int batches = o.quick ? 3 : 7;
+  const std::vector<std::string> names = shipped_mechanism_names();
+  const std::vector<int> chains = o.quick ? std::vector<int>{2, 4, 8} : std::vector<int>{2, 4, 8, 16, 32, 64};
+  Progress progress("bench mechanisms", static_cast<long>(names.size() + chains.size() + 1), "studies", o.quiet);
+  long done = 0;
+
+  for (const std::string& name : names) {
+    const Loaded m = load(load_mechanism(name));
+    const int bodies = static_cast<int>(m.system->bodies().size());
+    for (CaseId id : kAllCases) {
+      const eval::MechanismDynamics d(*m.system, id);
+      r.rows.push_back(
+          {name, case_number(id), "general", bodies, ns_per_rhs(d, d.initial_state(m.state), min_batch, batches)});
+    }
+    if (name == "two-blocks") closed_form_rows(*m.system, m.state, min_batch, batches, r.rows);
+    progress.update(++done);
+  }
+  for (int n : chains) {
+    const Loaded m = load(read_mechanism(pendulum_chain_toml(n), "chain-" + std::to_string(n) + ".toml"));
+    const eval::MechanismDynamics d(*m.system, CaseId::reduced);
+    const std::string name = "chain-" + std::to_string(n);
+    r.rows.push_back({name, 3, "general", n, ns_per_rhs(d, d.initial_state(m.state), min_batch, batches)});
+#if LINKAGE_PEER_MUJOCO
+    r.rows.push_back({name, 3, "mujoco", n, mujoco_forward_ns(n, min_batch * batches)});
+#endif
+    progress.update(++done);
+  }
+
+  // The double pendulum to t = 10 s.
+  const Mechanism pendulum = load_mechanism("double-pendulum");
+  const Loaded m = load(pendulum);
+  const Pendulum p = pendulum_values(pendulum);
+  SimulationOptions reference;
+  reference.integrator = IntegratorKind::dop853;
+  reference.rtol = reference.atol = 1e-14;
+  const OurRun exact = run_ours(*m.system, m.state, reference, 1);
+  SimulationOptions check = reference;
+  check.case_id = 2;
+  const OurRun second = run_ours(*m.system, m.state, check, 1);
+  r.reference_check = std::max(std::fabs(second.theta1 - exact.theta1), std::fabs(second.theta2 - exact.theta2));
+  auto error = [&](double t1, double t2) {
+    return std::max(std::fabs(t1 - exact.theta1), std::fabs(t2 - exact.theta2));
+  };
+  const int repeats = o.quick ? 1 : 3;
+  const std::vector<double> tolerances =
+      o.quick ? std::vector<double>{1e-6, 1e-9}
+              : std::vector<double>{1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12, 1e-13};
+  const std::vector<double> steps =
+      o.quick ? std::vector<double>{1e-2, 1e-3} : std::vector<double>{2e-2, 1e-2, 5e-3, 2e-3, 1e-3, 5e-4, 2e-4, 1e-4};
+  for (const IntegratorKind kind : {IntegratorKind::dop853, IntegratorKind::dopri5})
+    for (double tol : tolerances) {
+      SimulationOptions s;
+      s.integrator = kind;
+      s.rtol = s.atol = tol;
+      const OurRun run = run_ours(*m.system, m.state, s, repeats);
+      r.work.push_back({"ours " + std::string(info(kind).name), tol, run.seconds, error(run.theta1, run.theta2)});
+    }
+  for (double dt : steps) {
+    SimulationOptions s;
+    s.integrator = IntegratorKind::rk4;
+    s.dt = dt;
+    const OurRun run = run_ours(*m.system, m.state, s, repeats);
+    r.work.push_back({"ours rk4", dt, run.seconds, error(run.theta1, run.theta2)});
+  }
+#if LINKAGE_PEER_ODEINT
+  const DoublePendulumUser user{p.l1, p.m1, p.l2, p.m2, p.g};
+  for (const std::string stepper : {"rkf78", "dopri5"})
+    for (double tol : tolerances) {
+      const PendulumRun run = odeint_double_pendulum(user, stepper, tol, p.theta1, p.theta2, kEnd);
+      r.work.push_back({"odeint " + stepper, tol, run.seconds, error(run.theta1, run.theta2)});
+    }
+  for (double dt : steps) {
+    const PendulumRun run = odeint_double_pendulum(user, "rk4", dt, p.theta1, p.theta2, kEnd);
+    r.work.push_back({"odeint rk4", dt, run.seconds, error(run.theta1, run.theta2)});
+  }
+#endif
+#if LINKAGE_PEER_MUJOCO
+  DoublePendulumSpec spec;
+  spec.L1 = p.l1;
+  spec.L2 = p.l2;
+  spec.m1 = p.m1;
+  spec.m2 = p.m2;
+  spec.g = p.g;
+  spec.theta1 = p.theta1;
+  spec.theta2 = p.theta2;
+  const std::vector<double> mujoco_steps =
+      o.quick ? std::vector<double>{1e-2, 1e-3} : std::vector<double>{1e-2, 5e-3, 2e-3, 1e-3, 5e-4, 2e-4, 1e-4, 5e-5};
+  for (double dt : mujoco_steps) {
+    const MujocoRun run = mujoco_double_pendulum(spec, mjINT_RK4, dt, kEnd);
+    r.work.push_back({"mujoco rk4", dt, run.seconds, error(run.theta1, run.theta2)});
+  }
+  for (double dt : o.quick ? std::vector<double>{1e-3} : std::vector<double>{1e-3, 1e-4, 1e-5}) {
+    const MujocoRun run = mujoco_double_pendulum(spec, mjINT_EULER, dt, kEnd);
+    r.work.push_back({"mujoco euler", dt, run.seconds, error(run.theta1, run.theta2)});
+  }
+#else
+  (void)p;
+#endif
+  progress.update(++done);
+  progress.finish();
+
+  judge(o, r);
+  write_report(o, r);
+  for (const TargetLine& t : r.targets)
+    r.lines.push_back(t.target + ": " + t.measured + " (goal " + t.goal + ") " +
+                      (t.note.empty() ? (t.met ? "met" : "MISSED") : t.note));
+  return r;
+}
+
+}  // namespace linkage::bench

@@ -1,0 +1,67 @@
+#pragma once
+// `linkage bench mechanisms`: the cost of any mechanism's motion, as ratios in one run.
+//   1. Nanoseconds per right-hand side for every shipped mechanism and case (the general
+//      path; the closed form beside it for the homework).
+//   2. A pendulum chain of n rods, n = 2 ... 64: Case 3 by the tree's O(n) recursion
+//      against MuJoCo's mj_forward on the same chain.
+//   3. Work against precision on the double pendulum to t = 10 s: our integrators,
+//      Boost.Odeint with the right-hand side a user writes, MuJoCo's RK4 and Euler.
+// Targets: general/closed form on the homework <= 2x; chain 64 / chain 8 <= 10x; ours
+// below mj_forward at 32 links; error 1e-8 at t = 10 s at least 10x faster than MuJoCo's
+// RK4 at its best step.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace linkage::bench {
+
+inline constexpr double kMaxGeneralOverClosed = 2.0;
+inline constexpr double kMaxChainGrowth = 10.0;  // 64 links over 8
+inline constexpr double kMinSpeedupOverMujocoRk4 = 10.0;
+inline constexpr double kPendulumTargetError = 1e-8;
+
+struct MechanismsBenchOptions {
+  std::filesystem::path out = "bench-mechanisms";
+  bool quick = false;  // chains to 8 links, few settings, short batches: checks the report, not the timings
+  bool quiet = false;
+};
+
+/// One row of mechanisms.csv: `path` is closed-form, general or mujoco.
+struct RhsRow {
+  std::string mechanism;
+  int case_id = 3;
+  std::string path;
+  int bodies = 0;
+  double ns_per_rhs = 0;  // wall clock, median of batches
+};
+
+/// One run of the work-precision study.
+struct WorkPoint {
+  std::string method;  // "ours dop853", "odeint rkf78", "mujoco rk4"
+  double setting = 0;  // tolerance, or step in s
+  double seconds = 0;  // the integration alone
+  double error = 0;    // max |delta theta| at t = 10 s, rad
+};
+
+struct TargetLine {
+  std::string target, measured, goal;
+  bool met = false;
+  std::string note;  // why, when missed or not measured
+};
+
+struct MechanismsBenchResult {
+  std::vector<RhsRow> rows;
+  std::vector<WorkPoint> work;
+  double reference_check = 0;  // |Case 3 - Case 2| of the reference at t = 10 s, rad
+  std::vector<TargetLine> targets;
+  std::vector<std::string> lines;  // the terminal summary
+  std::vector<std::filesystem::path> files;
+};
+
+/// A chain of `links` uniform rods (0.3 m, 0.1 kg) hanging from a ground pin, as a
+/// mechanism file's text: the chain MuJoCo is given in the same study.
+[[nodiscard]] std::string pendulum_chain_toml(int links);
+
+[[nodiscard]] MechanismsBenchResult run_mechanisms_bench(const MechanismsBenchOptions& options);
+
+}  // namespace linkage::bench
