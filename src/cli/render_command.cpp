@@ -13,12 +13,15 @@
 
 #include "cli/commands.hpp"
 #include "cli/input_options.hpp"
+#include "cli/mechanism_options.hpp"
 #include "cli/simulation_flags.hpp"
 #include "core/error.hpp"
 #include "core/progress.hpp"
 #include "pipeline/clip.hpp"
+#include "pipeline/mechanism_clip.hpp"
 #include "render/settings.hpp"
 #include "render/theme.hpp"
+#include "symbolic/loop_closure.hpp"
 
 namespace linkage::cli {
 namespace {
@@ -36,6 +39,11 @@ struct RenderFlags {
   CLI::Option* camera_option = nullptr;
   CLI::Option* at_option = nullptr;
   CLI::Option* duration_option = nullptr;
+  CLI::Option* show_option = nullptr;
+  CLI::Option* hide_option = nullptr;
+  CLI::Option* view_option = nullptr;
+  MechanismOptions mechanism;
+  std::vector<std::string> trails;  // --trail BODY.POINT, with --mechanism
 };
 
 int parse_whole(const std::string& text, const std::string& origin) {
@@ -113,11 +121,57 @@ void print_stats(const RenderStats& s) {
   std::printf("%s\n", json.dump(2).c_str());
 }
 
+/// The homework's picture flags have no meaning for a mechanism: an error, not ignored.
+void reject_homework_flags(const RenderFlags& f) {
+  const std::pair<CLI::Option*, const char*> flags[] = {
+      {f.show_option, "--show"}, {f.hide_option, "--hide"}, {f.camera_option, "--camera"}, {f.view_option, "--view"}};
+  for (const auto& [option, flag] : flags)
+    if (option->count() > 0)
+      throw Error::input(std::string(flag) +
+                         ": applies to the homework only; with --mechanism the picture is fixed and the camera "
+                         "fits the whole motion (or follows a floating mechanism)");
+}
+
+/// Any mechanism (--mechanism): its own scene and camera, the same outputs and checks.
+ClipResult render_mechanism(const RenderFlags& f, const ClipProgress& progress) {
+  reject_homework_flags(f);
+  const sym::System system(chosen_mechanism(f.mechanism, f.inputs));
+  MechanismClip clip;
+  clip.settings = resolve_settings(f);
+  if (f.title_option->count() == 0) clip.settings.title = system.mechanism().title;
+  if (!f.frames.empty()) clip.frames = fs::path(f.frames);
+  if (f.out_option->count() > 0 || !clip.frames) clip.out = fs::path(f.out);
+  clip.theme = load_theme(clip.settings.theme, assets_dir(LINKAGE_ASSETS_DIR), "theme");
+  clip.simulation = resolve_simulation_flags(f.simulation, clip.settings.duration);
+  clip.trails = f.trails;
+  clip.validate(system);
+  const bool still = clip.is_still();
+  if (f.at_option->count() > 0 && !still)
+    throw Error::input("--at: applies to a still (--out FILE.png); a clip shows 0 .. --duration");
+  const sym::ClosedState closed = sym::checked_initial_state(system);
+  if (!f.quiet) {
+    if (still && !clip.frames && f.duration_option->count() > 0)
+      std::fprintf(stderr, "linkage: note: --duration applies to a clip; a still shows the time --at (default 0)\n");
+    // Only whether the case keeps any constraint matters to the notes: Case 1 keeps every
+    // joint, Cases 2 and 3 the joints that close loops.
+    int kept = 0;
+    for (const sym::JointSystem& joint : system.joints())
+      if (clip.simulation.case_id == 1 || !joint.in_tree) ++kept;
+    note_ignored_simulation_flags(f.simulation, clip.simulation, kept);
+    if (!closed.note.empty()) std::fprintf(stderr, "linkage: note: %s\n", closed.note.c_str());
+  }
+  return produce_mechanism_clip(system, closed.state, clip, progress);
+}
+
 void run_render(const RenderFlags& flags) {
-  const Clip clip = resolve_clip(flags);
+  if (!flags.mechanism.chosen()) {
+    if (!flags.trails.empty()) throw Error::input("--trail: applies only with --mechanism");
+    if (!flags.mechanism.settings.empty())
+      throw Error::input("--set: applies only with --mechanism; the homework takes its own flags");
+  }
   std::optional<Progress> progress;
   ClipStage shown = ClipStage::simulate;
-  const ClipResult result = produce_clip(clip, [&](ClipStage stage, long done, long total) {
+  const ClipProgress report = [&](ClipStage stage, long done, long total) {
     if (!progress || stage != shown) {
       if (progress) progress->finish();
       progress.emplace(std::string(name(stage)), total, stage == ClipStage::simulate ? "samples" : "frames",
@@ -125,7 +179,9 @@ void run_render(const RenderFlags& flags) {
       shown = stage;
     }
     progress->update(done);
-  });
+  };
+  const ClipResult result =
+      flags.mechanism.chosen() ? render_mechanism(flags, report) : produce_clip(resolve_clip(flags), report);
   if (progress) progress->finish();
   if (!flags.quiet)
     for (const std::string& note : result.notes) std::fprintf(stderr, "linkage: %s\n", note.c_str());
@@ -173,20 +229,21 @@ void register_render(CLI::App& app) {
   sub->add_flag("--stats", f->stats, "Print counters and per-stage times as JSON on stdout")->group(output);
 
   const std::string look = "Picture";
-  sub->add_option("--show", f->show, "Elements to show (comma-separated): " + element_name_list())
-      ->type_name("LIST")
-      ->group(look);
-  sub->add_option("--hide", f->hide, "Elements to hide; default shows all but velocity and axes")
-      ->type_name("LIST")
-      ->group(look);
+  f->show_option = sub->add_option("--show", f->show, "Elements to show (comma-separated): " + element_name_list())
+                       ->type_name("LIST")
+                       ->group(look);
+  f->hide_option = sub->add_option("--hide", f->hide, "Elements to hide; default shows all but velocity and axes")
+                       ->type_name("LIST")
+                       ->group(look);
   f->camera_option = sub->add_option("--camera", f->camera,
                                      "follow (keeps the falling centre of mass in view; default), fixed (--view), "
                                      "or fit (the whole motion)")
                          ->type_name("MODE")
                          ->group(look);
-  sub->add_option("--view", f->view, "World rectangle xmin,ymin,xmax,ymax in metres for the fixed camera")
-      ->type_name("X0,Y0,X1,Y1")
-      ->group(look);
+  f->view_option =
+      sub->add_option("--view", f->view, "World rectangle xmin,ymin,xmax,ymax in metres for the fixed camera")
+          ->type_name("X0,Y0,X1,Y1")
+          ->group(look);
   sub->add_option("--theme", f->theme, "Colours: " + theme_name_list() + " (default light; palettes in assets/themes)")
       ->type_name("NAME")
       ->group(look);
@@ -194,8 +251,15 @@ void register_render(CLI::App& app) {
       sub->add_option("--title", f->title, "Title line (default \"" + RenderSettings{}.title + "\"; \"\" for none)")
           ->type_name("TEXT")
           ->group(look);
+  sub->add_option("--trail", f->trails,
+                  "With --mechanism: draw the path of a body's point over the last 2 s, repeatable: --trail 3.B")
+      ->type_name("BODY.POINT")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+      ->group(look);
   add_simulation_flags(sub, f->simulation);
   add_input_options(sub, f->inputs);
+  add_mechanism_options(sub, f->mechanism);
   add_runner(sub, [f] { run_render(*f); });
 }
 

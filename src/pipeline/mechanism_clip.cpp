@@ -1,0 +1,233 @@
+#include "pipeline/mechanism_clip.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
+#include "core/interrupt.hpp"
+#include "encode/frame_pipeline.hpp"
+#include "encode/png_writer.hpp"
+#include "encode/video_writer.hpp"
+#include "integrate/mechanism_simulation.hpp"
+#include "render/cairo_util.hpp"
+#include "render/mechanism_painter.hpp"
+#include "scene/mechanism_scene.hpp"
+
+namespace linkage {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kTrailSeconds = 2.0;
+constexpr int kTrailSteps = 4;      // trail samples per frame interval
+constexpr double kMargin = 0.1;     // of the view's larger side, around the whole motion
+constexpr double kTitleBand = 0.1;  // of the view's height
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::vector<BodyPoint> resolve_trails(const MechanismGeometry& geometry, const std::vector<std::string>& trails) {
+  std::vector<BodyPoint> points;
+  for (const std::string& trail : trails) points.push_back(geometry.resolve(trail, "--trail"));
+  return points;
+}
+
+/// Draws the frames of one motion: a fixed camera around the whole motion for a
+/// grounded mechanism, else one following the centroid at a fixed zoom.
+class MechanismFrames {
+ public:
+  MechanismFrames(const MechanismGeometry& geometry, const MechanismMotion& motion, const MechanismClip& clip)
+      : scene_(geometry, motion, resolve_trails(geometry, clip.trails), kTrailSeconds),
+        motion_(motion),
+        settings_(clip.settings),
+        labels_{clip.settings.title, run_label(clip.simulation)} {
+    style_.theme = &clip.theme;
+    style_.u = DrawStyle::unit_for(settings_.width, settings_.height);
+    follow_ = !scene_.geometry().grounded();
+    View view = follow_ ? view_around(scene_.centroid(0), (1 + kMargin) * scene_.view_reach())
+                        : view_of(scene_.view_bounds(), kMargin);
+    // Room at the top for the title and the time, which would hide what is under them.
+    if (!follow_) view.ymax += kTitleBand * (view.ymax - view.ymin);
+    camera_ = Camera(view, settings_.width, settings_.height);
+  }
+
+  void draw(std::size_t k, Frame& frame) {
+    const auto start = std::chrono::steady_clock::now();
+    scene_.frame(k, list_);
+    const Camera camera = follow_ ? camera_.centred_at(scene_.centroid(k)) : camera_;
+    const cairo::SurfacePtr surface = cairo::surface_for(frame);
+    const cairo::ContextPtr cr = cairo::context(surface.get());
+    paint_mechanism_frame(cr.get(), style_, camera, list_, labels_, motion_.times[k], settings_.width,
+                          settings_.height);
+    cairo::check(cr.get(), "drawing a frame");
+    cairo_surface_flush(surface.get());
+    ++stats_.frames_drawn;
+    stats_.draw_seconds += seconds_since(start);
+  }
+
+  [[nodiscard]] const RenderStats& stats() const { return stats_; }
+
+ private:
+  MechanismScene scene_;
+  const MechanismMotion& motion_;
+  const RenderSettings& settings_;
+  MechanismLabels labels_;
+  DrawStyle style_;
+  bool follow_ = false;
+  Camera camera_;
+  MechanismDrawList list_;
+  RenderStats stats_;
+};
+
+void add_drawing(RenderStats& stats, const RenderStats& drawn) {
+  stats.frames_drawn += drawn.frames_drawn;
+  stats.draw_seconds += drawn.draw_seconds;
+}
+
+void produce_motion(const sym::System& system, const GiNaC::exmap& initial, const MechanismClip& clip,
+                    const ClipProgress& progress, ClipResult& result) {
+  const RenderSettings& s = clip.settings;
+  const long count = s.frame_count();
+  std::vector<double> times(static_cast<std::size_t>(count));
+  for (long k = 0; k < count; ++k) times[static_cast<std::size_t>(k)] = s.frame_time(k);
+  const MechanismMotion motion = sample_mechanism_motion(system, initial, clip.simulation, times,
+                                                         clip.trails.empty() ? 1 : kTrailSteps, result, progress);
+  MechanismFrames frames(mechanism_geometry(system), motion, clip);
+
+  RenderStats& stats = result.stats;
+  std::optional<VideoWriter> video;
+  std::optional<PngSequenceWriter> pngs;
+  if (clip.out && output_kind(*clip.out, "out") == OutputKind::mp4) {
+    video.emplace(*clip.out, clip_video_options(s));
+    stats.encoder_opened = true;
+  }
+  if (clip.frames) {
+    ensure_directory(*clip.frames, "frames");
+    pngs.emplace(*clip.frames, s.width, s.height, "frames", PngOptions{}, 2, count);
+  }
+  FramePipeline pipeline(s.width, s.height, [&](const Frame& frame) {
+    if (video) video->write(frame);
+    if (pngs) pngs->write(frame);
+  });
+  for (long k = 0; k < count; ++k) {
+    throw_if_interrupted();
+    Frame& frame = pipeline.acquire();
+    frames.draw(static_cast<std::size_t>(k), frame);
+    pipeline.submit();
+    if (progress) progress(ClipStage::draw, k + 1, count);
+  }
+  pipeline.finish();
+  result.draw_waited_seconds = pipeline.stats().producer_wait_seconds;
+  result.encoder_idle_seconds = pipeline.stats().consumer_idle_seconds;
+  if (pngs) {
+    pngs->finish();
+    stats.png_files_written += pngs->stats().frames;
+    stats.png_seconds += pngs->stats().convert_seconds + pngs->stats().encode_seconds;
+  }
+  if (video) {
+    video->finish();
+    stats.convert_seconds += video->stats().convert_seconds;
+    stats.encode_seconds += video->stats().encode_seconds + video->stats().finish_seconds;
+    result.video_bytes = video->stats().bytes;
+    result.encoder = video->encoder_name();
+    if (!video->note().empty()) result.notes.push_back(video->note());
+  }
+  add_drawing(stats, frames.stats());
+}
+
+/// One frame at `at`, sampled back over the trail's seconds at the clip's frame rate (so
+/// the trail and the arrow scale see the same samples a clip would there).
+void produce_still(const sym::System& system, const GiNaC::exmap& initial, const MechanismClip& clip,
+                   const ClipProgress& progress, ClipResult& result) {
+  const RenderSettings& s = clip.settings;
+  const double step = s.speed / s.fps;
+  const auto back = static_cast<long>(std::floor(std::min(s.at, kTrailSeconds) / step));
+  std::vector<double> times;
+  for (long j = back; j > 0; --j) times.push_back(s.at - static_cast<double>(j) * step);
+  times.push_back(s.at);
+  SimulationOptions options = clip.simulation;
+  options.duration = std::max(s.at, options.dt);
+  options.validate();
+  const MechanismMotion motion =
+      sample_mechanism_motion(system, initial, options, times, clip.trails.empty() ? 1 : kTrailSteps, result, progress);
+  MechanismFrames frames(mechanism_geometry(system), motion, clip);
+  Frame frame(s.width, s.height);
+  frames.draw(times.size() - 1, frame);
+  write_png(frame, *clip.out, "out");
+  ++result.stats.png_files_written;
+  add_drawing(result.stats, frames.stats());
+}
+
+}  // namespace
+
+MechanismMotion sample_mechanism_motion(const sym::System& system, const GiNaC::exmap& initial,
+                                        const SimulationOptions& options, const std::vector<double>& frame_times,
+                                        int trail_steps, ClipResult& result, const ClipProgress& progress) {
+  const auto start = std::chrono::steady_clock::now();
+  MechanismSimulation simulation(system, initial, options);
+  MechanismMotion motion;
+  motion.times = frame_times;
+  motion.samples.resize(frame_times.size());
+  const bool fine = trail_steps > 1;
+  eval::MechanismSample between;
+  const long total = static_cast<long>(frame_times.size());
+  // One pass in time order: state_at only goes forward.
+  for (std::size_t i = 0; i < frame_times.size(); ++i) {
+    throw_if_interrupted();
+    for (int step = 1; fine && i > 0 && step < trail_steps; ++step) {
+      const double t = frame_times[i - 1] + (frame_times[i] - frame_times[i - 1]) * step / trail_steps;
+      simulation.sample(t, simulation.state_at(t), between);
+      motion.trail_times.push_back(t);
+      motion.trail_poses.push_back(between.pose);
+    }
+    simulation.sample(frame_times[i], simulation.state_at(frame_times[i]), motion.samples[i]);
+    if (fine) {
+      motion.trail_times.push_back(frame_times[i]);
+      motion.trail_poses.push_back(motion.samples[i].pose);
+    }
+    if (progress) progress(ClipStage::simulate, static_cast<long>(i) + 1, total);
+  }
+  const std::size_t between_frames = fine ? motion.trail_times.size() - frame_times.size() : 0;
+  result.stats.samples += static_cast<std::int64_t>(frame_times.size() + between_frames);
+  result.stats.simulate_seconds += seconds_since(start);
+  const std::string warning = mechanism_result_warning(options, simulation.stats());
+  if (!warning.empty()) result.warnings.push_back(warning);
+  return motion;
+}
+
+bool MechanismClip::is_still() const { return out && output_kind(*out, "out") == OutputKind::png; }
+
+void MechanismClip::validate(const sym::System& system) const {
+  if (!out && !frames) throw Error::invalid("out", "a clip needs an output file or a frames folder");
+  std::error_code ec;
+  if (out) {
+    if (fs::is_directory(*out, ec))
+      throw Error::invalid("out", "'" + out->string() + "' is a folder, expected a file name");
+    const OutputKind kind = output_kind(*out, "out");
+    if (kind != OutputKind::mp4 && kind != OutputKind::png)
+      throw Error::invalid("out", "a mechanism renders to .mp4 or .png (vector stills are the homework's only)");
+  }
+  settings.validate();
+  simulation.validate();
+  if (out) {
+    if (!is_still()) VideoWriter::validate(clip_video_options(settings));
+    require_writable_directory(out->parent_path(), "out");
+  }
+  if (frames && fs::exists(*frames, ec) && !fs::is_directory(*frames, ec))
+    throw Error::invalid("frames", "'" + frames->string() + "' exists and is not a folder");
+  (void)resolve_trails(mechanism_geometry(system), trails);
+}
+
+ClipResult produce_mechanism_clip(const sym::System& system, const GiNaC::exmap& initial, const MechanismClip& clip,
+                                  const ClipProgress& progress) {
+  clip.validate(system);
+  ClipResult result;
+  if (clip.frames || (clip.out && !clip.is_still())) produce_motion(system, initial, clip, progress, result);
+  if (clip.is_still()) produce_still(system, initial, clip, progress, result);
+  return result;
+}
+
+}  // namespace linkage

@@ -1,0 +1,49 @@
+#pragma once
+// Any mechanism's clip: simulate (MechanismSimulation), build each frame's drawing
+// (scene/mechanism_scene), paint it (render/mechanism_painter) and encode it, as
+// produce_clip does for the homework: an MP4, a numbered PNG sequence, or one PNG still
+// at settings.at. Outputs appear whole or not at all. Uses settings' size, fps,
+// duration, speed, at and title; the homework's elements and camera modes do not apply
+// (the camera fits the whole motion, or follows a floating mechanism's centroid).
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "integrate/simulation.hpp"
+#include "pipeline/clip.hpp"
+#include "render/settings.hpp"
+#include "render/theme.hpp"
+#include "scene/mechanism_scene.hpp"
+#include "symbolic/system.hpp"
+
+namespace linkage {
+
+struct MechanismClip {
+  SimulationOptions simulation;
+  RenderSettings settings;
+  Theme theme;
+  std::vector<std::string> trails;              // "BODY.POINT": paths over the last 2 s
+  std::optional<std::filesystem::path> out;     // .mp4 or .png (a still)
+  std::optional<std::filesystem::path> frames;  // a numbered PNG sequence's folder
+
+  [[nodiscard]] bool is_still() const;
+  /// Checks the outputs, settings, simulation and trails before any work: Error::invalid
+  /// about "out", "frames", "size", ...; Error::input naming --trail for a bad point.
+  void validate(const sym::System& system) const;
+};
+
+/// The motion at `frame_times` (increasing) from one run; with `trail_steps` > 1 also the
+/// poses at that many steps per frame interval (trail_times, the frame times among them),
+/// so a trail stays smooth however fast a point moves between frames. Adds the run's
+/// samples, seconds and warning to `result`.
+MechanismMotion sample_mechanism_motion(const sym::System& system, const GiNaC::exmap& initial,
+                                        const SimulationOptions& options, const std::vector<double>& frame_times,
+                                        int trail_steps, ClipResult& result, const ClipProgress& progress = {});
+
+/// Produces every output of `clip` for `system` from `initial` (generalized coordinates
+/// and rates with every loop closed, sym::checked_initial_state). Polls for Ctrl-C.
+ClipResult produce_mechanism_clip(const sym::System& system, const GiNaC::exmap& initial, const MechanismClip& clip,
+                                  const ClipProgress& progress = {});
+
+}  // namespace linkage

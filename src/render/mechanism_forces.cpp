@@ -1,0 +1,305 @@
+#include "render/mechanism_forces.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+
+#include "render/scene_painter.hpp"
+#include "render/text.hpp"
+
+namespace linkage {
+namespace {
+
+using List = MechanismDrawList;
+
+constexpr const char* kJointName = "joint forces";
+constexpr const char* kAppliedName = "applied forces";
+constexpr const char* kCutNote = "cut short: its label gives the value";
+
+text::Font label_font(const DrawStyle& style) { return {style.small_size(), false}; }
+text::Font body_font(const DrawStyle& style) { return {style.small_size(), true}; }
+
+// A text's box centred on `at`, with room for its halo.
+Rect box_around(cairo_t* cr, const DrawStyle& style, const text::Font& font, const std::string& s, const Vec2& at) {
+  const text::Metrics m = text::metrics(cr, font);
+  const double pad = 1.5 * style.u;
+  const double w = text::width(cr, font, s.c_str()) + 2 * pad, h = m.ascent + m.descent + 2 * pad;
+  return {at.x() - 0.5 * w, at.y() - 0.5 * h, w, h};
+}
+
+Vec2 centre_of(const Rect& r) { return {r.x + 0.5 * r.width, r.y + 0.5 * r.height}; }
+
+bool inside(const Rect& r, int width, int height) {
+  return r.x >= 0 && r.y >= 0 && r.x + r.width <= width && r.y + r.height <= height;
+}
+
+// Whether the segment a-b passes through r (Liang-Barsky clipping).
+bool crosses(const Rect& r, const Vec2& a, const Vec2& b) {
+  double t0 = 0, t1 = 1;
+  const Vec2 d = b - a;
+  const std::array<std::pair<double, double>, 4> sides{
+      {{-d.x(), a.x() - r.x}, {d.x(), r.x + r.width - a.x()}, {-d.y(), a.y() - r.y}, {d.y(), r.y + r.height - a.y()}}};
+  for (const auto& [p, q] : sides) {
+    if (p == 0) {
+      if (q < 0) return false;
+    } else {
+      const double t = q / p;
+      if (p < 0)
+        t0 = std::max(t0, t);
+      else
+        t1 = std::min(t1, t);
+      if (t0 > t1) return false;
+    }
+  }
+  return true;
+}
+
+// A world arc as pixel points, from start to start + sweep.
+std::vector<Vec2> arc_points(const Camera& camera, const List::Torque& torque, int count) {
+  std::vector<Vec2> points;
+  for (int i = 0; i <= count; ++i) {
+    const double angle = torque.start + torque.sweep * i / count;
+    points.push_back(camera.to_pixels(torque.centre + torque.radius * Vec2(std::cos(angle), std::sin(angle))));
+  }
+  return points;
+}
+
+struct Obstacles {
+  std::vector<Rect> boxes;
+  std::vector<std::pair<Vec2, Vec2>> segments;
+};
+
+// The first place around `head`, along `direction` first and then turning away from it
+// and moving out, that the pass's rules allow; the plain place past the head if none.
+PlacedLabel place(const Rect& size, const Vec2& head, const Vec2& direction, const Obstacles& obstacles,
+                  const DrawStyle& style, int width, int height) {
+  constexpr double degree = std::numbers::pi / 180;
+  static constexpr std::array<double, 9> kTurns{0, 30, -30, 60, -60, 90, -90, 135, -135};
+  const double gap = 3 * style.u, step = 0.6 * size.height;
+  const auto candidate = [&](int ring, double turn) {
+    const double c = std::cos(turn * degree), s = std::sin(turn * degree);
+    const Vec2 d(c * direction.x() - s * direction.y(), s * direction.x() + c * direction.y());
+    // Just far enough along d that the box clears the head by `gap + ring step`.
+    const double clear = gap + ring * step;
+    const double along_x = std::fabs(d.x()) > 1e-9 ? (0.5 * size.width + clear) / std::fabs(d.x()) : 1e300;
+    const double along_y = std::fabs(d.y()) > 1e-9 ? (0.5 * size.height + clear) / std::fabs(d.y()) : 1e300;
+    const Vec2 at = head + std::min(along_x, along_y) * d;
+    return Rect{at.x() - 0.5 * size.width, at.y() - 0.5 * size.height, size.width, size.height};
+  };
+  for (int pass = 0; pass < 3; ++pass)
+    for (int ring = 0; ring < 8; ++ring)
+      for (const double turn : kTurns) {
+        const Rect box = candidate(ring, turn);
+        if (pass < 2 && !inside(box, width, height)) continue;
+        if (std::any_of(obstacles.boxes.begin(), obstacles.boxes.end(),
+                        [&](const Rect& r) { return overlaps(box, r); }))
+          continue;
+        if (pass == 0 && std::any_of(obstacles.segments.begin(), obstacles.segments.end(),
+                                     [&](const auto& s) { return crosses(box, s.first, s.second); }))
+          continue;
+        // A line to the head once the box no longer touches it.
+        const Vec2 near(std::clamp(head.x(), box.x, box.x + box.width),
+                        std::clamp(head.y(), box.y, box.y + box.height));
+        return {box, head, {}, false, (near - head).norm() > gap + 4 * style.u};
+      }
+  return {candidate(0, 0), head, {}, false, false};
+}
+
+Rect legend_rect(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List::Legend& legend, int height) {
+  if (!(legend.metres > 0) || !(legend.joint || legend.applied)) return {};
+  const text::Font font = label_font(style);
+  const double u = style.u, row = 1.7 * font.size, pad = 8 * u;
+  double names = 0;
+  if (legend.joint) names = std::max(names, text::width(cr, font, kJointName));
+  if (legend.applied) names = std::max(names, text::width(cr, font, kAppliedName));
+  const double arrow = legend.metres * camera.scale();
+  double content = names + 8 * u + arrow + 6 * u + text::width(cr, font, legend.value.c_str());
+  if (legend.cut) content = std::max(content, 40 * u + 6 * u + text::width(cr, font, kCutNote));
+  const int rows = (legend.joint ? 1 : 0) + (legend.applied ? 1 : 0) + (legend.cut ? 1 : 0);
+  const double h = rows * row + 2 * 0.6 * pad;
+  return {std::floor(style.padding()), std::floor(height - style.padding() - h), std::ceil(content + 2 * pad),
+          std::ceil(h)};
+}
+
+// The double bar across a cut arrow's shaft, a third of the way from its tail: a gap in
+// the background colour between two slanted strokes, as a drawing marks a broken-off length.
+void paint_cut(cairo_t* cr, const DrawStyle& style, const Vec2& tail, const Vec2& tip, const Rgba& colour) {
+  const Vec2 along = (tip - tail).normalized(), across(-along.y(), along.x());
+  const Vec2 mid = tail + 0.4 * (tip - tail);
+  const double half = 2.6 * style.arrow_width(), spread = 2.2 * style.u;
+  const Vec2 slant = (across + 0.45 * along).normalized();
+  set_colour(cr, style.theme->background);
+  cairo_new_path(cr);
+  const std::array<Vec2, 4> gap{Vec2(mid - spread * along - half * slant), Vec2(mid + spread * along - half * slant),
+                                Vec2(mid + spread * along + half * slant), Vec2(mid - spread * along + half * slant)};
+  for (const Vec2& p : gap) cairo_line_to(cr, p.x(), p.y());
+  cairo_close_path(cr);
+  cairo_fill(cr);
+  set_colour(cr, colour);
+  cairo_set_line_width(cr, 0.7 * style.arrow_width());
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  for (const double side : {-1.0, 1.0}) {
+    const Vec2 a = mid + side * spread * along - half * slant, b = mid + side * spread * along + half * slant;
+    cairo_move_to(cr, a.x(), a.y());
+    cairo_line_to(cr, b.x(), b.y());
+  }
+  cairo_stroke(cr);
+}
+
+void paint_torque(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List::Torque& torque) {
+  const Rgba& colour = style.theme->velocity;
+  const double radius = torque.radius * camera.scale();
+  if (radius <= 0 || torque.sweep == 0) return;
+  // The arc stops where the head begins; the head is a short arrow along the chord,
+  // long enough that paint_arrow keeps the head full size.
+  const double head = std::min(1.7 * style.arrow_head_length() / radius, 0.5 * std::fabs(torque.sweep));
+  List::Torque body = torque;
+  body.sweep -= std::copysign(head, torque.sweep);
+  const std::vector<Vec2> points = arc_points(camera, body, 48);
+  set_colour(cr, colour);
+  cairo_set_line_width(cr, style.arrow_width());
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+  cairo_new_path(cr);
+  for (const Vec2& p : points) cairo_line_to(cr, p.x(), p.y());
+  cairo_stroke(cr);
+  const double end = torque.start + torque.sweep;
+  paint_arrow(cr, style, points.back(),
+              camera.to_pixels(torque.centre + torque.radius * Vec2(std::cos(end), std::sin(end))), colour);
+}
+
+void paint_legend(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List::Legend& legend,
+                  const Rect& rect) {
+  if (rect.empty()) return;
+  const Theme& theme = *style.theme;
+  const text::Font font = label_font(style);
+  const double u = style.u, row = 1.7 * font.size, pad = 8 * u;
+  cairo_new_path(cr);
+  cairo_rectangle(cr, rect.x + 0.5, rect.y + 0.5, rect.width - 1, rect.height - 1);
+  set_colour(cr, theme.panel);
+  cairo_fill_preserve(cr);
+  set_colour(cr, theme.panel_edge);
+  cairo_set_line_width(cr, std::max(1.0, std::round(0.6 * u)));
+  cairo_stroke(cr);
+  const text::Metrics m = text::metrics(cr, font);
+  double names = 0;
+  if (legend.joint) names = std::max(names, text::width(cr, font, kJointName));
+  if (legend.applied) names = std::max(names, text::width(cr, font, kAppliedName));
+  const double arrow = legend.metres * camera.scale();
+  double y = rect.y + 0.6 * pad;
+  const auto baseline = [&] { return y + 0.5 * row + 0.5 * (m.ascent - m.descent); };
+  // The reference arrow at the very scale of the frame's arrows.
+  const auto scale_row = [&](const char* name, const Rgba& colour) {
+    const double x = rect.x + pad;
+    text::draw(cr, font, x, baseline(), name, theme.text);
+    paint_arrow(cr, style, {x + names + 8 * u, y + 0.5 * row}, {x + names + 8 * u + arrow, y + 0.5 * row}, colour);
+    text::draw(cr, font, x + names + 8 * u + arrow + 6 * u, baseline(), legend.value.c_str(), theme.text);
+    y += row;
+  };
+  if (legend.joint) scale_row(kJointName, theme.pin_force);
+  if (legend.applied) scale_row(kAppliedName, theme.velocity);
+  if (legend.cut) {
+    const Vec2 tail(rect.x + pad, y + 0.5 * row), tip(rect.x + pad + 40 * u, y + 0.5 * row);
+    paint_arrow(cr, style, tail, tip, theme.text_muted);
+    paint_cut(cr, style, tail, tip, theme.text_muted);
+    text::draw(cr, font, tip.x() + 6 * u, baseline(), kCutNote, theme.text_muted);
+  }
+}
+
+}  // namespace
+
+bool overlaps(const Rect& a, const Rect& b) {
+  return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
+}
+
+ForceLayout layout_forces(cairo_t* cr, const DrawStyle& style, const Camera& camera, const MechanismDrawList& list,
+                          int width, int height, const std::vector<Rect>& occupied) {
+  ForceLayout layout;
+  layout.legend = legend_rect(cr, style, camera, list.legend, height);
+  Obstacles obstacles;
+  obstacles.boxes = occupied;
+  if (!layout.legend.empty()) obstacles.boxes.push_back(layout.legend);
+  for (const List::Marker& marker : list.markers) {
+    const double r = (marker.kind == List::Marker::Kind::guide ? 9.0 : 5.0) * style.u;
+    const Vec2 at = camera.to_pixels(marker.at);
+    obstacles.boxes.push_back({at.x() - r, at.y() - r, 2 * r, 2 * r});
+  }
+  const std::size_t markers = obstacles.boxes.size();
+  for (const List::Label& label : list.labels) {
+    // At the centre, unless a joint sits there (a piston's pin): then just beside it.
+    Rect box = box_around(cr, style, body_font(style), label.text, camera.to_pixels(label.at));
+    const auto on_a_joint = [&](const Rect& b) {
+      return std::any_of(obstacles.boxes.begin() + static_cast<std::ptrdiff_t>(markers - list.markers.size()),
+                         obstacles.boxes.begin() + static_cast<std::ptrdiff_t>(markers),
+                         [&](const Rect& m) { return overlaps(b, m); });
+    };
+    for (int step = 1; step <= 4 && on_a_joint(box); ++step) box.y += 0.5 * box.height;
+    layout.body_labels.push_back(box);
+    obstacles.boxes.push_back(box);
+  }
+  for (const List::Arrow& arrow : list.arrows)
+    obstacles.segments.emplace_back(camera.to_pixels(arrow.tail), camera.to_pixels(arrow.tail + arrow.vector));
+  for (const List::Torque& torque : list.torques) {
+    const std::vector<Vec2> points = arc_points(camera, torque, 12);
+    for (std::size_t i = 1; i < points.size(); ++i) obstacles.segments.emplace_back(points[i - 1], points[i]);
+  }
+
+  const text::Font font = label_font(style);
+  const auto add = [&](const std::string& text, const Vec2& head, const Vec2& direction, bool applied) {
+    const Rect size = box_around(cr, style, font, text, head);
+    PlacedLabel placed = place(size, head, direction, obstacles, style, width, height);
+    placed.text = text;
+    placed.applied = applied;
+    obstacles.boxes.push_back(placed.box);
+    layout.labels.push_back(std::move(placed));
+  };
+  const double tall = text::metrics(cr, font).ascent + text::metrics(cr, font).descent + 3 * style.u;
+  for (const List::Arrow& arrow : list.arrows) {
+    const Vec2 tail = camera.to_pixels(arrow.tail), tip = camera.to_pixels(arrow.tail + arrow.vector);
+    // A stub too short to say whose it is goes unlabelled; an applied load never does.
+    if (arrow.kind == List::Arrow::Kind::joint && (tip - tail).norm() < tall) continue;
+    const Vec2 along = tip - tail;
+    add(arrow.label, tip, along.norm() > 0 ? Vec2(along.normalized()) : Vec2(0, -1),
+        arrow.kind == List::Arrow::Kind::applied);
+  }
+  for (const List::Torque& torque : list.torques) {
+    // Outside the arc's middle, away from the body.
+    const double middle = torque.start + 0.5 * torque.sweep;
+    const Vec2 out(std::cos(middle), std::sin(middle));
+    const Vec2 head = camera.to_pixels(torque.centre + torque.radius * out);
+    add(torque.label, head, Vec2(out.x(), -out.y()), true);
+  }
+  return layout;
+}
+
+void paint_forces(cairo_t* cr, const DrawStyle& style, const Camera& camera, const MechanismDrawList& list,
+                  const ForceLayout& layout) {
+  const Theme& theme = *style.theme;
+  for (const List::Torque& torque : list.torques) paint_torque(cr, style, camera, torque);
+  for (const List::Arrow& arrow : list.arrows) {
+    const Rgba& colour = arrow.kind == List::Arrow::Kind::applied ? theme.velocity : theme.pin_force;
+    const Vec2 tail = camera.to_pixels(arrow.tail), tip = camera.to_pixels(arrow.tail + arrow.vector);
+    paint_arrow(cr, style, tail, tip, colour);
+    if (arrow.cut) paint_cut(cr, style, tail, tip, colour);
+  }
+  // Labels after every arrow, so no shaft crosses a label.
+  const text::Font font = label_font(style);
+  for (const PlacedLabel& label : layout.labels) {
+    const Rgba& colour = label.applied ? theme.velocity : theme.pin_force;
+    const Vec2 at = centre_of(label.box);
+    if (label.leader) {
+      // A thin line from the head to the box's nearest point.
+      const Vec2 near(std::clamp(label.head.x(), label.box.x, label.box.x + label.box.width),
+                      std::clamp(label.head.y(), label.box.y, label.box.y + label.box.height));
+      set_colour(cr, with_alpha(colour, 0.7));
+      cairo_set_line_width(cr, 0.8 * style.u);
+      cairo_move_to(cr, label.head.x(), label.head.y());
+      cairo_line_to(cr, near.x(), near.y());
+      cairo_stroke(cr);
+    }
+    text::draw_centred_with_halo(cr, font, at.x(), at.y(), label.text.c_str(), colour, theme.background, 2.5 * style.u);
+  }
+  paint_legend(cr, style, camera, list.legend, layout.legend);
+}
+
+}  // namespace linkage

@@ -1,0 +1,49 @@
+#pragma once
+// The loads of a mechanism's frame in pixels: joint and applied force arrows (a cut one
+// crossed by a double bar), torque arcs, their labels placed clear of one another, and
+// the legend saying what an arrow's length stands for. Split from mechanism_painter so
+// the placement can be tested on its own.
+#include <cairo.h>
+
+#include <string>
+#include <vector>
+
+#include "render/camera.hpp"
+#include "render/overlays.hpp"
+#include "render/style.hpp"
+#include "scene/mechanism_scene.hpp"
+
+namespace linkage {
+
+/// A label in pixels: its box (the text centred in it) and the head it names.
+struct PlacedLabel {
+  Rect box;
+  Vec2 head = Vec2::Zero();
+  std::string text;
+  bool applied = false;  // an applied load's colour, else a joint force's
+  bool leader = false;   // moved off its head far enough to need a line to it
+};
+
+struct ForceLayout {
+  Rect legend;                      // bottom left; empty without force arrows
+  std::vector<Rect> body_labels;    // the body names' boxes, fixed at the centres
+  std::vector<PlacedLabel> labels;  // one per arrow long enough to carry one, and per torque
+};
+
+/// Where the legend and the labels go. Each label sits just past its arrow's head, or
+/// the nearest place around it clear of the other labels, the body names, the joints,
+/// the legend, `occupied` (title, time) and, where possible, every arrow's shaft and
+/// the frame's edge. A joint force's label is left out only when its arrow is shorter
+/// than the label is high; an applied load's is always there.
+[[nodiscard]] ForceLayout layout_forces(cairo_t* cr, const DrawStyle& style, const Camera& camera,
+                                        const MechanismDrawList& list, int width, int height,
+                                        const std::vector<Rect>& occupied);
+
+/// The arrows and torque arcs, then the laid-out labels and the legend.
+void paint_forces(cairo_t* cr, const DrawStyle& style, const Camera& camera, const MechanismDrawList& list,
+                  const ForceLayout& layout);
+
+/// Whether two boxes share any area.
+[[nodiscard]] bool overlaps(const Rect& a, const Rect& b);
+
+}  // namespace linkage

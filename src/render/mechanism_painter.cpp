@@ -1,0 +1,209 @@
+#include "render/mechanism_painter.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "render/mechanism_forces.hpp"
+#include "render/overlays.hpp"
+#include "render/scene_painter.hpp"
+#include "render/text.hpp"
+
+namespace linkage {
+namespace {
+
+using List = MechanismDrawList;
+
+void path_through(cairo_t* cr, const Camera& camera, const std::vector<Vec2>& points, bool closed) {
+  cairo_new_path(cr);
+  for (const Vec2& world : points) {
+    const Vec2 p = camera.to_pixels(world);
+    cairo_line_to(cr, p.x(), p.y());
+  }
+  if (closed) cairo_close_path(cr);
+}
+
+void paint_lines(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List& list, List::Line::Kind kind) {
+  const Theme& theme = *style.theme;
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  for (const List::Line& line : list.lines) {
+    if (line.kind != kind) continue;
+    switch (kind) {
+      case List::Line::Kind::trail:
+        set_colour(cr, theme.trail);
+        cairo_set_line_width(cr, style.trail_width());
+        break;
+      case List::Line::Kind::rail:
+        set_colour(cr, theme.text_muted);
+        cairo_set_line_width(cr, 1.5 * style.edge_width());
+        break;
+      case List::Line::Kind::spring:
+      case List::Line::Kind::dashpot:
+        set_colour(cr, theme.text);
+        cairo_set_line_width(cr, style.edge_width());
+        break;
+      case List::Line::Kind::spin:
+        set_colour(cr, theme.block_edge[0]);
+        cairo_set_line_width(cr, style.edge_width());
+        break;
+    }
+    path_through(cr, camera, line.points, false);
+    cairo_stroke(cr);
+  }
+}
+
+void paint_bodies(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List& list) {
+  const Theme& theme = *style.theme;
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  cairo_set_line_width(cr, style.edge_width());
+  // Larger bodies first, so a short crank under a long rod stays in sight.
+  std::vector<const List::Outline*> order;
+  for (const List::Outline& outline : list.outlines) order.push_back(&outline);
+  const auto size = [](const List::Outline* o) {
+    Bounds b;
+    for (const Vec2& p : o->points) b.include(p);
+    return (b.max - b.min).squaredNorm();
+  };
+  std::stable_sort(order.begin(), order.end(), [&](const auto* a, const auto* b) { return size(a) > size(b); });
+  for (const List::Outline* drawn : order) {
+    const List::Outline& outline = *drawn;
+    const std::size_t colour = outline.body % 2;
+    if (outline.shape == Shape::point) {
+      const Vec2 p = camera.to_pixels(outline.points.front());
+      cairo_new_path(cr);
+      cairo_arc(cr, p.x(), p.y(), 1.6 * style.com_radius(), 0, 2 * std::numbers::pi);
+    } else {
+      path_through(cr, camera, outline.points, true);
+    }
+    set_colour(cr, theme.block_fill[colour]);
+    cairo_fill_preserve(cr);
+    set_colour(cr, theme.block_edge[colour]);
+    cairo_stroke(cr);
+  }
+}
+
+// A triangle standing on a hatched base, apex at the point: the usual fixed support.
+void paint_ground(cairo_t* cr, const DrawStyle& style, const Vec2& at) {
+  const Theme& theme = *style.theme;
+  const double half = 7 * style.u, drop = 10 * style.u, hatch = 4 * style.u;
+  cairo_new_path(cr);
+  cairo_move_to(cr, at.x(), at.y());
+  cairo_line_to(cr, at.x() - 0.6 * half, at.y() + drop);
+  cairo_line_to(cr, at.x() + 0.6 * half, at.y() + drop);
+  cairo_close_path(cr);
+  set_colour(cr, theme.panel);
+  cairo_fill_preserve(cr);
+  set_colour(cr, theme.text_muted);
+  cairo_set_line_width(cr, style.edge_width());
+  cairo_stroke(cr);
+  cairo_move_to(cr, at.x() - half, at.y() + drop);
+  cairo_line_to(cr, at.x() + half, at.y() + drop);
+  for (double x = -half + hatch; x <= half + 1e-9; x += hatch) {
+    cairo_move_to(cr, at.x() + x, at.y() + drop);
+    cairo_line_to(cr, at.x() + x - hatch, at.y() + drop + hatch);
+  }
+  cairo_set_line_width(cr, 0.7 * style.edge_width());
+  cairo_stroke(cr);
+}
+
+// A small box around the slider's point, along the rail.
+void paint_guide(cairo_t* cr, const DrawStyle& style, const Vec2& at, const Vec2& direction_world) {
+  const Vec2 along = Vec2(direction_world.x(), -direction_world.y()).normalized();  // y flips in pixels
+  const Vec2 across(-along.y(), along.x());
+  const double a = 9 * style.u, b = 5 * style.u;
+  cairo_new_path(cr);
+  for (const auto& [s, t] : {std::pair{-a, -b}, {a, -b}, {a, b}, {-a, b}}) {
+    const Vec2 p = at + s * along + t * across;
+    cairo_line_to(cr, p.x(), p.y());
+  }
+  cairo_close_path(cr);
+  set_colour(cr, with_alpha(style.theme->pin_fill, 0.6));
+  cairo_fill_preserve(cr);
+  set_colour(cr, style.theme->pin_edge);
+  cairo_set_line_width(cr, style.edge_width());
+  cairo_stroke(cr);
+}
+
+void paint_markers(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List& list,
+                   List::Marker::Kind kind) {
+  for (const List::Marker& marker : list.markers) {
+    if (marker.kind != kind) continue;
+    const Vec2 at = camera.to_pixels(marker.at);
+    switch (kind) {
+      case List::Marker::Kind::ground:
+        paint_ground(cr, style, at);
+        break;
+      case List::Marker::Kind::pin:
+        paint_pin(cr, style, at);
+        break;
+      case List::Marker::Kind::guide:
+        paint_guide(cr, style, at, marker.direction);
+        break;
+    }
+  }
+}
+
+// The body names where the layout put them (at the centres, or beside a joint there).
+void paint_body_labels(cairo_t* cr, const DrawStyle& style, const List& list, const ForceLayout& layout) {
+  const text::Font font{style.small_size(), true};
+  for (std::size_t i = 0; i < list.labels.size() && i < layout.body_labels.size(); ++i) {
+    const Rect& box = layout.body_labels[i];
+    text::draw_centred_with_halo(cr, font, box.x + 0.5 * box.width, box.y + 0.5 * box.height,
+                                 list.labels[i].text.c_str(), style.theme->text, style.theme->background,
+                                 2.5 * style.u);
+  }
+}
+
+// The time (top right) and the run under it; the box they take.
+Rect paint_time(cairo_t* cr, const DrawStyle& style, double t, const std::string& run, int width) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "t = %.2f s", t);
+  const text::Font font{style.text_size(), true}, small{style.small_size(), false};
+  const double x = width - style.padding();
+  const double y = style.padding() + text::metrics(cr, font).ascent;
+  const Theme& theme = *style.theme;
+  text::draw_with_halo(cr, font, x, y, buffer, theme.text, theme.background, 3 * style.u, text::Align::right);
+  double wide = text::width(cr, font, "t = 000.00 s"), bottom = y + text::metrics(cr, font).descent;
+  if (!run.empty()) {
+    const double under = y + 1.4 * style.small_size();
+    text::draw_with_halo(cr, small, x, under, run.c_str(), theme.text_muted, theme.background, 3 * style.u,
+                         text::Align::right);
+    wide = std::max(wide, text::width(cr, small, run.c_str()));
+    bottom = under + text::metrics(cr, small).descent;
+  }
+  return {x - wide, style.padding(), wide, bottom - style.padding()};
+}
+
+}  // namespace
+
+void paint_mechanism_frame(cairo_t* cr, const DrawStyle& style, const Camera& camera, const MechanismDrawList& list,
+                           const MechanismLabels& labels, double t, int width, int height) {
+  paint_background(cr, style, width, height);
+  // Grid lines fixed in the world: a following camera shows the motion against them.
+  GridSpec grid;
+  grid.spacing = grid_spacing_for(camera, width, height);
+  paint_grid(cr, style, camera, grid, width, height);
+  cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
+  paint_lines(cr, style, camera, list, List::Line::Kind::trail);
+  paint_lines(cr, style, camera, list, List::Line::Kind::rail);
+  paint_lines(cr, style, camera, list, List::Line::Kind::spring);
+  paint_lines(cr, style, camera, list, List::Line::Kind::dashpot);
+  paint_bodies(cr, style, camera, list);
+  paint_lines(cr, style, camera, list, List::Line::Kind::spin);
+  paint_markers(cr, style, camera, list, List::Marker::Kind::ground);
+  paint_markers(cr, style, camera, list, List::Marker::Kind::guide);
+  paint_markers(cr, style, camera, list, List::Marker::Kind::pin);
+  std::vector<Rect> occupied{paint_time(cr, style, t, labels.run, width)};
+  if (!labels.title.empty()) {
+    const TitleLayout title = title_layout(cr, style, labels.title, width);
+    paint_title(cr, style, labels.title, title);
+    occupied.push_back(title.rect);
+  }
+  const ForceLayout layout = layout_forces(cr, style, camera, list, width, height, occupied);
+  paint_body_labels(cr, style, list, layout);
+  paint_forces(cr, style, camera, list, layout);
+}
+
+}  // namespace linkage

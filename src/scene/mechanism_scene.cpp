@@ -1,0 +1,465 @@
+#include "scene/mechanism_scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "core/error.hpp"
+
+namespace linkage {
+namespace {
+
+constexpr int kDiscSides = 48;
+constexpr int kCapSides = 8;               // per round end of a rod
+constexpr int kSpringTurns = 8;            // fixed, so the coil visibly stretches and compresses
+constexpr double kTypicalShare = 1.0 / 6;  // a typical frame's largest force arrow, of the extent
+constexpr double kCapFactor = 1.5;         // arrows longer than this times the typical are cut
+// "Typical": the upper quartile. The 90th percentile is still a peak for a four-bar
+// (9 N against a median of 2.3 N), which would leave most frames' arrows stubs.
+constexpr double kTypicalQuantile = 0.75;
+constexpr double kTypicalSweep = 1.25 * std::numbers::pi;  // a typical torque's arc
+constexpr double kLongestSweep = 1.75 * std::numbers::pi;
+
+double number(const sym::System& system, const GiNaC::ex& e) {
+  return sym::to_double(e.subs(system.constants()).subs(system.constants()).subs(system.parameter_values()));
+}
+
+double number(const sym::System& system, const std::optional<Quantity>& q) {
+  return q ? number(system, system.quantity(*q, false)) : 0.0;
+}
+
+Vec2 vector_of(const sym::System& system, const sym::Vec2& v) { return {number(system, v.x), number(system, v.y)}; }
+
+Vec2 rotated(double theta, const Vec2& v) {
+  const double c = std::cos(theta), s = std::sin(theta);
+  return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
+}
+
+BodyPoint point_of(const sym::System& system, const std::string& body, const std::string& point) {
+  const int index = system.mechanism().body_index(body);
+  if (index < 0) return {-1, vector_of(system, system.point_position(-1, point))};
+  return {index, vector_of(system, system.bodies()[static_cast<std::size_t>(index)].points.at(point))};
+}
+
+// The value below which `quantile` of `values` lie (by rank); 0 for none.
+double quantile_of(std::vector<double> values, double quantile) {
+  if (values.empty()) return 0;
+  const auto rank = static_cast<std::ptrdiff_t>(std::floor(quantile * static_cast<double>(values.size() - 1)));
+  std::nth_element(values.begin(), values.begin() + rank, values.end());
+  return values[static_cast<std::size_t>(rank)];
+}
+
+// A typical positive magnitude: the quantile, or the largest when most are zero.
+double typical_of(const std::vector<double>& values) {
+  const double typical = quantile_of(values, kTypicalQuantile);
+  return typical > 0 ? typical : (values.empty() ? 0 : *std::max_element(values.begin(), values.end()));
+}
+
+// The 1, 2 or 5 x 10^k nearest to `value` (> 0) on a log scale.
+double round_near(double value) {
+  const double decade = std::pow(10.0, std::floor(std::log10(value)));
+  double best = decade;
+  for (const double m : {2.0, 5.0, 10.0})
+    if (std::fabs(std::log(m * decade / value)) < std::fabs(std::log(best / value))) best = m * decade;
+  return best;
+}
+
+std::string names_of(const std::vector<std::pair<std::string, Vec2>>& points) {
+  std::string names;
+  for (const auto& [name, at] : points) names += (names.empty() ? "" : ", ") + name;
+  return names.empty() ? "(none)" : names;
+}
+
+}  // namespace
+
+bool MechanismGeometry::grounded() const {
+  for (const JointShape& j : joints)
+    if (j.points[0].body < 0 || j.points[1].body < 0) return true;
+  for (const SpringShape& s : springs)
+    if (s.ends[0].body < 0 || s.ends[1].body < 0) return true;
+  return false;
+}
+
+BodyPoint MechanismGeometry::resolve(const std::string& reference, const std::string& origin) const {
+  const auto dot = reference.find('.');
+  std::string body_names = kGround;
+  for (const BodyShape& b : bodies) body_names += ", " + b.name;
+  if (dot == std::string::npos)
+    throw Error::input(origin + ": '" + reference + "' is not BODY.POINT; bodies: " + body_names);
+  const std::string body = reference.substr(0, dot), point = reference.substr(dot + 1);
+  const std::vector<std::pair<std::string, Vec2>>* points = nullptr;
+  int index = -1;
+  if (body == kGround) {
+    points = &ground;
+  } else {
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+      if (bodies[i].name == body) {
+        points = &bodies[i].points;
+        index = static_cast<int>(i);
+      }
+  }
+  if (points == nullptr)
+    throw Error::input(origin + ": '" + body + "' is not a body of the mechanism; valid: " + body_names);
+  for (const auto& [name, at] : *points)
+    if (name == point) return {index, at};
+  throw Error::input(origin + ": '" + point + "' is not a point of " + body + "; valid: " + names_of(*points));
+}
+
+MechanismGeometry mechanism_geometry(const sym::System& system) {
+  const Mechanism& m = system.mechanism();
+  MechanismGeometry g;
+  for (std::size_t i = 0; i < m.bodies.size(); ++i) {
+    const Body& body = m.bodies[i];
+    MechanismGeometry::BodyShape shape;
+    shape.name = body.name;
+    shape.shape = body.shape;
+    shape.length = number(system, body.length);
+    shape.width = number(system, body.width);
+    shape.radius = number(system, body.radius);
+    for (const NamedPoint& p : body.points)
+      shape.points.emplace_back(p.name, vector_of(system, system.bodies()[i].points.at(p.name)));
+    g.bodies.push_back(std::move(shape));
+  }
+  for (const NamedPoint& p : m.ground_points)
+    g.ground.emplace_back(p.name, vector_of(system, system.point_position(-1, p.name)));
+  for (const Joint& j : m.joints) {
+    MechanismGeometry::JointShape shape;
+    shape.name = j.name;
+    shape.type = j.type;
+    for (std::size_t k = 0; k < 2; ++k) shape.points[k] = point_of(system, j.bodies[k], j.points[k]);
+    if (j.axis) {
+      const Vec2 axis{number(system, system.quantity(j.axis->x, false)),
+                      number(system, system.quantity(j.axis->y, false))};
+      if (axis.norm() > 0) shape.axis = axis.normalized();
+    }
+    g.joints.push_back(std::move(shape));
+  }
+  for (const Spring& s : m.springs)
+    g.springs.push_back({s.name,
+                         {point_of(system, s.between[0].body, s.between[0].point),
+                          point_of(system, s.between[1].body, s.between[1].point)},
+                         number(system, s.damping)});
+  // The loads' values keep t: constants and parameters substituted once, t per frame.
+  const auto in_time = [&](const Quantity& q) {
+    return system.quantity(q, true).subs(system.constants()).subs(system.constants()).subs(system.parameter_values());
+  };
+  for (const AppliedForce& f : m.forces)
+    g.forces.push_back({point_of(system, f.body, f.point), in_time(f.value.x), in_time(f.value.y)});
+  for (const AppliedTorque& t : m.torques) g.torques.push_back({m.body_index(t.body), in_time(t.value)});
+  g.time = system.time();
+  return g;
+}
+
+Vec2 world_point(const std::vector<double>& pose, const BodyPoint& p) {
+  if (p.body < 0) return p.local;
+  const auto b = 3 * static_cast<std::size_t>(p.body);
+  return Vec2(pose[b], pose[b + 1]) + rotated(pose[b + 2], p.local);
+}
+
+std::vector<Vec2> body_outline(const MechanismGeometry::BodyShape& body, const std::vector<double>& pose,
+                               std::size_t index) {
+  const Vec2 centre(pose[3 * index], pose[3 * index + 1]);
+  const double theta = pose[3 * index + 2];
+  std::vector<Vec2> local;
+  constexpr double pi = std::numbers::pi;
+  switch (body.shape) {
+    case Shape::rectangle: {
+      const double a = 0.5 * body.length, b = 0.5 * body.width;
+      local = {{-a, -b}, {a, -b}, {a, b}, {-a, b}};
+      break;
+    }
+    case Shape::rod: {
+      // Round ends inside the length, so the outline spans exactly the rod's length.
+      const double r = std::min(body.length / 24, 0.5 * body.length), a = 0.5 * body.length - r;
+      for (int k = 0; k <= kCapSides; ++k) {
+        const double angle = -0.5 * pi + pi * k / kCapSides;
+        local.emplace_back(a + r * std::cos(angle), r * std::sin(angle));
+      }
+      for (int k = 0; k <= kCapSides; ++k) {
+        const double angle = 0.5 * pi + pi * k / kCapSides;
+        local.emplace_back(-a + r * std::cos(angle), r * std::sin(angle));
+      }
+      break;
+    }
+    case Shape::disc:
+      for (int k = 0; k < kDiscSides; ++k) {
+        const double angle = 2 * pi * k / kDiscSides;
+        local.emplace_back(body.radius * std::cos(angle), body.radius * std::sin(angle));
+      }
+      break;
+    case Shape::point:
+      local = {Vec2::Zero()};
+      break;
+  }
+  for (Vec2& p : local) p = centre + rotated(theta, p);
+  return local;
+}
+
+std::string format_quantity(double value, const char* unit) {
+  char buffer[48];
+  const double size = std::fabs(value);
+  if (size != 0 && (size < 1e-3 || size >= 1e5))
+    std::snprintf(buffer, sizeof buffer, "%.2e %s", value, unit);
+  else
+    std::snprintf(buffer, sizeof buffer, "%.3g %s", value, unit);
+  return buffer;
+}
+
+void MechanismDrawList::clear() {
+  outlines.clear();
+  lines.clear();
+  markers.clear();
+  arrows.clear();
+  torques.clear();
+  labels.clear();
+}
+
+MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion& motion, std::vector<BodyPoint> trails,
+                               double trail_seconds)
+    : geometry_(std::move(geometry)), motion_(motion), trails_(std::move(trails)), trail_seconds_(trail_seconds) {
+  const std::size_t joints = geometry_.joints.size(), samples = motion_.samples.size();
+  rail_span_.assign(joints, {1e300, -1e300});
+  spring_span_.assign(geometry_.springs.size(), {1e300, 0});
+  applied_.assign(samples, {});
+  torque_.assign(samples, {});
+  // Each sample's largest force (joint or applied) and torque: the scales' statistics.
+  std::vector<double> largest_force(samples, 0), largest_torque(samples, 0);
+  for (std::size_t k = 0; k < samples; ++k) {
+    const eval::MechanismSample& s = motion_.samples[k];
+    const Vec2 c = centroid(k);
+    for (std::size_t i = 0; i < geometry_.bodies.size(); ++i)
+      for (const Vec2& p : body_outline(geometry_.bodies[i], s.pose, i)) {
+        bounds_.include(p);
+        reach_ = std::max(reach_, (p - c).norm());
+      }
+    for (std::size_t j = 0; j < joints; ++j) {
+      const MechanismGeometry::JointShape& joint = geometry_.joints[j];
+      if (joint.points[0].body >= 0 || joint.points[1].body >= 0)
+        largest_force[k] = std::max(largest_force[k], std::hypot(s.force[3 * j], s.force[3 * j + 1]));
+      if (joint.type != JointType::slider) continue;
+      const Vec2 p0 = world_point(s.pose, joint.points[0]), p1 = world_point(s.pose, joint.points[1]);
+      const double theta0 =
+          joint.points[0].body < 0 ? 0 : s.pose[3 * static_cast<std::size_t>(joint.points[0].body) + 2];
+      const double along = (p1 - p0).dot(rotated(theta0, joint.axis));
+      rail_span_[j] = {std::min(rail_span_[j][0], along), std::max(rail_span_[j][1], along)};
+    }
+    for (std::size_t i = 0; i < geometry_.springs.size(); ++i) {
+      const auto& ends = geometry_.springs[i].ends;
+      const double length = (world_point(s.pose, ends[1]) - world_point(s.pose, ends[0])).norm();
+      spring_span_[i] = {std::min(spring_span_[i][0], length), std::max(spring_span_[i][1], length)};
+    }
+    const GiNaC::exmap at{{geometry_.time, motion_.times[k]}};
+    for (const MechanismGeometry::ForceShape& f : geometry_.forces) {
+      applied_[k].emplace_back(sym::evaluate(f.x, at), sym::evaluate(f.y, at));
+      largest_force[k] = std::max(largest_force[k], applied_[k].back().norm());
+    }
+    for (const MechanismGeometry::TorqueShape& t : geometry_.torques) {
+      torque_[k].push_back(sym::evaluate(t.value, at));
+      largest_torque[k] = std::max(largest_torque[k], std::fabs(torque_[k].back()));
+    }
+  }
+  for (const auto& [name, at] : geometry_.ground) bounds_.include(at);
+  // The trails' points too: a point off its body's outline may swing past it.
+  for (const std::vector<double>& pose : motion_.trail_poses)
+    for (const BodyPoint& trail : trails_) bounds_.include(world_point(pose, trail));
+  if (geometry_.grounded() && !bounds_.empty())
+    extent_ = std::max(bounds_.max.x() - bounds_.min.x(), bounds_.max.y() - bounds_.min.y());
+  else
+    extent_ = 2 * reach_;
+  if (!(extent_ > 0)) extent_ = 1;
+
+  const double typical_force = typical_of(largest_force);
+  if (typical_force > 0 && std::isfinite(typical_force)) {
+    force_scale_ = kTypicalShare * extent_ / typical_force;
+    arrow_cap_ = kCapFactor * kTypicalShare * extent_;
+    legend_.newtons = round_near(typical_force);
+    legend_.metres = legend_.newtons * force_scale_;
+    legend_.value = format_quantity(legend_.newtons, "N");
+    for (const MechanismGeometry::JointShape& joint : geometry_.joints)
+      legend_.joint = legend_.joint || joint.points[0].body >= 0 || joint.points[1].body >= 0;
+    legend_.applied = !geometry_.forces.empty();
+    const double largest = *std::max_element(largest_force.begin(), largest_force.end());
+    legend_.cut = largest * force_scale_ > arrow_cap_;
+  }
+  const double typical_torque = typical_of(largest_torque);
+  if (typical_torque > 0 && std::isfinite(typical_torque)) torque_scale_ = kTypicalSweep / typical_torque;
+
+  view_bounds_ = bounds_;
+  view_reach_ = reach_;
+  MechanismDrawList list;
+  for (std::size_t k = 0; (force_scale_ > 0 || torque_scale_ > 0) && k < samples; ++k) {
+    frame(k, list);
+    const Vec2 c = centroid(k);
+    const auto include = [&](const Vec2& p) {
+      view_bounds_.include(p);
+      view_reach_ = std::max(view_reach_, (p - c).norm());
+    };
+    for (const MechanismDrawList::Arrow& arrow : list.arrows) include(arrow.tail + arrow.vector);
+    for (const MechanismDrawList::Torque& torque : list.torques) {
+      include(torque.centre - Vec2(torque.radius, torque.radius));
+      include(torque.centre + Vec2(torque.radius, torque.radius));
+    }
+  }
+}
+
+Vec2 MechanismScene::centroid(std::size_t k) const {
+  const std::vector<double>& pose = motion_.samples[k].pose;
+  Vec2 sum = Vec2::Zero();
+  const std::size_t n = geometry_.bodies.size();
+  for (std::size_t i = 0; i < n; ++i) sum += Vec2(pose[3 * i], pose[3 * i + 1]);
+  return n == 0 ? sum : sum / static_cast<double>(n);
+}
+
+MechanismDrawList::Arrow MechanismScene::force_arrow(MechanismDrawList::Arrow::Kind kind, const Vec2& at,
+                                                     const Vec2& force, std::string label) const {
+  MechanismDrawList::Arrow arrow{kind, at, force_scale_ * force, force.norm(), false, std::move(label)};
+  const double length = arrow.vector.norm();
+  if (length > arrow_cap_) {
+    // Cut to the cap; the label then says the value the length no longer shows.
+    arrow.vector *= arrow_cap_ / length;
+    arrow.cut = true;
+    if (kind == MechanismDrawList::Arrow::Kind::joint) arrow.label += ": " + format_quantity(arrow.force, "N");
+  }
+  return arrow;
+}
+
+void MechanismScene::add_spring(const MechanismGeometry::SpringShape& spring, std::size_t index,
+                                const std::vector<double>& pose, MechanismDrawList& out) const {
+  using Kind = MechanismDrawList::Line::Kind;
+  // Straight leads a sixth of the length at each end, a zig-zag of fixed turns between,
+  // as wide as a twentieth of the mechanism. With damping, the coil runs beside a
+  // dashpot, joined to it by a bar across each end.
+  const Vec2 a = world_point(pose, spring.ends[0]), b = world_point(pose, spring.ends[1]);
+  const Vec2 along = b - a;
+  const double length = along.norm();
+  MechanismDrawList::Line coil{Kind::spring, {a}};
+  if (length > 0) {
+    const Vec2 unit = along / length, normal(-unit.y(), unit.x());
+    const bool damped = spring.damping > 0;
+    const double offset = damped ? extent_ / 30 : 0.0;
+    const double amplitude = damped ? 0.55 * offset : extent_ / 40;
+    const Vec2 start = a + along / 6, end = b - along / 6, side = offset * normal;
+    coil.points.push_back(start);
+    if (damped) coil.points.push_back(start + side);
+    const int zigs = 2 * kSpringTurns;
+    for (int z = 0; z < zigs; ++z) {
+      const double f = (z + 0.5) / zigs;
+      coil.points.push_back(start + side + f * (end - start) + (z % 2 == 0 ? amplitude : -amplitude) * normal);
+    }
+    if (damped) coil.points.push_back(end + side);
+    coil.points.push_back(end);
+    if (damped) {
+      // The cylinder hangs from the first bar, the piston from the second; sized on the
+      // lengths the motion takes so the plate stays inside while it slides.
+      const Vec2 s0 = start - side, e0 = end - side;
+      const double branch = (end - start).norm();
+      const double shortest = 2.0 / 3 * spring_span_[index][0], longest = 2.0 / 3 * spring_span_[index][1];
+      const double cylinder = 0.55 * shortest, half = 0.7 * offset;
+      const double rod = 0.5 * (shortest + longest) - 0.5 * cylinder;
+      const double plate = std::clamp(branch - rod, 0.15 * cylinder, 0.9 * cylinder);
+      out.lines.push_back({Kind::dashpot, {start, s0}});
+      out.lines.push_back({Kind::dashpot, {end, e0}});
+      out.lines.push_back({Kind::dashpot,
+                           {s0 + cylinder * unit + half * normal, s0 + half * normal, s0 - half * normal,
+                            s0 + cylinder * unit - half * normal}});
+      out.lines.push_back({Kind::dashpot, {e0, s0 + plate * unit}});
+      out.lines.push_back(
+          {Kind::dashpot, {s0 + plate * unit + 0.75 * half * normal, s0 + plate * unit - 0.75 * half * normal}});
+    }
+  }
+  coil.points.push_back(b);
+  out.lines.push_back(std::move(coil));
+}
+
+void MechanismScene::add_loads(std::size_t k, MechanismDrawList& out) const {
+  const std::vector<double>& pose = motion_.samples[k].pose;
+  const std::size_t forces = geometry_.forces.size();
+  for (std::size_t i = 0; force_scale_ > 0 && i < forces; ++i) {
+    const Vec2 force = applied_[k][i];
+    std::string label = "F";
+    if (forces > 1) label.append(std::to_string(i + 1));
+    label.append(" = ").append(format_quantity(force.norm(), "N"));
+    out.arrows.push_back(force_arrow(MechanismDrawList::Arrow::Kind::applied, world_point(pose, geometry_.forces[i].at),
+                                     force, std::move(label)));
+  }
+  for (std::size_t i = 0; torque_scale_ > 0 && i < geometry_.torques.size(); ++i) {
+    const double torque = torque_[k][i];
+    if (torque == 0) continue;
+    const auto body = static_cast<std::size_t>(geometry_.torques[i].body);
+    const MechanismGeometry::BodyShape& shape = geometry_.bodies[body];
+    // About a third of the body's size, but readable on a point mass and not past a long rod.
+    const double size = std::max({shape.length, shape.width, 2 * shape.radius});
+    const double radius = std::clamp(0.3 * size, extent_ / 30, extent_ / 12);
+    const double sweep = std::copysign(std::min(torque_scale_ * std::fabs(torque), kLongestSweep), torque);
+    // Centred on the body's own "up", so the arc turns with it.
+    const double start = pose[3 * body + 2] + 0.5 * std::numbers::pi - 0.5 * sweep;
+    std::string label = "τ";
+    if (geometry_.torques.size() > 1) label.append(std::to_string(i + 1));
+    label.append(" = ").append(format_quantity(std::fabs(torque), "N m"));
+    out.torques.push_back({Vec2(pose[3 * body], pose[3 * body + 1]), radius, start, sweep, std::move(label)});
+  }
+}
+
+void MechanismScene::add_trails(std::size_t k, MechanismDrawList& out) const {
+  const double now = motion_.times[k];
+  const bool fine = !motion_.trail_times.empty();
+  const std::vector<double>& times = fine ? motion_.trail_times : motion_.times;
+  // The samples in [now - trail_seconds, now], finer than the frames when the motion has them.
+  const auto first = std::lower_bound(times.begin(), times.end(), now - trail_seconds_ - 1e-9);
+  const auto last = std::upper_bound(times.begin(), times.end(), now + 1e-9);
+  for (const BodyPoint& trail : trails_) {
+    MechanismDrawList::Line line{MechanismDrawList::Line::Kind::trail, {}};
+    for (auto it = first; it < last; ++it) {
+      const auto i = static_cast<std::size_t>(it - times.begin());
+      line.points.push_back(world_point(fine ? motion_.trail_poses[i] : motion_.samples[i].pose, trail));
+    }
+    out.lines.push_back(std::move(line));
+  }
+}
+
+void MechanismScene::frame(std::size_t k, MechanismDrawList& out) const {
+  out.clear();
+  out.legend = legend_;
+  const eval::MechanismSample& s = motion_.samples[k];
+  const std::vector<double>& pose = s.pose;
+  for (std::size_t i = 0; i < geometry_.bodies.size(); ++i) {
+    const MechanismGeometry::BodyShape& body = geometry_.bodies[i];
+    out.outlines.push_back({i, body_outline(body, pose, i), body.shape});
+    const Vec2 centre(pose[3 * i], pose[3 * i + 1]);
+    if (body.shape == Shape::disc)  // a radius along body x, so the spin shows
+      out.lines.push_back(
+          {MechanismDrawList::Line::Kind::spin, {centre, centre + rotated(pose[3 * i + 2], {body.radius, 0.0})}});
+    out.labels.push_back({centre, body.name});
+  }
+  for (const auto& [name, at] : geometry_.ground) out.markers.push_back({MechanismDrawList::Marker::Kind::ground, at});
+  for (std::size_t i = 0; i < geometry_.springs.size(); ++i) add_spring(geometry_.springs[i], i, pose, out);
+
+  for (std::size_t j = 0; j < geometry_.joints.size(); ++j) {
+    const MechanismGeometry::JointShape& joint = geometry_.joints[j];
+    const Vec2 p0 = world_point(pose, joint.points[0]), p1 = world_point(pose, joint.points[1]);
+    if (joint.type == JointType::slider) {
+      const double theta0 = joint.points[0].body < 0 ? 0 : pose[3 * static_cast<std::size_t>(joint.points[0].body) + 2];
+      const Vec2 axis = rotated(theta0, joint.axis);
+      const double margin = 0.1 * extent_;
+      out.lines.push_back({MechanismDrawList::Line::Kind::rail,
+                           {p0 + (rail_span_[j][0] - margin) * axis, p0 + (rail_span_[j][1] + margin) * axis}});
+      out.markers.push_back({MechanismDrawList::Marker::Kind::guide, p1, axis});
+    } else {
+      out.markers.push_back({MechanismDrawList::Marker::Kind::pin, p0});
+    }
+    if (force_scale_ <= 0) continue;
+    const Vec2 force(s.force[3 * j], s.force[3 * j + 1]);
+    for (std::size_t side = 0; side < 2; ++side) {
+      const int body = joint.points[side].body;
+      if (body < 0) continue;  // the ground's reaction is not drawn
+      out.arrows.push_back(force_arrow(MechanismDrawList::Arrow::Kind::joint, side == 0 ? p0 : p1,
+                                       side == 0 ? force : Vec2(-force),
+                                       joint.name + " on " + geometry_.bodies[static_cast<std::size_t>(body)].name));
+    }
+  }
+  add_loads(k, out);
+  add_trails(k, out);
+}
+
+}  // namespace linkage

@@ -1,0 +1,190 @@
+#pragma once
+// What a frame of any mechanism shows, in world units (metres, y up): the numbers of the
+// mechanism's drawing (shapes, points, joints, springs, loads) taken once from the System,
+// and a sampled motion turned frame by frame into outlines, markers, coils, dashpots,
+// force and torque arrows and trails. The homework's own scene (scene_builder) is
+// separate and unchanged.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "core/types.hpp"
+#include "evaluate/mechanism_dynamics.hpp"
+#include "model/mechanism.hpp"
+#include "scene/motion.hpp"
+#include "symbolic/system.hpp"
+
+namespace linkage {
+
+/// A point of a body in its frame, or of the ground (body -1) in the world.
+struct BodyPoint {
+  int body = -1;
+  Vec2 local = Vec2::Zero();
+};
+
+struct MechanismGeometry {
+  struct BodyShape {
+    std::string name;
+    Shape shape = Shape::point;
+    double length = 0, width = 0, radius = 0;          // m; those the shape has, else 0
+    std::vector<std::pair<std::string, Vec2>> points;  // body frame
+  };
+  struct JointShape {
+    std::string name;
+    JointType type = JointType::pin;
+    std::array<BodyPoint, 2> points;  // the joint's point on bodies[0] and bodies[1]
+    Vec2 axis = Vec2::UnitX();        // slider: unit, in the frame of bodies[0]
+  };
+  struct SpringShape {
+    std::string name;
+    std::array<BodyPoint, 2> ends;
+    double damping = 0;  // N s/m; > 0 draws a dashpot beside the coil
+  };
+  /// An applied force ([[force]]): its point and value, world frame, N, in t only.
+  struct ForceShape {
+    BodyPoint at;
+    GiNaC::ex x, y;
+  };
+  /// An applied torque ([[torque]]) on a body, N m, in t only.
+  struct TorqueShape {
+    int body = 0;
+    GiNaC::ex value;
+  };
+  std::vector<BodyShape> bodies;
+  std::vector<std::pair<std::string, Vec2>> ground;  // world
+  std::vector<JointShape> joints;
+  std::vector<SpringShape> springs;
+  std::vector<ForceShape> forces;
+  std::vector<TorqueShape> torques;
+  GiNaC::ex time;  // the symbol t of the loads' values
+
+  /// Whether any joint or spring holds the mechanism to the ground (else it floats).
+  [[nodiscard]] bool grounded() const;
+  /// `body.point` ("3.B", "ground.O") resolved; Error::input naming `origin` and the
+  /// valid bodies or points otherwise.
+  [[nodiscard]] BodyPoint resolve(const std::string& reference, const std::string& origin) const;
+};
+
+/// The drawing's numbers, evaluated at the mechanism's parameters.
+[[nodiscard]] MechanismGeometry mechanism_geometry(const sym::System& system);
+
+/// The world position of `p` for per-body poses (x, y, theta each).
+[[nodiscard]] Vec2 world_point(const std::vector<double>& pose, const BodyPoint& p);
+/// A body's outline in the world, counter-clockwise (rectangle: 4 corners; rod: a bar
+/// of width length/12 with round ends; disc: a polygon on its rim; point: its centre).
+[[nodiscard]] std::vector<Vec2> body_outline(const MechanismGeometry::BodyShape& body, const std::vector<double>& pose,
+                                             std::size_t index);
+
+/// One frame's drawing, world units. Markers are drawn at a fixed size in pixels.
+struct MechanismDrawList {
+  struct Outline {
+    std::size_t body = 0;
+    std::vector<Vec2> points;  // closed polygon (one point for a point mass)
+    Shape shape = Shape::point;
+  };
+  struct Line {
+    enum class Kind { spin, rail, spring, dashpot, trail } kind = Kind::rail;
+    std::vector<Vec2> points;
+  };
+  struct Marker {
+    enum class Kind { ground, pin, guide } kind = Kind::pin;
+    Vec2 at = Vec2::Zero();
+    Vec2 direction = Vec2::UnitX();  // guide: along the rail
+  };
+  struct Arrow {
+    enum class Kind { joint, applied } kind = Kind::joint;
+    Vec2 tail = Vec2::Zero(), vector = Vec2::Zero();  // vector in metres: force x scale, or cut
+    double force = 0;                                 // N, the magnitude
+    bool cut = false;                                 // drawn shorter than the scale says
+    std::string label;                                // "B on 3", "F = 0.5 N"
+  };
+  /// An applied torque: an arc about the body's centre, counter-clockwise for sweep > 0,
+  /// its head at start + sweep.
+  struct Torque {
+    Vec2 centre = Vec2::Zero();
+    double radius = 0, start = 0, sweep = 0;  // m, rad
+    std::string label;                        // "τ = 0.01 N m"
+  };
+  struct Label {
+    Vec2 at = Vec2::Zero();
+    std::string text;
+  };
+  /// What an arrow's length means: a reference arrow of `metres` stands for `newtons`.
+  struct Legend {
+    double newtons = 0, metres = 0;  // 0: no force arrows in the clip
+    std::string value;               // "2 N"
+    bool joint = false, applied = false;
+    bool cut = false;  // some arrow of the clip is cut
+  };
+  std::vector<Outline> outlines;
+  std::vector<Line> lines;
+  std::vector<Marker> markers;
+  std::vector<Arrow> arrows;
+  std::vector<Torque> torques;
+  std::vector<Label> labels;  // body names at their centres
+  Legend legend;
+  void clear();
+};
+
+/// The sampled motion: one sample per frame time, increasing; and, for trails, poses at
+/// finer times (increasing, the frame times among them; empty: the frames' poses).
+struct MechanismMotion {
+  std::vector<double> times;
+  std::vector<eval::MechanismSample> samples;
+  std::vector<double> trail_times;
+  std::vector<std::vector<double>> trail_poses;
+};
+
+/// "0.42 N", "23 N": three significant digits at most, no exponent in the usual range.
+[[nodiscard]] std::string format_quantity(double value, const char* unit);
+
+/// A whole clip's frames: scales and camera bounds come from every sample.
+class MechanismScene {
+ public:
+  /// `trails`: points whose path over the last `trail_seconds` each frame draws.
+  MechanismScene(MechanismGeometry geometry, const MechanismMotion& motion, std::vector<BodyPoint> trails,
+                 double trail_seconds = 2.0);
+
+  [[nodiscard]] const MechanismGeometry& geometry() const { return geometry_; }
+  /// Every outline point over the motion and the ground points (the fixed camera's view).
+  [[nodiscard]] const Bounds& bounds() const { return bounds_; }
+  /// The mean of the bodies' centres at sample k (the floating camera's centre).
+  [[nodiscard]] Vec2 centroid(std::size_t k) const;
+  /// The largest distance of an outline point from the centroid over the motion.
+  [[nodiscard]] double reach() const { return reach_; }
+  /// bounds() and reach() grown to take in the force arrows too (what the camera shows).
+  [[nodiscard]] const Bounds& view_bounds() const { return view_bounds_; }
+  [[nodiscard]] double view_reach() const { return view_reach_; }
+  /// Metres per newton of the force arrows (0 without forces): the upper quartile of the
+  /// frames' largest force is a sixth of the extent, so a typical frame reads.
+  [[nodiscard]] double force_scale() const { return force_scale_; }
+  /// The longest arrow drawn, m: a longer one is cut to it (1.5 the typical length).
+  [[nodiscard]] double arrow_cap() const { return arrow_cap_; }
+  /// The larger side of bounds(), or 2 reach() for a floating mechanism.
+  [[nodiscard]] double extent() const { return extent_; }
+
+  /// The drawing of sample k.
+  void frame(std::size_t k, MechanismDrawList& out) const;
+
+ private:
+  MechanismGeometry geometry_;
+  const MechanismMotion& motion_;
+  std::vector<BodyPoint> trails_;
+  double trail_seconds_;
+  Bounds bounds_, view_bounds_;
+  double reach_ = 0, view_reach_ = 0, force_scale_ = 0, arrow_cap_ = 0, torque_scale_ = 0, extent_ = 1;
+  MechanismDrawList::Legend legend_;
+  std::vector<std::array<double, 2>> rail_span_;    // per joint: slider travel range along the axis
+  std::vector<std::array<double, 2>> spring_span_;  // per spring: shortest and longest length
+  std::vector<std::vector<Vec2>> applied_;          // per sample, per applied force: N
+  std::vector<std::vector<double>> torque_;         // per sample, per applied torque: N m
+
+  void add_spring(const MechanismGeometry::SpringShape& spring, std::size_t index, const std::vector<double>& pose,
+                  MechanismDrawList& out) const;
+  void add_loads(std::size_t k, MechanismDrawList& out) const;
+  void add_trails(std::size_t k, MechanismDrawList& out) const;
+  [[nodiscard]] MechanismDrawList::Arrow force_arrow(MechanismDrawList::Arrow::Kind kind, const Vec2& at,
+                                                     const Vec2& force, std::string label) const;
+};
+
+}  // namespace linkage

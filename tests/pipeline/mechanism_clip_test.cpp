@@ -1,0 +1,437 @@
+// Any mechanism's clip: its geometry, its camera, force arrows with their labels and
+// legend, loads, trails, stills of every shipped mechanism and a short MP4, decoded back.
+#include "pipeline/mechanism_clip.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <set>
+
+#include "core/error.hpp"
+#include "encode/encode_test_support.hpp"
+#include "integrate/mechanism_simulation.hpp"
+#include "model/mechanism_toml.hpp"
+#include "render/cairo_util.hpp"
+#include "render/mechanism_forces.hpp"
+#include "scene/mechanism_scene.hpp"
+#include "support/test_support.hpp"
+#include "symbolic/loop_closure.hpp"
+
+namespace linkage {
+namespace {
+
+MechanismClip small_still(const std::string& out) {
+  MechanismClip clip;
+  clip.settings.width = 160;
+  clip.settings.height = 90;
+  clip.settings.fps = 30;
+  clip.settings.at = 0.5;
+  clip.simulation.duration = 0.5;
+  clip.theme = load_theme("light", {}, "theme");
+  clip.out = out;
+  return clip;
+}
+
+MechanismMotion sampled(const sym::System& system, double duration, double step) {
+  MechanismSimulation simulation(system, sym::checked_initial_state(system).state, [&] {
+    SimulationOptions o;
+    o.duration = duration;
+    return o;
+  }());
+  MechanismMotion motion;
+  const auto count = static_cast<long>(std::lround(duration / step));
+  for (long i = 0; i <= count; ++i) {
+    const double t = std::min(duration, static_cast<double>(i) * step);
+    motion.times.push_back(t);
+    motion.samples.emplace_back();
+    simulation.sample(t, simulation.state_at(t), motion.samples.back());
+  }
+  return motion;
+}
+
+TEST(MechanismClip, EveryShippedMechanismGivesAStillThatIsNotBlank) {
+  test::TempDir dir;
+  std::size_t written = 0;
+  for (const std::string& name : shipped_mechanism_names()) {
+    SCOPED_TRACE(name);
+    const sym::System system(load_mechanism(name));
+    const auto out = dir / (name + ".png");
+    const ClipResult result =
+        produce_mechanism_clip(system, sym::checked_initial_state(system).state, small_still(out.string()));
+    EXPECT_EQ(result.stats.png_files_written, 1);
+    ASSERT_TRUE(std::filesystem::exists(out));
+    const test::DecodedPng png = test::decode_png(out);
+    ASSERT_EQ(png.width, 160U);
+    ASSERT_EQ(png.height, 90U);
+    // Distinct colours, and the bodies' fills in the middle of the frame, not at the edge.
+    std::set<std::uint32_t> colours, inner;
+    for (std::uint32_t y = 0; y < png.height; ++y)
+      for (std::uint32_t x = 0; x < png.width; ++x) {
+        const std::uint8_t* p = &png.rgba[4 * (y * png.width + x)];
+        const auto colour = static_cast<std::uint32_t>(p[0] << 16 | p[1] << 8 | p[2]);
+        colours.insert(colour);
+        if (x > png.width / 8 && x < 7 * png.width / 8 && y > png.height / 8 && y < 7 * png.height / 8)
+          inner.insert(colour);
+      }
+    EXPECT_GT(colours.size(), 20U);
+    EXPECT_GT(inner.size(), 10U);
+    // No temporary left beside it.
+    EXPECT_EQ(test::entries(dir.path()).size(), ++written);
+  }
+}
+
+TEST(MechanismClip, FourBarClipDecodesWithEveryFrame) {
+  test::TempDir dir;
+  const sym::System system(load_mechanism("four-bar"));
+  MechanismClip clip;
+  clip.settings.width = 320;
+  clip.settings.height = 180;
+  clip.settings.fps = 30;
+  clip.settings.duration = 0.5;
+  clip.simulation.duration = 0.5;
+  clip.theme = load_theme("light", {}, "theme");
+  clip.trails = {"3.B"};
+  clip.out = dir / "four-bar.mp4";
+  long drawn = 0;
+  const ClipResult result = produce_mechanism_clip(system, sym::checked_initial_state(system).state, clip,
+                                                   [&](ClipStage stage, long done, long) {
+                                                     if (stage == ClipStage::draw) drawn = done;
+                                                   });
+  EXPECT_EQ(drawn, 15);
+  EXPECT_TRUE(result.stats.encoder_opened);
+  const test::DecodedVideo video = test::decode_video(*clip.out);
+  EXPECT_EQ(video.times.size(), 15U);
+  EXPECT_NEAR(video.stream_duration, 0.5, 1e-9);
+  EXPECT_EQ(video.width, 320);
+  EXPECT_EQ(video.height, 180);
+  EXPECT_EQ(test::entries(dir.path()), std::vector<std::string>{"four-bar.mp4"});
+}
+
+TEST(MechanismClip, RejectsVectorStillsAndUnknownTrailPoints) {
+  test::TempDir dir;
+  const sym::System system(load_mechanism("four-bar"));
+  MechanismClip clip = small_still((dir / "x.svg").string());
+  test::expect_error([&] { clip.validate(system); }, ExitCode::bad_input, ".mp4 or .png");
+  clip.out = dir / "x.png";
+  clip.trails = {"3.Q"};
+  test::expect_error([&] { clip.validate(system); }, ExitCode::bad_input, "valid: A, B");
+  clip.trails = {"9.A"};
+  test::expect_error([&] { clip.validate(system); }, ExitCode::bad_input, "valid: ground, 2, 3, 4");
+  EXPECT_TRUE(test::entries(dir.path()).empty());
+}
+
+TEST(MechanismScene, RodOutlineSpansItsLength) {
+  const sym::System system(load_mechanism("four-bar"));
+  const MechanismGeometry geometry = mechanism_geometry(system);
+  ASSERT_EQ(geometry.bodies[1].shape, Shape::rod);
+  EXPECT_DOUBLE_EQ(geometry.bodies[1].length, 0.3);
+  const std::vector<double> pose = {0, 0, 0, 0.1, -0.2, 0.7, 0, 0, 0};
+  const std::vector<Vec2> outline = body_outline(geometry.bodies[1], pose, 1);
+  const Vec2 axis(std::cos(0.7), std::sin(0.7));
+  double lo = 1e9, hi = -1e9, wide = 0;
+  for (const Vec2& p : outline) {
+    const Vec2 r = p - Vec2(0.1, -0.2);
+    lo = std::min(lo, r.dot(axis));
+    hi = std::max(hi, r.dot(axis));
+    wide = std::max(wide, std::fabs(r.dot(Vec2(-axis.y(), axis.x()))));
+  }
+  EXPECT_NEAR(hi - lo, 0.3, 1e-12);
+  EXPECT_NEAR(2 * wide, 0.3 / 12, 1e-12);
+}
+
+TEST(MechanismScene, SpringRunsBetweenItsAttachmentPoints) {
+  const sym::System system(load_mechanism("spring-pendulum"));
+  const MechanismMotion motion = sampled(system, 0.3, 0.1);
+  const MechanismScene scene(mechanism_geometry(system), motion, {});
+  EXPECT_TRUE(scene.geometry().grounded());
+  MechanismDrawList list;
+  for (std::size_t k = 0; k < motion.samples.size(); ++k) {
+    scene.frame(k, list);
+    const auto& pose = motion.samples[k].pose;
+    int springs = 0;
+    for (const MechanismDrawList::Line& line : list.lines) {
+      if (line.kind != MechanismDrawList::Line::Kind::spring) continue;
+      ++springs;
+      EXPECT_NEAR((line.points.front() - Vec2(0, 0)).norm(), 0, 1e-12);             // ground.O
+      EXPECT_NEAR((line.points.back() - Vec2(pose[0], pose[1])).norm(), 0, 1e-12);  // 1.C, the centre
+    }
+    EXPECT_EQ(springs, 1);
+  }
+}
+
+TEST(MechanismScene, FixedViewHoldsEveryCornerOverTheMotion) {
+  for (const char* name : {"four-bar", "slider-crank", "triple-pendulum"}) {
+    SCOPED_TRACE(name);
+    const sym::System system(load_mechanism(name));
+    const MechanismMotion motion = sampled(system, 1.0, 0.05);
+    const MechanismScene scene(mechanism_geometry(system), motion, {});
+    ASSERT_TRUE(scene.geometry().grounded());
+    const Camera camera(view_of(scene.view_bounds(), 0.1), 320, 180);
+    for (std::size_t k = 0; k < motion.samples.size(); ++k)
+      for (std::size_t i = 0; i < scene.geometry().bodies.size(); ++i)
+        for (const Vec2& p : body_outline(scene.geometry().bodies[i], motion.samples[k].pose, i)) {
+          const Vec2 px = camera.to_pixels(p);
+          EXPECT_TRUE(px.x() >= 0 && px.x() <= 320 && px.y() >= 0 && px.y() <= 180) << p.transpose();
+        }
+    // No arrow is drawn longer than the cap, a quarter of the mechanism's extent.
+    double longest = 0;
+    MechanismDrawList list;
+    for (std::size_t k = 0; k < motion.samples.size(); ++k) {
+      scene.frame(k, list);
+      for (const MechanismDrawList::Arrow& arrow : list.arrows) longest = std::max(longest, arrow.vector.norm());
+    }
+    EXPECT_NEAR(scene.arrow_cap(), 0.25 * scene.extent(), 1e-12 * scene.extent());
+    EXPECT_LE(longest, scene.arrow_cap() * (1 + 1e-12));
+    EXPECT_GT(longest, 0.1 * scene.extent());
+  }
+}
+
+TEST(MechanismScene, TwoBlocksFloatAndLabelForcesByJointAndBody) {
+  const sym::System system(load_mechanism("two-blocks"));
+  const MechanismMotion motion = sampled(system, 0.2, 0.1);
+  const MechanismGeometry geometry = mechanism_geometry(system);
+  const MechanismScene scene(geometry, motion, {geometry.resolve("1.P", "--trail")});
+  EXPECT_FALSE(scene.geometry().grounded());
+  MechanismDrawList list;
+  scene.frame(2, list);
+  ASSERT_EQ(list.arrows.size(), 2U);
+  EXPECT_EQ(list.arrows[0].label, "P on 1");
+  EXPECT_EQ(list.arrows[1].label, "P on 2");
+  EXPECT_NEAR((list.arrows[0].vector + list.arrows[1].vector).norm(), 0, 1e-12);
+  ASSERT_FALSE(list.lines.empty());
+  EXPECT_EQ(list.lines.back().points.size(), 3U);  // the trail through every sample so far
+}
+
+// The pipeline's own sampling: frames at `fps` over `duration`, trails 4 steps a frame.
+MechanismMotion clip_motion(const sym::System& system, double duration, double fps, int trail_steps = 1) {
+  std::vector<double> times;
+  for (long k = 0; k <= std::lround(duration * fps); ++k) times.push_back(static_cast<double>(k) / fps);
+  SimulationOptions options;
+  options.duration = duration;
+  ClipResult result;
+  return sample_mechanism_motion(system, sym::checked_initial_state(system).state, options, times, trail_steps, result);
+}
+
+// The clip's fixed camera: the view of every sample and arrow, a band on top for the title.
+Camera clip_camera(const MechanismScene& scene, int width, int height) {
+  View view = view_of(scene.view_bounds(), 0.1);
+  view.ymax += 0.1 * (view.ymax - view.ymin);
+  return {view, width, height};
+}
+
+TEST(MechanismForces, LabelBoxesNeverOverlapAndOnlyStubsGoUnlabelled) {
+  constexpr int kWidth = 854, kHeight = 480;
+  const Theme theme = load_theme("light", {}, "theme");
+  DrawStyle style;
+  style.theme = &theme;
+  style.u = DrawStyle::unit_for(kWidth, kHeight);
+  const cairo::SurfacePtr surface = cairo::image_surface(kWidth, kHeight);
+  const cairo::ContextPtr cr = cairo::context(surface.get());
+  for (const char* name : {"four-bar", "slider-crank"}) {
+    SCOPED_TRACE(name);
+    const sym::System system(load_mechanism(name));
+    const MechanismMotion motion = clip_motion(system, 4.0, 30);
+    const MechanismScene scene(mechanism_geometry(system), motion, {});
+    const Camera camera = clip_camera(scene, kWidth, kHeight);
+    const Rect title{0, 0, 400, 30};
+    MechanismDrawList list;
+    std::size_t most = 0;
+    // Every frame, so the worst (the most and longest arrows) are among them.
+    for (std::size_t k = 0; k < motion.samples.size(); ++k) {
+      SCOPED_TRACE(k);
+      scene.frame(k, list);
+      const ForceLayout layout = layout_forces(cr.get(), style, camera, list, kWidth, kHeight, {title});
+      const auto& labels = layout.labels;
+      most = std::max(most, labels.size());
+      for (std::size_t i = 0; i < labels.size(); ++i) {
+        for (std::size_t j = i + 1; j < labels.size(); ++j)
+          EXPECT_FALSE(overlaps(labels[i].box, labels[j].box)) << labels[i].text << " / " << labels[j].text;
+        for (const Rect& body : layout.body_labels) EXPECT_FALSE(overlaps(labels[i].box, body)) << labels[i].text;
+        EXPECT_FALSE(overlaps(labels[i].box, layout.legend)) << labels[i].text;
+        EXPECT_FALSE(overlaps(labels[i].box, title)) << labels[i].text;
+      }
+      // A label is left out only when its arrow is shorter than the label is high.
+      std::size_t unlabelled = 0;
+      for (const MechanismDrawList::Arrow& arrow : list.arrows) {
+        const bool labelled = std::any_of(labels.begin(), labels.end(), [&](const PlacedLabel& l) {
+          return l.text == arrow.label && (l.head - camera.to_pixels(arrow.tail + arrow.vector)).norm() < 1e-9;
+        });
+        if (!labelled) {
+          ++unlabelled;
+          EXPECT_LT(arrow.vector.norm() * camera.scale(), labels.empty() ? 1e9 : labels.front().box.height)
+              << arrow.label;
+        }
+      }
+      EXPECT_EQ(labels.size() + unlabelled, list.arrows.size());
+    }
+    EXPECT_GE(most, 5U);  // crowded frames were among them
+  }
+}
+
+TEST(MechanismScene, LegendScaleIsTheArrowsScaleAndATypicalFrameReads) {
+  for (const char* name : {"four-bar", "slider-crank", "double-pendulum"}) {
+    SCOPED_TRACE(name);
+    const sym::System system(load_mechanism(name));
+    const MechanismMotion motion = clip_motion(system, 4.0, 30);
+    const MechanismScene scene(mechanism_geometry(system), motion, {});
+    MechanismDrawList list;
+    scene.frame(0, list);
+    const MechanismDrawList::Legend& legend = list.legend;
+    ASSERT_GT(legend.newtons, 0);
+    EXPECT_TRUE(legend.joint);
+    EXPECT_FALSE(legend.applied);
+    const double ratio = legend.metres / legend.newtons;  // m per N, as the legend draws it
+    EXPECT_NEAR(ratio, scene.force_scale(), 1e-12 * ratio);
+    EXPECT_EQ(legend.value, format_quantity(legend.newtons, "N"));
+    std::vector<double> largest;
+    bool any_cut = false;
+    for (std::size_t k = 0; k < motion.samples.size(); ++k) {
+      scene.frame(k, list);
+      double frame_largest = 0;
+      for (const MechanismDrawList::Arrow& arrow : list.arrows) {
+        const double length = arrow.vector.norm();
+        frame_largest = std::max(frame_largest, length);
+        if (arrow.cut) {
+          any_cut = true;
+          EXPECT_NEAR(length, scene.arrow_cap(), 1e-12);
+          EXPECT_GT(arrow.force * ratio, scene.arrow_cap());
+          EXPECT_NE(arrow.label.find(" N"), std::string::npos) << arrow.label;  // says its value
+        } else {
+          EXPECT_NEAR(length, arrow.force * ratio, 1e-12) << arrow.label;
+        }
+      }
+      largest.push_back(frame_largest);
+    }
+    EXPECT_EQ(any_cut, legend.cut);
+    // The median frame's longest arrow is a readable share of the mechanism (the four-bar's
+    // was a hundredth with one scale for the peak).
+    std::nth_element(largest.begin(), largest.begin() + static_cast<std::ptrdiff_t>(largest.size() / 2), largest.end());
+    EXPECT_GT(largest[largest.size() / 2], scene.extent() / 12);
+    EXPECT_LE(largest[largest.size() / 2], scene.extent() / 6 * (1 + 1e-12));
+  }
+}
+
+TEST(MechanismScene, SpringDamperDrawsACoilBesideADashpot) {
+  for (const double damping : {0.05, 0.0}) {
+    SCOPED_TRACE(damping);
+    Mechanism mechanism = load_mechanism("spring-pendulum");
+    for (Parameter& p : mechanism.parameters)
+      if (p.name == "c") p.value = damping;
+    const sym::System system(mechanism);
+    const MechanismMotion motion = sampled(system, 0.3, 0.1);
+    const MechanismScene scene(mechanism_geometry(system), motion, {});
+    MechanismDrawList list;
+    scene.frame(2, list);
+    const Vec2 a(0, 0), b(motion.samples[2].pose[0], motion.samples[2].pose[1]);
+    const Vec2 unit = (b - a).normalized();
+    // Which side of the line a-b a point is on, in metres.
+    const auto side = [&](const Vec2& p) { return unit.x() * (p - a).y() - unit.y() * (p - a).x(); };
+    int coils = 0, dashpot_lines = 0;
+    double coil_side = 0, dashpot_side = 0;
+    for (const MechanismDrawList::Line& line : list.lines) {
+      if (line.kind == MechanismDrawList::Line::Kind::spring) {
+        ++coils;
+        EXPECT_GE(line.points.size(), 16U);  // the zig-zag
+        for (const Vec2& p : line.points) coil_side += side(p);
+      } else if (line.kind == MechanismDrawList::Line::Kind::dashpot) {
+        ++dashpot_lines;
+        for (const Vec2& p : line.points) dashpot_side += side(p);
+      }
+    }
+    EXPECT_EQ(coils, 1);
+    if (damping > 0) {
+      EXPECT_GE(dashpot_lines, 3);             // the bars, the cylinder, the piston
+      EXPECT_LT(coil_side * dashpot_side, 0);  // on opposite sides of the line between the ends
+    } else {
+      EXPECT_EQ(dashpot_lines, 0);
+    }
+  }
+}
+
+constexpr const char* kDriven = R"toml(title = "A driven pendulum"
+gravity = "g"
+[parameters]
+g = 9.81
+F0 = 0.5
+Omega = 6
+tau0 = 0.02
+[ground]
+points = { O = [0, 0] }
+[[body]]
+name = "1"
+shape = "rod"
+mass = 0.2
+length = 0.4
+points = { O = [-0.2, 0], E = [0.2, 0] }
+[[joint]]
+name = "O"
+type = "pin"
+bodies = ["ground", "1"]
+points = ["O", "O"]
+[[force]]
+body = "1"
+point = "E"
+value = ["0", "-F0*sin(Omega*t)"]
+[[torque]]
+body = "1"
+value = "tau0"
+[initial]
+"1" = { theta = -0.5 }
+)toml";
+
+TEST(MechanismScene, AppliedForceAndTorqueAreDrawnWithTheirValueAtTheFramesTime) {
+  const sym::System system(read_mechanism(kDriven, "driven.toml"));
+  const MechanismMotion motion = sampled(system, 0.5, 0.1);
+  const MechanismScene scene(mechanism_geometry(system), motion, {});
+  MechanismDrawList list;
+  for (std::size_t k = 1; k < motion.samples.size(); ++k) {
+    SCOPED_TRACE(k);
+    scene.frame(k, list);
+    const double t = motion.times[k], force = -0.5 * std::sin(6 * t);
+    EXPECT_TRUE(list.legend.applied);
+    const auto applied = std::find_if(list.arrows.begin(), list.arrows.end(),
+                                      [](const auto& a) { return a.kind == MechanismDrawList::Arrow::Kind::applied; });
+    ASSERT_NE(applied, list.arrows.end());
+    const auto& pose = motion.samples[k].pose;
+    const Vec2 end = Vec2(pose[0], pose[1]) + 0.2 * Vec2(std::cos(pose[2]), std::sin(pose[2]));
+    EXPECT_NEAR((applied->tail - end).norm(), 0, 1e-12);  // at the point E
+    EXPECT_NEAR(applied->force, std::fabs(force), 1e-12);
+    EXPECT_NEAR(applied->vector.x(), 0, 1e-12);
+    EXPECT_GT(applied->vector.y() * force, 0);  // along the force
+    EXPECT_EQ(applied->label, "F = " + format_quantity(std::fabs(force), "N"));
+    ASSERT_EQ(list.torques.size(), 1U);
+    EXPECT_GT(list.torques[0].sweep, 0);  // counter-clockwise, as tau0 > 0
+    EXPECT_NEAR((list.torques[0].centre - Vec2(pose[0], pose[1])).norm(), 0, 1e-12);
+    EXPECT_EQ(list.torques[0].label, "τ = 0.02 N m");
+  }
+}
+
+TEST(MechanismClip, TrailsAreSampledFourTimesAFrame) {
+  const sym::System system(load_mechanism("four-bar"));
+  constexpr double kFps = 30;
+  const MechanismMotion motion = clip_motion(system, 1.0, kFps, 4);
+  ASSERT_EQ(motion.trail_times.size(), 4 * (motion.times.size() - 1) + 1);
+  ASSERT_EQ(motion.trail_poses.size(), motion.trail_times.size());
+  const MechanismGeometry geometry = mechanism_geometry(system);
+  const MechanismScene scene(geometry, motion, {geometry.resolve("3.B", "--trail")}, 2.0);
+  MechanismDrawList list;
+  for (const std::size_t k : {std::size_t{1}, std::size_t{10}, motion.samples.size() - 1}) {
+    SCOPED_TRACE(k);
+    scene.frame(k, list);
+    const MechanismDrawList::Line& trail = list.lines.back();
+    ASSERT_EQ(trail.kind, MechanismDrawList::Line::Kind::trail);
+    EXPECT_GE(trail.points.size(), 4 * k + 1);  // every frame interval so far, 4 points each
+    // It ends at the frame's own point, and its steps are a quarter of a frame's.
+    EXPECT_NEAR((trail.points.back() - world_point(motion.samples[k].pose, geometry.resolve("3.B", ""))).norm(), 0,
+                1e-12);
+    const Vec2 frame_step = world_point(motion.samples[k].pose, geometry.resolve("3.B", "")) -
+                            world_point(motion.samples[k - 1].pose, geometry.resolve("3.B", ""));
+    const Vec2 last_step = trail.points.back() - trail.points[trail.points.size() - 2];
+    EXPECT_LT(last_step.norm(), 0.4 * frame_step.norm());
+  }
+}
+
+}  // namespace
+}  // namespace linkage
