@@ -13,10 +13,10 @@ void apply_settings(Mechanism& mechanism, const std::vector<std::string>& settin
     const auto equals = setting.find('=');
     if (equals == std::string::npos || equals == 0)
       throw Error::input("--set: '" + setting + "' is not NAME=VALUE; e.g. --set L=0.4 or --set 2.theta=0.3");
-    const std::string name = setting.substr(0, equals);
-    const double value = parse_number(setting.substr(equals + 1), "--set " + name, "");
+    // The value as the command line reads numbers (its message names the flag).
+    (void)parse_number(setting.substr(equals + 1), "--set " + setting.substr(0, equals), "");
     try {
-      set_value(mechanism, name, value, "--set " + setting);
+      apply_setting(mechanism, setting, "--set " + setting);
     } catch (const Error& e) {
       throw Error::input(describe(e));
     }

@@ -75,6 +75,11 @@ struct RenderStep {
   Run run;
   RenderSettings settings;  // as written; --quality draft shrinks size and fps
   OutputKind kind = OutputKind::mp4;
+  // Any mechanism instead of the homework: a shipped name or a file's path, its
+  // NAME=VALUE settings and the BODY.POINT trails drawn.
+  std::string mechanism;
+  std::vector<std::string> settings_list;
+  std::vector<std::string> trails;
 };
 /// A time-series figure: quantities against time (or another quantity) for some runs.
 struct Figure {
@@ -125,7 +130,8 @@ struct Lesson {
   std::string name;  // the file's stem, e.g. "06-numerical-example"
   std::string title;
   TextTemplate description;
-  Inputs inputs;  // at the start
+  Inputs inputs;          // at the start
+  std::string mechanism;  // render steps' default: a shipped name or a file's path; empty for the homework
   std::vector<Step> steps;
 
   /// Every artifact file the lesson declares, relative to the output folder.

@@ -14,6 +14,7 @@
 #include "lesson/canonical.hpp"
 #include "lesson/lesson.hpp"
 #include "lesson/markdown.hpp"
+#include "lesson/mechanism_render.hpp"
 #include "lesson/schema.hpp"
 #include "lesson/series.hpp"
 #include "lesson/suggest.hpp"
@@ -174,6 +175,8 @@ class Parser {
     read_inputs(top, "state", false, inputs);
     inputs.validate();
     lesson.inputs = inputs;
+    if (auto m = top.string("mechanism")) lesson_mechanism_ = mechanism_spec(top, "mechanism", *m);
+    lesson.mechanism = lesson_mechanism_;
     if (auto d = top.string("description"))
       lesson.description = text_template(*d, top.prefix("description") + "description", inputs);
 
@@ -186,6 +189,12 @@ class Parser {
   }
 
  private:
+  /// A shipped mechanism's name as it is, a file's as its path from the lesson's folder.
+  std::string mechanism_spec(const TableReader& r, std::string_view key, const std::string& name) const {
+    const bool file = name.find('/') != std::string::npos || name.ends_with(".toml");
+    return file ? referenced_file(r, key, name).string() : name;
+  }
+
   fs::path referenced_file(const TableReader& r, std::string_view key, const std::string& name) const {
     const fs::path path = fs::path(name).is_absolute() ? fs::path(name) : dir_ / name;
     std::error_code ec;
@@ -260,9 +269,21 @@ class Parser {
       case StepKind::simulate:
         step.body = parse_simulate(r, inputs);
         break;
-      case StepKind::render:
-        step.body = parse_render(r, inputs);
+      case StepKind::render: {
+        RenderStep render = parse_render(r, inputs);
+        // The mechanism (and a file's text) belongs to the cached clip's key.
+        if (!render.mechanism.empty()) {
+          step.canonical += ";mechanism=" + render.mechanism;
+          if (fs::exists(render.mechanism)) {
+            std::ifstream in(render.mechanism, std::ios::binary);
+            std::stringstream content;
+            content << in.rdbuf();
+            step.canonical += ";" + content_hash(content.str());
+          }
+        }
+        step.body = std::move(render);
         break;
+      }
       case StepKind::plot:
         step.body = parse_plot(r, inputs);
         break;
@@ -504,6 +525,17 @@ class Parser {
     s.caption = r.string("caption").value_or("");
     s.run = step_run(r, inputs);
     RenderSettings& g = s.settings;
+    if (auto m = r.string("mechanism")) s.mechanism = mechanism_spec(r, "mechanism", *m);
+    if (s.mechanism.empty()) s.mechanism = lesson_mechanism_;
+    s.settings_list = r.strings("set").value_or(std::vector<std::string>{});
+    s.trails = r.strings("trail").value_or(std::vector<std::string>{});
+    for (const std::string_view key : {"set", "trail"})
+      if (s.mechanism.empty() && r.has(key))
+        r.fail(key, "'" + std::string(key) + "' applies to a mechanism: give mechanism = \"NAME\" here or at the top");
+    if (!s.mechanism.empty())
+      for (const std::string_view key : {"show", "hide", "camera", "view"})
+        if (r.has(key))
+          r.fail(key, "'" + std::string(key) + "' is the homework's; a mechanism's clip fits its whole motion");
     try {
       s.kind = output_kind(s.out, r.where("out") + ": " + r.context() + ": out");
       g.duration = s.run.options.duration;
@@ -541,6 +573,13 @@ class Parser {
         r.fail("duration", "'duration' applies to a clip; a still (" + s.out + ") shows the time 'at'");
       if (!is_still(s.kind) && r.has("at"))
         r.fail("at", "'at' applies to a still (out = \"NAME.png\", .svg or .pdf); a clip shows 0 .. duration");
+      if (!s.mechanism.empty()) {
+        if (s.kind == OutputKind::svg || s.kind == OutputKind::pdf)
+          r.fail("out", "a mechanism's still is a .png (or a clip .mp4)");
+        // The whole mechanism checked now, so a bad lesson fails before any step runs.
+        const MechanismRender made = mechanism_render(s, r.where("set"));
+        if (!r.has("title")) g.title = made.system->mechanism().title;
+      }
       if (s.kind == OutputKind::mp4) {
         VideoOptions video;
         video.width = g.width;
@@ -611,6 +650,7 @@ class Parser {
 
   fs::path file_;
   std::string file_text_;
+  std::string lesson_mechanism_;  // the lesson's `mechanism`, for its render steps
   fs::path dir_;
   std::map<std::string, std::string> artifacts_;  // file name -> the step that writes it
 };

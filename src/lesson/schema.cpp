@@ -5,7 +5,7 @@
 namespace linkage::lesson {
 namespace {
 
-constexpr std::array<KeySpec, 6> kLessonKeys{{
+constexpr std::array<KeySpec, 7> kLessonKeys{{
     {"title", "string", "(required)", "The lesson's title, printed first and used as the document's heading."},
     {"description", "string", "\"\"", "A Markdown paragraph printed under the title; may quote values as {{NAME}}."},
     {"config", "string", "none",
@@ -14,6 +14,9 @@ constexpr std::array<KeySpec, 6> kLessonKeys{{
     {"parameters", "table", "the spec's example", "Any of L, w, b, m, g (m, m, m, kg, m/s^2)."},
     {"state", "table", "the spec's example",
      "Any of x1, y1, theta1, theta2, x1_dot, y1_dot, theta1_dot, theta2_dot (m, rad, m/s, rad/s)."},
+    {"mechanism", "string", "the homework",
+     "A shipped mechanism (`linkage mechanisms`) or a mechanism file, relative to the lesson file, that the "
+     "render steps draw; a render step's own `mechanism` overrides it."},
     {"step", "array of tables", "(required)", "The steps, in order: one [[step]] table each."},
 }};
 
@@ -79,7 +82,7 @@ constexpr std::array<KeySpec, 3> kSimulateKeys{{
      "energy, momentum_x, ..., constraint_velocity_error)."},
 }};
 
-constexpr std::array<KeySpec, 13> kRenderKeys{{
+constexpr std::array<KeySpec, 16> kRenderKeys{{
     {"out", "string", "(required)", "The file in the output folder: .mp4 (a clip), .png, .svg or .pdf (a still)."},
     {"caption", "string", "none", "Text under the clip or still in the lesson document."},
     {"fps", "integer", "30", "Frames per second (as the render command's fps); draft quality lowers it to 15."},
@@ -96,6 +99,11 @@ constexpr std::array<KeySpec, 13> kRenderKeys{{
     {"view", "string", "none", "xmin,ymin,xmax,ymax in metres; implies camera = \"fixed\"."},
     {"theme", "string", "\"light\"", "Colour theme: light, dark or print."},
     {"title", "string", "the render default", "The title line drawn in the clip (\"\" for none)."},
+    {"mechanism", "string", "the lesson's",
+     "Draw this mechanism (a shipped name or a file relative to the lesson) instead of the homework; show, hide, "
+     "camera and view are the homework's."},
+    {"set", "list of strings", "none", "NAME=VALUE settings of the mechanism's parameters or initial coordinates."},
+    {"trail", "list of strings", "none", "BODY.POINT paths drawn over the last 2 s (with a mechanism)."},
 }};
 
 constexpr std::array<KeySpec, 10> kPlotKeys{{

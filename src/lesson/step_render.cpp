@@ -3,7 +3,10 @@
 #include <algorithm>
 
 #include "core/progress.hpp"
+#include "lesson/mechanism_render.hpp"
 #include "lesson/runner_context.hpp"
+#include "model/mechanism_toml.hpp"
+#include "symbolic/loop_closure.hpp"
 
 namespace linkage::lesson {
 
@@ -23,15 +26,39 @@ Clip render_clip(const RenderStep& render, Quality quality, const std::filesyste
   return clip;
 }
 
+MechanismRender mechanism_render(const RenderStep& render, const std::string& origin) {
+  MechanismRender out;
+  Mechanism mechanism = load_mechanism(render.mechanism);
+  for (const std::string& setting : render.settings_list) apply_setting(mechanism, setting, origin);
+  out.system = std::make_unique<sym::System>(mechanism);
+  out.state = sym::checked_initial_state(*out.system).state;
+  out.clip.simulation = render.run.options;
+  out.clip.settings = render.settings;
+  out.clip.trails = render.trails;
+  out.clip.out = render.out;  // checked by its name here; the step puts it in the output folder
+  out.clip.validate(*out.system);
+  return out;
+}
+
 void run_render(RunContext& c, const Step& step, const RenderStep& s) {
   const nlohmann::json results = c.cached(step, [&] {
-    const Clip clip = render_clip(s, c.options.quality, c.options.out_dir, c.options.assets);
     std::optional<Progress> progress;
-    const ClipResult made = produce_clip(clip, [&](ClipStage stage, long done, long total) {
+    const ClipProgress report = [&](ClipStage stage, long done, long total) {
       if (stage != ClipStage::draw) return;
       if (!progress) progress.emplace("render " + s.out, total, "frames");
       progress->update(done);
-    });
+    };
+    const Clip clip = render_clip(s, c.options.quality, c.options.out_dir, c.options.assets);
+    ClipResult made;
+    if (s.mechanism.empty()) {
+      made = produce_clip(clip, report);
+    } else {
+      MechanismRender m = mechanism_render(s, step.where);
+      m.clip.settings = clip.settings;  // the quality's size and frame rate
+      m.clip.theme = clip.theme;
+      m.clip.out = clip.out;
+      made = produce_mechanism_clip(*m.system, m.state, m.clip, report);
+    }
     nlohmann::json made_results = nlohmann::json::object();
     if (!made.warnings.empty()) made_results["warnings"] = made.warnings;
     return made_results;

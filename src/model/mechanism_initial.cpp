@@ -1,5 +1,6 @@
 // The initial state of a mechanism against its generalized coordinates, and --set.
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 
 #include "core/error.hpp"
@@ -158,6 +159,19 @@ std::string likely_causes(const Mechanism& mechanism) {
   if (!extreme.empty()) return extreme;
   // Nothing extreme on its own: the combination overflowed; name what was set.
   return list([](const Given& g) { return g.pos->line == 0 && !g.pos->file.empty(); });
+}
+
+void apply_setting(Mechanism& mechanism, const std::string& setting, const std::string& origin) {
+  const auto equals = setting.find('=');
+  if (equals == std::string::npos || equals == 0)
+    throw Error::invalid("set", q(setting) + " (" + origin + ") is not NAME=VALUE; e.g. L=0.4 or 2.theta=0.3");
+  const std::string name = setting.substr(0, equals), text = setting.substr(equals + 1);
+  double value = 0;
+  const char* end = text.data() + text.size();
+  const auto [at, error] = std::from_chars(text.data(), end, value);
+  if (text.empty() || error != std::errc() || at != end)
+    throw Error::invalid("set", q(text) + " (" + origin + ") is not a number; give NAME=VALUE with a number");
+  set_value(mechanism, name, value, origin);
 }
 
 }  // namespace linkage

@@ -35,6 +35,9 @@ void validate_initial(const Mechanism& mechanism);
 /// "1.x_dot", "slider.s"); `origin` says where the setting came from. Throws
 /// Error::invalid("set", ...) for an unknown name or a value that is not finite.
 void set_value(Mechanism& mechanism, const std::string& name, double value, const std::string& origin);
+/// The same from "NAME=VALUE" text (a --set flag, a lesson's `set` list); Error::invalid
+/// ("set", ...) naming `origin` when the text is not NAME=NUMBER.
+void apply_setting(Mechanism& mechanism, const std::string& setting, const std::string& origin);
 
 /// For a number that overflowed: the parameters and initial values far outside physical
 /// sizes (|v| >= 1e50 or <= 1e-50), else every value set from outside the file, each

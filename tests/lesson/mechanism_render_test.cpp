@@ -1,0 +1,104 @@
+// A lesson's render steps on any mechanism: `mechanism` at the top or per step, `set` and
+// `trail` as the render command's --set and --trail; the homework's picture keys refused.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "core/error.hpp"
+#include "lesson/lesson.hpp"
+#include "support/test_support.hpp"
+
+namespace linkage::lesson {
+namespace {
+
+namespace fs = std::filesystem;
+
+Lesson parse_text(const test::TempDir& dir, const std::string& text) {
+  const fs::path file = dir / "lesson.toml";
+  test::write_text(file, text);
+  return parse_lesson(file);
+}
+
+std::string error_of(const std::string& text) {
+  test::TempDir dir;
+  try {
+    (void)parse_text(dir, text);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(LessonMechanism, TopLevelMechanismReachesRenderStepsAndAStepOverridesIt) {
+  test::TempDir dir;
+  test::write_text(dir / "pendulum.toml",
+                   test::read_text(fs::path(LINKAGE_SOURCE_DIR) / "mechanisms/double-pendulum.toml"));
+  const Lesson lesson = parse_text(dir, R"(title = "Mechanisms"
+mechanism = "four-bar"
+[[step]]
+kind = "render"
+out = "a.png"
+trail = ["3.B"]
+set = ["2.theta_dot=3"]
+[[step]]
+kind = "render"
+out = "b.mp4"
+duration = 0.5
+mechanism = "pendulum.toml"
+)");
+  ASSERT_EQ(lesson.steps.size(), 2U);
+  const auto& a = std::get<RenderStep>(lesson.steps[0].body);
+  const auto& b = std::get<RenderStep>(lesson.steps[1].body);
+  EXPECT_EQ(a.mechanism, "four-bar");
+  EXPECT_EQ(a.trails, std::vector<std::string>{"3.B"});
+  EXPECT_EQ(a.settings.title, "Four-bar linkage: a Grashof crank-rocker");
+  EXPECT_EQ(fs::path(b.mechanism).filename(), "pendulum.toml");
+  EXPECT_EQ(b.settings.title, "Double pendulum: two uniform rods from a ground pin");
+  // The mechanism is part of the cached clip's key.
+  EXPECT_NE(lesson.steps[0].canonical.find("mechanism=four-bar"), std::string::npos);
+}
+
+TEST(LessonMechanism, BadKeysAreOneLineErrorsAtTheirPlace) {
+  EXPECT_NE(error_of("title = \"x\"\n[[step]]\nkind = \"render\"\nout = \"a.png\"\ntrail = [\"3.B\"]\n")
+                .find("lesson.toml:5:9: step 1 (render): 'trail' applies to a mechanism"),
+            std::string::npos);
+  EXPECT_NE(error_of("title = \"x\"\nmechanism = \"four-bar\"\n[[step]]\nkind = \"render\"\nout = \"a.png\"\n"
+                     "camera = \"fit\"\n")
+                .find("'camera' is the homework's"),
+            std::string::npos);
+  EXPECT_NE(error_of("title = \"x\"\nmechanism = \"four-bar\"\n[[step]]\nkind = \"render\"\nout = \"a.png\"\n"
+                     "trail = [\"3.Q\"]\n")
+                .find("'Q' is not a point of 3; valid: A, B, P"),
+            std::string::npos);
+  EXPECT_NE(error_of("title = \"x\"\nmechanism = \"four-bar\"\n[[step]]\nkind = \"render\"\nout = \"a.png\"\n"
+                     "set = [\"zz=1\"]\n")
+                .find("'zz'"),
+            std::string::npos);
+  EXPECT_NE(error_of("title = \"x\"\nmechanism = \"nope.toml\"\n[[step]]\nkind = \"say\"\ntext = \"hi\"\n")
+                .find("lesson.toml:2:13: lesson: the file 'nope.toml' does not exist"),
+            std::string::npos);
+}
+
+// The step runs: the still and the clip come out of `linkage lesson` at draft quality.
+TEST(LessonMechanism, RenderStepsMakeTheirFiles) {
+  test::TempDir dir;
+  test::write_text(dir / "lesson.toml", R"(title = "Mechanisms"
+mechanism = "slider-crank"
+[[step]]
+kind = "render"
+out = "a.png"
+at = 0.3
+[[step]]
+kind = "render"
+out = "b.mp4"
+duration = 0.3
+)");
+  const test::RunResult r = test::run_linkage(
+      {"lesson", (dir / "lesson.toml").string(), "--out", (dir / "out").string(), "--quality", "draft"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_GT(fs::file_size(dir / "out" / "a.png"), 1000U);
+  EXPECT_GT(fs::file_size(dir / "out" / "b.mp4"), 1000U);
+}
+
+}  // namespace
+}  // namespace linkage::lesson
