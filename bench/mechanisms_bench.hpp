@@ -64,4 +64,26 @@ struct MechanismsBenchResult {
 
 [[nodiscard]] MechanismsBenchResult run_mechanisms_bench(const MechanismsBenchOptions& options);
 
+/// `linkage bench accuracy --mechanism NAME|FILE`: every integrator of ours in every
+/// chosen case against a reference at rtol = atol = 1e-14 (DOP853, Case 3), itself
+/// checked by a second set of equations (Case 2) and a second method (Gauss-Legendre).
+struct MechanismAccuracyOptions {
+  std::string mechanism;
+  std::vector<int> cases{1, 2, 3};
+  double duration = 10;  // s
+  std::filesystem::path out = "bench-accuracy";
+  bool quick = false;  // few settings, 1 s: checks the report, not the findings
+  bool quiet = false;
+};
+
+struct MechanismAccuracyResult {
+  std::vector<WorkPoint> work;  // method "Case N integrator"; error: max |pose - reference| of every body, m or rad
+  double second_equations = 0;  // |reference - Case 2 at 1e-14|
+  double second_method = 0;     // |reference - Gauss-Legendre|
+  std::vector<std::string> lines;
+  std::vector<std::filesystem::path> files;
+};
+
+[[nodiscard]] MechanismAccuracyResult run_mechanism_accuracy(const MechanismAccuracyOptions& options);
+
 }  // namespace linkage::bench

@@ -325,29 +325,34 @@ void TreeDynamics::Impl::kinematics(const Eigen::VectorXd& y) const {
 void TreeDynamics::Impl::recursion(bool loaded, const Eigen::VectorXd& tau_absolute, Eigen::VectorXd& out) const {
   // Generalized forces on the relative coordinates: an absolute angle's force reaches
   // every coordinate it depends on, so a pin's relative angle collects its subtree's.
-  std::fill(angle_force.begin(), angle_force.end(), 0.0);
-  for (std::size_t k = nodes.size(); k-- > 0;) {
-    const Node& node = nodes[k];
-    Work& w = work[k];
-    double own = 0;
-    if (node.kind == NodeKind::pin) own = tau_absolute[node.coordinate[0]];
-    if (node.kind == NodeKind::floating && node.rotates) own = tau_absolute[node.coordinate[2]];
-    angle_force[k] += own;
-    if (node.parent >= 0 && node.kind != NodeKind::floating)
-      angle_force[static_cast<std::size_t>(node.parent)] += angle_force[k];
-    w.u.setZero();
-    switch (node.kind) {
-      case NodeKind::floating:
-        w.u[0] = tau_absolute[node.coordinate[0]];
-        w.u[1] = tau_absolute[node.coordinate[1]];
-        w.u[2] = angle_force[k];
-        break;
-      case NodeKind::pin:
-        w.u[0] = angle_force[k];
-        break;
-      case NodeKind::slider:
-        w.u[0] = tau_absolute[node.coordinate[0]];
-        break;
+  // The motion itself has none (the loads act on the bodies).
+  if (loaded) {
+    for (Work& w : work) w.u.setZero();
+  } else {
+    std::fill(angle_force.begin(), angle_force.end(), 0.0);
+    for (std::size_t k = nodes.size(); k-- > 0;) {
+      const Node& node = nodes[k];
+      Work& w = work[k];
+      double own = 0;
+      if (node.kind == NodeKind::pin) own = tau_absolute[node.coordinate[0]];
+      if (node.kind == NodeKind::floating && node.rotates) own = tau_absolute[node.coordinate[2]];
+      angle_force[k] += own;
+      if (node.parent >= 0 && node.kind != NodeKind::floating)
+        angle_force[static_cast<std::size_t>(node.parent)] += angle_force[k];
+      w.u.setZero();
+      switch (node.kind) {
+        case NodeKind::floating:
+          w.u[0] = tau_absolute[node.coordinate[0]];
+          w.u[1] = tau_absolute[node.coordinate[1]];
+          w.u[2] = angle_force[k];
+          break;
+        case NodeKind::pin:
+          w.u[0] = angle_force[k];
+          break;
+        case NodeKind::slider:
+          w.u[0] = tau_absolute[node.coordinate[0]];
+          break;
+      }
     }
   }
   for (std::size_t k = 0; k < nodes.size(); ++k) {
@@ -387,10 +392,15 @@ void TreeDynamics::Impl::recursion(bool loaded, const Eigen::VectorXd& tau_absol
       p->pA += w.pA + Ia * c + U * (w.u[0] / D);
       continue;
     }
-    if (node.dof == 3)
-      backward<3>(w, p, c);
-    else
+    if (node.dof == 3) {
+      // A rotating floating base is a root: I^A a + p^A = f, with S^T f = tau; no D to
+      // form, one symmetric 3 x 3 solve (its forward step below).
+      const Vec2 r = w.centre - origin;
+      const Vec3 f(w.u[2] - r.y() * w.u[0] + r.x() * w.u[1], w.u[0], w.u[1]);
+      w.a = w.IA.ldlt().solve(f - w.pA);
+    } else {
       backward<2>(w, p, c);
+    }
   }
   for (std::size_t k = 0; k < nodes.size(); ++k) {
     const Node& node = nodes[k];
@@ -402,7 +412,10 @@ void TreeDynamics::Impl::recursion(bool loaded, const Eigen::VectorXd& tau_absol
       w.q_ddot[0] = w.Dinv(0, 0) * (w.u[0] - w.U.col(0).dot(a_in));
       w.a = a_in + w.S.col(0) * w.q_ddot[0];
     } else if (d == 3) {
-      forward<3>(w, a_in);
+      // q'' = S^-1 (a - c): S q'' = (theta'', x'' + r_y theta'', y'' - r_x theta'').
+      const Vec2 r = w.centre - origin;
+      const Vec3 e = w.a - a_in;
+      w.q_ddot << e[1] - r.y() * e[0], e[2] + r.x() * e[0], e[0];
     } else {
       forward<2>(w, a_in);
     }
