@@ -1,0 +1,95 @@
+// `linkage bench mechanisms --quick` and `bench accuracy --mechanism --quick`: the reports'
+// structure (every shipped mechanism and case, the chains beside MuJoCo, every peer's
+// curve, each target with a verdict); and the peers' inputs: the hand-written double
+// pendulum the Odeint peer runs agrees with our derivation, and the chain file is the
+// chain MuJoCo is given.
+#include "bench/mechanisms_bench.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <random>
+
+#include "bench/double_pendulum_user.hpp"
+#include "evaluate/mechanism_dynamics.hpp"
+#include "model/mechanism_toml.hpp"
+#include "support/test_support.hpp"
+#include "symbolic/loop_closure.hpp"
+
+namespace linkage {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(MechanismsBench, QuickRunWritesEveryRowPeerAndTarget) {
+  const test::TempDir dir;
+  const test::RunResult r = test::run_linkage({"bench", "mechanisms", "--quick", "--out", dir.path().string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string csv = test::read_text(dir / "mechanisms.csv");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')), "mechanism,case,path,bodies,ns_per_rhs");
+  for (const std::string name : {"two-blocks", "unequal-blocks", "double-pendulum", "triple-pendulum",
+                                 "spring-pendulum", "slider-crank", "four-bar"})
+    for (const std::string c : {"1", "2", "3"})
+      EXPECT_NE(csv.find("\n" + name + "," + c + ",general,"), std::string::npos) << name << " Case " << c;
+  EXPECT_NE(csv.find("\ntwo-blocks,3,closed-form,2,"), std::string::npos);
+  EXPECT_NE(csv.find("\nchain-8,3,general,8,"), std::string::npos);
+  EXPECT_NE(csv.find("\nchain-8,3,mujoco,8,"), std::string::npos);
+  const std::string work = test::read_text(dir / "work-precision.csv");
+  for (const std::string method :
+       {"ours dop853", "ours rk4", "odeint rkf78", "odeint rk4", "mujoco rk4", "mujoco euler"})
+    EXPECT_NE(work.find("\n" + method + ","), std::string::npos) << method;
+  const std::string md = test::read_text(dir / "mechanisms.md");
+  EXPECT_NE(md.find("| homework Case 3: general path / closed form |"), std::string::npos) << md;
+  EXPECT_NE(md.find("not measured: --quick stops at 8 links"), std::string::npos) << md;
+  EXPECT_TRUE(fs::exists(dir / "work-precision.png"));
+  EXPECT_TRUE(fs::exists(dir / "chain-scaling.png"));
+}
+
+TEST(MechanismsBench, AccuracyOfAnyMechanism) {
+  const test::TempDir dir;
+  const test::RunResult r = test::run_linkage(
+      {"bench", "accuracy", "--mechanism", "four-bar", "--quick", "--quiet", "--out", dir.path().string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("reference (DOP853 1e-14, Case 3) against Case 2: "), std::string::npos) << r.out;
+  const std::string csv = test::read_text(dir / "accuracy-four-bar.csv");
+  for (const std::string method : {"Case 1 dop853", "Case 2 rk4", "Case 3 gauss-legendre", "Case 3 euler"})
+    EXPECT_NE(csv.find("\n" + method + ","), std::string::npos) << method;
+  EXPECT_TRUE(fs::exists(dir / "accuracy-four-bar.png"));
+  const test::RunResult bad =
+      test::run_linkage({"bench", "accuracy", "--mechanism", "four-bar", "--scenario", "fast", "--quick"});
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--scenario and --integrators are the homework's"), std::string::npos) << bad.err;
+}
+
+// The Odeint peer's right-hand side, written by hand, equals our derivation of the
+// shipped double pendulum at random states to 1e-12.
+TEST(MechanismsBench, HandWrittenDoublePendulumIsOurs) {
+  const sym::System system(load_mechanism("double-pendulum"));
+  const sym::ClosedState closed = sym::checked_initial_state(system);
+  const eval::MechanismDynamics ours(system, CaseId::reduced);
+  const bench::DoublePendulumUser user{0.3, 0.2, 0.25, 0.15, 9.81};
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> draw(-3, 3);
+  for (int trial = 0; trial < 10; ++trial) {
+    Eigen::VectorXd y = ours.initial_state(closed.state);
+    for (int i = 0; i < 4; ++i) y[i] = draw(rng);
+    Eigen::VectorXd dydt;
+    ASSERT_TRUE(ours.derivative(0, y, dydt));
+    std::array<double, 4> x{y[0], y[1], y[2], y[3]}, dx{};
+    user(x, dx, 0.0);
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(dx[static_cast<std::size_t>(i)], dydt[i], 1e-12 * (1 + std::abs(dydt[i])));
+  }
+}
+
+// A chain's file reads, has one coordinate per link, and Case 3 of it runs.
+TEST(MechanismsBench, ChainFileIsAChainOfRods) {
+  const sym::System system(read_mechanism(bench::pendulum_chain_toml(5), "chain-5.toml"));
+  EXPECT_EQ(system.coordinates().size(), 5U);
+  const eval::MechanismDynamics d(system, CaseId::reduced);
+  Eigen::VectorXd dydt;
+  EXPECT_TRUE(d.derivative(0, d.initial_state(sym::checked_initial_state(system).state), dydt));
+  EXPECT_TRUE(dydt.allFinite());
+}
+
+}  // namespace
+}  // namespace linkage
