@@ -247,7 +247,10 @@ double MechanismDynamics::unknowns(double t, const Eigen::VectorXd& y, Eigen::Ve
     B_.tail(m) -= two_alpha_ * (J_ * y.segment(idx(n_), idx(n_))) + beta_squared_ * C;
   }
   lu_.compute(A_);
-  const double rcond = lu_.rcond();
+  // The pivots' spread, not Eigen's rcond(): a condition estimate costs more solves than
+  // the step it guards, and only "singular or not" matters here.
+  const auto pivots = lu_.matrixLU().diagonal().cwiseAbs();
+  const double rcond = pivots.minCoeff() / pivots.maxCoeff();
   if (!(rcond > std::numeric_limits<double>::epsilon())) return 0;  // NaN entries count as singular
   u = lu_.solve(B_);
   return rcond;

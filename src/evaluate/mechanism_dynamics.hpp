@@ -65,7 +65,8 @@ class MechanismDynamics {
 
   /// y' at (t, y). False when A is singular there (rcond below round-off): dydt is then NaN.
   bool derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) const;
-  /// The case's unknowns u at (t, y) and A's reciprocal condition estimate (0: singular).
+  /// The case's unknowns u at (t, y) and the ratio of A's smallest to largest LU pivot, a
+  /// cheap stand-in for its reciprocal condition (0: singular, u not to be used).
   double unknowns(double t, const Eigen::VectorXd& y, Eigen::VectorXd& u) const;
 
   /// Moves y onto C(q) = 0 and C'(q, q') = 0 (Newton in the kinetic-energy metric); the

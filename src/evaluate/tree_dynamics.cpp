@@ -38,6 +38,8 @@ struct Work {
   double angle = 0, cos_angle = 1, sin_angle = 0;                       // each angle's cosine and sine once
   Eigen::Matrix<double, 3, 3> S = Eigen::Matrix<double, 3, 3>::Zero();  // first dof columns used
   Vec3 v = Vec3::Zero(), c = Vec3::Zero(), a = Vec3::Zero();
+  Mat3 I0 = Mat3::Zero();                         // the body's own spatial inertia
+  Vec3 bias = Vec3::Zero(), load = Vec3::Zero();  // v x* I v, and the loads, as spatial forces
   Mat3 IA = Mat3::Zero();
   Vec3 pA = Vec3::Zero();
   Eigen::Matrix<double, 3, 3> U = Eigen::Matrix<double, 3, 3>::Zero();
@@ -93,6 +95,7 @@ struct TreeDynamics::Impl {
   std::vector<Node> nodes;
   std::size_t coordinates = 0;
   std::vector<double> parameters;
+  bool loads_constant = false;
   Program loads;  // per body Fx, Fy, moment about its centre; inputs: parameters, x y theta per body, rates, t
   Program loops;  // J (m x n, row major), then phi0 (m); inputs: parameters, q, q', t
   int loop_rows = 0;
@@ -207,10 +210,18 @@ TreeDynamics::TreeDynamics(const sym::System& system) : impl_(std::make_unique<I
         (load.point.x - body.x.q) * load.force.y - (load.point.y - body.y.q) * load.force.x + load.moment;
   }
   for (ex& e : per_body) e = prepare(e);
+  // Gravity alone is the same force at every state: evaluated once, not per call.
+  m.loads_constant = true;
+  for (const ex& e : per_body)
+    m.loads_constant = m.loads_constant && GiNaC::is_a<GiNaC::numeric>(e.subs(system.parameter_values()));
   m.loads = compile(per_body, inputs);
   m.load_inputs.assign(inputs.size(), 0.0);
   for (std::size_t i = 0; i < parameter_count; ++i) m.load_inputs[i] = m.parameters[i];
   m.load_outputs.resize(per_body.size());
+  if (m.loads_constant) {
+    std::vector<double> scratch(m.loads.scratch_size());
+    m.loads.run(m.load_inputs.data(), m.load_outputs.data(), scratch.data());
+  }
 
   // The loops' acceleration rows Phi'' = J q'' + phi0, in the generalized coordinates.
   std::vector<GiNaC::symbol> loop_inputs(inputs.begin(), inputs.begin() + static_cast<std::ptrdiff_t>(parameter_count));
@@ -270,10 +281,10 @@ void TreeDynamics::Impl::kinematics(const Eigen::VectorXd& y) const {
     const double parent_omega = p != nullptr ? p->omega : 0.0;
     const Vec3 parent_v = p != nullptr ? p->v : Vec3::Zero();
     const Vec2 parent_point = p != nullptr ? Vec2(p->centre + rotate(pc, ps, node.parent_point)) : node.parent_point;
-    w.S.setZero();
-    w.c.setZero();
     switch (node.kind) {
       case NodeKind::floating: {
+        w.S.setZero();
+        w.c.setZero();
         w.centre = {q(node.coordinate[0]), q(node.coordinate[1])};
         w.angle = node.rotates ? q(node.coordinate[2]) : 0.0;
         w.cos_angle = std::cos(w.angle);
@@ -356,23 +367,12 @@ void TreeDynamics::Impl::recursion(bool loaded, const Eigen::VectorXd& tau_absol
     }
   }
   for (std::size_t k = 0; k < nodes.size(); ++k) {
-    const Node& node = nodes[k];
     Work& w = work[k];
-    const Vec2 r = w.centre - origin;
-    w.IA = spatial_inertia(node.mass, node.inertia, r);
-    if (loaded) {
-      const double* f = &load_outputs[3 * static_cast<std::size_t>(node.body)];
-      // v x* (I v) written through the centre's velocity v_c: the body's momentum changes
-      // at m (omega x v_c), its moment about the origin at r x that, so a body about its
-      // own centre (r = 0) gets exactly no moment, as Case 2's rows give it.
-      const double omega = w.v[0];
-      const Vec2 vc(w.v[1] - omega * r.y(), w.v[2] + omega * r.x());
-      const Vec2 turn(-omega * vc.y(), omega * vc.x());
-      const Vec3 bias(node.mass * (r.x() * turn.y() - r.y() * turn.x()), node.mass * turn.x(), node.mass * turn.y());
-      w.pA = bias - Vec3(f[2] + r.x() * f[1] - r.y() * f[0], f[0], f[1]);
-    } else {
+    w.IA = w.I0;
+    if (loaded)
+      w.pA = w.bias - w.load;
+    else
       w.pA.setZero();
-    }
   }
   for (std::size_t k = nodes.size(); k-- > 0;) {
     const Node& node = nodes[k];
@@ -446,7 +446,7 @@ bool TreeDynamics::accelerations(double t, const Eigen::VectorXd& y, Eigen::Vect
   m.kinematics(y);
   // The loads at every body's maximal coordinates and rates.
   const std::size_t bodies = m.work.size(), first = m.parameters.size();
-  for (std::size_t k = 0; k < bodies; ++k) {
+  for (std::size_t k = 0; k < bodies && !m.loads_constant; ++k) {
     const Work& w = m.work[k];
     const auto b = static_cast<std::size_t>(m.nodes[k].body);
     m.load_inputs[first + 3 * b] = w.centre.x();
@@ -458,8 +458,27 @@ bool TreeDynamics::accelerations(double t, const Eigen::VectorXd& y, Eigen::Vect
     m.load_inputs[first + 3 * bodies + 3 * b + 1] = w.v[2] + w.v[0] * r.x();
     m.load_inputs[first + 3 * bodies + 3 * b + 2] = w.omega;
   }
-  m.load_inputs[first + 6 * bodies] = t;
-  m.loads.run(m.load_inputs.data(), m.load_outputs.data(), m.scratch.data());
+  if (!m.loads_constant) {
+    m.load_inputs[first + 6 * bodies] = t;
+    m.loads.run(m.load_inputs.data(), m.load_outputs.data(), m.scratch.data());
+  }
+  // Each body's spatial inertia, velocity-product force and load about the origin, once:
+  // the loop-closure passes reuse the inertias.
+  for (std::size_t k = 0; k < bodies; ++k) {
+    const Node& node = m.nodes[k];
+    Work& w = m.work[k];
+    const Vec2 r = w.centre - m.origin;
+    w.I0 = spatial_inertia(node.mass, node.inertia, r);
+    // v x* (I v) written through the centre's velocity v_c: the body's momentum changes
+    // at m (omega x v_c), its moment about the origin at r x that, so a body about its
+    // own centre (r = 0) gets exactly no moment, as Case 2's rows give it.
+    const double omega = w.v[0];
+    const Vec2 vc(w.v[1] - omega * r.y(), w.v[2] + omega * r.x());
+    const Vec2 turn(-omega * vc.y(), omega * vc.x());
+    w.bias = Vec3(node.mass * (r.x() * turn.y() - r.y() * turn.x()), node.mass * turn.x(), node.mass * turn.y());
+    const double* f = &m.load_outputs[3 * static_cast<std::size_t>(node.body)];
+    w.load = Vec3(f[2] + r.x() * f[1] - r.y() * f[0], f[0], f[1]);
+  }
   m.tau.setZero();
   m.recursion(true, m.tau, q_ddot);
   if (m.loop_rows == 0) return true;
