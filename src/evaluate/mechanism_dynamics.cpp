@@ -289,6 +289,15 @@ double MechanismDynamics::constraint_violation(double t, const Eigen::VectorXd& 
   return largest;
 }
 
+std::string MechanismDynamics::worst_joint(double t, const Eigen::VectorXd& y) const {
+  if (constraint_rows_ == 0) return "";
+  evaluate_constraints(t, y);
+  std::size_t worst = 0;
+  for (std::size_t i = 1; i < constraint_values_.size(); ++i)
+    if (std::fabs(constraint_values_[i]) > std::fabs(constraint_values_[worst])) worst = i;
+  return system_->mechanism().joints[static_cast<std::size_t>(constraint_joint_[worst])].name;
+}
+
 double MechanismDynamics::project(double t, Eigen::VectorXd& y) const {
   if (constraint_rows_ == 0) return 0;
   const auto m = static_cast<Eigen::Index>(constraint_rows_);

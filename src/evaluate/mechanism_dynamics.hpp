@@ -74,6 +74,8 @@ class MechanismDynamics {
   double project(double t, Eigen::VectorXd& y) const;
   /// The largest |C| of the kept constraints at y (0 without).
   [[nodiscard]] double constraint_violation(double t, const Eigen::VectorXd& y) const;
+  /// The name of the joint whose kept constraint is violated most at y ("" without).
+  [[nodiscard]] std::string worst_joint(double t, const Eigen::VectorXd& y) const;
 
   /// Everything a sample reports at (t, y), from one evaluation of the unknowns.
   void sample(double t, const Eigen::VectorXd& y, MechanismSample& out) const;

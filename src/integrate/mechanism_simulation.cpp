@@ -93,7 +93,9 @@ struct MechanismSimulation::Impl {
     if (dynamics.constraint_rows() == 0) return;
     const double violation = project ? dynamics.project(t, y) : dynamics.constraint_violation(t, y);
     if (violation > kOpenLoop)
-      fail(options, "the constraints came " + format_significant(violation, 2) + " m apart (the loop opened)",
+      fail(options,
+           "joint " + dynamics.worst_joint(t, y) + " came " + format_significant(violation, 2) +
+               " m apart (the loop opened)",
            project ? "try a smaller step or tighter rtol/atol" : "try stabilization by projection", t);
   }
   [[noreturn]] void fail_step(ode::StepStatus status, double t) {
