@@ -179,12 +179,16 @@ std::string json_summary(const SimulationStats& st, double wall) {
   return json_line("summary", summary) + "\n}\n";
 }
 
-void print_summary(const SimulationOptions& s, long rows, const SimulationStats& st, double wall) {
+/// "dop853 (rtol 1e-10, atol 1e-10)" or "rk4 (dt 0.001 s)", for the summaries.
+std::string method_text(const SimulationOptions& s) {
   const IntegratorInfo& integrator = info(s.integrator);
-  const std::string method = integrator.adaptive
-                                 ? std::string(integrator.name) + " (rtol " + format_roundtrip(s.rtol) + ", atol " +
-                                       format_roundtrip(s.atol) + ")"
-                                 : std::string(integrator.name) + " (dt " + format_roundtrip(s.dt) + " s)";
+  return integrator.adaptive ? std::string(integrator.name) + " (rtol " + format_roundtrip(s.rtol) + ", atol " +
+                                   format_roundtrip(s.atol) + ")"
+                             : std::string(integrator.name) + " (dt " + format_roundtrip(s.dt) + " s)";
+}
+
+void print_summary(const SimulationOptions& s, long rows, const SimulationStats& st, double wall) {
+  const std::string method = method_text(s);
   std::fprintf(stderr,
                "linkage simulate: Case %d, %s, stabilize %s, 0 to %s s, %ld rows\n"
                "  steps: %lld accepted, %lld rejected; right-hand side evaluations: %lld\n"
@@ -271,11 +275,7 @@ void run_simulate_mechanism(const SimulateOptions& o, const SimulationOptions& s
   if (file) file->commit();
   std::fflush(stdout);
   const MechanismStats& st = simulation.stats();
-  const IntegratorInfo& integrator = info(s.integrator);
-  const std::string method = integrator.adaptive
-                                 ? std::string(integrator.name) + " (rtol " + format_roundtrip(s.rtol) + ", atol " +
-                                       format_roundtrip(s.atol) + ")"
-                                 : std::string(integrator.name) + " (dt " + format_roundtrip(s.dt) + " s)";
+  const std::string method = method_text(s);
   std::fprintf(stderr,
                "linkage simulate: %s, Case %d, %s, stabilize %s, 0 to %s s, %ld rows\n"
                "  steps: %lld accepted, %lld rejected; right-hand side evaluations: %lld\n"

@@ -7,9 +7,8 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
-#include "encode/frame_pipeline.hpp"
 #include "encode/png_writer.hpp"
-#include "encode/video_writer.hpp"
+#include "pipeline/encode_frames.hpp"
 #include "render/vector_still.hpp"
 #include "scene/motion.hpp"
 
@@ -66,44 +65,9 @@ void produce_motion(const Clip& clip, const ClipProgress& progress, ClipResult& 
   const Motion motion = simulate(clip, clip.simulation, times, progress, result);
   ClipRenderer renderer(clip.inputs.params(), motion, s, clip.theme, run_label(clip.simulation));
 
-  std::optional<VideoWriter> video;
-  std::optional<PngSequenceWriter> pngs;
-  if (clip.out && clip.out_kind() == OutputKind::mp4) {
-    video.emplace(*clip.out, clip_video_options(s));
-    stats.encoder_opened = true;
-  }
-  if (clip.frames) {
-    ensure_directory(*clip.frames, "frames");
-    pngs.emplace(*clip.frames, s.width, s.height, "frames", PngOptions{}, 2, count);
-  }
-  FramePipeline pipeline(s.width, s.height, [&](const Frame& frame) {
-    if (video) video->write(frame);
-    if (pngs) pngs->write(frame);
-  });
-  for (long k = 0; k < count; ++k) {
-    throw_if_interrupted();
-    Frame& frame = pipeline.acquire();
-    renderer.draw(static_cast<std::size_t>(k), frame);
-    pipeline.submit();
-    if (progress) progress(ClipStage::draw, k + 1, count);
-  }
-  pipeline.finish();
-  result.draw_waited_seconds = pipeline.stats().producer_wait_seconds;
-  result.encoder_idle_seconds = pipeline.stats().consumer_idle_seconds;
-  if (pngs) {
-    pngs->finish();
-    const PngStats png = pngs->stats();
-    stats.png_files_written += png.frames;
-    stats.png_seconds += png.convert_seconds + png.encode_seconds;
-  }
-  if (video) {
-    video->finish();
-    stats.convert_seconds += video->stats().convert_seconds;
-    stats.encode_seconds += video->stats().encode_seconds + video->stats().finish_seconds;
-    result.video_bytes = video->stats().bytes;
-    result.encoder = video->encoder_name();
-    if (!video->note().empty()) result.notes.push_back(video->note());
-  }
+  encode_frames(
+      clip.out && clip.out_kind() == OutputKind::mp4 ? clip.out : std::nullopt, clip.frames, s, count,
+      [&](std::size_t k, Frame& frame) { renderer.draw(k, frame); }, progress, result);
   add_drawing(stats, renderer);
 }
 

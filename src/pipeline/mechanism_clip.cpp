@@ -7,10 +7,9 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
-#include "encode/frame_pipeline.hpp"
 #include "encode/png_writer.hpp"
-#include "encode/video_writer.hpp"
 #include "integrate/mechanism_simulation.hpp"
+#include "pipeline/encode_frames.hpp"
 #include "render/cairo_util.hpp"
 #include "render/mechanism_painter.hpp"
 #include "scene/mechanism_scene.hpp"
@@ -98,43 +97,9 @@ void produce_motion(const sym::System& system, const GiNaC::exmap& initial, cons
   MechanismFrames frames(mechanism_geometry(system), motion, clip);
 
   RenderStats& stats = result.stats;
-  std::optional<VideoWriter> video;
-  std::optional<PngSequenceWriter> pngs;
-  if (clip.out && output_kind(*clip.out, "out") == OutputKind::mp4) {
-    video.emplace(*clip.out, clip_video_options(s));
-    stats.encoder_opened = true;
-  }
-  if (clip.frames) {
-    ensure_directory(*clip.frames, "frames");
-    pngs.emplace(*clip.frames, s.width, s.height, "frames", PngOptions{}, 2, count);
-  }
-  FramePipeline pipeline(s.width, s.height, [&](const Frame& frame) {
-    if (video) video->write(frame);
-    if (pngs) pngs->write(frame);
-  });
-  for (long k = 0; k < count; ++k) {
-    throw_if_interrupted();
-    Frame& frame = pipeline.acquire();
-    frames.draw(static_cast<std::size_t>(k), frame);
-    pipeline.submit();
-    if (progress) progress(ClipStage::draw, k + 1, count);
-  }
-  pipeline.finish();
-  result.draw_waited_seconds = pipeline.stats().producer_wait_seconds;
-  result.encoder_idle_seconds = pipeline.stats().consumer_idle_seconds;
-  if (pngs) {
-    pngs->finish();
-    stats.png_files_written += pngs->stats().frames;
-    stats.png_seconds += pngs->stats().convert_seconds + pngs->stats().encode_seconds;
-  }
-  if (video) {
-    video->finish();
-    stats.convert_seconds += video->stats().convert_seconds;
-    stats.encode_seconds += video->stats().encode_seconds + video->stats().finish_seconds;
-    result.video_bytes = video->stats().bytes;
-    result.encoder = video->encoder_name();
-    if (!video->note().empty()) result.notes.push_back(video->note());
-  }
+  encode_frames(
+      clip.out && output_kind(*clip.out, "out") == OutputKind::mp4 ? clip.out : std::nullopt, clip.frames, s, count,
+      [&](std::size_t k, Frame& frame) { frames.draw(k, frame); }, progress, result);
   add_drawing(stats, frames.stats());
 }
 

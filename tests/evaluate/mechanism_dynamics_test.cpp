@@ -46,19 +46,7 @@ TEST(MechanismDynamics, HomeworkMatchesTheClosedFormAtRandomStates) {
 // compiled rows by LU. Same accelerations at random states, for every mechanism built in
 // code: pins, sliders, floating bases, springs, dampers, applied loads, closed loops.
 TEST(MechanismDynamics, RecursionEqualsTheCompiledRows) {
-  const std::vector<built::Named> mechanisms = {{"homework", built::homework},
-                                                {"double_pendulum", built::double_pendulum},
-                                                {"triple_pendulum", built::triple_pendulum},
-                                                {"four_bar", built::four_bar},
-                                                {"slider_crank", built::slider_crank},
-                                                {"arm_collar", built::arm_collar},
-                                                {"loaded", built::double_pendulum_loaded},
-                                                {"cart_pendulum", built::cart_pendulum},
-                                                {"reversed", built::reversed_joints},
-                                                {"floating_pair", built::floating_pair},
-                                                {"floating_collar", built::floating_collar},
-                                                {"four_bar_loaded", built::four_bar_loaded},
-                                                {"spring_pendulum", [] { return built::spring_pendulum(true); }}};
+  const std::vector<built::Named> mechanisms = built::all_mechanisms();
   std::mt19937 rng(13);
   for (const built::Named& named : mechanisms) {
     const sym::System system(named.make());
@@ -78,13 +66,7 @@ TEST(MechanismDynamics, RecursionEqualsTheCompiledRows) {
 
 // Each case's sample reports the same bodies' motion and joint forces at the same state.
 TEST(MechanismDynamics, CasesAgreeOnEveryBodyAndJoint) {
-  const std::vector<built::Named> mechanisms = {{"homework", built::homework},
-                                                {"double_pendulum", built::double_pendulum},
-                                                {"triple_pendulum", built::triple_pendulum},
-                                                {"four_bar", built::four_bar},
-                                                {"slider_crank", built::slider_crank},
-                                                {"arm_collar", built::arm_collar},
-                                                {"loaded", built::double_pendulum_loaded}};
+  const std::vector<built::Named> mechanisms = built::all_mechanisms();
   std::mt19937 rng(5);
   for (const built::Named& named : mechanisms) {
     const sym::System system(named.make());

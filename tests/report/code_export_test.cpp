@@ -9,6 +9,7 @@
 
 #include <cstdio>
 #include <map>
+#include <memory>
 #include <optional>
 #include <regex>
 #include <set>
@@ -157,6 +158,34 @@ std::string python_list(const std::vector<double>& values) {
   return out + "]";
 }
 
+// Elsewhere: every parameter, coordinate and rate of the file's state moved, at t = 0.7.
+struct Elsewhere {
+  std::vector<double> parameters, q, qd;
+  double t = 0.7;
+  std::unique_ptr<sym::System> system;
+  GiNaC::exmap values;
+};
+
+Elsewhere elsewhere(const Mechanism& mechanism, const MechanismSolution& s) {
+  Elsewhere e;
+  Mechanism other = mechanism;
+  for (std::size_t i = 0; i < other.parameters.size(); ++i) {
+    other.parameters[i].value *= 1 + 0.03 * static_cast<double>(i + 1);
+    e.parameters.push_back(other.parameters[i].value);
+  }
+  other.initial.clear();
+  for (std::size_t k = 0; k < s.system->coordinates().size(); ++k) {
+    const sym::GeneralizedCoordinate& g = s.system->coordinates()[k];
+    e.q.push_back(sym::to_double(s.state.at(g.symbols.q)) + 0.05 * static_cast<double>(k + 1));
+    e.qd.push_back(sym::to_double(s.state.at(g.symbols.q_dot)) + 0.1 * static_cast<double>(k + 1) - 0.2);
+    other.initial.push_back({g.coordinate.key, e.q.back(), {}});
+    other.initial.push_back({g.coordinate.key + "_dot", e.qd.back(), {}});
+  }
+  e.system = std::make_unique<sym::System>(other);
+  e.values = state_values(*e.system, e.system->initial_state(), e.t);
+  return e;
+}
+
 // Exports `mechanism`, runs the file's demo at its state and at other parameters, state
 // and time (appended to the file), and compares both with solve_numbers.
 void expect_python_agrees(const Mechanism& mechanism) {
@@ -165,26 +194,13 @@ void expect_python_agrees(const Mechanism& mechanism) {
     GTEST_SKIP() << "no python3 with NumPy (tried python3 and /usr/bin/python3); "
                     "./scripts/install-deps --tests installs python3-numpy";
   const MechanismSolution s = work_out_mechanism(mechanism, kCases);
-  const sym::System& system = *s.system;
 
   // Elsewhere: every parameter, coordinate and rate moved, at t = 0.7.
-  Mechanism other = mechanism;
-  std::vector<double> parameters, q, qd;
-  for (std::size_t i = 0; i < other.parameters.size(); ++i) {
-    other.parameters[i].value *= 1 + 0.03 * static_cast<double>(i + 1);
-    parameters.push_back(other.parameters[i].value);
-  }
-  other.initial.clear();
-  for (std::size_t k = 0; k < system.coordinates().size(); ++k) {
-    const sym::GeneralizedCoordinate& g = system.coordinates()[k];
-    q.push_back(sym::to_double(s.state.at(g.symbols.q)) + 0.05 * static_cast<double>(k + 1));
-    qd.push_back(sym::to_double(s.state.at(g.symbols.q_dot)) + 0.1 * static_cast<double>(k + 1) - 0.2);
-    other.initial.push_back({g.coordinate.key, q.back(), {}});
-    other.initial.push_back({g.coordinate.key + "_dot", qd.back(), {}});
-  }
-  const double t = 0.7;
-  const sym::System other_system(other);
-  const GiNaC::exmap other_values = state_values(other_system, other_system.initial_state(), t);
+  const Elsewhere e = elsewhere(mechanism, s);
+  const std::vector<double>&parameters = e.parameters, &q = e.q, &qd = e.qd;
+  const double t = e.t;
+  const sym::System& other_system = *e.system;
+  const GiNaC::exmap& other_values = e.values;
 
   const test::TempDir dir;
   const auto file = dir / (export_stem(s) + ".py");
@@ -211,24 +227,11 @@ void expect_matlab_agrees(const Mechanism& mechanism) {
   if (std::system("octave-cli --version >/dev/null 2>&1") != 0)
     GTEST_SKIP() << "no octave-cli; ./scripts/install-deps --tests installs octave";
   const MechanismSolution s = work_out_mechanism(mechanism, kCases);
-  const sym::System& system = *s.system;
-  Mechanism other = mechanism;
-  std::vector<double> parameters, q, qd;
-  for (std::size_t i = 0; i < other.parameters.size(); ++i) {
-    other.parameters[i].value *= 1 + 0.03 * static_cast<double>(i + 1);
-    parameters.push_back(other.parameters[i].value);
-  }
-  other.initial.clear();
-  for (std::size_t k = 0; k < system.coordinates().size(); ++k) {
-    const sym::GeneralizedCoordinate& g = system.coordinates()[k];
-    q.push_back(sym::to_double(s.state.at(g.symbols.q)) + 0.05 * static_cast<double>(k + 1));
-    qd.push_back(sym::to_double(s.state.at(g.symbols.q_dot)) + 0.1 * static_cast<double>(k + 1) - 0.2);
-    other.initial.push_back({g.coordinate.key, q.back(), {}});
-    other.initial.push_back({g.coordinate.key + "_dot", qd.back(), {}});
-  }
-  const double t = 0.7;
-  const sym::System other_system(other);
-  const GiNaC::exmap other_values = state_values(other_system, other_system.initial_state(), t);
+  const Elsewhere e = elsewhere(mechanism, s);
+  const std::vector<double>&parameters = e.parameters, &q = e.q, &qd = e.qd;
+  const double t = e.t;
+  const sym::System& other_system = *e.system;
+  const GiNaC::exmap& other_values = e.values;
 
   const test::TempDir dir;
   const std::string stem = export_stem(s);

@@ -304,6 +304,24 @@ struct Named {
 /// How GoogleTest prints a Named parameter.
 inline void PrintTo(const Named& named, std::ostream* out) { *out << named.name; }
 
+/// Every mechanism built here: pins, sliders, floating bases, springs, dampers, applied
+/// loads and closed loops.
+inline std::vector<Named> all_mechanisms() {
+  return {{"homework", homework},
+          {"double_pendulum", double_pendulum},
+          {"triple_pendulum", triple_pendulum},
+          {"four_bar", four_bar},
+          {"slider_crank", slider_crank},
+          {"arm_collar", arm_collar},
+          {"loaded", double_pendulum_loaded},
+          {"cart_pendulum", cart_pendulum},
+          {"reversed", reversed_joints},
+          {"floating_pair", floating_pair},
+          {"floating_collar", floating_collar},
+          {"four_bar_loaded", four_bar_loaded},
+          {"spring_pendulum", [] { return spring_pendulum(true); }}};
+}
+
 /// A random state of `system`: with no loop, every generalized coordinate and rate drawn
 /// (angles in [-pi, pi], x in [0.2, 1], y in [-1, -0.2], s in [0.1, 0.6] m, rates in
 /// [-2, 2]); with loops, the independent coordinates moved by up to 0.2 from [initial],
