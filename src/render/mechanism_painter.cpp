@@ -54,6 +54,23 @@ void paint_lines(cairo_t* cr, const DrawStyle& style, const Camera& camera, cons
   }
 }
 
+/// The traced point itself, where its trail ends: on top of its body, so a point off the
+/// body's outline (a coupler point) shows what draws the curve.
+void paint_trail_heads(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List& list) {
+  const Theme& theme = *style.theme;
+  for (const List::Line& line : list.lines) {
+    if (line.kind != List::Line::Kind::trail || line.points.empty()) continue;
+    const Vec2 p = camera.to_pixels(line.points.back());
+    cairo_new_sub_path(cr);
+    cairo_arc(cr, p.x(), p.y(), 2.5 * style.trail_width(), 0, 2 * M_PI);
+    set_colour(cr, theme.trail);
+    cairo_fill_preserve(cr);
+    set_colour(cr, theme.text);
+    cairo_set_line_width(cr, 0.5 * style.edge_width());
+    cairo_stroke(cr);
+  }
+}
+
 void paint_bodies(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List& list) {
   const Theme& theme = *style.theme;
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
@@ -192,6 +209,7 @@ void paint_mechanism_frame(cairo_t* cr, const DrawStyle& style, const Camera& ca
   paint_lines(cr, style, camera, list, List::Line::Kind::dashpot);
   paint_bodies(cr, style, camera, list);
   paint_lines(cr, style, camera, list, List::Line::Kind::spin);
+  paint_trail_heads(cr, style, camera, list);
   paint_markers(cr, style, camera, list, List::Marker::Kind::ground);
   paint_markers(cr, style, camera, list, List::Marker::Kind::guide);
   paint_markers(cr, style, camera, list, List::Marker::Kind::pin);

@@ -157,6 +157,18 @@ Vec2 world_point(const std::vector<double>& pose, const BodyPoint& p) {
   return Vec2(pose[b], pose[b + 1]) + rotated(pose[b + 2], p.local);
 }
 
+/// Whether `p` lies inside the closed polygon `outline` (even-odd rule); a point mass's
+/// single-point outline holds nothing.
+bool inside(const std::vector<Vec2>& outline, const Vec2& p) {
+  bool in = false;
+  for (std::size_t i = 0, j = outline.size() - 1; i < outline.size(); j = i++) {
+    const Vec2 &a = outline[i], &c = outline[j];
+    if ((a.y() > p.y()) != (c.y() > p.y()) && p.x() < (c.x() - a.x()) * (p.y() - a.y()) / (c.y() - a.y()) + a.x())
+      in = !in;
+  }
+  return in;
+}
+
 std::vector<Vec2> body_outline(const MechanismGeometry::BodyShape& body, const std::vector<double>& pose,
                                std::size_t index) {
   const Vec2 centre(pose[3 * index], pose[3 * index + 1]);
@@ -415,6 +427,14 @@ void MechanismScene::add_trails(std::size_t k, MechanismDrawList& out) const {
       line.points.push_back(world_point(fine ? motion_.trail_poses[i] : motion_.samples[i].pose, trail));
     }
     out.lines.push_back(std::move(line));
+    // A traced point off its body's outline (a coupler point) is tied to the body's
+    // centre by a thin bar, so the picture shows what carries it.
+    if (trail.body < 0) continue;
+    const std::vector<double>& pose = motion_.samples[k].pose;
+    const auto b = static_cast<std::size_t>(trail.body);
+    const Vec2 at = world_point(pose, trail);
+    if (!inside(body_outline(geometry_.bodies[b], pose, b), at))
+      out.lines.push_back({MechanismDrawList::Line::Kind::spin, {Vec2(pose[3 * b], pose[3 * b + 1]), at}});
   }
 }
 
