@@ -432,9 +432,11 @@ void MechanismScene::add_trails(std::size_t k, MechanismDrawList& out) const {
     if (trail.body < 0) continue;
     const std::vector<double>& pose = motion_.samples[k].pose;
     const auto b = static_cast<std::size_t>(trail.body);
-    const Vec2 at = world_point(pose, trail);
-    if (!inside(body_outline(geometry_.bodies[b], pose, b), at))
-      out.lines.push_back({MechanismDrawList::Line::Kind::spin, {Vec2(pose[3 * b], pose[3 * b + 1]), at}});
+    const Vec2 at = world_point(pose, trail), centre(pose[3 * b], pose[3 * b + 1]);
+    // Grown by 5 % about the centre: a point on the outline (a rod's end) is the body's own.
+    std::vector<Vec2> outline = body_outline(geometry_.bodies[b], pose, b);
+    for (Vec2& v : outline) v = centre + 1.05 * (v - centre);
+    if (!inside(outline, at)) out.lines.push_back({MechanismDrawList::Line::Kind::spin, {centre, at}});
   }
 }
 
