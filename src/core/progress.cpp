@@ -26,8 +26,10 @@ ProgressOutput ProgressOutput::from_environment() {
   if (const char* text = std::getenv("LINKAGE_PROGRESS_INTERVAL")) {
     char* end = nullptr;
     const double seconds = std::strtod(text, &end);
-    if (end != text && *end == '\0' && std::isfinite(seconds) && seconds > 0)
+    if (end != text && *end == '\0' && std::isfinite(seconds) && seconds > 0) {
       output.interval = std::chrono::duration<double>(seconds);
+      output.plain = true;
+    }
   }
   return output;
 }
@@ -50,7 +52,7 @@ Progress::Progress(std::string label, double total, std::string unit, ProgressOu
 Progress::~Progress() { finish(); }
 
 void Progress::update(double done) {
-  if (!visible_ || finished_) return;
+  if (!visible_ || finished_ || !(output_.terminal || output_.plain)) return;
   const auto now = output_.now();
   const std::chrono::duration<double> since_draw = now - last_draw_;
   if (output_.terminal ? since_draw < std::chrono::milliseconds(100) && done < total_ : since_draw < output_.interval)

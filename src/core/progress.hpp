@@ -1,9 +1,9 @@
 #pragma once
 // Progress of long work on stderr. On a terminal: one line redrawn at most ten times a
-// second and erased when done. Elsewhere (a log, a CI job, a pipe): a plain line every
-// few seconds, "linkage: simulate: 41% (410000 of 1e+06 s simulated), 12 s so far",
-// only once the work has lasted that long, so short runs stay silent. `quiet` silences
-// both. LINKAGE_PROGRESS_INTERVAL (seconds) overrides the interval of plain lines.
+// second and erased when done. Elsewhere (a log, a CI job, a pipe) nothing, unless
+// LINKAGE_PROGRESS_INTERVAL (seconds) asks for a plain line at that interval,
+// "linkage: simulate: 41% (410000 of 1e+06 s simulated), 12 s so far", once the work
+// has lasted that long. `quiet` silences both.
 #include <chrono>
 #include <cstdio>
 #include <functional>
@@ -15,12 +15,13 @@ namespace linkage {
 struct ProgressOutput {
   using Clock = std::chrono::steady_clock;
   std::FILE* sink = stderr;
-  bool terminal = false;                        // redraw one line in place instead of printing plain lines
+  bool terminal = false;                        // redraw one line in place
+  bool plain = false;                           // off a terminal: plain lines at `interval`
   std::chrono::duration<double> interval{5.0};  // between plain lines, and before the first
   std::function<Clock::time_point()> now = [] { return Clock::now(); };
 
-  /// stderr, a terminal if it is one, the interval from LINKAGE_PROGRESS_INTERVAL if
-  /// that is a positive number of seconds (else 5 s).
+  /// stderr, a terminal if it is one; plain lines at the interval LINKAGE_PROGRESS_INTERVAL
+  /// gives if that is a positive number of seconds (else none off a terminal, 5 s kept).
   static ProgressOutput from_environment();
 };
 

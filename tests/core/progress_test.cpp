@@ -1,5 +1,5 @@
-// Progress off a terminal: plain lines at an interval, only once the work has lasted
-// that long, with a clock the test controls; on a terminal, one line redrawn in place.
+// Progress off a terminal: silent, or when asked plain lines at an interval, only once the
+// work has lasted that long, with a clock the test controls; on a terminal, one line redrawn in place.
 #include "core/progress.hpp"
 
 #include <gtest/gtest.h>
@@ -25,6 +25,7 @@ struct Harness {
     ProgressOutput o;
     o.sink = file.get();
     o.terminal = terminal;
+    o.plain = !terminal;
     o.interval = std::chrono::duration<double>(interval_seconds);
     o.now = [this] { return now; };
     return o;
@@ -66,6 +67,19 @@ TEST(Progress, PlainLinesOnlyAfterTheIntervalAndThenEveryInterval) {
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 2) << "nothing after finish(): " << text;
 }
 
+TEST(Progress, OffATerminalSilentUnlessPlainLinesAreAskedFor) {
+  Harness h;
+  ProgressOutput output = h.output(false, 5.0);
+  output.plain = false;
+  Progress progress("render", 300L, "frames", output);
+  for (int k = 1; k <= 30; ++k) {
+    h.now += milliseconds(1000);
+    progress.update(10L * k);
+  }
+  progress.finish();
+  EXPECT_EQ(h.text(), "") << "30 s of work off a terminal, nothing asked for";
+}
+
 TEST(Progress, CountsAreWholeNumbers) {
   Harness h;
   Progress progress("render", 300.0, "frames", h.output(false, 0.5));
@@ -105,12 +119,15 @@ TEST(Progress, QuietShowsNothing) {
 TEST(Progress, IntervalFromTheEnvironment) {
   ::setenv("LINKAGE_PROGRESS_INTERVAL", "0.25", 1);
   EXPECT_DOUBLE_EQ(ProgressOutput::from_environment().interval.count(), 0.25);
+  EXPECT_TRUE(ProgressOutput::from_environment().plain);
   for (const char* bad : {"", "0", "-1", "fast", "1e400", "2 s"}) {
     ::setenv("LINKAGE_PROGRESS_INTERVAL", bad, 1);
     EXPECT_DOUBLE_EQ(ProgressOutput::from_environment().interval.count(), 5.0) << "'" << bad << "'";
+    EXPECT_FALSE(ProgressOutput::from_environment().plain) << "'" << bad << "'";
   }
   ::unsetenv("LINKAGE_PROGRESS_INTERVAL");
   EXPECT_DOUBLE_EQ(ProgressOutput::from_environment().interval.count(), 5.0);
+  EXPECT_FALSE(ProgressOutput::from_environment().plain) << "off a terminal, silent unless asked";
 }
 
 }  // namespace
