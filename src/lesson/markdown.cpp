@@ -83,7 +83,7 @@ struct Parse {
   [[nodiscard]] bool forwarding() const { return containers <= kMaxNesting && spans <= kMaxNesting; }
 };
 
-// The word for what a level too many is, or "" when within the bound.
+// Counts a level in or out; the first level past the bound names what is too deep.
 void count(Parse& p, int& level, int delta, const char* what) {
   level += delta;
   if (delta > 0 && level == kMaxNesting + 1 && p.too_deep.empty()) p.too_deep = what;
