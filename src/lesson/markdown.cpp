@@ -89,6 +89,11 @@ void count(Parse& p, int& level, int delta, const char* what) {
   if (delta > 0 && level == kMaxNesting + 1 && p.too_deep.empty()) p.too_deep = what;
 }
 
+Error too_deep(std::string_view markdown, const char* at, const std::string& what) {
+  return Error::input(concat(
+      {source_position(markdown, at), ": ", what, " nested more than ", std::to_string(kMaxNesting), " levels deep"}));
+}
+
 void parse(std::string_view markdown, Renderer& renderer) {
   Parse state{markdown, renderer, 0, 0, {}, {}};
   MD_PARSER parser{};
@@ -119,9 +124,7 @@ void parse(std::string_view markdown, Renderer& renderer) {
     auto& p = *static_cast<Parse*>(data);
     const bool source = in_source(p.markdown, text);
     if (!p.too_deep.empty() && source) {
-      p.error =
-          std::make_exception_ptr(Error::input(source_position(p.markdown, text) + ": " + p.too_deep +
-                                               " nested more than " + std::to_string(kMaxNesting) + " levels deep"));
+      p.error = std::make_exception_ptr(too_deep(p.markdown, text, p.too_deep));
       return 1;
     }
     return p.forwarding() ? p.call([&] { p.renderer.text(type, std::string_view(text, size), source); }) : 0;
@@ -129,8 +132,7 @@ void parse(std::string_view markdown, Renderer& renderer) {
   const int result = md_parse(markdown.data(), static_cast<MD_SIZE>(markdown.size()), &parser, &state);
   if (state.error) std::rethrow_exception(state.error);
   if (!state.too_deep.empty())  // nothing written past the bound: say where the text ends
-    throw Error::input(source_position(markdown, markdown.data() + markdown.size()) + ": " + state.too_deep +
-                       " nested more than " + std::to_string(kMaxNesting) + " levels deep");
+    throw too_deep(markdown, markdown.data() + markdown.size(), state.too_deep);
   if (result != 0) throw Error::failure("the Markdown parser md4c failed (out of memory?)");
 }
 
@@ -171,6 +173,11 @@ std::string entity(std::string_view e) {
   return std::string(e);
 }
 
+std::string trim_spaces(std::string_view s) {
+  const std::size_t start = s.find_first_not_of(" \n");
+  return start == std::string_view::npos ? "" : std::string(s.substr(start, s.find_last_not_of(" \n") - start + 1));
+}
+
 // Math text as LaTeX reads it: md4c's line breaks (its own " ") become new lines in
 // display math, and each piece remembers where it came from for error messages.
 struct Math {
@@ -188,10 +195,7 @@ struct Math {
     if (source) from.emplace_back(text.size(), piece.data());
     text += !source && display ? std::string_view("\n") : piece;
   }
-  [[nodiscard]] std::string trimmed() const {
-    const std::size_t start = text.find_first_not_of(" \n");
-    return start == std::string::npos ? "" : text.substr(start, text.find_last_not_of(" \n") - start + 1);
-  }
+  [[nodiscard]] std::string trimmed() const { return trim_spaces(text); }
   // Where the character `at` of `converted` (a copy of trimmed()) came from.
   [[nodiscard]] const char* source_of(const std::string& converted, const char* at) const {
     const auto offset = static_cast<std::size_t>(at - converted.data()) + text.find_first_not_of(" \n");
@@ -209,11 +213,6 @@ char alignment(void* td_detail) {
 }
 
 // --- the terminal -----------------------------------------------------------------
-
-std::string trim_spaces(std::string_view s) {
-  const std::size_t start = s.find_first_not_of(" \n");
-  return start == std::string_view::npos ? "" : std::string(s.substr(start, s.find_last_not_of(" \n") - start + 1));
-}
 
 // A pipe table with its columns lined up (`align`: 'r' for right) and a rule under
 // the header.
@@ -559,10 +558,10 @@ std::string latex_chars(std::string_view s) {
       j += n;
     }
     std::string scripts;
-    if (!sub.empty()) scripts += "_{" + sub + "}";
-    if (!sup.empty()) scripts += "^{" + sup + "}";
+    if (!sub.empty()) scripts += concat({"_{", sub, "}"});
+    if (!sup.empty()) scripts += concat({"^{", sup, "}"});
     if (!tex_symbol(c).empty() || math != base || !scripts.empty()) {
-      out += "$" + (math.empty() ? std::string("{}") : math) + scripts + "$";  // {} for a script alone
+      out += concat({"$", math.empty() ? "{}" : math, scripts, "$"});  // {} for a script alone
       i = j;
       continue;
     }
