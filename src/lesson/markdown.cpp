@@ -1,30 +1,41 @@
 #include "lesson/markdown.hpp"
 
+#include <md4c.h>
+
 #include <algorithm>
-#include <array>
+#include <cctype>
+#include <cstdlib>
+#include <exception>
 #include <functional>
+#include <utility>
 #include <vector>
 
 #include "core/error.hpp"
 #include "core/limits.hpp"
 #include "lesson/latex_text.hpp"
 #include "report/latex_math.hpp"
+#include "report/notation.hpp"
 #include "report/text_layout.hpp"
 #include "report/unicode_tex.hpp"
 
 namespace linkage::lesson {
 namespace {
 
-// --- blocks ------------------------------------------------------------------------
+// --- md4c's events, bounded -----------------------------------------------------------
 
-struct Block {
-  enum class Kind { paragraph, heading, item, quote, code, math, table } kind = Kind::paragraph;
-  std::string text;    // joined lines (paragraph, heading, item, quote) or raw lines (code, math, table)
-  int level = 0;       // heading level, or list nesting (leading spaces / 2)
-  std::string marker;  // "-" or "3." for items
-  // Where the text came from: (offset in text, offset in the Markdown) at the start of
-  // each appended piece, so an error can point into what the author wrote.
-  std::vector<std::pair<std::size_t, std::size_t>> from;
+// A renderer of md4c's events. md4c nests as deep as the text does and bounds nothing,
+// so parse() forwards only kMaxNesting levels of containers (quotes, lists, items) and
+// of spans, and refuses the text at the first character past the bound.
+class Renderer {
+ public:
+  virtual ~Renderer() = default;
+  virtual void enter_block(MD_BLOCKTYPE type, void* detail) = 0;
+  virtual void leave_block(MD_BLOCKTYPE type) = 0;
+  virtual void enter_span(MD_SPANTYPE type, void* detail) = 0;
+  virtual void leave_span(MD_SPANTYPE type) = 0;
+  // `source` is true when `text` points into the Markdown (md4c hands its own strings
+  // for line breaks inside code and math, and for NUL characters).
+  virtual void text(MD_TEXTTYPE type, std::string_view text, bool source) = 0;
 };
 
 // "line 3, column 17" of the character `at` points to in `markdown`.
@@ -43,263 +54,440 @@ std::string source_position(std::string_view markdown, const char* at) {
   return "line " + std::to_string(line) + ", column " + std::to_string(column);
 }
 
-// Appends `separator` and `piece` (a view into `source`) to the block's text.
-void append(Block& b, std::string_view source, std::string_view separator, std::string_view piece) {
-  b.text += separator;
-  b.from.emplace_back(b.text.size(), static_cast<std::size_t>(piece.data() - source.data()));
-  b.text += piece;
+bool in_source(std::string_view markdown, const char* at) {
+  return !std::less<const char*>()(at, markdown.data()) &&
+         std::less<const char*>()(at, markdown.data() + markdown.size());
 }
 
-Block block(Block::Kind kind, std::string_view source, std::string_view text, int level = 0, std::string marker = "") {
-  Block b{kind, "", level, std::move(marker), {}};
-  append(b, source, "", text);
-  return b;
-}
+// A level of nesting: a quote, or a list item (its list is the same level).
+bool is_container(MD_BLOCKTYPE type) { return type == MD_BLOCK_QUOTE || type == MD_BLOCK_LI; }
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
-  return s;
-}
+struct Parse {
+  std::string_view markdown;
+  Renderer& renderer;
+  int containers = 0, spans = 0;  // open levels, counted past the bound too
+  std::string too_deep;           // what is nested too deep, until a character says where
+  std::exception_ptr error;
 
-std::vector<std::string_view> split_lines(std::string_view text) {
-  std::vector<std::string_view> lines;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    const std::size_t end = text.find('\n', start);
-    if (end == std::string_view::npos) {
-      if (start < text.size()) lines.push_back(text.substr(start));
-      break;
+  // Runs `f` unless the text is refused already; md4c stops when this returns non-zero.
+  int call(const std::function<void()>& f) {
+    if (error) return 1;
+    try {
+      f();
+    } catch (...) {  // never through md4c's C frames
+      error = std::current_exception();
+      return 1;
     }
-    lines.push_back(text.substr(start, end - start));
-    start = end + 1;
+    return 0;
   }
-  return lines;
+  [[nodiscard]] bool forwarding() const { return containers <= kMaxNesting && spans <= kMaxNesting; }
+};
+
+// Counts a level in or out; the first level past the bound names what is too deep.
+void count(Parse& p, int& level, int delta, const char* what) {
+  level += delta;
+  if (delta > 0 && level == kMaxNesting + 1 && p.too_deep.empty()) p.too_deep = what;
 }
 
-std::size_t leading_spaces(std::string_view line) {
-  std::size_t n = 0;
-  while (n < line.size() && line[n] == ' ') ++n;
-  return n;
+Error too_deep(std::string_view markdown, const char* at, const std::string& what) {
+  return Error::input(concat(
+      {source_position(markdown, at), ": ", what, " nested more than ", std::to_string(kMaxNesting), " levels deep"}));
 }
 
-// "- item", "* item", "12. item": the marker and where the text starts.
-bool list_marker(std::string_view line, std::string& marker, std::size_t& text_start) {
-  const std::size_t indent = leading_spaces(line);
-  std::string_view rest = line.substr(indent);
-  if (rest.size() >= 2 && (rest[0] == '-' || rest[0] == '*' || rest[0] == '+') && rest[1] == ' ') {
-    marker = "-";
-    text_start = indent + 2;
-    return true;
+void parse(std::string_view markdown, Renderer& renderer) {
+  Parse state{markdown, renderer, 0, 0, {}, {}};
+  MD_PARSER parser{};
+  parser.flags = MD_FLAG_TABLES | MD_FLAG_STRIKETHROUGH | MD_FLAG_LATEXMATHSPANS | MD_FLAG_NOHTML;
+  parser.enter_block = [](MD_BLOCKTYPE type, void* detail, void* data) {
+    auto& p = *static_cast<Parse*>(data);
+    if (is_container(type)) count(p, p.containers, 1, "lists and quotes are");
+    return p.forwarding() ? p.call([&] { p.renderer.enter_block(type, detail); }) : 0;
+  };
+  parser.leave_block = [](MD_BLOCKTYPE type, void*, void* data) {
+    auto& p = *static_cast<Parse*>(data);
+    const int result = p.forwarding() ? p.call([&] { p.renderer.leave_block(type); }) : 0;
+    if (is_container(type)) count(p, p.containers, -1, "");
+    return result;
+  };
+  parser.enter_span = [](MD_SPANTYPE type, void* detail, void* data) {
+    auto& p = *static_cast<Parse*>(data);
+    count(p, p.spans, 1, "emphasis, links and math spans are");
+    return p.forwarding() ? p.call([&] { p.renderer.enter_span(type, detail); }) : 0;
+  };
+  parser.leave_span = [](MD_SPANTYPE type, void*, void* data) {
+    auto& p = *static_cast<Parse*>(data);
+    const int result = p.forwarding() ? p.call([&] { p.renderer.leave_span(type); }) : 0;
+    count(p, p.spans, -1, "");
+    return result;
+  };
+  parser.text = [](MD_TEXTTYPE type, const MD_CHAR* text, MD_SIZE size, void* data) {
+    auto& p = *static_cast<Parse*>(data);
+    const bool source = in_source(p.markdown, text);
+    if (!p.too_deep.empty() && source) {
+      p.error = std::make_exception_ptr(too_deep(p.markdown, text, p.too_deep));
+      return 1;
+    }
+    return p.forwarding() ? p.call([&] { p.renderer.text(type, std::string_view(text, size), source); }) : 0;
+  };
+  const int result = md_parse(markdown.data(), static_cast<MD_SIZE>(markdown.size()), &parser, &state);
+  if (state.error) std::rethrow_exception(state.error);
+  if (!state.too_deep.empty())  // nothing written past the bound: say where the text ends
+    throw too_deep(markdown, markdown.data() + markdown.size(), state.too_deep);
+  if (result != 0) throw Error::failure("the Markdown parser md4c failed (out of memory?)");
+}
+
+// The characters an entity (&amp;, &#233;, &#x3B8;) stands for; the few named ones
+// lessons would write, else the entity as written.
+std::string entity(std::string_view e) {
+  auto utf8 = [](unsigned long c) {
+    std::string out;
+    if (c < 0x80) {
+      out += static_cast<char>(c);
+    } else if (c < 0x800) {
+      out += static_cast<char>(0xC0 | (c >> 6));
+      out += static_cast<char>(0x80 | (c & 0x3F));
+    } else if (c < 0x10000) {
+      out += static_cast<char>(0xE0 | (c >> 12));
+      out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+      out += static_cast<char>(0x80 | (c & 0x3F));
+    } else {
+      out += static_cast<char>(0xF0 | (c >> 18));
+      out += static_cast<char>(0x80 | ((c >> 12) & 0x3F));
+      out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+      out += static_cast<char>(0x80 | (c & 0x3F));
+    }
+    return out;
+  };
+  if (e.starts_with("&#")) {
+    const bool hex = e.size() > 2 && (e[2] == 'x' || e[2] == 'X');
+    const std::string digits(e.substr(hex ? 3 : 2, e.size() - (hex ? 4 : 3)));
+    const unsigned long c = std::strtoul(digits.c_str(), nullptr, hex ? 16 : 10);
+    return c == 0 || c > 0x10FFFF || (c >= 0xD800 && c <= 0xDFFF) ? "\uFFFD" : utf8(c);
   }
-  std::size_t digits = 0;
-  while (digits < rest.size() && std::isdigit(static_cast<unsigned char>(rest[digits]))) ++digits;
-  if (digits > 0 && digits <= 9 && digits + 1 < rest.size() && rest[digits] == '.' && rest[digits + 1] == ' ') {
-    marker = std::string(rest.substr(0, digits + 1));
-    text_start = indent + digits + 2;
-    return true;
-  }
-  return false;
+  for (const auto& [name, text] : {std::pair<std::string_view, std::string_view>{"&amp;", "&"},
+                                   {"&lt;", "<"},
+                                   {"&gt;", ">"},
+                                   {"&quot;", "\""},
+                                   {"&nbsp;", " "}})
+    if (e == name) return std::string(text);
+  return std::string(e);
 }
 
-// The cells of a pipe-table row ("| a | b |"), trimmed; empty for the |---| rule.
-std::vector<std::string_view> table_cells(std::string_view line) {
-  std::string_view t = trim(line);
-  if (t.starts_with('|')) t.remove_prefix(1);
-  if (t.ends_with('|')) t.remove_suffix(1);
-  if (t.find_first_not_of("-:| ") == std::string_view::npos) return {};
-  std::vector<std::string_view> cells;
-  std::size_t start = 0;
-  for (std::size_t bar = t.find('|');; bar = t.find('|', start)) {
-    cells.push_back(trim(t.substr(start, bar == std::string_view::npos ? bar : bar - start)));
-    if (bar == std::string_view::npos) break;
-    start = bar + 1;
-  }
-  return cells;
+std::string trim_spaces(std::string_view s) {
+  const std::size_t start = s.find_first_not_of(" \n");
+  return start == std::string_view::npos ? "" : std::string(s.substr(start, s.find_last_not_of(" \n") - start + 1));
 }
 
-std::vector<Block> parse_blocks(std::string_view markdown) {
-  std::vector<Block> blocks;
-  const std::vector<std::string_view> lines = split_lines(markdown);
-  Block* open = nullptr;  // a paragraph, item or quote still taking lines
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    const std::string_view line = lines[i];
-    const std::string_view t = trim(line);
-    if (t.empty()) {
-      open = nullptr;
-      continue;
+// Math text as LaTeX reads it: md4c's line breaks (its own " ") become new lines in
+// display math, and each piece remembers where it came from for error messages.
+struct Math {
+  std::string text;
+  std::vector<std::pair<std::size_t, const char*>> from;  // (offset in text, source)
+  bool display = false;
+  const char* begin = nullptr;  // the Markdown's start
+
+  void add(std::string_view piece, bool source) {
+    if (source && display && text.ends_with('\n')) {  // md4c drops a line's indentation: keep it
+      const char* indent = piece.data();
+      while (indent > begin && (indent[-1] == ' ' || indent[-1] == '\t')) --indent;
+      piece = std::string_view(indent, static_cast<std::size_t>(piece.data() + piece.size() - indent));
     }
-    if (t.starts_with("```") || t.starts_with("$$")) {
-      const bool code = t.starts_with("```");
-      Block b{code ? Block::Kind::code : Block::Kind::math, "", 0, "", {}};
-      const std::string_view fence = code ? "```" : "$$";
-      // A one-line math block: $$ ... $$
-      if (!code && t.size() > 4 && t.ends_with("$$")) {
-        append(b, markdown, "", trim(t.substr(2, t.size() - 4)));
-      } else {
-        if (!code && t.size() > 2) {
-          append(b, markdown, "", trim(t.substr(2)));
-          b.text += "\n";
-        }
-        for (++i; i < lines.size(); ++i) {
-          const std::string_view inner = trim(lines[i]);
-          if (inner.starts_with(fence) || (!code && inner.ends_with("$$"))) {
-            if (!code && inner.size() > 2) {
-              append(b, markdown, "", trim(inner.substr(0, inner.size() - 2)));
-              b.text += "\n";
-            }
-            break;
-          }
-          append(b, markdown, "", lines[i]);
-          b.text += "\n";
-        }
-        while (!b.text.empty() && b.text.back() == '\n') b.text.pop_back();
-      }
-      blocks.push_back(std::move(b));
-      open = nullptr;
-      continue;
-    }
-    if (t.front() == '#') {
-      std::size_t level = 0;
-      while (level < t.size() && t[level] == '#') ++level;
-      blocks.push_back(block(Block::Kind::heading, markdown, trim(t.substr(level)), static_cast<int>(level)));
-      open = nullptr;
-      continue;
-    }
-    if (t.front() == '|') {
-      if (!blocks.empty() && blocks.back().kind == Block::Kind::table && open == &blocks.back())
-        append(blocks.back(), markdown, "\n", t);
-      else
-        blocks.push_back(block(Block::Kind::table, markdown, t));
-      open = &blocks.back();
-      continue;
-    }
-    if (t.front() == '>') {
-      const std::string_view content = trim(t.substr(1));
-      if (open != nullptr && open->kind == Block::Kind::quote) {
-        if (content.empty())
-          open->text += "\n";
-        else
-          append(*open, markdown, open->text.empty() || open->text.back() == '\n' ? "" : " ", content);
-      } else {
-        blocks.push_back(block(Block::Kind::quote, markdown, content));
-        open = &blocks.back();
-      }
-      continue;
-    }
-    std::string marker;
-    std::size_t text_start = 0;
-    // As in CommonMark, a numbered item interrupts a paragraph only when it counts from 1
-    // ("240000. The ..." in the middle of a paragraph is a number, not a list).
-    const bool continues = open != nullptr && open->kind == Block::Kind::paragraph;
-    if (list_marker(line, marker, text_start) && !(continues && marker != "-" && marker != "1.")) {
-      // Each level indents the item's lines further: a bound keeps the output in proportion.
-      if (leading_spaces(line) / 2 > static_cast<std::size_t>(kMaxNesting))
-        throw Error::input(source_position(markdown, line.data()) + ": a list item indented " +
-                           std::to_string(leading_spaces(line)) + " spaces is nested more than " +
-                           std::to_string(kMaxNesting) + " levels deep (each 2 spaces are a level)");
-      blocks.push_back(block(Block::Kind::item, markdown, trim(line.substr(text_start)),
-                             static_cast<int>(leading_spaces(line) / 2), marker));
-      open = &blocks.back();
-      continue;
-    }
-    if (open != nullptr && open->kind != Block::Kind::table) {
-      append(*open, markdown, " ", t);
-      continue;
-    }
-    blocks.push_back(block(Block::Kind::paragraph, markdown, t));
-    open = &blocks.back();
+    if (source) from.emplace_back(text.size(), piece.data());
+    text += !source && display ? std::string_view("\n") : piece;
   }
-  return blocks;
+  [[nodiscard]] std::string trimmed() const { return trim_spaces(text); }
+  // Where the character `at` of `converted` (a copy of trimmed()) came from.
+  [[nodiscard]] const char* source_of(const std::string& converted, const char* at) const {
+    const auto offset = static_cast<std::size_t>(at - converted.data()) + text.find_first_not_of(" \n");
+    const char* source = nullptr;
+    for (const auto& [in_text, in_source] : from)
+      if (in_text <= offset) source = in_source + (offset - in_text);
+    return source;
+  }
+};
+
+// A table column's alignment as LaTeX writes it: l, c or r.
+char alignment(void* td_detail) {
+  const MD_ALIGN a = static_cast<MD_BLOCK_TD_DETAIL*>(td_detail)->align;
+  return a == MD_ALIGN_CENTER ? 'c' : a == MD_ALIGN_RIGHT ? 'r' : 'l';
 }
 
-// --- inline markup for a terminal ---------------------------------------------------
+// --- the terminal -----------------------------------------------------------------
 
-std::string inline_text(std::string_view s) {
-  std::string out;
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    const char c = s[i];
-    if (c == '*' && i + 1 < s.size() && s[i + 1] == '*') {
-      ++i;
-      continue;
-    }
-    if (c == '_' && i + 1 < s.size() && s[i + 1] == '_') {
-      ++i;
-      continue;
-    }
-    if (c == '`') continue;
-    // *emphasis*: drop the stars when they hug a word ("m * D" is multiplication).
-    if (c == '*' && i + 1 < s.size() && s[i + 1] != ' ') {
-      const std::size_t end = s.find('*', i + 1);
-      if (end != std::string_view::npos && s[end - 1] != ' ') {
-        out += inline_text(s.substr(i + 1, end - i - 1));
-        i = end;
-        continue;
-      }
-    }
-    if (c == '$') {  // inline math, as Unicode
-      const std::size_t end = s.find('$', i + 1);
-      if (end != std::string_view::npos) {
-        out += latex_to_unicode(s.substr(i + 1, end - i - 1));
-        i = end;
-      }
-      continue;
-    }
-    if (c == '!' && i + 1 < s.size() && s[i + 1] == '[') continue;  // an image reads like a link
-    if (c == '[') {
-      const std::size_t close = s.find("](", i);
-      const std::size_t end = close == std::string_view::npos ? close : s.find(')', close);
-      if (end != std::string_view::npos) {
-        out += inline_text(s.substr(i + 1, close - i - 1)) + " (" + std::string(s.substr(close + 2, end - close - 2)) +
-               ")";
-        i = end;
-        continue;
-      }
-    }
-    out += c;
-  }
-  return out;
-}
-
-void append_lines(std::string& out, const std::vector<std::string>& lines) {
-  for (const std::string& l : lines) out += l + "\n";
-}
-
-// A pipe table with its columns lined up and a rule under the header.
-std::string text_table(std::string_view text) {
-  std::vector<std::vector<std::string>> rows;
-  for (std::string_view line : split_lines(text)) {
-    std::vector<std::string> row;
-    for (std::string_view cell : table_cells(line)) row.push_back(inline_text(cell));
-    if (!row.empty()) rows.push_back(std::move(row));
-  }
+// A pipe table with its columns lined up (`align`: 'r' for right) and a rule under
+// the header.
+std::vector<std::string> text_table(const std::vector<std::vector<std::string>>& rows, const std::string& align) {
   std::vector<std::size_t> widths;
   for (const auto& row : rows)
     for (std::size_t c = 0; c < row.size(); ++c) {
       if (widths.size() <= c) widths.push_back(0);
       widths[c] = std::max(widths[c], display_width(row[c]));
     }
-  std::string out;
+  std::vector<std::string> lines;
   for (std::size_t r = 0; r < rows.size(); ++r) {
     std::string line = " ";
-    for (std::size_t c = 0; c < rows[r].size(); ++c) {
-      line += ' ';
-      line += pad_right(rows[r][c], widths[c] + 1);
-    }
+    for (std::size_t c = 0; c < rows[r].size(); ++c)
+      line += c < align.size() && align[c] == 'r' ? concat({" ", pad_left(rows[r][c], widths[c]), " "})
+                                                  : concat({" ", pad_right(rows[r][c], widths[c] + 1)});
     while (!line.empty() && line.back() == ' ') line.pop_back();
-    out += line + "\n";
+    lines.push_back(line);
     if (r == 0) {
       std::size_t total = 2 * (widths.size() - 1);
       for (std::size_t w : widths) total += w;
-      out += "  ";
-      out += std::string(total, '-');
-      out += '\n';
+      lines.push_back(concat({"  ", std::string(total, '-')}));
     }
   }
-  return out;
+  return lines;
 }
 
-// --- inline markup for LaTeX --------------------------------------------------------
+class TextRenderer final : public Renderer {
+ public:
+  TextRenderer(std::string_view markdown, std::size_t width) : markdown_(markdown), width_(width) {}
+  [[nodiscard]] std::string take() { return std::move(out_); }
+
+  void enter_block(MD_BLOCKTYPE type, void* detail) override {
+    if (type != MD_BLOCK_LI && type != MD_BLOCK_DOC) flush_paragraph();  // a tight item's text before its sublist
+    switch (type) {
+      case MD_BLOCK_CODE:
+        code_block_ = true;
+        break;
+      case MD_BLOCK_P:
+        paragraph_ = true;
+        break;
+      case MD_BLOCK_QUOTE:  // "  | " at the margin, "| " inside another container
+        containers_.push_back({containers_.empty() ? "  | " : "| ", false});
+        break;
+      case MD_BLOCK_UL:
+        lists_.push_back(0);
+        break;
+      case MD_BLOCK_OL:
+        lists_.push_back(static_cast<int>(static_cast<MD_BLOCK_OL_DETAIL*>(detail)->start));
+        ordered_.push_back(static_cast<MD_BLOCK_OL_DETAIL*>(detail)->mark_delimiter);
+        break;
+      case MD_BLOCK_LI: {
+        // The marker: "-" or the item's number; an outermost item is indented by two.
+        std::string marker = lists_.back() == 0 ? "-" : std::to_string(lists_.back()++) + ordered_.back();
+        const bool nested = std::any_of(containers_.begin(), containers_.end(), [](const auto& c) { return c.item; });
+        containers_.push_back({(nested ? "" : "  ") + marker + " ", true});
+        break;
+      }
+      case MD_BLOCK_H:
+        heading_ = static_cast<int>(static_cast<MD_BLOCK_H_DETAIL*>(detail)->level);
+        break;
+      case MD_BLOCK_TABLE:
+        rows_.clear();
+        align_.clear();
+        break;
+      case MD_BLOCK_TR:
+        rows_.emplace_back();
+        break;
+      case MD_BLOCK_TH:
+        align_ += alignment(detail);
+        break;
+      default:
+        break;
+    }
+  }
+
+  void leave_block(MD_BLOCKTYPE type) override {
+    switch (type) {
+      case MD_BLOCK_QUOTE:
+      case MD_BLOCK_LI:
+        flush_paragraph();  // a tight item's text
+        containers_.pop_back();
+        break;
+      case MD_BLOCK_OL:
+        ordered_.pop_back();
+        [[fallthrough]];
+      case MD_BLOCK_UL:
+        lists_.pop_back();
+        break;
+      case MD_BLOCK_P:
+        flush_paragraph();
+        paragraph_ = false;
+        break;
+      case MD_BLOCK_H: {
+        const std::string title = trim_spaces(inline_);
+        inline_.clear();
+        emit({title, std::string(display_width(title), heading_ <= 1 ? '=' : '-')});
+        break;
+      }
+      case MD_BLOCK_TH:
+      case MD_BLOCK_TD:
+        rows_.back().push_back(trim_spaces(inline_));
+        inline_.clear();
+        break;
+      case MD_BLOCK_TABLE:
+        emit(text_table(rows_, align_));
+        break;
+      case MD_BLOCK_CODE: {
+        std::vector<std::string> lines;
+        for (std::size_t start = 0; start < code_.size();) {
+          const std::size_t end = std::min(code_.find('\n', start), code_.size());
+          lines.push_back(concat({"    ", std::string_view(code_).substr(start, end - start)}));
+          start = end + 1;
+        }
+        code_.clear();
+        code_block_ = false;
+        emit(lines);
+        break;
+      }
+      case MD_BLOCK_HR:
+        emit({std::string(std::min<std::size_t>(width_, 20), '-')});
+        break;
+      default:
+        break;
+    }
+  }
+
+  void enter_span(MD_SPANTYPE type, void* detail) override {
+    if (type == MD_SPAN_A || type == MD_SPAN_IMG) {
+      const MD_ATTRIBUTE& href = type == MD_SPAN_A ? static_cast<MD_SPAN_A_DETAIL*>(detail)->href
+                                                   : static_cast<MD_SPAN_IMG_DETAIL*>(detail)->src;
+      links_.emplace_back(std::string(href.text, href.size), inline_.size());
+    } else if (type == MD_SPAN_LATEXMATH || type == MD_SPAN_LATEXMATH_DISPLAY) {
+      math_ = Math{"", {}, type == MD_SPAN_LATEXMATH_DISPLAY, markdown_.data()};
+      if (math_.display) flush_paragraph();  // display math stands on its own lines
+    } else if (type == MD_SPAN_DEL) {
+      inline_ += "~~";
+    }
+  }
+
+  void leave_span(MD_SPANTYPE type) override {
+    if (type == MD_SPAN_A || type == MD_SPAN_IMG) {
+      const auto& [url, start] = links_.back();
+      if (inline_.compare(start, std::string::npos, url) != 0) inline_ += concat({" (", url, ")"});  // <url> once
+      links_.pop_back();
+    } else if (type == MD_SPAN_LATEXMATH) {
+      inline_ += unicode(math_);
+    } else if (type == MD_SPAN_LATEXMATH_DISPLAY) {
+      emit(display_math(unicode(math_)));
+    } else if (type == MD_SPAN_DEL) {
+      inline_ += "~~";
+    }
+  }
+
+  void text(MD_TEXTTYPE type, std::string_view text, bool source) override {
+    if (type == MD_TEXT_LATEXMATH) return math_.add(text, source);
+    if (type == MD_TEXT_CODE && code_block_) return void(code_ += text);
+    if (type == MD_TEXT_SOFTBR)
+      inline_ += ' ';
+    else if (type == MD_TEXT_BR)
+      inline_ += '\n';
+    else if (type == MD_TEXT_ENTITY)
+      inline_ += entity(text);
+    else if (type == MD_TEXT_NULLCHAR)
+      inline_ += "\uFFFD";
+    else
+      inline_ += text;
+  }
+
+ private:
+  // A container's share of the lines of a block inside it: a quote's bar on every
+  // line, an item's marker on the first line of its first block and spaces after.
+  struct Container {
+    std::string first;
+    bool item = false;
+    bool used = false;
+  };
+
+  std::string unicode(const Math& math) {
+    const std::string latex = math.trimmed();
+    try {
+      return latex_to_unicode(latex);
+    } catch (const LatexNestingError& e) {
+      const char* at = math.source_of(latex, e.at());
+      throw Error::input((at != nullptr ? source_position(markdown_, at) : "line 1, column 1") + ": " + e.what());
+    }
+  }
+
+  // Display math indented, continuation lines of an aligned equation ("= ...") under
+  // the first "=".
+  static std::vector<std::string> display_math(const std::string& unicode) {
+    const std::size_t equals = unicode.find(" = ");
+    const std::size_t first_end = unicode.find('\n');
+    const std::size_t align = equals != std::string::npos && equals < first_end
+                                  ? display_width(std::string_view(unicode).substr(0, equals + 1))
+                                  : 0;
+    std::vector<std::string> lines;
+    for (std::size_t start = 0; start <= unicode.size();) {
+      const std::size_t end = std::min(unicode.find('\n', start), unicode.size());
+      const std::string line = unicode.substr(start, end - start);
+      lines.push_back(concat({"    ", line.starts_with("= ") ? std::string(align, ' ') : "", line}));
+      start = end + 1;
+    }
+    return lines;
+  }
+
+  void flush_paragraph() {
+    const std::string text = trim_spaces(inline_);
+    inline_.clear();
+    if (text.empty()) return;
+    const auto [first, rest] = prefixes();
+    std::vector<std::string> lines;
+    for (std::size_t start = 0; start <= text.size();) {  // hard breaks start new lines
+      const std::size_t end = std::min(text.find('\n', start), text.size());
+      for (std::string& line : wrap_words(text.substr(start, end - start), rest, width_)) lines.push_back(line);
+      start = end + 1;
+    }
+    if (!lines.empty()) lines[0] = first + lines[0].substr(rest.size());
+    write(lines, tight_item_text());
+  }
+
+  // Lines of a block that are not wrapped (headings, tables, code, math).
+  void emit(const std::vector<std::string>& lines) {
+    const auto [first, rest] = prefixes();
+    std::vector<std::string> prefixed;
+    for (const std::string& line : lines) prefixed.push_back((prefixed.empty() ? first : rest) + line);
+    write(prefixed, false);
+  }
+
+  // The prefixes of a block's first and further lines; uses up the items' markers. Sets
+  // blank_, the line before the block: the bars of the quotes it shares with the last.
+  std::pair<std::string, std::string> prefixes() {
+    std::string first, rest;
+    std::size_t quotes = 0;
+    blank_.clear();
+    for (Container& c : containers_) {
+      first += c.used ? std::string(c.first.size(), ' ') : c.first;
+      rest += c.item ? std::string(c.first.size(), ' ') : c.first;
+      if (c.item) c.used = true;
+      if (!c.item && quotes++ < last_quotes_) blank_ = rest;
+    }
+    last_quotes_ = quotes;
+    return {first, rest};
+  }
+
+  // Text written straight into a list item (a tight list): items stay together.
+  [[nodiscard]] bool tight_item_text() const { return !paragraph_ && !containers_.empty() && containers_.back().item; }
+
+  void write(const std::vector<std::string>& lines, bool tight) {
+    // Blocks are separated by a blank line, but the items of tight lists are not.
+    auto add = [&](std::string_view line) {
+      out_ += line.substr(0, line.find_last_not_of(' ') + 1);  // npos + 1 is 0
+      out_ += '\n';
+    };
+    if (!out_.empty() && !(tight && last_tight_)) add(blank_);
+    for (const std::string& line : lines) add(line);
+    last_tight_ = tight;
+  }
+
+  std::string_view markdown_;
+  std::size_t width_;
+  std::string out_, inline_, code_, align_;
+  std::vector<Container> containers_;
+  std::string blank_;
+  std::size_t last_quotes_ = 0;
+  std::vector<int> lists_;                                  // per open list: the next number, or 0 for bullets
+  std::vector<char> ordered_;                               // per open numbered list: its delimiter
+  std::vector<std::pair<std::string, std::size_t>> links_;  // open links: URL, where the text starts
+  std::vector<std::vector<std::string>> rows_;
+  Math math_;
+  int heading_ = 1;
+  bool code_block_ = false, paragraph_ = false, last_tight_ = false;
+};
+
+// --- LaTeX ------------------------------------------------------------------------
 
 // One code point of UTF-8 at s[i]; sets `length`.
 char32_t decode(std::string_view s, std::size_t i, std::size_t& length) {
@@ -314,33 +502,26 @@ char32_t decode(std::string_view s, std::size_t i, std::size_t& length) {
   return c;
 }
 
-// Greek letters, dotted x and y, and operators: report/unicode_tex's one table.
-std::string_view greek(char32_t c) { return tex_symbol(c); }
-
-// Subscript (₀..₉) or superscript (⁰ ¹ ² ³ ⁴..⁹) digit, or -1.
-int script_digit(char32_t c, bool& superscript) {
-  superscript = false;
-  if (c >= U'₀' && c <= U'₉') return static_cast<int>(c - U'₀');
-  superscript = true;
-  if (c == U'⁰') return 0;
-  if (c == U'¹') return 1;
-  if (c == U'²') return 2;
-  if (c == U'³') return 3;
-  if (c >= U'⁴' && c <= U'⁹') return static_cast<int>(c - U'⁴') + 4;
-  return -1;
-}
-
 // A subscript or superscript digit or sign as its ASCII character, or 0.
 char script_char(char32_t c, bool& superscript) {
-  const int digit = script_digit(c, superscript);
-  if (digit >= 0) return static_cast<char>('0' + digit);
-  superscript = c == U'⁻' || c == U'⁺';
-  if (c == U'⁻' || c == U'₋') return '-';
-  if (c == U'⁺' || c == U'₊') return '+';
+  superscript = false;
+  if (c >= U'₀' && c <= U'₉') return static_cast<char>('0' + (c - U'₀'));
+  if (c == U'₋') return '-';
+  if (c == U'₊') return '+';
+  superscript = true;
+  if (c == U'⁰') return '0';
+  if (c == U'¹') return '1';
+  if (c == U'²') return '2';
+  if (c == U'³') return '3';
+  if (c >= U'⁴' && c <= U'⁹') return static_cast<char>('4' + (c - U'⁴'));
+  if (c == U'⁻') return '-';
+  if (c == U'⁺') return '+';
   return 0;
 }
 
-// Converts plain characters (no markup) to text-mode LaTeX.
+// Plain characters (no markup) as text-mode LaTeX: special characters escaped, and
+// Greek letters, dotted symbols (θ̇₁), sub/superscripts (10⁻¹²) and operators (× −) as
+// inline math, so pdflatex compiles it.
 std::string latex_chars(std::string_view s) {
   std::string out;
   std::size_t i = 0;
@@ -348,23 +529,18 @@ std::string latex_chars(std::string_view s) {
     std::size_t length = 0;
     const char32_t c = decode(s, i, length);
     std::string base;
-    if (const std::string_view g = greek(c); !g.empty())
+    if (const std::string_view g = tex_symbol(c); !g.empty())
       base = std::string(g);
     else if (c < 0x80 && std::isalpha(static_cast<int>(c)))
       base = std::string(1, static_cast<char>(c));
     // Accents and scripts that follow the base.
     std::size_t j = i + length;
     std::string math = base;
-    bool symbol = !base.empty();
-    while (symbol && j < s.size()) {
+    while (!base.empty() && j < s.size()) {
       std::size_t n = 0;
       const char32_t next = decode(s, j, n);
-      if (next == 0x307)
-        math = "\\dot{" + math + "}";
-      else if (next == 0x308)
-        math = "\\ddot{" + math + "}";
-      else
-        break;
+      if (next != 0x307 && next != 0x308) break;
+      math = (next == 0x307 ? "\\dot{" : "\\ddot{") + math + "}";
       j += n;
     }
     // Scripts, each run in one group (10⁻¹² is 10^{-12}): after a letter, or starting at
@@ -382,234 +558,246 @@ std::string latex_chars(std::string_view s) {
       j += n;
     }
     std::string scripts;
-    if (!sub.empty()) scripts += "_{" + sub + "}";
-    if (!sup.empty()) scripts += "^{" + sup + "}";
-    const bool needs_math = !greek(c).empty() || math != base || !scripts.empty();
-    if (needs_math) {
-      if (base.empty()) base = "{}";  // a script with nothing before it
-      out += "$" + (math.empty() ? base : math) + scripts + "$";
+    if (!sub.empty()) scripts += concat({"_{", sub, "}"});
+    if (!sup.empty()) scripts += concat({"^{", sup, "}"});
+    if (!tex_symbol(c).empty() || math != base || !scripts.empty()) {
+      out += concat({"$", math.empty() ? "{}" : math, scripts, "$"});  // {} for a script alone
       i = j;
       continue;
     }
-    if (c < 0x80)
-      out += latex_escape(std::string_view(&s[i], 1));
-    else
-      out += std::string(s.substr(i, length));  // passes through (needs a Unicode engine)
+    out += c < 0x80 ? latex_escape(s.substr(i, 1)) : std::string(s.substr(i, length));
     i += length;
   }
   return out;
 }
 
-}  // namespace
+class LatexRenderer final : public Renderer {
+ public:
+  explicit LatexRenderer(std::string_view markdown) : markdown_(markdown) {}
+  [[nodiscard]] std::string take() { return std::move(out_); }
 
-namespace {
-
-// Inline spans that wrap their content: the delimiter, the LaTeX around the content, and
-// whether the content is itself markup (else it is escaped verbatim, or kept as math).
-struct InlineSpan {
-  std::string_view delimiter;
-  std::string_view before, after;
-  enum class Content { math, verbatim, markup } content;
-};
-constexpr std::array<InlineSpan, 4> kSpans{{
-    {"$", "$", "$", InlineSpan::Content::math},
-    {"`", "\\texttt{", "}", InlineSpan::Content::verbatim},
-    {"**", "\\textbf{", "}", InlineSpan::Content::markup},
-    {"*", "\\emph{", "}", InlineSpan::Content::markup},  // only hugging a word: "m * D" is a product
-}};
-
-}  // namespace
-
-std::string inline_latex(std::string_view s) {
-  std::string out;
-  std::size_t plain_start = 0;
-  auto take = [&](std::size_t i, std::size_t next, const std::string& latex) {
-    out += latex_chars(s.substr(plain_start, i - plain_start));
-    out += latex;
-    plain_start = next;
-  };
-  for (std::size_t i = 0; i < s.size();) {
-    bool matched = false;
-    for (const InlineSpan& span : kSpans) {
-      if (s.substr(i, span.delimiter.size()) != span.delimiter) continue;
-      const std::size_t from = i + span.delimiter.size();
-      const std::size_t end = s.find(span.delimiter, from);
-      if (end == std::string_view::npos) break;
-      const std::string_view inner = s.substr(from, end - from);
-      if (span.delimiter == "*" && (inner.empty() || inner.front() == ' ' || inner.back() == ' ')) break;
-      const std::string content = span.content == InlineSpan::Content::math       ? std::string(inner)
-                                  : span.content == InlineSpan::Content::verbatim ? latex_escape(inner)
-                                                                                  : inline_latex(inner);
-      take(i, end + span.delimiter.size(), std::string(span.before) + content + std::string(span.after));
-      i = plain_start;
-      matched = true;
-      break;
+  void enter_block(MD_BLOCKTYPE type, void* detail) override {
+    if (type != MD_BLOCK_LI && type != MD_BLOCK_DOC) flush_item_text();
+    switch (type) {
+      case MD_BLOCK_UL:
+      case MD_BLOCK_OL:
+        out_ += type == MD_BLOCK_UL ? "\\begin{itemize}\n" : "\\begin{enumerate}\n";
+        open_.push_back(type);
+        break;
+      case MD_BLOCK_QUOTE:
+        out_ += "\\begin{quote}\n";
+        open_.push_back(type);
+        break;
+      case MD_BLOCK_LI:
+        out_ += "  \\item ";
+        open_.push_back(type);
+        item_paragraphs_.push_back(0);
+        break;
+      case MD_BLOCK_H:
+        out_ += static_cast<MD_BLOCK_H_DETAIL*>(detail)->level <= 1 ? "\\subsection*{" : "\\subsubsection*{";
+        break;
+      case MD_BLOCK_TABLE:
+        rows_.clear();
+        align_.clear();
+        break;
+      case MD_BLOCK_TR:
+        rows_.emplace_back();
+        break;
+      case MD_BLOCK_TH:
+        align_ += alignment(detail);
+        break;
+      default:
+        break;
     }
-    if (matched) continue;
-    // [text](url) and ![alt](image) become links.
-    if (s[i] == '[' || (s[i] == '!' && i + 1 < s.size() && s[i + 1] == '[')) {
-      const std::size_t open = s[i] == '!' ? i + 1 : i;
-      const std::size_t mid = s.find("](", open);
-      const std::size_t end = mid == std::string_view::npos ? mid : s.find(')', mid);
-      if (end != std::string_view::npos) {
-        take(i, end + 1,
-             "\\href{" + std::string(s.substr(mid + 2, end - mid - 2)) + "}{" +
-                 inline_latex(s.substr(open + 1, mid - open - 1)) + "}");
-        i = plain_start;
-        continue;
-      }
-    }
-    ++i;
   }
-  out += latex_chars(s.substr(plain_start));
-  return out;
-}
 
-namespace {
-
-// Where in `markdown` the character `at` of a block's text came from.
-const char* source_of(std::string_view markdown, const std::vector<Block>& blocks, const char* at) {
-  for (const Block& b : blocks) {
-    const char* text = b.text.data();
-    if (std::less<const char*>()(at, text) || std::less<const char*>()(text + b.text.size(), at)) continue;
-    const auto offset = static_cast<std::size_t>(at - text);
-    std::size_t source = 0;
-    for (const auto& [in_text, in_source] : b.from)
-      if (in_text <= offset) source = in_source + (offset - in_text);
-    return markdown.data() + std::min(source, markdown.size());
-  }
-  return markdown.data();
-}
-
-std::string blocks_to_text(const std::vector<Block>& blocks, std::size_t width) {
-  std::string out;
-  bool first = true;
-  Block::Kind previous = Block::Kind::paragraph;
-  for (const Block& b : blocks) {
-    // Items of one list stay together; everything else is separated by a blank line.
-    if (!first && !(b.kind == Block::Kind::item && previous == Block::Kind::item)) out += "\n";
-    first = false;
-    previous = b.kind;
-    switch (b.kind) {
-      case Block::Kind::paragraph:
-        append_lines(out, wrap_words(inline_text(b.text), "", width));
+  void leave_block(MD_BLOCKTYPE type) override {
+    switch (type) {
+      case MD_BLOCK_UL:
+      case MD_BLOCK_OL:
+      case MD_BLOCK_QUOTE:
+        open_.pop_back();
+        out_ += type == MD_BLOCK_UL   ? "\\end{itemize}\n"
+                : type == MD_BLOCK_OL ? "\\end{enumerate}\n"
+                                      : "\\end{quote}\n";
+        if (!in_item()) out_ += "\n";
         break;
-      case Block::Kind::heading: {
-        const std::string title = inline_text(b.text);
-        out += title + "\n" + std::string(display_width(title), b.level <= 1 ? '=' : '-') + "\n";
+      case MD_BLOCK_LI:
+        if (item_paragraphs_.back() == 0 && inline_.empty()) inline_ = " ";  // an empty item ends its line too
+        flush_item_text();
+        open_.pop_back();
+        item_paragraphs_.pop_back();
         break;
-      }
-      case Block::Kind::item: {
-        const std::string indent(static_cast<std::size_t>(2 * b.level) + b.marker.size() + 3, ' ');
-        std::vector<std::string> lines = wrap_words(inline_text(b.text), indent, width);
-        if (!lines.empty())
-          lines[0] = std::string(static_cast<std::size_t>(2 * b.level) + 2, ' ') + b.marker + " " +
-                     lines[0].substr(indent.size());
-        append_lines(out, lines);
-        break;
-      }
-      case Block::Kind::quote: {
-        for (std::string_view paragraph : split_lines(b.text))
-          append_lines(out, wrap_words(inline_text(paragraph), "  | ", width));
-        break;
-      }
-      case Block::Kind::code:
-        for (std::string_view line : split_lines(b.text)) out += "    " + std::string(line) + "\n";
-        break;
-      case Block::Kind::math: {
-        const std::string unicode = latex_to_unicode(b.text);
-        // Continuation lines of an aligned equation ("= ...") line up under the first "=".
-        const std::size_t equals = unicode.find(" = ");
-        const std::size_t first_end = unicode.find('\n');
-        const std::size_t align = equals != std::string::npos && equals < first_end
-                                      ? display_width(std::string_view(unicode).substr(0, equals + 1))
-                                      : 0;
-        for (std::string_view line : split_lines(unicode)) {
-          out += "    ";
-          if (line.starts_with("= ")) out += std::string(align, ' ');
-          out += std::string(line);
-          out += "\n";
+      case MD_BLOCK_P:
+        if (in_item()) {
+          flush_item_text();
+        } else {
+          out_ += take_inline() + "\n\n";
         }
         break;
-      }
-      case Block::Kind::table:
-        out += text_table(b.text);
+      case MD_BLOCK_H:
+        out_ += take_inline() + "}\n\n";
+        break;
+      case MD_BLOCK_CODE:
+        if (!code_.empty() && code_.back() == '\n') code_.pop_back();
+        out_ += concat({"\\begin{verbatim}\n", code_, "\n\\end{verbatim}\n\n"});
+        code_.clear();
+        break;
+      case MD_BLOCK_TH:
+      case MD_BLOCK_TD:
+        rows_.back().push_back(take_inline());
+        break;
+      case MD_BLOCK_TABLE:
+        out_ += concat({"\\begin{tabular}{", align_, "}\n"});
+        for (std::size_t r = 0; r < rows_.size(); ++r) {
+          for (std::size_t c = 0; c < rows_[r].size(); ++c) out_ += (c > 0 ? " & " : "  ") + rows_[r][c];
+          out_ += " \\\\\n";
+          if (r == 0) out_ += "  \\hline\n";
+        }
+        out_ += "\\end{tabular}\n\n";
+        break;
+      case MD_BLOCK_HR:
+        out_ += "\\noindent\\rule{\\linewidth}{0.4pt}\n\n";
+        break;
+      default:
         break;
     }
   }
-  return out;
+
+  void enter_span(MD_SPANTYPE type, void* detail) override {
+    flush_text();
+    switch (type) {
+      case MD_SPAN_EM:
+        inline_ += "\\emph{";
+        break;
+      case MD_SPAN_STRONG:
+        inline_ += "\\textbf{";
+        break;
+      case MD_SPAN_A:
+      case MD_SPAN_IMG: {
+        const MD_ATTRIBUTE& href = type == MD_SPAN_A ? static_cast<MD_SPAN_A_DETAIL*>(detail)->href
+                                                     : static_cast<MD_SPAN_IMG_DETAIL*>(detail)->src;
+        inline_ += concat({"\\href{", std::string_view(href.text, href.size), "}{"});
+        break;
+      }
+      case MD_SPAN_LATEXMATH:
+      case MD_SPAN_LATEXMATH_DISPLAY:
+        math_ = Math{"", {}, type == MD_SPAN_LATEXMATH_DISPLAY, markdown_.data()};
+        break;
+      default:
+        break;
+    }
+  }
+
+  void leave_span(MD_SPANTYPE type) override {
+    flush_text();
+    switch (type) {
+      case MD_SPAN_EM:
+      case MD_SPAN_STRONG:
+      case MD_SPAN_A:
+      case MD_SPAN_IMG:
+        inline_ += "}";
+        break;
+      case MD_SPAN_CODE:
+        inline_ += concat({"\\texttt{", latex_escape(code_), "}"});
+        code_.clear();
+        break;
+      case MD_SPAN_LATEXMATH:
+        inline_ += concat({"$", math_.text, "$"});
+        break;
+      case MD_SPAN_LATEXMATH_DISPLAY:
+        inline_ += concat({"\\[\n", math_.trimmed(), "\n\\]"});
+        break;
+      default:
+        break;
+    }
+  }
+
+  void text(MD_TEXTTYPE type, std::string_view text, bool source) override {
+    if (type == MD_TEXT_LATEXMATH) return math_.add(text, source);
+    if (type == MD_TEXT_CODE) return void(code_ += text);
+    if (type == MD_TEXT_BR) {
+      flush_text();
+      inline_ += "\\\\\n";
+    } else if (type == MD_TEXT_SOFTBR) {
+      text_ += ' ';
+    } else if (type == MD_TEXT_ENTITY) {
+      text_ += entity(text);
+    } else if (type != MD_TEXT_NULLCHAR) {
+      text_ += text;
+    }
+  }
+
+ private:
+  [[nodiscard]] bool in_item() const { return !open_.empty() && open_.back() == MD_BLOCK_LI; }
+
+  void flush_text() {
+    inline_ += latex_chars(text_);
+    text_.clear();
+  }
+  std::string take_inline() {
+    flush_text();
+    return trim_spaces(std::exchange(inline_, {}));
+  }
+  // An item's text, after "\item " or as a further paragraph of the item.
+  void flush_item_text() {
+    flush_text();
+    if (!in_item() || inline_.empty()) return;
+    if (item_paragraphs_.back()++ > 0) out_ += "\n  ";
+    out_ += take_inline() + "\n";
+  }
+
+  std::string_view markdown_;
+  std::string out_, inline_, text_, code_, align_;
+  std::vector<MD_BLOCKTYPE> open_;  // the open lists, quotes and items
+  std::vector<int> item_paragraphs_;
+  std::vector<std::vector<std::string>> rows_;
+  Math math_;
+};
+
+// `text` as one paragraph: on one line, and a start that would open a block (a
+// heading's #, a quote's >, a list's marker, a fence) escaped.
+std::string one_paragraph(std::string_view text) {
+  std::string s;
+  for (char c : text) s += c == '\n' || c == '\r' ? ' ' : c;
+  s.erase(0, std::min(s.find_first_not_of(' '), s.size()));
+  if (s.empty()) return s;
+  const char c = s.front();
+  const bool rule = s.find_first_not_of(std::string(1, c) + " ") == std::string::npos;
+  if (c == '#' || c == '>' || s.starts_with("```") || s.starts_with("~~~") ||
+      ((c == '-' || c == '+' || c == '*' || c == '_') && (s.size() == 1 || s[1] == ' ' || rule)))
+    return concat({"\\", s});
+  const std::size_t digits = s.find_first_not_of("0123456789");
+  if (digits > 0 && digits != std::string::npos && (s[digits] == '.' || s[digits] == ')') &&
+      (digits + 1 == s.size() || s[digits + 1] == ' '))
+    s.insert(digits, "\\");
+  return s;
 }
 
 }  // namespace
 
 std::string markdown_to_text(std::string_view markdown, std::size_t width) {
-  const std::vector<Block> blocks = parse_blocks(markdown);
-  try {
-    return blocks_to_text(blocks, width);
-  } catch (const LatexNestingError& e) {
-    throw Error::input(source_position(markdown, source_of(markdown, blocks, e.at())) + ": " + e.what());
-  }
+  TextRenderer renderer(markdown, width);
+  parse(markdown, renderer);
+  return renderer.take();
 }
 
 std::string markdown_to_latex(std::string_view markdown) {
-  std::string out;
-  const std::vector<Block> blocks = parse_blocks(markdown);
-  for (std::size_t k = 0; k < blocks.size(); ++k) {
-    const Block& b = blocks[k];
-    switch (b.kind) {
-      case Block::Kind::paragraph:
-        out += inline_latex(b.text) + "\n\n";
-        break;
-      case Block::Kind::heading:
-        out += std::string(b.level <= 1 ? "\\subsection*{" : "\\subsubsection*{") + inline_latex(b.text) + "}\n\n";
-        break;
-      case Block::Kind::item: {
-        const bool numbered = b.marker != "-";
-        const char* env = numbered ? "enumerate" : "itemize";
-        out += std::string("\\begin{") + env + "}\n";
-        for (; k < blocks.size() && blocks[k].kind == Block::Kind::item && (blocks[k].marker != "-") == numbered; ++k)
-          out += "  \\item " + inline_latex(blocks[k].text) + "\n";
-        --k;
-        out += std::string("\\end{") + env + "}\n\n";
-        break;
-      }
-      case Block::Kind::quote: {
-        out += "\\begin{quote}\n";
-        for (std::string_view paragraph : split_lines(b.text)) out += inline_latex(paragraph) + "\n\n";
-        out += "\\end{quote}\n\n";
-        break;
-      }
-      case Block::Kind::code:
-        out += "\\begin{verbatim}\n" + b.text + "\n\\end{verbatim}\n\n";
-        break;
-      case Block::Kind::math:
-        out += "\\[\n" + b.text + "\n\\]\n\n";
-        break;
-      case Block::Kind::table: {
-        std::vector<std::vector<std::string>> rows;
-        for (std::string_view line : split_lines(b.text)) {
-          std::vector<std::string> cells;
-          for (std::string_view cell : table_cells(line)) cells.push_back(inline_latex(cell));
-          if (!cells.empty()) rows.push_back(std::move(cells));
-        }
-        if (rows.empty()) break;
-        out += "\\begin{tabular}{" + std::string(rows.front().size(), 'l') + "}\n";
-        for (std::size_t r = 0; r < rows.size(); ++r) {
-          for (std::size_t c = 0; c < rows[r].size(); ++c) out += (c > 0 ? " & " : "  ") + rows[r][c];
-          out += " \\\\\n";
-          if (r == 0) out += "  \\hline\n";
-        }
-        out += "\\end{tabular}\n\n";
-        break;
-      }
-    }
-  }
+  LatexRenderer renderer(markdown);
+  parse(markdown, renderer);
+  return renderer.take();
+}
+
+std::string inline_latex(std::string_view text) {
+  const std::string paragraph = one_paragraph(text);
+  std::string out = markdown_to_latex(paragraph);
+  while (!out.empty() && out.back() == '\n') out.pop_back();
   return out;
 }
 
 void check_markdown(std::string_view markdown, const std::string& origin) {
   try {
-    (void)markdown_to_text(markdown, 80);  // markdown_to_latex has no recursion to bound
+    (void)markdown_to_text(markdown, 80);  // the nesting of blocks, spans and math
   } catch (const Error& e) {
     throw Error(e.code(), origin + ": " + e.what());
   }

@@ -54,8 +54,11 @@ std::vector<Hostile> hostile_lessons() {
        ":5:10: step 1 (exercise): answer:" + expression},
       {"placeholder", lesson("say", "text = 'I = {{" + repeat("(", 100000) + "I_zz_P}}'"),
        ":4:8: step 1 (say): text: {{"},
-      {"list", lesson("say", "text = '''\n- top\n" + std::string(100000, ' ') + "- deep'''"),
-       ":4:8: step 1 (say): text: line 2, column 1: a list item indented 100000 spaces is " + kTooDeep},
+      // 100,000 lists and quotes, one in the other: refused at the text inside them.
+      {"list", lesson("say", "text = '''\n- top\n" + repeat("- ", 100000) + "deep'''"),
+       ":4:8: step 1 (say): text: line 2, column 200001: lists and quotes are " + kTooDeep},
+      {"quote", lesson("say", "text = '''\n" + repeat(">", 100000) + " deep'''"),
+       ":4:8: step 1 (say): text: line 1, column 100002: lists and quotes are " + kTooDeep},
       // toml++ recurses once per part of a dotted key or table name.
       {"key", lesson("say", "text = 'hi'") + "[[step" + repeat(".a", 100000) + "]]\n", ":5:3: the key is " + kTooDeep},
   };
@@ -96,22 +99,23 @@ TEST(LessonHostile, DeepMathInASayFileNamesThatFile) {
                        " (each {...} and each argument of \\sqrt, \\frac, ^ or _ is a level)\n");
 }
 
-// As deep as allowed still runs; quotes do not nest in lesson Markdown, so a long run of
-// '>' is just text.
+// As deep as allowed still runs: math, lists, quotes, a placeholder and an answer.
 TEST(LessonHostile, NestingWithinTheBoundRuns) {
   TempDir dir;
   const int n = kMaxNesting;
+  std::string list;  // n levels, each two spaces further in
+  for (int i = 1; i < n; ++i) list += std::string(2 * i - 2, ' ') + "- level " + std::to_string(i) + "\n";
+  list += std::string(2 * n - 2, ' ') + "- deepest\n";
   const fs::path file = dir / "ok.toml";
-  write_text(file,
-             lesson("say", "text = '''\n$" + repeat("\\sqrt{", n) + "x" + repeat("}", n) + "$\n\n- top\n" +
-                               std::string(2 * n, ' ') + "- deepest\n\n" + std::string(100000, '>') + " quoted\n'''") +
-                 "[[step]]\nkind = \"exercise\"\nquestion = \"{{" + repeat("(", n) + "m" + repeat(")", n) +
-                 "}}\"\nanswer = \"" + repeat("-", n) + "m\"\n");
+  write_text(file, lesson("say", "text = '''\n$" + repeat("\\sqrt{", n) + "x" + repeat("}", n) + "$\n\n" + list + "\n" +
+                                     repeat(">", n) + " quoted\n'''") +
+                       "[[step]]\nkind = \"exercise\"\nquestion = \"{{" + repeat("(", n) + "m" + repeat(")", n) +
+                       "}}\"\nanswer = \"" + repeat("-", n) + "m\"\n");
   const RunResult r = run_linkage({"lesson", file.string(), "--out", (dir / "out").string()});
   ASSERT_EQ(r.exit_code, 0) << r.err.substr(0, 500);
   EXPECT_NE(r.out.find(repeat("√(", n - 1) + "√x" + repeat(")", n - 1)), std::string::npos);
-  EXPECT_NE(r.out.find(std::string(2 * n + 2, ' ') + "- deepest"), std::string::npos);
-  EXPECT_NE(r.out.find("| " + std::string(99999, '>') + "\n"), std::string::npos);
+  EXPECT_NE(r.out.find("\n" + std::string(2 * n, ' ') + "- deepest\n"), std::string::npos);
+  EXPECT_NE(r.out.find("\n  " + repeat("| ", n) + "quoted\n"), std::string::npos);
   EXPECT_NE(r.out.find("Exercise. 0.1\n"), std::string::npos) << r.out.substr(r.out.size() - 300);
   EXPECT_NE(r.out.find("Answer: 0.1\n"), std::string::npos);
 }

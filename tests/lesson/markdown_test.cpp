@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "lesson/latex_text.hpp"
+#include "lesson/output.hpp"
 #include "report/text_layout.hpp"
 
 namespace linkage::lesson {
@@ -87,6 +88,89 @@ TEST(MarkdownLatex, Blocks) {
   EXPECT_NE(out.find("\\begin{quote}\nquote\n"), std::string::npos);
   EXPECT_NE(out.find("\\[\nx = 1\n\\]"), std::string::npos);
   EXPECT_NE(out.find("\\begin{tabular}{ll}\n  a & b \\\\\n  \\hline\n  1 & 2 \\\\\n\\end{tabular}"), std::string::npos);
+}
+
+// CommonMark as GitHub renders it: nested lists, emphasis inside a link, a table with a
+// right-aligned column, fenced code and a quote holding a quote.
+const char* const kSample =
+    "# Bodies and joints\n\n"
+    "Read [the *whole* spec](spec.txt) before $\\theta_1$.\n\n"
+    "- bodies\n  - block 1\n  - block 2\n- joints\n  1. pin at $O$\n  2. slider\n\n"
+    "| name | value |\n| --- | ---: |\n| $\\dot\\theta_1$ | 0.1 |\n| **mass** | 2 |\n\n"
+    "```\nlinkage solve --case 1\n```\n\n"
+    "> A quote, with *emphasis*,\n> over two lines.\n>\n> > and a quote inside it\n";
+
+TEST(CommonMark, TheTerminalShowsEachStructure) {
+  EXPECT_EQ(markdown_to_text(kSample, 40),
+            "Bodies and joints\n"
+            "=================\n\n"
+            "Read the whole spec (spec.txt) before\n"
+            "θ₁.\n\n"
+            "  - bodies\n"
+            "    - block 1\n"
+            "    - block 2\n"
+            "  - joints\n"
+            "    1. pin at O\n"
+            "    2. slider\n\n"
+            "  name  value\n"
+            "  -----------\n"
+            "  θ\u0307₁      0.1\n"
+            "  mass      2\n\n"
+            "    linkage solve --case 1\n\n"
+            "  | A quote, with emphasis, over two\n"
+            "  | lines.\n"
+            "  |\n"
+            "  | | and a quote inside it\n");
+}
+
+TEST(CommonMark, TheHandoutShowsEachStructure) {
+  EXPECT_EQ(markdown_to_latex(kSample),
+            "\\subsection*{Bodies and joints}\n\n"
+            "Read \\href{spec.txt}{the \\emph{whole} spec} before $\\theta_1$.\n\n"
+            "\\begin{itemize}\n"
+            "  \\item bodies\n"
+            "\\begin{itemize}\n"
+            "  \\item block 1\n"
+            "  \\item block 2\n"
+            "\\end{itemize}\n"
+            "  \\item joints\n"
+            "\\begin{enumerate}\n"
+            "  \\item pin at $O$\n"
+            "  \\item slider\n"
+            "\\end{enumerate}\n"
+            "\\end{itemize}\n\n"
+            "\\begin{tabular}{lr}\n"
+            "  name & value \\\\\n"
+            "  \\hline\n"
+            "  $\\dot\\theta_1$ & 0.1 \\\\\n"
+            "  \\textbf{mass} & 2 \\\\\n"
+            "\\end{tabular}\n\n"
+            "\\begin{verbatim}\n"
+            "linkage solve --case 1\n"
+            "\\end{verbatim}\n\n"
+            "\\begin{quote}\n"
+            "A quote, with \\emph{emphasis}, over two lines.\n\n"
+            "\\begin{quote}\n"
+            "and a quote inside it\n\n"
+            "\\end{quote}\n\n"
+            "\\end{quote}\n\n");
+}
+
+// lesson.md keeps the Markdown as written, for any CommonMark reader.
+TEST(CommonMark, TheLessonDocumentKeepsTheText) {
+  const auto writer = make_markdown_writer();
+  writer->markdown(kSample);
+  EXPECT_EQ(writer->take(), "\n" + std::string(kSample) + "\n");
+}
+
+// Where CommonMark reads differently from the line-by-line reader it replaced.
+TEST(CommonMark, NumbersLinksAndLooseLists) {
+  EXPECT_EQ(markdown_to_text("3. three\n3. four", 80), "  3. three\n  4. four\n");  // numbered from the start
+  EXPECT_EQ(markdown_to_text("<https://x.org/a>", 80), "https://x.org/a\n");        // an autolink once
+  EXPECT_EQ(markdown_to_text("- a\n\n- b", 80), "  - a\n\n  - b\n");                // a loose list
+  EXPECT_EQ(markdown_to_text("a  \nb &amp; c", 80), "a\nb & c\n");                  // hard break, entity
+  EXPECT_EQ(inline_latex("1. Introduction"), "1. Introduction");                    // a title, not a list
+  EXPECT_EQ(inline_latex("# 3"), "\\# 3");
 }
 
 }  // namespace

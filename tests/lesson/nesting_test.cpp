@@ -1,5 +1,5 @@
 // Hostile nesting in lesson text: every recursive reader (LaTeX math, Markdown lists,
-// expressions) accepts kMaxNesting levels and refuses one more with one line saying
+// quotes and spans, expressions) accepts kMaxNesting levels and refuses one more with one line saying
 // where, instead of running out of stack.
 #include <gtest/gtest.h>
 
@@ -99,21 +99,38 @@ TEST(MarkdownNesting, ErrorsGiveTheLineAndColumnOfTheText) {
   EXPECT_NO_THROW(check_markdown("$" + repeat("{", kMaxNesting) + "$ and\n\n$" + repeat("{", kMaxNesting) + "$", "f"));
 }
 
-TEST(MarkdownNesting, ListsNestAsDeepAsTheBound) {
-  const std::string deepest = "- top\n" + std::string(2 * kMaxNesting, ' ') + "- deepest";
-  const std::string text = markdown_to_text(deepest, 300);
-  EXPECT_NE(text.find("\n" + std::string(2 * kMaxNesting + 2, ' ') + "- deepest\n"), std::string::npos) << text;
-  EXPECT_EQ(error_of([&] { (void)markdown_to_text("- top\n" + std::string(2 * kMaxNesting + 2, ' ') + "- x", 80); }),
-            "line 2, column 1: a list item indented " + std::to_string(2 * kMaxNesting + 2) + " spaces is " + kTooDeep +
-                " (each 2 spaces are a level)");
-  EXPECT_NE(error_of([&] { (void)markdown_to_text(std::string(100000, ' ') + "- x", 80); }).find(kTooDeep),
+TEST(MarkdownNesting, ListsAndQuotesNestAsDeepAsTheBound) {
+  std::string list;
+  for (int i = 1; i <= kMaxNesting; ++i) list += std::string(2 * i - 2, ' ') + "- level " + std::to_string(i) + "\n";
+  const std::string text = markdown_to_text(list, 300);
+  EXPECT_NE(text.find("\n" + std::string(2 * kMaxNesting, ' ') + "- level " + std::to_string(kMaxNesting) + "\n"),
+            std::string::npos)
+      << text;
+  // One level more: refused at its text ("level" after 2 * 64 spaces and "- ").
+  EXPECT_EQ(error_of([&] { (void)markdown_to_text(list + std::string(2 * kMaxNesting, ' ') + "- level 65", 80); }),
+            "line " + std::to_string(kMaxNesting + 1) + ", column " + std::to_string(2 * kMaxNesting + 3) +
+                ": lists and quotes are " + kTooDeep);
+  EXPECT_NE(error_of([&] { (void)markdown_to_text(repeat("- ", 100000) + "x", 80); }).find(kTooDeep),
             std::string::npos);
-  // Quotes do not nest: ">>>" is a quote of ">>" (no recursion, nothing to bound).
-  EXPECT_EQ(markdown_to_text(">>> hi", 80), "  | >> hi\n");
+  // Quotes nest as CommonMark says (">>>" is three deep), to the same bound.
+  EXPECT_EQ(markdown_to_text(">>> hi", 80), "  | | | hi\n");
+  EXPECT_NO_THROW((void)markdown_to_text(repeat(">", kMaxNesting) + " hi", 80));
+  EXPECT_EQ(error_of([&] { (void)markdown_to_text(repeat(">", kMaxNesting + 1) + " hi", 80); }),
+            "line 1, column " + std::to_string(kMaxNesting + 3) + ": lists and quotes are " + kTooDeep);
+  EXPECT_NE(error_of([&] { (void)markdown_to_text(repeat(">", 100000), 80); }).find(kTooDeep), std::string::npos);
 }
 
-// Inline markup (emphasis, links, code, math) recurses only a few levels whatever the
-// text: an emphasis holds no '*', a link's text no "](". Kept so by this test.
+// md4c parses any nesting without recursing; the renderers follow emphasis and links
+// only kMaxNesting spans deep.
+TEST(MarkdownNesting, SpansNestAsDeepAsTheBound) {
+  const auto nested = [](int n) { return repeat("*a _", n) + "b" + repeat("_ a*", n); };
+  EXPECT_NO_THROW((void)markdown_to_latex(nested(kMaxNesting / 2)));
+  const std::string message = error_of([&] { (void)markdown_to_latex(nested(kMaxNesting / 2 + 1)); });
+  EXPECT_EQ(message.rfind("line 1, column ", 0), 0u) << message;
+  EXPECT_NE(message.find("emphasis, links and math spans are " + kTooDeep), std::string::npos) << message;
+}
+
+// Hostile inline markup is plain text to CommonMark: no deep nesting to refuse.
 TEST(MarkdownNesting, InlineMarkupStaysShallowOnHostileText) {
   for (const std::string& hostile :
        {repeat("[", 20000) + "](x)", repeat("*[", 20000) + "](x)*", repeat("**[*", 20000) + "](x)**",
