@@ -1,5 +1,5 @@
 // `linkage render`: the flags turned into a Clip (src/pipeline), produced with progress
-// on stderr: an MP4 (H.264 through the FFmpeg libraries), a numbered PNG sequence, or
+// on stderr: an MP4 (H.264), GIF or WebM (VP9) through the FFmpeg libraries, a numbered PNG sequence, or
 // one still (PNG, SVG, PDF). Everything is checked before any work starts; outputs
 // appear whole or not at all.
 #include <cmath>
@@ -196,7 +196,8 @@ void register_render(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("render", "Draw the motion: an MP4 clip, a PNG sequence, or a PNG/SVG/PDF still");
   const std::string output = "Output";
   f->out_option = sub->add_option("--out", f->out,
-                                  "Output file: .mp4 (H.264 video), .png (still), .svg or .pdf (vector still); "
+                                  "Output file: .mp4 (H.264), .gif or .webm (VP9) clip, .png (still), .svg or .pdf "
+                                  "(vector still); "
                                   "written atomically (default linkage.mp4, or none with --frames alone)")
                       ->type_name("FILE")
                       ->group(output);

@@ -13,10 +13,12 @@
 #include <string>
 #include <vector>
 
+#include "cli/angle_option.hpp"
 #include "cli/commands.hpp"
 #include "cli/input_options.hpp"
 #include "cli/mechanism_options.hpp"
 #include "cli/simulation_flags.hpp"
+#include "core/angle_unit.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
@@ -40,6 +42,7 @@ struct SimulateOptions {
   std::string out;
   std::string format;
   std::string columns = "all";
+  std::string angles = "rad";
   CLI::Option* columns_option = nullptr;
   bool quiet = false;
   MechanismOptions mechanism;
@@ -77,6 +80,24 @@ struct Samples {
 
   double duration, every;
   long count = 0;
+};
+
+/// The columns as written with --angles: angular ones (rad, rad/s, rad/s^2) scaled, and
+/// named with their unit in a CSV header when in degrees ("theta1 (deg)").
+struct WrittenColumns {
+  std::vector<std::string> names;  // CSV header
+  std::vector<std::string> units;  // JSON "units"
+  std::vector<double> factors;
+
+  void add(const std::string& name, std::string_view unit, AngleUnit angles) {
+    const double factor = angle_factor(unit, angles);
+    units.push_back(angle_unit_text(unit, angles));
+    names.push_back(factor == 1 ? name : name + " (" + units.back() + ")");
+    factors.push_back(factor);
+  }
+  void scale(std::vector<double>& values) const {
+    for (std::size_t j = 0; j < values.size(); ++j) values[j] *= factors[j];
+  }
 };
 
 /// Writes rows as they are computed: CSV lines go out whole, so a run that fails
@@ -152,15 +173,15 @@ nlohmann::ordered_json options_json(const SimulationOptions& s, double every) {
 }
 
 std::string json_header(const Inputs& inputs, const SimulationOptions& s, double every,
-                        const std::vector<Column>& columns) {
+                        const std::vector<Column>& columns, const WrittenColumns& written) {
   nlohmann::ordered_json params = nlohmann::ordered_json::object(), state = nlohmann::ordered_json::object();
   for (const InputKey& key : kInputKeys)
     (key.param != nullptr ? params : state)[std::string(key.key)] = inputs.value(key);
   const nlohmann::ordered_json options = options_json(s, every);
   nlohmann::ordered_json names = nlohmann::ordered_json::array(), units = nlohmann::ordered_json::object();
-  for (const Column c : columns) {
-    names.push_back(info(c).name);
-    units[std::string(info(c).name)] = info(c).unit;
+  for (std::size_t j = 0; j < columns.size(); ++j) {
+    names.push_back(info(columns[j]).name);
+    units[std::string(info(columns[j]).name)] = written.units[j];
   }
   return "{\n" + json_line("parameters", params) + ",\n" + json_line("initial_state", state) + ",\n" +
          json_line("options", options) + ",\n" + json_line("columns", names) + ",\n" + json_line("units", units) +
@@ -203,7 +224,8 @@ void print_summary(const SimulationOptions& s, long rows, const SimulationStats&
 }
 
 std::string mechanism_json_header(const sym::System& system, const GiNaC::exmap& initial, const SimulationOptions& s,
-                                  double every, const std::vector<MechanismColumn>& columns) {
+                                  double every, const std::vector<MechanismColumn>& columns,
+                                  const WrittenColumns& written) {
   nlohmann::ordered_json params = nlohmann::ordered_json::object(), state = nlohmann::ordered_json::object();
   for (const Parameter& p : system.mechanism().parameters) params[p.name] = p.value;
   for (const sym::GeneralizedCoordinate& g : system.coordinates()) {
@@ -211,9 +233,9 @@ std::string mechanism_json_header(const sym::System& system, const GiNaC::exmap&
     state[g.coordinate.key + "_dot"] = sym::to_double(initial.at(g.symbols.q_dot));
   }
   nlohmann::ordered_json names = nlohmann::ordered_json::array(), units = nlohmann::ordered_json::object();
-  for (const MechanismColumn& c : columns) {
-    names.push_back(c.name);
-    units[c.name] = c.unit;
+  for (std::size_t j = 0; j < columns.size(); ++j) {
+    names.push_back(columns[j].name);
+    units[columns[j].name] = written.units[j];
   }
   return "{\n" + json_line("mechanism", system.mechanism().name) + ",\n" + json_line("parameters", params) + ",\n" +
          json_line("initial_state", state) + ",\n" + json_line("options", options_json(s, every)) + ",\n" +
@@ -248,9 +270,11 @@ void run_simulate_mechanism(const SimulateOptions& o, const SimulationOptions& s
   std::optional<AtomicFile> file;
   if (!o.out.empty()) file.emplace(o.out, "out");
   TableWriter writer(format, stdout, file ? &*file : nullptr);
-  std::vector<std::string> names;
-  for (const MechanismColumn& c : columns) names.push_back(c.name);
-  writer.begin(names, format == Format::json ? mechanism_json_header(system, closed.state, s, every, columns) : "");
+  const AngleUnit angles = parse_angle_unit(o.angles, "--angles");
+  WrittenColumns written;
+  for (const MechanismColumn& c : columns) written.add(c.name, c.unit, angles);
+  writer.begin(written.names,
+               format == Format::json ? mechanism_json_header(system, closed.state, s, every, columns, written) : "");
   Progress progress("simulate", s.duration, "s simulated", o.quiet);
   simulation.on_progress([&progress](double t) { progress.update(t); });
   eval::MechanismSample sample;
@@ -265,6 +289,7 @@ void run_simulate_mechanism(const SimulateOptions& o, const SimulationOptions& s
         throw Error::diverged(columns[j].name + " at t = " + format_roundtrip(t) +
                               " s is not a finite number; the run stopped (Case " + std::to_string(s.case_id) + ")");
     }
+    written.scale(values);
     writer.row(values);
     progress.update(t);
     throw_if_interrupted();
@@ -296,6 +321,7 @@ void run_simulate(const SimulateOptions& o) {
   const SimulationOptions defaults;
   const double duration = o.duration.empty() ? defaults.duration : parse_number(o.duration, "--duration", "s");
   const SimulationOptions s = resolve_simulation_flags(o.simulation, duration);
+  (void)parse_angle_unit(o.angles, "--angles");  // checked before any work
   const double every = parse_number(o.every, "--every", "s");
   if (!(every > 0 && every <= s.duration))
     throw Error::input("--every: " + format_roundtrip(every) + " s is out of range; valid: 0 < every <= duration (" +
@@ -306,6 +332,7 @@ void run_simulate(const SimulateOptions& o) {
   }
   const Samples samples(s.duration, every);
   const std::vector<Column> columns = parse_columns(o.columns, "--columns");
+  const AngleUnit angles = parse_angle_unit(o.angles, "--angles");
   const Format format = choose_format(o);
   const Inputs inputs = resolve_inputs(o.inputs);
   if (!o.quiet) note_ignored_simulation_flags(o.simulation, s);
@@ -314,9 +341,9 @@ void run_simulate(const SimulateOptions& o) {
   std::optional<AtomicFile> file;
   if (!o.out.empty()) file.emplace(o.out, "out");
   TableWriter writer(format, stdout, file ? &*file : nullptr);
-  std::vector<std::string> names;
-  for (const Column c : columns) names.emplace_back(info(c).name);
-  writer.begin(names, format == Format::json ? json_header(inputs, s, every, columns) : "");
+  WrittenColumns written;
+  for (const Column c : columns) written.add(std::string(info(c).name), info(c).unit, angles);
+  writer.begin(written.names, format == Format::json ? json_header(inputs, s, every, columns, written) : "");
   // In simulated time, reported from inside long steps too: one row may take minutes.
   Progress progress("simulate", s.duration, "s simulated", o.quiet);
   simulation.on_progress([&progress](double t) { progress.update(t); });
@@ -329,6 +356,7 @@ void run_simulate(const SimulateOptions& o) {
         throw Error::diverged(std::string(info(columns[j]).name) + " at t = " + format_roundtrip(t) +
                               " s is not a finite number; the run stopped" +
                               (likely_causes(inputs).empty() ? "" : " (inputs: " + likely_causes(inputs) + ")"));
+    written.scale(values);
     writer.row(values);
     progress.update(t);
     throw_if_interrupted();
@@ -370,6 +398,7 @@ void register_simulate(CLI::App& app) {
                           "slider's s), all, or names such as 2.theta_dot, B.force_x, "
                           "energy_error")
           ->type_name("LIST");
+  add_angle_option(sub, o->angles, "angle columns (theta, rates, accelerations) in the table");
   sub->add_flag("--quiet", o->quiet, "No progress or notes on stderr (the summary and warnings stay)");
   add_mechanism_options(sub, o->mechanism);
   add_input_options(sub, o->inputs);

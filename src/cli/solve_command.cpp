@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "cli/angle_option.hpp"
 #include "cli/commands.hpp"
 #include "cli/input_options.hpp"
 #include "cli/mechanism_options.hpp"
@@ -24,6 +25,7 @@ struct SolveOptions {
   std::string digits = "6";
   bool ascii = false;
   bool unicode = false;
+  std::string angles = "rad";
   MechanismOptions mechanism;
 };
 
@@ -56,6 +58,9 @@ void run_solve(const SolveOptions& options) {
   if (options.ascii && options.unicode) throw Error::input("--ascii and --unicode exclude each other; give one");
   ReportOptions report;
   report.digits = parse_digits(options.digits);
+  report.angles = parse_angle_unit(options.angles, "--angles");
+  if (report.angles != AngleUnit::rad && format != "text")
+    throw Error::input("--angles: deg applies to the text format; " + format + " keeps radians");
   report.text_style = options.ascii ? Style::ascii : options.unicode ? Style::unicode : text_style_from_locale();
   const MechanismSolution solution =
       work_out_mechanism(chosen_mechanism(options.mechanism, options.inputs), case_ids(cases));
@@ -100,6 +105,7 @@ void register_solve(CLI::App& app) {
                 "Text format in plain ASCII (th1'', x1'') whatever the locale (default: Unicode symbols when "
                 "the locale uses UTF-8, else ASCII)");
   sub->add_flag("--unicode", options->unicode, "Text format with Unicode symbols whatever the locale");
+  add_angle_option(sub, options->angles, "angles, rates and angular accelerations in the text format's tables");
   add_mechanism_options(sub, options->mechanism);
   add_input_options(sub, options->inputs);
   add_runner(sub, [options] { run_solve(*options); });

@@ -1,6 +1,9 @@
 #include "encode/video_writer.hpp"
 
 extern "C" {
+#include <libavfilter/avfilter.h>
+#include <libavfilter/buffersink.h>
+#include <libavfilter/buffersrc.h>
 #include <libavutil/opt.h>
 #include <libavutil/pixfmt.h>
 }
@@ -8,6 +11,7 @@ extern "C" {
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cstring>
 #include <string_view>
 #include <vector>
 
@@ -26,6 +30,30 @@ constexpr std::array<std::string_view, 8> x264_tunes = {"film", "animation", "gr
                                                         "psnr", "ssim",      "fastdecode", "zerolatency"};
 // MPEG-4 part 2 quantiser (1 best .. 31 worst) for the fallback encoder.
 constexpr int mpeg4_quantiser = 3;
+// libvpx-vp9 constant quality (0 best .. 63 worst): Google's suggestion for 720p is
+// 32; line art on flat colours stays sharp a little lower.
+constexpr int vp9_crf = 30;
+// GIF frame delays are whole hundredths of a second and browsers play delays under
+// 0.02 s at 0.1 s, so a GIF above 50 frames per second would play slowly.
+constexpr int gif_max_fps = 50;
+// One palette per frame from that frame's colours, ordered (Bayer) dithering: error
+// diffusion would make still areas flicker from frame to frame.
+constexpr const char* gif_filters =
+    "split[a][b];[a]palettegen=max_colors=256:reserve_transparent=0:stats_mode=single[p];"
+    "[b][p]paletteuse=new=1:dither=bayer:bayer_scale=4";
+
+struct FilterGraphDeleter {
+  void operator()(AVFilterGraph* p) const { avfilter_graph_free(&p); }
+};
+struct InOutDeleter {
+  void operator()(AVFilterInOut* p) const { avfilter_inout_free(&p); }
+};
+using FilterGraphPtr = std::unique_ptr<AVFilterGraph, FilterGraphDeleter>;
+using InOutPtr = std::unique_ptr<AVFilterInOut, InOutDeleter>;
+
+const char* muxer_name(VideoFormat format) {
+  return format == VideoFormat::gif ? "gif" : format == VideoFormat::webm ? "webm" : "mp4";
+}
 
 template <std::size_t N>
 std::string joined(const std::array<std::string_view, N>& names) {
@@ -59,7 +87,15 @@ std::vector<const AVCodec*> candidate_encoders(VideoCodec wanted) {
 // Sets the encoder's quality options; every setting is checked.
 void configure_quality(AVCodecContext& context, const AVCodec& codec, const VideoOptions& options) {
   const std::string name = codec.name;
-  if (name == "libx264") {
+  if (name == "libvpx-vp9") {
+    context.bit_rate = 0;  // with crf: constant quality, no bit-rate cap
+    av::check(av_opt_set_int(context.priv_data, "crf", vp9_crf, 0), "libvpx-vp9 crf");
+    av::check(av_opt_set(context.priv_data, "deadline", "good", 0), "libvpx-vp9 deadline");
+    av::check(av_opt_set_int(context.priv_data, "cpu-used", 4, 0), "libvpx-vp9 cpu-used");
+    av::check(av_opt_set_int(context.priv_data, "row-mt", 1, 0), "libvpx-vp9 row-mt");
+  } else if (codec.id == AV_CODEC_ID_GIF) {
+    // Lossless on its palette: nothing to set.
+  } else if (name == "libx264") {
     av::check(av_opt_set(context.priv_data, "preset", options.preset.c_str(), 0), "libx264 preset");
     if (!options.tune.empty())
       av::check(av_opt_set(context.priv_data, "tune", options.tune.c_str(), 0), "libx264 tune");
@@ -80,7 +116,8 @@ av::CodecContextPtr open_encoder(const AVCodec& codec, const VideoOptions& optio
   if (!context) throw Error::failure("cannot allocate an encoder context (out of memory)");
   context->width = options.width;
   context->height = options.height;
-  context->pix_fmt = AV_PIX_FMT_YUV420P;
+  const bool gif = codec.id == AV_CODEC_ID_GIF;
+  context->pix_fmt = gif ? AV_PIX_FMT_PAL8 : AV_PIX_FMT_YUV420P;
   context->time_base = AVRational{1, options.fps};
   context->framerate = AVRational{options.fps, 1};
   context->sample_aspect_ratio = AVRational{1, 1};
@@ -90,10 +127,12 @@ av::CodecContextPtr open_encoder(const AVCodec& codec, const VideoOptions& optio
   if (global_header) context->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
   // What the converter produces, stated so players do not guess (HD players assume
   // BT.709, SD players BT.601 when untagged).
-  context->color_range = AVCOL_RANGE_MPEG;
-  context->colorspace = AVCOL_SPC_BT709;
-  context->color_primaries = AVCOL_PRI_BT709;
-  context->color_trc = AVCOL_TRC_BT709;
+  if (!gif) {
+    context->color_range = AVCOL_RANGE_MPEG;
+    context->colorspace = AVCOL_SPC_BT709;
+    context->color_primaries = AVCOL_PRI_BT709;
+    context->color_trc = AVCOL_TRC_BT709;
+  }
   configure_quality(*context, codec, options);
   const int status = avcodec_open2(context.get(), &codec, nullptr);
   if (status < 0) {
@@ -109,7 +148,8 @@ struct VideoWriter::Impl {
   explicit Impl(const std::filesystem::path& target, const VideoOptions& opts)
       : options(opts), file(target, opts.setting, true) {
     if (file.kind() != AtomicFile::Kind::replace)
-      throw Error::invalid(opts.setting, "an MP4 is finished by seeking back into the file, so '" + target.string() +
+      throw Error::invalid(opts.setting, std::string("a video is finished by seeking back into the file, so '") +
+                                             target.string() +
                                              "' must be a regular file (not standard output, a device or a pipe)");
   }
 
@@ -117,9 +157,13 @@ struct VideoWriter::Impl {
   AtomicFile file;  // declared before the AV objects: the file closes before the temp is removed
   av::OutputPtr format;
   av::CodecContextPtr encoder;
-  AVStream* stream = nullptr;  // owned by `format`
-  av::SwsPtr converter;
-  av::FramePtr picture;
+  AVStream* stream = nullptr;         // owned by `format`
+  av::SwsPtr converter;               // MP4, WebM: BGRA -> yuv420p
+  FilterGraphPtr palette;             // GIF: BGRA -> pal8
+  AVFilterContext* source = nullptr;  // owned by `palette`
+  AVFilterContext* sink = nullptr;    // owned by `palette`
+  av::FramePtr filtered;              // a pal8 frame from the sink
+  av::FramePtr picture;               // the encoder's input (GIF: the filter graph's)
   av::PacketPtr packet;
   std::string encoder_name;
   std::string note;
@@ -128,7 +172,11 @@ struct VideoWriter::Impl {
   bool finished = false;
 
   void open();
+  void open_encoder_for_format();
+  void open_palette_filter();
   void convert(const Frame& frame);
+  // GIF: sends `frame` (nullptr flushes) through the palette filters and encodes what comes out.
+  void filter_and_encode(const AVFrame* frame);
   // Sends `frame` (nullptr flushes) and muxes every packet the encoder returns.
   void encode(const AVFrame* frame);
 };
@@ -137,14 +185,73 @@ void VideoWriter::Impl::open() {
   av::install_quiet_log();
   const std::string temp = file.temp_path().string();
   AVFormatContext* raw_format = nullptr;
-  av::check(avformat_alloc_output_context2(&raw_format, nullptr, "mp4", temp.c_str()), "cannot set up the MP4 muxer");
+  const std::string kind = name(options.format);
+  av::check(avformat_alloc_output_context2(&raw_format, nullptr, muxer_name(options.format), temp.c_str()),
+            "cannot set up the " + kind + " muxer");
   format.reset(raw_format);
   format->flags |= AVFMT_FLAG_BITEXACT;  // no "Lavf" version string in the file
+  open_encoder_for_format();
 
+  stream = avformat_new_stream(format.get(), nullptr);
+  if (stream == nullptr) throw Error::failure("cannot add a video stream (out of memory)");
+  stream->time_base = encoder->time_base;
+  stream->avg_frame_rate = encoder->framerate;
+  av::check(avcodec_parameters_from_context(stream->codecpar, encoder.get()), "cannot copy the encoder parameters");
+
+  picture.reset(av_frame_alloc());
+  packet.reset(av_packet_alloc());
+  if (!picture || !packet) throw Error::failure("cannot allocate a video frame (out of memory)");
+  picture->width = options.width;
+  picture->height = options.height;
+  if (options.format == VideoFormat::gif) {
+    open_palette_filter();
+    picture->format = AV_PIX_FMT_RGB32;
+  } else {
+    converter.reset(sws_getContext(options.width, options.height, AV_PIX_FMT_RGB32, options.width, options.height,
+                                   AV_PIX_FMT_YUV420P, SWS_BILINEAR | SWS_ACCURATE_RND | SWS_BITEXACT, nullptr, nullptr,
+                                   nullptr));
+    if (!converter) throw Error::failure("cannot set up the BGRA -> yuv420p converter (libswscale)");
+    // Full-range RGB in, BT.709 limited-range YUV out, matching the stream's tags.
+    const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
+    av::check(sws_setColorspaceDetails(converter.get(), bt709, 1, bt709, 0, 0, 1 << 16, 1 << 16),
+              "cannot select BT.709 colour conversion");
+    picture->format = AV_PIX_FMT_YUV420P;
+    picture->color_range = AVCOL_RANGE_MPEG;
+    picture->colorspace = AVCOL_SPC_BT709;
+  }
+  av::check(av_frame_get_buffer(picture.get(), 0), "cannot allocate a video frame");
+
+  av::check(avio_open(&format->pb, temp.c_str(), AVIO_FLAG_WRITE), "cannot create '" + temp + "'");
+  if (options.format != VideoFormat::mp4) {
+    av::check(avformat_write_header(format.get(), nullptr), "cannot write the " + kind + " header");
+    return;
+  }
+  AVDictionary* muxer_options = nullptr;
+  av::check(av_dict_set(&muxer_options, "movflags", "+faststart", 0), "cannot set movflags");
+  const int header = avformat_write_header(format.get(), &muxer_options);
+  const bool unused = av_dict_count(muxer_options) > 0;
+  av_dict_free(&muxer_options);
+  av::check(header, "cannot write the MP4 header");
+  if (unused) throw Error::failure("the MP4 muxer did not accept movflags=+faststart");
+}
+
+void VideoWriter::Impl::open_encoder_for_format() {
+  const bool global_header = (format->oformat->flags & AVFMT_GLOBALHEADER) != 0;
+  if (options.format != VideoFormat::mp4) {
+    const bool gif = options.format == VideoFormat::gif;
+    const AVCodec* candidate = gif ? avcodec_find_encoder(AV_CODEC_ID_GIF) : avcodec_find_encoder_by_name("libvpx-vp9");
+    const std::string wanted = gif ? "GIF" : "VP9 (libvpx-vp9)";
+    if (candidate == nullptr) throw Error::failure(options.setting, "no " + wanted + " encoder in this FFmpeg build");
+    std::string why;
+    encoder = open_encoder(*candidate, options, global_header, why);
+    if (!encoder) throw Error::failure(options.setting, "the " + wanted + " encoder could not be opened (" + why + ")");
+    encoder_name = candidate->name;
+    return;
+  }
   std::string failures;
   for (const AVCodec* candidate : candidate_encoders(options.codec)) {
     std::string why;
-    encoder = open_encoder(*candidate, options, (format->oformat->flags & AVFMT_GLOBALHEADER) != 0, why);
+    encoder = open_encoder(*candidate, options, global_header, why);
     if (encoder) {
       encoder_name = candidate->name;
       codec = candidate->id == AV_CODEC_ID_H264 ? VideoCodec::h264 : VideoCodec::mpeg4;
@@ -161,40 +268,37 @@ void VideoWriter::Impl::open() {
   if (codec == VideoCodec::mpeg4 && options.codec == VideoCodec::automatic)
     note = "note: no H.264 encoder in this FFmpeg build" + (failures.empty() ? "" : " (" + failures + ")") +
            "; wrote MPEG-4 part 2, which video players show but some browsers do not";
+}
 
-  stream = avformat_new_stream(format.get(), nullptr);
-  if (stream == nullptr) throw Error::failure("cannot add a video stream (out of memory)");
-  stream->time_base = encoder->time_base;
-  stream->avg_frame_rate = encoder->framerate;
-  av::check(avcodec_parameters_from_context(stream->codecpar, encoder.get()), "cannot copy the encoder parameters");
-
-  converter.reset(sws_getContext(options.width, options.height, AV_PIX_FMT_RGB32, options.width, options.height,
-                                 AV_PIX_FMT_YUV420P, SWS_BILINEAR | SWS_ACCURATE_RND | SWS_BITEXACT, nullptr, nullptr,
-                                 nullptr));
-  if (!converter) throw Error::failure("cannot set up the BGRA -> yuv420p converter (libswscale)");
-  // Full-range RGB in, BT.709 limited-range YUV out, matching the stream's tags.
-  const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
-  av::check(sws_setColorspaceDetails(converter.get(), bt709, 1, bt709, 0, 0, 1 << 16, 1 << 16),
-            "cannot select BT.709 colour conversion");
-
-  picture.reset(av_frame_alloc());
-  packet.reset(av_packet_alloc());
-  if (!picture || !packet) throw Error::failure("cannot allocate a video frame (out of memory)");
-  picture->format = AV_PIX_FMT_YUV420P;
-  picture->width = options.width;
-  picture->height = options.height;
-  picture->color_range = AVCOL_RANGE_MPEG;
-  picture->colorspace = AVCOL_SPC_BT709;
-  av::check(av_frame_get_buffer(picture.get(), 0), "cannot allocate a video frame");
-
-  av::check(avio_open(&format->pb, temp.c_str(), AVIO_FLAG_WRITE), "cannot create '" + temp + "'");
-  AVDictionary* muxer_options = nullptr;
-  av::check(av_dict_set(&muxer_options, "movflags", "+faststart", 0), "cannot set movflags");
-  const int header = avformat_write_header(format.get(), &muxer_options);
-  const bool unused = av_dict_count(muxer_options) > 0;
-  av_dict_free(&muxer_options);
-  av::check(header, "cannot write the MP4 header");
-  if (unused) throw Error::failure("the MP4 muxer did not accept movflags=+faststart");
+void VideoWriter::Impl::open_palette_filter() {
+  palette.reset(avfilter_graph_alloc());
+  filtered.reset(av_frame_alloc());
+  if (!palette || !filtered) throw Error::failure("cannot allocate the GIF palette filters (out of memory)");
+  palette->nb_threads = 1;  // the same palettes on every machine
+  const std::string args = "video_size=" + std::to_string(options.width) + "x" + std::to_string(options.height) +
+                           ":pix_fmt=" + std::to_string(static_cast<int>(AV_PIX_FMT_RGB32)) + ":time_base=1/" +
+                           std::to_string(options.fps) + ":pixel_aspect=1/1";
+  av::check(
+      avfilter_graph_create_filter(&source, avfilter_get_by_name("buffer"), "in", args.c_str(), nullptr, palette.get()),
+      "cannot set up the GIF palette filters (buffer)");
+  av::check(
+      avfilter_graph_create_filter(&sink, avfilter_get_by_name("buffersink"), "out", nullptr, nullptr, palette.get()),
+      "cannot set up the GIF palette filters (buffersink)");
+  // graph_parse takes the ends it links: "in" feeds the chain, "out" ends it.
+  InOutPtr outputs(avfilter_inout_alloc());
+  InOutPtr inputs(avfilter_inout_alloc());
+  if (!outputs || !inputs) throw Error::failure("cannot allocate the GIF palette filters (out of memory)");
+  outputs->name = av_strdup("in");
+  outputs->filter_ctx = source;
+  inputs->name = av_strdup("out");
+  inputs->filter_ctx = sink;
+  AVFilterInOut* in_raw = inputs.release();
+  AVFilterInOut* out_raw = outputs.release();
+  const int parsed = avfilter_graph_parse_ptr(palette.get(), gif_filters, &in_raw, &out_raw, nullptr);
+  inputs.reset(in_raw);
+  outputs.reset(out_raw);
+  av::check(parsed, "cannot set up the GIF palette filters (palettegen, paletteuse)");
+  av::check(avfilter_graph_config(palette.get(), nullptr), "cannot set up the GIF palette filters");
 }
 
 void VideoWriter::Impl::convert(const Frame& frame) {
@@ -204,9 +308,16 @@ void VideoWriter::Impl::convert(const Frame& frame) {
                          " video");
   // The encoder may still reference the previous picture's buffer; this copies only then.
   av::check(av_frame_make_writable(picture.get()), "cannot reuse the video frame");
-  const std::array<const std::uint8_t*, 1> source = {frame.pixels.data()};
+  if (options.format == VideoFormat::gif) {
+    const auto row_bytes = static_cast<std::size_t>(4 * frame.width);
+    for (int y = 0; y < frame.height; ++y)
+      std::memcpy(picture->data[0] + static_cast<std::ptrdiff_t>(y) * picture->linesize[0],
+                  frame.pixels.data() + static_cast<std::ptrdiff_t>(y) * frame.stride, row_bytes);
+    return;
+  }
+  const std::array<const std::uint8_t*, 1> pixels = {frame.pixels.data()};
   const std::array<int, 1> source_stride = {frame.stride};
-  const int rows = sws_scale(converter.get(), source.data(), source_stride.data(), 0, frame.height, picture->data,
+  const int rows = sws_scale(converter.get(), pixels.data(), source_stride.data(), 0, frame.height, picture->data,
                              picture->linesize);
   if (rows != options.height)
     throw Error::failure("libswscale converted " + std::to_string(rows) + " rows, expected " +
@@ -223,7 +334,20 @@ void VideoWriter::Impl::encode(const AVFrame* frame) {
     if (packet->duration == 0) packet->duration = 1;  // one frame, in the encoder's 1/fps
     av_packet_rescale_ts(packet.get(), encoder->time_base, stream->time_base);
     ++stats.packets;
-    av::check(av_interleaved_write_frame(format.get(), packet.get()), "cannot write to the MP4 file");
+    av::check(av_interleaved_write_frame(format.get(), packet.get()), "cannot write to the video file");
+  }
+}
+
+void VideoWriter::Impl::filter_and_encode(const AVFrame* frame) {
+  // KEEP_REF: the filters take their own reference, so `picture` stays ours to reuse.
+  av::check(av_buffersrc_add_frame_flags(source, const_cast<AVFrame*>(frame), AV_BUFFERSRC_FLAG_KEEP_REF),
+            "cannot pass a frame to the GIF palette filters");
+  for (;;) {
+    const int status = av_buffersink_get_frame(sink, filtered.get());
+    if (status == AVERROR(EAGAIN) || status == AVERROR_EOF) return;
+    av::check(status, "cannot build a GIF palette");
+    encode(filtered.get());
+    av_frame_unref(filtered.get());
   }
 }
 
@@ -243,7 +367,10 @@ void VideoWriter::write(const Frame& frame) {
   impl.stats.convert_seconds += seconds_since(start);
   start = Clock::now();
   impl.picture->pts = impl.stats.frames;  // frame k at k / fps
-  impl.encode(impl.picture.get());
+  if (impl.palette)
+    impl.filter_and_encode(impl.picture.get());
+  else
+    impl.encode(impl.picture.get());
   impl.stats.encode_seconds += seconds_since(start);
   ++impl.stats.frames;
 }
@@ -253,11 +380,13 @@ void VideoWriter::finish() {
   if (impl.finished) return;
   if (impl.stats.frames == 0) throw Error::failure(impl.options.setting, "no frames to write");
   auto start = Clock::now();
-  impl.encode(nullptr);  // drain the frames the encoder delayed (B-frames, lookahead)
+  if (impl.palette) impl.filter_and_encode(nullptr);  // the frames the filters still hold
+  impl.encode(nullptr);                               // drain the frames the encoder delayed (B-frames, lookahead)
   impl.stats.encode_seconds += seconds_since(start);
   start = Clock::now();
-  av::check(av_write_trailer(impl.format.get()), "cannot finish the MP4 file");  // moves moov first
-  av::check(avio_closep(&impl.format->pb), "cannot close the MP4 file");
+  const std::string kind = name(impl.options.format);
+  av::check(av_write_trailer(impl.format.get()), "cannot finish the " + kind + " file");  // MP4: moves moov first
+  av::check(avio_closep(&impl.format->pb), "cannot close the " + kind + " file");
   std::error_code ec;
   impl.stats.bytes = static_cast<std::int64_t>(std::filesystem::file_size(impl.file.temp_path(), ec));
   impl.file.commit();
@@ -283,6 +412,12 @@ void VideoWriter::validate(const VideoOptions& options) {
         "video size " + size + " must have an even width and height (yuv420p stores colour at half resolution)");
   if (options.fps < 1 || options.fps > 240)
     throw Error::invalid(options.setting, "frame rate " + std::to_string(options.fps) + " must be from 1 to 240");
+  if (options.format == VideoFormat::gif && options.fps > gif_max_fps)
+    throw Error::invalid(options.setting,
+                         std::string("frame rate ") + std::to_string(options.fps) + " is too fast for a GIF: " +
+                             "its delays are hundredths of a second and browsers slow shorter ones down, so a GIF " +
+                             "takes 1 to " + std::to_string(gif_max_fps) +
+                             " frames per second (or write .mp4 or .webm)");
   if (options.crf < 0 || options.crf > 51)
     throw Error::invalid(options.setting, "crf " + std::to_string(options.crf) + " must be from 0 to 51");
   if (!contains(x264_presets, options.preset))
@@ -298,6 +433,12 @@ void VideoWriter::validate(const VideoOptions& options) {
     throw Error::invalid(options.setting,
                          "keyframe interval " + std::to_string(options.keyframe_seconds) + " s must be from 1 to 60");
 }
+
+const char* name(VideoFormat format) {
+  return format == VideoFormat::gif ? "GIF" : format == VideoFormat::webm ? "WebM" : "MP4";
+}
+
+bool vp9_encoder_available() { return avcodec_find_encoder_by_name("libvpx-vp9") != nullptr; }
 
 bool h264_encoder_available() {
   return avcodec_find_encoder_by_name("libx264") != nullptr || avcodec_find_encoder(AV_CODEC_ID_H264) != nullptr;

@@ -118,7 +118,11 @@ class MarkdownWriter final : public Writer {
       return;
     }
     if (f.kind == FigureRef::Kind::video) {
-      out_ += "\n<video src=\"" + f.name + "\" controls muted loop width=\"640\"></video>\n\n";
+      // A GIF plays as an image (a <video> element does not take one).
+      if (f.path.extension() == ".gif")
+        out_ += "\n<img src=\"" + f.name + "\" alt=\"" + f.name + "\" width=\"640\">\n\n";
+      else
+        out_ += "\n<video src=\"" + f.name + "\" controls muted loop width=\"640\"></video>\n\n";
       out_ += "[▶ " + f.name + "](" + f.name + ")";
     } else {
       // The caption in the image's own paragraph: once in every reader (pandoc makes a

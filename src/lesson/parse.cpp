@@ -20,6 +20,7 @@
 #include "lesson/suggest.hpp"
 #include "model/inputs_toml.hpp"
 #include "model/mechanism_toml.hpp"
+#include "pipeline/clip.hpp"
 #include "render/theme.hpp"
 #include "report/mechanism_solution.hpp"
 
@@ -575,18 +576,12 @@ class Parser {
         r.fail("at", "'at' applies to a still (out = \"NAME.png\", .svg or .pdf); a clip shows 0 .. duration");
       if (!s.mechanism.empty()) {
         if (s.kind == OutputKind::svg || s.kind == OutputKind::pdf)
-          r.fail("out", "a mechanism's still is a .png (or a clip .mp4)");
+          r.fail("out", "a mechanism's still is a .png (or a clip .mp4, .gif or .webm)");
         // The whole mechanism checked now, so a bad lesson fails before any step runs.
         const MechanismRender made = mechanism_render(s, r.where("set"));
         if (!r.has("title")) g.title = made.system->mechanism().title;
       }
-      if (s.kind == OutputKind::mp4) {
-        VideoOptions video;
-        video.width = g.width;
-        video.height = g.height;
-        video.fps = g.fps;
-        VideoWriter::validate(video);
-      }
+      if (is_video(s.kind)) VideoWriter::validate(clip_video_options(g, s.kind));
     } catch (const Error& e) {
       if (e.code() != ExitCode::bad_input) throw;
       const std::string what = e.what();

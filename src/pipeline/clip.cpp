@@ -66,7 +66,7 @@ void produce_motion(const Clip& clip, const ClipProgress& progress, ClipResult& 
   ClipRenderer renderer(clip.inputs.params(), motion, s, clip.theme, run_label(clip.simulation));
 
   encode_frames(
-      clip.out && clip.out_kind() == OutputKind::mp4 ? clip.out : std::nullopt, clip.frames, s, count,
+      clip.out && is_video(clip.out_kind()) ? clip.out : std::nullopt, clip.frames, s, count,
       [&](std::size_t k, Frame& frame) { renderer.draw(k, frame); }, progress, result);
   add_drawing(stats, renderer);
 }
@@ -114,15 +114,18 @@ void Clip::validate() const {
   inputs.validate();
   simulation.validate();
   if (out) {
-    if (out_kind() == OutputKind::mp4) VideoWriter::validate(clip_video_options(settings));
+    if (is_video(out_kind())) VideoWriter::validate(clip_video_options(settings, out_kind()));
     if (*out != "-") require_writable_directory(out->parent_path(), "out");
   }
   if (frames && fs::exists(*frames, ec) && !fs::is_directory(*frames, ec))
     throw Error::invalid("frames", "'" + frames->string() + "' exists and is not a folder");
 }
 
-VideoOptions clip_video_options(const RenderSettings& s) {
+VideoOptions clip_video_options(const RenderSettings& s, OutputKind kind) {
   VideoOptions v;
+  v.format = kind == OutputKind::gif    ? VideoFormat::gif
+             : kind == OutputKind::webm ? VideoFormat::webm
+                                        : VideoFormat::mp4;
   v.width = s.width;
   v.height = s.height;
   v.fps = s.fps;
@@ -143,7 +146,7 @@ std::string_view name(ClipStage stage) { return stage == ClipStage::simulate ? "
 ClipResult produce_clip(const Clip& clip, const ClipProgress& progress) {
   clip.validate();
   ClipResult result;
-  if (clip.frames || (clip.out && clip.out_kind() == OutputKind::mp4)) produce_motion(clip, progress, result);
+  if (clip.frames || (clip.out && is_video(clip.out_kind()))) produce_motion(clip, progress, result);
   if (clip.is_still()) produce_still(clip, progress, result);
   return result;
 }

@@ -25,7 +25,7 @@ struct Clip {
   SimulationOptions simulation;
   RenderSettings settings;
   Theme theme;
-  /// The video (.mp4) or the still (.png, .svg, .pdf), if any.
+  /// The video (.mp4, .gif, .webm) or the still (.png, .svg, .pdf), if any.
   std::optional<std::filesystem::path> out;
   /// A numbered PNG sequence's folder (made with its parents), if any.
   std::optional<std::filesystem::path> frames;
@@ -38,8 +38,8 @@ struct Clip {
   void validate() const;
 };
 
-/// The encoder settings of a clip's MP4.
-[[nodiscard]] VideoOptions clip_video_options(const RenderSettings& settings);
+/// The encoder settings of a clip's video of `kind` (.mp4, .gif or .webm).
+[[nodiscard]] VideoOptions clip_video_options(const RenderSettings& settings, OutputKind kind = OutputKind::mp4);
 
 /// The HUD's second line, e.g. "Case 3 · dop853".
 [[nodiscard]] std::string run_label(const SimulationOptions& options);

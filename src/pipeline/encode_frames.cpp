@@ -16,7 +16,7 @@ void encode_frames(const std::optional<std::filesystem::path>& video_out,
   std::optional<VideoWriter> video;
   std::optional<PngSequenceWriter> pngs;
   if (video_out) {
-    video.emplace(*video_out, clip_video_options(s));
+    video.emplace(*video_out, clip_video_options(s, output_kind(*video_out, "out")));
     stats.encoder_opened = true;
   }
   if (frames_dir) {

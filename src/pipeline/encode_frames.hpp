@@ -1,7 +1,7 @@
 #pragma once
 // The drawing-and-encoding loop every clip shares (the homework's and any mechanism's):
 // frames drawn on this thread into a few reused buffers while the encoder (and PNG
-// compression) run on others, into an MP4 and/or a numbered PNG sequence.
+// compression) run on others, into a video and/or a numbered PNG sequence.
 #include <cstddef>
 #include <filesystem>
 #include <functional>
@@ -13,7 +13,7 @@
 namespace linkage {
 
 /// Draws frame k of `count` with `draw(k, frame)` and encodes it into `video` (an .mp4,
-/// when given) and `frames` (a folder, when given); adds the encoders' figures to
+/// .gif or .webm, when given) and `frames` (a folder, when given); adds the encoders' figures to
 /// `result` (the drawing's own are the caller's to add).
 void encode_frames(const std::optional<std::filesystem::path>& video,
                    const std::optional<std::filesystem::path>& frames, const RenderSettings& settings, long count,

@@ -98,7 +98,7 @@ void produce_motion(const sym::System& system, const GiNaC::exmap& initial, cons
 
   RenderStats& stats = result.stats;
   encode_frames(
-      clip.out && output_kind(*clip.out, "out") == OutputKind::mp4 ? clip.out : std::nullopt, clip.frames, s, count,
+      clip.out && is_video(output_kind(*clip.out, "out")) ? clip.out : std::nullopt, clip.frames, s, count,
       [&](std::size_t k, Frame& frame) { frames.draw(k, frame); }, progress, result);
   add_drawing(stats, frames.stats());
 }
@@ -172,13 +172,14 @@ void MechanismClip::validate(const sym::System& system) const {
     if (fs::is_directory(*out, ec))
       throw Error::invalid("out", "'" + out->string() + "' is a folder, expected a file name");
     const OutputKind kind = output_kind(*out, "out");
-    if (kind != OutputKind::mp4 && kind != OutputKind::png)
-      throw Error::invalid("out", "a mechanism renders to .mp4 or .png (vector stills are the homework's only)");
+    if (!is_video(kind) && kind != OutputKind::png)
+      throw Error::invalid("out",
+                           "a mechanism renders to .mp4, .gif, .webm or .png (vector stills are the homework's only)");
   }
   settings.validate();
   simulation.validate();
   if (out) {
-    if (!is_still()) VideoWriter::validate(clip_video_options(settings));
+    if (!is_still()) VideoWriter::validate(clip_video_options(settings, output_kind(*out, "out")));
     require_writable_directory(out->parent_path(), "out");
   }
   if (frames && fs::exists(*frames, ec) && !fs::is_directory(*frames, ec))

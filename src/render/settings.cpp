@@ -119,14 +119,20 @@ OutputKind output_kind(const std::filesystem::path& file, const std::string& ori
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (extension == ".mp4") return OutputKind::mp4;
+  if (extension == ".gif") return OutputKind::gif;
+  if (extension == ".webm") return OutputKind::webm;
   if (extension == ".png") return OutputKind::png;
   if (extension == ".svg") return OutputKind::svg;
   if (extension == ".pdf") return OutputKind::pdf;
   throw Error::invalid(origin, "'" + file.string() + "' has " +
                                    (extension.empty() ? std::string("no extension") : "extension '" + extension + "'") +
-                                   "; valid: .mp4 (video), .png (still), .svg or .pdf (vector still)");
+                                   "; valid: .mp4, .gif or .webm (clip), .png (still), .svg or .pdf (vector still)");
 }
 
-bool is_still(OutputKind kind) { return kind != OutputKind::mp4; }
+bool is_video(OutputKind kind) {
+  return kind == OutputKind::mp4 || kind == OutputKind::gif || kind == OutputKind::webm;
+}
+
+bool is_still(OutputKind kind) { return !is_video(kind); }
 
 }  // namespace linkage

@@ -117,7 +117,8 @@ class MechanismWriter {
         const sym::SymbolInfo* info = system_.table().find(*s);
         state.row_labels.push_back(style_ == Style::unicode ? info->unicode : info->ascii);
         state.cells.push_back(
-            {format_number(sym::to_double(s_.state.at(*s)), style_, 0), unit(info->unit), info->meaning});
+            {format_number(sym::to_double(s_.state.at(*s)) * angle_factor(info->unit, o_.angles), style_, 0),
+             unit(angle_unit_text(info->unit, o_.angles)), info->meaning});
       }
     }
     lines(layout_table(state, "    ", o_.width));
@@ -326,7 +327,8 @@ class MechanismWriter {
       for (std::size_t i = 0; i < c.unknowns.size(); ++i) {
         solution.row_labels.push_back(spelling(c.unknowns[i]));
         solution.cells.push_back(
-            {number(n.solution[static_cast<Eigen::Index>(i)]), unit(unknowns[i]->unit), unknowns[i]->meaning});
+            {number(n.solution[static_cast<Eigen::Index>(i)] * angle_factor(unknowns[i]->unit, o_.angles)),
+             unit(angle_unit_text(unknowns[i]->unit, o_.angles)), unknowns[i]->meaning});
       }
       blank();
       line("  Solution:");

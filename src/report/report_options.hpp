@@ -4,6 +4,7 @@
 #include <array>
 #include <cstddef>
 
+#include "core/angle_unit.hpp"
 #include "core/style.hpp"
 
 namespace linkage {
@@ -18,6 +19,7 @@ struct ReportOptions {
   int digits = 6;                     // significant digits; JSON always prints full precision
   Style text_style = Style::unicode;  // the text format's symbols: unicode or ascii
   std::size_t width = 80;             // the text format's line width, display columns
+  AngleUnit angles = AngleUnit::rad;  // the text format's state and solution tables (derivations stay in rad)
   /// Which parts print (`linkage solve` prints all; a lesson's solve step chooses).
   std::array<bool, kReportPartCount> parts{true, true, true, true, true, true, true, true, true};
   [[nodiscard]] bool shows(ReportPart p) const { return parts[static_cast<std::size_t>(p)]; }

@@ -186,6 +186,69 @@ TEST(SimulateCli, CsvFileAndFormatFlag) {
   EXPECT_EQ(nlohmann::json::parse(json.out)["rows"].size(), 101u);
 }
 
+TEST(SimulateCli, AnglesInDegreesScaleAngleColumnsAndSayTheUnit) {
+  const std::vector<std::string> args{
+      "simulate", "--duration", "1", "--every", "0.25", "--columns", "t,x1,theta1,theta2_dot,theta1_ddot,energy"};
+  const RunResult rad = run_linkage(args);
+  std::vector<std::string> deg_args = args;
+  deg_args.insert(deg_args.end(), {"--angles", "deg"});
+  const RunResult deg = run_linkage(deg_args);
+  ASSERT_EQ(rad.exit_code, 0) << rad.err;
+  ASSERT_EQ(deg.exit_code, 0) << deg.err;
+  const Table r = parse_csv(rad.out), d = parse_csv(deg.out);
+  EXPECT_EQ(d.columns, (std::vector<std::string>{"t", "x1", "theta1 (deg)", "theta2_dot (deg/s)",
+                                                 "theta1_ddot (deg/s^2)", "energy"}));
+  ASSERT_EQ(r.rows.size(), 5u);
+  ASSERT_EQ(d.rows.size(), 5u);
+  const double per_rad = 180 / 3.14159265358979323846;
+  for (std::size_t i = 0; i < r.rows.size(); ++i) {
+    EXPECT_EQ(d.rows[i][0], r.rows[i][0]);
+    EXPECT_EQ(d.rows[i][1], r.rows[i][1]) << "metres stay metres";
+    EXPECT_EQ(d.rows[i][5], r.rows[i][5]) << "joules stay joules";
+    for (std::size_t c = 2; c <= 4; ++c)
+      EXPECT_NEAR(d.rows[i][c], r.rows[i][c] * per_rad, 1e-12 * std::fabs(d.rows[i][c])) << d.columns[c];
+  }
+  // theta1 starts at 0.1 rad = 5.7296 degrees.
+  EXPECT_NEAR(d.rows[0][2], 5.729577951308232, 1e-12);
+  // JSON keeps the names and says the unit.
+  std::vector<std::string> json_args = deg_args;
+  json_args.insert(json_args.end(), {"--format", "json"});
+  const RunResult json = run_linkage(json_args);
+  ASSERT_EQ(json.exit_code, 0) << json.err;
+  const nlohmann::json j = nlohmann::json::parse(json.out);
+  EXPECT_EQ(j["units"]["theta1"], "deg");
+  EXPECT_EQ(j["units"]["theta2_dot"], "deg/s");
+  EXPECT_EQ(j["units"]["x1"], "m");
+  EXPECT_NEAR(j["rows"][0][2].get<double>(), 5.729577951308232, 1e-12);
+  const RunResult bad = run_linkage({"simulate", "--angles", "grad"});
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--angles: 'grad' is not an angle unit; valid: rad, deg"), std::string::npos) << bad.err;
+  EXPECT_TRUE(bad.out.empty());
+}
+
+TEST(SimulateCli, MechanismAnglesInDegrees) {
+  const std::vector<std::string> args{"simulate", "--mechanism", "double-pendulum", "--duration", "0.5",
+                                      "--every",  "0.25"};
+  const RunResult rad = run_linkage(args);
+  std::vector<std::string> deg_args = args;
+  deg_args.insert(deg_args.end(), {"--angles", "deg"});
+  const RunResult deg = run_linkage(deg_args);
+  ASSERT_EQ(rad.exit_code, 0) << rad.err;
+  ASSERT_EQ(deg.exit_code, 0) << deg.err;
+  const Table r = parse_csv(rad.out), d = parse_csv(deg.out);
+  ASSERT_EQ(r.columns.size(), d.columns.size());
+  int angles = 0;
+  for (std::size_t c = 0; c < r.columns.size(); ++c) {
+    const bool angle = r.columns[c].size() > 6 && r.columns[c].substr(r.columns[c].size() - 6) == ".theta";
+    EXPECT_EQ(d.columns[c], angle ? r.columns[c] + " (deg)" : r.columns[c]);
+    for (std::size_t i = 0; i < r.rows.size(); ++i)
+      EXPECT_NEAR(d.rows[i][c], r.rows[i][c] * (angle ? 180 / 3.14159265358979323846 : 1.0),
+                  1e-12 * (1 + std::fabs(d.rows[i][c])));
+    angles += angle ? 1 : 0;
+  }
+  EXPECT_EQ(angles, 2) << "both links' angles";
+}
+
 TEST(SimulateCli, SummaryOnStderr) {
   const RunResult r =
       run_linkage({"simulate", "--case", "1", "--integrator", "rk4", "--dt", "0.01", "--duration", "5"});

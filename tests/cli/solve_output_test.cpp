@@ -3,6 +3,7 @@
 // option with its unit and default.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <sstream>
 
@@ -44,6 +45,39 @@ TEST(SolveOutput, DigitsSetThePrecisionOfPrintedNumbers) {
   EXPECT_NE(three.out.find("y1''   -9.81 "), std::string::npos) << three.out;
   const test::RunResult twelve = test::run_linkage({"solve", "--case", "3", "--ascii", "--digits", "12"});
   EXPECT_NE(twelve.out.find("-9.80725296343 "), std::string::npos) << twelve.out;
+}
+
+// A table row "label value unit ...": the value after `label`.
+double table_value(const std::string& text, const std::string& label, const std::string& unit) {
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream words(line);
+    std::string first, value, u;
+    if (words >> first >> value >> u && first == label && u == unit) return std::stod(value);
+  }
+  ADD_FAILURE() << "no row '" << label << " ... " << unit << "' in\n" << text;
+  return 0;
+}
+
+TEST(SolveOutput, AnglesInDegreesInTheStateAndSolutionTables) {
+  const test::RunResult rad = test::run_linkage({"solve", "--case", "3", "--ascii", "--digits", "9"});
+  const test::RunResult deg =
+      test::run_linkage({"solve", "--case", "3", "--ascii", "--digits", "9", "--angles", "deg"});
+  ASSERT_EQ(rad.exit_code, 0) << rad.err;
+  ASSERT_EQ(deg.exit_code, 0) << deg.err;
+  const double per_rad = 180 / 3.14159265358979323846;
+  // The state (theta1 = 0.1 rad, theta1_dot = 0.35 rad/s) and the solved accelerations.
+  EXPECT_NEAR(table_value(deg.out, "th1", "deg"), 0.1 * per_rad, 1e-7);
+  EXPECT_NEAR(table_value(deg.out, "th1'", "deg/s"), 0.35 * per_rad, 1e-7);
+  const double a_rad = table_value(rad.out, "th2''", "rad/s^2");
+  EXPECT_NE(a_rad, 0.0);
+  EXPECT_NEAR(table_value(deg.out, "th2''", "deg/s^2"), a_rad * per_rad, 1e-7 * std::fabs(a_rad * per_rad));
+  // Metres are untouched.
+  EXPECT_EQ(table_value(deg.out, "x1", "m"), table_value(rad.out, "x1", "m"));
+  const test::RunResult json = test::run_linkage({"solve", "--format", "json", "--angles", "deg"});
+  EXPECT_EQ(json.exit_code, 2);
+  EXPECT_NE(json.err.find("--angles: deg applies to the text format; json keeps radians"), std::string::npos)
+      << json.err;
 }
 
 TEST(SolveOutput, HelpExplainsEveryOptionWithUnitAndDefault) {

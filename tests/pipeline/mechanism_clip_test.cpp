@@ -109,11 +109,57 @@ TEST(MechanismClip, FourBarClipDecodesWithEveryFrame) {
   EXPECT_EQ(test::entries(dir.path()), std::vector<std::string>{"four-bar.mp4"});
 }
 
+// GIF and WebM by extension: every frame decodes, and each matches the PNG frame drawn
+// for it (the --frames sequence of the same run) on average over the picture.
+TEST(MechanismClip, GifAndWebmClipsMatchTheirDrawnFrames) {
+  const sym::System system(load_mechanism("four-bar"));
+  for (const std::string name : {"four-bar.gif", "four-bar.webm"}) {
+    test::TempDir dir;
+    MechanismClip clip;
+    clip.settings.width = 320;
+    clip.settings.height = 180;
+    clip.settings.fps = 30;
+    clip.settings.duration = 0.5;
+    clip.simulation.duration = 0.5;
+    clip.theme = load_theme("light", {}, "theme");
+    clip.trails = {"3.B"};
+    clip.out = dir / name;
+    clip.frames = dir / "frames";
+    const ClipResult result = produce_mechanism_clip(system, sym::checked_initial_state(system).state, clip);
+    EXPECT_EQ(result.encoder, name.ends_with(".gif") ? "gif" : "libvpx-vp9");
+    const test::DecodedVideo video = test::decode_video(*clip.out);
+    EXPECT_EQ(video.codec, name.ends_with(".gif") ? "gif" : "vp9");
+    EXPECT_EQ(video.width, 320);
+    EXPECT_EQ(video.height, 180);
+    const std::vector<std::string> pngs = test::entries(*clip.frames);  // frame_00000.png ... in order
+    ASSERT_EQ(pngs.size(), 15U);
+    ASSERT_EQ(video.rgb.size(), 15U) << name;
+    // Mean |difference| per channel between decoded frame k and drawn frame j.
+    auto error = [&](std::size_t k, std::size_t j) {
+      const test::DecodedPng png = test::decode_png(*clip.frames / pngs[j]);
+      double total = 0;
+      for (std::size_t p = 0; p < 320U * 180U; ++p)
+        for (std::size_t c = 0; c < 3; ++c) total += std::abs(int{video.rgb[k][3 * p + c]} - int{png.rgba[4 * p + c]});
+      return total / (320.0 * 180.0 * 3.0);
+    };
+    for (std::size_t k = 0; k < video.rgb.size(); ++k) {
+      // Mostly flat theme colours: within a level or two on average (WebM's limited-range
+      // YUV moves white by a level or two everywhere), and closer to its own drawing
+      // than to the next one (the links move between frames).
+      const double own = error(k, k);
+      EXPECT_LT(own, name.ends_with(".gif") ? 2.0 : 3.0) << name << " frame " << k;
+      if (k + 1 < video.rgb.size()) {
+        EXPECT_LT(own, error(k, k + 1)) << name << " frame " << k;
+      }
+    }
+  }
+}
+
 TEST(MechanismClip, RejectsVectorStillsAndUnknownTrailPoints) {
   test::TempDir dir;
   const sym::System system(load_mechanism("four-bar"));
   MechanismClip clip = small_still((dir / "x.svg").string());
-  test::expect_error([&] { clip.validate(system); }, ExitCode::bad_input, ".mp4 or .png");
+  test::expect_error([&] { clip.validate(system); }, ExitCode::bad_input, ".mp4, .gif, .webm or .png");
   clip.out = dir / "x.png";
   clip.trails = {"3.Q"};
   test::expect_error([&] { clip.validate(system); }, ExitCode::bad_input, "valid: A, B");

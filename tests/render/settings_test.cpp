@@ -93,6 +93,18 @@ TEST(RenderSettings, ViewsCamerasQualitiesAndExtensions) {
             std::string::npos);
   EXPECT_EQ(output_kind("a/b.svg", "--out"), OutputKind::svg);
   EXPECT_EQ(output_kind("clip.mp4", "--out"), OutputKind::mp4);
+  EXPECT_EQ(output_kind("clip.gif", "--out"), OutputKind::gif);
+  EXPECT_EQ(output_kind("a/Clip.WEBM", "--out"), OutputKind::webm);
+  for (const OutputKind kind : {OutputKind::mp4, OutputKind::gif, OutputKind::webm}) {
+    EXPECT_TRUE(is_video(kind));
+    EXPECT_FALSE(is_still(kind));
+  }
+  for (const OutputKind kind : {OutputKind::png, OutputKind::svg, OutputKind::pdf}) {
+    EXPECT_FALSE(is_video(kind));
+    EXPECT_TRUE(is_still(kind));
+  }
+  EXPECT_NE(input_error([] { (void)output_kind("clip.avi", "--out"); }).find("valid: .mp4, .gif or .webm (clip)"),
+            std::string::npos);
   EXPECT_NE(input_error([] { (void)output_kind("clip.avi", "--out"); }).find("'.avi'"), std::string::npos);
   EXPECT_NE(input_error([] { (void)output_kind("clip", "--out"); }).find("no extension"), std::string::npos);
 }
