@@ -101,7 +101,7 @@ std::string y_label(const std::vector<std::size_t>& y) {
   std::string label;
   for (std::size_t i : y) {
     if (!label.empty()) label += ", ";
-    label += kSeries[i].name;
+    label += kSeries[i].label;  // words, never the raw series name
   }
   const std::string_view unit = kSeries[y.front()].unit;
   const bool same_unit = std::all_of(y.begin(), y.end(), [&](std::size_t i) { return kSeries[i].unit == unit; });
@@ -124,7 +124,7 @@ plot::Plot time_plot(const Figure& f, const std::vector<Run>& runs) {
     const SampledRun data = sample_run(runs[r], f.every, columns);
     for (std::size_t k = 0; k < f.y.size(); ++k) {
       plot::Series series;
-      const std::string y_name(kSeries[f.y[k]].name);
+      const std::string y_name(kSeries[f.y[k]].label);
       series.name = runs.size() == 1 ? (f.y.size() == 1 ? runs[r].label : y_name)
                                      : (f.y.size() == 1 ? runs[r].label : runs[r].label + ": " + y_name);
       series.color = r % plot::palette_size;
