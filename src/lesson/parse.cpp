@@ -533,7 +533,7 @@ class Parser {
       entry.require("text");
       const double limit = is_still(kind) ? kMaxStillTime : duration;
       std::string rule = "0 .. ";
-      rule += format_significant(limit, 6) + " s";
+      rule += format_significant(limit, 6) + (is_still(kind) ? " s" : " s, the clip's duration");
       Caption c{*entry.number("at", 0, limit, rule), *entry.string("text")};
       if (c.text.find_first_not_of(" \t\n") == std::string::npos) entry.fail("text", "the caption has no words");
       if (!out.empty() && !(c.at > out.back().at))

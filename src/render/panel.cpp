@@ -89,7 +89,7 @@ plot::Report paint_panel(cairo_t* cr, const DrawStyle& style, const PanelData& d
   const bool dark = 0.2126 * bg.r + 0.7152 * bg.g + 0.0722 * bg.b < 0.5;
   const plot::Plot p = panel_plot(data, index, dark);
   const plot::Canvas canvas{std::max(100.0, rect.width), std::max(100.0, rect.height),
-                            std::clamp(style.small_size(), 4.0, 200.0)};
+                            std::clamp(style.text_size(), 4.0, 200.0)};
   cairo_save(cr);
   cairo_rectangle(cr, rect.x, rect.y, rect.width, rect.height);
   cairo_clip(cr);
