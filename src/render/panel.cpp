@@ -32,6 +32,34 @@ std::pair<double, double> value_limits(const PanelData& data) {
 
 }  // namespace
 
+std::string shared_axis_label(const std::vector<std::string>& labels, const std::vector<std::string>& units) {
+  constexpr std::size_t kLongest = 48;  // characters of markup that still fit beside a plot
+  if (labels.empty()) return "value";
+  const bool same_unit = std::all_of(units.begin(), units.end(), [&](const std::string& u) { return u == units[0]; });
+  const std::string unit = same_unit && !units.empty() ? units[0] : "";
+  // The whole words every label begins with.
+  std::size_t common = labels[0].size();
+  for (const std::string& label : labels) {
+    std::size_t n = 0;
+    while (n < common && n < label.size() && label[n] == labels[0][n]) ++n;
+    common = n;
+  }
+  std::string words;
+  if (common == labels[0].size() && labels.size() > 1 &&
+      std::all_of(labels.begin(), labels.end(), [&](const std::string& l) { return l.size() == common; }))
+    words = labels[0];  // all the same
+  else if (const std::size_t space = labels[0].rfind(' ', common); space != std::string::npos && space > 0)
+    words = labels[0].substr(0, space);
+  if (words.empty()) {
+    for (const std::string& label : labels) {
+      if (!words.empty()) words += ", ";
+      words += label;
+    }
+    if (words.size() > kLongest) words = "value";
+  }
+  return with_unit(words, unit);
+}
+
 PanelLayout panel_layout(int width, int height, bool with_panel) {
   const double w = width, h = height;
   if (!with_panel) return {{0, 0, w, h}, {}};
@@ -55,14 +83,12 @@ plot::Plot panel_plot(const PanelData& data, std::size_t index, bool dark) {
   // One curve: its words on the axis. Several: each in the legend, the axis names the
   // shared unit (or none when the units differ).
   const bool one = data.curves.size() == 1;
-  if (one) {
-    p.y.label = with_unit(data.curves.front().label, data.curves.front().unit);
-  } else {
-    const std::string& unit = data.curves.front().unit;
-    const bool same =
-        std::all_of(data.curves.begin(), data.curves.end(), [&](const PanelCurve& c) { return c.unit == unit; });
-    p.y.label = same && !unit.empty() ? "value (" + unit + ")" : "value";
+  std::vector<std::string> labels, units;
+  for (const PanelCurve& c : data.curves) {
+    labels.push_back(c.label);
+    units.push_back(c.unit);
   }
+  p.y.label = one ? with_unit(labels[0], units[0]) : shared_axis_label(labels, units);
   p.legend = one ? plot::LegendPlace::none : plot::LegendPlace::best;
   const std::size_t n = data.t.size();
   const std::size_t now = std::min(index, n == 0 ? 0 : n - 1);

@@ -40,6 +40,12 @@ struct PanelLayout {
 };
 [[nodiscard]] PanelLayout panel_layout(int width, int height, bool with_panel);
 
+/// A y-axis label for several curves: their shared unit after the words they begin
+/// with ("pin force F_{x}", "pin force F_{y}" -> "pin force (N)"), else the labels
+/// joined when short ("θ_{1}, θ_{2} (rad)"), else "value"; the unit only when all share it.
+[[nodiscard]] std::string shared_axis_label(const std::vector<std::string>& labels,
+                                            const std::vector<std::string>& units);
+
 /// The plot the panel shows at sample `index`: axes in words and units, limits fixed
 /// over the whole data (so they do not jump from frame to frame), the curves up to
 /// `index` solid and the rest dotted without a legend entry.

@@ -158,8 +158,8 @@ TEST(RenderCli, AMeaninglessRunEndsWithOneWarning) {
 
 TEST(RenderCli, PanelAndCaptionInAStillAndAClip) {
   TempDir dir;
-  const RunResult still = render({"--size", "320x180", "--panel", "theta1,F_y", "--caption", "Both angles so far",
-                                  "--at", "0.5", "--out", (dir / "panel.png").string()});
+  const RunResult still = run_linkage({"render", "--quiet", "--size", "320x180", "--panel", "theta1,F_y", "--caption",
+                                       "Both angles so far", "--at", "0.5", "--out", (dir / "panel.png").string()});
   ASSERT_EQ(still.exit_code, 0) << still.err;
   const RunResult clip =
       render({"--duration", "0.5", "--panel", "energy_error", "--out", (dir / "panel.mp4").string()});

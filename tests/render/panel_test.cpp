@@ -58,9 +58,21 @@ TEST(PanelPlot, SolidUpToNowDottedAheadAxesInWords) {
   PanelData two = ramp();
   two.curves.push_back({"θ_{2}", "rad", two.curves[0].values});
   const plot::Plot q = panel_plot(two, 100, false);
-  EXPECT_EQ(q.y.label, "value (rad)");
+  EXPECT_EQ(q.y.label, "θ_{1}, θ_{2} (rad)");
   EXPECT_EQ(q.series[0].name, "θ_{1} (rad)");
   EXPECT_EQ(q.series.size(), 2u);  // at the last sample nothing lies ahead
+}
+
+TEST(PanelPlot, SeveralCurvesShareTheirWordsAndUnitOnTheAxis) {
+  EXPECT_EQ(shared_axis_label({"pin force F_{x}", "pin force F_{y}"}, {"N", "N"}), "pin force (N)");
+  EXPECT_EQ(shared_axis_label({"momentum error |p_{x} − p_{x0}|", "momentum error |p_{y} − p_{y0} + 2 m g t|"},
+                              {"kg m/s", "kg m/s"}),
+            "momentum error (kg m/s)");
+  EXPECT_EQ(shared_axis_label({"θ_{1}", "θ_{2}"}, {"rad", "rad"}), "θ_{1}, θ_{2} (rad)");
+  EXPECT_EQ(shared_axis_label({"θ_{1}", "pin force F_{x}"}, {"rad", "N"}), "θ_{1}, pin force F_{x}");
+  EXPECT_EQ(shared_axis_label({"relative energy error |E − E_{0}| / E_{scale}", "distance of G from the parabola"},
+                              {"", "m"}),
+            "value");
 }
 
 TEST(PanelPaint, CursorAndDotAtTheFramesTime) {
