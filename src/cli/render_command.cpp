@@ -2,6 +2,7 @@
 // on stderr: an MP4 (H.264), GIF or WebM (VP9) through the FFmpeg libraries, a numbered PNG sequence, or
 // one still (PNG, SVG, PDF). Everything is checked before any work starts; outputs
 // appear whole or not at all.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -31,7 +32,7 @@ struct RenderFlags {
   InputOptions inputs;
   SimulationFlags simulation;
   std::string out = "linkage.mp4", frames, quality = "medium", size, fps, duration, speed, at;
-  std::string camera = "follow", view, theme = "light", title;
+  std::string camera = "follow", view, theme = "light", title, panel, caption;
   std::vector<std::string> show, hide;
   bool quiet = false, stats = false;
   CLI::Option* out_option = nullptr;
@@ -51,6 +52,18 @@ int parse_whole(const std::string& text, const std::string& origin) {
   if (value != std::floor(value) || std::fabs(value) > 1e9)
     throw Error::input(origin + ": '" + text + "' is not a whole number");
   return static_cast<int>(value);
+}
+
+/// --panel theta1,theta2: the names, checked against the run's quantities later.
+std::vector<std::string> split_panel(const std::string& list) {
+  std::vector<std::string> names;
+  std::size_t at = 0;
+  while (!list.empty() && at <= list.size()) {
+    const std::size_t comma = std::min(list.find(',', at), list.size());
+    names.push_back(list.substr(at, comma - at));
+    at = comma + 1;
+  }
+  return names;
 }
 
 RenderSettings resolve_settings(const RenderFlags& f) {
@@ -78,7 +91,14 @@ RenderSettings resolve_settings(const RenderFlags& f) {
   s.theme = f.theme;
   if (f.title_option->count() > 0) s.title = f.title;
   apply_show_hide(s.elements, f.show, f.hide);
-  s.validate();
+  s.panel = split_panel(f.panel);
+  if (!f.caption.empty()) s.captions = {{0.0, f.caption}};
+  try {
+    s.validate();
+  } catch (const Error& e) {
+    if (e.setting() == "captions") throw e.rephrased("--caption: " + e.detail());
+    throw;
+  }
   return s;
 }
 
@@ -252,6 +272,14 @@ void register_render(CLI::App& app) {
       sub->add_option("--title", f->title, "Title line (default \"" + RenderSettings{}.title + "\"; \"\" for none)")
           ->type_name("TEXT")
           ->group(look);
+  sub->add_option("--panel", f->panel,
+                  "Plot these quantities beside the motion, with a cursor at the frame's time: --panel theta1,theta2 "
+                  "(the names a lesson's plot step takes; with --mechanism its columns, e.g. 2.theta,B.force_x)")
+      ->type_name("LIST")
+      ->group(look);
+  sub->add_option("--caption", f->caption, "Words shown under the picture in every frame (wrapped)")
+      ->type_name("TEXT")
+      ->group(look);
   sub->add_option("--trail", f->trails,
                   "With --mechanism: draw the path of a body's point over the last 2 s, repeatable: --trail 3.B")
       ->type_name("BODY.POINT")

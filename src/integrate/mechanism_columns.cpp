@@ -1,5 +1,6 @@
 #include "integrate/mechanism_columns.hpp"
 
+#include <cctype>
 #include <sstream>
 
 #include "core/error.hpp"
@@ -126,6 +127,54 @@ double column_value(const MechanismColumn& c, double t, const Eigen::VectorXd& y
       return s.angular_momentum;
   }
   return 0;
+}
+
+std::string column_words(const MechanismColumn& c) {
+  const std::string owner = c.name.substr(0, c.name.rfind('.'));
+  static const char* const position[] = {"x of body ", "y of body ", "angle θ of body "};
+  static const char* const rate[] = {"velocity ẋ of body ", "velocity ẏ of body ", "angular velocity θ̇ of body "};
+  using Q = MechanismQuantity;
+  switch (c.quantity) {
+    case Q::time:
+      return "time t";
+    case Q::position:
+      return position[c.index % 3] + owner;
+    case Q::rate:
+      return rate[c.index % 3] + owner;
+    case Q::energy:
+      return "energy E = T + V";
+    case Q::work:
+      return "work W of dampers and loads";
+    case Q::energy_error:
+      return "energy balance E − E_{0} − W";
+    case Q::momentum_x:
+      return "momentum p_{x}";
+    case Q::momentum_y:
+      return "momentum p_{y}";
+    case Q::angular_momentum:
+      return "angular momentum H_{G}";
+    case Q::slider:
+    case Q::force:
+    case Q::constraint:
+      break;
+  }
+  return c.meaning;
+}
+
+std::string column_unit_markup(const MechanismColumn& c) {
+  std::string unit;
+  for (std::size_t i = 0; i < c.unit.size(); ++i) {
+    if (c.unit[i] == '^') {  // "m^2/s" -> "m^{2}/s"
+      std::size_t end = i + 1;
+      while (end < c.unit.size() && (std::isdigit(static_cast<unsigned char>(c.unit[end])) || c.unit[end] == '-'))
+        ++end;
+      unit += "^{" + c.unit.substr(i + 1, end - i - 1) + "}";
+      i = end - 1;
+    } else {
+      unit += c.unit[i];
+    }
+  }
+  return unit;
 }
 
 }  // namespace linkage

@@ -36,6 +36,12 @@ struct MechanismColumn {
   bool by_default = false;
 };
 
+/// A column in words for a plot axis or legend, in plot markup and without its unit:
+/// "angle θ of body 2", "force of joint B on body 1, x", "energy balance E − E_{0} − W".
+[[nodiscard]] std::string column_words(const MechanismColumn& column);
+/// Its unit in plot markup ("m/s^{2}"), empty for a pure number.
+[[nodiscard]] std::string column_unit_markup(const MechanismColumn& column);
+
 /// Every column this mechanism has, in table order.
 [[nodiscard]] std::vector<MechanismColumn> mechanism_columns(const sym::System& system);
 

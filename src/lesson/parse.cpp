@@ -11,16 +11,17 @@
 #include "core/input_file.hpp"
 #include "core/number_format.hpp"
 #include "encode/video_writer.hpp"
+#include "integrate/series.hpp"
 #include "lesson/canonical.hpp"
 #include "lesson/lesson.hpp"
 #include "lesson/markdown.hpp"
 #include "lesson/mechanism_render.hpp"
 #include "lesson/schema.hpp"
-#include "lesson/series.hpp"
 #include "lesson/suggest.hpp"
 #include "model/inputs_toml.hpp"
 #include "model/mechanism_toml.hpp"
 #include "pipeline/clip.hpp"
+#include "pipeline/panel_data.hpp"
 #include "render/theme.hpp"
 #include "report/mechanism_solution.hpp"
 
@@ -520,6 +521,30 @@ class Parser {
   }
 
   // The clip's checks, made here so a bad lesson fails before any step runs.
+  /// A render step's timed captions, each checked where it is written.
+  std::vector<Caption> captions(const TableReader& r, OutputKind kind, double duration) const {
+    const auto tables = r.tables("captions");
+    if (r.has("captions") && tables.empty()) r.fail("captions", "'captions' is empty; give {at = S, text = \"...\"}");
+    std::vector<Caption> out;
+    for (std::size_t i = 0; i < tables.size(); ++i) {
+      const TableReader entry(*tables[i], file_text_, r.context() + ", caption " + std::to_string(i + 1),
+                              caption_entry_keys());
+      entry.reject_unknown_keys();
+      entry.require("at");
+      entry.require("text");
+      const double limit = is_still(kind) ? kMaxStillTime : duration;
+      std::string rule = "0 .. ";
+      rule += format_significant(limit, 6) + (is_still(kind) ? " s" : " s, the clip's duration");
+      Caption c{*entry.number("at", 0, limit, rule), *entry.string("text")};
+      if (c.text.find_first_not_of(" \t\n") == std::string::npos) entry.fail("text", "the caption has no words");
+      if (!out.empty() && !(c.at > out.back().at))
+        entry.fail("at", format_significant(c.at, 6) + " s must come after caption " + std::to_string(i) + "'s " +
+                             format_significant(out.back().at, 6) + " s");
+      out.push_back(std::move(c));
+    }
+    return out;
+  }
+
   RenderStep parse_render(const TableReader& r, const Inputs& inputs) const {
     RenderStep s;
     s.out = artifact_name(r, "out");
@@ -569,7 +594,11 @@ class Parser {
       std::vector<std::string> show = r.strings("show").value_or(std::vector<std::string>{});
       std::vector<std::string> hide = r.strings("hide").value_or(std::vector<std::string>{});
       apply_show_hide(g.elements, show, hide);
+      g.panel = r.strings("panel").value_or(std::vector<std::string>{});
+      if (r.has("panel") && g.panel.empty()) r.fail("panel", "'panel' is empty; give at least one quantity");
+      g.captions = captions(r, s.kind, g.duration);
       g.validate();
+      if (s.mechanism.empty() && !g.panel.empty()) validate_homework_panel(g.panel);
       if (is_still(s.kind) && r.has("duration"))
         r.fail("duration", "'duration' applies to a clip; a still (" + s.out + ") shows the time 'at'");
       if (!is_still(s.kind) && r.has("at"))

@@ -4,8 +4,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "integrate/series.hpp"
 #include "lesson/lesson.hpp"
-#include "lesson/series.hpp"
 
 namespace linkage::lesson {
 

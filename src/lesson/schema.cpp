@@ -82,7 +82,7 @@ constexpr std::array<KeySpec, 3> kSimulateKeys{{
      "energy, momentum_x, ..., constraint_velocity_error)."},
 }};
 
-constexpr std::array<KeySpec, 16> kRenderKeys{{
+constexpr std::array<KeySpec, 18> kRenderKeys{{
     {"out", "string", "(required)", "The file in the output folder: .mp4 (a clip), .png, .svg or .pdf (a still)."},
     {"caption", "string", "none", "Text under the clip or still in the lesson document."},
     {"fps", "integer", "30", "Frames per second (as the render command's fps); draft quality lowers it to 15."},
@@ -104,6 +104,16 @@ constexpr std::array<KeySpec, 16> kRenderKeys{{
      "camera and view are the homework's."},
     {"set", "list of strings", "none", "NAME=VALUE settings of the mechanism's parameters or initial coordinates."},
     {"trail", "list of strings", "none", "BODY.POINT paths drawn over the last 2 s (with a mechanism)."},
+    {"panel", "list of strings", "none",
+     "Quantities plotted beside the motion with a cursor at the frame's time, as --panel (plot step names; a "
+     "mechanism's columns)."},
+    {"captions", "array of tables", "none",
+     "Timed words under the picture: [{at = 2.0, text = \"...\"}, ...], each shown from `at` s until the next."},
+}};
+
+constexpr std::array<KeySpec, 2> kCaptionKeys{{
+    {"at", "number", "(required)", "The time in s the caption appears; later than the one before."},
+    {"text", "string", "(required)", "The words, wrapped to the frame's width."},
 }};
 
 constexpr std::array<KeySpec, 10> kPlotKeys{{
@@ -173,6 +183,7 @@ std::span<const KeySpec> lesson_keys() { return kLessonKeys; }
 std::span<const KeySpec> common_step_keys() { return kCommonKeys; }
 std::span<const KeySpec> run_keys() { return kRunKeys; }
 std::span<const KeySpec> run_entry_keys() { return kRunEntryKeys; }
+std::span<const KeySpec> caption_entry_keys() { return kCaptionKeys; }
 
 std::span<const KeySpec> step_keys(std::string_view kind) {
   const KindEntry* k = find_kind(kind);

@@ -19,6 +19,8 @@ namespace linkage::lesson {
 [[nodiscard]] std::span<const KeySpec> run_keys();
 /// Keys only a `runs` entry has ("label", "series").
 [[nodiscard]] std::span<const KeySpec> run_entry_keys();
+/// Keys of a render step's `captions` entry ("at", "text").
+[[nodiscard]] std::span<const KeySpec> caption_entry_keys();
 /// The keys particular to a kind of step (without the common and run keys).
 [[nodiscard]] std::span<const KeySpec> step_keys(std::string_view kind);
 /// Whether a kind of step takes the run keys.

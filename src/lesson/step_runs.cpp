@@ -10,6 +10,7 @@
 #include "lesson/canonical.hpp"
 #include "lesson/runner_context.hpp"
 #include "lesson/runs.hpp"
+#include "render/panel.hpp"
 #include "render/plot.hpp"
 
 namespace linkage::lesson {
@@ -98,15 +99,12 @@ constexpr std::array<plot::Dash, 4> kDashes{plot::Dash::solid, plot::Dash::dashe
 
 std::string y_label(const std::vector<std::size_t>& y) {
   if (y.size() == 1) return series_axis_label(y.front());
-  std::string label;
+  std::vector<std::string> labels, units;  // words, never the raw series names
   for (std::size_t i : y) {
-    if (!label.empty()) label += ", ";
-    label += kSeries[i].name;
+    labels.emplace_back(kSeries[i].label);
+    units.emplace_back(kSeries[i].unit);
   }
-  const std::string_view unit = kSeries[y.front()].unit;
-  const bool same_unit = std::all_of(y.begin(), y.end(), [&](std::size_t i) { return kSeries[i].unit == unit; });
-  if (same_unit && !unit.empty()) label += " (" + std::string(unit) + ")";
-  return label;
+  return shared_axis_label(labels, units);
 }
 
 /// The figure's series for every run, sampled and put into a plot description: runs
@@ -124,7 +122,7 @@ plot::Plot time_plot(const Figure& f, const std::vector<Run>& runs) {
     const SampledRun data = sample_run(runs[r], f.every, columns);
     for (std::size_t k = 0; k < f.y.size(); ++k) {
       plot::Series series;
-      const std::string y_name(kSeries[f.y[k]].name);
+      const std::string y_name(kSeries[f.y[k]].label);
       series.name = runs.size() == 1 ? (f.y.size() == 1 ? runs[r].label : y_name)
                                      : (f.y.size() == 1 ? runs[r].label : runs[r].label + ": " + y_name);
       series.color = r % plot::palette_size;

@@ -9,6 +9,8 @@
 #include "core/interrupt.hpp"
 #include "encode/png_writer.hpp"
 #include "pipeline/encode_frames.hpp"
+#include "pipeline/panel_data.hpp"
+#include "render/frame_layout.hpp"
 #include "render/vector_still.hpp"
 #include "scene/motion.hpp"
 
@@ -28,7 +30,7 @@ auto timed(double& seconds, Work work) {
 /// Samples the motion at `times` with its own simulation of `options`; warns when the
 /// run's numbers are meaningless.
 Motion simulate(const Clip& clip, const SimulationOptions& options, const std::vector<double>& times,
-                const ClipProgress& progress, ClipResult& result) {
+                const ClipProgress& progress, ClipResult& result, PanelData& panel) {
   RenderStats& stats = result.stats;
   Simulation simulation(clip.inputs.params(), clip.inputs.state(), options);
   const bool forces = clip.settings.elements.has(Element::pin_force);
@@ -38,6 +40,11 @@ Motion simulate(const Clip& clip, const SimulationOptions& options, const std::v
       if (progress) progress(ClipStage::simulate, done, total);
     });
   });
+  if (!clip.settings.panel.empty())
+    panel = timed(stats.simulate_seconds, [&] {
+      return homework_panel(clip.settings.panel, simulation, motion, clip.inputs.params(),
+                            body_state(clip.inputs.params(), clip.inputs.state()), times.back());
+    });
   stats.force_evaluations += simulation.stats().force_evaluations;
   stats.samples += static_cast<std::int64_t>(times.size());
   const std::string warning = result_warning(options, clip.inputs.params(), simulation.stats());
@@ -62,39 +69,52 @@ void produce_motion(const Clip& clip, const ClipProgress& progress, ClipResult& 
   std::vector<double> times(static_cast<std::size_t>(count));
   for (long k = 0; k < count; ++k) times[static_cast<std::size_t>(k)] = s.frame_time(k);
   RenderStats& stats = result.stats;
-  const Motion motion = simulate(clip, clip.simulation, times, progress, result);
-  ClipRenderer renderer(clip.inputs.params(), motion, s, clip.theme, run_label(clip.simulation));
+  PanelData panel;
+  const Motion motion = simulate(clip, clip.simulation, times, progress, result, panel);
+  panel.t_end = s.duration;
+  FrameLayout layout(s, clip.theme, std::move(panel));
+  ClipRenderer renderer(clip.inputs.params(), motion, layout.scene_settings(), clip.theme, run_label(clip.simulation));
 
   encode_frames(
       clip.out && is_video(clip.out_kind()) ? clip.out : std::nullopt, clip.frames, s, count,
-      [&](std::size_t k, Frame& frame) { renderer.draw(k, frame); }, progress, result);
+      [&](std::size_t k, Frame& frame) {
+        layout.draw(k, times[k], frame, [&](Frame& scene) { renderer.draw(k, scene); });
+      },
+      progress, result);
   add_drawing(stats, renderer);
 }
 
-/// One frame at `at`: the trail needs the motion over the seconds before it, sampled as
-/// densely as the clip would be; nothing else is sampled.
+/// One frame at `at`: the trail needs the motion over the seconds before it (a panel
+/// all of it), sampled as densely as the clip would be; nothing else is sampled.
 void produce_still(const Clip& clip, const ClipProgress& progress, ClipResult& result) {
   const RenderSettings& s = clip.settings;
   std::vector<double> times;
-  if (s.elements.has(Element::trail)) {
+  if (s.elements.has(Element::trail) || !s.panel.empty()) {
     const double step = s.speed / s.fps;
-    const auto back = static_cast<long>(std::floor(std::min(s.at, SceneOptions{}.trail_seconds) / step));
+    const double span = s.panel.empty() ? std::min(s.at, SceneOptions{}.trail_seconds) : s.at;
+    const auto back = static_cast<long>(std::floor(span / step));
     for (long j = back; j > 0; --j) times.push_back(s.at - static_cast<double>(j) * step);
   }
   times.push_back(s.at);
   SimulationOptions options = clip.simulation;
   options.duration = std::max(s.at, options.dt);
   options.validate();
-  const Motion motion = simulate(clip, options, times, progress, result);
-  ClipRenderer renderer(clip.inputs.params(), motion, s, clip.theme, run_label(clip.simulation));
+  PanelData panel;
+  const Motion motion = simulate(clip, options, times, progress, result, panel);
+  FrameLayout layout(s, clip.theme, std::move(panel));
+  ClipRenderer renderer(clip.inputs.params(), motion, layout.scene_settings(), clip.theme, run_label(clip.simulation));
   const std::size_t last = times.size() - 1;
   if (clip.out_kind() == OutputKind::png) {
     Frame frame(s.width, s.height);
-    renderer.draw(last, frame);
+    layout.draw(last, s.at, frame, [&](Frame& scene) { renderer.draw(last, scene); });
     write_png(frame, *clip.out, "out");
     ++result.stats.png_files_written;
   } else {
-    write_vector_still(renderer, last, clip.out_kind(), s.width, s.height, *clip.out, "out");
+    write_vector_still(
+        [&](cairo_t* cr) {
+          layout.draw_vector(last, s.at, cr, [&](cairo_t* scene) { renderer.draw_vector(last, scene); });
+        },
+        clip.out_kind(), s.width, s.height, *clip.out, "out");
   }
   add_drawing(result.stats, renderer);
 }
@@ -111,6 +131,7 @@ void Clip::validate() const {
   if (out && fs::is_directory(*out, ec))
     throw Error::invalid("out", "'" + out->string() + "' is a folder, expected a file name");
   settings.validate();
+  if (!settings.panel.empty()) validate_homework_panel(settings.panel);
   inputs.validate();
   simulation.validate();
   if (out) {

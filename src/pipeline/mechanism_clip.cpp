@@ -10,7 +10,9 @@
 #include "encode/png_writer.hpp"
 #include "integrate/mechanism_simulation.hpp"
 #include "pipeline/encode_frames.hpp"
+#include "pipeline/panel_data.hpp"
 #include "render/cairo_util.hpp"
+#include "render/frame_layout.hpp"
 #include "render/mechanism_painter.hpp"
 #include "scene/mechanism_scene.hpp"
 
@@ -38,10 +40,11 @@ std::vector<BodyPoint> resolve_trails(const MechanismGeometry& geometry, const s
 /// grounded mechanism, else one following the centroid at a fixed zoom.
 class MechanismFrames {
  public:
-  MechanismFrames(const MechanismGeometry& geometry, const MechanismMotion& motion, const MechanismClip& clip)
+  MechanismFrames(const MechanismGeometry& geometry, const MechanismMotion& motion, const MechanismClip& clip,
+                  const RenderSettings& settings)
       : scene_(geometry, motion, resolve_trails(geometry, clip.trails), kTrailSeconds),
         motion_(motion),
-        settings_(clip.settings),
+        settings_(settings),
         labels_{clip.settings.title, run_label(clip.simulation)} {
     style_.theme = &clip.theme;
     style_.u = DrawStyle::unit_for(settings_.width, settings_.height);
@@ -92,35 +95,46 @@ void produce_motion(const sym::System& system, const GiNaC::exmap& initial, cons
   const long count = s.frame_count();
   std::vector<double> times(static_cast<std::size_t>(count));
   for (long k = 0; k < count; ++k) times[static_cast<std::size_t>(k)] = s.frame_time(k);
-  const MechanismMotion motion = sample_mechanism_motion(system, initial, clip.simulation, times,
-                                                         clip.trails.empty() ? 1 : kTrailSteps, result, progress);
-  MechanismFrames frames(mechanism_geometry(system), motion, clip);
+  PanelData panel;
+  const MechanismMotion motion =
+      sample_mechanism_motion(system, initial, clip.simulation, times, clip.trails.empty() ? 1 : kTrailSteps, result,
+                              progress, s.panel, &panel);
+  panel.t_end = s.duration;
+  FrameLayout layout(s, clip.theme, std::move(panel));
+  MechanismFrames frames(mechanism_geometry(system), motion, clip, layout.scene_settings());
 
   RenderStats& stats = result.stats;
   encode_frames(
       clip.out && is_video(output_kind(*clip.out, "out")) ? clip.out : std::nullopt, clip.frames, s, count,
-      [&](std::size_t k, Frame& frame) { frames.draw(k, frame); }, progress, result);
+      [&](std::size_t k, Frame& frame) {
+        layout.draw(k, times[k], frame, [&](Frame& scene) { frames.draw(k, scene); });
+      },
+      progress, result);
   add_drawing(stats, frames.stats());
 }
 
-/// One frame at `at`, sampled back over the trail's seconds at the clip's frame rate (so
-/// the trail and the arrow scale see the same samples a clip would there).
+/// One frame at `at`, sampled back over the trail's seconds (a panel's: from 0) at the
+/// clip's frame rate (so the trail and the arrow scale see the same samples a clip would).
 void produce_still(const sym::System& system, const GiNaC::exmap& initial, const MechanismClip& clip,
                    const ClipProgress& progress, ClipResult& result) {
   const RenderSettings& s = clip.settings;
   const double step = s.speed / s.fps;
-  const auto back = static_cast<long>(std::floor(std::min(s.at, kTrailSeconds) / step));
+  const auto back = static_cast<long>(std::floor((s.panel.empty() ? std::min(s.at, kTrailSeconds) : s.at) / step));
   std::vector<double> times;
   for (long j = back; j > 0; --j) times.push_back(s.at - static_cast<double>(j) * step);
   times.push_back(s.at);
   SimulationOptions options = clip.simulation;
   options.duration = std::max(s.at, options.dt);
   options.validate();
-  const MechanismMotion motion =
-      sample_mechanism_motion(system, initial, options, times, clip.trails.empty() ? 1 : kTrailSteps, result, progress);
-  MechanismFrames frames(mechanism_geometry(system), motion, clip);
+  PanelData panel;
+  const MechanismMotion motion = sample_mechanism_motion(
+      system, initial, options, times, clip.trails.empty() ? 1 : kTrailSteps, result, progress, s.panel, &panel);
+  panel.t_end = s.at;
+  FrameLayout layout(s, clip.theme, std::move(panel));
+  MechanismFrames frames(mechanism_geometry(system), motion, clip, layout.scene_settings());
   Frame frame(s.width, s.height);
-  frames.draw(times.size() - 1, frame);
+  const std::size_t last = times.size() - 1;
+  layout.draw(last, s.at, frame, [&](Frame& scene) { frames.draw(last, scene); });
   write_png(frame, *clip.out, "out");
   ++result.stats.png_files_written;
   add_drawing(result.stats, frames.stats());
@@ -130,9 +144,15 @@ void produce_still(const sym::System& system, const GiNaC::exmap& initial, const
 
 MechanismMotion sample_mechanism_motion(const sym::System& system, const GiNaC::exmap& initial,
                                         const SimulationOptions& options, const std::vector<double>& frame_times,
-                                        int trail_steps, ClipResult& result, const ClipProgress& progress) {
+                                        int trail_steps, ClipResult& result, const ClipProgress& progress,
+                                        const std::vector<std::string>& panel_names, PanelData* panel) {
   const auto start = std::chrono::steady_clock::now();
   MechanismSimulation simulation(system, initial, options);
+  std::vector<MechanismColumn> columns;
+  if (panel != nullptr && !panel_names.empty()) {
+    columns = mechanism_panel_columns(mechanism_columns(system), panel_names);
+    *panel = mechanism_panel(columns, frame_times.back());
+  }
   MechanismMotion motion;
   motion.times = frame_times;
   motion.samples.resize(frame_times.size());
@@ -148,7 +168,14 @@ MechanismMotion sample_mechanism_motion(const sym::System& system, const GiNaC::
       motion.trail_times.push_back(t);
       motion.trail_poses.push_back(between.pose);
     }
-    simulation.sample(frame_times[i], simulation.state_at(frame_times[i]), motion.samples[i]);
+    const Eigen::VectorXd& y = simulation.state_at(frame_times[i]);
+    simulation.sample(frame_times[i], y, motion.samples[i]);
+    if (!columns.empty()) {
+      panel->t.push_back(frame_times[i]);
+      for (std::size_t c = 0; c < columns.size(); ++c)
+        panel->curves[c].values.push_back(
+            column_value(columns[c], frame_times[i], y, motion.samples[i], simulation.energy0()));
+    }
     if (fine) {
       motion.trail_times.push_back(frame_times[i]);
       motion.trail_poses.push_back(motion.samples[i].pose);
@@ -185,6 +212,7 @@ void MechanismClip::validate(const sym::System& system) const {
   if (frames && fs::exists(*frames, ec) && !fs::is_directory(*frames, ec))
     throw Error::invalid("frames", "'" + frames->string() + "' exists and is not a folder");
   (void)resolve_trails(mechanism_geometry(system), trails);
+  if (!settings.panel.empty()) (void)mechanism_panel_columns(mechanism_columns(system), settings.panel);
 }
 
 ClipResult produce_mechanism_clip(const sym::System& system, const GiNaC::exmap& initial, const MechanismClip& clip,

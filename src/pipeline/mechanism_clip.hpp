@@ -12,6 +12,7 @@
 
 #include "integrate/simulation.hpp"
 #include "pipeline/clip.hpp"
+#include "render/panel.hpp"
 #include "render/settings.hpp"
 #include "render/theme.hpp"
 #include "scene/mechanism_scene.hpp"
@@ -36,10 +37,12 @@ struct MechanismClip {
 /// The motion at `frame_times` (increasing) from one run; with `trail_steps` > 1 also the
 /// poses at that many steps per frame interval (trail_times, the frame times among them),
 /// so a trail stays smooth however fast a point moves between frames. Adds the run's
-/// samples, seconds and warning to `result`.
+/// samples, seconds and warning to `result`. With `panel`, also the panel's columns at
+/// every frame time (settings.panel, checked by validate()).
 MechanismMotion sample_mechanism_motion(const sym::System& system, const GiNaC::exmap& initial,
                                         const SimulationOptions& options, const std::vector<double>& frame_times,
-                                        int trail_steps, ClipResult& result, const ClipProgress& progress = {});
+                                        int trail_steps, ClipResult& result, const ClipProgress& progress = {},
+                                        const std::vector<std::string>& panel_names = {}, PanelData* panel = nullptr);
 
 /// Produces every output of `clip` for `system` from `initial` (generalized coordinates
 /// and rates with every loop closed, sym::checked_initial_state). Polls for Ctrl-C.

@@ -62,6 +62,18 @@ void RenderSettings::validate() const {
                          format_roundtrip(at) + " s is outside 0 .. " + format_significant(kMaxStillTime, 6) + " s");
   if (camera == CameraMode::fixed && !(view.xmax > view.xmin && view.ymax > view.ymin))
     throw Error::invalid("view", "the fixed camera needs a view with positive width and height");
+  for (std::size_t i = 0; i < captions.size(); ++i) {
+    const Caption& c = captions[i];
+    const std::string which = "caption " + std::to_string(i + 1);
+    if (!(c.at >= 0) || c.at > kMaxStillTime)
+      throw Error::invalid("captions", which + " at " + format_roundtrip(c.at) + " s is outside 0 .. " +
+                                           format_significant(kMaxStillTime, 6) + " s");
+    if (i > 0 && !(c.at > captions[i - 1].at))
+      throw Error::invalid("captions", which + " at " + format_roundtrip(c.at) + " s must come after the one before (" +
+                                           format_roundtrip(captions[i - 1].at) + " s)");
+    if (c.text.find_first_not_of(" \t\n") == std::string::npos)
+      throw Error::invalid("captions", which + " has no text");
+  }
 }
 
 const Quality& parse_quality(std::string_view name, const std::string& origin) {

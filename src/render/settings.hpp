@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "render/camera.hpp"
 #include "scene/elements.hpp"
@@ -33,6 +34,12 @@ inline constexpr double kMaxStillTime = 3600;     // s of simulated time before 
 
 enum class OutputKind { mp4, gif, webm, png, svg, pdf };
 
+/// Words drawn along the bottom of the frame from time `at` until the next caption's.
+struct Caption {
+  double at = 0;  // s of simulated time
+  std::string text;
+};
+
 struct RenderSettings {
   int width = 1280, height = 720, fps = 30;  // the "medium" preset
   double duration = 10;                      // s of simulated time
@@ -43,13 +50,15 @@ struct RenderSettings {
   View view;  // for CameraMode::fixed
   std::string theme = "light";
   std::string title = "Two blocks joined by a pin, falling freely";
+  std::vector<std::string> panel;  // quantities plotted beside the motion (column names)
+  std::vector<Caption> captions;   // by increasing `at`
 
   /// round(duration / speed x fps).
   [[nodiscard]] long frame_count() const;
   /// k x speed / fps.
   [[nodiscard]] double frame_time(long k) const;
   /// Throws Error::input naming the flag (--size, --fps, --duration, --speed, --at,
-  /// --view) and the valid range for the first bad value.
+  /// --view, captions) and the valid range for the first bad value.
   void validate() const;
 };
 

@@ -20,6 +20,11 @@ cairo_status_t write_to_stream(void* closure, const unsigned char* data, unsigne
 
 void write_vector_still(ClipRenderer& renderer, std::size_t index, OutputKind kind, int width, int height,
                         const std::filesystem::path& target, const std::string& origin) {
+  write_vector_still([&](cairo_t* cr) { renderer.draw_vector(index, cr); }, kind, width, height, target, origin);
+}
+
+void write_vector_still(const std::function<void(cairo_t*)>& paint, OutputKind kind, int width, int height,
+                        const std::filesystem::path& target, const std::string& origin) {
   if (kind != OutputKind::svg && kind != OutputKind::pdf)
     throw Error::failure("write_vector_still: not a vector format");
   AtomicFile file(target, origin, true);
@@ -38,7 +43,7 @@ void write_vector_still(ClipRenderer& renderer, std::size_t index, OutputKind ki
   }
   {
     const cairo::ContextPtr cr = cairo::context(surface.get());
-    renderer.draw_vector(index, cr.get());
+    paint(cr.get());
   }
   cairo_surface_finish(surface.get());
   cairo::check(surface.get(), "cannot write " + target.string());

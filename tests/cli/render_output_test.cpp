@@ -156,6 +156,25 @@ TEST(RenderCli, AMeaninglessRunEndsWithOneWarning) {
   EXPECT_EQ(example.err, "");
 }
 
+TEST(RenderCli, PanelAndCaptionInAStillAndAClip) {
+  TempDir dir;
+  const RunResult still = run_linkage({"render", "--quiet", "--size", "320x180", "--panel", "theta1,F_y", "--caption",
+                                       "Both angles so far", "--at", "0.5", "--out", (dir / "panel.png").string()});
+  ASSERT_EQ(still.exit_code, 0) << still.err;
+  const RunResult clip =
+      render({"--duration", "0.5", "--panel", "energy_error", "--out", (dir / "panel.mp4").string()});
+  ASSERT_EQ(clip.exit_code, 0) << clip.err;
+  EXPECT_EQ(decode_video(dir / "panel.mp4").times.size(), 5u);
+  // An unknown name: one line naming it and the valid ones, exit 2, no file.
+  const RunResult bad = render({"--panel", "theta1,energy_eror", "--out", (dir / "bad.png").string()});
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+  EXPECT_NE(bad.err.find("--panel: 'energy_eror' is not a quantity to plot (did you mean 'energy_error'?); valid: t,"),
+            std::string::npos)
+      << bad.err;
+  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"panel.mp4", "panel.png"}));
+}
+
 TEST(RenderCli, HelpListsElementsQualitiesAndThemes) {
   const RunResult r = run_linkage({"render", "--help"});
   EXPECT_EQ(r.exit_code, 0);

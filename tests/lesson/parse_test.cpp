@@ -142,6 +142,27 @@ title = "A still"
   EXPECT_EQ(draft.settings.height, kDraftHeight);
 }
 
+TEST(LessonParse, RenderStepsTakeTimedCaptionsAndAPanel) {
+  test::TempDir dir;
+  const Lesson lesson = parse_text(dir, R"(title = "Captions"
+[[step]]
+kind = "render"
+out = "clip.mp4"
+duration = 4
+panel = ["theta1", "theta2"]
+captions = [{at = 0, text = "The blocks start at rest."}, {at = 2.5, text = "Now watch the pin."}]
+)");
+  const auto& r = std::get<RenderStep>(lesson.steps[0].body);
+  EXPECT_EQ(r.settings.panel, (std::vector<std::string>{"theta1", "theta2"}));
+  ASSERT_EQ(r.settings.captions.size(), 2u);
+  EXPECT_EQ(r.settings.captions[1].at, 2.5);
+  EXPECT_EQ(r.settings.captions[1].text, "Now watch the pin.");
+  // The step's clip carries them to the pipeline, at any quality.
+  const Clip draft = render_clip(r, Quality::draft, "out");
+  EXPECT_EQ(draft.settings.captions.size(), 2u);
+  EXPECT_EQ(draft.settings.panel.size(), 2u);
+}
+
 // Each broken lesson's first line says where its error is and what it says:
 //   # expect: LINE:COLUMN: message fragment
 TEST(LessonParse, BrokenLessonsGiveOneErrorWithFileLineAndColumn) {
@@ -170,7 +191,7 @@ TEST(LessonParse, BrokenLessonsGiveOneErrorWithFileLineAndColumn) {
     }
     ++checked;
   }
-  EXPECT_GE(checked, 19);
+  EXPECT_GE(checked, 23);
 }
 
 }  // namespace

@@ -4,10 +4,10 @@
 
 #include <filesystem>
 
+#include "integrate/series.hpp"
 #include "lesson/lesson.hpp"
 #include "lesson/quantities.hpp"
 #include "lesson/schema.hpp"
-#include "lesson/series.hpp"
 #include "support/test_support.hpp"
 
 namespace linkage::lesson {

@@ -11,6 +11,7 @@
 
 #include "core/error.hpp"
 #include "encode/encode_test_support.hpp"
+#include "integrate/mechanism_columns.hpp"
 #include "integrate/mechanism_simulation.hpp"
 #include "model/mechanism_toml.hpp"
 #include "render/cairo_util.hpp"
@@ -166,6 +167,55 @@ TEST(MechanismClip, RejectsVectorStillsAndUnknownTrailPoints) {
   clip.trails = {"9.A"};
   test::expect_error([&] { clip.validate(system); }, ExitCode::bad_input, "valid: ground, 2, 3, 4");
   EXPECT_TRUE(test::entries(dir.path()).empty());
+}
+
+TEST(MechanismClip, PanelPlotsTheContractsColumnsInWords) {
+  test::TempDir dir;
+  const sym::System system(load_mechanism("four-bar"));
+  const std::vector<MechanismColumn> all = mechanism_columns(system);
+  const auto force = std::find_if(all.begin(), all.end(), [](const MechanismColumn& c) {
+    return c.quantity == MechanismQuantity::force && c.name.ends_with(".force_x");
+  });
+  ASSERT_NE(force, all.end());
+  SimulationOptions options;
+  options.duration = 0.5;
+  ClipResult result;
+  PanelData panel;
+  const MechanismMotion motion =
+      sample_mechanism_motion(system, sym::checked_initial_state(system).state, options, {0.0, 0.25, 0.5}, 1, result,
+                              {}, {"2.theta", force->name}, &panel);
+  ASSERT_EQ(panel.curves.size(), 2u);
+  EXPECT_EQ(panel.curves[0].label, "angle θ of body 2");
+  EXPECT_EQ(panel.curves[0].unit, "rad");
+  EXPECT_EQ(panel.curves[1].unit, "N");
+  EXPECT_NE(panel.curves[1].label.find("force of joint"), std::string::npos);
+  const auto theta = std::find_if(all.begin(), all.end(), [](const MechanismColumn& c) { return c.name == "2.theta"; });
+  ASSERT_NE(theta, all.end());
+  ASSERT_EQ(panel.t.size(), 3u);
+  for (std::size_t k = 0; k < 3; ++k) {
+    EXPECT_EQ(panel.curves[0].values[k], motion.samples[k].pose[theta->index]);
+    EXPECT_EQ(panel.curves[1].values[k], motion.samples[k].force[force->index]);
+  }
+  // A still with the panel; an unknown column is refused naming the valid ones.
+  MechanismClip clip = small_still((dir / "panel.png").string());
+  clip.settings.width = 480;
+  clip.settings.height = 270;
+  clip.settings.panel = {"2.theta"};
+  clip.settings.captions = {{0.0, "The crank turns"}};
+  (void)produce_mechanism_clip(system, sym::checked_initial_state(system).state, clip);
+  EXPECT_EQ(test::entries(dir.path()), std::vector<std::string>{"panel.png"});
+  clip.settings.panel = {"2.thet"};
+  test::expect_error([&] { clip.validate(system); }, ExitCode::bad_input, "did you mean '2.theta'");
+}
+
+TEST(MechanismColumns, UnitsInPlotMarkup) {
+  MechanismColumn c;
+  c.unit = "kg m^2/s";
+  EXPECT_EQ(column_unit_markup(c), "kg m^{2}/s");
+  c.unit = "rad/s^2";
+  EXPECT_EQ(column_unit_markup(c), "rad/s^{2}");
+  c.unit = "N m";
+  EXPECT_EQ(column_unit_markup(c), "N m");
 }
 
 TEST(MechanismScene, RodOutlineSpansItsLength) {

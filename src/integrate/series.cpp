@@ -1,9 +1,9 @@
-#include "lesson/series.hpp"
+#include "integrate/series.hpp"
 
 #include <cmath>
 #include <string>
 
-namespace linkage::lesson {
+namespace linkage {
 
 std::optional<std::size_t> find_series(std::string_view name) {
   for (std::size_t i = 0; i < kSeries.size(); ++i)
@@ -91,4 +91,4 @@ std::string series_axis_label(std::size_t index) {
   return label;
 }
 
-}  // namespace linkage::lesson
+}  // namespace linkage

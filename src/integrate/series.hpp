@@ -1,6 +1,7 @@
 #pragma once
 // Quantities along a run, sampled over time: the coordinates, the centre of mass, the
-// invariants and their errors. The plot and compare steps draw them. Names follow
+// invariants and their errors. A lesson's plot and compare steps and `render --panel`
+// draw them, with these words and units on their axes. Names follow
 // `linkage simulate --columns` where both have the quantity.
 #include <array>
 #include <optional>
@@ -10,7 +11,7 @@
 #include "integrate/simulation.hpp"
 #include "model/kinematics.hpp"
 
-namespace linkage::lesson {
+namespace linkage {
 
 struct SeriesInfo {
   std::string_view name;   // e.g. "energy_error"
@@ -85,4 +86,4 @@ struct SeriesOrigin {
 /// "label (unit)" in plot markup, e.g. "constraint error |C| (m)".
 [[nodiscard]] std::string series_axis_label(std::size_t index);
 
-}  // namespace linkage::lesson
+}  // namespace linkage

@@ -1,0 +1,52 @@
+#pragma once
+// The frame around the motion: the live plot beside or below it (--panel) and a caption
+// band under both (--caption, a lesson's timed captions). The motion is drawn by its
+// own renderer into the scene's part of the frame, so the homework's clips and any
+// mechanism's are framed alike; with neither, the motion has the whole frame.
+#include <cairo.h>
+
+#include <cstddef>
+#include <functional>
+
+#include "core/frame.hpp"
+#include "render/panel.hpp"
+#include "render/settings.hpp"
+#include "render/style.hpp"
+#include "render/theme.hpp"
+
+namespace linkage {
+
+class FrameLayout {
+ public:
+  /// `settings` is the whole frame's; `panel` may be empty. Keeps a copy of both.
+  FrameLayout(const RenderSettings& settings, const Theme& theme, PanelData panel);
+  FrameLayout(const FrameLayout&) = delete;
+  FrameLayout& operator=(const FrameLayout&) = delete;
+
+  /// The settings to draw the motion with: the frame's, sized to the scene's part.
+  [[nodiscard]] const RenderSettings& scene_settings() const { return scene_settings_; }
+  [[nodiscard]] const Rect& scene_rect() const { return scene_; }
+  [[nodiscard]] const Rect& panel_rect() const { return layout_.panel; }
+  [[nodiscard]] const Rect& caption_rect() const { return caption_; }
+  /// Nothing around the motion: draw straight into the frame.
+  [[nodiscard]] bool plain() const { return layout_.panel.empty() && caption_.empty(); }
+
+  /// Frame `index` of the motion at time t: `scene` draws the motion into a buffer of
+  /// scene_settings()' size, which is copied into `frame`; then the panel and caption.
+  void draw(std::size_t index, double t, Frame& frame, const std::function<void(Frame&)>& scene);
+  /// The same onto a vector surface's context, `scene` drawing at the origin.
+  void draw_vector(std::size_t index, double t, cairo_t* cr, const std::function<void(cairo_t*)>& scene);
+
+ private:
+  void paint_around(std::size_t index, double t, cairo_t* cr) const;
+
+  RenderSettings settings_, scene_settings_;
+  Theme theme_;
+  DrawStyle style_;
+  PanelData panel_;
+  PanelLayout layout_;
+  Rect scene_, caption_;
+  Frame scene_frame_;
+};
+
+}  // namespace linkage

@@ -1,0 +1,242 @@
+#include "render/panel.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "render/text.hpp"
+
+namespace linkage {
+namespace {
+
+constexpr double kPanelShare = 0.4;     // of the frame's width (beside) or height (below)
+constexpr double kLandscape = 4.0 / 3;  // wider than this: the panel goes beside
+
+std::string with_unit(const std::string& label, const std::string& unit) {
+  return unit.empty() ? label : label + " (" + unit + ")";
+}
+
+/// Fixed limits over every value, padded by 6 % (or by 1 when the data is flat).
+std::pair<double, double> value_limits(const PanelData& data) {
+  double lo = 1e300, hi = -1e300;
+  for (const PanelCurve& c : data.curves)
+    for (double v : c.values)
+      if (std::isfinite(v)) {
+        lo = std::min(lo, v);
+        hi = std::max(hi, v);
+      }
+  if (lo > hi) return {-1, 1};
+  const double pad = hi > lo ? 0.06 * (hi - lo) : std::max(1e-12, 0.5 * std::fabs(hi));
+  return {lo - pad, hi + pad};
+}
+
+}  // namespace
+
+std::string shared_axis_label(const std::vector<std::string>& labels, const std::vector<std::string>& units) {
+  constexpr std::size_t kLongest = 48;  // characters of markup that still fit beside a plot
+  if (labels.empty()) return "value";
+  const bool same_unit = std::all_of(units.begin(), units.end(), [&](const std::string& u) { return u == units[0]; });
+  const std::string unit = same_unit && !units.empty() ? units[0] : "";
+  // The whole words every label begins with.
+  std::size_t common = labels[0].size();
+  for (const std::string& label : labels) {
+    std::size_t n = 0;
+    while (n < common && n < label.size() && label[n] == labels[0][n]) ++n;
+    common = n;
+  }
+  std::string words;
+  if (common == labels[0].size() && labels.size() > 1 &&
+      std::all_of(labels.begin(), labels.end(), [&](const std::string& l) { return l.size() == common; }))
+    words = labels[0];  // all the same
+  else if (const std::size_t space = labels[0].rfind(' ', common); space != std::string::npos && space > 0)
+    words = labels[0].substr(0, space);
+  if (words.empty()) {
+    for (const std::string& label : labels) {
+      if (!words.empty()) words += ", ";
+      words += label;
+    }
+    if (words.size() > kLongest) words = "value";
+  }
+  return with_unit(words, unit);
+}
+
+PanelLayout panel_layout(int width, int height, bool with_panel) {
+  const double w = width, h = height;
+  if (!with_panel) return {{0, 0, w, h}, {}};
+  if (w > kLandscape * h) {
+    const double side = std::round(kPanelShare * w);
+    return {{0, 0, w - side, h}, {w - side, 0, side, h}};
+  }
+  const double below = std::round(kPanelShare * h);
+  return {{0, 0, w, h - below}, {0, h - below, w, below}};
+}
+
+plot::Plot panel_plot(const PanelData& data, std::size_t index, bool dark) {
+  plot::Plot p;
+  p.theme = dark ? plot::Theme::dark : plot::Theme::light;
+  p.x.label = "time t (s)";
+  p.x.min = data.t.empty() ? 0.0 : std::min(0.0, data.t.front());
+  p.x.max = std::max(data.t_end, *p.x.min + 0.1);  // a still at t = 0 still has an axis
+  const auto [lo, hi] = value_limits(data);
+  p.y.min = lo;
+  p.y.max = hi;
+  // One curve: its words on the axis. Several: each in the legend, the axis names the
+  // shared unit (or none when the units differ).
+  const bool one = data.curves.size() == 1;
+  std::vector<std::string> labels, units;
+  for (const PanelCurve& c : data.curves) {
+    labels.push_back(c.label);
+    units.push_back(c.unit);
+  }
+  p.y.label = one ? with_unit(labels[0], units[0]) : shared_axis_label(labels, units);
+  p.legend = one ? plot::LegendPlace::none : plot::LegendPlace::best;
+  const std::size_t n = data.t.size();
+  const std::size_t now = std::min(index, n == 0 ? 0 : n - 1);
+  for (std::size_t c = 0; c < data.curves.size(); ++c) {
+    const PanelCurve& curve = data.curves[c];
+    plot::Series past, ahead;
+    past.name = one ? "" : with_unit(curve.label, curve.unit);
+    past.color = ahead.color = c % plot::palette_size;
+    ahead.dash = plot::Dash::dotted;
+    for (std::size_t i = 0; i < n && i < curve.values.size(); ++i) {
+      const plot::Point point{data.t[i], curve.values[i]};
+      if (i <= now) past.points.push_back(point);
+      if (i >= now) ahead.points.push_back(point);
+    }
+    p.series.push_back(std::move(past));
+    if (ahead.points.size() > 1) p.series.push_back(std::move(ahead));
+  }
+  return p;
+}
+
+plot::Report paint_panel(cairo_t* cr, const DrawStyle& style, const PanelData& data, std::size_t index,
+                         const Rect& rect) {
+  const Rgba& bg = style.theme->background;
+  const bool dark = 0.2126 * bg.r + 0.7152 * bg.g + 0.0722 * bg.b < 0.5;
+  const plot::Plot p = panel_plot(data, index, dark);
+  const plot::Canvas canvas{std::max(100.0, rect.width), std::max(100.0, rect.height),
+                            std::clamp(style.text_size(), 4.0, 200.0)};
+  cairo_save(cr);
+  cairo_rectangle(cr, rect.x, rect.y, rect.width, rect.height);
+  cairo_clip(cr);
+  cairo_translate(cr, rect.x, rect.y);
+  const plot::Report report = plot::draw(cr, p, canvas, "panel");
+  // The cursor: a line at the frame's time and a dot on each curve there.
+  if (!data.t.empty()) {
+    const std::size_t now = std::min(index, data.t.size() - 1);
+    const plot::Geometry& g = report.geometry;
+    const double x = g.x(data.t[now]);
+    set_colour(cr, with_alpha(style.theme->text, 0.55));
+    cairo_set_line_width(cr, std::max(1.0, 1.2 * style.u));
+    cairo_move_to(cr, x, g.top);
+    cairo_line_to(cr, x, g.bottom);
+    cairo_stroke(cr);
+    const auto& colours = plot::palette(p.theme);
+    for (std::size_t c = 0; c < data.curves.size(); ++c) {
+      if (now >= data.curves[c].values.size() || !std::isfinite(data.curves[c].values[now])) continue;
+      const plot::Rgb& colour = colours[c % plot::palette_size];
+      cairo_arc(cr, x, g.y(data.curves[c].values[now]), 3.5 * style.u, 0, 2 * std::numbers::pi);
+      cairo_set_source_rgb(cr, colour.r, colour.g, colour.b);
+      cairo_fill_preserve(cr);
+      set_colour(cr, style.theme->background);
+      cairo_set_line_width(cr, 1.2 * style.u);
+      cairo_stroke(cr);
+    }
+  }
+  cairo_restore(cr);
+  return report;
+}
+
+const std::string& caption_at(const std::vector<Caption>& captions, double t) {
+  static const std::string none;
+  const std::string* shown = &none;
+  for (const Caption& c : captions)
+    if (c.at <= t + 1e-9) shown = &c.text;
+  return *shown;
+}
+
+std::vector<std::string> wrap_text(cairo_t* cr, double font_size, const std::string& text, double max_width) {
+  const text::Font font{font_size, false};
+  std::vector<std::string> lines;
+  std::string line;
+  std::size_t at = 0;
+  while (at < text.size()) {
+    const std::size_t start = text.find_first_not_of(" \n", at);
+    if (start == std::string::npos) break;
+    const std::size_t end = std::min(text.find_first_of(" \n", start), text.size());
+    const std::string word = text.substr(start, end - start);
+    const bool forced = start > 0 && text.find('\n', at) < start;  // a newline in the text breaks the line
+    std::string candidate = line.empty() ? word : line + " " + word;
+    if (!line.empty() && (forced || text::width(cr, font, candidate.c_str()) > max_width)) {
+      lines.push_back(line);
+      candidate = word;
+    }
+    line = candidate;
+    at = end;
+  }
+  if (!line.empty()) lines.push_back(line);
+  return lines;
+}
+
+namespace {
+
+struct CaptionText {
+  text::Font font;
+  double pad = 0, line_height = 0, ascent = 0;
+  std::vector<std::string> lines;
+};
+
+CaptionText caption_text(cairo_t* cr, const DrawStyle& style, const std::string& text, double width) {
+  CaptionText c;
+  c.font = {1.25 * style.text_size(), false};
+  c.pad = 0.6 * style.padding();
+  c.lines = wrap_text(cr, c.font.size, text, 0.92 * width - 2 * c.pad);
+  const text::Metrics m = text::metrics(cr, c.font);
+  c.line_height = 1.2 * (m.ascent + m.descent);
+  c.ascent = m.ascent;
+  return c;
+}
+
+}  // namespace
+
+double caption_band_height(cairo_t* cr, const DrawStyle& style, const std::vector<Caption>& captions, double width) {
+  double tallest = 0;
+  for (const Caption& caption : captions) {
+    const CaptionText c = caption_text(cr, style, caption.text, width);
+    tallest = std::max(tallest, c.line_height * static_cast<double>(c.lines.size()) + 2 * c.pad);
+  }
+  return tallest > 0 ? std::ceil(tallest + style.padding()) : 0.0;
+}
+
+void paint_caption(cairo_t* cr, const DrawStyle& style, const std::string& text, const Rect& area) {
+  cairo_save(cr);
+  cairo_rectangle(cr, area.x, area.y, area.width, area.height);
+  set_colour(cr, style.theme->background);
+  cairo_fill(cr);
+  const CaptionText c = caption_text(cr, style, text, area.width);
+  if (!c.lines.empty()) {
+    double widest = 0;
+    for (const std::string& line : c.lines) widest = std::max(widest, text::width(cr, c.font, line.c_str()));
+    const double w = widest + 2 * c.pad, h = c.line_height * static_cast<double>(c.lines.size()) + 2 * c.pad;
+    const double x = area.x + 0.5 * (area.width - w), y = area.y + 0.5 * (area.height - h), r = 0.5 * c.pad;
+    cairo_new_sub_path(cr);
+    cairo_arc(cr, x + w - r, y + r, r, -std::numbers::pi / 2, 0);
+    cairo_arc(cr, x + w - r, y + h - r, r, 0, std::numbers::pi / 2);
+    cairo_arc(cr, x + r, y + h - r, r, std::numbers::pi / 2, std::numbers::pi);
+    cairo_arc(cr, x + r, y + r, r, std::numbers::pi, 1.5 * std::numbers::pi);
+    cairo_close_path(cr);
+    set_colour(cr, style.theme->panel);
+    cairo_fill_preserve(cr);
+    set_colour(cr, style.theme->panel_edge);
+    cairo_set_line_width(cr, std::max(1.0, 0.8 * style.u));
+    cairo_stroke(cr);
+    double baseline = y + c.pad + 0.5 * (c.line_height - c.line_height / 1.2) + c.ascent;
+    for (const std::string& line : c.lines) {
+      text::draw(cr, c.font, area.x + 0.5 * area.width, baseline, line.c_str(), style.theme->text, text::Align::centre);
+      baseline += c.line_height;
+    }
+  }
+  cairo_restore(cr);
+}
+
+}  // namespace linkage

@@ -1,0 +1,74 @@
+#pragma once
+// Words in and beside the picture: a live plot of chosen quantities next to the motion
+// (the curve so far, the rest dotted, a cursor at the frame's time) and a caption
+// along the bottom of the frame. Both are drawn in frame coordinates over a finished
+// frame, so the homework's clips and any mechanism's share them.
+#include <cairo.h>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "render/overlays.hpp"
+#include "render/plot.hpp"
+#include "render/settings.hpp"
+#include "render/style.hpp"
+
+namespace linkage {
+
+/// One quantity of the panel: its words in plot markup ("θ_{1}") and unit ("rad", or
+/// empty for a pure number), and its value at each sample of the motion.
+struct PanelCurve {
+  std::string label;
+  std::string unit;
+  std::vector<double> values;
+};
+
+/// What the panel plots: the sample times and one curve per chosen quantity.
+struct PanelData {
+  std::vector<double> t;
+  std::vector<PanelCurve> curves;
+  double t_end = 0;  // s, the right end of the time axis (the clip's duration, or a still's time)
+  [[nodiscard]] bool empty() const { return curves.empty(); }
+};
+
+/// Where the motion and the panel go in a width x height frame: the panel to the right
+/// of a landscape frame (wider than 4:3), below otherwise; no panel: the whole frame.
+struct PanelLayout {
+  Rect scene;
+  Rect panel;
+};
+[[nodiscard]] PanelLayout panel_layout(int width, int height, bool with_panel);
+
+/// A y-axis label for several curves: their shared unit after the words they begin
+/// with ("pin force F_{x}", "pin force F_{y}" -> "pin force (N)"), else the labels
+/// joined when short ("θ_{1}, θ_{2} (rad)"), else "value"; the unit only when all share it.
+[[nodiscard]] std::string shared_axis_label(const std::vector<std::string>& labels,
+                                            const std::vector<std::string>& units);
+
+/// The plot the panel shows at sample `index`: axes in words and units, limits fixed
+/// over the whole data (so they do not jump from frame to frame), the curves up to
+/// `index` solid and the rest dotted without a legend entry.
+[[nodiscard]] plot::Plot panel_plot(const PanelData& data, std::size_t index, bool dark);
+
+/// Paints the panel for sample `index` into `rect`, with a cursor line at its time and
+/// a dot on each curve; returns where the plot put its data.
+plot::Report paint_panel(cairo_t* cr, const DrawStyle& style, const PanelData& data, std::size_t index,
+                         const Rect& rect);
+
+/// The caption shown at time t: the last one that starts at or before t ("" if none).
+[[nodiscard]] const std::string& caption_at(const std::vector<Caption>& captions, double t);
+
+/// Lines of `text` in `font`, broken at spaces so none is wider than `max_width`
+/// (a word wider than that stays whole on its own line).
+[[nodiscard]] std::vector<std::string> wrap_text(cairo_t* cr, double font_size, const std::string& text,
+                                                 double max_width);
+
+/// Height of a band under the picture that holds the longest of `captions`, wrapped to
+/// `width` (0 when there are none).
+[[nodiscard]] double caption_band_height(cairo_t* cr, const DrawStyle& style, const std::vector<Caption>& captions,
+                                         double width);
+/// Paints the band `area` in the background colour and `text` centred in it, wrapped.
+void paint_caption(cairo_t* cr, const DrawStyle& style, const std::string& text, const Rect& area);
+
+}  // namespace linkage

@@ -1,0 +1,171 @@
+// The live plot beside the motion and the caption band: where they go, what the plot
+// holds at a frame, and the pixels of its curve, dot and cursor.
+#include "render/panel.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "render/cairo_util.hpp"
+#include "render/frame_layout.hpp"
+#include "render/render_test_support.hpp"
+#include "render/text.hpp"
+
+namespace linkage {
+namespace {
+
+PanelData ramp(std::size_t n = 101) {
+  PanelData data;
+  data.t_end = 10;
+  data.curves.push_back({"θ_{1}", "rad", {}});
+  for (std::size_t i = 0; i < n; ++i) {
+    data.t.push_back(0.1 * static_cast<double>(i));
+    data.curves[0].values.push_back(0.1 * static_cast<double>(i));
+  }
+  return data;
+}
+
+TEST(PanelLayout, BesideALandscapeFrameBelowAPortraitOne) {
+  const PanelLayout wide = panel_layout(1280, 720, true);
+  EXPECT_EQ(wide.panel.x, 768);
+  EXPECT_EQ(wide.panel.width, 512);
+  EXPECT_EQ(wide.panel.height, 720);
+  EXPECT_EQ(wide.scene.width, 768);
+  const PanelLayout tall = panel_layout(720, 1280, true);
+  EXPECT_EQ(tall.panel.y, 768);
+  EXPECT_EQ(tall.panel.height, 512);
+  EXPECT_EQ(tall.scene.height, 768);
+  const PanelLayout none = panel_layout(1280, 720, false);
+  EXPECT_TRUE(none.panel.empty());
+  EXPECT_EQ(none.scene.width, 1280);
+}
+
+TEST(PanelPlot, SolidUpToNowDottedAheadAxesInWords) {
+  const plot::Plot p = panel_plot(ramp(), 40, false);
+  EXPECT_EQ(p.y.label, "θ_{1} (rad)");
+  EXPECT_EQ(p.x.label, "time t (s)");
+  ASSERT_EQ(p.series.size(), 2u);
+  EXPECT_EQ(p.series[0].points.size(), 41u);
+  EXPECT_EQ(p.series[0].dash, plot::Dash::solid);
+  EXPECT_EQ(p.series[1].points.size(), 61u);
+  EXPECT_EQ(p.series[1].dash, plot::Dash::dotted);
+  EXPECT_TRUE(p.series[1].name.empty());  // the future stays out of the legend
+  // Limits fixed over the whole curve, so the axes do not move from frame to frame.
+  EXPECT_EQ(*p.x.max, 10);
+  EXPECT_NEAR(*p.y.min, -0.6, 1e-12);
+  EXPECT_NEAR(*p.y.max, 10.6, 1e-12);
+  // Several curves: each named in the legend with its unit, the axis by the shared unit.
+  PanelData two = ramp();
+  two.curves.push_back({"θ_{2}", "rad", two.curves[0].values});
+  const plot::Plot q = panel_plot(two, 100, false);
+  EXPECT_EQ(q.y.label, "θ_{1}, θ_{2} (rad)");
+  EXPECT_EQ(q.series[0].name, "θ_{1} (rad)");
+  EXPECT_EQ(q.series.size(), 2u);  // at the last sample nothing lies ahead
+}
+
+TEST(PanelPlot, SeveralCurvesShareTheirWordsAndUnitOnTheAxis) {
+  EXPECT_EQ(shared_axis_label({"pin force F_{x}", "pin force F_{y}"}, {"N", "N"}), "pin force (N)");
+  EXPECT_EQ(shared_axis_label({"momentum error |p_{x} − p_{x0}|", "momentum error |p_{y} − p_{y0} + 2 m g t|"},
+                              {"kg m/s", "kg m/s"}),
+            "momentum error (kg m/s)");
+  EXPECT_EQ(shared_axis_label({"θ_{1}", "θ_{2}"}, {"rad", "rad"}), "θ_{1}, θ_{2} (rad)");
+  EXPECT_EQ(shared_axis_label({"θ_{1}", "pin force F_{x}"}, {"rad", "N"}), "θ_{1}, pin force F_{x}");
+  EXPECT_EQ(shared_axis_label({"relative energy error |E − E_{0}| / E_{scale}", "distance of G from the parabola"},
+                              {"", "m"}),
+            "value");
+}
+
+TEST(PanelPaint, CursorAndDotAtTheFramesTime) {
+  const Theme theme = load_theme("light", {}, "theme");
+  DrawStyle style;
+  style.theme = &theme;
+  style.u = 1;
+  Frame frame(500, 400);
+  const cairo::SurfacePtr surface = cairo::surface_for(frame);
+  const cairo::ContextPtr cr = cairo::context(surface.get());
+  const Rect rect{100, 50, 400, 300};
+  const plot::Report report = paint_panel(cr.get(), style, ramp(), 50, rect);
+  cairo_surface_flush(surface.get());
+  const plot::Geometry& g = report.geometry;
+  const plot::Rgb blue = plot::palette(plot::Theme::light)[0];
+  const test::Rgb8 curve{static_cast<int>(std::lround(255 * blue.r)), static_cast<int>(std::lround(255 * blue.g)),
+                         static_cast<int>(std::lround(255 * blue.b))};
+  // The dot on the curve at t = 5 s, in the frame's coordinates (the panel is offset).
+  const plot::Point now = g.to_device({5.0, 5.0});
+  EXPECT_LE(test::colour_distance(
+                test::rgb_at(frame, static_cast<int>(rect.x + now.x), static_cast<int>(rect.y + now.y)), curve),
+            40);
+  // The solid curve so far at t = 2 s.
+  const plot::Point past = g.to_device({2.0, 2.0});
+  EXPECT_LE(test::colour_distance(
+                test::rgb_at(frame, static_cast<int>(rect.x + past.x), static_cast<int>(rect.y + past.y)), curve),
+            60);
+  // The cursor: a grey line through the data area at t = 5 s, well away from the curve.
+  const int cx = static_cast<int>(std::lround(rect.x + now.x - 0.5));
+  const int cy = static_cast<int>(rect.y + g.top + 0.2 * (g.bottom - g.top));
+  const test::Rgb8 cursor = test::rgb_at(frame, cx, cy);
+  const test::Rgb8 beside = test::rgb_at(frame, cx + 15, cy);
+  EXPECT_LT(cursor.r + cursor.g + cursor.b, beside.r + beside.g + beside.b - 150);
+  // Nothing outside the panel's rectangle.
+  EXPECT_EQ(frame.pixel(50, 20), 0u);
+}
+
+TEST(Captions, EachShownFromItsTimeUntilTheNext) {
+  const std::vector<Caption> captions{{0.0, "first"}, {2.0, "second"}};
+  EXPECT_EQ(caption_at(captions, 0.0), "first");
+  EXPECT_EQ(caption_at(captions, 1.99), "first");
+  EXPECT_EQ(caption_at(captions, 2.0), "second");
+  EXPECT_EQ(caption_at({{1.0, "late"}}, 0.5), "");
+}
+
+TEST(Captions, LongTextWrapsAtSpacesWithinTheWidth) {
+  const cairo::SurfacePtr surface = cairo::image_surface(1, 1);
+  const cairo::ContextPtr cr = cairo::context(surface.get());
+  const std::string text = "The centre of mass falls on a parabola while the blocks turn about it at constant rate";
+  const std::vector<std::string> lines = wrap_text(cr.get(), 12, text, 200);
+  ASSERT_GE(lines.size(), 3u);
+  std::string joined;
+  for (const std::string& line : lines) {
+    EXPECT_LE(text::width(cr.get(), {12, false}, line.c_str()), 200) << line;
+    if (!joined.empty()) joined += ' ';
+    joined += line;
+  }
+  EXPECT_EQ(joined, text);
+  EXPECT_EQ(wrap_text(cr.get(), 12, "one\ntwo", 1000), (std::vector<std::string>{"one", "two"}));
+}
+
+TEST(FrameLayout, SceneThenPanelThenCaptionBandCoverTheFrame) {
+  RenderSettings settings;
+  settings.width = 640;
+  settings.height = 360;
+  settings.captions = {{0.0, "The pin force is small next to the weight"}};
+  const Theme theme = load_theme("light", {}, "theme");
+  FrameLayout layout(settings, theme, ramp());
+  const RenderSettings& scene = layout.scene_settings();
+  EXPECT_EQ(scene.width % 2, 0);
+  EXPECT_EQ(scene.height % 2, 0);
+  EXPECT_EQ(layout.panel_rect().x, scene.width);
+  EXPECT_EQ(layout.panel_rect().x + layout.panel_rect().width, 640);
+  EXPECT_EQ(layout.caption_rect().y, scene.height);
+  EXPECT_EQ(layout.caption_rect().y + layout.caption_rect().height, 360);
+  EXPECT_GT(layout.caption_rect().height, 15);
+  Frame frame(640, 360);
+  layout.draw(30, 3.0, frame, [&](Frame& part) {
+    EXPECT_EQ(part.width, scene.width);
+    for (std::size_t i = 0; i < part.pixels.size(); i += 4) {  // opaque red
+      part.pixels[i] = 0;
+      part.pixels[i + 1] = 0;
+      part.pixels[i + 2] = 255;
+      part.pixels[i + 3] = 255;
+    }
+  });
+  const test::Rgb8 red{255, 0, 0};
+  EXPECT_EQ(test::colour_distance(test::rgb_at(frame, 10, 10), red), 0);
+  EXPECT_EQ(test::colour_distance(test::rgb_at(frame, scene.width - 1, scene.height - 1), red), 0);
+  EXPECT_GT(test::colour_distance(test::rgb_at(frame, scene.width + 2, 10), red), 100);
+  EXPECT_EQ(test::colour_distance(test::rgb_at(frame, 2, 358), test::rgb8(theme.background)), 0);
+  if (const auto folder = test::picture_folder(); !folder.empty()) test::write_png_file(frame, folder / "layout.png");
+}
+
+}  // namespace
+}  // namespace linkage
