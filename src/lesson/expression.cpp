@@ -28,10 +28,27 @@ const QuantitySymbols& quantity_symbols() {
 
 }  // namespace
 
-Expression Expression::parse(std::string_view text, const std::string& origin) {
+MechanismNames mechanism_names(const sym::System& system) {
+  MechanismNames out;
+  for (const sym::SymbolInfo& info : system.table().all()) {
+    if (info.role == sym::Role::parameter)
+      out[info.symbol.get_name()] = system.parameter_values().at(info.symbol);
+    else if (info.role == sym::Role::definition || info.role == sym::Role::inertia)
+      out[info.symbol.get_name()] = system.constants().at(info.symbol).subs(system.parameter_values());
+  }
+  return out;
+}
+
+Expression Expression::parse(std::string_view text, const std::string& origin, const MechanismNames* mechanism) {
   Expression e;
   e.text_ = std::string(text);
-  e.value_ = std::make_shared<const GiNaC::ex>(sym::read_expression(text, origin, {quantity_symbols().names}));
+  if (mechanism == nullptr) {
+    e.value_ = std::make_shared<const GiNaC::ex>(sym::read_expression(text, origin, {quantity_symbols().names}));
+  } else {
+    GiNaC::symtab names = quantity_symbols().names;
+    for (const auto& [name, value] : *mechanism) names[name] = value;
+    e.value_ = std::make_shared<const GiNaC::ex>(sym::read_expression(text, origin, {names}));
+  }
   return e;
 }
 

@@ -2,6 +2,7 @@
 // Exercise answers and {{...}} in lesson text: the mechanism files' expression language
 // (symbolic/expression_reader.hpp) over the names of quantities.hpp, read once (names
 // resolved, errors found at validation) and evaluated at each step's values.
+#include <map>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -11,14 +12,23 @@
 namespace GiNaC {
 class ex;
 }
+namespace linkage::sym {
+class System;
+}
 
 namespace linkage::lesson {
+
+/// Names a lesson that names a mechanism may use besides the quantities, each with its
+/// value: the mechanism's parameters, definitions and body inertias (I, I_1), at its
+/// parameter values. Where a name is also a quantity's, the mechanism's wins.
+using MechanismNames = std::map<std::string, GiNaC::ex>;
+[[nodiscard]] MechanismNames mechanism_names(const sym::System& system);
 
 class Expression {
  public:
   /// Parses `text`; throws Error::input starting with `origin` (e.g. "file:3:10: answer")
   /// naming the problem and where in the text it is.
-  static Expression parse(std::string_view text, const std::string& origin);
+  static Expression parse(std::string_view text, const std::string& origin, const MechanismNames* mechanism = nullptr);
 
   [[nodiscard]] double evaluate(const QuantityValues& values) const;
   [[nodiscard]] const std::string& text() const { return text_; }
