@@ -44,15 +44,15 @@ class Reader {
   Reader(std::string_view text, std::string_view origin, const ExpressionNames& names)
       : text_(text), prefix_(origin.empty() ? std::string() : std::string(origin) + ": "), names_(names) {}
 
+  // Problems are reported in reading order: text nested too deep fails at its 65th level
+  // however long, text too long where reading passes the limit.
   ex read() {
-    if (text_.size() > kMaxExpressionLength)
-      throw Error::input(prefix_ + "the expression '" + excerpt(text_, 0) + "' is " + std::to_string(text_.size()) +
-                         " characters long; valid: at most " + std::to_string(kMaxExpressionLength));
     skip_space();
     if (pos_ == text_.size()) fail(pos_, "the expression is empty");
     const ex e = sum();
     skip_space();
     if (pos_ != text_.size()) fail(pos_, "unexpected '" + std::string(text_.substr(pos_, 1)) + "'");
+    if (text_.size() > kMaxExpressionLength) too_long();
     return e;
   }
 
@@ -120,6 +120,7 @@ class Reader {
   }
   ex primary() {
     skip_space();
+    if (pos_ > kMaxExpressionLength) too_long();  // every operand starts here: reading stops soon after
     if (pos_ == text_.size()) fail(pos_, "the expression ends too early");
     const char c = text_[pos_];
     const std::size_t at = pos_;
@@ -246,7 +247,12 @@ class Reader {
   void skip_space() {
     while (pos_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[pos_])) != 0) ++pos_;
   }
+  [[noreturn]] void too_long() const {
+    throw Error::input(prefix_ + "the expression '" + excerpt(text_, 0) + "' is " + std::to_string(text_.size()) +
+                       " characters long; valid: at most " + std::to_string(kMaxExpressionLength));
+  }
   [[noreturn]] void fail(std::size_t at, const std::string& what, const std::string& valid = {}) const {
+    if (at > kMaxExpressionLength) too_long();
     throw Error::input(prefix_ + what + " at character " + std::to_string(at + 1) + " of '" + excerpt(text_, at) + "'" +
                        valid);
   }

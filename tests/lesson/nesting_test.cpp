@@ -147,19 +147,23 @@ TEST(ExpressionNesting, TheBoundIsAcceptedAndOneLevelMoreIsNot) {
 }
 
 TEST(ExpressionNesting, HostileExpressionsGetAShortOneLineError) {
-  for (const std::string& hostile : {repeat("(", 499) + "1", repeat("-", 499) + "1", repeat("sqrt(", 99) + "1"}) {
+  for (const std::string& hostile :
+       {repeat("(", 100000) + "1", repeat("-", 100000) + "1", repeat("sqrt(", 20000) + "1"}) {
     const std::string message = expression_error(hostile);
     EXPECT_NE(message.find(kTooDeep), std::string::npos) << message.substr(0, 300);
     EXPECT_LT(message.size(), 300u) << message.substr(0, 300);
   }
-  // Longer text is refused before it is read.
-  for (const std::string& hostile : {repeat("(", 100000) + "1", "1" + repeat("^1", 100000)}) {
+  // A tower of powers is refused at its second ^, long text where reading passes 500 characters.
+  EXPECT_NE(expression_error("1" + repeat("^1", 100000)).find("the power is too high or nested at character 4"),
+            std::string::npos);
+  for (const std::string& hostile :
+       {repeat("1 + ", 100000) + "1", "1" + std::string(100000, ' '), repeat("(1)*", 200)}) {
     const std::string message = expression_error(hostile);
     EXPECT_NE(message.find(" characters long; valid: at most 500"), std::string::npos) << message.substr(0, 300);
     EXPECT_LT(message.size(), 300u) << message.substr(0, 300);
   }
   // The excerpt ends at the level too many.
-  EXPECT_NE(expression_error(repeat("(", 400) + "1").find("at character 65 of '…" + repeat("(", 40) + "…'"),
+  EXPECT_NE(expression_error(repeat("(", 100000) + "1").find("at character 65 of '…" + repeat("(", 40) + "…'"),
             std::string::npos);
   // Arguments are counted as they come.
   const std::string many = expression_error("hypot(" + repeat("1, ", 150) + "1)");
@@ -182,7 +186,7 @@ TEST(TemplateNesting, TextIsCheckedWhenParsedAndPlaceholdersKeepColumns) {
                 .render(evaluate_quantities(Inputs{}))
                 .substr(0, 12),
             "0.1 kg and $");
-  const std::string deep_placeholder = "v = {{" + repeat("(", 400) + "1}}";
+  const std::string deep_placeholder = "v = {{" + repeat("(", 100000) + "1}}";
   const std::string message = error_of([&] { (void)TextTemplate::parse(deep_placeholder, origin); });
   EXPECT_NE(message.find(kTooDeep), std::string::npos) << message.substr(0, 300);
   EXPECT_LT(message.size(), 400u);
