@@ -1,45 +1,43 @@
 #pragma once
-// Arithmetic over the named quantities, for exercise answers and {{...}} in lesson text:
-//   expr    := term (('+' | '-') term)*
-//   term    := unary (('*' | '/') unary)*
-//   unary   := '-' unary | power
-//   power   := primary ('^' unary)?
-//   primary := number | name | function '(' expr (',' expr)* ')' | '(' expr ')'
-// Names are those of quantities.hpp; functions: sin cos tan asin acos atan atan2 sqrt
-// abs exp log log10 hypot min max. Compiled once (names resolved, errors found at
-// validation), evaluated many times.
+// Exercise answers and {{...}} in lesson text: the mechanism files' expression language
+// (symbolic/expression_reader.hpp) over the names of quantities.hpp, read once (names
+// resolved, errors found at validation) and evaluated at each step's values.
+#include <map>
+#include <memory>
 #include <string>
 #include <string_view>
-#include <vector>
 
 #include "lesson/quantities.hpp"
 
+namespace GiNaC {
+class ex;
+}
+namespace linkage::sym {
+class System;
+}
+
 namespace linkage::lesson {
+
+/// Names a lesson that names a mechanism may use besides the quantities, each with its
+/// value: the mechanism's parameters, definitions and body inertias (I, I_1), at its
+/// parameter values. Where a name is also a quantity's, the mechanism's wins.
+using MechanismNames = std::map<std::string, GiNaC::ex>;
+[[nodiscard]] MechanismNames mechanism_names(const sym::System& system);
 
 class Expression {
  public:
   /// Parses `text`; throws Error::input starting with `origin` (e.g. "file:3:10: answer")
   /// naming the problem and where in the text it is.
-  static Expression parse(std::string_view text, const std::string& origin);
+  static Expression parse(std::string_view text, const std::string& origin, const MechanismNames* mechanism = nullptr);
 
   [[nodiscard]] double evaluate(const QuantityValues& values) const;
   [[nodiscard]] const std::string& text() const { return text_; }
-  /// True when the expression is one number with no names (a hard-coded answer).
-  [[nodiscard]] bool is_constant() const;
   /// The single quantity this expression names, when it is just a name (for units).
   [[nodiscard]] const QuantityInfo* single_quantity() const;
 
-  enum class Op { number, quantity, negate, add, subtract, multiply, divide, power, call };
-  struct Node {
-    Op op = Op::number;
-    double number = 0;
-    std::size_t index = 0;  // quantity index, or function index for calls
-    int args = 0;           // operands taken from the evaluation stack
-  };
-
  private:
   std::string text_;
-  std::vector<Node> program_;  // postfix: operands before their operator
+  std::shared_ptr<const GiNaC::ex> value_;  // shared: an expression is read once and never changes
 };
 
 }  // namespace linkage::lesson

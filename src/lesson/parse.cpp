@@ -24,6 +24,7 @@
 #include "pipeline/panel_data.hpp"
 #include "render/theme.hpp"
 #include "report/mechanism_solution.hpp"
+#include "symbolic/system.hpp"
 
 namespace linkage::lesson {
 namespace {
@@ -140,8 +141,9 @@ std::vector<std::string> keys_in_file_order(const toml::table& table,
 
 /// Lesson text with {{...}} placeholders, each a finite number at `inputs` (where the
 /// text is shown), so a lesson that would print inf or nan fails when it is read.
-TextTemplate text_template(std::string_view text, const std::string& origin, const Inputs& inputs) {
-  TextTemplate t = TextTemplate::parse(text, origin);
+TextTemplate text_template(std::string_view text, const std::string& origin, const Inputs& inputs,
+                           const MechanismNames* mechanism) {
+  TextTemplate t = TextTemplate::parse(text, origin, mechanism);
   if (text.find("{{") != std::string_view::npos) t.require_finite(evaluate_quantities(inputs), origin);
   return t;
 }
@@ -179,8 +181,9 @@ class Parser {
     lesson.inputs = inputs;
     if (auto m = top.string("mechanism")) lesson_mechanism_ = mechanism_spec(top, "mechanism", *m);
     lesson.mechanism = lesson_mechanism_;
+    if (!lesson_mechanism_.empty()) mechanism_names_ = mechanism_names(sym::System(load_mechanism(lesson_mechanism_)));
     if (auto d = top.string("description"))
-      lesson.description = text_template(*d, top.prefix("description") + "description", inputs);
+      lesson.description = text_template(*d, top.prefix("description") + "description", inputs, names());
 
     top.require("step");
     const auto steps = top.tables("step");
@@ -308,13 +311,13 @@ class Parser {
     const auto file = r.string("file");
     if (text && file) r.fail("file", "give either 'text' or 'file', not both");
     if (!text && !file) r.require("text");
-    if (text) return {text_template(*text, r.prefix("text") + "text", inputs)};
+    if (text) return {text_template(*text, r.prefix("text") + "text", inputs, names())};
     const fs::path path = referenced_file(r, "file", *file);
     std::ifstream in(path, std::ios::binary);
     std::stringstream content;
     content << in.rdbuf();
     if (!in && !in.eof()) r.fail("file", "cannot read '" + path.string() + "'");
-    return {text_template(content.str(), r.prefix("file") + path.string(), inputs)};
+    return {text_template(content.str(), r.prefix("file") + path.string(), inputs, names())};
   }
 
   SetStep parse_set(const TableReader& r, Inputs& inputs) const {
@@ -338,10 +341,10 @@ class Parser {
     ExerciseStep e;
     r.require("question");
     r.require("answer");
-    e.question = text_template(*r.string("question"), r.prefix("question") + "question", inputs);
+    e.question = text_template(*r.string("question"), r.prefix("question") + "question", inputs, names());
     const toml::node& answer = *r.node("answer");
     if (const auto* s = answer.as_string()) {
-      e.answer = Expression::parse(s->get(), r.prefix("answer") + "answer");
+      e.answer = Expression::parse(s->get(), r.prefix("answer") + "answer", names());
     } else if (answer.is_number()) {
       e.answer =
           Expression::parse(format_roundtrip(*r.number("answer", -kInf, kInf, "")), r.prefix("answer") + "answer");
@@ -360,9 +363,9 @@ class Parser {
     e.relative_tolerance = r.number("relative_tolerance", 0, 1, "valid: 0 to 1").value_or(e.tolerance ? 0.0 : 0.01);
     e.attempts = static_cast<int>(r.integer("attempts", 1, 10).value_or(3));
     e.digits = static_cast<int>(r.integer("digits", 1, 17).value_or(6));
-    if (auto hint = r.string("hint")) e.hint = text_template(*hint, r.prefix("hint") + "hint", inputs);
+    if (auto hint = r.string("hint")) e.hint = text_template(*hint, r.prefix("hint") + "hint", inputs, names());
     if (auto x = r.string("explanation"))
-      e.explanation = text_template(*x, r.prefix("explanation") + "explanation", inputs);
+      e.explanation = text_template(*x, r.prefix("explanation") + "explanation", inputs, names());
     return e;
   }
 
@@ -674,7 +677,9 @@ class Parser {
 
   fs::path file_;
   std::string file_text_;
-  std::string lesson_mechanism_;  // the lesson's `mechanism`, for its render steps
+  std::string lesson_mechanism_;    // the lesson's `mechanism`, for its render steps
+  MechanismNames mechanism_names_;  // its names for {{...}} and answers, when it has one
+  [[nodiscard]] const MechanismNames* names() const { return lesson_mechanism_.empty() ? nullptr : &mechanism_names_; }
   fs::path dir_;
   std::map<std::string, std::string> artifacts_;  // file name -> the step that writes it
 };

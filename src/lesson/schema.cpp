@@ -16,7 +16,8 @@ constexpr std::array<KeySpec, 7> kLessonKeys{{
      "Any of x1, y1, theta1, theta2, x1_dot, y1_dot, theta1_dot, theta2_dot (m, rad, m/s, rad/s)."},
     {"mechanism", "string", "the homework",
      "A shipped mechanism (`linkage mechanisms`) or a mechanism file, relative to the lesson file, that the "
-     "render steps draw; a render step's own `mechanism` overrides it."},
+     "render steps draw, and whose parameters, definitions and inertias {{...}} and answers may use; a render "
+     "step's own `mechanism` overrides it for that step."},
     {"step", "array of tables", "(required)", "The steps, in order: one [[step]] table each."},
 }};
 

@@ -5,6 +5,8 @@
 #include <string_view>
 #include <vector>
 
+#include "model/name_match.hpp"  // excerpt
+
 namespace linkage::lesson {
 
 /// The candidate closest to `word` by optimal-string-alignment distance (a swap of two
@@ -15,10 +17,5 @@ namespace linkage::lesson {
 
 /// "a, b, c".
 [[nodiscard]] std::string join(const std::vector<std::string_view>& words, std::string_view separator = ", ");
-
-/// `text` fit to quote in a one-line message: whole when short, else the 40 or so
-/// characters up to and including `at`, cut marks "…" where text is left out; line
-/// breaks and other control characters read as spaces.
-[[nodiscard]] std::string excerpt(std::string_view text, std::size_t at = std::string_view::npos);
 
 }  // namespace linkage::lesson

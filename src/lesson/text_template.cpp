@@ -11,7 +11,7 @@
 
 namespace linkage::lesson {
 
-TextTemplate TextTemplate::parse(std::string_view text, const std::string& origin) {
+TextTemplate TextTemplate::parse(std::string_view text, const std::string& origin, const MechanismNames* mechanism) {
   TextTemplate t;
   std::size_t pos = 0;
   while (pos < text.size()) {
@@ -39,7 +39,7 @@ TextTemplate TextTemplate::parse(std::string_view text, const std::string& origi
                            "}}': the digits after ':' must be a whole number from 1 to 17");
       inside = inside.substr(0, colon);
     }
-    part.value.push_back(Expression::parse(inside, origin + ": {{" + excerpt(inside) + "}}"));
+    part.value.push_back(Expression::parse(inside, origin + ": {{" + excerpt(inside) + "}}", mechanism));
     part.line =
         1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(open), '\n'));
     const std::size_t line_start = text.rfind('\n', open) == std::string_view::npos ? 0 : text.rfind('\n', open) + 1;

@@ -15,7 +15,9 @@ class TextTemplate {
  public:
   TextTemplate() = default;
   /// Parses the placeholders of `text`; throws Error::input starting with `origin`.
-  static TextTemplate parse(std::string_view text, const std::string& origin);
+  /// `mechanism`: the names of the lesson's mechanism, if it names one.
+  static TextTemplate parse(std::string_view text, const std::string& origin,
+                            const MechanismNames* mechanism = nullptr);
   /// The text with every placeholder replaced by its value at `values`.
   [[nodiscard]] std::string render(const QuantityValues& values) const;
   /// Throws Error::input, starting with `origin` and naming the placeholder's line and

@@ -86,7 +86,8 @@ std::vector<std::string> keys_of(std::string_view table) {
 }
 
 const std::vector<std::string>& reserved_names() {
-  static const std::vector<std::string> names{kGround, "t", "pi", "sin", "cos", "tan", "sqrt", "exp"};
+  static const std::vector<std::string> names{kGround, "t",     "pi",   "sin", "cos", "tan", "asin",  "acos",
+                                              "atan",  "atan2", "sqrt", "exp", "log", "abs", "hypot", "log10"};
   return names;
 }
 

@@ -23,4 +23,9 @@ namespace linkage {
 /// " (did you mean 'x'?)" when a candidate is close, else "".
 [[nodiscard]] std::string did_you_mean(std::string_view word, const std::vector<std::string>& candidates);
 
+/// `text` fit to quote in a one-line message: whole when short, else the 40 or so
+/// characters up to and including `at`, cut marks "…" where text is left out; line
+/// breaks and other control characters read as spaces.
+[[nodiscard]] std::string excerpt(std::string_view text, std::size_t at = std::string_view::npos);
+
 }  // namespace linkage

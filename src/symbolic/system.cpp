@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "symbolic/expression_reader.hpp"
 #include "symbolic/joints.hpp"
 #include "symbolic/spelling.hpp"
 #include "symbolic/units.hpp"
@@ -78,7 +79,12 @@ double evaluate(const ex& e, const GiNaC::exmap& values) {
     if (name == "exp") return std::exp(x);
     if (name == "log") return x < 0 ? std::nan("") : std::log(x);
     if (name == "abs") return std::abs(x);
+    if (name == "asin") return std::asin(x);
+    if (name == "acos") return std::acos(x);
+    if (name == "atan") return std::atan(x);
   }
+  if (GiNaC::is_a<GiNaC::function>(e) && e.nops() == 2 && GiNaC::ex_to<GiNaC::function>(e).get_name() == "atan2")
+    return std::atan2(evaluate(e.op(0), values), evaluate(e.op(1), values));
   std::ostringstream text;
   text << e;
   throw std::logic_error("not a number: " + text.str());
@@ -87,112 +93,6 @@ double evaluate(const ex& e, const GiNaC::exmap& values) {
 double to_double(const ex& e) { return evaluate(e, {}); }
 
 namespace {
-
-constexpr std::size_t kMaxExpressionLength = 500;
-constexpr int kMaxExponent = 12;
-
-// The functions a mechanism file may use, from GiNaC's reader.
-const GiNaC::prototype_table& allowed_functions() {
-  static const GiNaC::prototype_table table = [] {
-    GiNaC::prototype_table out;
-    for (const auto& [prototype, reader] : GiNaC::get_default_reader())
-      for (const char* name : {"sin", "cos", "tan", "sqrt", "exp"})
-        if (prototype.first == name && prototype.second == 1) out[prototype] = reader;
-    return out;
-  }();
-  return table;
-}
-
-// An exponent is a number of at most kMaxExponent, a name, or a parenthesized group
-// without powers: GiNaC computes numeric powers as it reads, so 9^9^9 must not get there.
-void check_exponents(const Quantity& q) {
-  const std::string& text = q.text;
-  auto refuse = [&] {
-    throw Error::input(where(q.pos) + "the power in \"" + text + "\" is too high or nested; valid: exponents " +
-                       "from -" + std::to_string(kMaxExponent) + " to " + std::to_string(kMaxExponent) +
-                       ", a name, or a group without ^");
-  };
-  for (std::size_t i = text.find('^'); i != std::string::npos; i = text.find('^', i + 1)) {
-    std::size_t k = i + 1;
-    while (k < text.size() && (text[k] == ' ' || text[k] == '-' || text[k] == '+')) ++k;
-    if (k >= text.size()) return;  // the parser reports it
-    if (text[k] == '(') {
-      int depth = 0;
-      std::size_t j = k;
-      for (; j < text.size(); ++j) {
-        if (text[j] == '(') ++depth;
-        if (text[j] == ')' && --depth == 0) break;
-        if (text[j] == '^') refuse();
-      }
-      ++j;
-      while (j < text.size() && text[j] == ' ') ++j;
-      if (j < text.size() && text[j] == '^') refuse();
-    } else if (std::isdigit(static_cast<unsigned char>(text[k])) != 0 || text[k] == '.') {
-      std::size_t end = k;
-      while (end < text.size() && (std::isalnum(static_cast<unsigned char>(text[end])) != 0 || text[end] == '.')) ++end;
-      const double value = std::strtod(text.substr(k, end - k).c_str(), nullptr);
-      if (!(value <= kMaxExponent)) refuse();
-      while (end < text.size() && text[end] == ' ') ++end;
-      if (end < text.size() && text[end] == '^') refuse();  // a tower: a^b^c
-    } else {
-      std::size_t end = k;
-      while (end < text.size() && (std::isalnum(static_cast<unsigned char>(text[end])) != 0 || text[end] == '_')) ++end;
-      while (end < text.size() && text[end] == ' ') ++end;
-      if (end < text.size() && text[end] == '^') refuse();
-    }
-  }
-}
-
-// Decimal literals as exact fractions ("0.08" -> "(8/100)", "1.5e-3" -> "(15/10000)"), so
-// expanding never leaves a float residue whose size depends on GiNaC's term order.
-std::string exact_decimals(const std::string& text) {
-  std::string out;
-  std::size_t i = 0;
-  while (i < text.size()) {
-    const bool starts_number =
-        (std::isdigit(static_cast<unsigned char>(text[i])) != 0 ||
-         (text[i] == '.' && i + 1 < text.size() && std::isdigit(static_cast<unsigned char>(text[i + 1])) != 0)) &&
-        (i == 0 ||
-         (std::isalnum(static_cast<unsigned char>(text[i - 1])) == 0 && text[i - 1] != '_' && text[i - 1] != '.'));
-    if (!starts_number) {
-      out += text[i++];
-      continue;
-    }
-    std::string digits;
-    long scale = 0;  // value = digits * 10^-scale
-    bool point = false;
-    while (i < text.size() && (std::isdigit(static_cast<unsigned char>(text[i])) != 0 || (text[i] == '.' && !point))) {
-      if (text[i] == '.') {
-        point = true;
-      } else {
-        digits += text[i];
-        if (point) ++scale;
-      }
-      ++i;
-    }
-    if (i + 1 < text.size() && (text[i] == 'e' || text[i] == 'E') &&
-        (std::isdigit(static_cast<unsigned char>(text[i + 1])) != 0 ||
-         ((text[i + 1] == '-' || text[i + 1] == '+') && i + 2 < text.size() &&
-          std::isdigit(static_cast<unsigned char>(text[i + 2])) != 0))) {
-      std::size_t end = i + 1;
-      if (text[end] == '-' || text[end] == '+') ++end;
-      while (end < text.size() && std::isdigit(static_cast<unsigned char>(text[end])) != 0) ++end;
-      const long exponent = std::strtol(text.substr(i + 1, end - i - 1).c_str(), nullptr, 10);
-      if (exponent > 300 || exponent < -300) return text;  // left to the parser and the range checks
-      scale -= exponent;
-      i = end;
-    }
-    if (digits.empty()) digits = "0";
-    if (scale == 0) {
-      out += digits;
-    } else if (scale > 0) {
-      out += "(" + digits + "/1" + std::string(static_cast<std::size_t>(scale), '0') + ")";
-    } else {
-      out += "(" + digits + std::string(static_cast<std::size_t>(-scale), '0') + ")";
-    }
-  }
-  return out;
-}
 
 // The noun a report uses for a body of this shape: "block 1", "rod 2".
 std::string shape_noun(Shape shape) {
@@ -213,24 +113,6 @@ std::string body_phrase(const Body& body) {
   bool numeric = !body.name.empty();
   for (char c : body.name) numeric = numeric && std::isdigit(static_cast<unsigned char>(c)) != 0;
   return numeric ? shape_noun(body.shape) + " " + body.name : body.name;
-}
-
-std::string names_of(const GiNaC::symtab& names) {
-  std::string out;
-  for (const auto& [name, value] : names) {
-    if (name == "pi") continue;
-    if (!out.empty()) out += ", ";
-    out += name;
-  }
-  return out.empty() ? "(none)" : out;
-}
-
-// The first symbol name in GiNaC's "symbol \"z\" not found" message.
-std::string missing_symbol(const std::string& message) {
-  const auto open = message.find('"');
-  const auto close = open == std::string::npos ? open : message.find('"', open + 1);
-  if (close == std::string::npos) return {};
-  return message.substr(open + 1, close - open - 1);
 }
 
 int body_index(const Mechanism& m, const std::string& name) {
@@ -255,38 +137,11 @@ System::System(const Mechanism& mechanism) : mechanism_(mechanism), tree_(spanni
 ex System::quantity(const Quantity& q, bool time_allowed) const {
   GiNaC::symtab names = names_;
   if (time_allowed) names["t"] = t_;
-  GiNaC::parser reader(names, true, allowed_functions());
-  if (q.text.size() > kMaxExpressionLength)
-    throw Error::input(where(q.pos) + "the expression is " + std::to_string(q.text.size()) +
-                       " characters long; valid: at most " + std::to_string(kMaxExpressionLength));
-  check_exponents(q);
-  ex parsed;
-  try {
-    parsed = reader(exact_decimals(q.text));
-  } catch (const std::exception& e) {
-    const std::string message = e.what();
-    const std::string name = missing_symbol(message);
-    if (message.find("not found") != std::string::npos && !name.empty())
-      throw Error::input(where(q.pos) + "unknown symbol '" + name + "' in \"" + q.text + "\"; valid: " +
-                         names_of(names) + (time_allowed ? "" : " (t only in [[force]] and [[torque]] values)"));
-    if (message.find("division by zero") != std::string::npos)
-      throw Error::input(where(q.pos) + "the expression \"" + q.text +
-                         "\" divides by zero; valid: an expression finite at the given values");
-    if (message.find("no function") != std::string::npos || message.find("unknown function") != std::string::npos)
-      throw Error::input(where(q.pos) + "unknown function in \"" + q.text + "\"; valid: sin, cos, tan, sqrt, exp");
-    throw Error::input(where(q.pos) + "cannot read the expression \"" + q.text +
-                       "\"; write numbers, names, + - * / ^, parentheses, sin cos tan sqrt exp, pi");
-  }
-  // Powers with a large whole exponent would make the equations explode when expanded.
-  for (auto it = parsed.preorder_begin(); it != parsed.preorder_end(); ++it)
-    if (GiNaC::is_a<GiNaC::power>(*it) && GiNaC::is_a<GiNaC::numeric>(it->op(1)) &&
-        !GiNaC::is_a<GiNaC::numeric>(it->op(0))) {
-      const auto& exponent = GiNaC::ex_to<GiNaC::numeric>(it->op(1));
-      if (!exponent.is_real() || GiNaC::abs(exponent) > kMaxExponent)
-        throw Error::input(where(q.pos) + "the power in \"" + q.text + "\" is too high; valid: exponents from -" +
-                           std::to_string(kMaxExponent) + " to " + std::to_string(kMaxExponent));
-    }
-  return parsed;
+  std::string origin = where(q.pos);
+  if (origin.size() >= 2 && origin.compare(origin.size() - 2, 2, ": ") == 0) origin.resize(origin.size() - 2);
+  return read_expression(q.text, origin,
+                         {names, time_allowed ? std::string_view() : "(t only in [[force]] and [[torque]] values)",
+                          &equation_functions()});
 }
 
 void System::add_parameters() {
