@@ -2,6 +2,7 @@
 // on stderr: an MP4 (H.264 through the FFmpeg libraries), a numbered PNG sequence, or
 // one still (PNG, SVG, PDF). Everything is checked before any work starts; outputs
 // appear whole or not at all.
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -21,6 +22,7 @@
 #include "pipeline/mechanism_clip.hpp"
 #include "render/settings.hpp"
 #include "render/theme.hpp"
+#include "scene/scene_builder.hpp"
 #include "symbolic/loop_closure.hpp"
 
 namespace linkage::cli {
@@ -31,7 +33,7 @@ struct RenderFlags {
   InputOptions inputs;
   SimulationFlags simulation;
   std::string out = "linkage.mp4", frames, quality = "medium", size, fps, duration, speed, at;
-  std::string camera = "follow", view, theme = "light", title;
+  std::string camera = "follow", view, theme = "light", title, arrow_scale;
   std::vector<std::string> show, hide;
   bool quiet = false, stats = false;
   CLI::Option* out_option = nullptr;
@@ -78,6 +80,12 @@ RenderSettings resolve_settings(const RenderFlags& f) {
   s.theme = f.theme;
   if (f.title_option->count() > 0) s.title = f.title;
   apply_show_hide(s.elements, f.show, f.hide);
+  static constexpr std::array<std::string_view, 2> kMechanismKinds{"joint", "applied"};
+  if (!f.arrow_scale.empty())
+    s.arrow_scale =
+        parse_arrow_scale_request(f.arrow_scale, "--arrow-scale",
+                                  f.mechanism.chosen() ? std::span<const std::string_view>(kMechanismKinds)
+                                                       : std::span<const std::string_view>(kArrowKindNames));
   s.validate();
   return s;
 }
@@ -251,6 +259,13 @@ void register_render(CLI::App& app) {
       sub->add_option("--title", f->title, "Title line (default \"" + RenderSettings{}.title + "\"; \"\" for none)")
           ->type_name("TEXT")
           ->group(look);
+  sub->add_option("--arrow-scale", f->arrow_scale,
+                  "Arrow lengths: each kind its own scale (default); common (every force one scale, so the pin "
+                  "force reads against gravity; common=N_PER_CM sets it); KIND=N_PER_CM,... fixes kinds (pin, "
+                  "gravity, velocity; with --mechanism joint, applied). Arrows too short to see are drawn dashed "
+                  "at a least length, labelled with their value")
+      ->type_name("SPEC")
+      ->group(look);
   sub->add_option("--trail", f->trails,
                   "With --mechanism: draw the path of a body's point over the last 2 s, repeatable: --trail 3.B")
       ->type_name("BODY.POINT")

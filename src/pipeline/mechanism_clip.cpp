@@ -12,6 +12,7 @@
 #include "pipeline/encode_frames.hpp"
 #include "render/cairo_util.hpp"
 #include "render/mechanism_painter.hpp"
+#include "render/scene_painter.hpp"
 #include "scene/mechanism_scene.hpp"
 
 namespace linkage {
@@ -39,7 +40,7 @@ std::vector<BodyPoint> resolve_trails(const MechanismGeometry& geometry, const s
 class MechanismFrames {
  public:
   MechanismFrames(const MechanismGeometry& geometry, const MechanismMotion& motion, const MechanismClip& clip)
-      : scene_(geometry, motion, resolve_trails(geometry, clip.trails), kTrailSeconds),
+      : scene_(geometry, motion, resolve_trails(geometry, clip.trails), kTrailSeconds, clip.settings.arrow_scale),
         motion_(motion),
         settings_(clip.settings),
         labels_{clip.settings.title, run_label(clip.simulation)} {
@@ -51,6 +52,7 @@ class MechanismFrames {
     // Room at the top for the title and the time, which would hide what is under them.
     if (!follow_) view.ymax += kTitleBand * (view.ymax - view.ymin);
     camera_ = Camera(view, settings_.width, settings_.height);
+    scene_.set_shortest_arrow(shortest_arrow_px(style_) / camera_.scale());
   }
 
   void draw(std::size_t k, Frame& frame) {

@@ -11,6 +11,7 @@
 #include <string_view>
 
 #include "render/camera.hpp"
+#include "scene/arrow_scale.hpp"
 #include "scene/elements.hpp"
 
 namespace linkage {
@@ -43,6 +44,7 @@ struct RenderSettings {
   View view;  // for CameraMode::fixed
   std::string theme = "light";
   std::string title = "Two blocks joined by a pin, falling freely";
+  ArrowScaleRequest arrow_scale;  // --arrow-scale
 
   /// round(duration / speed x fps).
   [[nodiscard]] long frame_count() const;

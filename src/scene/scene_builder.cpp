@@ -18,7 +18,15 @@ void add_arrow(DrawList& out, const SceneOptions& options, ArrowKind kind, const
                std::string_view tag) {
   const ArrowScale& scale = scale_of(options, kind);
   if (!scale.drawable()) return;
-  out.arrows.push_back({kind, tail, value * scale.metres_per_unit, tag});
+  Arrow arrow{kind, tail, value * scale.metres_per_unit, tag, value.norm()};
+  const double length = arrow.vector.norm();
+  if (length > 0 && length < options.shortest_arrow) {
+    arrow.vector *= options.shortest_arrow / length;
+    arrow.stretched = true;
+  }
+  // At one scale the forces' values are said too, so their ratio can be read off.
+  arrow.valued = arrow.stretched || (options.common_force_scale && kind != ArrowKind::velocity);
+  out.arrows.push_back(arrow);
 }
 
 void add_trail(const Params& p, const SceneOptions& options, const Motion& motion, std::size_t index, DrawList& out) {
@@ -62,16 +70,52 @@ double default_longest_arrow(const Params& p) {
 }
 
 SceneOptions scene_options_for(const Params& p, const Motion& motion, ElementSet elements, bool relative_to_com,
-                               double longest_arrow) {
+                               const ArrowScaleRequest& request, double longest_arrow) {
   SceneOptions options;
   options.elements = elements;
   options.relative_to_com = relative_to_com;
   if (!(longest_arrow > 0)) longest_arrow = default_longest_arrow(p);
   const std::array<double, kArrowKinds> maxima = arrow_maxima(p, motion, relative_to_com);
   const std::array<Element, kArrowKinds> shown_by{Element::pin_force, Element::gravity, Element::velocity};
-  for (std::size_t kind = 0; kind < kArrowKinds; ++kind)
-    if (elements.has(shown_by[kind])) options.arrow_scales[kind] = choose_arrow_scale(maxima[kind], longest_arrow);
+  constexpr auto pin = static_cast<std::size_t>(ArrowKind::pin_force);
+  constexpr auto gravity = static_cast<std::size_t>(ArrowKind::gravity);
+  ArrowScale common;
+  if (request.common) {
+    // Over the forces shown only: a hidden gravity does not shrink the pin force.
+    double largest = 0;
+    for (const std::size_t kind : {pin, gravity})
+      if (elements.has(shown_by[kind])) largest = std::max(largest, maxima[kind]);
+    common = request.common_units_per_cm > 0 ? arrow_scale_of(request.common_units_per_cm)
+                                             : choose_arrow_scale(largest, longest_arrow);
+    options.common_force_scale = true;
+  }
+  for (std::size_t kind = 0; kind < kArrowKinds; ++kind) {
+    if (!elements.has(shown_by[kind])) continue;
+    if (const double fixed = request.fixed_for(kArrowKindNames[kind]); fixed > 0)
+      options.arrow_scales[kind] = arrow_scale_of(fixed);
+    else if (request.common && kind != static_cast<std::size_t>(ArrowKind::velocity))
+      options.arrow_scales[kind] = common;
+    else
+      options.arrow_scales[kind] = choose_arrow_scale(maxima[kind], longest_arrow);
+  }
   return options;
+}
+
+bool any_stretched(const Params& p, const SceneOptions& options, const Motion& motion) {
+  const auto short_at = [&](ArrowKind kind, double magnitude) {
+    const double length = magnitude * scale_of(options, kind).metres_per_unit;
+    return scale_of(options, kind).drawable() && length > 0 && length < options.shortest_arrow;
+  };
+  if (short_at(ArrowKind::gravity, p.m * p.g)) return true;
+  for (const MotionSample& sample : motion.samples) {
+    const BodyState& s = sample.state;
+    const Vec2 frame = options.relative_to_com ? system_com_velocity(s) : Vec2::Zero();
+    if ((motion.has_pin_force && short_at(ArrowKind::pin_force, sample.pin_force.norm())) ||
+        short_at(ArrowKind::velocity, (Vec2(s.x1_dot, s.y1_dot) - frame).norm()) ||
+        short_at(ArrowKind::velocity, (Vec2(s.x2_dot, s.y2_dot) - frame).norm()))
+      return true;
+  }
+  return false;
 }
 
 void build_scene(const Params& p, const SceneOptions& options, const Motion& motion, std::size_t index, DrawList& out) {
