@@ -67,11 +67,14 @@ RenderSettings resolve_settings(const RenderFlags& f) {
   if (!f.speed.empty()) s.speed = parse_number(f.speed, "--speed", "simulated s per video s");
   if (!f.at.empty()) s.at = parse_number(f.at, "--at", "s");
   // --view alone implies the fixed camera; with another camera it is a mistake.
+  // "--view fbd" is the free-body view instead, with any camera.
   const bool camera_given = f.camera_option->count() > 0;
+  s.free_body = f.view == "fbd";
+  const std::string rectangle = s.free_body ? "" : f.view;
   s.camera =
-      camera_given ? parse_camera(f.camera, "--camera") : (f.view.empty() ? CameraMode::follow : CameraMode::fixed);
-  if (!f.view.empty()) {
-    s.view = parse_view(f.view, "--view");
+      camera_given ? parse_camera(f.camera, "--camera") : (rectangle.empty() ? CameraMode::follow : CameraMode::fixed);
+  if (!rectangle.empty()) {
+    s.view = parse_view(rectangle, "--view");
     if (s.camera != CameraMode::fixed)
       throw Error::input("--view: applies only to --camera fixed (the " + f.camera + " camera chooses its own view)");
   } else if (s.camera == CameraMode::fixed) {
@@ -249,8 +252,10 @@ void register_render(CLI::App& app) {
                          ->type_name("MODE")
                          ->group(look);
   f->view_option =
-      sub->add_option("--view", f->view, "World rectangle xmin,ymin,xmax,ymax in metres for the fixed camera")
-          ->type_name("X0,Y0,X1,Y1")
+      sub->add_option("--view", f->view,
+                      "World rectangle xmin,ymin,xmax,ymax in metres for the fixed camera, or fbd: the free-body "
+                      "view (the blocks drawn apart at the pin, each with its forces)")
+          ->type_name("X0,Y0,X1,Y1|fbd")
           ->group(look);
   sub->add_option("--theme", f->theme, "Colours: " + theme_name_list() + " (default light; palettes in assets/themes)")
       ->type_name("NAME")

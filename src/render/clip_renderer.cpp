@@ -20,7 +20,7 @@ bool any_arrows(const SceneOptions& options) {
 // The camera of the first frame: how far the scene reaches decides the scale.
 Camera first_camera(const Params& p, const Motion& motion, const RenderSettings& settings,
                     const SceneOptions& options) {
-  const double arrows = any_arrows(options) ? default_longest_arrow(p) : 0.0;
+  const double arrows = (any_arrows(options) ? default_longest_arrow(p) : 0.0) + 0.5 * options.explode;
   switch (settings.camera) {
     case CameraMode::fixed:
       return {settings.view, settings.width, settings.height};
@@ -45,11 +45,14 @@ std::string seconds_text(double seconds) {
 
 std::vector<LegendRow> legend_rows(const Theme& theme, const SceneOptions& options, bool follow, bool stretched) {
   using Glyph = LegendRow::Glyph;
+  std::vector<LegendRow> rows;
+  if (options.explode > 0)
+    rows.push_back(
+        {Glyph::none, theme.text_muted, "free-body view: the blocks drawn apart at P, each with its loads", ""});
   const ElementSet& shown = options.elements;
   const auto scale = [&](ArrowKind kind, std::string_view unit) {
     return describe_arrow_scale(options.arrow_scales[static_cast<std::size_t>(kind)], unit);
   };
-  std::vector<LegendRow> rows;
   // One scale for both forces: said once more on its own row, so their lengths are read
   // as comparable.
   const std::string common = options.common_force_scale ? " (common)" : "";
@@ -63,7 +66,7 @@ std::vector<LegendRow> legend_rows(const Theme& theme, const SceneOptions& optio
   if (stretched)
     rows.push_back(
         {Glyph::stretched_arrow, theme.text_muted, "too short to see", "drawn longer; its label gives the value"});
-  if (shown.has(Element::trail))
+  if (shown.has(Element::trail) && options.explode <= 0)
     rows.push_back({Glyph::line, theme.trail, "path of P", "last " + seconds_text(options.trail_seconds)});
   if (shown.has(Element::com)) rows.push_back({Glyph::com, theme.com, "centres of mass", ""});
   // Paths and velocities are then relative to G: say so.
@@ -81,6 +84,8 @@ ClipRenderer::ClipRenderer(const Params& params, const Motion& motion, const Ren
   style_.u = DrawStyle::unit_for(settings_.width, settings_.height);
   const bool follow = settings_.camera == CameraMode::follow;
   scene_options_ = scene_options_for(params_, motion_, settings_.elements, follow, settings_.arrow_scale);
+  // Apart by more than two of the longest arrows, so the halves' pin forces never meet.
+  if (settings_.free_body) scene_options_.explode = 2 * default_longest_arrow(params_) + 0.1 * params_.L;
   base_camera_ = first_camera(params_, motion_, settings_, scene_options_);
   // Too short to see: drawn longer, its label giving the value; not when the blocks
   // themselves are too small to carry names (a fit camera over a long fall).

@@ -45,6 +45,7 @@ struct RenderSettings {
   std::string theme = "light";
   std::string title = "Two blocks joined by a pin, falling freely";
   ArrowScaleRequest arrow_scale;  // --arrow-scale
+  bool free_body = false;         // --view fbd: the blocks drawn apart, each with its loads
 
   /// round(duration / speed x fps).
   [[nodiscard]] long frame_count() const;

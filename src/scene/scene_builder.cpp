@@ -124,30 +124,44 @@ void build_scene(const Params& p, const SceneOptions& options, const Motion& mot
   const MotionSample& sample = motion.samples[index];
   const BodyState& s = sample.state;
   const double D = p.pin_offset();
-  const Vec2 c1(s.x1, s.y1), c2(s.x2, s.y2);
-  const Vec2 pin1 = c1 + D * direction(s.theta1);  // P as block 1 has it
-  const Vec2 pin2 = c2 - D * direction(s.theta2);  // P as block 2 has it (differs by Case 1's drift)
+  Vec2 c1(s.x1, s.y1), c2(s.x2, s.y2);
+  Vec2 pin1 = c1 + D * direction(s.theta1);  // P as block 1 has it
+  Vec2 pin2 = c2 - D * direction(s.theta2);  // P as block 2 has it (differs by Case 1's drift)
   const Vec2 com = system_com(s);
+  const bool exploded = options.explode > 0;
+  if (exploded) {
+    // The free-body view: each block moved half the gap away from the other along the
+    // line of their centres, its pin point and loads with it.
+    const Vec2 apart = (c2 - c1).norm() > 0 ? Vec2((c2 - c1).normalized()) : Vec2::UnitX();
+    c1 -= 0.5 * options.explode * apart;
+    pin1 -= 0.5 * options.explode * apart;
+    c2 += 0.5 * options.explode * apart;
+    pin2 += 0.5 * options.explode * apart;
+  }
 
-  if (shown.has(Element::trail)) add_trail(p, options, motion, index, out);
+  if (shown.has(Element::trail) && !exploded) add_trail(p, options, motion, index, out);
 
   if (shown.has(Element::blocks)) {
-    out.blocks.push_back({1, block_corners(p, s.x1, s.y1, s.theta1), c1});
-    out.blocks.push_back({2, block_corners(p, s.x2, s.y2, s.theta2), c2});
+    out.blocks.push_back({1, block_corners(p, c1.x(), c1.y(), s.theta1), c1});
+    out.blocks.push_back({2, block_corners(p, c2.x(), c2.y(), s.theta2), c2});
   }
   const bool tags = shown.has(Element::labels);
   if (shown.has(Element::com)) {
     out.markers.push_back(marker(MarkerKind::com, c1));
     out.markers.push_back(marker(MarkerKind::com, c2));
-    out.markers.push_back(marker(MarkerKind::com_system, com));
+    if (!exploded) out.markers.push_back(marker(MarkerKind::com_system, com));
   }
   if (shown.has(Element::pin)) {
-    Marker pin = marker(MarkerKind::pin, pin1);
-    if (tags) {
-      pin.tag = "P";
-      pin.tag_direction = pin_tag_direction(sample, pin1, com);
+    // Apart, each block has its own half of the pin.
+    for (const Vec2& at : {pin1, pin2}) {
+      Marker pin = marker(MarkerKind::pin, at);
+      if (tags) {
+        pin.tag = "P";
+        pin.tag_direction = pin_tag_direction(sample, at, exploded ? Vec2(at == pin1 ? c1 : c2) : com);
+      }
+      out.markers.push_back(pin);
+      if (!exploded) break;
     }
-    out.markers.push_back(pin);
   }
 
   if (shown.has(Element::gravity)) {

@@ -6,6 +6,8 @@
 //   gravity  (0, -m g) at each centre of mass
 //   velocity C1', C2' (minus G' in the frame falling with G)
 //   trail    P over the last `trail_seconds`, fading with age
+// The free-body view (`explode`) moves the blocks apart along the line of their centres,
+// each with its own pin point and loads.
 // In a frame that follows G (`relative_to_com`) the trail and the velocities are those
 // an observer falling with G sees; the blocks are where they are.
 #include <array>
@@ -29,6 +31,7 @@ struct SceneOptions {
   bool relative_to_com = false;
   double trail_seconds = 2.0;
   double shortest_arrow = 0;  // m: a shorter arrow (not zero) is drawn this long, marked stretched
+  double explode = 0;         // m: > 0 draws the free-body view, the blocks this far apart (no trail, no G)
 };
 
 /// The longest arrow drawn (metres): 3/4 of D, within L/4 .. L/2.

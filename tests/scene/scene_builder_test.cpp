@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "model/kinematics.hpp"
 #include "scene/scene_test_support.hpp"
@@ -212,6 +213,38 @@ TEST(SceneBuilder, FixedScalesAreKeptPerKind) {
   EXPECT_NEAR(find_arrow(list, ArrowKind::gravity)->vector.norm(), p.m * p.g / 2.0 * 0.01, 1e-12);
   EXPECT_NEAR(find_arrow(list, ArrowKind::pin_force)->vector.norm(), motion.samples[0].pin_force.norm() / 0.001 * 0.01,
               1e-12);
+}
+
+TEST(SceneBuilder, FreeBodyViewDrawsTheBlocksApartEachWithItsPinPointAndLoads) {
+  const Params p;
+  const Motion motion = test::still_motion(p, State{}, true);
+  SceneOptions options = scene_options_for(p, motion, ElementSet::defaults(), false);
+  options.explode = 0.4;
+  DrawList list;
+  build_scene(p, options, motion, 0, list);
+  const BodyState& s = motion.samples[0].state;
+  const Vec2 c1(s.x1, s.y1), c2(s.x2, s.y2), apart = (c2 - c1).normalized();
+  ASSERT_EQ(list.blocks.size(), 2U);
+  EXPECT_NEAR((list.blocks[0].centre - (c1 - 0.2 * apart)).norm(), 0, 1e-15);
+  EXPECT_NEAR((list.blocks[1].centre - (c2 + 0.2 * apart)).norm(), 0, 1e-15);
+  EXPECT_TRUE(list.trail.empty());
+  // Two halves of the pin 0.4 m apart, no system centre of mass.
+  std::vector<Vec2> pins;
+  for (const Marker& m : list.markers) {
+    EXPECT_NE(m.kind, MarkerKind::com_system);
+    if (m.kind == MarkerKind::pin) pins.push_back(m.at);
+  }
+  ASSERT_EQ(pins.size(), 2U);
+  EXPECT_NEAR((pins[1] - pins[0]).norm(), 0.4, 1e-12);
+  // Each pin force starts at its block's own half of the pin; F on 1 and -F on 2 still opposite.
+  const Arrow* f1 = find_arrow(list, ArrowKind::pin_force, 0);
+  const Arrow* f2 = find_arrow(list, ArrowKind::pin_force, 1);
+  ASSERT_NE(f1, nullptr);
+  ASSERT_NE(f2, nullptr);
+  EXPECT_NEAR((f1->tail - pins[0]).norm(), 0, 1e-15);
+  EXPECT_NEAR((f2->tail - pins[1]).norm(), 0, 1e-15);
+  EXPECT_NEAR((f1->vector + f2->vector).norm(), 0, 1e-15);
+  EXPECT_NEAR((find_arrow(list, ArrowKind::gravity, 1)->tail - list.blocks[1].centre).norm(), 0, 1e-15);
 }
 
 }  // namespace
