@@ -72,6 +72,8 @@ TEST(LabelLayout, HomeworkNamesKeepClearOfEachOtherArrowsAndBlocks) {
           }
           if (!a.block) {
             EXPECT_FALSE(touches(a.box, segments)) << text;
+            // Nor the title, legend, scale bar or HUD (the first boxes taken).
+            for (std::size_t panel = 0; panel < 4; ++panel) EXPECT_FALSE(overlaps(a.box, layout.boxes[panel])) << text;
           }
         }
       }
