@@ -179,20 +179,46 @@ ForceLayout layout_forces(cairo_t* cr, const DrawStyle& style, const Camera& cam
     obstacles.boxes.push_back({at.x() - r, at.y() - r, 2 * r, 2 * r});
   }
   const std::size_t markers = obstacles.boxes.size();
-  for (const List::Label& label : list.labels) {
-    // At the centre, unless a joint sits there (a piston's pin): then just beside it.
-    Rect box = box_around(cr, style, body_font(style), label.text, camera.to_pixels(label.at));
+  for (const List::Arrow& arrow : list.arrows)
+    obstacles.segments.push_back({camera.to_pixels(arrow.tail), camera.to_pixels(arrow.tail + arrow.vector)});
+  for (std::size_t i = 0; i < list.labels.size(); ++i) {
+    const List::Label& label = list.labels[i];
     const auto on_a_joint = [&](const Rect& b) {
       return std::any_of(obstacles.boxes.begin() + static_cast<std::ptrdiff_t>(markers - list.markers.size()),
                          obstacles.boxes.begin() + static_cast<std::ptrdiff_t>(markers),
                          [&](const Rect& m) { return overlaps(b, m); });
     };
-    for (int step = 1; step <= 4 && on_a_joint(box); ++step) box.y += 0.5 * box.height;
+    // At the centre, else halfway to a point of the outline, clear of the joints and the
+    // arrows; else just below the centre, clear of a joint there (a piston's pin).
+    const Vec2 centre = camera.to_pixels(label.at);
+    std::vector<Vec2> places{centre};
+    if (i < list.outlines.size()) {
+      const std::vector<Vec2>& outline = list.outlines[i].points;
+      const std::size_t stride = std::max<std::size_t>(1, outline.size() / 8);
+      for (std::size_t k = 0; k < outline.size(); k += stride)
+        places.push_back(centre + 0.5 * (camera.to_pixels(outline[k]) - centre));
+    }
+    Rect box = box_around(cr, style, body_font(style), label.text, centre);
+    bool placed = false;
+    for (const Vec2& at : places) {
+      const Rect candidate = box_around(cr, style, body_font(style), label.text, at);
+      if (!on_a_joint(candidate) && !touches(candidate, obstacles.segments)) {
+        box = candidate;
+        placed = true;
+        break;
+      }
+    }
+    if (!placed) {
+      // Beside the body, as near its centre as the arrows along it allow.
+      const Placement beside =
+          place_label(box, centre, {0, -1}, {obstacles.boxes, obstacles.segments}, style, width, height);
+      placed = beside.clear;
+      if (placed) box = beside.box;
+    }
+    for (int step = 1; !placed && step <= 4 && on_a_joint(box); ++step) box.y += 0.5 * box.height;
     layout.body_labels.push_back(box);
     obstacles.boxes.push_back(box);
   }
-  for (const List::Arrow& arrow : list.arrows)
-    obstacles.segments.push_back({camera.to_pixels(arrow.tail), camera.to_pixels(arrow.tail + arrow.vector)});
   for (const List::Torque& torque : list.torques) {
     const std::vector<Vec2> points = arc_points(camera, torque, 12);
     for (std::size_t i = 1; i < points.size(); ++i) obstacles.segments.push_back({points[i - 1], points[i]});
