@@ -3,6 +3,7 @@
 // one still (PNG, SVG, PDF). Everything is checked before any work starts; outputs
 // appear whole or not at all.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -22,6 +23,7 @@
 #include "pipeline/mechanism_clip.hpp"
 #include "render/settings.hpp"
 #include "render/theme.hpp"
+#include "scene/scene_builder.hpp"
 #include "symbolic/loop_closure.hpp"
 
 namespace linkage::cli {
@@ -32,7 +34,7 @@ struct RenderFlags {
   InputOptions inputs;
   SimulationFlags simulation;
   std::string out = "linkage.mp4", frames, quality = "medium", size, fps, duration, speed, at;
-  std::string camera = "follow", view, theme = "light", title, panel, caption;
+  std::string camera = "follow", view, theme = "light", title, panel, caption, arrow_scale;
   std::vector<std::string> show, hide;
   bool quiet = false, stats = false;
   CLI::Option* out_option = nullptr;
@@ -78,11 +80,14 @@ RenderSettings resolve_settings(const RenderFlags& f) {
   if (!f.speed.empty()) s.speed = parse_number(f.speed, "--speed", "simulated s per video s");
   if (!f.at.empty()) s.at = parse_number(f.at, "--at", "s");
   // --view alone implies the fixed camera; with another camera it is a mistake.
+  // "--view fbd" is the free-body view instead, with any camera.
   const bool camera_given = f.camera_option->count() > 0;
+  s.free_body = f.view == "fbd";
+  const std::string rectangle = s.free_body ? "" : f.view;
   s.camera =
-      camera_given ? parse_camera(f.camera, "--camera") : (f.view.empty() ? CameraMode::follow : CameraMode::fixed);
-  if (!f.view.empty()) {
-    s.view = parse_view(f.view, "--view");
+      camera_given ? parse_camera(f.camera, "--camera") : (rectangle.empty() ? CameraMode::follow : CameraMode::fixed);
+  if (!rectangle.empty()) {
+    s.view = parse_view(rectangle, "--view");
     if (s.camera != CameraMode::fixed)
       throw Error::input("--view: applies only to --camera fixed (the " + f.camera + " camera chooses its own view)");
   } else if (s.camera == CameraMode::fixed) {
@@ -91,6 +96,12 @@ RenderSettings resolve_settings(const RenderFlags& f) {
   s.theme = f.theme;
   if (f.title_option->count() > 0) s.title = f.title;
   apply_show_hide(s.elements, f.show, f.hide);
+  static constexpr std::array<std::string_view, 2> kMechanismKinds{"joint", "applied"};
+  if (!f.arrow_scale.empty())
+    s.arrow_scale =
+        parse_arrow_scale_request(f.arrow_scale, "--arrow-scale",
+                                  f.mechanism.chosen() ? std::span<const std::string_view>(kMechanismKinds)
+                                                       : std::span<const std::string_view>(kArrowKindNames));
   s.panel = split_panel(f.panel);
   if (!f.caption.empty()) s.captions = {{0.0, f.caption}};
   try {
@@ -262,8 +273,10 @@ void register_render(CLI::App& app) {
                          ->type_name("MODE")
                          ->group(look);
   f->view_option =
-      sub->add_option("--view", f->view, "World rectangle xmin,ymin,xmax,ymax in metres for the fixed camera")
-          ->type_name("X0,Y0,X1,Y1")
+      sub->add_option("--view", f->view,
+                      "World rectangle xmin,ymin,xmax,ymax in metres for the fixed camera, or fbd: the free-body "
+                      "view (the blocks drawn apart at the pin, each with its forces)")
+          ->type_name("X0,Y0,X1,Y1|fbd")
           ->group(look);
   sub->add_option("--theme", f->theme, "Colours: " + theme_name_list() + " (default light; palettes in assets/themes)")
       ->type_name("NAME")
@@ -272,6 +285,13 @@ void register_render(CLI::App& app) {
       sub->add_option("--title", f->title, "Title line (default \"" + RenderSettings{}.title + "\"; \"\" for none)")
           ->type_name("TEXT")
           ->group(look);
+  sub->add_option("--arrow-scale", f->arrow_scale,
+                  "Arrow lengths: each kind its own scale (default); common (every force one scale, so the pin "
+                  "force reads against gravity; common=N_PER_CM sets it); KIND=N_PER_CM,... fixes kinds (pin, "
+                  "gravity, velocity; with --mechanism joint, applied). Arrows too short to see are drawn dashed "
+                  "at a least length, labelled with their value")
+      ->type_name("SPEC")
+      ->group(look);
   sub->add_option("--panel", f->panel,
                   "Plot these quantities beside the motion, with a cursor at the frame's time: --panel theta1,theta2 "
                   "(the names a lesson's plot step takes; with --mechanism its columns, e.g. 2.theta,B.force_x)")

@@ -1,10 +1,12 @@
 // Reading and validating a lesson file (lesson.hpp). Everything is checked here, before
 // any step runs: a lesson that does not validate renders nothing.
 #include <algorithm>
+#include <array>
 #include <fstream>
 #include <functional>
 #include <limits>
 #include <map>
+#include <span>
 #include <sstream>
 
 #include "core/error.hpp"
@@ -24,6 +26,7 @@
 #include "pipeline/panel_data.hpp"
 #include "render/theme.hpp"
 #include "report/mechanism_solution.hpp"
+#include "scene/scene_builder.hpp"
 #include "symbolic/system.hpp"
 
 namespace linkage::lesson {
@@ -594,6 +597,13 @@ class Parser {
       const std::vector<std::string_view> themes(theme_names.begin(), theme_names.end());
       if (auto t = r.choice("theme", themes)) g.theme = *t;
       if (auto t = r.string("title")) g.title = *t;
+      if (auto a = r.string("arrow_scale")) {
+        static constexpr std::array<std::string_view, 2> kMechanismKinds{"joint", "applied"};
+        g.arrow_scale =
+            parse_arrow_scale_request(*a, r.where("arrow_scale") + ": " + r.context() + ": arrow_scale",
+                                      s.mechanism.empty() ? std::span<const std::string_view>(kArrowKindNames)
+                                                          : std::span<const std::string_view>(kMechanismKinds));
+      }
       std::vector<std::string> show = r.strings("show").value_or(std::vector<std::string>{});
       std::vector<std::string> hide = r.strings("hide").value_or(std::vector<std::string>{});
       apply_show_hide(g.elements, show, hide);

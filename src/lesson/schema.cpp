@@ -83,7 +83,7 @@ constexpr std::array<KeySpec, 3> kSimulateKeys{{
      "energy, momentum_x, ..., constraint_velocity_error)."},
 }};
 
-constexpr std::array<KeySpec, 18> kRenderKeys{{
+constexpr std::array<KeySpec, 19> kRenderKeys{{
     {"out", "string", "(required)", "The file in the output folder: .mp4 (a clip), .png, .svg or .pdf (a still)."},
     {"caption", "string", "none", "Text under the clip or still in the lesson document."},
     {"fps", "integer", "30", "Frames per second (as the render command's fps); draft quality lowers it to 15."},
@@ -100,6 +100,9 @@ constexpr std::array<KeySpec, 18> kRenderKeys{{
     {"view", "string", "none", "xmin,ymin,xmax,ymax in metres; implies camera = \"fixed\"."},
     {"theme", "string", "\"light\"", "Colour theme: light, dark or print."},
     {"title", "string", "the render default", "The title line drawn in the clip (\"\" for none)."},
+    {"arrow_scale", "string", "each kind its own",
+     "Arrow scales as the render command's --arrow-scale: common, common=N_PER_CM or KIND=N_PER_CM,... (pin, gravity, "
+     "velocity; with a mechanism joint, applied)."},
     {"mechanism", "string", "the lesson's",
      "Draw this mechanism (a shipped name or a file relative to the lesson) instead of the homework; show, hide, "
      "camera and view are the homework's."},

@@ -14,6 +14,7 @@
 #include "render/cairo_util.hpp"
 #include "render/frame_layout.hpp"
 #include "render/mechanism_painter.hpp"
+#include "render/scene_painter.hpp"
 #include "scene/mechanism_scene.hpp"
 
 namespace linkage {
@@ -42,7 +43,7 @@ class MechanismFrames {
  public:
   MechanismFrames(const MechanismGeometry& geometry, const MechanismMotion& motion, const MechanismClip& clip,
                   const RenderSettings& settings)
-      : scene_(geometry, motion, resolve_trails(geometry, clip.trails), kTrailSeconds),
+      : scene_(geometry, motion, resolve_trails(geometry, clip.trails), kTrailSeconds, clip.settings.arrow_scale),
         motion_(motion),
         settings_(settings),
         labels_{clip.settings.title, run_label(clip.simulation)} {
@@ -54,6 +55,7 @@ class MechanismFrames {
     // Room at the top for the title and the time, which would hide what is under them.
     if (!follow_) view.ymax += kTitleBand * (view.ymax - view.ymin);
     camera_ = Camera(view, settings_.width, settings_.height);
+    scene_.set_shortest_arrow(shortest_arrow_px(style_) / camera_.scale());
   }
 
   void draw(std::size_t k, Frame& frame) {

@@ -6,7 +6,6 @@
 #include <utility>
 
 #include "core/error.hpp"
-#include "render/scene_painter.hpp"
 
 namespace linkage {
 namespace {
@@ -21,7 +20,7 @@ bool any_arrows(const SceneOptions& options) {
 // The camera of the first frame: how far the scene reaches decides the scale.
 Camera first_camera(const Params& p, const Motion& motion, const RenderSettings& settings,
                     const SceneOptions& options) {
-  const double arrows = any_arrows(options) ? default_longest_arrow(p) : 0.0;
+  const double arrows = (any_arrows(options) ? default_longest_arrow(p) : 0.0) + 0.5 * options.explode;
   switch (settings.camera) {
     case CameraMode::fixed:
       return {settings.view, settings.width, settings.height};
@@ -44,21 +43,30 @@ std::string seconds_text(double seconds) {
   return buffer.data();
 }
 
-std::vector<LegendRow> legend_rows(const Theme& theme, const SceneOptions& options, bool follow) {
+std::vector<LegendRow> legend_rows(const Theme& theme, const SceneOptions& options, bool follow, bool stretched) {
   using Glyph = LegendRow::Glyph;
+  std::vector<LegendRow> rows;
+  if (options.explode > 0)
+    rows.push_back(
+        {Glyph::none, theme.text_muted, "free-body view: the blocks drawn apart at P, each with its loads", ""});
   const ElementSet& shown = options.elements;
   const auto scale = [&](ArrowKind kind, std::string_view unit) {
     return describe_arrow_scale(options.arrow_scales[static_cast<std::size_t>(kind)], unit);
   };
-  std::vector<LegendRow> rows;
+  // One scale for both forces: said once more on its own row, so their lengths are read
+  // as comparable.
+  const std::string common = options.common_force_scale ? " (common)" : "";
   if (shown.has(Element::pin_force))
-    rows.push_back({Glyph::arrow, theme.pin_force, "pin force", scale(ArrowKind::pin_force, "N")});
+    rows.push_back({Glyph::arrow, theme.pin_force, "pin force", scale(ArrowKind::pin_force, "N") + common});
   if (shown.has(Element::gravity))
-    rows.push_back({Glyph::arrow, theme.gravity, "weight", scale(ArrowKind::gravity, "N")});
+    rows.push_back({Glyph::arrow, theme.gravity, "weight", scale(ArrowKind::gravity, "N") + common});
   if (shown.has(Element::velocity))
     rows.push_back({Glyph::arrow, theme.velocity, follow ? "velocity relative to G" : "velocity",
                     scale(ArrowKind::velocity, "m/s")});
-  if (shown.has(Element::trail))
+  if (stretched)
+    rows.push_back(
+        {Glyph::stretched_arrow, theme.text_muted, "too short to see", "drawn longer; its label gives the value"});
+  if (shown.has(Element::trail) && options.explode <= 0)
     rows.push_back({Glyph::line, theme.trail, "path of P", "last " + seconds_text(options.trail_seconds)});
   if (shown.has(Element::com)) rows.push_back({Glyph::com, theme.com, "centres of mass", ""});
   // Paths and velocities are then relative to G: say so.
@@ -75,15 +83,21 @@ ClipRenderer::ClipRenderer(const Params& params, const Motion& motion, const Ren
   style_.theme = &theme_;
   style_.u = DrawStyle::unit_for(settings_.width, settings_.height);
   const bool follow = settings_.camera == CameraMode::follow;
-  scene_options_ = scene_options_for(params_, motion_, settings_.elements, follow);
+  scene_options_ = scene_options_for(params_, motion_, settings_.elements, follow, settings_.arrow_scale);
+  // Apart by more than two of the longest arrows, so the halves' pin forces never meet.
+  if (settings_.free_body) scene_options_.explode = 2 * default_longest_arrow(params_) + 0.1 * params_.L;
   base_camera_ = first_camera(params_, motion_, settings_, scene_options_);
+  // Too short to see: drawn longer, its label giving the value; not when the blocks
+  // themselves are too small to carry names (a fit camera over a long fall).
+  if (params_.L * base_camera_.scale() >= 3 * style_.block_label_size())
+    scene_options_.shortest_arrow = shortest_arrow_px(style_) / base_camera_.scale();
   grid_.spacing = grid_spacing_for(base_camera_, settings_.width, settings_.height);
   grid_.anchor = follow ? base_camera_.centre() : Vec2::Zero();
   grid_.relative = follow;
 
   const ElementSet& shown = settings_.elements;
   if (shown.has(Element::legend)) {
-    legend_ = legend_rows(theme_, scene_options_, follow);
+    legend_ = legend_rows(theme_, scene_options_, follow, any_stretched(params_, scene_options_, motion_));
     scale_label_ = describe_length(grid_.spacing.mantissa, grid_.spacing.exponent);
     scale_length_px_ = grid_.spacing.metres() * base_camera_.scale();
   }
@@ -182,7 +196,8 @@ void ClipRenderer::prepare_static_layers() {
 void ClipRenderer::paint_dynamic(std::size_t index, cairo_t* cr) {
   build_scene(params_, scene_options_, motion_, index, list_);
   stats_.trail_points_drawn += static_cast<std::int64_t>(list_.trail.size());
-  paint_scene(cr, style_, list_, camera_at(index));
+  const std::array<Rect, 4> occupied{title_layout_.rect, legend_rect_, scale_rect_, hud_rect_};
+  paint_scene(cr, style_, list_, camera_at(index), settings_.width, settings_.height, occupied, labels_);
 }
 
 void ClipRenderer::draw(std::size_t index, Frame& frame) {

@@ -16,6 +16,7 @@
 #include "render/cairo_util.hpp"
 #include "render/camera.hpp"
 #include "render/overlays.hpp"
+#include "render/scene_painter.hpp"
 #include "render/settings.hpp"
 #include "render/style.hpp"
 #include "render/theme.hpp"
@@ -61,6 +62,8 @@ class ClipRenderer {
   [[nodiscard]] Camera camera_at(std::size_t index) const;
   [[nodiscard]] const SceneOptions& scene_options() const { return scene_options_; }
   [[nodiscard]] const std::vector<LegendRow>& legend() const { return legend_; }
+  /// The names of the frame drawn last, where they went.
+  [[nodiscard]] const SceneLabels& labels() const { return labels_; }
   [[nodiscard]] const RenderStats& stats() const { return stats_; }
 
  private:
@@ -101,6 +104,7 @@ class ClipRenderer {
   Rect legend_rect_, scale_rect_, hud_rect_;
 
   DrawList list_;
+  SceneLabels labels_;
   std::vector<Target> targets_;
   cairo::SurfacePtr background_;
   std::vector<Panel> panels_;

@@ -16,6 +16,7 @@ using List = MechanismDrawList;
 constexpr const char* kJointName = "joint forces";
 constexpr const char* kAppliedName = "applied forces";
 constexpr const char* kCutNote = "cut short: its label gives the value";
+constexpr const char* kStretchedNote = "dashed: too short to see at its scale, drawn longer; its label gives the value";
 
 text::Font label_font(const DrawStyle& style) { return {style.small_size(), false}; }
 text::Font body_font(const DrawStyle& style) { return {style.small_size(), true}; }
@@ -30,31 +31,6 @@ Rect box_around(cairo_t* cr, const DrawStyle& style, const text::Font& font, con
 
 Vec2 centre_of(const Rect& r) { return {r.x + 0.5 * r.width, r.y + 0.5 * r.height}; }
 
-bool inside(const Rect& r, int width, int height) {
-  return r.x >= 0 && r.y >= 0 && r.x + r.width <= width && r.y + r.height <= height;
-}
-
-// Whether the segment a-b passes through r (Liang-Barsky clipping).
-bool crosses(const Rect& r, const Vec2& a, const Vec2& b) {
-  double t0 = 0, t1 = 1;
-  const Vec2 d = b - a;
-  const std::array<std::pair<double, double>, 4> sides{
-      {{-d.x(), a.x() - r.x}, {d.x(), r.x + r.width - a.x()}, {-d.y(), a.y() - r.y}, {d.y(), r.y + r.height - a.y()}}};
-  for (const auto& [p, q] : sides) {
-    if (p == 0) {
-      if (q < 0) return false;
-    } else {
-      const double t = q / p;
-      if (p < 0)
-        t0 = std::max(t0, t);
-      else
-        t1 = std::min(t1, t);
-      if (t0 > t1) return false;
-    }
-  }
-  return true;
-}
-
 // A world arc as pixel points, from start to start + sweep.
 std::vector<Vec2> arc_points(const Camera& camera, const List::Torque& torque, int count) {
   std::vector<Vec2> points;
@@ -67,60 +43,8 @@ std::vector<Vec2> arc_points(const Camera& camera, const List::Torque& torque, i
 
 struct Obstacles {
   std::vector<Rect> boxes;
-  std::vector<std::pair<Vec2, Vec2>> segments;
+  std::vector<Segment> segments;
 };
-
-// The first place around `head`, along `direction` first and then turning away from it
-// and moving out, that the pass's rules allow; the plain place past the head if none.
-PlacedLabel place(const Rect& size, const Vec2& head, const Vec2& direction, const Obstacles& obstacles,
-                  const DrawStyle& style, int width, int height) {
-  constexpr double degree = std::numbers::pi / 180;
-  static constexpr std::array<double, 9> kTurns{0, 30, -30, 60, -60, 90, -90, 135, -135};
-  const double gap = 3 * style.u, step = 0.6 * size.height;
-  const auto candidate = [&](int ring, double turn) {
-    const double c = std::cos(turn * degree), s = std::sin(turn * degree);
-    const Vec2 d(c * direction.x() - s * direction.y(), s * direction.x() + c * direction.y());
-    // Just far enough along d that the box clears the head by `gap + ring step`.
-    const double clear = gap + ring * step;
-    const double along_x = std::fabs(d.x()) > 1e-9 ? (0.5 * size.width + clear) / std::fabs(d.x()) : 1e300;
-    const double along_y = std::fabs(d.y()) > 1e-9 ? (0.5 * size.height + clear) / std::fabs(d.y()) : 1e300;
-    const Vec2 at = head + std::min(along_x, along_y) * d;
-    return Rect{at.x() - 0.5 * size.width, at.y() - 0.5 * size.height, size.width, size.height};
-  };
-  for (int pass = 0; pass < 3; ++pass)
-    for (int ring = 0; ring < 8; ++ring)
-      for (const double turn : kTurns) {
-        const Rect box = candidate(ring, turn);
-        if (pass < 2 && !inside(box, width, height)) continue;
-        if (std::any_of(obstacles.boxes.begin(), obstacles.boxes.end(),
-                        [&](const Rect& r) { return overlaps(box, r); }))
-          continue;
-        if (pass == 0 && std::any_of(obstacles.segments.begin(), obstacles.segments.end(),
-                                     [&](const auto& s) { return crosses(box, s.first, s.second); }))
-          continue;
-        // A line to the head once the box no longer touches it.
-        const Vec2 near(std::clamp(head.x(), box.x, box.x + box.width),
-                        std::clamp(head.y(), box.y, box.y + box.height));
-        return {box, head, {}, false, (near - head).norm() > gap + 4 * style.u};
-      }
-  return {candidate(0, 0), head, {}, false, false};
-}
-
-Rect legend_rect(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List::Legend& legend, int height) {
-  if (!(legend.metres > 0) || !(legend.joint || legend.applied)) return {};
-  const text::Font font = label_font(style);
-  const double u = style.u, row = 1.7 * font.size, pad = 8 * u;
-  double names = 0;
-  if (legend.joint) names = std::max(names, text::width(cr, font, kJointName));
-  if (legend.applied) names = std::max(names, text::width(cr, font, kAppliedName));
-  const double arrow = legend.metres * camera.scale();
-  double content = names + 8 * u + arrow + 6 * u + text::width(cr, font, legend.value.c_str());
-  if (legend.cut) content = std::max(content, 40 * u + 6 * u + text::width(cr, font, kCutNote));
-  const int rows = (legend.joint ? 1 : 0) + (legend.applied ? 1 : 0) + (legend.cut ? 1 : 0);
-  const double h = rows * row + 2 * 0.6 * pad;
-  return {std::floor(style.padding()), std::floor(height - style.padding() - h), std::ceil(content + 2 * pad),
-          std::ceil(h)};
-}
 
 // The double bar across a cut arrow's shaft, a third of the way from its tail: a gap in
 // the background colour between two slanted strokes, as a drawing marks a broken-off length.
@@ -168,49 +92,79 @@ void paint_torque(cairo_t* cr, const DrawStyle& style, const Camera& camera, con
               camera.to_pixels(torque.centre + torque.radius * Vec2(std::cos(end), std::sin(end))), colour);
 }
 
+// The legend's rows: per kind a reference arrow at the kind's scale, its value and the
+// scale per centimetre; then what a cut and a stretched arrow mean. Measures the
+// content's width and height; paints too when `paint`.
+Vec2 legend_rows(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List::Legend& legend, const Vec2& at,
+                 bool paint) {
+  const Theme& theme = *style.theme;
+  const text::Font font = label_font(style);
+  const text::Metrics m = text::metrics(cr, font);
+  const double u = style.u, row = 1.7 * font.size;
+  double names = 0;
+  if (legend.joint) names = std::max(names, text::width(cr, font, kJointName));
+  if (legend.applied) names = std::max(names, text::width(cr, font, kAppliedName));
+  double y = at.y(), widest = 0;
+  const auto baseline = [&] { return y + 0.5 * row + 0.5 * (m.ascent - m.descent); };
+  const auto scale_row = [&](const char* name, const Rgba& colour, double metres, const std::string& value,
+                             const std::string& scale) {
+    const double arrow = metres * camera.scale(), x = at.x() + names + 8 * u;
+    const std::string note = value + "   (" + scale + ")";
+    if (paint) {
+      text::draw(cr, font, at.x(), baseline(), name, theme.text);
+      paint_arrow(cr, style, {x, y + 0.5 * row}, {x + arrow, y + 0.5 * row}, colour);
+      text::draw(cr, font, x + arrow + 6 * u, baseline(), note.c_str(), theme.text);
+    }
+    widest = std::max(widest, names + 8 * u + arrow + 6 * u + text::width(cr, font, note.c_str()));
+    y += row;
+  };
+  const auto marked_row = [&](const char* note, bool cut) {
+    const Vec2 tail(at.x(), y + 0.5 * row), tip(at.x() + 40 * u, y + 0.5 * row);
+    if (paint) {
+      if (cut) {
+        paint_arrow(cr, style, tail, tip, theme.text_muted);
+        paint_cut(cr, style, tail, tip, theme.text_muted);
+      } else {
+        paint_stretched_arrow(cr, style, tail, tip, theme.text_muted);
+      }
+      text::draw(cr, font, tip.x() + 6 * u, baseline(), note, theme.text_muted);
+    }
+    widest = std::max(widest, 46 * u + text::width(cr, font, note));
+    y += row;
+  };
+  if (legend.joint) scale_row(kJointName, theme.pin_force, legend.metres, legend.value, legend.joint_scale);
+  if (legend.applied)
+    scale_row(kAppliedName, theme.velocity, legend.applied_metres, legend.applied_value, legend.applied_scale);
+  if (legend.cut) marked_row(kCutNote, true);
+  if (legend.stretched) marked_row(kStretchedNote, false);
+  return {widest, y - at.y()};
+}
+
+Rect legend_rect(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List::Legend& legend, int height) {
+  if (!(legend.metres > 0) || !(legend.joint || legend.applied)) return {};
+  const double pad = 8 * style.u;
+  const Vec2 content = legend_rows(cr, style, camera, legend, Vec2::Zero(), false);
+  const double h = content.y() + 2 * 0.6 * pad;
+  return {std::floor(style.padding()), std::floor(height - style.padding() - h), std::ceil(content.x() + 2 * pad),
+          std::ceil(h)};
+}
+
 void paint_legend(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List::Legend& legend,
                   const Rect& rect) {
   if (rect.empty()) return;
   const Theme& theme = *style.theme;
-  const text::Font font = label_font(style);
-  const double u = style.u, row = 1.7 * font.size, pad = 8 * u;
+  const double pad = 8 * style.u;
   cairo_new_path(cr);
   cairo_rectangle(cr, rect.x + 0.5, rect.y + 0.5, rect.width - 1, rect.height - 1);
   set_colour(cr, theme.panel);
   cairo_fill_preserve(cr);
   set_colour(cr, theme.panel_edge);
-  cairo_set_line_width(cr, std::max(1.0, std::round(0.6 * u)));
+  cairo_set_line_width(cr, std::max(1.0, std::round(0.6 * style.u)));
   cairo_stroke(cr);
-  const text::Metrics m = text::metrics(cr, font);
-  double names = 0;
-  if (legend.joint) names = std::max(names, text::width(cr, font, kJointName));
-  if (legend.applied) names = std::max(names, text::width(cr, font, kAppliedName));
-  const double arrow = legend.metres * camera.scale();
-  double y = rect.y + 0.6 * pad;
-  const auto baseline = [&] { return y + 0.5 * row + 0.5 * (m.ascent - m.descent); };
-  // The reference arrow at the very scale of the frame's arrows.
-  const auto scale_row = [&](const char* name, const Rgba& colour) {
-    const double x = rect.x + pad;
-    text::draw(cr, font, x, baseline(), name, theme.text);
-    paint_arrow(cr, style, {x + names + 8 * u, y + 0.5 * row}, {x + names + 8 * u + arrow, y + 0.5 * row}, colour);
-    text::draw(cr, font, x + names + 8 * u + arrow + 6 * u, baseline(), legend.value.c_str(), theme.text);
-    y += row;
-  };
-  if (legend.joint) scale_row(kJointName, theme.pin_force);
-  if (legend.applied) scale_row(kAppliedName, theme.velocity);
-  if (legend.cut) {
-    const Vec2 tail(rect.x + pad, y + 0.5 * row), tip(rect.x + pad + 40 * u, y + 0.5 * row);
-    paint_arrow(cr, style, tail, tip, theme.text_muted);
-    paint_cut(cr, style, tail, tip, theme.text_muted);
-    text::draw(cr, font, tip.x() + 6 * u, baseline(), kCutNote, theme.text_muted);
-  }
+  legend_rows(cr, style, camera, legend, {rect.x + pad, rect.y + 0.6 * pad}, true);
 }
 
 }  // namespace
-
-bool overlaps(const Rect& a, const Rect& b) {
-  return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
-}
 
 ForceLayout layout_forces(cairo_t* cr, const DrawStyle& style, const Camera& camera, const MechanismDrawList& list,
                           int width, int height, const std::vector<Rect>& occupied) {
@@ -225,31 +179,63 @@ ForceLayout layout_forces(cairo_t* cr, const DrawStyle& style, const Camera& cam
     obstacles.boxes.push_back({at.x() - r, at.y() - r, 2 * r, 2 * r});
   }
   const std::size_t markers = obstacles.boxes.size();
-  for (const List::Label& label : list.labels) {
-    // At the centre, unless a joint sits there (a piston's pin): then just beside it.
-    Rect box = box_around(cr, style, body_font(style), label.text, camera.to_pixels(label.at));
+  for (const List::Arrow& arrow : list.arrows)
+    obstacles.segments.push_back({camera.to_pixels(arrow.tail), camera.to_pixels(arrow.tail + arrow.vector)});
+  for (std::size_t i = 0; i < list.labels.size(); ++i) {
+    const List::Label& label = list.labels[i];
     const auto on_a_joint = [&](const Rect& b) {
       return std::any_of(obstacles.boxes.begin() + static_cast<std::ptrdiff_t>(markers - list.markers.size()),
                          obstacles.boxes.begin() + static_cast<std::ptrdiff_t>(markers),
                          [&](const Rect& m) { return overlaps(b, m); });
     };
-    for (int step = 1; step <= 4 && on_a_joint(box); ++step) box.y += 0.5 * box.height;
+    // At the centre, else halfway to a point of the outline, clear of the joints and the
+    // arrows; else just below the centre, clear of a joint there (a piston's pin).
+    const Vec2 centre = camera.to_pixels(label.at);
+    std::vector<Vec2> places{centre};
+    if (i < list.outlines.size()) {
+      const std::vector<Vec2>& outline = list.outlines[i].points;
+      const std::size_t stride = std::max<std::size_t>(1, outline.size() / 8);
+      for (std::size_t k = 0; k < outline.size(); k += stride)
+        places.push_back(centre + 0.5 * (camera.to_pixels(outline[k]) - centre));
+    }
+    Rect box = box_around(cr, style, body_font(style), label.text, centre);
+    bool placed = false;
+    for (const Vec2& at : places) {
+      const Rect candidate = box_around(cr, style, body_font(style), label.text, at);
+      if (!on_a_joint(candidate) && !touches(candidate, obstacles.segments)) {
+        box = candidate;
+        placed = true;
+        break;
+      }
+    }
+    if (!placed) {
+      // Beside the body, as near its centre as the arrows along it allow.
+      const Placement beside =
+          place_label(box, centre, {0, -1}, {obstacles.boxes, obstacles.segments}, style, width, height);
+      placed = beside.clear;
+      if (placed) box = beside.box;
+    }
+    for (int step = 1; !placed && step <= 4 && on_a_joint(box); ++step) box.y += 0.5 * box.height;
     layout.body_labels.push_back(box);
     obstacles.boxes.push_back(box);
   }
-  for (const List::Arrow& arrow : list.arrows)
-    obstacles.segments.emplace_back(camera.to_pixels(arrow.tail), camera.to_pixels(arrow.tail + arrow.vector));
   for (const List::Torque& torque : list.torques) {
     const std::vector<Vec2> points = arc_points(camera, torque, 12);
-    for (std::size_t i = 1; i < points.size(); ++i) obstacles.segments.emplace_back(points[i - 1], points[i]);
+    for (std::size_t i = 1; i < points.size(); ++i) obstacles.segments.push_back({points[i - 1], points[i]});
   }
+  // The bodies, edge by edge (a point mass's outline is one point: its marker is enough).
+  for (const List::Outline& outline : list.outlines)
+    for (std::size_t i = 0; outline.points.size() > 2 && i < outline.points.size(); ++i)
+      obstacles.segments.push_back({camera.to_pixels(outline.points[i]),
+                                    camera.to_pixels(outline.points[(i + 1) % outline.points.size()]),
+                                    static_cast<int>(outline.body)});
 
   const text::Font font = label_font(style);
   const auto add = [&](const std::string& text, const Vec2& head, const Vec2& direction, bool applied) {
     const Rect size = box_around(cr, style, font, text, head);
-    PlacedLabel placed = place(size, head, direction, obstacles, style, width, height);
-    placed.text = text;
-    placed.applied = applied;
+    const Placement at =
+        place_label(size, head, direction, {obstacles.boxes, obstacles.segments}, style, width, height);
+    PlacedLabel placed{at.box, head, text, applied, at.leader};
     obstacles.boxes.push_back(placed.box);
     layout.labels.push_back(std::move(placed));
   };
@@ -279,7 +265,10 @@ void paint_forces(cairo_t* cr, const DrawStyle& style, const Camera& camera, con
   for (const List::Arrow& arrow : list.arrows) {
     const Rgba& colour = arrow.kind == List::Arrow::Kind::applied ? theme.velocity : theme.pin_force;
     const Vec2 tail = camera.to_pixels(arrow.tail), tip = camera.to_pixels(arrow.tail + arrow.vector);
-    paint_arrow(cr, style, tail, tip, colour);
+    if (arrow.stretched)
+      paint_stretched_arrow(cr, style, tail, tip, colour);
+    else
+      paint_arrow(cr, style, tail, tip, colour);
     if (arrow.cut) paint_cut(cr, style, tail, tip, colour);
   }
   // Labels after every arrow, so no shaft crosses a label.

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "render/camera.hpp"
+#include "render/label_layout.hpp"
 #include "render/overlays.hpp"
 #include "render/style.hpp"
 #include "scene/mechanism_scene.hpp"
@@ -42,8 +43,5 @@ struct ForceLayout {
 /// The arrows and torque arcs, then the laid-out labels and the legend.
 void paint_forces(cairo_t* cr, const DrawStyle& style, const Camera& camera, const MechanismDrawList& list,
                   const ForceLayout& layout);
-
-/// Whether two boxes share any area.
-[[nodiscard]] bool overlaps(const Rect& a, const Rect& b);
 
 }  // namespace linkage

@@ -251,6 +251,9 @@ void paint_legend(cairo_t* cr, const DrawStyle& style, const std::vector<LegendR
       case LegendRow::Glyph::arrow:
         paint_arrow(cr, style, {x, centre}, {x + glyph_width, centre}, row.colour);
         break;
+      case LegendRow::Glyph::stretched_arrow:
+        paint_stretched_arrow(cr, style, {x, centre}, {x + glyph_width, centre}, row.colour);
+        break;
       case LegendRow::Glyph::com:
         paint_com_symbol(cr, style, {x + 0.5 * glyph_width, centre}, style.com_radius());
         break;

@@ -47,7 +47,7 @@ void paint_title(cairo_t* cr, const DrawStyle& style, const std::string& title, 
 
 /// A legend row: a glyph in a colour, a name, and a note (an arrow scale).
 struct LegendRow {
-  enum class Glyph { arrow, line, com, none };
+  enum class Glyph { arrow, stretched_arrow, line, com, none };
   Glyph glyph = Glyph::none;
   Rgba colour;
   std::string name;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <string>
 
@@ -49,6 +50,33 @@ void paint_arrow(cairo_t* cr, const DrawStyle& style, const Vec2& tail, const Ve
   cairo_line_to(cr, right.x(), right.y());
   cairo_close_path(cr);
   cairo_fill(cr);
+}
+
+void paint_stretched_arrow(cairo_t* cr, const DrawStyle& style, const Vec2& tail, const Vec2& tip, const Rgba& colour) {
+  const Vec2 along = tip - tail;
+  const double length = along.norm();
+  if (length < 0.5) return;
+  const Vec2 unit = along / length;
+  // The head at full size, then the shaft up to it in short dashes.
+  const Vec2 normal(-unit.y(), unit.x());
+  const Vec2 base = tip - style.arrow_head_length() * unit;
+  const Vec2 left = base + style.arrow_head_half_width() * normal,
+             right = base - style.arrow_head_half_width() * normal;
+  set_colour(cr, colour);
+  cairo_move_to(cr, tip.x(), tip.y());
+  cairo_line_to(cr, left.x(), left.y());
+  cairo_line_to(cr, right.x(), right.y());
+  cairo_close_path(cr);
+  cairo_fill(cr);
+  const Vec2 end = base + 0.3 * style.arrow_head_length() * unit;
+  const std::array<double, 2> dashes{2.2 * style.u, 2.2 * style.u};
+  cairo_set_line_width(cr, 0.8 * style.arrow_width());
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+  cairo_set_dash(cr, dashes.data(), 2, 0);
+  cairo_move_to(cr, tail.x(), tail.y());
+  cairo_line_to(cr, end.x(), end.y());
+  cairo_stroke(cr);
+  cairo_set_dash(cr, nullptr, 0, 0);
 }
 
 void paint_com_symbol(cairo_t* cr, const DrawStyle& style, const Vec2& at, double radius) {
@@ -120,9 +148,13 @@ void paint_blocks(cairo_t* cr, const DrawStyle& style, const DrawList& list, con
 }
 
 void paint_arrows(cairo_t* cr, const DrawStyle& style, const DrawList& list, const Camera& camera) {
-  for (const Arrow& arrow : list.arrows)
-    paint_arrow(cr, style, camera.to_pixels(arrow.tail), camera.to_pixels(arrow.tail + arrow.vector),
-                arrow_colour(*style.theme, arrow.kind));
+  for (const Arrow& arrow : list.arrows) {
+    const Vec2 tail = camera.to_pixels(arrow.tail), tip = camera.to_pixels(arrow.tail + arrow.vector);
+    if (arrow.stretched)
+      paint_stretched_arrow(cr, style, tail, tip, arrow_colour(*style.theme, arrow.kind));
+    else
+      paint_arrow(cr, style, tail, tip, arrow_colour(*style.theme, arrow.kind));
+  }
 }
 
 void paint_markers(cairo_t* cr, const DrawStyle& style, const DrawList& list, const Camera& camera) {
@@ -151,97 +183,174 @@ bool room_for_labels(const DrawStyle& style, const DrawList& list, const Camera&
   return length >= 3 * style.block_label_size();
 }
 
-// Boxes already taken by names and marks in this frame, so a later name can move
-// aside. Fixed capacity: a frame allocates nothing.
-class TakenBoxes {
- public:
-  struct Box {
-    double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-  };
-  [[nodiscard]] bool free(const Box& b) const {
-    for (std::size_t i = 0; i < count_; ++i) {
-      const Box& o = boxes_[i];
-      if (b.x0 < o.x1 && o.x0 < b.x1 && b.y0 < o.y1 && o.y0 < b.y1) return false;
-    }
-    return true;
+// "16.3 mN": three significant digits with an SI prefix keeping the number in 1 .. 999.
+void format_value(char* out, std::size_t size, double value, const char* unit) {
+  static constexpr std::array<const char*, 7> kPrefixes{"n", "\u00b5", "m", "", "k", "M", "G"};
+  int group = 3;
+  while (group > 0 && value != 0 && std::fabs(value) < 0.9995) {
+    value *= 1000;
+    --group;
   }
-  void take(const Box& b) {
-    if (count_ < boxes_.size()) boxes_[count_++] = b;
+  while (group < 6 && std::fabs(value) >= 999.5) {
+    value /= 1000;
+    ++group;
   }
+  std::snprintf(out, size, "%.3g %s%s", value, kPrefixes[static_cast<std::size_t>(group)], unit);
+}
 
- private:
-  std::array<Box, 32> boxes_{};
-  std::size_t count_ = 0;
-};
-
-// The box of `s` centred (by its ink) at `at`, grown by `margin`.
-TakenBoxes::Box text_box(cairo_t* cr, const text::Font& font, const Vec2& at, const char* s, double margin) {
+// `s` with its box (by its ink, grown by `margin`) centred at `at`.
+Rect text_box(cairo_t* cr, const text::Font& font, const Vec2& at, const char* s, double margin) {
   text::use(cr, font);
   cairo_text_extents_t e;
   cairo_text_extents(cr, s, &e);
-  return {at.x() - 0.5 * e.width - margin, at.y() - 0.5 * e.height - margin, at.x() + 0.5 * e.width + margin,
-          at.y() + 0.5 * e.height + margin};
+  return {at.x() - 0.5 * e.width - margin, at.y() - 0.5 * e.height - margin, e.width + 2 * margin,
+          e.height + 2 * margin};
 }
 
-void paint_labels(cairo_t* cr, const DrawStyle& style, const DrawList& list, const Camera& camera) {
+Vec2 centre_of(const Rect& r) { return {r.x + 0.5 * r.width, r.y + 0.5 * r.height}; }
+
+}  // namespace
+
+void layout_scene_labels(cairo_t* cr, const DrawStyle& style, const DrawList& list, const Camera& camera, int width,
+                         int height, std::span<const Rect> occupied, SceneLabels& out) {
+  out.count = out.segment_count = out.box_count = 0;
+  const auto add_segment = [&](const Segment& segment) {
+    if (out.segment_count < out.segments.size()) out.segments[out.segment_count++] = segment;
+  };
+  const auto take = [&](const Rect& box) {
+    if (out.box_count < out.boxes.size()) out.boxes[out.box_count++] = box;
+  };
+  for (const Rect& r : occupied) take(r);
+  for (const Arrow& arrow : list.arrows)
+    add_segment({camera.to_pixels(arrow.tail), camera.to_pixels(arrow.tail + arrow.vector)});
+  const std::size_t arrows = out.segment_count;
+  for (const BlockShape& block : list.blocks)
+    for (std::size_t c = 0; c < block.corners.size(); ++c)
+      add_segment({camera.to_pixels(block.corners[c]), camera.to_pixels(block.corners[(c + 1) % block.corners.size()]),
+                   block.index});
   if (!room_for_labels(style, list, camera)) return;
-  const Theme& theme = *style.theme;
-  const Rgba halo = with_alpha(theme.background, 0.85);
-  const text::Font tag_font{style.text_size(), true};
-  const text::Font block_font{style.block_label_size(), true};
-  const double tag_halo = 0.3 * style.text_size();
-  TakenBoxes taken;
   for (const Marker& marker : list.markers) {
     const Vec2 at = camera.to_pixels(marker.at);
-    const double r = marker.kind == MarkerKind::com_system ? style.system_com_radius() : style.com_radius();
-    taken.take({at.x() - r, at.y() - r, at.x() + r, at.y() + r});
+    const double r = marker.kind == MarkerKind::com_system ? style.system_com_radius()
+                     : marker.kind == MarkerKind::pin      ? style.pin_radius()
+                                                           : style.com_radius();
+    take({at.x() - r, at.y() - r, 2 * r, 2 * r});
   }
+  const Theme& theme = *style.theme;
+  const text::Font tag_font{style.text_size(), true};
+  const text::Font block_font{style.block_label_size(), true};
+  const auto clear_of = [&](const Rect& box, std::size_t segments) {
+    for (std::size_t i = 0; i < out.box_count; ++i)
+      if (overlaps(box, out.boxes[i])) return false;
+    return !touches(box, std::span<const Segment>(out.segments.data(), segments));
+  };
+  const auto add = [&](const Rect& box, const Vec2& head, const char* text, const Rgba& colour, bool block,
+                       bool leader) {
+    if (out.count == out.labels.size()) return;
+    SceneLabels::Placed& placed = out.labels[out.count++];
+    placed.box = box;
+    placed.head = head;
+    std::snprintf(placed.text.data(), placed.text.size(), "%s", text);
+    placed.colour = colour;
+    placed.block = block;
+    placed.leader = leader;
+    take(box);
+  };
+  std::array<char, 48> text{};
+  // Each block's number on the block, halfway out along its free half or, if an arrow
+  // or mark is there, nearer the end or the centre.
   for (const Label& label : list.labels) {
-    const Vec2 at = camera.to_pixels(label.at);
+    std::snprintf(text.data(), text.size(), "%.*s", static_cast<int>(label.text.size()), label.text.data());
     const Rgba& colour = label.block == 0 ? theme.text : theme.block_edge[label.block == 1 ? 0 : 1];
-    const std::string s(label.text);  // short: no heap (small-string buffer)
-    text::draw_centred_with_halo(cr, block_font, at.x(), at.y(), s.c_str(), colour, halo, 0.25 * block_font.size);
-    taken.take(text_box(cr, block_font, at, s.c_str(), 0.0));
+    const BlockShape* block = nullptr;
+    for (const BlockShape& b : list.blocks)
+      if (b.index == label.block) block = &b;
+    const Vec2 centre = camera.to_pixels(block ? block->centre : label.at), at = camera.to_pixels(label.at);
+    Rect chosen = text_box(cr, block_font, at, text.data(), 0.1 * block_font.size);
+    // Along the block's axis on its free half first, then on its pin half, then a little
+    // to either side of the axis.
+    const Vec2 along = at - centre, across = 0.35 * Vec2(-along.y(), along.x());
+    bool found = false;
+    for (const double side : {0.0, 1.0, -1.0})
+      for (const double f : {1.0, 1.4, 0.6, 1.7, 0.3, -0.6, -1.0, -1.4, -1.7}) {
+        const Rect box =
+            text_box(cr, block_font, centre + f * along + side * across, text.data(), 0.1 * block_font.size);
+        if (!found && clear_of(box, arrows)) {
+          chosen = box;
+          found = true;
+        }
+      }
+    add(chosen, centre_of(chosen), text.data(), colour, true, false);
   }
-  // Marker names (P) clear of the system's centre-of-mass symbol, which is often close.
+  const auto place = [&](const Vec2& head, const Vec2& direction, const char* s, const Rgba& colour) {
+    const Rect size = text_box(cr, tag_font, head, s, 0.2 * style.text_size());
+    const LabelObstacles obstacles{std::span<const Rect>(out.boxes.data(), out.box_count),
+                                   std::span<const Segment>(out.segments.data(), out.segment_count)};
+    const Placement at = place_label(size, head, direction, obstacles, style, width, height);
+    add(at.box, head, s, colour, false, at.leader);
+  };
+  // Marker names (P) off to the side their direction says.
   for (const Marker& marker : list.markers) {
     if (marker.tag.empty()) continue;
-    const Vec2 direction(marker.tag_direction.x(), -marker.tag_direction.y());  // y down
-    const Vec2 at = camera.to_pixels(marker.at) + (style.system_com_radius() + 0.9 * style.text_size()) * direction;
-    const std::string s(marker.tag);
-    text::draw_centred_with_halo(cr, tag_font, at.x(), at.y(), s.c_str(), theme.text, halo, tag_halo);
-    taken.take(text_box(cr, tag_font, at, s.c_str(), 0.0));
+    std::snprintf(text.data(), text.size(), "%.*s", static_cast<int>(marker.tag.size()), marker.tag.data());
+    place(camera.to_pixels(marker.at), Vec2(marker.tag_direction.x(), -marker.tag_direction.y()), text.data(),
+          theme.text);
   }
-  // Arrow names beside the head, in the arrow's colour: on its left (so F and -F, which
-  // point opposite ways from P, get opposite sides), else on its right, else beyond the
-  // tip, else left out rather than drawn over another name. Pin forces first.
+  // Arrow names past the head, in the arrow's colour, with the value when the arrow is
+  // valued. Pin forces first: they are the point of the picture.
   for (const ArrowKind kind : {ArrowKind::pin_force, ArrowKind::gravity, ArrowKind::velocity}) {
     for (const Arrow& arrow : list.arrows) {
       if (arrow.kind != kind || arrow.tag.empty()) continue;
       const Vec2 tail = camera.to_pixels(arrow.tail), tip = camera.to_pixels(arrow.tail + arrow.vector);
       const double length = (tip - tail).norm();
-      if (length < 2 * style.arrow_head_length()) continue;  // too short to name without clutter
-      const Vec2 along = (tip - tail) / length;
-      const Vec2 left(along.y(), -along.x());  // pixels have y down
-      const Vec2 beside = tip - 0.5 * style.arrow_head_length() * along;
-      const double aside = style.arrow_head_half_width() + 0.8 * style.text_size();
-      const std::string s(arrow.tag);
-      for (const Vec2& at :
-           {Vec2(beside + aside * left), Vec2(beside - aside * left), Vec2(tip + 0.9 * style.text_size() * along)}) {
-        const TakenBoxes::Box box = text_box(cr, tag_font, at, s.c_str(), 0.15 * style.text_size());
-        if (!taken.free(box)) continue;
-        text::draw_centred_with_halo(cr, tag_font, at.x(), at.y(), s.c_str(), arrow_colour(theme, kind), halo,
-                                     tag_halo);
-        taken.take(box);
-        break;
+      if (length < 2 * style.arrow_head_length() && !arrow.stretched) continue;  // too short to name without clutter
+      const int n =
+          std::snprintf(text.data(), text.size(), "%.*s", static_cast<int>(arrow.tag.size()), arrow.tag.data());
+      if (arrow.valued && n > 0 && static_cast<std::size_t>(n) + 6 < text.size()) {
+        std::snprintf(text.data() + n, text.size() - static_cast<std::size_t>(n), " = ");
+        format_value(text.data() + n + 3, text.size() - static_cast<std::size_t>(n) - 3, arrow.magnitude,
+                     kind == ArrowKind::velocity ? "m/s" : "N");
+      }
+      place(tip, (tip - tail) / length, text.data(), arrow_colour(theme, kind));
+    }
+  }
+}
+
+namespace {
+
+void paint_labels(cairo_t* cr, const DrawStyle& style, const SceneLabels& labels) {
+  const Rgba halo = with_alpha(style.theme->background, 0.85);
+  const text::Font tag_font{style.text_size(), true};
+  const text::Font block_font{style.block_label_size(), true};
+  for (std::size_t i = 0; i < labels.count; ++i) {
+    const SceneLabels::Placed& label = labels.labels[i];
+    const Vec2 at = centre_of(label.box);
+    if (label.leader) {
+      // A thin line towards the head from the box's nearest point, stopping short of
+      // the mark there (the pin, an arrow's tip) so it never covers it.
+      const Vec2 near(std::clamp(label.head.x(), label.box.x, label.box.x + label.box.width),
+                      std::clamp(label.head.y(), label.box.y, label.box.y + label.box.height));
+      const Vec2 away = near - label.head;
+      const double stop = 1.6 * style.pin_radius();
+      if (away.norm() > 2 * stop) {
+        const Vec2 start = label.head + stop * away.normalized();
+        set_colour(cr, with_alpha(label.colour, 0.7));
+        cairo_set_line_width(cr, 0.8 * style.u);
+        cairo_move_to(cr, start.x(), start.y());
+        cairo_line_to(cr, near.x(), near.y());
+        cairo_stroke(cr);
       }
     }
+    const text::Font& font = label.block ? block_font : tag_font;
+    text::draw_centred_with_halo(cr, font, at.x(), at.y(), label.text.data(), label.colour, halo,
+                                 (label.block ? 0.25 : 0.3) * font.size);
   }
 }
 
 }  // namespace
 
-void paint_scene(cairo_t* cr, const DrawStyle& style, const DrawList& list, const Camera& camera) {
+void paint_scene(cairo_t* cr, const DrawStyle& style, const DrawList& list, const Camera& camera, int width, int height,
+                 std::span<const Rect> occupied, SceneLabels& labels) {
   cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
   paint_trail(cr, style, list, camera);
   paint_blocks(cr, style, list, camera);
@@ -249,7 +358,8 @@ void paint_scene(cairo_t* cr, const DrawStyle& style, const DrawList& list, cons
   // the pin; pin forces last among arrows, as they are the point of the picture.
   paint_arrows(cr, style, list, camera);
   paint_markers(cr, style, list, camera);
-  paint_labels(cr, style, list, camera);
+  layout_scene_labels(cr, style, list, camera, width, height, occupied, labels);
+  paint_labels(cr, style, labels);
 }
 
 }  // namespace linkage

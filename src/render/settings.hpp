@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "render/camera.hpp"
+#include "scene/arrow_scale.hpp"
 #include "scene/elements.hpp"
 
 namespace linkage {
@@ -52,6 +53,8 @@ struct RenderSettings {
   std::string title = "Two blocks joined by a pin, falling freely";
   std::vector<std::string> panel;  // quantities plotted beside the motion (column names)
   std::vector<Caption> captions;   // by increasing `at`
+  ArrowScaleRequest arrow_scale;   // --arrow-scale
+  bool free_body = false;          // --view fbd: the blocks drawn apart, each with its loads
 
   /// round(duration / speed x fps).
   [[nodiscard]] long frame_count() const;

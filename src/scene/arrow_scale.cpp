@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <cmath>
+
+#include "core/error.hpp"
 
 namespace linkage {
 namespace {
@@ -76,6 +79,74 @@ ArrowScale choose_arrow_scale(double largest_magnitude, double longest_arrow) {
   scale.exponent = round.exponent;
   scale.metres_per_unit = 0.01 / scale.units_per_cm();
   return scale;
+}
+
+ArrowScale arrow_scale_of(double units_per_cm) {
+  ArrowScale scale;
+  if (!(units_per_cm > 0) || !std::isfinite(units_per_cm)) return scale;
+  // Three significant digits: mantissa 100 .. 999.
+  int exponent = static_cast<int>(std::floor(std::log10(units_per_cm))) - 2;
+  auto mantissa = static_cast<int>(std::lround(units_per_cm / power_of_ten(exponent)));
+  if (mantissa >= 1000) {
+    mantissa = static_cast<int>(std::lround(mantissa / 10.0));
+    ++exponent;
+  }
+  scale.mantissa = mantissa;
+  scale.exponent = exponent;
+  scale.metres_per_unit = 0.01 / scale.units_per_cm();
+  return scale;
+}
+
+double ArrowScaleRequest::fixed_for(std::string_view kind) const {
+  for (const auto& [name, value] : fixed)
+    if (name == kind) return value;
+  return 0;
+}
+
+ArrowScaleRequest parse_arrow_scale_request(std::string_view text, const std::string& origin,
+                                            std::span<const std::string_view> kinds) {
+  std::string names;
+  for (const std::string_view kind : kinds) {
+    if (!names.empty()) names += ", ";
+    names += kind;
+  }
+  const auto bad = [&](std::string_view entry, const std::string& why) {
+    std::string message = origin;
+    message.append(": '").append(entry).append("' ").append(why);
+    message.append(
+        "; expected common, common=VALUE or KIND=VALUE (comma-separated; VALUE in units per cm, > 0; KIND "
+        "one of ");
+    message.append(names).append(")");
+    return Error::input(message);
+  };
+  ArrowScaleRequest request;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    const std::string_view entry = text.substr(start, comma - start);
+    start = comma + 1;
+    const std::size_t equals = entry.find('=');
+    const std::string_view kind = entry.substr(0, equals);
+    double value = 0;
+    if (equals != std::string_view::npos) {
+      const std::string_view number = entry.substr(equals + 1);
+      const auto [end, error] = std::from_chars(number.data(), number.data() + number.size(), value);
+      if (number.empty() || error != std::errc{} || end != number.data() + number.size() || !(value > 0) ||
+          !std::isfinite(value))
+        throw bad(entry, "has no positive number after '='");
+    }
+    if (kind == "common") {
+      request.common = true;
+      request.common_units_per_cm = value;
+    } else if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end()) {
+      throw bad(entry, "names no kind of arrow");
+    } else if (equals == std::string_view::npos) {
+      throw bad(entry, "needs a value (KIND=VALUE)");
+    } else {
+      request.fixed.emplace_back(std::string(kind), value);
+    }
+  }
+  return request;
 }
 
 std::string describe_arrow_scale(const ArrowScale& scale, std::string_view unit) {

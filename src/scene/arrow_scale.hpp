@@ -5,8 +5,11 @@
 // chosen so the largest arrow over the clip is at most a given length, and stated in
 // the legend
 // ("1 cm = 2 mN").
+#include <span>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 namespace linkage {
 
@@ -26,6 +29,28 @@ struct ArrowScale {
 
 /// "1 cm = 2 mN" for unit "N", with an SI prefix keeping the number in 1 .. 999.
 [[nodiscard]] std::string describe_arrow_scale(const ArrowScale& scale, std::string_view unit);
+
+/// The scale of `units_per_cm` (> 0, finite) rounded to three significant digits.
+[[nodiscard]] ArrowScale arrow_scale_of(double units_per_cm);
+
+/// What `--arrow-scale` asks for. By default each kind gets its own scale (the largest
+/// arrow of the clip at a set length); `common` gives every force one scale (so their
+/// lengths compare: the pin force beside gravity); `KIND=VALUE` fixes a kind's scale at
+/// VALUE units per centimetre, over either.
+struct ArrowScaleRequest {
+  bool common = false;
+  double common_units_per_cm = 0;                     // "common=VALUE"; 0: chosen from the clip
+  std::vector<std::pair<std::string, double>> fixed;  // kind name, units per cm
+
+  /// The fixed units per cm of `kind`, else 0.
+  [[nodiscard]] double fixed_for(std::string_view kind) const;
+  [[nodiscard]] bool is_default() const { return !common && fixed.empty(); }
+};
+
+/// "common", "common=VALUE" and "KIND=VALUE" entries, comma-separated; KIND one of
+/// `kinds`. Error::input naming `origin`, the bad entry and the valid forms otherwise.
+[[nodiscard]] ArrowScaleRequest parse_arrow_scale_request(std::string_view text, const std::string& origin,
+                                                          std::span<const std::string_view> kinds);
 
 /// A length in metres as people write it: "5 cm", "1 m", "200 m", "2 mm".
 [[nodiscard]] std::string describe_length(int mantissa, int exponent);

@@ -34,7 +34,10 @@ struct Arrow {
   ArrowKind kind = ArrowKind::pin_force;
   Vec2 tail = Vec2::Zero();
   Vec2 vector = Vec2::Zero();
-  std::string_view tag;  // a short name drawn at the head when labels are shown, e.g. "F"
+  std::string_view tag;    // a short name drawn at the head when labels are shown, e.g. "F on 1"
+  double magnitude = 0;    // N or m/s: the label gives it when `valued`
+  bool stretched = false;  // too short to see at its scale: drawn SceneOptions::shortest_arrow long
+  bool valued = false;     // the label says the magnitude (stretched, or forces at a common scale)
 };
 
 struct Marker {

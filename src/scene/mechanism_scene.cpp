@@ -213,6 +213,8 @@ std::string format_quantity(double value, const char* unit) {
   const double size = std::fabs(value);
   if (size != 0 && (size < 1e-3 || size >= 1e5))
     std::snprintf(buffer, sizeof buffer, "%.2e %s", value, unit);
+  else if (size >= 999.5)  // "1000 N", not "%g"'s "1e+03 N"
+    std::snprintf(buffer, sizeof buffer, "%.0f %s", value, unit);
   else
     std::snprintf(buffer, sizeof buffer, "%.3g %s", value, unit);
   return buffer;
@@ -228,7 +230,7 @@ void MechanismDrawList::clear() {
 }
 
 MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion& motion, std::vector<BodyPoint> trails,
-                               double trail_seconds)
+                               double trail_seconds, const ArrowScaleRequest& arrows)
     : geometry_(std::move(geometry)), motion_(motion), trails_(std::move(trails)), trail_seconds_(trail_seconds) {
   const std::size_t joints = geometry_.joints.size(), samples = motion_.samples.size();
   rail_span_.assign(joints, {1e300, -1e300});
@@ -284,15 +286,30 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
   const double typical_force = typical_of(largest_force);
   if (typical_force > 0 && std::isfinite(typical_force)) {
     force_scale_ = kTypicalShare * extent_ / typical_force;
+    if (arrows.common_units_per_cm > 0) force_scale_ = arrow_scale_of(arrows.common_units_per_cm).metres_per_unit;
+    applied_scale_ = force_scale_;
+    if (const double fixed = arrows.fixed_for("joint"); fixed > 0) force_scale_ = arrow_scale_of(fixed).metres_per_unit;
+    if (const double fixed = arrows.fixed_for("applied"); fixed > 0)
+      applied_scale_ = arrow_scale_of(fixed).metres_per_unit;
     arrow_cap_ = kCapFactor * kTypicalShare * extent_;
-    legend_.newtons = round_near(typical_force);
+    // The reference arrow: the typical force by default, else a round force about a
+    // typical arrow long at the scale asked for.
+    const auto reference = [&](double scale) {
+      return arrows.is_default() ? round_near(typical_force) : round_near(kTypicalShare * extent_ / scale);
+    };
+    legend_.newtons = reference(force_scale_);
     legend_.metres = legend_.newtons * force_scale_;
     legend_.value = format_quantity(legend_.newtons, "N");
+    legend_.applied_newtons = reference(applied_scale_);
+    legend_.applied_metres = legend_.applied_newtons * applied_scale_;
+    legend_.applied_value = format_quantity(legend_.applied_newtons, "N");
+    legend_.joint_scale = describe_arrow_scale(arrow_scale_of(0.01 / force_scale_), "N");
+    legend_.applied_scale = describe_arrow_scale(arrow_scale_of(0.01 / applied_scale_), "N");
     for (const MechanismGeometry::JointShape& joint : geometry_.joints)
       legend_.joint = legend_.joint || joint.points[0].body >= 0 || joint.points[1].body >= 0;
     legend_.applied = !geometry_.forces.empty();
     const double largest = *std::max_element(largest_force.begin(), largest_force.end());
-    legend_.cut = largest * force_scale_ > arrow_cap_;
+    legend_.cut = largest * std::max(force_scale_, applied_scale_) > arrow_cap_;
   }
   const double typical_torque = typical_of(largest_torque);
   if (typical_torque > 0 && std::isfinite(typical_torque)) torque_scale_ = kTypicalSweep / typical_torque;
@@ -315,6 +332,25 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
   }
 }
 
+void MechanismScene::set_shortest_arrow(double metres) {
+  shortest_ = metres;
+  legend_.stretched = false;
+  for (std::size_t k = 0; k < motion_.samples.size() && !legend_.stretched; ++k) {
+    const auto short_at = [&](double newtons, double scale) {
+      const double length = newtons * scale;
+      return length > 0 && length < shortest_ && length <= arrow_cap_;
+    };
+    for (std::size_t j = 0; j < geometry_.joints.size(); ++j) {
+      const auto& points = geometry_.joints[j].points;
+      if (points[0].body < 0 && points[1].body < 0) continue;
+      const std::vector<double>& force = motion_.samples[k].force;
+      if (short_at(std::hypot(force[3 * j], force[3 * j + 1]), force_scale_)) legend_.stretched = true;
+    }
+    for (const Vec2& f : applied_[k])
+      if (short_at(f.norm(), applied_scale_)) legend_.stretched = true;
+  }
+}
+
 Vec2 MechanismScene::centroid(std::size_t k) const {
   const std::vector<double>& pose = motion_.samples[k].pose;
   Vec2 sum = Vec2::Zero();
@@ -325,13 +361,17 @@ Vec2 MechanismScene::centroid(std::size_t k) const {
 
 MechanismDrawList::Arrow MechanismScene::force_arrow(MechanismDrawList::Arrow::Kind kind, const Vec2& at,
                                                      const Vec2& force, std::string label) const {
-  MechanismDrawList::Arrow arrow{kind, at, force_scale_ * force, force.norm(), false, std::move(label)};
+  const bool applied = kind == MechanismDrawList::Arrow::Kind::applied;
+  MechanismDrawList::Arrow arrow{kind,         at,    (applied ? applied_scale_ : force_scale_) * force,
+                                 force.norm(), false, std::move(label)};
   const double length = arrow.vector.norm();
-  if (length > arrow_cap_) {
-    // Cut to the cap; the label then says the value the length no longer shows.
-    arrow.vector *= arrow_cap_ / length;
-    arrow.cut = true;
-    if (kind == MechanismDrawList::Arrow::Kind::joint) arrow.label += ": " + format_quantity(arrow.force, "N");
+  if (length > arrow_cap_ || (length > 0 && length < shortest_)) {
+    // Cut to the cap, or stretched to be seen; the label then says the value the length
+    // no longer shows.
+    arrow.cut = length > arrow_cap_;
+    arrow.stretched = !arrow.cut;
+    arrow.vector *= (arrow.cut ? arrow_cap_ : shortest_) / length;
+    if (!applied) arrow.label += ": " + format_quantity(arrow.force, "N");
   }
   return arrow;
 }

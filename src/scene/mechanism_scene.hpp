@@ -11,6 +11,7 @@
 #include "core/types.hpp"
 #include "evaluate/mechanism_dynamics.hpp"
 #include "model/mechanism.hpp"
+#include "scene/arrow_scale.hpp"
 #include "scene/motion.hpp"
 #include "symbolic/system.hpp"
 
@@ -97,6 +98,7 @@ struct MechanismDrawList {
     double force = 0;                                 // N, the magnitude
     bool cut = false;                                 // drawn shorter than the scale says
     std::string label;                                // "B on 3", "F = 0.5 N"
+    bool stretched = false;                           // too short to see at the scale: drawn longer
   };
   /// An applied torque: an arc about the body's centre, counter-clockwise for sweep > 0,
   /// its head at start + sweep.
@@ -109,12 +111,17 @@ struct MechanismDrawList {
     Vec2 at = Vec2::Zero();
     std::string text;
   };
-  /// What an arrow's length means: a reference arrow of `metres` stands for `newtons`.
+  /// What an arrow's length means: a reference arrow of `metres` stands for `newtons`
+  /// (joint forces; applied ones have their own when --arrow-scale sets them apart).
   struct Legend {
     double newtons = 0, metres = 0;  // 0: no force arrows in the clip
     std::string value;               // "2 N"
     bool joint = false, applied = false;
-    bool cut = false;  // some arrow of the clip is cut
+    bool cut = false;                                // some arrow of the clip is cut
+    bool stretched = false;                          // some arrow of the clip is drawn longer than its scale
+    double applied_newtons = 0, applied_metres = 0;  // the applied forces' reference arrow
+    std::string applied_value;
+    std::string joint_scale, applied_scale;  // "1 cm = 0.5 N"
   };
   std::vector<Outline> outlines;
   std::vector<Line> lines;
@@ -142,8 +149,14 @@ struct MechanismMotion {
 class MechanismScene {
  public:
   /// `trails`: points whose path over the last `trail_seconds` each frame draws.
+  /// `arrows`: --arrow-scale (kinds "joint" and "applied"); by default joint and applied
+  /// forces share one scale from the clip's typical force, as "common" does.
   MechanismScene(MechanismGeometry geometry, const MechanismMotion& motion, std::vector<BodyPoint> trails,
-                 double trail_seconds = 2.0);
+                 double trail_seconds = 2.0, const ArrowScaleRequest& arrows = {});
+
+  /// Force arrows shorter than `metres` (but not zero) are drawn that long and marked
+  /// stretched, their labels giving the value; the legend says whether any is.
+  void set_shortest_arrow(double metres);
 
   [[nodiscard]] const MechanismGeometry& geometry() const { return geometry_; }
   /// Every outline point over the motion and the ground points (the fixed camera's view).
@@ -158,6 +171,8 @@ class MechanismScene {
   /// Metres per newton of the force arrows (0 without forces): the upper quartile of the
   /// frames' largest force is a sixth of the extent, so a typical frame reads.
   [[nodiscard]] double force_scale() const { return force_scale_; }
+  /// Metres per newton of the applied forces' arrows (force_scale() unless set apart).
+  [[nodiscard]] double applied_scale() const { return applied_scale_; }
   /// The longest arrow drawn, m: a longer one is cut to it (1.5 the typical length).
   [[nodiscard]] double arrow_cap() const { return arrow_cap_; }
   /// The larger side of bounds(), or 2 reach() for a floating mechanism.
@@ -172,7 +187,8 @@ class MechanismScene {
   std::vector<BodyPoint> trails_;
   double trail_seconds_;
   Bounds bounds_, view_bounds_;
-  double reach_ = 0, view_reach_ = 0, force_scale_ = 0, arrow_cap_ = 0, torque_scale_ = 0, extent_ = 1;
+  double reach_ = 0, view_reach_ = 0, force_scale_ = 0, applied_scale_ = 0, arrow_cap_ = 0, torque_scale_ = 0,
+         extent_ = 1, shortest_ = 0;
   MechanismDrawList::Legend legend_;
   std::vector<std::array<double, 2>> rail_span_;    // per joint: slider travel range along the axis
   std::vector<std::array<double, 2>> spring_span_;  // per spring: shortest and longest length

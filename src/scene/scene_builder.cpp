@@ -18,7 +18,15 @@ void add_arrow(DrawList& out, const SceneOptions& options, ArrowKind kind, const
                std::string_view tag) {
   const ArrowScale& scale = scale_of(options, kind);
   if (!scale.drawable()) return;
-  out.arrows.push_back({kind, tail, value * scale.metres_per_unit, tag});
+  Arrow arrow{kind, tail, value * scale.metres_per_unit, tag, value.norm()};
+  const double length = arrow.vector.norm();
+  if (length > 0 && length < options.shortest_arrow) {
+    arrow.vector *= options.shortest_arrow / length;
+    arrow.stretched = true;
+  }
+  // At one scale the forces' values are said too, so their ratio can be read off.
+  arrow.valued = arrow.stretched || (options.common_force_scale && kind != ArrowKind::velocity);
+  out.arrows.push_back(arrow);
 }
 
 void add_trail(const Params& p, const SceneOptions& options, const Motion& motion, std::size_t index, DrawList& out) {
@@ -62,16 +70,52 @@ double default_longest_arrow(const Params& p) {
 }
 
 SceneOptions scene_options_for(const Params& p, const Motion& motion, ElementSet elements, bool relative_to_com,
-                               double longest_arrow) {
+                               const ArrowScaleRequest& request, double longest_arrow) {
   SceneOptions options;
   options.elements = elements;
   options.relative_to_com = relative_to_com;
   if (!(longest_arrow > 0)) longest_arrow = default_longest_arrow(p);
   const std::array<double, kArrowKinds> maxima = arrow_maxima(p, motion, relative_to_com);
   const std::array<Element, kArrowKinds> shown_by{Element::pin_force, Element::gravity, Element::velocity};
-  for (std::size_t kind = 0; kind < kArrowKinds; ++kind)
-    if (elements.has(shown_by[kind])) options.arrow_scales[kind] = choose_arrow_scale(maxima[kind], longest_arrow);
+  constexpr auto pin = static_cast<std::size_t>(ArrowKind::pin_force);
+  constexpr auto gravity = static_cast<std::size_t>(ArrowKind::gravity);
+  ArrowScale common;
+  if (request.common) {
+    // Over the forces shown only: a hidden gravity does not shrink the pin force.
+    double largest = 0;
+    for (const std::size_t kind : {pin, gravity})
+      if (elements.has(shown_by[kind])) largest = std::max(largest, maxima[kind]);
+    common = request.common_units_per_cm > 0 ? arrow_scale_of(request.common_units_per_cm)
+                                             : choose_arrow_scale(largest, longest_arrow);
+    options.common_force_scale = true;
+  }
+  for (std::size_t kind = 0; kind < kArrowKinds; ++kind) {
+    if (!elements.has(shown_by[kind])) continue;
+    if (const double fixed = request.fixed_for(kArrowKindNames[kind]); fixed > 0)
+      options.arrow_scales[kind] = arrow_scale_of(fixed);
+    else if (request.common && kind != static_cast<std::size_t>(ArrowKind::velocity))
+      options.arrow_scales[kind] = common;
+    else
+      options.arrow_scales[kind] = choose_arrow_scale(maxima[kind], longest_arrow);
+  }
   return options;
+}
+
+bool any_stretched(const Params& p, const SceneOptions& options, const Motion& motion) {
+  const auto short_at = [&](ArrowKind kind, double magnitude) {
+    const double length = magnitude * scale_of(options, kind).metres_per_unit;
+    return scale_of(options, kind).drawable() && length > 0 && length < options.shortest_arrow;
+  };
+  if (short_at(ArrowKind::gravity, p.m * p.g)) return true;
+  for (const MotionSample& sample : motion.samples) {
+    const BodyState& s = sample.state;
+    const Vec2 frame = options.relative_to_com ? system_com_velocity(s) : Vec2::Zero();
+    if ((motion.has_pin_force && short_at(ArrowKind::pin_force, sample.pin_force.norm())) ||
+        short_at(ArrowKind::velocity, (Vec2(s.x1_dot, s.y1_dot) - frame).norm()) ||
+        short_at(ArrowKind::velocity, (Vec2(s.x2_dot, s.y2_dot) - frame).norm()))
+      return true;
+  }
+  return false;
 }
 
 void build_scene(const Params& p, const SceneOptions& options, const Motion& motion, std::size_t index, DrawList& out) {
@@ -80,30 +124,44 @@ void build_scene(const Params& p, const SceneOptions& options, const Motion& mot
   const MotionSample& sample = motion.samples[index];
   const BodyState& s = sample.state;
   const double D = p.pin_offset();
-  const Vec2 c1(s.x1, s.y1), c2(s.x2, s.y2);
-  const Vec2 pin1 = c1 + D * direction(s.theta1);  // P as block 1 has it
-  const Vec2 pin2 = c2 - D * direction(s.theta2);  // P as block 2 has it (differs by Case 1's drift)
+  Vec2 c1(s.x1, s.y1), c2(s.x2, s.y2);
+  Vec2 pin1 = c1 + D * direction(s.theta1);  // P as block 1 has it
+  Vec2 pin2 = c2 - D * direction(s.theta2);  // P as block 2 has it (differs by Case 1's drift)
   const Vec2 com = system_com(s);
+  const bool exploded = options.explode > 0;
+  if (exploded) {
+    // The free-body view: each block moved half the gap away from the other along the
+    // line of their centres, its pin point and loads with it.
+    const Vec2 apart = (c2 - c1).norm() > 0 ? Vec2((c2 - c1).normalized()) : Vec2::UnitX();
+    c1 -= 0.5 * options.explode * apart;
+    pin1 -= 0.5 * options.explode * apart;
+    c2 += 0.5 * options.explode * apart;
+    pin2 += 0.5 * options.explode * apart;
+  }
 
-  if (shown.has(Element::trail)) add_trail(p, options, motion, index, out);
+  if (shown.has(Element::trail) && !exploded) add_trail(p, options, motion, index, out);
 
   if (shown.has(Element::blocks)) {
-    out.blocks.push_back({1, block_corners(p, s.x1, s.y1, s.theta1), c1});
-    out.blocks.push_back({2, block_corners(p, s.x2, s.y2, s.theta2), c2});
+    out.blocks.push_back({1, block_corners(p, c1.x(), c1.y(), s.theta1), c1});
+    out.blocks.push_back({2, block_corners(p, c2.x(), c2.y(), s.theta2), c2});
   }
   const bool tags = shown.has(Element::labels);
   if (shown.has(Element::com)) {
     out.markers.push_back(marker(MarkerKind::com, c1));
     out.markers.push_back(marker(MarkerKind::com, c2));
-    out.markers.push_back(marker(MarkerKind::com_system, com));
+    if (!exploded) out.markers.push_back(marker(MarkerKind::com_system, com));
   }
   if (shown.has(Element::pin)) {
-    Marker pin = marker(MarkerKind::pin, pin1);
-    if (tags) {
-      pin.tag = "P";
-      pin.tag_direction = pin_tag_direction(sample, pin1, com);
+    // Apart, each block has its own half of the pin.
+    for (const Vec2& at : {pin1, pin2}) {
+      Marker pin = marker(MarkerKind::pin, at);
+      if (tags) {
+        pin.tag = "P";
+        pin.tag_direction = pin_tag_direction(sample, at, exploded ? Vec2(at == pin1 ? c1 : c2) : com);
+      }
+      out.markers.push_back(pin);
+      if (!exploded) break;
     }
-    out.markers.push_back(pin);
   }
 
   if (shown.has(Element::gravity)) {

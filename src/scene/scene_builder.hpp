@@ -6,6 +6,8 @@
 //   gravity  (0, -m g) at each centre of mass
 //   velocity C1', C2' (minus G' in the frame falling with G)
 //   trail    P over the last `trail_seconds`, fading with age
+// The free-body view (`explode`) moves the blocks apart along the line of their centres,
+// each with its own pin point and loads.
 // In a frame that follows G (`relative_to_com`) the trail and the velocities are those
 // an observer falling with G sees; the blocks are where they are.
 #include <array>
@@ -19,20 +21,33 @@
 
 namespace linkage {
 
+/// The --arrow-scale names of the arrow kinds, indexed by ArrowKind.
+inline constexpr std::array<std::string_view, kArrowKinds> kArrowKindNames{"pin", "gravity", "velocity"};
+
 struct SceneOptions {
   ElementSet elements = ElementSet::defaults();
   std::array<ArrowScale, kArrowKinds> arrow_scales{};  // indexed by ArrowKind
+  bool common_force_scale = false;                     // pin force and gravity share one scale
   bool relative_to_com = false;
   double trail_seconds = 2.0;
+  double shortest_arrow = 0;  // m: a shorter arrow (not zero) is drawn this long, marked stretched
+  double explode = 0;         // m: > 0 draws the free-body view, the blocks this far apart (no trail, no G)
 };
 
 /// The longest arrow drawn (metres): 3/4 of D, within L/4 .. L/2.
 [[nodiscard]] double default_longest_arrow(const Params& p);
 
 /// The scene options for a motion: arrow scales from the largest magnitude of each kind
-/// over the motion, each arrow at most `longest_arrow` metres (default_longest_arrow).
+/// over the motion, each arrow at most `longest_arrow` metres (default_longest_arrow);
+/// with `request.common` one scale for both forces (from the larger); a kind the request
+/// fixes at its value.
 [[nodiscard]] SceneOptions scene_options_for(const Params& p, const Motion& motion, ElementSet elements,
-                                             bool relative_to_com, double longest_arrow = 0);
+                                             bool relative_to_com, const ArrowScaleRequest& request = {},
+                                             double longest_arrow = 0);
+
+/// Whether any arrow of the motion is drawn stretched (shorter than
+/// options.shortest_arrow at its scale, not zero).
+[[nodiscard]] bool any_stretched(const Params& p, const SceneOptions& options, const Motion& motion);
 
 /// Clears `out` and fills it with what sample `index` of `motion` shows.
 void build_scene(const Params& p, const SceneOptions& options, const Motion& motion, std::size_t index, DrawList& out);

@@ -381,7 +381,8 @@ TEST(LessonErrors, ABrokenLessonMakesNothing) {
   EXPECT_EQ(r.err,
             "linkage: error: " + broken.string() +
                 ":11:1: step 2 (render): unknown key 'fsp' (did you mean 'fps'?); valid keys: kind, heading, out, "
-                "caption, fps, size, quality, at, speed, show, hide, camera, view, theme, title, mechanism, set, "
+                "caption, fps, size, quality, at, speed, show, hide, camera, view, theme, title, arrow_scale, "
+                "mechanism, set, "
                 "trail, panel, captions, case, "
                 "integrator, dt, "
                 "rtol, atol, duration, stabilize, baumgarte_alpha, baumgarte_beta, L, w, b, m, g, x1, y1, theta1, "

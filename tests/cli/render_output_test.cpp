@@ -96,6 +96,26 @@ TEST(RenderCli, StillsAsPngSvgAndPdf) {
   EXPECT_EQ(read_text(dir / "fig.pdf").rfind("%PDF-", 0), 0u);
 }
 
+// --arrow-scale and --view fbd change the picture, not whether it is made; a view
+// rectangle still means the fixed camera.
+TEST(RenderCli, ArrowScalesAndTheFreeBodyView) {
+  TempDir dir;
+  const auto still = [&](const std::string& name, std::vector<std::string> flags) {
+    flags.insert(flags.end(), {"--out", (dir / name).string(), "--at", "0.5"});
+    const RunResult r = render(flags);
+    EXPECT_EQ(r.exit_code, 0) << name << ": " << r.err;
+    return file_bytes(dir / name);
+  };
+  const auto plain = still("plain.png", {});
+  EXPECT_NE(still("common.png", {"--arrow-scale", "common"}), plain);
+  EXPECT_NE(still("set.png", {"--arrow-scale", "pin=0.001,gravity=0.5"}), plain);
+  EXPECT_NE(still("fbd.png", {"--view", "fbd"}), plain);
+  EXPECT_NE(still("fbd_fit.png", {"--view", "fbd", "--camera", "fit"}), plain);
+  EXPECT_NE(still("rectangle.png", {"--view", "-1,-2,3,3"}), plain);
+  EXPECT_NE(still("mechanism.png", {"--mechanism", "slider-crank", "--arrow-scale", "joint=100"}),
+            still("mechanism_default.png", {"--mechanism", "slider-crank"}));
+}
+
 TEST(RenderCli, OnlyTheWorkThePictureNeeds) {
   TempDir dir;
   const std::string frames = (dir / "f").string();

@@ -16,6 +16,7 @@
 #include "model/mechanism_toml.hpp"
 #include "render/cairo_util.hpp"
 #include "render/mechanism_forces.hpp"
+#include "render/scene_painter.hpp"
 #include "scene/mechanism_scene.hpp"
 #include "support/test_support.hpp"
 #include "symbolic/loop_closure.hpp"
@@ -317,7 +318,14 @@ Camera clip_camera(const MechanismScene& scene, int width, int height) {
   return {view, width, height};
 }
 
-TEST(MechanismForces, LabelBoxesNeverOverlapAndOnlyStubsGoUnlabelled) {
+// The pipeline's camera at sample k: fixed for a grounded mechanism, else following.
+Camera frame_camera(const MechanismScene& scene, std::size_t k, int width, int height) {
+  if (scene.geometry().grounded()) return clip_camera(scene, width, height);
+  const Camera camera(view_around(scene.centroid(0), 1.1 * scene.view_reach()), width, height);
+  return camera.centred_at(scene.centroid(k));
+}
+
+TEST(MechanismForces, LabelsKeepClearOfEachOtherArrowsAndBodiesAndOnlyStubsGoUnlabelled) {
   constexpr int kWidth = 854, kHeight = 480;
   const Theme theme = load_theme("light", {}, "theme");
   DrawStyle style;
@@ -325,44 +333,84 @@ TEST(MechanismForces, LabelBoxesNeverOverlapAndOnlyStubsGoUnlabelled) {
   style.u = DrawStyle::unit_for(kWidth, kHeight);
   const cairo::SurfacePtr surface = cairo::image_surface(kWidth, kHeight);
   const cairo::ContextPtr cr = cairo::context(surface.get());
-  for (const char* name : {"four-bar", "slider-crank"}) {
-    SCOPED_TRACE(name);
+  ArrowScaleRequest own, common, apart;
+  common.common = true;
+  apart.fixed = {{"joint", 50.0}, {"applied", 0.01}};  // joint forces short, applied ones long
+  std::size_t most = 0;
+  for (const std::string& name : shipped_mechanism_names()) {
     const sym::System system(load_mechanism(name));
     const MechanismMotion motion = clip_motion(system, 4.0, 30);
-    const MechanismScene scene(mechanism_geometry(system), motion, {});
-    const Camera camera = clip_camera(scene, kWidth, kHeight);
-    const Rect title{0, 0, 400, 30};
-    MechanismDrawList list;
-    std::size_t most = 0;
-    // Every frame, so the worst (the most and longest arrows) are among them.
-    for (std::size_t k = 0; k < motion.samples.size(); ++k) {
-      SCOPED_TRACE(k);
-      scene.frame(k, list);
-      const ForceLayout layout = layout_forces(cr.get(), style, camera, list, kWidth, kHeight, {title});
-      const auto& labels = layout.labels;
-      most = std::max(most, labels.size());
-      for (std::size_t i = 0; i < labels.size(); ++i) {
-        for (std::size_t j = i + 1; j < labels.size(); ++j)
-          EXPECT_FALSE(overlaps(labels[i].box, labels[j].box)) << labels[i].text << " / " << labels[j].text;
-        for (const Rect& body : layout.body_labels) EXPECT_FALSE(overlaps(labels[i].box, body)) << labels[i].text;
-        EXPECT_FALSE(overlaps(labels[i].box, layout.legend)) << labels[i].text;
-        EXPECT_FALSE(overlaps(labels[i].box, title)) << labels[i].text;
-      }
-      // A label is left out only when its arrow is shorter than the label is high.
-      std::size_t unlabelled = 0;
-      for (const MechanismDrawList::Arrow& arrow : list.arrows) {
-        const bool labelled = std::any_of(labels.begin(), labels.end(), [&](const PlacedLabel& l) {
-          return l.text == arrow.label && (l.head - camera.to_pixels(arrow.tail + arrow.vector)).norm() < 1e-9;
-        });
-        if (!labelled) {
-          ++unlabelled;
-          EXPECT_LT(arrow.vector.norm() * camera.scale(), labels.empty() ? 1e9 : labels.front().box.height)
-              << arrow.label;
+    for (const ArrowScaleRequest* request : {&own, &common, &apart}) {
+      SCOPED_TRACE(name + (request == &common ? ", common" : request == &apart ? ", apart" : ", default"));
+      MechanismScene scene(mechanism_geometry(system), motion, {}, 2.0, *request);
+      scene.set_shortest_arrow(shortest_arrow_px(style) / frame_camera(scene, 0, kWidth, kHeight).scale());
+      const Rect title{0, 0, 400, 30};
+      MechanismDrawList list;
+      // Every other frame, so the worst (the most and longest arrows) are among them.
+      for (std::size_t k = 0; k < motion.samples.size(); k += 2) {
+        SCOPED_TRACE(k);
+        scene.frame(k, list);
+        const Camera camera = frame_camera(scene, k, kWidth, kHeight);
+        const ForceLayout layout = layout_forces(cr.get(), style, camera, list, kWidth, kHeight, {title});
+        const auto& labels = layout.labels;
+        most = std::max(most, labels.size());
+        std::vector<Segment> arrows, bodies;
+        for (const MechanismDrawList::Arrow& arrow : list.arrows)
+          arrows.push_back({camera.to_pixels(arrow.tail), camera.to_pixels(arrow.tail + arrow.vector)});
+        for (const MechanismDrawList::Outline& outline : list.outlines)
+          for (std::size_t i = 0; outline.points.size() > 2 && i < outline.points.size(); ++i)
+            bodies.push_back({camera.to_pixels(outline.points[i]),
+                              camera.to_pixels(outline.points[(i + 1) % outline.points.size()]),
+                              static_cast<int>(outline.body)});
+        for (const Rect& body : layout.body_labels) EXPECT_FALSE(touches(body, arrows)) << "a body's name";
+        for (std::size_t i = 0; i < labels.size(); ++i) {
+          for (std::size_t j = i + 1; j < labels.size(); ++j)
+            EXPECT_FALSE(overlaps(labels[i].box, labels[j].box)) << labels[i].text << " / " << labels[j].text;
+          for (const Rect& body : layout.body_labels) EXPECT_FALSE(overlaps(labels[i].box, body)) << labels[i].text;
+          EXPECT_FALSE(overlaps(labels[i].box, layout.legend)) << labels[i].text;
+          EXPECT_FALSE(overlaps(labels[i].box, title)) << labels[i].text;
+          EXPECT_FALSE(touches(labels[i].box, arrows)) << labels[i].text;
+          EXPECT_FALSE(touches(labels[i].box, bodies)) << labels[i].text;
         }
+        // A label is left out only when its arrow is shorter than the label is high.
+        std::size_t unlabelled = 0;
+        for (const MechanismDrawList::Arrow& arrow : list.arrows) {
+          const bool labelled = std::any_of(labels.begin(), labels.end(), [&](const PlacedLabel& l) {
+            return l.text == arrow.label && (l.head - camera.to_pixels(arrow.tail + arrow.vector)).norm() < 1e-9;
+          });
+          if (!labelled) {
+            ++unlabelled;
+            EXPECT_FALSE(arrow.stretched) << arrow.label;
+            EXPECT_LT(arrow.vector.norm() * camera.scale(), labels.empty() ? 1e9 : labels.front().box.height)
+                << arrow.label;
+          }
+        }
+        EXPECT_EQ(labels.size() + unlabelled, list.arrows.size() + list.torques.size());
       }
-      EXPECT_EQ(labels.size() + unlabelled, list.arrows.size());
     }
-    EXPECT_GE(most, 5U);  // crowded frames were among them
+  }
+  EXPECT_GE(most, 5U);  // crowded frames were among them
+}
+
+TEST(MechanismScene, ArrowScalesAsAskedAndShortArrowsStretched) {
+  const sym::System system(load_mechanism("slider-crank"));
+  const MechanismMotion motion = clip_motion(system, 1.0, 30);
+  ArrowScaleRequest request;
+  request.fixed = {{"joint", 1000.0}};  // 1 cm = 1 kN: every joint force is a stub
+  MechanismScene scene(mechanism_geometry(system), motion, {}, 2.0, request);
+  EXPECT_NEAR(scene.force_scale(), 0.01 / 1000, 1e-18);
+  MechanismDrawList list;
+  scene.frame(3, list);
+  EXPECT_EQ(list.legend.joint_scale, "1 cm = 1 kN");
+  EXPECT_FALSE(list.legend.stretched);
+  scene.set_shortest_arrow(0.05);
+  scene.frame(3, list);
+  EXPECT_TRUE(list.legend.stretched);
+  ASSERT_FALSE(list.arrows.empty());
+  for (const MechanismDrawList::Arrow& arrow : list.arrows) {
+    EXPECT_TRUE(arrow.stretched) << arrow.label;
+    EXPECT_NEAR(arrow.vector.norm(), 0.05, 1e-12) << arrow.label;
+    EXPECT_NE(arrow.label.find(" N"), std::string::npos) << arrow.label;  // says its value
   }
 }
 

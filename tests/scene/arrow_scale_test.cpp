@@ -2,7 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <string>
+
+#include "core/error.hpp"
 
 namespace linkage {
 namespace {
@@ -55,6 +59,43 @@ TEST(RoundLength, GridSpacingsAreOneTwoFive) {
   EXPECT_EQ(describe_length(5, -3), "5 mm");
   EXPECT_EQ(describe_length(2, 2), "200 m");
   EXPECT_EQ(describe_length(1, 3), "1 km");
+}
+
+TEST(ArrowScale, AGivenScaleIsKeptToThreeDigits) {
+  EXPECT_EQ(describe_arrow_scale(arrow_scale_of(2.0), "N"), "1 cm = 2 N");
+  EXPECT_EQ(describe_arrow_scale(arrow_scale_of(0.0025), "N"), "1 cm = 2.5 mN");
+  EXPECT_EQ(describe_arrow_scale(arrow_scale_of(123.456), "N"), "1 cm = 123 N");
+  EXPECT_EQ(describe_arrow_scale(arrow_scale_of(9.9996), "N"), "1 cm = 10 N");
+  EXPECT_NEAR(arrow_scale_of(0.5).metres_per_unit, 0.02, 1e-15);  // 1 cm per 0.5 N: 2 cm per N
+  EXPECT_FALSE(arrow_scale_of(0.0).drawable());
+  EXPECT_FALSE(arrow_scale_of(-1.0).drawable());
+}
+
+TEST(ArrowScale, RequestsParseCommonAndKinds) {
+  static constexpr std::array<std::string_view, 3> kinds{"pin", "gravity", "velocity"};
+  const ArrowScaleRequest common = parse_arrow_scale_request("common", "--arrow-scale", kinds);
+  EXPECT_TRUE(common.common);
+  EXPECT_EQ(common.common_units_per_cm, 0);
+  EXPECT_FALSE(common.is_default());
+  const ArrowScaleRequest set = parse_arrow_scale_request("pin=0.002,gravity=5", "--arrow-scale", kinds);
+  EXPECT_FALSE(set.common);
+  EXPECT_DOUBLE_EQ(set.fixed_for("pin"), 0.002);
+  EXPECT_DOUBLE_EQ(set.fixed_for("gravity"), 5);
+  EXPECT_EQ(set.fixed_for("velocity"), 0);
+  EXPECT_DOUBLE_EQ(parse_arrow_scale_request("common=2", "--arrow-scale", kinds).common_units_per_cm, 2);
+  EXPECT_TRUE(ArrowScaleRequest{}.is_default());
+  for (const char* bad : {"", "pin", "pin=", "pin=0", "pin=-1", "pin=2x", "joint=1", "common=nan", "pin=1,,"}) {
+    SCOPED_TRACE(bad);
+    try {
+      (void)parse_arrow_scale_request(bad, "--arrow-scale", kinds);
+      ADD_FAILURE() << "accepted";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), ExitCode::bad_input);
+      const std::string message = e.what();
+      EXPECT_NE(message.find("--arrow-scale"), std::string::npos) << message;
+      EXPECT_NE(message.find("pin, gravity, velocity"), std::string::npos) << message;
+    }
+  }
 }
 
 }  // namespace

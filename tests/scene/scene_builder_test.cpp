@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "model/kinematics.hpp"
 #include "scene/scene_test_support.hpp"
@@ -151,6 +152,99 @@ TEST(SceneBuilder, ArrowMaximaOverTheMotion) {
   EXPECT_DOUBLE_EQ(maxima[static_cast<std::size_t>(ArrowKind::gravity)], p.m * p.g);
   // Falling for 3 s, block 1's speed exceeds 29 m/s.
   EXPECT_GT(maxima[static_cast<std::size_t>(ArrowKind::velocity)], 29.0);
+}
+
+TEST(SceneBuilder, CommonScaleDrawsGravityAndThePinForceToOneScale) {
+  // At the spec's example the pin force is hundreds of times smaller than m g: at one
+  // scale their arrows' lengths keep that ratio, unless the pin force's is stretched.
+  const Params p;
+  const Motion motion = test::still_motion(p, State{}, true);
+  ArrowScaleRequest request;
+  request.common = true;
+  SceneOptions options = scene_options_for(p, motion, ElementSet::defaults(), false, request);
+  const ArrowScale& pin = options.arrow_scales[static_cast<std::size_t>(ArrowKind::pin_force)];
+  const ArrowScale& gravity = options.arrow_scales[static_cast<std::size_t>(ArrowKind::gravity)];
+  EXPECT_TRUE(options.common_force_scale);
+  EXPECT_EQ(pin.units_per_cm(), gravity.units_per_cm());
+  DrawList list;
+  build_scene(p, options, motion, 0, list);
+  const Arrow* f = find_arrow(list, ArrowKind::pin_force);
+  const Arrow* mg = find_arrow(list, ArrowKind::gravity);
+  ASSERT_NE(f, nullptr);
+  ASSERT_NE(mg, nullptr);
+  const double ratio = p.m * p.g / motion.samples[0].pin_force.norm();
+  EXPECT_GT(ratio, 300);
+  EXPECT_NEAR(mg->vector.norm() / f->vector.norm(), ratio, 1e-9 * ratio);
+  EXPECT_FALSE(f->stretched);
+  EXPECT_TRUE(f->valued);  // at one scale, the labels give the values
+  EXPECT_TRUE(mg->valued);
+  EXPECT_NEAR(mg->magnitude, p.m * p.g, 1e-15);
+  EXPECT_NEAR(f->magnitude, motion.samples[0].pin_force.norm(), 1e-15);
+  EXPECT_LE(mg->vector.norm(), default_longest_arrow(p) * (1 + 1e-12));
+
+  // Too short to see at 2 cm: stretched to 2 cm, its direction kept; gravity is not.
+  options.shortest_arrow = 0.02;
+  EXPECT_TRUE(any_stretched(p, options, motion));
+  build_scene(p, options, motion, 0, list);
+  f = find_arrow(list, ArrowKind::pin_force);
+  mg = find_arrow(list, ArrowKind::gravity);
+  EXPECT_TRUE(f->stretched);
+  EXPECT_NEAR(f->vector.norm(), 0.02, 1e-15);
+  EXPECT_NEAR(f->vector.normalized().dot(motion.samples[0].pin_force.normalized()), 1, 1e-12);
+  EXPECT_FALSE(mg->stretched);
+
+  // Each its own scale (the default): neither is short, and nothing is stretched.
+  SceneOptions own = scene_options_for(p, motion, ElementSet::defaults(), false);
+  EXPECT_FALSE(own.common_force_scale);
+  own.shortest_arrow = 0.02;
+  EXPECT_FALSE(any_stretched(p, own, motion));
+  build_scene(p, own, motion, 0, list);
+  for (const Arrow& arrow : list.arrows) EXPECT_FALSE(arrow.valued);
+}
+
+TEST(SceneBuilder, FixedScalesAreKeptPerKind) {
+  const Params p;
+  const Motion motion = test::still_motion(p, State{}, true);
+  ArrowScaleRequest request;
+  request.fixed = {{"pin", 0.001}, {"gravity", 2.0}};
+  const SceneOptions options = scene_options_for(p, motion, ElementSet::defaults(), false, request);
+  DrawList list;
+  build_scene(p, options, motion, 0, list);
+  EXPECT_NEAR(find_arrow(list, ArrowKind::gravity)->vector.norm(), p.m * p.g / 2.0 * 0.01, 1e-12);
+  EXPECT_NEAR(find_arrow(list, ArrowKind::pin_force)->vector.norm(), motion.samples[0].pin_force.norm() / 0.001 * 0.01,
+              1e-12);
+}
+
+TEST(SceneBuilder, FreeBodyViewDrawsTheBlocksApartEachWithItsPinPointAndLoads) {
+  const Params p;
+  const Motion motion = test::still_motion(p, State{}, true);
+  SceneOptions options = scene_options_for(p, motion, ElementSet::defaults(), false);
+  options.explode = 0.4;
+  DrawList list;
+  build_scene(p, options, motion, 0, list);
+  const BodyState& s = motion.samples[0].state;
+  const Vec2 c1(s.x1, s.y1), c2(s.x2, s.y2), apart = (c2 - c1).normalized();
+  ASSERT_EQ(list.blocks.size(), 2U);
+  EXPECT_NEAR((list.blocks[0].centre - (c1 - 0.2 * apart)).norm(), 0, 1e-15);
+  EXPECT_NEAR((list.blocks[1].centre - (c2 + 0.2 * apart)).norm(), 0, 1e-15);
+  EXPECT_TRUE(list.trail.empty());
+  // Two halves of the pin 0.4 m apart, no system centre of mass.
+  std::vector<Vec2> pins;
+  for (const Marker& m : list.markers) {
+    EXPECT_NE(m.kind, MarkerKind::com_system);
+    if (m.kind == MarkerKind::pin) pins.push_back(m.at);
+  }
+  ASSERT_EQ(pins.size(), 2U);
+  EXPECT_NEAR((pins[1] - pins[0]).norm(), 0.4, 1e-12);
+  // Each pin force starts at its block's own half of the pin; F on 1 and -F on 2 still opposite.
+  const Arrow* f1 = find_arrow(list, ArrowKind::pin_force, 0);
+  const Arrow* f2 = find_arrow(list, ArrowKind::pin_force, 1);
+  ASSERT_NE(f1, nullptr);
+  ASSERT_NE(f2, nullptr);
+  EXPECT_NEAR((f1->tail - pins[0]).norm(), 0, 1e-15);
+  EXPECT_NEAR((f2->tail - pins[1]).norm(), 0, 1e-15);
+  EXPECT_NEAR((f1->vector + f2->vector).norm(), 0, 1e-15);
+  EXPECT_NEAR((find_arrow(list, ArrowKind::gravity, 1)->tail - list.blocks[1].centre).norm(), 0, 1e-15);
 }
 
 }  // namespace
