@@ -14,6 +14,10 @@ namespace linkage {
 /// The colour of an arrow kind in the theme.
 [[nodiscard]] const Rgba& arrow_colour(const Theme& theme, ArrowKind kind);
 
+/// The opacity of a trail's segment whose newer end has `fade` (1 now, 0 at the
+/// trail's age limit): the theme's, times fade squared, so old parts fade quickly.
+[[nodiscard]] double trail_alpha(const Theme& theme, double fade);
+
 /// Draws everything in `list` (antialiased).
 void paint_scene(cairo_t* cr, const DrawStyle& style, const DrawList& list, const Camera& camera);
 

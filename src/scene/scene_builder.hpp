@@ -6,8 +6,8 @@
 //   gravity  (0, -m g) at each centre of mass
 //   velocity C1', C2' (minus G' in the frame falling with G)
 //   trail    P over the last `trail_seconds`, fading with age
-// In a frame that follows G (`relative_to_com`) the trail and the velocities are those
-// an observer falling with G sees; the blocks are where they are.
+// In a frame that follows G (`relative_to_com`) the velocities are those an observer
+// falling with G sees; the blocks and the trail are where they are in the world.
 #include <array>
 #include <cstddef>
 
