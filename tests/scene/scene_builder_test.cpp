@@ -128,13 +128,11 @@ TEST(SceneBuilder, FollowingGTheTrailStaysInTheWorldAndVelocitiesAreRelative) {
   const SceneOptions options = scene_options_for(p, motion, shown, true);
   DrawList list;
   build_scene(p, options, motion, 30, list);
-  const BodyState& now = motion.samples[30].state;
   const BodyState& before = motion.samples[0].state;
   // The oldest point is where P really was then (the grid behind it is fixed too), a
   // whole second of fall above where P is now.
   EXPECT_NEAR((list.trail.front().at - pin_position(p, before.x1, before.y1, before.theta1)).norm(), 0, 1e-14);
   EXPECT_GT(list.trail.front().at.y() - list.trail.back().at.y(), 0.4 * p.g);
-  (void)now;
   // Relative velocities of the two centres of mass are opposite (G is their midpoint).
   const Arrow* v1 = find_arrow(list, ArrowKind::velocity, 0);
   const Arrow* v2 = find_arrow(list, ArrowKind::velocity, 1);
