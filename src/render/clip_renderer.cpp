@@ -70,8 +70,27 @@ std::vector<LegendRow> legend_rows(const Theme& theme, const SceneOptions& optio
     rows.push_back({Glyph::line, theme.trail, "path of P", "last " + seconds_text(options.trail_seconds)});
   if (shown.has(Element::com)) rows.push_back({Glyph::com, theme.com, "centres of mass", ""});
   // Paths and velocities are then relative to G: say so.
-  if (follow) rows.push_back({Glyph::none, theme.text_muted, "the view falls with G, the centre of both", ""});
+  if (follow) rows.push_back({Glyph::none, theme.text_muted, "the view falls with G; the grid stays put", ""});
   return rows;
+}
+
+// G over the whole clip, at `count` + 1 even times from 0: a parabola, as the only
+// outside force is gravity (exact, so a still needs no motion beyond its own time).
+std::vector<Vec2> com_path(const Params& p, const MotionSample& first, double duration, int count) {
+  const Vec2 g0 = system_com(first.state), v0 = system_com_velocity(first.state);
+  std::vector<Vec2> path;
+  for (int i = 0; i <= count; ++i) {
+    const double dt = duration * i / count - first.t;
+    path.push_back(g0 + dt * v0 + Vec2(0.0, -0.5 * p.g * dt * dt));
+  }
+  return path;
+}
+
+constexpr int kPathSteps = 120;
+constexpr double kReadableBlock = 40;  // a block shorter than this (units of DrawStyle::u) gets an inset
+
+double clip_duration(const RenderSettings& settings, const Motion& motion) {
+  return std::max({settings.duration, settings.at, motion.samples.back().t});
 }
 
 }  // namespace
@@ -91,11 +110,14 @@ ClipRenderer::ClipRenderer(const Params& params, const Motion& motion, const Ren
   // themselves are too small to carry names (a fit camera over a long fall).
   if (params_.L * base_camera_.scale() >= 3 * style_.block_label_size())
     scene_options_.shortest_arrow = shortest_arrow_px(style_) / base_camera_.scale();
-  grid_.spacing = grid_spacing_for(base_camera_, settings_.width, settings_.height);
-  grid_.anchor = follow ? base_camera_.centre() : Vec2::Zero();
-  grid_.relative = follow;
-
+  // A following camera sees world-fixed lines stream past, each named by its height,
+  // a few to a frame so the numbers can be read.
   const ElementSet& shown = settings_.elements;
+  moving_grid_ = follow;
+  grid_.spacing = grid_spacing_for(base_camera_, settings_.width, settings_.height, follow ? 5 : 10);
+  grid_.name_every = follow;
+  grid_.x_ticks = !follow || shown.has(Element::axes);
+
   if (shown.has(Element::legend)) {
     legend_ = legend_rows(theme_, scene_options_, follow, any_stretched(params_, scene_options_, motion_));
     scale_label_ = describe_length(grid_.spacing.mantissa, grid_.spacing.exponent);
@@ -117,6 +139,29 @@ ClipRenderer::ClipRenderer(const Params& params, const Motion& motion, const Ren
     format_hud(widest, -std::max(9.99, motion_.samples.back().t), -8.8e-88, 8.8e-88);
     hud_rect_ = hud_rect(cr.get(), style_, widest, settings_.width);
   }
+  const double inset_top =
+      hud_rect_.empty() ? style_.padding() : hud_rect_.y + hud_rect_.height + 0.6 * style_.padding();
+  const double duration = clip_duration(settings_, motion_);
+  if (follow) {
+    std::array<char, 96> caption{};
+    std::snprintf(caption.data(), caption.size(), "path of the centre of mass, 0\u2013%g s", duration);
+    path_inset_ = linkage::path_inset(inset_layout(cr.get(), style_, caption.data(), inset_top, settings_.width),
+                                      com_path(params_, motion_.samples.front(), duration, kPathSteps));
+  } else if (settings_.camera == CameraMode::fit && shown.has(Element::blocks) &&
+             params_.L * base_camera_.scale() < kReadableBlock * style_.u) {
+    // The whole fall leaves the blocks a few pixels long: show them beside it at a
+    // size that reads, with the magnification said.
+    bodies_inset_ = inset_layout(cr.get(), style_, "", inset_top, settings_.width);
+    const double arrows = any_arrows(scene_options_) ? default_longest_arrow(params_) : 0.0;
+    const double reach = 1.12 * (max_radius_about_com(params_, motion_) + arrows);
+    bodies_camera_ = Camera(view_around(Vec2::Zero(), reach), static_cast<int>(bodies_inset_.plot.width),
+                            static_cast<int>(bodies_inset_.plot.height));
+    std::array<char, 96> caption{};
+    std::snprintf(caption.data(), caption.size(), "the bodies, enlarged %.0f\u00d7",
+                  bodies_camera_.scale() / base_camera_.scale());
+    bodies_inset_ = inset_layout(cr.get(), style_, caption.data(), inset_top, settings_.width);
+  }
+  panel_rects_ = {title_layout_.rect, legend_rect_, scale_rect_, hud_rect_, path_inset_.inset.rect, bodies_inset_.rect};
   targets_.reserve(kMaxTargets);
   panels_.reserve(3);
 }
@@ -145,11 +190,41 @@ ClipRenderer::Target& ClipRenderer::target_for(Frame& frame) {
 
 void ClipRenderer::paint_static_background(cairo_t* cr) const {
   paint_background(cr, style_, settings_.width, settings_.height);
+  if (moving_grid_) return;  // drawn per frame
   if (settings_.elements.has(Element::grid))
     paint_grid(cr, style_, base_camera_, grid_, settings_.width, settings_.height);
   if (settings_.elements.has(Element::axes))
-    paint_axes(cr, style_, base_camera_, grid_, settings_.width, settings_.height,
-               {title_layout_.rect, legend_rect_, scale_rect_, hud_rect_});
+    paint_axes(cr, style_, base_camera_, grid_, settings_.width, settings_.height, panel_rects_);
+}
+
+void ClipRenderer::paint_grid_of(std::size_t index, cairo_t* cr) const {
+  if (!moving_grid_) return;
+  const Camera camera = camera_at(index);
+  const ElementSet& shown = settings_.elements;
+  if (shown.has(Element::grid)) paint_grid(cr, style_, camera, grid_, settings_.width, settings_.height);
+  if (shown.has(Element::grid) || shown.has(Element::axes))
+    paint_axes(cr, style_, camera, grid_, settings_.width, settings_.height, panel_rects_);
+}
+
+void ClipRenderer::paint_insets_of(std::size_t index, cairo_t* cr) {
+  const MotionSample& sample = motion_.samples[index];
+  if (!path_inset_.inset.rect.empty()) {
+    const double duration = clip_duration(settings_, motion_);
+    const auto travelled = static_cast<std::size_t>(std::floor(sample.t / duration * kPathSteps)) + 1;
+    paint_path_inset(cr, style_, path_inset_, system_com(sample.state), travelled);
+  }
+  if (!bodies_inset_.rect.empty()) {
+    const Rect& plot = bodies_inset_.plot;
+    paint_inset_frame(cr, style_, bodies_inset_);
+    cairo_save(cr);
+    cairo_rectangle(cr, plot.x, plot.y, plot.width, plot.height);
+    cairo_clip(cr);
+    cairo_translate(cr, plot.x, plot.y);
+    SceneLabels inset_labels;  // names laid out within the inset, not kept for tests
+    paint_scene(cr, style_, list_, bodies_camera_.centred_at(system_com(sample.state)), static_cast<int>(plot.width),
+                static_cast<int>(plot.height), {}, inset_labels);
+    cairo_restore(cr);
+  }
 }
 
 void ClipRenderer::paint_title_panel(cairo_t* cr) const { paint_title(cr, style_, settings_.title, title_layout_); }
@@ -214,11 +289,13 @@ void ClipRenderer::draw(std::size_t index, Frame& frame) {
 
   cairo_t* cr = target.context.get();
   cairo_save(cr);
+  paint_grid_of(index, cr);
   paint_dynamic(index, cr);
   for (const Panel& panel : panels_) {
     cairo_set_source_surface(cr, panel.surface.get(), panel.rect.x, panel.rect.y);
     cairo_paint(cr);
   }
+  paint_insets_of(index, cr);
   paint_hud_of(index, cr);
   cairo_restore(cr);
   cairo::check(cr, "cannot draw a frame");
@@ -230,8 +307,10 @@ void ClipRenderer::draw_vector(std::size_t index, cairo_t* cr) {
   const auto start = std::chrono::steady_clock::now();
   cairo_save(cr);
   paint_static_background(cr);
+  paint_grid_of(index, cr);
   paint_dynamic(index, cr);
   paint_static_overlays(cr);
+  paint_insets_of(index, cr);
   paint_hud_of(index, cr);
   cairo_restore(cr);
   cairo::check(cr, "cannot draw the figure");

@@ -65,6 +65,11 @@ class ClipRenderer {
   /// The names of the frame drawn last, where they went.
   [[nodiscard]] const SceneLabels& labels() const { return labels_; }
   [[nodiscard]] const RenderStats& stats() const { return stats_; }
+  /// The lab-frame inset of a following camera (empty rect otherwise).
+  [[nodiscard]] const PathInset& path_inset() const { return path_inset_; }
+  /// The inset of the bodies at a readable size, when a fit camera shows them tiny.
+  [[nodiscard]] const Inset& bodies_inset() const { return bodies_inset_; }
+  [[nodiscard]] const GridSpec& grid() const { return grid_; }
 
  private:
   struct Target {  // a Cairo surface and context per frame buffer, made on first use
@@ -82,6 +87,8 @@ class ClipRenderer {
   void paint_dynamic(std::size_t index, cairo_t* cr);
   void paint_static_overlays(cairo_t* cr) const;
   void paint_hud_of(std::size_t index, cairo_t* cr);
+  void paint_grid_of(std::size_t index, cairo_t* cr) const;
+  void paint_insets_of(std::size_t index, cairo_t* cr);
   void count_frame(std::chrono::steady_clock::time_point start);
   Panel cache_panel(const Rect& rect, void (ClipRenderer::*paint)(cairo_t*) const);
   void paint_title_panel(cairo_t* cr) const;
@@ -102,6 +109,11 @@ class ClipRenderer {
   HudText hud_;
   TitleLayout title_layout_;
   Rect legend_rect_, scale_rect_, hud_rect_;
+  std::vector<Rect> panel_rects_;  // where grid labels must not go
+  bool moving_grid_ = false;       // drawn per frame: world lines past a following camera
+  PathInset path_inset_;
+  Inset bodies_inset_;
+  Camera bodies_camera_;  // the bodies' inset: its scale, centred on G each frame
 
   DrawList list_;
   SceneLabels labels_;

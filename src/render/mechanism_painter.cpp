@@ -49,6 +49,19 @@ void paint_lines(cairo_t* cr, const DrawStyle& style, const Camera& camera, cons
         cairo_set_line_width(cr, style.edge_width());
         break;
     }
+    if (kind == List::Line::Kind::trail && line.fade.size() == line.points.size()) {
+      // Segment by segment, fading with age; butt caps so segments do not double up.
+      cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+      for (std::size_t j = 1; j < line.points.size(); ++j) {
+        const Vec2 a = camera.to_pixels(line.points[j - 1]), b = camera.to_pixels(line.points[j]);
+        set_colour(cr, with_alpha(theme.trail, trail_alpha(theme, line.fade[j])));
+        cairo_move_to(cr, a.x(), a.y());
+        cairo_line_to(cr, b.x(), b.y());
+        cairo_stroke(cr);
+      }
+      cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+      continue;
+    }
     path_through(cr, camera, line.points, false);
     cairo_stroke(cr);
   }

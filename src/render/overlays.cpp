@@ -6,6 +6,7 @@
 #include <cstring>
 #include <memory>
 #include <numbers>
+#include <utility>
 
 #include "render/scene_painter.hpp"
 #include "render/text.hpp"
@@ -94,8 +95,8 @@ double legend_names_width(cairo_t* cr, const DrawStyle& style, const std::vector
 
 }  // namespace
 
-RoundLength grid_spacing_for(const Camera& camera, int width, int height) {
-  return round_length_at_least(std::min(width, height) / camera.scale() / 10.0);
+RoundLength grid_spacing_for(const Camera& camera, int width, int height, double lines) {
+  return round_length_at_least(std::min(width, height) / camera.scale() / lines);
 }
 
 void paint_background(cairo_t* cr, const DrawStyle& style, int width, int height) {
@@ -165,34 +166,119 @@ void paint_axes(cairo_t* cr, const DrawStyle& style, const Camera& camera, const
     use_minus_signs(label);
     return label.data();
   };
-  const auto draw_axis = [&](bool bottom, const std::vector<Tick>& ticks, const char* name) {
+  struct Ticks {  // fixed capacity: a following camera draws them every frame
+    std::array<Tick, 64> at{};
+    std::size_t count = 0;
+    void push(const Tick& t) {
+      if (count < at.size()) at[count++] = t;
+    }
+  };
+  const auto draw_axis = [&](bool bottom, const Ticks& ticks, const char* name) {
     // The last tick with room for it names the axis and the unit ("x = 1.2 m"); the
     // ticks before it show the number alone.
-    std::size_t named = ticks.size();
-    for (std::size_t i = ticks.size(); i-- > 0;)
-      if (clear(box(bottom, ticks[i].at, format(name, ticks[i].value)))) {
+    // With name_every, every label names its line ("y = −44.2 m").
+    const bool every = !bottom && grid.name_every;
+    std::size_t named = ticks.count;
+    for (std::size_t i = ticks.count; !every && i-- > 0;)
+      if (clear(box(bottom, ticks.at[i].at, format(name, ticks.at[i].value)))) {
         named = i;
         break;
       }
-    for (std::size_t i = 0; i < ticks.size() && i <= named; ++i) {
-      const char* s = format(i == named ? name : nullptr, ticks[i].value);
-      const Rect r = box(bottom, ticks[i].at, s);
+    for (std::size_t i = 0; i < ticks.count && (every || i <= named); ++i) {
+      const char* s = format(every || i == named ? name : nullptr, ticks.at[i].value);
+      const Rect r = box(bottom, ticks.at[i].at, s);
       if (!clear(r)) continue;
       text::draw_with_halo(cr, font, r.x, r.y + m.ascent, s, style.theme->text_muted, style.theme->background,
                            0.35 * font.size);
     }
   };
-  std::vector<Tick> ticks;
-  for_each_grid_line(visible.xmin, visible.xmax, grid.anchor.x(), spacing, [&](long k, double x) {
-    ticks.push_back({camera.to_pixels({x, 0.0}).x(), grid.relative ? static_cast<double>(k) * spacing : x});
-  });
-  draw_axis(true, ticks, grid.relative ? "\u0394x" : "x");
-  ticks.clear();
+  Ticks ticks;
+  if (grid.x_ticks) {
+    for_each_grid_line(visible.xmin, visible.xmax, grid.anchor.x(), spacing, [&](long k, double x) {
+      ticks.push({camera.to_pixels({x, 0.0}).x(), grid.relative ? static_cast<double>(k) * spacing : x});
+    });
+    draw_axis(true, ticks, grid.relative ? "\u0394x" : "x");
+  }
+  ticks.count = 0;
   // Bottom to top, so the named tick is the highest with room.
   for_each_grid_line(visible.ymin, visible.ymax, grid.anchor.y(), spacing, [&](long k, double y) {
-    ticks.push_back({camera.to_pixels({0.0, y}).y(), grid.relative ? static_cast<double>(k) * spacing : y});
+    ticks.push({camera.to_pixels({0.0, y}).y(), grid.relative ? static_cast<double>(k) * spacing : y});
   });
   draw_axis(false, ticks, grid.relative ? "\u0394y" : "y");
+}
+
+Inset inset_layout(cairo_t* cr, const DrawStyle& style, std::string caption, double top, int width) {
+  const text::Font font{style.small_size(), false};
+  const double u = style.u;
+  const double plot_width = 150 * u, plot_height = 150 * u;
+  const double inner_width = std::max(plot_width, text::width(cr, font, caption.c_str()));
+  const double caption_height = 1.5 * font.size;
+  Inset inset;
+  inset.rect = snapped(width - style.padding() - inner_width - 2 * 8 * u, top, inner_width + 2 * 8 * u,
+                       caption_height + plot_height + 2 * 6 * u);
+  inset.plot = {inset.rect.x + 8 * u, inset.rect.y + 6 * u + caption_height, inset.rect.width - 2 * 8 * u, plot_height};
+  inset.caption = std::move(caption);
+  return inset;
+}
+
+void paint_inset_frame(cairo_t* cr, const DrawStyle& style, const Inset& inset) {
+  paint_panel(cr, style, inset.rect);
+  const text::Font font{style.small_size(), false};
+  const text::Metrics m = text::metrics(cr, font);
+  text::draw(cr, font, inset.rect.x + 8 * style.u, inset.rect.y + 6 * style.u + m.ascent, inset.caption.c_str(),
+             style.theme->text_muted);
+}
+
+PathInset path_inset(Inset inset, std::vector<Vec2> path) {
+  Bounds bounds;
+  for (const Vec2& p : path) bounds.include(p);
+  PathInset out;
+  out.camera = Camera(view_of(bounds, 0.06), static_cast<int>(inset.plot.width), static_cast<int>(inset.plot.height));
+  out.inset = std::move(inset);
+  out.path = std::move(path);
+  return out;
+}
+
+void paint_path_inset(cairo_t* cr, const DrawStyle& style, const PathInset& inset, const Vec2& now,
+                      std::size_t travelled) {
+  paint_inset_frame(cr, style, inset.inset);
+  const Theme& theme = *style.theme;
+  cairo_save(cr);
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  // The whole path thin and pale, the part behind G strong.
+  const auto polyline = [&](std::size_t count) {
+    for (std::size_t i = 0; i < count; ++i) {
+      const Vec2 p = inset.to_pixels(inset.path[i]);
+      if (i == 0)
+        cairo_move_to(cr, p.x(), p.y());
+      else
+        cairo_line_to(cr, p.x(), p.y());
+    }
+  };
+  polyline(inset.path.size());
+  set_colour(cr, theme.text_muted);
+  cairo_set_line_width(cr, std::max(1.0, 0.8 * style.u));
+  cairo_stroke(cr);
+  polyline(std::min(travelled, inset.path.size()));
+  const Vec2 at = inset.to_pixels(now);
+  cairo_line_to(cr, at.x(), at.y());
+  set_colour(cr, theme.trail);
+  cairo_set_line_width(cr, style.trail_width());
+  if (travelled > 0) cairo_stroke(cr);
+  cairo_new_path(cr);
+  cairo_restore(cr);
+  // The heights of the path's ends, so the inset says how far the fall goes.
+  const text::Font font{style.small_size(), false};
+  std::array<char, 48> label{};
+  for (const Vec2& end : {inset.path.front(), inset.path.back()}) {
+    std::snprintf(label.data(), label.size(), "y = %.0f m", std::fabs(end.y()) < 0.5 ? 0.0 : end.y());
+    use_minus_signs(label);
+    const Vec2 p = inset.to_pixels(end);
+    text::draw_with_halo(cr, font, p.x() + style.system_com_radius() + 5 * style.u, p.y() + 0.35 * font.size,
+                         label.data(), theme.text_muted, theme.panel, 0.3 * font.size);
+  }
+  paint_com_symbol(cr, style, at, style.system_com_radius());
 }
 
 TitleLayout title_layout(cairo_t* cr, const DrawStyle& style, const std::string& title, int width) {

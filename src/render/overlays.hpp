@@ -24,10 +24,12 @@ struct Rect {
 struct GridSpec {
   RoundLength spacing;
   Vec2 anchor = Vec2::Zero();
-  bool relative = false;  // ticks count from the anchor (a camera falling with G)
+  bool relative = false;    // ticks count from the anchor (a camera falling with G)
+  bool name_every = false;  // every horizontal line named "y = −44.2 m" (a camera following a fall)
+  bool x_ticks = true;      // ticks along the bottom edge too
 };
-/// Grid lines about every tenth of the frame's smaller side, at a round spacing.
-[[nodiscard]] RoundLength grid_spacing_for(const Camera& camera, int width, int height);
+/// Grid lines about every `lines`-th of the frame's smaller side, at a round spacing.
+[[nodiscard]] RoundLength grid_spacing_for(const Camera& camera, int width, int height, double lines = 10);
 
 void paint_background(cairo_t* cr, const DrawStyle& style, int width, int height);
 void paint_grid(cairo_t* cr, const DrawStyle& style, const Camera& camera, const GridSpec& grid, int width, int height);
@@ -36,6 +38,32 @@ void paint_grid(cairo_t* cr, const DrawStyle& style, const Camera& camera, const
 /// axis names it: "x = 1.2 m" (or "Δx = 0.1 m" counted from G for a following camera).
 void paint_axes(cairo_t* cr, const DrawStyle& style, const Camera& camera, const GridSpec& grid, int width, int height,
                 const std::vector<Rect>& avoid);
+
+/// A corner box (top right, from `top` down): a panel with a caption over a plot area.
+struct Inset {
+  Rect rect;  // the panel
+  Rect plot;  // inside it, under the caption
+  std::string caption;
+};
+[[nodiscard]] Inset inset_layout(cairo_t* cr, const DrawStyle& style, std::string caption, double top, int width);
+/// The panel and its caption.
+void paint_inset_frame(cairo_t* cr, const DrawStyle& style, const Inset& inset);
+
+/// The lab-frame inset of a following camera: the whole path of G over the clip, the
+/// part travelled drawn strong, and G now marked on it.
+struct PathInset {
+  Inset inset;
+  Camera camera;           // world to pixels of a plot-sized frame
+  std::vector<Vec2> path;  // G at even times over the clip, oldest first
+  [[nodiscard]] Vec2 to_pixels(const Vec2& world) const {
+    return camera.to_pixels(world) + Vec2(inset.plot.x, inset.plot.y);
+  }
+};
+/// Fits `path` (at least two points) into `inset`'s plot area at one scale.
+[[nodiscard]] PathInset path_inset(Inset inset, std::vector<Vec2> path);
+/// `travelled`: how many points of the path are behind G now.
+void paint_path_inset(cairo_t* cr, const DrawStyle& style, const PathInset& inset, const Vec2& now,
+                      std::size_t travelled);
 
 /// Where the title goes (top left) and its font size, shrunk to fit the frame's width.
 struct TitleLayout {

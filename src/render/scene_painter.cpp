@@ -110,6 +110,11 @@ void paint_pin(cairo_t* cr, const DrawStyle& style, const Vec2& at) {
   cairo_stroke(cr);
 }
 
+double trail_alpha(const Theme& theme, double fade) {
+  const double f = std::clamp(fade, 0.0, 1.0);
+  return theme.trail.a * f * f;
+}
+
 namespace {
 
 void paint_trail(cairo_t* cr, const DrawStyle& style, const DrawList& list, const Camera& camera) {
@@ -119,8 +124,7 @@ void paint_trail(cairo_t* cr, const DrawStyle& style, const DrawList& list, cons
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
   for (std::size_t j = 1; j < list.trail.size(); ++j) {
     const Vec2 a = camera.to_pixels(list.trail[j - 1].at), b = camera.to_pixels(list.trail[j].at);
-    const double fade = std::clamp(list.trail[j].fade, 0.0, 1.0);
-    set_colour(cr, with_alpha(style.theme->trail, style.theme->trail.a * fade * fade));
+    set_colour(cr, with_alpha(style.theme->trail, trail_alpha(*style.theme, list.trail[j].fade)));
     cairo_move_to(cr, a.x(), a.y());
     cairo_line_to(cr, b.x(), b.y());
     cairo_stroke(cr);

@@ -18,6 +18,10 @@ namespace linkage {
 /// The colour of an arrow kind in the theme.
 [[nodiscard]] const Rgba& arrow_colour(const Theme& theme, ArrowKind kind);
 
+/// The opacity of a trail's segment whose newer end has `fade` (1 now, 0 at the
+/// trail's age limit): the theme's, times fade squared, so old parts fade quickly.
+[[nodiscard]] double trail_alpha(const Theme& theme, double fade);
+
 /// Where a frame's names go, in pixels: each block's number on its block, the pin's
 /// name and each arrow's name (with its value when stretched) clear of one another, of
 /// the marks, the `occupied` panels, the arrows and the blocks where the frame has room.

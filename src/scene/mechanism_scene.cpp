@@ -461,10 +461,11 @@ void MechanismScene::add_trails(std::size_t k, MechanismDrawList& out) const {
   const auto first = std::lower_bound(times.begin(), times.end(), now - trail_seconds_ - 1e-9);
   const auto last = std::upper_bound(times.begin(), times.end(), now + 1e-9);
   for (const BodyPoint& trail : trails_) {
-    MechanismDrawList::Line line{MechanismDrawList::Line::Kind::trail, {}};
+    MechanismDrawList::Line line{MechanismDrawList::Line::Kind::trail, {}, {}};
     for (auto it = first; it < last; ++it) {
       const auto i = static_cast<std::size_t>(it - times.begin());
       line.points.push_back(world_point(fine ? motion_.trail_poses[i] : motion_.samples[i].pose, trail));
+      line.fade.push_back(trail_seconds_ > 0 ? std::clamp(1.0 - (now - *it) / trail_seconds_, 0.0, 1.0) : 1.0);
     }
     out.lines.push_back(std::move(line));
     // A traced point off its body's outline (a coupler point) is tied to the body's
@@ -476,7 +477,7 @@ void MechanismScene::add_trails(std::size_t k, MechanismDrawList& out) const {
     // Grown by 5 % about the centre: a point on the outline (a rod's end) is the body's own.
     std::vector<Vec2> outline = body_outline(geometry_.bodies[b], pose, b);
     for (Vec2& v : outline) v = centre + 1.05 * (v - centre);
-    if (!inside(outline, at)) out.lines.push_back({MechanismDrawList::Line::Kind::spin, {centre, at}});
+    if (!inside(outline, at)) out.lines.push_back({MechanismDrawList::Line::Kind::spin, {centre, at}, {}});
   }
 }
 

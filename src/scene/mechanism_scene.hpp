@@ -86,6 +86,7 @@ struct MechanismDrawList {
   struct Line {
     enum class Kind { spin, rail, spring, dashpot, trail } kind = Kind::rail;
     std::vector<Vec2> points;
+    std::vector<double> fade{};  // a trail's, per point: 1 now, falling to 0 with age
   };
   struct Marker {
     enum class Kind { ground, pin, guide } kind = Kind::pin;

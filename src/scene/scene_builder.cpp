@@ -31,14 +31,12 @@ void add_arrow(DrawList& out, const SceneOptions& options, ArrowKind kind, const
 
 void add_trail(const Params& p, const SceneOptions& options, const Motion& motion, std::size_t index, DrawList& out) {
   const MotionSample& now = motion.samples[index];
-  const Vec2 anchor = options.relative_to_com ? system_com(now.state) : Vec2::Zero();
   const double oldest = now.t - options.trail_seconds;
   std::size_t first = index;
   while (first > 0 && motion.samples[first - 1].t >= oldest) --first;
   for (std::size_t j = first; j <= index; ++j) {
     const BodyState& s = motion.samples[j].state;
-    Vec2 at = pin_position(p, s.x1, s.y1, s.theta1);
-    if (options.relative_to_com) at += anchor - system_com(s);
+    const Vec2 at = pin_position(p, s.x1, s.y1, s.theta1);  // in the world: the path P really took
     const double age = now.t - motion.samples[j].t;
     out.trail.push_back({at, options.trail_seconds > 0 ? 1.0 - age / options.trail_seconds : 1.0});
   }

@@ -8,8 +8,8 @@
 //   trail    P over the last `trail_seconds`, fading with age
 // The free-body view (`explode`) moves the blocks apart along the line of their centres,
 // each with its own pin point and loads.
-// In a frame that follows G (`relative_to_com`) the trail and the velocities are those
-// an observer falling with G sees; the blocks are where they are.
+// In a frame that follows G (`relative_to_com`) the velocities are those an observer
+// falling with G sees; the blocks and the trail are where they are in the world.
 #include <array>
 #include <cstddef>
 

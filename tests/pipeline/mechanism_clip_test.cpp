@@ -574,6 +574,12 @@ TEST(MechanismClip, TrailsAreSampledFourTimesAFrame) {
                             world_point(motion.samples[k - 1].pose, geometry.resolve("3.B", ""));
     const Vec2 last_step = trail.points.back() - trail.points[trail.points.size() - 2];
     EXPECT_LT(last_step.norm(), 0.4 * frame_step.norm());
+    // It fades with age: 1 at the frame's point, 1 - age / 2 s before (drawn with
+    // opacity fade squared, render/scene_painter.hpp trail_alpha).
+    ASSERT_EQ(trail.fade.size(), trail.points.size());
+    EXPECT_DOUBLE_EQ(trail.fade.back(), 1.0);
+    EXPECT_NEAR(trail.fade.front(), 1.0 - (motion.times[k] - motion.trail_times.front()) / 2.0, 1e-9);
+    for (std::size_t j = 1; j < trail.fade.size(); ++j) EXPECT_GT(trail.fade[j], trail.fade[j - 1]);
   }
 }
 
