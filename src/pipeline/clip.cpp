@@ -88,14 +88,9 @@ void produce_motion(const Clip& clip, const ClipProgress& progress, ClipResult& 
 /// all of it), sampled as densely as the clip would be; nothing else is sampled.
 void produce_still(const Clip& clip, const ClipProgress& progress, ClipResult& result) {
   const RenderSettings& s = clip.settings;
-  std::vector<double> times;
-  if (s.elements.has(Element::trail) || !s.panel.empty()) {
-    const double step = s.speed / s.fps;
-    const double span = s.panel.empty() ? std::min(s.at, SceneOptions{}.trail_seconds) : s.at;
-    const auto back = static_cast<long>(std::floor(span / step));
-    for (long j = back; j > 0; --j) times.push_back(s.at - static_cast<double>(j) * step);
-  }
-  times.push_back(s.at);
+  const bool look_back = s.elements.has(Element::trail) || !s.panel.empty();
+  const std::vector<double> times =
+      s.still_times(look_back ? (s.panel.empty() ? std::min(s.at, SceneOptions{}.trail_seconds) : s.at) : 0.0);
   SimulationOptions options = clip.simulation;
   options.duration = std::max(s.at, options.dt);
   options.validate();

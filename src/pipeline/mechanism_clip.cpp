@@ -120,11 +120,7 @@ void produce_motion(const sym::System& system, const GiNaC::exmap& initial, cons
 void produce_still(const sym::System& system, const GiNaC::exmap& initial, const MechanismClip& clip,
                    const ClipProgress& progress, ClipResult& result) {
   const RenderSettings& s = clip.settings;
-  const double step = s.speed / s.fps;
-  const auto back = static_cast<long>(std::floor((s.panel.empty() ? std::min(s.at, kTrailSeconds) : s.at) / step));
-  std::vector<double> times;
-  for (long j = back; j > 0; --j) times.push_back(s.at - static_cast<double>(j) * step);
-  times.push_back(s.at);
+  const std::vector<double> times = s.still_times(s.panel.empty() ? std::min(s.at, kTrailSeconds) : s.at);
   SimulationOptions options = clip.simulation;
   options.duration = std::max(s.at, options.dt);
   options.validate();

@@ -41,6 +41,15 @@ long RenderSettings::frame_count() const { return std::lround(duration / speed *
 
 double RenderSettings::frame_time(long k) const { return static_cast<double>(k) * speed / fps; }
 
+std::vector<double> RenderSettings::still_times(double look_back) const {
+  const double step = speed / fps;
+  const auto back = static_cast<long>(std::floor(look_back / step));
+  std::vector<double> times;
+  for (long j = back; j > 0; --j) times.push_back(at - static_cast<double>(j) * step);
+  times.push_back(at);
+  return times;
+}
+
 void RenderSettings::validate() const {
   check_size(width, height, "size");
   if (fps < 1 || fps > kMaxFps)

@@ -60,6 +60,9 @@ struct RenderSettings {
   [[nodiscard]] long frame_count() const;
   /// k x speed / fps.
   [[nodiscard]] double frame_time(long k) const;
+  /// The times a still samples: every frame step over the `look_back` seconds before
+  /// `at` (what its trail or panel shows), then `at`.
+  [[nodiscard]] std::vector<double> still_times(double look_back) const;
   /// Throws Error::input naming the flag (--size, --fps, --duration, --speed, --at,
   /// --view, captions) and the valid range for the first bad value.
   void validate() const;
