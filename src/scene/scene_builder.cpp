@@ -150,15 +150,17 @@ void build_scene(const Params& p, const SceneOptions& options, const Motion& mot
     if (!exploded) out.markers.push_back(marker(MarkerKind::com_system, com));
   }
   if (shown.has(Element::pin)) {
-    // Apart, each block has its own half of the pin.
+    // Apart, each block has its own half of the pin; so has each block once Case 1 has
+    // drifted visibly (beyond a hundredth of the width), to show the gap.
+    const bool drifted = !exploded && (pin2 - pin1).norm() > 0.01 * p.w;
     for (const Vec2& at : {pin1, pin2}) {
       Marker pin = marker(MarkerKind::pin, at);
       if (tags) {
-        pin.tag = "P";
+        pin.tag = drifted ? (at == pin1 ? "P of 1" : "P of 2") : "P";
         pin.tag_direction = pin_tag_direction(sample, at, exploded ? Vec2(at == pin1 ? c1 : c2) : com);
       }
       out.markers.push_back(pin);
-      if (!exploded) break;
+      if (!exploded && !drifted) break;
     }
   }
 

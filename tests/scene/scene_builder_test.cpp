@@ -247,5 +247,31 @@ TEST(SceneBuilder, FreeBodyViewDrawsTheBlocksApartEachWithItsPinPointAndLoads) {
   EXPECT_NEAR((find_arrow(list, ArrowKind::gravity, 1)->tail - list.blocks[1].centre).norm(), 0, 1e-15);
 }
 
+TEST(SceneBuilder, DriftedCase1MarksEachBlocksOwnPinPoint) {
+  const Params p;
+  Motion motion = test::still_motion(p, State{}, true);
+  const SceneOptions options = scene_options_for(p, motion, ElementSet::defaults(), false);
+  const auto pins_of = [&](double shift) {
+    Motion drifted = motion;
+    drifted.samples[0].state.x2 += shift;  // block 2 off the pin by `shift` along x
+    DrawList list;
+    build_scene(p, options, drifted, 0, list);
+    std::vector<Marker> pins;
+    for (const Marker& m : list.markers)
+      if (m.kind == MarkerKind::pin) pins.push_back(m);
+    return pins;
+  };
+  // Half a millimetre (under a hundredth of w = 0.1 m): one pin, P.
+  const std::vector<Marker> close = pins_of(0.0005);
+  ASSERT_EQ(close.size(), 1U);
+  EXPECT_EQ(close[0].tag, "P");
+  // A centimetre: block 1's pin point and block 2's, a centimetre apart, each named.
+  const std::vector<Marker> apart = pins_of(0.01);
+  ASSERT_EQ(apart.size(), 2U);
+  EXPECT_EQ(apart[0].tag, "P of 1");
+  EXPECT_EQ(apart[1].tag, "P of 2");
+  EXPECT_NEAR((apart[1].at - apart[0].at - Vec2(0.01, 0)).norm(), 0, 1e-12);
+}
+
 }  // namespace
 }  // namespace linkage
