@@ -70,7 +70,7 @@ std::vector<LegendRow> legend_rows(const Theme& theme, const SceneOptions& optio
     rows.push_back({Glyph::line, theme.trail, "path of P", "last " + seconds_text(options.trail_seconds)});
   if (shown.has(Element::com)) rows.push_back({Glyph::com, theme.com, "centres of mass", ""});
   // Paths and velocities are then relative to G: say so.
-  if (follow) rows.push_back({Glyph::none, theme.text_muted, "the view falls with G; the grid stays put", ""});
+  if (follow) rows.push_back({Glyph::none, theme.text_muted, "the view follows G; the grid stays put", ""});
   return rows;
 }
 
