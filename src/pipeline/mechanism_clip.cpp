@@ -39,10 +39,15 @@ std::vector<BodyPoint> resolve_trails(const MechanismGeometry& geometry, const s
   return points;
 }
 
-std::string ensemble_label(int n, double spread) {
-  char buffer[96];
-  std::snprintf(buffer, sizeof buffer, "ensemble: %d runs, first coordinate + 0 .. %.3g", n, spread);
-  return buffer;
+/// The ensemble's legend row: "ensemble: 20 runs, 1.theta + 0 .. 1e-06".
+std::string ensemble_label(const sym::System& system, const MechanismClip& clip) {
+  if (clip.ensemble < 2 || system.coordinates().empty()) return {};
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, " + 0 .. %.3g", clip.spread);
+  std::string row = "ensemble: " + std::to_string(clip.ensemble) + " runs, ";
+  row += system.coordinates().front().coordinate.key;
+  row += buffer;
+  return row;
 }
 
 /// Another run's motion at the clip's frame times, drawn as ghosts (ensemble or compare).
@@ -76,13 +81,13 @@ std::vector<Overlay> sample_overlays(const sym::System& system, const GiNaC::exm
 class MechanismFrames {
  public:
   MechanismFrames(const MechanismGeometry& geometry, const MechanismMotion& motion, const MechanismClip& clip,
-                  const RenderSettings& settings, const std::vector<Overlay>& overlays = {})
+                  const RenderSettings& settings, const std::vector<Overlay>& overlays, std::string ensemble_row)
       : scene_(geometry, motion, resolve_trails(geometry, clip.trails), kTrailSeconds, clip.settings.arrow_scale),
         motion_(motion),
         settings_(settings),
         labels_{clip.settings.title, run_label(clip.simulation)},
         overlays_(overlays) {
-    if (clip.ensemble >= 2) labels_.ensemble = ensemble_label(clip.ensemble, clip.spread);
+    labels_.ensemble = std::move(ensemble_row);
     if (clip.compare) labels_.compare = "compared: " + clip.compare->label;
     style_.theme = &clip.theme;
     style_.u = DrawStyle::unit_for(settings_.width, settings_.height);
@@ -157,7 +162,8 @@ void produce_motion(const sym::System& system, const GiNaC::exmap& initial, cons
   panel.t_end = s.duration;
   const std::vector<Overlay> overlays = sample_overlays(system, initial, clip, clip.simulation, times, result);
   FrameLayout layout(s, clip.theme, std::move(panel));
-  MechanismFrames frames(mechanism_geometry(system), motion, clip, layout.scene_settings(), overlays);
+  MechanismFrames frames(mechanism_geometry(system), motion, clip, layout.scene_settings(), overlays,
+                         ensemble_label(system, clip));
 
   RenderStats& stats = result.stats;
   encode_frames(
@@ -188,7 +194,8 @@ void produce_still(const sym::System& system, const GiNaC::exmap& initial, const
   panel.t_end = s.at;
   const std::vector<Overlay> overlays = sample_overlays(system, initial, clip, options, times, result);
   FrameLayout layout(s, clip.theme, std::move(panel));
-  MechanismFrames frames(mechanism_geometry(system), motion, clip, layout.scene_settings(), overlays);
+  MechanismFrames frames(mechanism_geometry(system), motion, clip, layout.scene_settings(), overlays,
+                         ensemble_label(system, clip));
   Frame frame(s.width, s.height);
   const std::size_t last = times.size() - 1;
   layout.draw(last, s.at, frame, [&](Frame& scene) { frames.draw(last, scene); });

@@ -138,8 +138,11 @@ void paint_ghosts(cairo_t* cr, const DrawStyle& style, const Camera& camera, con
       } else {
         path_through(cr, camera, outline.points, true);
       }
-      set_colour(cr, with_alpha(colour, compare ? 0.15 : 0.08));
-      cairo_fill_preserve(cr);
+      // Only the compared run is filled: 200 faint fills would stack into a tint of the main run.
+      if (compare) {
+        set_colour(cr, with_alpha(colour, 0.15));
+        cairo_fill_preserve(cr);
+      }
       set_colour(cr, with_alpha(colour, compare ? 0.9 : 0.35));
       cairo_set_line_width(cr, (compare ? 1.5 : 1.0) * style.edge_width());
       cairo_stroke(cr);
