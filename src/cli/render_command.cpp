@@ -16,6 +16,7 @@
 #include "cli/commands.hpp"
 #include "cli/input_options.hpp"
 #include "cli/mechanism_options.hpp"
+#include "cli/overlay_options.hpp"
 #include "cli/simulation_flags.hpp"
 #include "core/error.hpp"
 #include "core/progress.hpp"
@@ -47,6 +48,7 @@ struct RenderFlags {
   CLI::Option* view_option = nullptr;
   MechanismOptions mechanism;
   std::vector<std::string> trails;  // --trail BODY.POINT, with --mechanism
+  OverlayFlags overlays;            // --ensemble, --spread, --compare, with --mechanism
 };
 
 int parse_whole(const std::string& text, const std::string& origin) {
@@ -175,11 +177,14 @@ ClipResult render_mechanism(const RenderFlags& f, const ClipProgress& progress) 
   clip.theme = load_theme(clip.settings.theme, assets_dir(LINKAGE_ASSETS_DIR), "theme");
   clip.simulation = resolve_simulation_flags(f.simulation, clip.settings.duration);
   clip.trails = f.trails;
+  std::unique_ptr<sym::System> compared;  // the compared run's own, when --compare sets a value
+  resolve_overlay_flags(f.overlays, f.mechanism, f.inputs, f.simulation, clip, compared);
   clip.validate(system);
   const bool still = clip.is_still();
   if (f.at_option->count() > 0 && !still)
     throw Error::input("--at: applies to a still (--out FILE.png); a clip shows 0 .. --duration");
   const sym::ClosedState closed = sym::checked_initial_state(system);
+  if (clip.compare && clip.compare->system == nullptr) clip.compare->initial = closed.state;
   if (!f.quiet) {
     if (still && !clip.frames && f.duration_option->count() > 0)
       std::fprintf(stderr, "linkage: note: --duration applies to a clip; a still shows the time --at (default 0)\n");
@@ -197,6 +202,7 @@ ClipResult render_mechanism(const RenderFlags& f, const ClipProgress& progress) 
 void run_render(const RenderFlags& flags) {
   if (!flags.mechanism.chosen()) {
     if (!flags.trails.empty()) throw Error::input("--trail: applies only with --mechanism");
+    if (flags.overlays.any()) throw Error::input("--ensemble, --spread, --compare: apply only with --mechanism");
     if (!flags.mechanism.settings.empty())
       throw Error::input("--set: applies only with --mechanism; the homework takes its own flags");
   }
@@ -306,6 +312,7 @@ void register_render(CLI::App& app) {
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
       ->group(look);
+  add_overlay_options(sub, f->overlays, look);
   add_simulation_flags(sub, f->simulation);
   add_input_options(sub, f->inputs);
   add_mechanism_options(sub, f->mechanism);

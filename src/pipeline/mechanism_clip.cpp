@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
@@ -16,6 +17,7 @@
 #include "render/mechanism_painter.hpp"
 #include "render/scene_painter.hpp"
 #include "scene/mechanism_scene.hpp"
+#include "symbolic/loop_closure.hpp"
 
 namespace linkage {
 namespace fs = std::filesystem;
@@ -37,16 +39,56 @@ std::vector<BodyPoint> resolve_trails(const MechanismGeometry& geometry, const s
   return points;
 }
 
+/// The ensemble's legend row: "ensemble: 20 runs, 1.theta + 0 .. 1e-06".
+std::string ensemble_label(const sym::System& system, const MechanismClip& clip) {
+  if (clip.ensemble < 2 || system.coordinates().empty()) return {};
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, " + 0 .. %.3g", clip.spread);
+  std::string row = "ensemble: " + std::to_string(clip.ensemble) + " runs, ";
+  row += system.coordinates().front().coordinate.key;
+  row += buffer;
+  return row;
+}
+
+/// Another run's motion at the clip's frame times, drawn as ghosts (ensemble or compare).
+struct Overlay {
+  MechanismGeometry geometry;
+  MechanismMotion motion;
+  double ramp = 0;
+  bool compare = false;
+};
+
+/// The other runs' motions with their geometry and place in the colour ramp.
+std::vector<Overlay> sample_overlays(const sym::System& system, const GiNaC::exmap& initial, const MechanismClip& clip,
+                                     const SimulationOptions& options, const std::vector<double>& times,
+                                     ClipResult& result) {
+  std::vector<MechanismMotion> motions = overlay_motions(system, initial, clip, options, times, result);
+  std::vector<Overlay> overlays;
+  const std::size_t members = motions.size() - (clip.compare ? 1 : 0);
+  const MechanismGeometry geometry = mechanism_geometry(system);
+  for (std::size_t i = 0; i < motions.size(); ++i) {
+    const bool compare = i == members;
+    const double ramp = members <= 1 ? 1.0 : static_cast<double>(i) / static_cast<double>(members - 1);
+    overlays.push_back(
+        {compare && clip.compare->system != nullptr ? mechanism_geometry(*clip.compare->system) : geometry,
+         std::move(motions[i]), compare ? 0.0 : ramp, compare});
+  }
+  return overlays;
+}
+
 /// Draws the frames of one motion: a fixed camera around the whole motion for a
 /// grounded mechanism, else one following the centroid at a fixed zoom.
 class MechanismFrames {
  public:
   MechanismFrames(const MechanismGeometry& geometry, const MechanismMotion& motion, const MechanismClip& clip,
-                  const RenderSettings& settings)
+                  const RenderSettings& settings, const std::vector<Overlay>& overlays, std::string ensemble_row)
       : scene_(geometry, motion, resolve_trails(geometry, clip.trails), kTrailSeconds, clip.settings.arrow_scale),
         motion_(motion),
         settings_(settings),
-        labels_{clip.settings.title, run_label(clip.simulation)} {
+        labels_{clip.settings.title, run_label(clip.simulation)},
+        overlays_(overlays) {
+    labels_.ensemble = std::move(ensemble_row);
+    if (clip.compare) labels_.compare = "compared: " + clip.compare->label;
     style_.theme = &clip.theme;
     style_.u = DrawStyle::unit_for(settings_.width, settings_.height);
     follow_ = !scene_.geometry().grounded();
@@ -61,6 +103,7 @@ class MechanismFrames {
   void draw(std::size_t k, Frame& frame) {
     const auto start = std::chrono::steady_clock::now();
     scene_.frame(k, list_);
+    add_ghosts(k);
     const Camera camera = follow_ ? camera_.centred_at(scene_.centroid(k)) : camera_;
     const cairo::SurfacePtr surface = cairo::surface_for(frame);
     const cairo::ContextPtr cr = cairo::context(surface.get());
@@ -73,8 +116,22 @@ class MechanismFrames {
   }
 
   [[nodiscard]] const RenderStats& stats() const { return stats_; }
+  [[nodiscard]] const MechanismDrawList& list() const { return list_; }
 
  private:
+  void add_ghosts(std::size_t k) {
+    for (const Overlay& overlay : overlays_) {
+      MechanismDrawList::Ghost ghost;
+      ghost.ramp = overlay.ramp;
+      ghost.compare = overlay.compare;
+      const std::vector<double>& pose = overlay.motion.samples[k].pose;
+      for (std::size_t b = 0; b < overlay.geometry.bodies.size(); ++b)
+        ghost.outlines.push_back(
+            {b, body_outline(overlay.geometry.bodies[b], pose, b), overlay.geometry.bodies[b].shape});
+      list_.ghosts.push_back(std::move(ghost));
+    }
+  }
+
   MechanismScene scene_;
   const MechanismMotion& motion_;
   const RenderSettings& settings_;
@@ -82,6 +139,7 @@ class MechanismFrames {
   DrawStyle style_;
   bool follow_ = false;
   Camera camera_;
+  const std::vector<Overlay>& overlays_;
   MechanismDrawList list_;
   RenderStats stats_;
 };
@@ -102,8 +160,10 @@ void produce_motion(const sym::System& system, const GiNaC::exmap& initial, cons
       sample_mechanism_motion(system, initial, clip.simulation, times, clip.trails.empty() ? 1 : kTrailSteps, result,
                               progress, s.panel, &panel);
   panel.t_end = s.duration;
+  const std::vector<Overlay> overlays = sample_overlays(system, initial, clip, clip.simulation, times, result);
   FrameLayout layout(s, clip.theme, std::move(panel));
-  MechanismFrames frames(mechanism_geometry(system), motion, clip, layout.scene_settings());
+  MechanismFrames frames(mechanism_geometry(system), motion, clip, layout.scene_settings(), overlays,
+                         ensemble_label(system, clip));
 
   RenderStats& stats = result.stats;
   encode_frames(
@@ -128,8 +188,10 @@ void produce_still(const sym::System& system, const GiNaC::exmap& initial, const
   const MechanismMotion motion = sample_mechanism_motion(
       system, initial, options, times, clip.trails.empty() ? 1 : kTrailSteps, result, progress, s.panel, &panel);
   panel.t_end = s.at;
+  const std::vector<Overlay> overlays = sample_overlays(system, initial, clip, options, times, result);
   FrameLayout layout(s, clip.theme, std::move(panel));
-  MechanismFrames frames(mechanism_geometry(system), motion, clip, layout.scene_settings());
+  MechanismFrames frames(mechanism_geometry(system), motion, clip, layout.scene_settings(), overlays,
+                         ensemble_label(system, clip));
   Frame frame(s.width, s.height);
   const std::size_t last = times.size() - 1;
   layout.draw(last, s.at, frame, [&](Frame& scene) { frames.draw(last, scene); });
@@ -188,6 +250,46 @@ MechanismMotion sample_mechanism_motion(const sym::System& system, const GiNaC::
   return motion;
 }
 
+std::vector<MechanismMotion> overlay_motions(const sym::System& system, const GiNaC::exmap& initial,
+                                             const MechanismClip& clip, const SimulationOptions& options,
+                                             const std::vector<double>& times, ClipResult& result) {
+  std::vector<MechanismMotion> motions;
+  ClipResult scratch;  // the main run's warnings stand for the ensemble's
+  if (clip.ensemble >= 2)
+    for (const GiNaC::exmap& state : ensemble_states(system, initial, clip.ensemble, clip.spread)) {
+      throw_if_interrupted();
+      motions.push_back(sample_mechanism_motion(system, state, options, times, 1, scratch));
+    }
+  if (clip.compare) {
+    const sym::System& other = clip.compare->system != nullptr ? *clip.compare->system : system;
+    SimulationOptions compared = clip.compare->simulation;
+    compared.duration = options.duration;
+    scratch.warnings.clear();
+    motions.push_back(sample_mechanism_motion(other, clip.compare->initial, compared, times, 1, scratch));
+    for (const std::string& warning : scratch.warnings) result.warnings.push_back("compared run: " + warning);
+  }
+  result.stats.samples += scratch.stats.samples;
+  result.stats.simulate_seconds += scratch.stats.simulate_seconds;
+  return motions;
+}
+
+std::vector<GiNaC::exmap> ensemble_states(const sym::System& system, const GiNaC::exmap& initial, int n,
+                                          double spread) {
+  std::vector<GiNaC::exmap> states;
+  if (system.coordinates().empty() || n < 2) return states;
+  const GiNaC::symbol& q = system.coordinates().front().symbols.q;
+  const auto found = initial.find(q);
+  const double q0 = found == initial.end() ? 0.0 : GiNaC::ex_to<GiNaC::numeric>(found->second).to_double();
+  bool loops = false;
+  for (const sym::JointSystem& joint : system.joints()) loops = loops || !joint.in_tree;
+  for (int k = 1; k < n; ++k) {
+    GiNaC::exmap state = initial;
+    state[q] = q0 + spread * static_cast<double>(k) / static_cast<double>(n - 1);
+    states.push_back(loops ? sym::close_loops(system, state).state : state);
+  }
+  return states;
+}
+
 bool MechanismClip::is_still() const { return out && output_kind(*out, "out") == OutputKind::png; }
 
 void MechanismClip::validate(const sym::System& system) const {
@@ -211,6 +313,11 @@ void MechanismClip::validate(const sym::System& system) const {
     throw Error::invalid("frames", "'" + frames->string() + "' exists and is not a folder");
   (void)resolve_trails(mechanism_geometry(system), trails);
   if (!settings.panel.empty()) (void)mechanism_panel_columns(mechanism_columns(system), settings.panel);
+  if (ensemble != 0 && (ensemble < 2 || ensemble > 200))
+    throw Error::invalid("ensemble", std::to_string(ensemble) + " runs; expected 2 .. 200");
+  if (!(std::isfinite(spread) && spread > 0))
+    throw Error::invalid("spread", "expected a finite number > 0 (rad or m, the first coordinate's unit)");
+  if (compare) compare->simulation.validate();
 }
 
 ClipResult produce_mechanism_clip(const sym::System& system, const GiNaC::exmap& initial, const MechanismClip& clip,

@@ -20,6 +20,15 @@
 
 namespace linkage {
 
+/// A second run drawn over the main one in a second colour (--compare): its own system
+/// (other parameters) or the clip's, its own initial state and simulation options.
+struct MechanismRun {
+  const sym::System* system = nullptr;  // null: the clip's
+  GiNaC::exmap initial;
+  SimulationOptions simulation;
+  std::string label;  // the legend row: what differs, "integrator=rk4"
+};
+
 struct MechanismClip {
   SimulationOptions simulation;
   RenderSettings settings;
@@ -27,6 +36,9 @@ struct MechanismClip {
   std::vector<std::string> trails;              // "BODY.POINT": paths over the last 2 s
   std::optional<std::filesystem::path> out;     // .mp4 or .png (a still)
   std::optional<std::filesystem::path> frames;  // a numbered PNG sequence's folder
+  int ensemble = 0;                             // 0, or 2..200 runs (the main one among them)
+  double spread = 1e-6;                         // the ensemble's largest offset of the first coordinate
+  std::optional<MechanismRun> compare;
 
   [[nodiscard]] bool is_still() const;
   /// Checks the outputs, settings, simulation and trails before any work: Error::invalid
@@ -43,6 +55,17 @@ MechanismMotion sample_mechanism_motion(const sym::System& system, const GiNaC::
                                         const SimulationOptions& options, const std::vector<double>& frame_times,
                                         int trail_steps, ClipResult& result, const ClipProgress& progress = {},
                                         const std::vector<std::string>& panel_names = {}, PanelData* panel = nullptr);
+
+/// The ensemble's other runs: `initial` with the first generalized coordinate moved by
+/// spread k / (n - 1), k = 1 .. n - 1 (evenly spaced, no randomness), loops closed again.
+std::vector<GiNaC::exmap> ensemble_states(const sym::System& system, const GiNaC::exmap& initial, int n, double spread);
+
+/// The other runs' motions at `times`, each as sample_mechanism_motion gives it without
+/// trails: the ensemble's (ensemble_states), then the compared run's (its duration that
+/// of `options`). Adds their samples and the compared run's warnings to `result`.
+std::vector<MechanismMotion> overlay_motions(const sym::System& system, const GiNaC::exmap& initial,
+                                             const MechanismClip& clip, const SimulationOptions& options,
+                                             const std::vector<double>& times, ClipResult& result);
 
 /// Produces every output of `clip` for `system` from `initial` (generalized coordinates
 /// and rates with every loop closed, sym::checked_initial_state). Polls for Ctrl-C.

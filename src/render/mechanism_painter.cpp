@@ -114,6 +114,42 @@ void paint_bodies(cairo_t* cr, const DrawStyle& style, const Camera& camera, con
   }
 }
 
+// The ensemble's colour at `ramp` 0..1, from the trail colour to the velocity's (apart from the bodies').
+Rgba ensemble_colour(const Theme& theme, double ramp) {
+  const Rgba &a = theme.trail, &b = theme.velocity;
+  return {a.r + ramp * (b.r - a.r), a.g + ramp * (b.g - a.g), a.b + ramp * (b.b - a.b), 1.0};
+}
+
+Rgba compare_colour(const Theme& theme) { return theme.gravity; }
+
+// Other runs' bodies: the ensemble faint behind the main run, the compared run's outlines
+// over it (so identical settings trace exactly the main run's edges).
+void paint_ghosts(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List& list, bool compare) {
+  const Theme& theme = *style.theme;
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  for (const List::Ghost& ghost : list.ghosts) {
+    if (ghost.compare != compare) continue;
+    const Rgba colour = compare ? compare_colour(theme) : ensemble_colour(theme, ghost.ramp);
+    for (const List::Outline& outline : ghost.outlines) {
+      if (outline.shape == Shape::point) {
+        const Vec2 p = camera.to_pixels(outline.points.front());
+        cairo_new_path(cr);
+        cairo_arc(cr, p.x(), p.y(), 1.6 * style.com_radius(), 0, 2 * std::numbers::pi);
+      } else {
+        path_through(cr, camera, outline.points, true);
+      }
+      // Only the compared run is filled: 200 faint fills would stack into a tint of the main run.
+      if (compare) {
+        set_colour(cr, with_alpha(colour, 0.15));
+        cairo_fill_preserve(cr);
+      }
+      set_colour(cr, with_alpha(colour, compare ? 0.9 : 0.35));
+      cairo_set_line_width(cr, (compare ? 1.5 : 1.0) * style.edge_width());
+      cairo_stroke(cr);
+    }
+  }
+}
+
 // A triangle standing on a hatched base, apex at the point: the usual fixed support.
 void paint_ground(cairo_t* cr, const DrawStyle& style, const Vec2& at) {
   const Theme& theme = *style.theme;
@@ -187,20 +223,34 @@ void paint_body_labels(cairo_t* cr, const DrawStyle& style, const List& list, co
 }
 
 // The time (top right) and the run under it; the box they take.
-Rect paint_time(cairo_t* cr, const DrawStyle& style, double t, const std::string& run, int width) {
+Rect paint_time(cairo_t* cr, const DrawStyle& style, double t, const MechanismLabels& labels, int width) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "t = %.2f s", t);
   const text::Font font{style.text_size(), true}, small{style.small_size(), false};
   const double x = width - style.padding();
   const double y = style.padding() + text::metrics(cr, font).ascent;
   const Theme& theme = *style.theme;
+  const Rgba ensemble = ensemble_colour(theme, 0.5), compare = compare_colour(theme);
   text::draw_with_halo(cr, font, x, y, buffer, theme.text, theme.background, 3 * style.u, text::Align::right);
   double wide = text::width(cr, font, "t = 000.00 s"), bottom = y + text::metrics(cr, font).descent;
-  if (!run.empty()) {
-    const double under = y + 1.4 * style.small_size();
-    text::draw_with_halo(cr, small, x, under, run.c_str(), theme.text_muted, theme.background, 3 * style.u,
+  double under = y;
+  // The run, then a row per other run with a swatch of its colour.
+  const std::pair<const std::string*, const Rgba*> rows[] = {
+      {&labels.run, nullptr}, {&labels.ensemble, &ensemble}, {&labels.compare, &compare}};
+  for (const auto& [row, swatch] : rows) {
+    if (row->empty()) continue;
+    under += 1.4 * style.small_size();
+    text::draw_with_halo(cr, small, x, under, row->c_str(), theme.text_muted, theme.background, 3 * style.u,
                          text::Align::right);
-    wide = std::max(wide, text::width(cr, small, run.c_str()));
+    double row_wide = text::width(cr, small, row->c_str());
+    if (swatch != nullptr) {
+      const double side = 0.8 * style.small_size(), left = x - row_wide - 0.4 * side - side;
+      cairo_rectangle(cr, left, under - side, side, side);
+      set_colour(cr, *swatch);
+      cairo_fill(cr);
+      row_wide += 1.4 * side;
+    }
+    wide = std::max(wide, row_wide);
     bottom = under + text::metrics(cr, small).descent;
   }
   return {x - wide, style.padding(), wide, bottom - style.padding()};
@@ -220,13 +270,15 @@ void paint_mechanism_frame(cairo_t* cr, const DrawStyle& style, const Camera& ca
   paint_lines(cr, style, camera, list, List::Line::Kind::rail);
   paint_lines(cr, style, camera, list, List::Line::Kind::spring);
   paint_lines(cr, style, camera, list, List::Line::Kind::dashpot);
+  paint_ghosts(cr, style, camera, list, false);
   paint_bodies(cr, style, camera, list);
+  paint_ghosts(cr, style, camera, list, true);
   paint_lines(cr, style, camera, list, List::Line::Kind::spin);
   paint_trail_heads(cr, style, camera, list);
   paint_markers(cr, style, camera, list, List::Marker::Kind::ground);
   paint_markers(cr, style, camera, list, List::Marker::Kind::guide);
   paint_markers(cr, style, camera, list, List::Marker::Kind::pin);
-  std::vector<Rect> occupied{paint_time(cr, style, t, labels.run, width)};
+  std::vector<Rect> occupied{paint_time(cr, style, t, labels, width)};
   if (!labels.title.empty()) {
     const TitleLayout title = title_layout(cr, style, labels.title, width);
     paint_title(cr, style, labels.title, title);

@@ -16,7 +16,8 @@ namespace linkage {
 /// The frame's fixed text: the title (top left) and the run (under the time, top right).
 struct MechanismLabels {
   std::string title;
-  std::string run;  // "Case 3 · dop853"
+  std::string run;                    // "Case 3 · dop853"
+  std::string ensemble{}, compare{};  // legend rows for the other runs, empty without them
 };
 
 /// Paints the whole frame (it is fully covered) for the mechanism at time `t`.

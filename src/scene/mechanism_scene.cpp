@@ -227,6 +227,7 @@ void MechanismDrawList::clear() {
   arrows.clear();
   torques.clear();
   labels.clear();
+  ghosts.clear();
 }
 
 MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion& motion, std::vector<BodyPoint> trails,

@@ -130,6 +130,14 @@ struct MechanismDrawList {
   std::vector<Arrow> arrows;
   std::vector<Torque> torques;
   std::vector<Label> labels;  // body names at their centres
+  /// Another run's bodies, drawn over this one: an ensemble member (faint, at `ramp`
+  /// 0..1 of the colour ramp) or the compared run.
+  struct Ghost {
+    std::vector<Outline> outlines;
+    double ramp = 0;
+    bool compare = false;
+  };
+  std::vector<Ghost> ghosts;
   Legend legend;
   void clear();
 };

@@ -101,6 +101,28 @@ INSTANTIATE_TEST_SUITE_P(
                  "the simulation failed at t = ",
                  3}));
 
+// --ensemble, --spread and --compare (render --mechanism): the flag and the valid range.
+INSTANTIATE_TEST_SUITE_P(
+    Overlays, RenderBadInput,
+    ::testing::Values(BadInput{{"--mechanism", "double-pendulum", "--ensemble", "1"},
+                               "--ensemble: '1' is not a whole number of runs in 2 .. 200"},
+                      BadInput{{"--mechanism", "double-pendulum", "--ensemble", "201"}, "in 2 .. 200"},
+                      BadInput{{"--mechanism", "double-pendulum", "--ensemble", "2.5"}, "in 2 .. 200"},
+                      BadInput{{"--mechanism", "double-pendulum", "--ensemble", "5", "--spread", "0"},
+                               "--spread: '0' must be a finite number > 0"},
+                      BadInput{{"--mechanism", "double-pendulum", "--ensemble", "5", "--spread", "nan"},
+                               "must be a finite number > 0"},
+                      BadInput{{"--mechanism", "double-pendulum", "--spread", "1e-3"},
+                               "--spread: applies only with --ensemble"},
+                      BadInput{{"--ensemble", "5"}, "apply only with --mechanism"},
+                      BadInput{{"--mechanism", "double-pendulum", "--compare", "2.thet=1"},
+                               "--compare: '2.thet' (--compare 2.thet) is not a parameter or initial coordinate of "
+                               "'double-pendulum' (did you mean '2.theta'?)"},
+                      BadInput{{"--mechanism", "double-pendulum", "--compare", "integrator=rk5"},
+                               "--compare: --integrator: 'rk5' is not an integrator; valid: "},
+                      BadInput{{"--mechanism", "double-pendulum", "--compare", "2.theta"},
+                               "--compare: '2.theta' is not NAME=VALUE"}));
+
 TEST(RenderBadInputFolder, UnwritableFolderIsAnInputError) {
   if (::geteuid() == 0) GTEST_SKIP() << "root writes anywhere";
   TempDir dir;
