@@ -80,6 +80,11 @@ struct RenderStep {
   std::string mechanism;
   std::vector<std::string> settings_list;
   std::vector<std::string> trails;
+  // Other runs drawn over the main one, as render --ensemble N --spread X and --compare:
+  // NAME=VALUE items (a set name, integrator=NAME, case=N).
+  int ensemble = 0;
+  double spread = 1e-6;
+  std::vector<std::string> compare;
 };
 /// A time-series figure: quantities against time (or another quantity) for some runs.
 struct Figure {

@@ -1,5 +1,5 @@
 #pragma once
-// A render step's mechanism (mechanism = "NAME|FILE", set, trail), checked when the
+// A render step's mechanism (mechanism = "NAME|FILE", set, trail, ensemble, compare), checked when the
 // lesson is read and built again when the step runs.
 #include <memory>
 #include <string>
@@ -13,6 +13,7 @@ namespace linkage::lesson {
 /// named as the step names it) validated, trails included.
 struct MechanismRender {
   std::unique_ptr<sym::System> system;
+  std::unique_ptr<sym::System> compared;  // the compared run's, when its settings differ
   GiNaC::exmap state;
   MechanismClip clip;
 };

@@ -561,7 +561,14 @@ class Parser {
     if (s.mechanism.empty()) s.mechanism = lesson_mechanism_;
     s.settings_list = r.strings("set").value_or(std::vector<std::string>{});
     s.trails = r.strings("trail").value_or(std::vector<std::string>{});
-    for (const std::string_view key : {"set", "trail"})
+    if (auto n = r.integer("ensemble", 2, 200)) s.ensemble = static_cast<int>(*n);
+    if (auto x = r.number("spread", std::numeric_limits<double>::min(), std::numeric_limits<double>::max(),
+                          "a finite number > 0 (rad or m)")) {
+      if (s.ensemble == 0) r.fail("spread", "'spread' applies with 'ensemble = N'");
+      s.spread = *x;
+    }
+    s.compare = r.strings("compare").value_or(std::vector<std::string>{});
+    for (const std::string_view key : {"set", "trail", "ensemble", "compare"})
       if (s.mechanism.empty() && r.has(key))
         r.fail(key, "'" + std::string(key) + "' applies to a mechanism: give mechanism = \"NAME\" here or at the top");
     if (!s.mechanism.empty())

@@ -83,7 +83,7 @@ constexpr std::array<KeySpec, 3> kSimulateKeys{{
      "energy, momentum_x, ..., constraint_velocity_error)."},
 }};
 
-constexpr std::array<KeySpec, 19> kRenderKeys{{
+constexpr std::array<KeySpec, 22> kRenderKeys{{
     {"out", "string", "(required)", "The file in the output folder: .mp4 (a clip), .png, .svg or .pdf (a still)."},
     {"caption", "string", "none", "Text under the clip or still in the lesson document."},
     {"fps", "integer", "30", "Frames per second (as the render command's fps); draft quality lowers it to 15."},
@@ -108,6 +108,13 @@ constexpr std::array<KeySpec, 19> kRenderKeys{{
      "camera and view are the homework's."},
     {"set", "list of strings", "none", "NAME=VALUE settings of the mechanism's parameters or initial coordinates."},
     {"trail", "list of strings", "none", "BODY.POINT paths drawn over the last 2 s (with a mechanism)."},
+    {"ensemble", "integer", "none",
+     "With a mechanism: N runs (2 .. 200) whose first coordinate starts up to `spread` apart, drawn faint behind the "
+     "main run, as render --ensemble."},
+    {"spread", "number", "1e-6", "The ensemble's largest initial offset of the first coordinate, rad or m."},
+    {"compare", "list of strings", "none",
+     "With a mechanism: a second run drawn over the main one, NAME=VALUE items: a set name, integrator=NAME or "
+     "case=N, as render --compare."},
     {"panel", "list of strings", "none",
      "Quantities plotted beside the motion with a cursor at the frame's time, as --panel (plot step names; a "
      "mechanism's columns)."},

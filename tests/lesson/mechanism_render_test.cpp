@@ -1,8 +1,12 @@
 // A lesson's render steps on any mechanism: `mechanism` at the top or per step, `set` and
-// `trail` as the render command's --set and --trail; the homework's picture keys refused.
+// `trail` as the render command's --set and --trail, `ensemble`, `spread` and `compare` as its
+// --ensemble, --spread and --compare; the homework's picture keys refused.
+#include "lesson/mechanism_render.hpp"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <map>
 
 #include "core/error.hpp"
 #include "lesson/lesson.hpp"
@@ -98,6 +102,69 @@ duration = 0.3
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_GT(fs::file_size(dir / "out" / "a.png"), 1000U);
   EXPECT_GT(fs::file_size(dir / "out" / "b.mp4"), 1000U);
+}
+
+TEST(LessonMechanism, EnsembleAndCompareReachTheClipAsTheRenderFlagsDo) {
+  test::TempDir dir;
+  const Lesson lesson = parse_text(dir, R"(title = "Chaos"
+mechanism = "double-pendulum"
+[[step]]
+kind = "render"
+out = "fan.png"
+at = 2
+ensemble = 5
+spread = 1e-4
+compare = ["2.theta=-1.25", "integrator=rk4"]
+[[step]]
+kind = "render"
+out = "case.png"
+compare = ["case=1"]
+)");
+  const auto& fan = std::get<RenderStep>(lesson.steps[0].body);
+  EXPECT_EQ(fan.ensemble, 5);
+  EXPECT_DOUBLE_EQ(fan.spread, 1e-4);
+  const MechanismRender made = mechanism_render(fan, "here");
+  EXPECT_EQ(made.clip.ensemble, 5);
+  EXPECT_DOUBLE_EQ(made.clip.spread, 1e-4);
+  ASSERT_TRUE(made.clip.compare.has_value());
+  EXPECT_EQ(made.clip.compare->label, "2.theta=-1.25, integrator=rk4");
+  EXPECT_EQ(made.clip.compare->simulation.integrator, IntegratorKind::rk4);
+  ASSERT_NE(made.compared, nullptr) << "a changed coordinate gets its own system";
+  EXPECT_EQ(made.clip.compare->system, made.compared.get());
+  // The compared run starts where the main one does but for 2.theta = -1.25 (its own
+  // system has its own symbols: matched by name).
+  const auto by_name = [](const GiNaC::exmap& state) {
+    std::map<std::string, double> out;
+    for (const auto& [symbol, value] : state)
+      out[GiNaC::ex_to<GiNaC::symbol>(symbol).get_name()] = GiNaC::ex_to<GiNaC::numeric>(value.evalf()).to_double();
+    return out;
+  };
+  const std::map<std::string, double> main = by_name(made.state), compared = by_name(made.clip.compare->initial);
+  ASSERT_EQ(main.size(), compared.size());
+  std::vector<double> differing;
+  for (const auto& [name, value] : compared)
+    if (main.at(name) != value) differing.push_back(value);
+  EXPECT_EQ(differing, std::vector<double>{-1.25});
+  const auto& by_case = std::get<RenderStep>(lesson.steps[1].body);
+  const MechanismRender same = mechanism_render(by_case, "here");
+  ASSERT_TRUE(same.clip.compare.has_value());
+  EXPECT_EQ(same.clip.compare->simulation.case_id, 1);
+  EXPECT_EQ(same.compared, nullptr) << "only the case differs: the step's own system";
+  EXPECT_EQ(same.clip.compare->initial.size(), same.state.size());
+}
+
+TEST(LessonMechanism, BadOverlayKeysAreOneLineErrors) {
+  const std::string top =
+      "title = \"x\"\nmechanism = \"double-pendulum\"\n[[step]]\nkind = \"render\"\nout = \"a.png\"\n";
+  EXPECT_NE(error_of(top + "ensemble = 1\n").find("ensemble"), std::string::npos);
+  EXPECT_NE(error_of(top + "ensemble = 201\n").find("ensemble"), std::string::npos);
+  EXPECT_NE(error_of(top + "spread = 1e-3\n").find("'spread' applies with 'ensemble = N'"), std::string::npos);
+  EXPECT_NE(error_of(top + "compare = [\"2.theta\"]\n").find("is not NAME=VALUE"), std::string::npos);
+  EXPECT_NE(error_of(top + "compare = [\"case=4\"]\n").find("valid: 1, 2, 3"), std::string::npos);
+  EXPECT_NE(error_of(top + "compare = [\"integrator=nope\"]\n").find("nope"), std::string::npos);
+  EXPECT_NE(error_of("title = \"x\"\n[[step]]\nkind = \"render\"\nout = \"a.png\"\nensemble = 3\n")
+                .find("'ensemble' applies to a mechanism"),
+            std::string::npos);
 }
 
 }  // namespace
