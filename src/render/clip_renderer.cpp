@@ -1,8 +1,10 @@
 #include "render/clip_renderer.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <span>
 #include <utility>
 
 #include "core/error.hpp"
@@ -87,6 +89,29 @@ std::vector<Vec2> com_path(const Params& p, const MotionSample& first, double du
 }
 
 constexpr int kPathSteps = 120;
+
+struct FreeCircle {
+  Vec2 centre = Vec2::Zero();
+  double radius = 0;
+};
+
+// The largest circle inside the frame (less `margin`) clear of every panel by `margin`,
+// searched on a grid of 4 px; among equals the first found, nearest the top-left.
+FreeCircle largest_free_circle(std::span<const Rect> panels, int width, int height, double margin) {
+  FreeCircle best;
+  for (double y = 0; y <= height; y += 4)
+    for (double x = 0; x <= width; x += 4) {
+      double r = std::min({x, width - x, y, height - y});
+      for (const Rect& panel : panels) {
+        if (panel.empty()) continue;
+        const double dx = std::max({panel.x - x, 0.0, x - panel.x - panel.width});
+        const double dy = std::max({panel.y - y, 0.0, y - panel.y - panel.height});
+        r = std::min(r, std::hypot(dx, dy));
+      }
+      if (r - margin > best.radius) best = {Vec2(x, y), r - margin};
+    }
+  return best;
+}
 constexpr double kReadableBlock = 40;  // a block shorter than this (units of DrawStyle::u) gets an inset
 
 double clip_duration(const RenderSettings& settings, const Motion& motion) {
@@ -105,13 +130,41 @@ ClipRenderer::ClipRenderer(const Params& params, const Motion& motion, const Ren
   scene_options_ = scene_options_for(params_, motion_, settings_.elements, follow, settings_.arrow_scale);
   // Apart by more than two of the longest arrows, so the halves' pin forces never meet.
   if (settings_.free_body) scene_options_.explode = 2 * default_longest_arrow(params_) + 0.1 * params_.L;
+  std::snprintf(hud_.run.data(), hud_.run.size(), "%s", run.c_str());
   base_camera_ = first_camera(params_, motion_, settings_, scene_options_);
+  lay_out(true);
+  if (settings_.free_body && follow) {
+    // The bodies drawn apart reach further than the panels leave room for around the
+    // frame's centre: put G at the centre of the largest circle clear of them, scaled
+    // so the pair fits in it at any angle.
+    const FreeCircle circle = largest_free_circle(panel_rects_, settings_.width, settings_.height, style_.padding());
+    // The follow camera's reach less its 12% margin: the circle keeps off the panels already.
+    const double reach = 0.5 * std::min(settings_.width, settings_.height) / base_camera_.scale() / 1.12;
+    const double scale = circle.radius / reach;
+    fbd_offset_ =
+        Vec2((0.5 * settings_.width - circle.centre.x()) / scale, (circle.centre.y() - 0.5 * settings_.height) / scale);
+    const Vec2 g = system_com(motion_.samples.front().state);
+    base_camera_ = Camera(view_around(g, reach * base_camera_.scale() / scale), settings_.width, settings_.height)
+                       .centred_at(g + fbd_offset_);
+    lay_out(false);
+  }
+  targets_.reserve(kMaxTargets);
+  panels_.reserve(3);
+}
+
+void ClipRenderer::lay_out(bool first) {
   // Too short to see: drawn longer, its label giving the value; not when the blocks
   // themselves are too small to carry names (a fit camera over a long fall).
-  if (params_.L * base_camera_.scale() >= 3 * style_.block_label_size())
-    scene_options_.shortest_arrow = shortest_arrow_px(style_) / base_camera_.scale();
+  // The free-body view's second layout keeps the first's minimum: its smaller scale
+  // would otherwise call every arrow too short.
+  if (first) {
+    scene_options_.shortest_arrow = 0;
+    if (params_.L * base_camera_.scale() >= 3 * style_.block_label_size())
+      scene_options_.shortest_arrow = shortest_arrow_px(style_) / base_camera_.scale();
+  }
   // A following camera sees world-fixed lines stream past, each named by its height,
   // a few to a frame so the numbers can be read.
+  const bool follow = settings_.camera == CameraMode::follow;
   const ElementSet& shown = settings_.elements;
   moving_grid_ = follow;
   grid_.spacing = grid_spacing_for(base_camera_, settings_.width, settings_.height, follow ? 5 : 10);
@@ -123,7 +176,6 @@ ClipRenderer::ClipRenderer(const Params& params, const Motion& motion, const Ren
     scale_label_ = describe_length(grid_.spacing.mantissa, grid_.spacing.exponent);
     scale_length_px_ = grid_.spacing.metres() * base_camera_.scale();
   }
-  std::snprintf(hud_.run.data(), hud_.run.size(), "%s", run.c_str());
 
   // Layout, measured once on a scratch surface (metrics are unhinted, so they hold for
   // raster and vector output alike).
@@ -131,7 +183,7 @@ ClipRenderer::ClipRenderer(const Params& params, const Motion& motion, const Ren
   const cairo::ContextPtr cr = cairo::context(scratch.get());
   if (shown.has(Element::title)) title_layout_ = title_layout(cr.get(), style_, settings_.title, settings_.width);
   if (shown.has(Element::legend)) {
-    legend_rect_ = legend_rect(cr.get(), style_, legend_, settings_.height);
+    legend_rect_ = linkage::legend_rect(cr.get(), style_, legend_, settings_.height);
     scale_rect_ = scale_bar_rect(cr.get(), style_, scale_label_, scale_length_px_, settings_.width, settings_.height);
   }
   if (shown.has(Element::hud)) {
@@ -162,15 +214,13 @@ ClipRenderer::ClipRenderer(const Params& params, const Motion& motion, const Ren
     bodies_inset_ = inset_layout(cr.get(), style_, caption.data(), inset_top, settings_.width);
   }
   panel_rects_ = {title_layout_.rect, legend_rect_, scale_rect_, hud_rect_, path_inset_.inset.rect, bodies_inset_.rect};
-  targets_.reserve(kMaxTargets);
-  panels_.reserve(3);
 }
 
 ClipRenderer::~ClipRenderer() = default;
 
 Camera ClipRenderer::camera_at(std::size_t index) const {
   if (settings_.camera != CameraMode::follow) return base_camera_;
-  return base_camera_.centred_at(system_com(motion_.samples[index].state));
+  return base_camera_.centred_at(system_com(motion_.samples[index].state) + fbd_offset_);
 }
 
 ClipRenderer::Target& ClipRenderer::target_for(Frame& frame) {

@@ -70,6 +70,8 @@ class ClipRenderer {
   /// The inset of the bodies at a readable size, when a fit camera shows them tiny.
   [[nodiscard]] const Inset& bodies_inset() const { return bodies_inset_; }
   [[nodiscard]] const GridSpec& grid() const { return grid_; }
+  /// Where the legend is (empty rect when hidden).
+  [[nodiscard]] const Rect& legend_rect() const { return legend_rect_; }
 
  private:
   struct Target {  // a Cairo surface and context per frame buffer, made on first use
@@ -81,6 +83,8 @@ class ClipRenderer {
     cairo::SurfacePtr surface;
     Rect rect;
   };
+  // What depends on the base camera: grid, panels, insets, and `first` the shortest arrow.
+  void lay_out(bool first);
   Target& target_for(Frame& frame);
   void prepare_static_layers();
   void paint_static_background(cairo_t* cr) const;
@@ -102,6 +106,7 @@ class ClipRenderer {
   DrawStyle style_;
   SceneOptions scene_options_;
   Camera base_camera_;
+  Vec2 fbd_offset_ = Vec2::Zero();  // the free-body view: G this far from the frame's centre (world)
   GridSpec grid_;
   std::vector<LegendRow> legend_;
   std::string scale_label_;

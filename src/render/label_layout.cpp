@@ -24,6 +24,12 @@ bool inside_body(const Vec2& p, std::span<const Segment> segments, int body) {
   return in;
 }
 
+double distance_to_point(const Rect& r, const Vec2& p) {
+  const double dx = std::max({r.x - p.x(), 0.0, p.x() - r.x - r.width});
+  const double dy = std::max({r.y - p.y(), 0.0, p.y() - r.y - r.height});
+  return std::hypot(dx, dy);
+}
+
 Rect grown(const Rect& r, double by) { return {r.x - by, r.y - by, r.width + 2 * by, r.height + 2 * by}; }
 
 }  // namespace
@@ -53,6 +59,21 @@ bool crosses(const Rect& r, const Vec2& a, const Vec2& b) {
   return true;
 }
 
+double distance_to(const Rect& r, const Vec2& a, const Vec2& b) {
+  if (crosses(r, a, b)) return 0;
+  // Otherwise the nearest pair is a corner of the box and a point of the segment, or an
+  // end of the segment and the box.
+  double nearest = std::min(distance_to_point(r, a), distance_to_point(r, b));
+  const Vec2 d = b - a;
+  const double length2 = d.squaredNorm();
+  for (const Vec2& corner :
+       {Vec2(r.x, r.y), Vec2(r.x + r.width, r.y), Vec2(r.x, r.y + r.height), Vec2(r.x + r.width, r.y + r.height)}) {
+    const double t = length2 > 0 ? std::clamp((corner - a).dot(d) / length2, 0.0, 1.0) : 0.0;
+    nearest = std::min(nearest, (corner - (a + t * d)).norm());
+  }
+  return nearest;
+}
+
 bool touches(const Rect& r, std::span<const Segment> segments) {
   int checked = -1;  // bodies are given edge after edge: test each body's inside once
   const Vec2 centre(r.x + 0.5 * r.width, r.y + 0.5 * r.height);
@@ -69,6 +90,7 @@ bool touches(const Rect& r, std::span<const Segment> segments) {
 Placement place_label(const Rect& size, const Vec2& head, const Vec2& direction, const LabelObstacles& obstacles,
                       const DrawStyle& style, int width, int height) {
   constexpr double degree = std::numbers::pi / 180;
+  constexpr double kPlainlyNearer = 4;  // style units: nearer its own arrow than a rival by this
   static constexpr std::array<double, 11> kTurns{0, 30, -30, 60, -60, 90, -90, 120, -120, 150, -150};
   const double gap = 3 * style.u, step = 0.6 * size.height;
   const auto candidate = [&](int ring, double turn) {
@@ -91,6 +113,13 @@ Placement place_label(const Rect& size, const Vec2& head, const Vec2& direction,
           continue;
         // Lines are kept off by an arrow head's half width, as heads and shafts have width.
         if (pass == 0 && touches(grown(box, style.arrow_head_half_width()), obstacles.segments)) continue;
+        if (pass < 2 && obstacles.own != nullptr) {
+          const double mine = distance_to(box, obstacles.own->a, obstacles.own->b);
+          if (std::any_of(obstacles.rivals.begin(), obstacles.rivals.end(), [&](const Segment& rival) {
+                return distance_to(box, rival.a, rival.b) < mine + kPlainlyNearer * style.u;
+              }))
+            continue;
+        }
         // A line to the head once the box no longer touches it.
         const Vec2 near(std::clamp(head.x(), box.x, box.x + box.width),
                         std::clamp(head.y(), box.y, box.y + box.height));

@@ -20,7 +20,14 @@ struct Segment {
 struct LabelObstacles {
   std::span<const Rect> boxes;        // never overlapped
   std::span<const Segment> segments;  // avoided unless there is no other place
+  // When set, the name must be plainly nearer `own` (what it names) than any of the
+  // `rivals` (arrows it could be taken for), unless there is no other place.
+  const Segment* own = nullptr;
+  std::span<const Segment> rivals{};
 };
+
+/// The shortest distance between a box and the segment a-b (0 when they meet).
+[[nodiscard]] double distance_to(const Rect& r, const Vec2& a, const Vec2& b);
 
 /// Whether two boxes share any area.
 [[nodiscard]] bool overlaps(const Rect& a, const Rect& b);

@@ -286,13 +286,52 @@ void layout_scene_labels(cairo_t* cr, const DrawStyle& style, const DrawList& li
       }
     add(chosen, centre_of(chosen), text.data(), colour, true, false);
   }
-  const auto place = [&](const Vec2& head, const Vec2& direction, const char* s, const Rgba& colour) {
+  // The arrows named beside their shafts (the free-body view's pin forces): each name
+  // must be plainly nearer its own than the others.
+  std::array<Segment, 4> sided{};
+  std::size_t sided_count = 0;
+  for (const Arrow& arrow : list.arrows)
+    if (arrow.tag_side.norm() > 0 && sided_count < sided.size())
+      sided[sided_count++] = {camera.to_pixels(arrow.tail), camera.to_pixels(arrow.tail + arrow.vector)};
+  std::array<Segment, 4> rivals{};
+  const auto place = [&](const Vec2& head, const Vec2& direction, const char* s, const Rgba& colour,
+                         const Segment* own = nullptr) {
     const Rect size = text_box(cr, tag_font, head, s, 0.2 * style.text_size());
-    const LabelObstacles obstacles{std::span<const Rect>(out.boxes.data(), out.box_count),
-                                   std::span<const Segment>(out.segments.data(), out.segment_count)};
+    LabelObstacles obstacles{std::span<const Rect>(out.boxes.data(), out.box_count),
+                             std::span<const Segment>(out.segments.data(), out.segment_count)};
+    if (own != nullptr) {
+      std::size_t n = 0;
+      for (std::size_t i = 0; i < sided_count; ++i)
+        if (sided[i].a != own->a || sided[i].b != own->b) rivals[n++] = sided[i];
+      obstacles.own = own;
+      obstacles.rivals = std::span<const Segment>(rivals.data(), n);
+    }
     const Placement at = place_label(size, head, direction, obstacles, style, width, height);
     add(at.box, head, s, colour, false, at.leader);
   };
+  // Arrow names past the head (or beside the shaft, `tag_side`), in the arrow's colour,
+  // with the value when the arrow is valued.
+  const auto name_arrow = [&](const Arrow& arrow) {
+    const Vec2 tail = camera.to_pixels(arrow.tail), tip = camera.to_pixels(arrow.tail + arrow.vector);
+    const double length = (tip - tail).norm();
+    if (length < 2 * style.arrow_head_length() && !arrow.stretched) return;  // too short to name without clutter
+    const int n = std::snprintf(text.data(), text.size(), "%.*s", static_cast<int>(arrow.tag.size()), arrow.tag.data());
+    if (arrow.valued && n > 0 && static_cast<std::size_t>(n) + 6 < text.size()) {
+      std::snprintf(text.data() + n, text.size() - static_cast<std::size_t>(n), " = ");
+      format_value(text.data() + n + 3, text.size() - static_cast<std::size_t>(n) - 3, arrow.magnitude,
+                   arrow.kind == ArrowKind::velocity ? "m/s" : "N");
+    }
+    if (arrow.tag_side.norm() > 0) {
+      const Segment own{tail, tip};
+      place(0.5 * (tail + tip), Vec2(arrow.tag_side.x(), -arrow.tag_side.y()), text.data(),
+            arrow_colour(theme, arrow.kind), &own);
+    } else
+      place(tip, (tip - tail) / length, text.data(), arrow_colour(theme, arrow.kind));
+  };
+  // Names beside a shaft first: they must stay at their own arrow (the free-body view's
+  // pin forces), where a P could otherwise take the place.
+  for (const Arrow& arrow : list.arrows)
+    if (!arrow.tag.empty() && arrow.tag_side.norm() > 0) name_arrow(arrow);
   // Marker names (P) off to the side their direction says.
   for (const Marker& marker : list.markers) {
     if (marker.tag.empty()) continue;
@@ -300,24 +339,10 @@ void layout_scene_labels(cairo_t* cr, const DrawStyle& style, const DrawList& li
     place(camera.to_pixels(marker.at), Vec2(marker.tag_direction.x(), -marker.tag_direction.y()), text.data(),
           theme.text);
   }
-  // Arrow names past the head, in the arrow's colour, with the value when the arrow is
-  // valued. Pin forces first: they are the point of the picture.
-  for (const ArrowKind kind : {ArrowKind::pin_force, ArrowKind::gravity, ArrowKind::velocity}) {
-    for (const Arrow& arrow : list.arrows) {
-      if (arrow.kind != kind || arrow.tag.empty()) continue;
-      const Vec2 tail = camera.to_pixels(arrow.tail), tip = camera.to_pixels(arrow.tail + arrow.vector);
-      const double length = (tip - tail).norm();
-      if (length < 2 * style.arrow_head_length() && !arrow.stretched) continue;  // too short to name without clutter
-      const int n =
-          std::snprintf(text.data(), text.size(), "%.*s", static_cast<int>(arrow.tag.size()), arrow.tag.data());
-      if (arrow.valued && n > 0 && static_cast<std::size_t>(n) + 6 < text.size()) {
-        std::snprintf(text.data() + n, text.size() - static_cast<std::size_t>(n), " = ");
-        format_value(text.data() + n + 3, text.size() - static_cast<std::size_t>(n) - 3, arrow.magnitude,
-                     kind == ArrowKind::velocity ? "m/s" : "N");
-      }
-      place(tip, (tip - tail) / length, text.data(), arrow_colour(theme, kind));
-    }
-  }
+  // Then the others, pin forces first: they are the point of the picture.
+  for (const ArrowKind kind : {ArrowKind::pin_force, ArrowKind::gravity, ArrowKind::velocity})
+    for (const Arrow& arrow : list.arrows)
+      if (arrow.kind == kind && !arrow.tag.empty() && arrow.tag_side.norm() == 0) name_arrow(arrow);
 }
 
 namespace {

@@ -38,6 +38,9 @@ struct Arrow {
   double magnitude = 0;    // N or m/s: the label gives it when `valued`
   bool stretched = false;  // too short to see at its scale: drawn SceneOptions::shortest_arrow long
   bool valued = false;     // the label says the magnitude (stretched, or forces at a common scale)
+  // Non-zero (world, unit): the name goes beside the shaft's middle this way, not past
+  // the head (the free-body view, where the pin forces' heads meet in the gap).
+  Vec2 tag_side = Vec2::Zero();
 };
 
 struct Marker {

@@ -178,6 +178,17 @@ void build_scene(const Params& p, const SceneOptions& options, const Motion& mot
     // Named by the body each acts on, in the homework's convention: F is the force on block 1.
     add_arrow(out, options, ArrowKind::pin_force, pin1, sample.pin_force, tags ? "F on 1" : "");
     add_arrow(out, options, ArrowKind::pin_force, pin2, -sample.pin_force, tags ? "\u2212F on 2" : "");
+    if (exploded && tags) {
+      // Past the heads both names would sit in the gap between the bodies: beside each
+      // shaft instead, on opposite sides (block 1's across from its P) and leaning away
+      // from the other body, so each is plainly at its own arrow.
+      const Vec2 apart = (c2 - c1).normalized();
+      const Vec2 side = -pin_tag_direction(sample, pin1, c1);
+      for (Arrow& arrow : out.arrows)
+        if (arrow.kind == ArrowKind::pin_force)
+          arrow.tag_side =
+              arrow.tail == pin1 ? Vec2((side - 0.2 * apart).normalized()) : Vec2((-side + 0.2 * apart).normalized());
+    }
   }
 
   if (shown.has(Element::labels) && shown.has(Element::blocks)) {
