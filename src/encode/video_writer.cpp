@@ -170,6 +170,16 @@ struct VideoWriter::Impl {
   VideoCodec codec = VideoCodec::h264;
   EncodeStats stats;
   bool finished = false;
+  bool header_written = false;  // GIF, WebM
+
+  Impl(const Impl&) = delete;
+  Impl& operator=(const Impl&) = delete;
+  // FFmpeg 5.1's GIF muxer holds the last packet until its trailer and has no other
+  // cleanup: an unfinished GIF (Ctrl-C, an error) still gets its trailer, into the temp
+  // file that is removed next, so nothing leaks.
+  ~Impl() {
+    if (!finished && header_written && options.format == VideoFormat::gif) av_write_trailer(format.get());
+  }
 
   void open();
   void open_encoder_for_format();
@@ -224,6 +234,7 @@ void VideoWriter::Impl::open() {
   av::check(avio_open(&format->pb, temp.c_str(), AVIO_FLAG_WRITE), "cannot create '" + temp + "'");
   if (options.format != VideoFormat::mp4) {
     av::check(avformat_write_header(format.get(), nullptr), "cannot write the " + kind + " header");
+    header_written = true;
     return;
   }
   AVDictionary* muxer_options = nullptr;

@@ -239,11 +239,13 @@ class Builder {
   }
 
   std::vector<GiNaC::ex> ordered_operands(const GiNaC::ex& e) {
-    std::vector<std::pair<std::uint64_t, GiNaC::ex>> keyed;
-    for (std::size_t k = 0; k < e.nops(); ++k) keyed.emplace_back(stable_hash(e.op(k)), e.op(k));
-    std::stable_sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    // Ties keep GiNaC's order through the index: std::sort, as std::stable_sort's temporary
+    // buffer trips AddressSanitizer's alloc-dealloc check with GCC 12's libstdc++.
+    std::vector<std::pair<std::uint64_t, std::size_t>> keyed;
+    for (std::size_t k = 0; k < e.nops(); ++k) keyed.emplace_back(stable_hash(e.op(k)), k);
+    std::sort(keyed.begin(), keyed.end());
     std::vector<GiNaC::ex> out;
-    for (auto& [key, operand] : keyed) out.push_back(operand);
+    for (const auto& [key, k] : keyed) out.push_back(e.op(k));
     return out;
   }
 
