@@ -71,4 +71,15 @@ Inputs resolve_inputs(const InputOptions& options) {
   return inputs;
 }
 
+std::vector<std::string> split_commas(const std::string& list) {
+  std::vector<std::string> items;
+  std::size_t at = 0;
+  while (!list.empty() && at <= list.size()) {
+    const std::size_t comma = std::min(list.find(',', at), list.size());
+    items.push_back(list.substr(at, comma - at));
+    at = comma + 1;
+  }
+  return items;
+}
+
 }  // namespace linkage::cli

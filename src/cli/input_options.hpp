@@ -5,6 +5,7 @@
 #include <array>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "core/error.hpp"
 #include "model/inputs.hpp"
@@ -30,6 +31,9 @@ void add_input_options(CLI::App* sub, InputOptions& options);
 [[nodiscard]] std::string describe(const Error& error);
 
 /// Parses a whole-string finite double, or throws Error::input naming `origin`.
+/// "a,b,,c" -> {"a", "b", "", "c"} (an empty item stays, for the caller to refuse); "" -> {}.
+[[nodiscard]] std::vector<std::string> split_commas(const std::string& list);
+
 [[nodiscard]] double parse_number(const std::string& text, const std::string& origin, const std::string& unit);
 
 }  // namespace linkage::cli

@@ -11,17 +11,6 @@ namespace linkage::cli {
 
 namespace {
 
-std::vector<std::string> split_commas(const std::string& list) {
-  std::vector<std::string> items;
-  std::size_t at = 0;
-  while (at <= list.size()) {
-    const std::size_t comma = std::min(list.find(',', at), list.size());
-    items.push_back(list.substr(at, comma - at));
-    at = comma + 1;
-  }
-  return items;
-}
-
 void resolve_compare(const std::string& list, const MechanismOptions& mechanism, const InputOptions& inputs,
                      const SimulationFlags& simulation, MechanismClip& clip, std::unique_ptr<sym::System>& compared) {
   SimulationFlags flags = simulation;

@@ -58,18 +58,6 @@ int parse_whole(const std::string& text, const std::string& origin) {
   return static_cast<int>(value);
 }
 
-/// --panel theta1,theta2: the names, checked against the run's quantities later.
-std::vector<std::string> split_panel(const std::string& list) {
-  std::vector<std::string> names;
-  std::size_t at = 0;
-  while (!list.empty() && at <= list.size()) {
-    const std::size_t comma = std::min(list.find(',', at), list.size());
-    names.push_back(list.substr(at, comma - at));
-    at = comma + 1;
-  }
-  return names;
-}
-
 RenderSettings resolve_settings(const RenderFlags& f) {
   RenderSettings s;
   const Quality& quality = parse_quality(f.quality, "--quality");
@@ -104,7 +92,7 @@ RenderSettings resolve_settings(const RenderFlags& f) {
         parse_arrow_scale_request(f.arrow_scale, "--arrow-scale",
                                   f.mechanism.chosen() ? std::span<const std::string_view>(kMechanismKinds)
                                                        : std::span<const std::string_view>(kArrowKindNames));
-  s.panel = split_panel(f.panel);
+  s.panel = split_commas(f.panel);
   if (!f.caption.empty()) s.captions = {{0.0, f.caption}};
   try {
     s.validate();

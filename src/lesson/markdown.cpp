@@ -212,6 +212,25 @@ char alignment(void* td_detail) {
   return a == MD_ALIGN_CENTER ? 'c' : a == MD_ALIGN_RIGHT ? 'r' : 'l';
 }
 
+// A table's cells as both renderers collect them: rows of cells and one alignment
+// letter per column, from the header row.
+struct TableCells {
+  std::vector<std::vector<std::string>> rows;
+  std::string align;
+
+  // Starts a table, a row or a header cell; other blocks are not the table's.
+  void start(MD_BLOCKTYPE type, void* detail) {
+    if (type == MD_BLOCK_TABLE) {
+      rows.clear();
+      align.clear();
+    } else if (type == MD_BLOCK_TR) {
+      rows.emplace_back();
+    } else if (type == MD_BLOCK_TH) {
+      align += alignment(detail);
+    }
+  }
+};
+
 // --- the terminal -----------------------------------------------------------------
 
 // A pipe table with its columns lined up (`align`: 'r' for right) and a rule under
@@ -274,17 +293,8 @@ class TextRenderer final : public Renderer {
       case MD_BLOCK_H:
         heading_ = static_cast<int>(static_cast<MD_BLOCK_H_DETAIL*>(detail)->level);
         break;
-      case MD_BLOCK_TABLE:
-        rows_.clear();
-        align_.clear();
-        break;
-      case MD_BLOCK_TR:
-        rows_.emplace_back();
-        break;
-      case MD_BLOCK_TH:
-        align_ += alignment(detail);
-        break;
       default:
+        table_.start(type, detail);
         break;
     }
   }
@@ -314,11 +324,11 @@ class TextRenderer final : public Renderer {
       }
       case MD_BLOCK_TH:
       case MD_BLOCK_TD:
-        rows_.back().push_back(trim_spaces(inline_));
+        table_.rows.back().push_back(trim_spaces(inline_));
         inline_.clear();
         break;
       case MD_BLOCK_TABLE:
-        emit(text_table(rows_, align_));
+        emit(text_table(table_.rows, table_.align));
         break;
       case MD_BLOCK_CODE: {
         std::vector<std::string> lines;
@@ -474,14 +484,14 @@ class TextRenderer final : public Renderer {
 
   std::string_view markdown_;
   std::size_t width_;
-  std::string out_, inline_, code_, align_;
+  std::string out_, inline_, code_;
   std::vector<Container> containers_;
   std::string blank_;
   std::size_t last_quotes_ = 0;
   std::vector<int> lists_;                                  // per open list: the next number, or 0 for bullets
   std::vector<char> ordered_;                               // per open numbered list: its delimiter
   std::vector<std::pair<std::string, std::size_t>> links_;  // open links: URL, where the text starts
-  std::vector<std::vector<std::string>> rows_;
+  TableCells table_;
   Math math_;
   int heading_ = 1;
   bool code_block_ = false, paragraph_ = false, last_tight_ = false;
@@ -596,17 +606,8 @@ class LatexRenderer final : public Renderer {
       case MD_BLOCK_H:
         out_ += static_cast<MD_BLOCK_H_DETAIL*>(detail)->level <= 1 ? "\\subsection*{" : "\\subsubsection*{";
         break;
-      case MD_BLOCK_TABLE:
-        rows_.clear();
-        align_.clear();
-        break;
-      case MD_BLOCK_TR:
-        rows_.emplace_back();
-        break;
-      case MD_BLOCK_TH:
-        align_ += alignment(detail);
-        break;
       default:
+        table_.start(type, detail);
         break;
     }
   }
@@ -645,12 +646,12 @@ class LatexRenderer final : public Renderer {
         break;
       case MD_BLOCK_TH:
       case MD_BLOCK_TD:
-        rows_.back().push_back(take_inline());
+        table_.rows.back().push_back(take_inline());
         break;
       case MD_BLOCK_TABLE:
-        out_ += concat({"\\begin{tabular}{", align_, "}\n"});
-        for (std::size_t r = 0; r < rows_.size(); ++r) {
-          for (std::size_t c = 0; c < rows_[r].size(); ++c) out_ += (c > 0 ? " & " : "  ") + rows_[r][c];
+        out_ += concat({"\\begin{tabular}{", table_.align, "}\n"});
+        for (std::size_t r = 0; r < table_.rows.size(); ++r) {
+          for (std::size_t c = 0; c < table_.rows[r].size(); ++c) out_ += (c > 0 ? " & " : "  ") + table_.rows[r][c];
           out_ += " \\\\\n";
           if (r == 0) out_ += "  \\hline\n";
         }
@@ -748,10 +749,10 @@ class LatexRenderer final : public Renderer {
   }
 
   std::string_view markdown_;
-  std::string out_, inline_, text_, code_, align_;
+  std::string out_, inline_, text_, code_;
   std::vector<MD_BLOCKTYPE> open_;  // the open lists, quotes and items
   std::vector<int> item_paragraphs_;
-  std::vector<std::vector<std::string>> rows_;
+  TableCells table_;
   Math math_;
 };
 

@@ -84,6 +84,17 @@ void paint_trail_heads(cairo_t* cr, const DrawStyle& style, const Camera& camera
   }
 }
 
+// A body's outline as the current path: a point mass as a dot, any other shape closed.
+void outline_path(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List::Outline& outline) {
+  if (outline.shape == Shape::point) {
+    const Vec2 p = camera.to_pixels(outline.points.front());
+    cairo_new_path(cr);
+    cairo_arc(cr, p.x(), p.y(), 1.6 * style.com_radius(), 0, 2 * std::numbers::pi);
+  } else {
+    path_through(cr, camera, outline.points, true);
+  }
+}
+
 void paint_bodies(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List& list) {
   const Theme& theme = *style.theme;
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
@@ -100,13 +111,7 @@ void paint_bodies(cairo_t* cr, const DrawStyle& style, const Camera& camera, con
   for (const List::Outline* drawn : order) {
     const List::Outline& outline = *drawn;
     const std::size_t colour = outline.body % 2;
-    if (outline.shape == Shape::point) {
-      const Vec2 p = camera.to_pixels(outline.points.front());
-      cairo_new_path(cr);
-      cairo_arc(cr, p.x(), p.y(), 1.6 * style.com_radius(), 0, 2 * std::numbers::pi);
-    } else {
-      path_through(cr, camera, outline.points, true);
-    }
+    outline_path(cr, style, camera, outline);
     set_colour(cr, theme.block_fill[colour]);
     cairo_fill_preserve(cr);
     set_colour(cr, theme.block_edge[colour]);
@@ -131,13 +136,7 @@ void paint_ghosts(cairo_t* cr, const DrawStyle& style, const Camera& camera, con
     if (ghost.compare != compare) continue;
     const Rgba colour = compare ? compare_colour(theme) : ensemble_colour(theme, ghost.ramp);
     for (const List::Outline& outline : ghost.outlines) {
-      if (outline.shape == Shape::point) {
-        const Vec2 p = camera.to_pixels(outline.points.front());
-        cairo_new_path(cr);
-        cairo_arc(cr, p.x(), p.y(), 1.6 * style.com_radius(), 0, 2 * std::numbers::pi);
-      } else {
-        path_through(cr, camera, outline.points, true);
-      }
+      outline_path(cr, style, camera, outline);
       // Only the compared run is filled: 200 faint fills would stack into a tint of the main run.
       if (compare) {
         set_colour(cr, with_alpha(colour, 0.15));
