@@ -15,8 +15,8 @@
 #include "cli/input_options.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
-#include "lesson/suggest.hpp"
 #include "linkage/version.hpp"
+#include "model/name_match.hpp"
 
 namespace {
 
@@ -98,24 +98,21 @@ void check_command_words(const CLI::App& app, int argc, char** argv) {
       names.push_back(sub->get_name());
     }
     if (names.empty()) return;  // a command's own arguments: CLI11 checks them
-    const std::vector<std::string_view> candidates(names.begin(), names.end());
     if (word.size() > 1 && word[0] == '-' && word != "--") {
       const std::string flag = word.substr(0, word.find('='));
       for (const CLI::Option* option : level->get_options())
         if (option->check_name(flag)) return;  // --help, --version
       throw linkage::Error::input("'" + flag + "' is not an option of '" + path +
-                                  "'; give a command first; valid: " + linkage::lesson::join(candidates));
+                                  "'; give a command first; valid: " + linkage::join_names(names));
     }
     if (chosen != nullptr) {
       level = chosen;
       path += " " + word;
       continue;
     }
-    std::string message =
-        "'" + word + "' is not a " + (level == &app ? std::string() : "'" + level->get_name() + "' ") + "command";
-    if (auto close = linkage::lesson::closest_match(word, candidates))
-      message += " (did you mean '" + std::string(*close) + "'?)";
-    throw linkage::Error::input(message + "; valid: " + linkage::lesson::join(candidates));
+    throw linkage::Error::input("'" + word + "' is not a " +
+                                (level == &app ? std::string() : "'" + level->get_name() + "' ") + "command" +
+                                linkage::did_you_mean(word, names) + "; valid: " + linkage::join_names(names));
   }
 }
 

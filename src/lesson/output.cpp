@@ -2,8 +2,8 @@
 
 #include <system_error>
 
-#include "lesson/markdown.hpp"
 #include "report/latex_math.hpp"
+#include "report/markdown.hpp"
 #include "report/mechanism_latex.hpp"
 #include "report/mechanism_text.hpp"
 #include "report/text_layout.hpp"

@@ -16,15 +16,15 @@
 #include "integrate/series.hpp"
 #include "lesson/canonical.hpp"
 #include "lesson/lesson.hpp"
-#include "lesson/markdown.hpp"
 #include "lesson/mechanism_render.hpp"
 #include "lesson/schema.hpp"
-#include "lesson/suggest.hpp"
 #include "model/inputs_toml.hpp"
 #include "model/mechanism_toml.hpp"
+#include "model/name_match.hpp"
 #include "pipeline/clip.hpp"
 #include "pipeline/panel_data.hpp"
 #include "render/theme.hpp"
+#include "report/markdown.hpp"
 #include "report/mechanism_solution.hpp"
 #include "scene/scene_builder.hpp"
 #include "symbolic/system.hpp"
@@ -89,8 +89,8 @@ std::vector<std::size_t> choice_list(const TableReader& r, std::string_view key,
     }
     const std::string where = array != nullptr ? position(r.file(), array->get(i)->source()) : r.where(key);
     std::string message = where + ": " + r.context() + ": '" + v + "' in '" + std::string(key) + "' is not valid";
-    if (auto close = closest_match(v, choices)) message += " (did you mean '" + std::string(*close) + "'?)";
-    throw Error::input(message + "; valid: " + join(choices));
+    const std::vector<std::string> names(choices.begin(), choices.end());
+    throw Error::input(message + did_you_mean(v, names) + "; valid: " + join_names(names));
   }
   return out;
 }

@@ -6,8 +6,8 @@
 
 #include "core/error.hpp"
 #include "core/number_format.hpp"
-#include "lesson/markdown.hpp"
-#include "lesson/suggest.hpp"
+#include "model/name_match.hpp"
+#include "report/markdown.hpp"
 
 namespace linkage::lesson {
 

@@ -5,7 +5,7 @@
 
 #include "core/error.hpp"
 #include "core/number_format.hpp"
-#include "lesson/suggest.hpp"
+#include "model/name_match.hpp"
 
 namespace linkage::lesson {
 namespace {
@@ -31,8 +31,8 @@ TableReader::TableReader(const toml::table& table, std::string file, std::string
       extra_keys_(std::move(extra_keys)) {}
 
 void TableReader::reject_unknown_keys() const {
-  std::vector<std::string_view> allowed;
-  for (const KeySpec& k : keys_) allowed.push_back(k.name);
+  std::vector<std::string> allowed;
+  for (const KeySpec& k : keys_) allowed.emplace_back(k.name);
   allowed.insert(allowed.end(), extra_keys_.begin(), extra_keys_.end());
   const toml::key* first = nullptr;
   for (const auto& [key, value] : table_) {
@@ -45,10 +45,9 @@ void TableReader::reject_unknown_keys() const {
       first = &key;
   }
   if (first == nullptr) return;
-  std::string message =
-      position(file_, first->source()) + ": " + context_ + ": unknown key '" + std::string(first->str()) + "'";
-  if (auto close = closest_match(first->str(), allowed)) message += " (did you mean '" + std::string(*close) + "'?)";
-  throw Error::input(message + "; valid keys: " + join(allowed));
+  throw Error::input(position(file_, first->source()) + ": " + context_ + ": unknown key '" +
+                     std::string(first->str()) + "'" + did_you_mean(first->str(), allowed) +
+                     "; valid keys: " + join_names(allowed));
 }
 
 bool TableReader::has(std::string_view key) const { return table_.contains(key); }
@@ -137,9 +136,9 @@ std::optional<std::string> TableReader::choice(std::string_view key,
   if (!value) return value;
   for (std::string_view c : choices)
     if (c == *value) return value;
-  std::string message = q(key) + " = '" + *value + "' is not valid";
-  if (auto close = closest_match(*value, choices)) message += " (did you mean '" + std::string(*close) + "'?)";
-  fail(key, message + "; valid: " + join(choices));
+  const std::vector<std::string> names(choices.begin(), choices.end());
+  fail(key,
+       q(key) + " = '" + *value + "' is not valid" + did_you_mean(*value, names) + "; valid: " + join_names(names));
 }
 
 std::vector<const toml::table*> TableReader::tables(std::string_view key) const {

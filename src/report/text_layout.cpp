@@ -79,16 +79,32 @@ Column format_column(const Table& table, std::size_t c) {
 
 }  // namespace
 
+Utf8Char decode_utf8(std::string_view text, std::size_t i) {
+  const auto lead = static_cast<unsigned char>(text[i]);
+  const std::size_t more = lead >= 0xF0 ? 3 : lead >= 0xE0 ? 2 : lead >= 0xC0 ? 1 : 0;
+  char32_t cp = lead & (more == 1 ? 0x1Fu : more == 2 ? 0x0Fu : 0x07u);
+  for (std::size_t k = 1; k <= more; ++k) {
+    const auto c = i + k < text.size() ? static_cast<unsigned char>(text[i + k]) : 0u;
+    if ((c & 0xC0u) != 0x80u) return {lead, 1};
+    cp = (cp << 6) | (c & 0x3Fu);
+  }
+  return more == 0 ? Utf8Char{lead, 1} : Utf8Char{cp, more + 1};
+}
+
+std::string encode_utf8(char32_t cp) {
+  if (cp < 0x80) return std::string(1, static_cast<char>(cp));
+  const std::size_t more = cp < 0x800 ? 1 : cp < 0x10000 ? 2 : 3;
+  std::string out(1, static_cast<char>(((0xFF00u >> (more + 1)) & 0xFFu) | (cp >> (6 * more))));
+  for (std::size_t k = more; k-- > 0;) out += static_cast<char>(0x80u | ((cp >> (6 * k)) & 0x3Fu));
+  return out;
+}
+
 std::size_t display_width(std::string_view text) {
   std::size_t width = 0;
   for (std::size_t i = 0; i < text.size();) {
-    const auto lead = static_cast<unsigned char>(text[i]);
-    const std::size_t length = lead < 0x80 ? 1 : lead < 0xE0 ? 2 : lead < 0xF0 ? 3 : 4;
-    char32_t c = length == 1 ? lead : length == 2 ? (lead & 0x1Fu) : length == 3 ? (lead & 0x0Fu) : (lead & 0x07u);
-    for (std::size_t k = 1; k < length && i + k < text.size(); ++k)
-      c = (c << 6) | (static_cast<unsigned char>(text[i + k]) & 0x3Fu);
-    if (c != static_cast<char32_t>(kBreakMark) && !is_combining(c)) ++width;
-    i += length;
+    const Utf8Char c = decode_utf8(text, i);
+    if (c.cp != static_cast<char32_t>(kBreakMark) && !is_combining(c.cp)) ++width;
+    i += c.size;
   }
   return width;
 }

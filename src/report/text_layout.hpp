@@ -8,6 +8,17 @@
 
 namespace linkage {
 
+/// One UTF-8 character of `text` at byte `i`: its code point and length in bytes; a
+/// byte that starts no whole sequence reads as itself, one byte long.
+struct Utf8Char {
+  char32_t cp = 0;
+  std::size_t size = 1;
+};
+[[nodiscard]] Utf8Char decode_utf8(std::string_view text, std::size_t i);
+
+/// The UTF-8 bytes of a code point.
+[[nodiscard]] std::string encode_utf8(char32_t cp);
+
 /// Columns `text` takes on a terminal: one per code point, none for combining marks
 /// (U+0300-036F, U+1AB0-1AFF, U+1DC0-1DFF, U+20D0-20FF, U+FE20-FE2F).
 [[nodiscard]] std::size_t display_width(std::string_view text);

@@ -1,146 +1,85 @@
 #include "report/unicode_tex.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cctype>
-#include <cstdint>
-#include <optional>
+
+#include "core/limits.hpp"
+#include "report/notation.hpp"
+#include "report/text_layout.hpp"
 
 namespace linkage {
 namespace {
 
-struct Decoded {
-  char32_t cp = 0;
-  std::size_t size = 1;
+// How a symbol reads in prose: a letter takes dots and scripts (θ̇₁), an operator stands
+// alone (×); `from_tex` symbols are only read from TeX (prose keeps · and … as they are).
+enum class Kind { letter, op, from_tex };
+
+struct Symbol {
+  std::string_view text;  // UTF-8
+  std::string_view tex;
+  Kind kind = Kind::letter;
 };
 
-Decoded decode(std::string_view s, std::size_t i) {
-  const auto b = static_cast<unsigned char>(s[i]);
-  const auto more = [&](std::size_t n) -> std::optional<Decoded> {
-    char32_t cp = b & (n == 1 ? 0x1Fu : n == 2 ? 0x0Fu : 0x07u);
-    for (std::size_t k = 1; k <= n; ++k) {
-      if (i + k >= s.size()) return std::nullopt;
-      const auto c = static_cast<unsigned char>(s[i + k]);
-      if ((c & 0xC0u) != 0x80u) return std::nullopt;
-      cp = (cp << 6) | (c & 0x3Fu);
-    }
-    return Decoded{cp, n + 1};
-  };
-  std::optional<Decoded> d;
-  if (b >= 0xF0)
-    d = more(3);
-  else if (b >= 0xE0)
-    d = more(2);
-  else if (b >= 0xC0)
-    d = more(1);
-  return d.value_or(Decoded{b, 1});
-}
+// Where several TeX names share a character, the first is the one prose gets. Accents
+// (\dot) are combining marks, written after their base.
+// clang-format off
+constexpr std::array<Symbol, 98> kSymbols{{
+    {"α", "\\alpha"}, {"β", "\\beta"}, {"γ", "\\gamma"}, {"δ", "\\delta"}, {"ε", "\\varepsilon"}, {"ε", "\\epsilon"},
+    {"ζ", "\\zeta"}, {"η", "\\eta"}, {"θ", "\\theta"}, {"ϑ", "\\vartheta"}, {"ι", "\\iota"}, {"κ", "\\kappa"},
+    {"λ", "\\lambda"}, {"μ", "\\mu"}, {"ν", "\\nu"}, {"ξ", "\\xi"}, {"π", "\\pi"}, {"ρ", "\\rho"}, {"σ", "\\sigma"},
+    {"τ", "\\tau"}, {"υ", "\\upsilon"}, {"φ", "\\varphi"}, {"φ", "\\phi"}, {"ϕ", "\\phi"}, {"χ", "\\chi"},
+    {"ψ", "\\psi"}, {"ω", "\\omega"}, {"Γ", "\\Gamma"}, {"Δ", "\\Delta"}, {"Θ", "\\Theta"}, {"Λ", "\\Lambda"},
+    {"Ξ", "\\Xi"}, {"Π", "\\Pi"}, {"Σ", "\\Sigma"}, {"Φ", "\\Phi"}, {"Ψ", "\\Psi"}, {"Ω", "\\Omega"},
+    {"ẋ", "\\dot{x}"}, {"ẍ", "\\ddot{x}"}, {"ẏ", "\\dot{y}"}, {"ÿ", "\\ddot{y}"}, {"ℓ", "\\ell"}, {"∂", "\\partial"},
+    {"∇", "\\nabla"}, {"−", "-", Kind::op}, {"×", "\\times", Kind::op}, {"·", "\\cdot", Kind::from_tex},
+    {"∙", "\\cdot", Kind::op}, {"⋅", "\\cdot", Kind::op}, {"÷", "\\div", Kind::op}, {"±", "\\pm", Kind::op},
+    {"∓", "\\mp", Kind::op}, {"→", "\\to", Kind::op}, {"→", "\\rightarrow", Kind::op}, {"←", "\\leftarrow", Kind::op},
+    {"⇒", "\\Rightarrow", Kind::op}, {"⇒", "\\implies", Kind::op}, {"⟹", "\\Longrightarrow", Kind::op},
+    {"≈", "\\approx", Kind::op}, {"≠", "\\neq", Kind::op}, {"≠", "\\ne", Kind::op}, {"≤", "\\le", Kind::op},
+    {"≤", "\\leq", Kind::op}, {"≥", "\\ge", Kind::op}, {"≥", "\\geq", Kind::op}, {"≪", "\\ll", Kind::op},
+    {"≫", "\\gg", Kind::op}, {"≡", "\\equiv", Kind::op}, {"∝", "\\propto", Kind::op}, {"∼", "\\sim", Kind::op},
+    {"∈", "\\in", Kind::op}, {"∞", "\\infty", Kind::op}, {"‖", "\\|", Kind::op}, {"‖", "\\lVert", Kind::op},
+    {"‖", "\\rVert", Kind::op}, {"⟨", "\\langle", Kind::op}, {"⟩", "\\rangle", Kind::op}, {"√", "\\surd", Kind::op},
+    {"∑", "\\sum", Kind::op}, {"∫", "\\int", Kind::op}, {"°", "^{\\circ}", Kind::op}, {"′", "'", Kind::op},
+    {"″", "''", Kind::op}, {"▶", "\\blacktriangleright", Kind::op}, {"sin", "\\sin", Kind::from_tex},
+    {"cos", "\\cos", Kind::from_tex}, {"tan", "\\tan", Kind::from_tex}, {"exp", "\\exp", Kind::from_tex},
+    {"ln", "\\ln", Kind::from_tex}, {"log", "\\log", Kind::from_tex}, {"  ", "\\quad", Kind::from_tex},
+    {"    ", "\\qquad", Kind::from_tex}, {"…", "\\dots", Kind::from_tex}, {"…", "\\ldots", Kind::from_tex},
+    {"\u0307", "\\dot", Kind::from_tex}, {"\u0308", "\\ddot", Kind::from_tex}, {"\u0302", "\\hat", Kind::from_tex},
+    {"\u0304", "\\bar", Kind::from_tex}}};
+// clang-format on
 
-struct Name {
-  char32_t cp;
-  const char* tex;
-};
-
-constexpr std::array<Name, 41> kLetters{{
-    {U'α', "\\alpha"},   {U'β', "\\beta"},   {U'γ', "\\gamma"},   {U'δ', "\\delta"},   {U'ε', "\\varepsilon"},
-    {U'ζ', "\\zeta"},    {U'η', "\\eta"},    {U'θ', "\\theta"},   {U'ι', "\\iota"},    {U'κ', "\\kappa"},
-    {U'λ', "\\lambda"},  {U'μ', "\\mu"},     {U'ν', "\\nu"},      {U'ξ', "\\xi"},      {U'π', "\\pi"},
-    {U'ρ', "\\rho"},     {U'σ', "\\sigma"},  {U'τ', "\\tau"},     {U'υ', "\\upsilon"}, {U'φ', "\\varphi"},
-    {U'χ', "\\chi"},     {U'ψ', "\\psi"},    {U'ω', "\\omega"},   {U'Γ', "\\Gamma"},   {U'Δ', "\\Delta"},
-    {U'Θ', "\\Theta"},   {U'Λ', "\\Lambda"}, {U'Ξ', "\\Xi"},      {U'Π', "\\Pi"},      {U'Σ', "\\Sigma"},
-    {U'Φ', "\\Phi"},     {U'Ψ', "\\Psi"},    {U'Ω', "\\Omega"},   {U'ϕ', "\\phi"},     {U'ẋ', "\\dot{x}"},
-    {U'ẍ', "\\ddot{x}"}, {U'ẏ', "\\dot{y}"}, {U'ÿ', "\\ddot{y}"}, {U'ℓ', "\\ell"},     {U'∂', "\\partial"},
-    {U'∇', "\\nabla"},
-}};
-
-constexpr std::array<Name, 25> kOperators{{
-    {U'−', "-"},           {U'×', "\\times"},      {U'∙', "\\cdot"},
-    {U'÷', "\\div"},       {U'±', "\\pm"},         {U'→', "\\to"},
-    {U'←', "\\leftarrow"}, {U'⇒', "\\Rightarrow"}, {U'≈', "\\approx"},
-    {U'≠', "\\neq"},       {U'≤', "\\le"},         {U'≥', "\\ge"},
-    {U'∞', "\\infty"},     {U'‖', "\\|"},          {U'√', "\\surd"},
-    {U'∑', "\\sum"},       {U'∫', "\\int"},        {U'°', "^{\\circ}"},
-    {U'′', "'"},           {U'″', "''"},           {U'▶', "\\blacktriangleright"},
-    {U'∝', "\\propto"},    {U'∼', "\\sim"},        {U'⋅', "\\cdot"},
-    {U'∈', "\\in"},
-}};
-
-const char* find(const auto& table, char32_t cp) {
-  for (const Name& n : table)
-    if (n.cp == cp) return n.tex;
+// The symbol a character is in prose: a letter or an operator.
+const Symbol* prose_symbol(char32_t cp) {
+  const std::string text = encode_utf8(cp);
+  for (const Symbol& s : kSymbols)
+    if (s.text == text) return s.kind == Kind::from_tex ? nullptr : &s;
   return nullptr;
 }
 
-// Subscript and superscript digits, signs and the few letters Unicode has.
-std::optional<char> subscript(char32_t cp) {
-  if (cp >= U'₀' && cp <= U'₉') return static_cast<char>('0' + (cp - U'₀'));
-  switch (cp) {
-    case U'₊':
-      return '+';
-    case U'₋':
-      return '-';
-    case U'ₐ':
-      return 'a';
-    case U'ₑ':
-      return 'e';
-    case U'ₒ':
-      return 'o';
-    case U'ₓ':
-      return 'x';
-    case U'ₕ':
-      return 'h';
-    case U'ₖ':
-      return 'k';
-    case U'ₗ':
-      return 'l';
-    case U'ₘ':
-      return 'm';
-    case U'ₙ':
-      return 'n';
-    case U'ₚ':
-      return 'p';
-    case U'ₛ':
-      return 's';
-    case U'ₜ':
-      return 't';
-    default:
-      return std::nullopt;
-  }
+// The Unicode text of the TeX command \name.
+std::string_view from_tex(std::string_view name) {
+  for (const Symbol& s : kSymbols)
+    if (s.tex.starts_with('\\') && s.tex.substr(1) == name) return s.text;
+  return {};
 }
 
-std::optional<char> superscript(char32_t cp) {
-  switch (cp) {
-    case U'⁰':
-      return '0';
-    case U'¹':
-      return '1';
-    case U'²':
-      return '2';
-    case U'³':
-      return '3';
-    case U'⁴':
-      return '4';
-    case U'⁵':
-      return '5';
-    case U'⁶':
-      return '6';
-    case U'⁷':
-      return '7';
-    case U'⁸':
-      return '8';
-    case U'⁹':
-      return '9';
-    case U'⁺':
-      return '+';
-    case U'⁻':
-      return '-';
-    case U'ⁿ':
-      return 'n';
-    default:
-      return std::nullopt;
-  }
-}
+// Sub- and superscript forms; digits and signs have both, letters only a few.
+struct Script {
+  char ascii;
+  char32_t sub, sup;
+};
+constexpr std::array<Script, 27> kScripts{
+    {{'0', U'₀', U'⁰'}, {'1', U'₁', U'¹'}, {'2', U'₂', U'²'}, {'3', U'₃', U'³'}, {'4', U'₄', U'⁴'}, {'5', U'₅', U'⁵'},
+     {'6', U'₆', U'⁶'}, {'7', U'₇', U'⁷'}, {'8', U'₈', U'⁸'}, {'9', U'₉', U'⁹'}, {'+', U'₊', U'⁺'}, {'-', U'₋', U'⁻'},
+     {'=', U'₌', U'⁼'}, {'(', U'₍', U'⁽'}, {')', U'₎', U'⁾'}, {'a', U'ₐ', 0},    {'e', U'ₑ', 0},    {'o', U'ₒ', 0},
+     {'x', U'ₓ', 0},    {'h', U'ₕ', 0},    {'k', U'ₖ', 0},    {'l', U'ₗ', 0},    {'m', U'ₘ', 0},    {'n', U'ₙ', U'ⁿ'},
+     {'p', U'ₚ', 0},    {'s', U'ₛ', 0},    {'t', U'ₜ', 0}}};
 
-bool is_mark(char32_t cp) { return cp == 0x0307 || cp == 0x0308 || subscript(cp) || superscript(cp); }
+// --- Unicode -> TeX -----------------------------------------------------------------
+
+bool is_mark(char32_t cp) { return cp == 0x0307 || cp == 0x0308 || script_char(cp); }
 
 // ¹ ² ³ are Latin-1: pdflatex prints them in text as they are (m/s² stays upright), so
 // after a plain letter or alone they are left alone.
@@ -162,56 +101,209 @@ void close_math(std::string_view s, std::size_t& i, std::string& out) {
 void convert_prose(std::string_view s, std::string& out) {
   std::size_t i = 0;
   while (i < s.size()) {
-    const Decoded d = decode(s, i);
-    const char* letter = d.size > 1 ? find(kLetters, d.cp) : nullptr;
-    const bool ascii_base = d.size == 1 && ascii_letter(s[i]) && i + 1 < s.size() && is_mark(decode(s, i + 1).cp) &&
-                            !latin1_superscript(decode(s, i + 1).cp);
+    const Utf8Char d = decode_utf8(s, i);
+    const Symbol* symbol = d.size > 1 ? prose_symbol(d.cp) : nullptr;
+    const bool letter = symbol != nullptr && symbol->kind == Kind::letter;
+    const bool ascii_base = d.size == 1 && ascii_letter(s[i]) && i + 1 < s.size() &&
+                            is_mark(decode_utf8(s, i + 1).cp) && !latin1_superscript(decode_utf8(s, i + 1).cp);
     const bool bare_mark = is_mark(d.cp) && !latin1_superscript(d.cp);  // 10⁻⁹: marks with no letter before
-    if (letter == nullptr && !ascii_base && !bare_mark) {
-      if (const char* op = d.size > 1 ? find(kOperators, d.cp) : nullptr) {
-        out += "$";
-        out += op;
+    if (!letter && !ascii_base && !bare_mark) {
+      if (symbol != nullptr) {
+        out += concat({"$", symbol->tex});
         i += d.size;
         close_math(s, i, out);
         continue;
-      } else {
-        out.append(s.substr(i, d.size));
       }
+      out.append(s.substr(i, d.size));
       i += d.size;
       continue;
     }
     // A symbol: base, dots, subscripts, superscripts.
-    std::string base = letter != nullptr ? letter : bare_mark ? "{}" : std::string(1, s[i]);
+    std::string base = letter ? std::string(symbol->tex) : bare_mark ? "{}" : std::string(1, s[i]);
     if (!bare_mark) i += d.size;
     std::string sub, sup;
     int dots = 0;
     while (i < s.size()) {
-      const Decoded m = decode(s, i);
-      if (m.cp == 0x0307 || m.cp == 0x0308) {
+      const Utf8Char m = decode_utf8(s, i);
+      const auto script = script_char(m.cp);
+      if (m.cp == 0x0307 || m.cp == 0x0308)
         dots += m.cp == 0x0307 ? 1 : 2;
-      } else if (const auto c = subscript(m.cp)) {
-        sub += *c;
-      } else if (const auto c2 = superscript(m.cp)) {
-        sup += *c2;
-      } else {
+      else if (script)
+        (script->superscript ? sup : sub) += script->ascii;
+      else
         break;
-      }
       i += m.size;
     }
-    if (dots > 0) base = (dots == 1 ? "\\dot{" : "\\ddot{") + base + "}";
+    if (dots > 0) base = concat({dots == 1 ? "\\dot{" : "\\ddot{", base, "}"});
     out += "$" + base;
-    if (!sub.empty()) out += "_{" + sub + "}";
-    if (!sup.empty()) out += "^{" + sup + "}";
+    if (!sub.empty()) out += concat({"_{", sub, "}"});
+    if (!sup.empty()) out += concat({"^{", sup, "}"});
     close_math(s, i, out);
   }
 }
 
+// --- TeX -> Unicode -----------------------------------------------------------------
+
+// Marks where a function name starts, so run() can put a space before it when needed.
+constexpr char kWordStart = '\x01';
+
+class Converter {
+ public:
+  explicit Converter(std::string_view s) : s_(s) {}
+
+  std::string run() {
+    std::string out = sequence('\0');
+    // Tidy the spacing the commands leave behind.
+    std::string tidy;
+    for (char c : out) {
+      if (c == kWordStart) {
+        if (!tidy.empty() && std::string_view(" ([{\n").find(tidy.back()) == std::string_view::npos) tidy += ' ';
+        continue;
+      }
+      // No space before a line end or closing punctuation, none after an opening one.
+      if (c == '\n' || c == ',' || c == ';' || c == ')' || c == ']')
+        while (!tidy.empty() && tidy.back() == ' ') tidy.pop_back();
+      if (!(c == ' ' && (tidy.empty() || std::string_view(" \n([").find(tidy.back()) != std::string_view::npos)))
+        tidy += c;
+    }
+    while (!tidy.empty() && (tidy.back() == ' ' || tidy.back() == '\n')) tidy.pop_back();
+    return tidy;
+  }
+
+ private:
+  // Everything up to `stop` (a closing brace) or the end.
+  std::string sequence(char stop) {
+    std::string out;
+    while (pos_ < s_.size() && s_[pos_] != stop) out += atom();
+    if (pos_ < s_.size()) ++pos_;  // the stop character
+    return out;
+  }
+
+  // One group: {…} or a single command or character.
+  std::string group() {
+    while (pos_ < s_.size() && s_[pos_] == ' ') ++pos_;
+    if (pos_ >= s_.size()) return {};
+    // Every recursion passes through here or an opening brace, a level deeper each time.
+    const NestingLevel level(depth_);
+    if (level.too_deep()) throw LatexNestingError(s_.data() + pos_);
+    if (s_[pos_] == '{') {
+      ++pos_;
+      return sequence('}');
+    }
+    return atom();
+  }
+
+  // A sub- or superscript in Unicode when every character has a form (digits and signs:
+  // letters have too few forms to mix), else marked by `mark` ("_" or "^"), in
+  // parentheses unless it is letters and digits only.
+  std::string script(char mark) {
+    const std::string body = group();
+    std::string mapped;
+    bool plain = !body.empty();
+    for (char c : body) plain = plain && std::isalnum(static_cast<unsigned char>(c));
+    for (std::size_t i = 0; i < body.size() && std::isalpha(static_cast<unsigned char>(body[i])) == 0; ++i) {
+      const auto* s =
+          std::find_if(kScripts.begin(), kScripts.end(), [&](const Script& e) { return e.ascii == body[i]; });
+      if (s == kScripts.end()) break;
+      mapped += encode_utf8(mark == '^' ? s->sup : s->sub);
+      if (i + 1 == body.size()) return mapped;
+    }
+    std::string out(1, mark);
+    return plain ? out + body : concat({out, "(", body, ")"});
+  }
+
+  std::string atom() {
+    const char c = s_[pos_];
+    if (c == '\\') return command();
+    ++pos_;
+    switch (c) {
+      case '{': {
+        const NestingLevel level(depth_);
+        if (level.too_deep()) throw LatexNestingError(s_.data() + pos_ - 1);
+        return sequence('}');
+      }
+      case '}':
+        return {};
+      case '&':
+        return matrix_depth_ > 0 ? ", " : "";
+      case '~':
+      case '\n':  // only \\ breaks a line
+        return " ";
+      case '_':
+      case '^':
+        return script(c);
+      default:
+        return std::string(1, c);
+    }
+  }
+
+  std::string command() {
+    ++pos_;  // the backslash
+    if (pos_ >= s_.size()) return {};
+    const std::size_t start = pos_;
+    if (!std::isalpha(static_cast<unsigned char>(s_[pos_]))) {
+      const char c = s_[pos_++];
+      if (c == '\\') return matrix_depth_ > 0 ? "; " : "\n";
+      if (c == ',' || c == ';' || c == ':' || c == ' ') return " ";
+      if (c == '!') return {};
+      if (c == '|') return "‖";
+      return std::string(1, c);  // \{ \} \% ...
+    }
+    while (pos_ < s_.size() && std::isalpha(static_cast<unsigned char>(s_[pos_]))) ++pos_;
+    const std::string_view name = s_.substr(start, pos_ - start);
+    if (name == "frac" || name == "dfrac" || name == "tfrac") {
+      const std::string a = group(), b = group();
+      return concat({wrap(a), "/", wrap(b)});
+    }
+    if (name == "sqrt") return "√" + wrap(group());
+    if (name == "dot" || name == "ddot" || name == "hat" || name == "bar") return group() + std::string(from_tex(name));
+    if (name == "begin" || name == "end") {
+      // A matrix reads inline, [a, b; c, d]; other environments (aligned, ...) vanish.
+      const std::string env = group();
+      const bool round = env == "pmatrix";
+      if (env != "bmatrix" && env != "pmatrix" && env != "matrix") return {};
+      matrix_depth_ += name == "begin" ? 1 : -1;
+      return name == "begin" ? (round ? "(" : "[") : (round ? ")" : "]");
+    }
+    if (name == "left" || name == "right" || name == "big" || name == "Big" || name == "bigl" || name == "bigr") {
+      if (pos_ < s_.size() && s_[pos_] == '.') ++pos_;
+      return {};
+    }
+    if (name == "mathrm" || name == "text" || name == "mathbf" || name == "boldsymbol" || name == "mathit" ||
+        name == "operatorname" || name == "mathcal")
+      return group();
+    if (name == "tag") return concat({"   (", group(), ")"});
+    if (const std::string_view symbol = from_tex(name); !symbol.empty()) {
+      // A function name is a word: apart from what precedes it (see run()) and what follows.
+      const bool word = std::isalpha(static_cast<unsigned char>(symbol.front())) != 0;
+      return word ? concat({std::string_view(&kWordStart, 1), symbol, " "}) : std::string(symbol);
+    }
+    return std::string(name);
+  }
+
+  // Parentheses around a fraction's part unless it is one symbol.
+  static std::string wrap(const std::string& part) {
+    const bool simple = part.find_first_of(" +-−·×/") == std::string::npos;
+    return simple ? part : concat({"(", part, ")"});
+  }
+
+  std::string_view s_;
+  std::size_t pos_ = 0;
+  int matrix_depth_ = 0;
+  int depth_ = 0;
+};
+
 }  // namespace
 
+std::optional<ScriptChar> script_char(char32_t cp) {
+  for (const Script& s : kScripts)
+    if (s.sub == cp || s.sup == cp) return ScriptChar{s.ascii, s.sup == cp};
+  return std::nullopt;
+}
+
 std::string_view tex_symbol(char32_t cp) {
-  if (const char* letter = find(kLetters, cp)) return letter;
-  if (const char* op = find(kOperators, cp)) return op;
-  return {};
+  const Symbol* s = prose_symbol(cp);
+  return s != nullptr ? s->tex : std::string_view{};
 }
 
 std::string tex_math_in_prose(std::string_view md) {
@@ -250,5 +342,13 @@ std::string tex_math_in_prose(std::string_view md) {
   flush(md.size());
   return out;
 }
+
+LatexNestingError::LatexNestingError(const char* at)
+    : Error(ExitCode::bad_input,
+            concat({"the math is nested more than ", std::to_string(kMaxNesting),
+                    " levels deep (each {...} and each argument of \\sqrt, \\frac, ^ or _ is a level)"})),
+      at_(at) {}
+
+std::string latex_to_unicode(std::string_view latex) { return Converter(latex).run(); }
 
 }  // namespace linkage

@@ -1,4 +1,5 @@
 // Unicode math in prose becomes TeX inline math; math, code and other text stay as they are.
+// LaTeX math becomes Unicode text for a terminal.
 #include "report/unicode_tex.hpp"
 
 #include <gtest/gtest.h>
@@ -28,6 +29,20 @@ TEST(UnicodeTex, MathCodeAndTypographyStay) {
             "```\nθ₂ in a fence\n```\nafter $\\theta$");
   EXPECT_EQ(tex_math_in_prose(""), "");
   EXPECT_EQ(tex_math_in_prose("a $ lone dollar θ"), "a $ lone dollar $\\theta$");
+}
+
+TEST(LatexToUnicode, FormulasReadInATerminal) {
+  EXPECT_EQ(latex_to_unicode("I_{zz}^C = \\frac{m\\,(w^2 + L^2)}{12}"), "I_zz^C = (m (w² + L²))/12");
+  EXPECT_EQ(latex_to_unicode("\\ddot{\\theta}_1 + \\dot{x}_2"), "θ\u0308₁ + x\u0307₂");
+  EXPECT_EQ(latex_to_unicode("D = \\frac{L}{2} - b"), "D = L/2 - b");
+  EXPECT_EQ(latex_to_unicode("\\sin\\theta_1 \\cdot F_x"), "sin θ₁ · F_x");
+  EXPECT_EQ(latex_to_unicode("-\\dot\\theta\\sin\\theta (\\cos x)"), "-θ\u0307 sin θ (cos x)");
+  EXPECT_EQ(latex_to_unicode("\\begin{aligned} a &= b \\\\ c &= d \\end{aligned}"), "a = b\nc = d");
+  EXPECT_EQ(latex_to_unicode("\\left( x \\right)^{2}"), "(x)²");
+  EXPECT_EQ(latex_to_unicode("\\lVert r^{CP} \\rVert"), "‖ r^CP ‖");
+  EXPECT_EQ(latex_to_unicode("10^{-4}\\ \\mathrm{kg\\,m^2}"), "10⁻⁴ kg m²");
+  EXPECT_EQ(latex_to_unicode("\\int_{-L/2}^{L/2} x"), "∫_(-L/2)^(L/2) x");
+  EXPECT_EQ(latex_to_unicode("\\begin{bmatrix} m & 0 \\\\ 0 & I \\end{bmatrix} q"), "[m, 0; 0, I] q");
 }
 
 }  // namespace

@@ -5,7 +5,7 @@
 #include <string>
 #include <string_view>
 
-namespace linkage::lesson {
+namespace linkage {
 
 /// Plain text for a terminal `width` columns wide: paragraphs and list items wrapped at
 /// spaces (nested lists indented per level), emphasis markers dropped, links as
@@ -30,4 +30,4 @@ namespace linkage::lesson {
 /// halfway through a run.
 void check_markdown(std::string_view markdown, const std::string& origin);
 
-}  // namespace linkage::lesson
+}  // namespace linkage

@@ -1,4 +1,4 @@
-#include "lesson/markdown.hpp"
+#include "report/markdown.hpp"
 
 #include <md4c.h>
 
@@ -12,13 +12,12 @@
 
 #include "core/error.hpp"
 #include "core/limits.hpp"
-#include "lesson/latex_text.hpp"
 #include "report/latex_math.hpp"
 #include "report/notation.hpp"
 #include "report/text_layout.hpp"
 #include "report/unicode_tex.hpp"
 
-namespace linkage::lesson {
+namespace linkage {
 namespace {
 
 // --- md4c's events, bounded -----------------------------------------------------------
@@ -139,30 +138,11 @@ void parse(std::string_view markdown, Renderer& renderer) {
 // The characters an entity (&amp;, &#233;, &#x3B8;) stands for; the few named ones
 // lessons would write, else the entity as written.
 std::string entity(std::string_view e) {
-  auto utf8 = [](unsigned long c) {
-    std::string out;
-    if (c < 0x80) {
-      out += static_cast<char>(c);
-    } else if (c < 0x800) {
-      out += static_cast<char>(0xC0 | (c >> 6));
-      out += static_cast<char>(0x80 | (c & 0x3F));
-    } else if (c < 0x10000) {
-      out += static_cast<char>(0xE0 | (c >> 12));
-      out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
-      out += static_cast<char>(0x80 | (c & 0x3F));
-    } else {
-      out += static_cast<char>(0xF0 | (c >> 18));
-      out += static_cast<char>(0x80 | ((c >> 12) & 0x3F));
-      out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
-      out += static_cast<char>(0x80 | (c & 0x3F));
-    }
-    return out;
-  };
   if (e.starts_with("&#")) {
     const bool hex = e.size() > 2 && (e[2] == 'x' || e[2] == 'X');
     const std::string digits(e.substr(hex ? 3 : 2, e.size() - (hex ? 4 : 3)));
     const unsigned long c = std::strtoul(digits.c_str(), nullptr, hex ? 16 : 10);
-    return c == 0 || c > 0x10FFFF || (c >= 0xD800 && c <= 0xDFFF) ? "\uFFFD" : utf8(c);
+    return c == 0 || c > 0x10FFFF || (c >= 0xD800 && c <= 0xDFFF) ? "\uFFFD" : encode_utf8(static_cast<char32_t>(c));
   }
   for (const auto& [name, text] : {std::pair<std::string_view, std::string_view>{"&amp;", "&"},
                                    {"&lt;", "<"},
@@ -499,36 +479,6 @@ class TextRenderer final : public Renderer {
 
 // --- LaTeX ------------------------------------------------------------------------
 
-// One code point of UTF-8 at s[i]; sets `length`.
-char32_t decode(std::string_view s, std::size_t i, std::size_t& length) {
-  const auto lead = static_cast<unsigned char>(s[i]);
-  length = lead < 0x80 ? 1 : lead < 0xE0 ? 2 : lead < 0xF0 ? 3 : 4;
-  if (i + length > s.size()) {
-    length = 1;
-    return lead;
-  }
-  char32_t c = length == 1 ? lead : length == 2 ? (lead & 0x1Fu) : length == 3 ? (lead & 0x0Fu) : (lead & 0x07u);
-  for (std::size_t k = 1; k < length; ++k) c = (c << 6) | (static_cast<unsigned char>(s[i + k]) & 0x3Fu);
-  return c;
-}
-
-// A subscript or superscript digit or sign as its ASCII character, or 0.
-char script_char(char32_t c, bool& superscript) {
-  superscript = false;
-  if (c >= U'₀' && c <= U'₉') return static_cast<char>('0' + (c - U'₀'));
-  if (c == U'₋') return '-';
-  if (c == U'₊') return '+';
-  superscript = true;
-  if (c == U'⁰') return '0';
-  if (c == U'¹') return '1';
-  if (c == U'²') return '2';
-  if (c == U'³') return '3';
-  if (c >= U'⁴' && c <= U'⁹') return static_cast<char>('4' + (c - U'⁴'));
-  if (c == U'⁻') return '-';
-  if (c == U'⁺') return '+';
-  return 0;
-}
-
 // Plain characters (no markup) as text-mode LaTeX: special characters escaped, and
 // Greek letters, dotted symbols (θ̇₁), sub/superscripts (10⁻¹²) and operators (× −) as
 // inline math, so pdflatex compiles it.
@@ -536,47 +486,38 @@ std::string latex_chars(std::string_view s) {
   std::string out;
   std::size_t i = 0;
   while (i < s.size()) {
-    std::size_t length = 0;
-    const char32_t c = decode(s, i, length);
-    std::string base;
-    if (const std::string_view g = tex_symbol(c); !g.empty())
-      base = std::string(g);
-    else if (c < 0x80 && std::isalpha(static_cast<int>(c)))
-      base = std::string(1, static_cast<char>(c));
+    const Utf8Char c = decode_utf8(s, i);
+    const std::string_view symbol = tex_symbol(c.cp);
+    std::string base(symbol);
+    if (base.empty() && c.cp < 0x80 && std::isalpha(static_cast<int>(c.cp))) base = s.substr(i, 1);
     // Accents and scripts that follow the base.
-    std::size_t j = i + length;
+    std::size_t j = i + c.size;
     std::string math = base;
-    while (!base.empty() && j < s.size()) {
-      std::size_t n = 0;
-      const char32_t next = decode(s, j, n);
-      if (next != 0x307 && next != 0x308) break;
-      math = (next == 0x307 ? "\\dot{" : "\\ddot{") + math + "}";
-      j += n;
-    }
+    for (Utf8Char next; !base.empty() && j < s.size() && ((next = decode_utf8(s, j)).cp == 0x307 || next.cp == 0x308);
+         j += next.size)
+      math = concat({next.cp == 0x307 ? "\\dot{" : "\\ddot{", math, "}"});
     // Scripts, each run in one group (10⁻¹² is 10^{-12}): after a letter, or starting at
     // c itself; a digit's scripts (10²) start after it, with the digit kept as text.
-    bool c_superscript = false;
-    const bool c_is_script = script_char(c, c_superscript) != 0;
+    const bool c_is_script = script_char(c.cp).has_value();
     if (base.empty() && c_is_script) j = i;
     std::string sub, sup;
     while ((!base.empty() || c_is_script) && j < s.size()) {
-      std::size_t n = 0;
-      bool superscript = false;
-      const char script = script_char(decode(s, j, n), superscript);
-      if (script == 0) break;
-      (superscript ? sup : sub) += script;
-      j += n;
+      const Utf8Char next = decode_utf8(s, j);
+      const auto script = script_char(next.cp);
+      if (!script) break;
+      (script->superscript ? sup : sub) += script->ascii;
+      j += next.size;
     }
     std::string scripts;
     if (!sub.empty()) scripts += concat({"_{", sub, "}"});
     if (!sup.empty()) scripts += concat({"^{", sup, "}"});
-    if (!tex_symbol(c).empty() || math != base || !scripts.empty()) {
+    if (!symbol.empty() || math != base || !scripts.empty()) {
       out += concat({"$", math.empty() ? "{}" : math, scripts, "$"});  // {} for a script alone
       i = j;
       continue;
     }
-    out += c < 0x80 ? latex_escape(s.substr(i, 1)) : std::string(s.substr(i, length));
-    i += length;
+    out += c.cp < 0x80 ? latex_escape(s.substr(i, 1)) : std::string(s.substr(i, c.size));
+    i += c.size;
   }
   return out;
 }
@@ -804,4 +745,4 @@ void check_markdown(std::string_view markdown, const std::string& origin) {
   }
 }
 
-}  // namespace linkage::lesson
+}  // namespace linkage

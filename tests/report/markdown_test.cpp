@@ -1,16 +1,15 @@
 // Lesson Markdown for a terminal (wrapped) and for LaTeX (compilable by pdflatex).
-#include "lesson/markdown.hpp"
+#include "report/markdown.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <sstream>
 
-#include "lesson/latex_text.hpp"
-#include "lesson/output.hpp"
 #include "report/text_layout.hpp"
+#include "support/commonmark_sample.hpp"
 
-namespace linkage::lesson {
+namespace linkage {
 namespace {
 
 std::vector<std::string> lines_of(const std::string& text) {
@@ -92,16 +91,8 @@ TEST(MarkdownLatex, Blocks) {
 
 // CommonMark as GitHub renders it: nested lists, emphasis inside a link, a table with a
 // right-aligned column, fenced code and a quote holding a quote.
-const char* const kSample =
-    "# Bodies and joints\n\n"
-    "Read [the *whole* spec](spec.txt) before $\\theta_1$.\n\n"
-    "- bodies\n  - block 1\n  - block 2\n- joints\n  1. pin at $O$\n  2. slider\n\n"
-    "| name | value |\n| --- | ---: |\n| $\\dot\\theta_1$ | 0.1 |\n| **mass** | 2 |\n\n"
-    "```\nlinkage solve --case 1\n```\n\n"
-    "> A quote, with *emphasis*,\n> over two lines.\n>\n> > and a quote inside it\n";
-
 TEST(CommonMark, TheTerminalShowsEachStructure) {
-  EXPECT_EQ(markdown_to_text(kSample, 40),
+  EXPECT_EQ(markdown_to_text(test::kCommonMarkSample, 40),
             "Bodies and joints\n"
             "=================\n\n"
             "Read the whole spec (spec.txt) before\n"
@@ -124,7 +115,7 @@ TEST(CommonMark, TheTerminalShowsEachStructure) {
 }
 
 TEST(CommonMark, TheHandoutShowsEachStructure) {
-  EXPECT_EQ(markdown_to_latex(kSample),
+  EXPECT_EQ(markdown_to_latex(test::kCommonMarkSample),
             "\\subsection*{Bodies and joints}\n\n"
             "Read \\href{spec.txt}{the \\emph{whole} spec} before $\\theta_1$.\n\n"
             "\\begin{itemize}\n"
@@ -156,13 +147,6 @@ TEST(CommonMark, TheHandoutShowsEachStructure) {
             "\\end{quote}\n\n");
 }
 
-// lesson.md keeps the Markdown as written, for any CommonMark reader.
-TEST(CommonMark, TheLessonDocumentKeepsTheText) {
-  const auto writer = make_markdown_writer();
-  writer->markdown(kSample);
-  EXPECT_EQ(writer->take(), "\n" + std::string(kSample) + "\n");
-}
-
 // Where CommonMark reads differently from the line-by-line reader it replaced.
 TEST(CommonMark, NumbersLinksAndLooseLists) {
   EXPECT_EQ(markdown_to_text("3. three\n3. four", 80), "  3. three\n  4. four\n");  // numbered from the start
@@ -173,30 +157,10 @@ TEST(CommonMark, NumbersLinksAndLooseLists) {
   EXPECT_EQ(inline_latex("# 3"), "\\# 3");
 }
 
-}  // namespace
-}  // namespace linkage::lesson
-
-namespace linkage::lesson {
-namespace {
-
-TEST(LatexToUnicode, FormulasReadInATerminal) {
-  EXPECT_EQ(latex_to_unicode("I_{zz}^C = \\frac{m\\,(w^2 + L^2)}{12}"), "I_zz^C = (m (w² + L²))/12");
-  EXPECT_EQ(latex_to_unicode("\\ddot{\\theta}_1 + \\dot{x}_2"), "θ\u0308₁ + x\u0307₂");
-  EXPECT_EQ(latex_to_unicode("D = \\frac{L}{2} - b"), "D = L/2 - b");
-  EXPECT_EQ(latex_to_unicode("\\sin\\theta_1 \\cdot F_x"), "sin θ₁ · F_x");
-  EXPECT_EQ(latex_to_unicode("-\\dot\\theta\\sin\\theta (\\cos x)"), "-θ\u0307 sin θ (cos x)");
-  EXPECT_EQ(latex_to_unicode("\\begin{aligned} a &= b \\\\ c &= d \\end{aligned}"), "a = b\nc = d");
-  EXPECT_EQ(latex_to_unicode("\\left( x \\right)^{2}"), "(x)²");
-  EXPECT_EQ(latex_to_unicode("\\lVert r^{CP} \\rVert"), "‖ r^CP ‖");
-  EXPECT_EQ(latex_to_unicode("10^{-4}\\ \\mathrm{kg\\,m^2}"), "10⁻⁴ kg m²");
-  EXPECT_EQ(latex_to_unicode("\\int_{-L/2}^{L/2} x"), "∫_(-L/2)^(L/2) x");
-  EXPECT_EQ(latex_to_unicode("\\begin{bmatrix} m & 0 \\\\ 0 & I \\end{bmatrix} q"), "[m, 0; 0, I] q");
-}
-
 TEST(LatexToUnicode, MathInTerminalText) {
   EXPECT_EQ(markdown_to_text("The angle $\\theta_1$ grows.\n\n$$\n\\ddot{y}_1 = -g\n$$\n", 80),
             "The angle θ₁ grows.\n\n    y\u0308₁ = -g\n");
 }
 
 }  // namespace
-}  // namespace linkage::lesson
+}  // namespace linkage
