@@ -63,8 +63,9 @@ TEST(ExpressionNesting, HostileExpressionsGetAShortOneLineError) {
     EXPECT_LT(message.size(), 300u) << message.substr(0, 300);
   }
   // A tower of powers is refused at its second ^, long text where reading passes 500 characters.
-  EXPECT_NE(expression_error(repeat("1", 1) + repeat("^1", 100000)).find("the power is too high or nested at character 4"),
-            std::string::npos);
+  EXPECT_NE(
+      expression_error(repeat("1", 1) + repeat("^1", 100000)).find("the power is too high or nested at character 4"),
+      std::string::npos);
   for (const std::string& hostile :
        {repeat("1 + ", 100000) + "1", "1" + std::string(100000, ' '), repeat("(1)*", 200)}) {
     const std::string message = expression_error(hostile);
