@@ -20,13 +20,90 @@
 namespace linkage {
 namespace {
 
+// The characters an entity (&amp;, &#233;, &#x3B8;) stands for; the few named ones
+// lessons would write, else the entity as written.
+std::string entity(std::string_view e) {
+  if (e.starts_with("&#")) {
+    const bool hex = e.size() > 2 && (e[2] == 'x' || e[2] == 'X');
+    const std::string digits(e.substr(hex ? 3 : 2, e.size() - (hex ? 4 : 3)));
+    const unsigned long c = std::strtoul(digits.c_str(), nullptr, hex ? 16 : 10);
+    return c == 0 || c > 0x10FFFF || (c >= 0xD800 && c <= 0xDFFF) ? "\uFFFD" : encode_utf8(static_cast<char32_t>(c));
+  }
+  for (const auto& [name, text] : {std::pair<std::string_view, std::string_view>{"&amp;", "&"},
+                                   {"&lt;", "<"},
+                                   {"&gt;", ">"},
+                                   {"&quot;", "\""},
+                                   {"&nbsp;", " "}})
+    if (e == name) return std::string(text);
+  return std::string(e);
+}
+
+std::string trim_spaces(std::string_view s) {
+  const std::size_t start = s.find_first_not_of(" \n");
+  return start == std::string_view::npos ? "" : std::string(s.substr(start, s.find_last_not_of(" \n") - start + 1));
+}
+
+// Math text as LaTeX reads it: md4c's line breaks (its own " ") become new lines in
+// display math, and each piece remembers where it came from for error messages.
+struct Math {
+  std::string text;
+  std::vector<std::pair<std::size_t, const char*>> from;  // (offset in text, source)
+  bool display = false;
+  const char* begin = nullptr;  // the Markdown's start
+
+  void add(std::string_view piece, bool source) {
+    if (source && display && text.ends_with('\n')) {  // md4c drops a line's indentation: keep it
+      const char* indent = piece.data();
+      while (indent > begin && (indent[-1] == ' ' || indent[-1] == '\t')) --indent;
+      piece = std::string_view(indent, static_cast<std::size_t>(piece.data() + piece.size() - indent));
+    }
+    if (source) from.emplace_back(text.size(), piece.data());
+    text += !source && display ? std::string_view("\n") : piece;
+  }
+  [[nodiscard]] std::string trimmed() const { return trim_spaces(text); }
+  // Where the character `at` of `converted` (a copy of trimmed()) came from.
+  [[nodiscard]] const char* source_of(const std::string& converted, const char* at) const {
+    const auto offset = static_cast<std::size_t>(at - converted.data()) + text.find_first_not_of(" \n");
+    const char* source = nullptr;
+    for (const auto& [in_text, in_source] : from)
+      if (in_text <= offset) source = in_source + (offset - in_text);
+    return source;
+  }
+};
+
+// A table column's alignment as LaTeX writes it: l, c or r.
+char alignment(void* td_detail) {
+  const MD_ALIGN a = static_cast<MD_BLOCK_TD_DETAIL*>(td_detail)->align;
+  return a == MD_ALIGN_CENTER ? 'c' : a == MD_ALIGN_RIGHT ? 'r' : 'l';
+}
+
+// A table's cells as both renderers collect them: rows of cells and one alignment
+// letter per column, from the header row.
+struct TableCells {
+  std::vector<std::vector<std::string>> rows;
+  std::string align;
+
+  // Starts a table, a row or a header cell; other blocks are not the table's.
+  void start(MD_BLOCKTYPE type, void* detail) {
+    if (type == MD_BLOCK_TABLE) {
+      rows.clear();
+      align.clear();
+    } else if (type == MD_BLOCK_TR) {
+      rows.emplace_back();
+    } else if (type == MD_BLOCK_TH) {
+      align += alignment(detail);
+    }
+  }
+};
+
 // --- md4c's events, bounded -----------------------------------------------------------
 
-// A renderer of md4c's events. md4c nests as deep as the text does and bounds nothing,
-// so parse() forwards only kMaxNesting levels of containers (quotes, lists, items) and
-// of spans, and refuses the text at the first character past the bound.
+// A renderer of md4c's events and the state both keep. md4c nests as deep as the text
+// does, so parse() forwards only kMaxNesting levels of containers (quotes, list items)
+// and of spans, and refuses the text at the first character past the bound.
 class Renderer {
  public:
+  explicit Renderer(std::string_view markdown) : markdown_(markdown) {}
   virtual ~Renderer() = default;
   virtual void enter_block(MD_BLOCKTYPE type, void* detail) = 0;
   virtual void leave_block(MD_BLOCKTYPE type) = 0;
@@ -35,6 +112,20 @@ class Renderer {
   // `source` is true when `text` points into the Markdown (md4c hands its own strings
   // for line breaks inside code and math, and for NUL characters).
   virtual void text(MD_TEXTTYPE type, std::string_view text, bool source) = 0;
+  [[nodiscard]] std::string take() { return std::move(out_); }
+
+ protected:
+  static std::string url(MD_SPANTYPE type, void* detail) {
+    const MD_ATTRIBUTE& a = type == MD_SPAN_A ? static_cast<MD_SPAN_A_DETAIL*>(detail)->href
+                                              : static_cast<MD_SPAN_IMG_DETAIL*>(detail)->src;
+    return {a.text, a.size};
+  }
+  void start_math(MD_SPANTYPE type) { math_ = Math{"", {}, type == MD_SPAN_LATEXMATH_DISPLAY, markdown_.data()}; }
+
+  std::string_view markdown_;
+  std::string out_, inline_, code_;
+  TableCells table_;
+  Math math_;
 };
 
 // "line 3, column 17" of the character `at` points to in `markdown`.
@@ -135,82 +226,6 @@ void parse(std::string_view markdown, Renderer& renderer) {
   if (result != 0) throw Error::failure("the Markdown parser md4c failed (out of memory?)");
 }
 
-// The characters an entity (&amp;, &#233;, &#x3B8;) stands for; the few named ones
-// lessons would write, else the entity as written.
-std::string entity(std::string_view e) {
-  if (e.starts_with("&#")) {
-    const bool hex = e.size() > 2 && (e[2] == 'x' || e[2] == 'X');
-    const std::string digits(e.substr(hex ? 3 : 2, e.size() - (hex ? 4 : 3)));
-    const unsigned long c = std::strtoul(digits.c_str(), nullptr, hex ? 16 : 10);
-    return c == 0 || c > 0x10FFFF || (c >= 0xD800 && c <= 0xDFFF) ? "\uFFFD" : encode_utf8(static_cast<char32_t>(c));
-  }
-  for (const auto& [name, text] : {std::pair<std::string_view, std::string_view>{"&amp;", "&"},
-                                   {"&lt;", "<"},
-                                   {"&gt;", ">"},
-                                   {"&quot;", "\""},
-                                   {"&nbsp;", " "}})
-    if (e == name) return std::string(text);
-  return std::string(e);
-}
-
-std::string trim_spaces(std::string_view s) {
-  const std::size_t start = s.find_first_not_of(" \n");
-  return start == std::string_view::npos ? "" : std::string(s.substr(start, s.find_last_not_of(" \n") - start + 1));
-}
-
-// Math text as LaTeX reads it: md4c's line breaks (its own " ") become new lines in
-// display math, and each piece remembers where it came from for error messages.
-struct Math {
-  std::string text;
-  std::vector<std::pair<std::size_t, const char*>> from;  // (offset in text, source)
-  bool display = false;
-  const char* begin = nullptr;  // the Markdown's start
-
-  void add(std::string_view piece, bool source) {
-    if (source && display && text.ends_with('\n')) {  // md4c drops a line's indentation: keep it
-      const char* indent = piece.data();
-      while (indent > begin && (indent[-1] == ' ' || indent[-1] == '\t')) --indent;
-      piece = std::string_view(indent, static_cast<std::size_t>(piece.data() + piece.size() - indent));
-    }
-    if (source) from.emplace_back(text.size(), piece.data());
-    text += !source && display ? std::string_view("\n") : piece;
-  }
-  [[nodiscard]] std::string trimmed() const { return trim_spaces(text); }
-  // Where the character `at` of `converted` (a copy of trimmed()) came from.
-  [[nodiscard]] const char* source_of(const std::string& converted, const char* at) const {
-    const auto offset = static_cast<std::size_t>(at - converted.data()) + text.find_first_not_of(" \n");
-    const char* source = nullptr;
-    for (const auto& [in_text, in_source] : from)
-      if (in_text <= offset) source = in_source + (offset - in_text);
-    return source;
-  }
-};
-
-// A table column's alignment as LaTeX writes it: l, c or r.
-char alignment(void* td_detail) {
-  const MD_ALIGN a = static_cast<MD_BLOCK_TD_DETAIL*>(td_detail)->align;
-  return a == MD_ALIGN_CENTER ? 'c' : a == MD_ALIGN_RIGHT ? 'r' : 'l';
-}
-
-// A table's cells as both renderers collect them: rows of cells and one alignment
-// letter per column, from the header row.
-struct TableCells {
-  std::vector<std::vector<std::string>> rows;
-  std::string align;
-
-  // Starts a table, a row or a header cell; other blocks are not the table's.
-  void start(MD_BLOCKTYPE type, void* detail) {
-    if (type == MD_BLOCK_TABLE) {
-      rows.clear();
-      align.clear();
-    } else if (type == MD_BLOCK_TR) {
-      rows.emplace_back();
-    } else if (type == MD_BLOCK_TH) {
-      align += alignment(detail);
-    }
-  }
-};
-
 // --- the terminal -----------------------------------------------------------------
 
 // A pipe table with its columns lined up (`align`: 'r' for right) and a rule under
@@ -241,8 +256,7 @@ std::vector<std::string> text_table(const std::vector<std::vector<std::string>>&
 
 class TextRenderer final : public Renderer {
  public:
-  TextRenderer(std::string_view markdown, std::size_t width) : markdown_(markdown), width_(width) {}
-  [[nodiscard]] std::string take() { return std::move(out_); }
+  TextRenderer(std::string_view markdown, std::size_t width) : Renderer(markdown), width_(width) {}
 
   void enter_block(MD_BLOCKTYPE type, void* detail) override {
     if (type != MD_BLOCK_LI && type != MD_BLOCK_DOC) flush_paragraph();  // a tight item's text before its sublist
@@ -332,11 +346,9 @@ class TextRenderer final : public Renderer {
 
   void enter_span(MD_SPANTYPE type, void* detail) override {
     if (type == MD_SPAN_A || type == MD_SPAN_IMG) {
-      const MD_ATTRIBUTE& href = type == MD_SPAN_A ? static_cast<MD_SPAN_A_DETAIL*>(detail)->href
-                                                   : static_cast<MD_SPAN_IMG_DETAIL*>(detail)->src;
-      links_.emplace_back(std::string(href.text, href.size), inline_.size());
+      links_.emplace_back(url(type, detail), inline_.size());
     } else if (type == MD_SPAN_LATEXMATH || type == MD_SPAN_LATEXMATH_DISPLAY) {
-      math_ = Math{"", {}, type == MD_SPAN_LATEXMATH_DISPLAY, markdown_.data()};
+      start_math(type);
       if (math_.display) flush_paragraph();  // display math stands on its own lines
     } else if (type == MD_SPAN_DEL) {
       inline_ += "~~";
@@ -462,17 +474,13 @@ class TextRenderer final : public Renderer {
     last_tight_ = tight;
   }
 
-  std::string_view markdown_;
   std::size_t width_;
-  std::string out_, inline_, code_;
   std::vector<Container> containers_;
   std::string blank_;
   std::size_t last_quotes_ = 0;
   std::vector<int> lists_;                                  // per open list: the next number, or 0 for bullets
   std::vector<char> ordered_;                               // per open numbered list: its delimiter
   std::vector<std::pair<std::string, std::size_t>> links_;  // open links: URL, where the text starts
-  TableCells table_;
-  Math math_;
   int heading_ = 1;
   bool code_block_ = false, paragraph_ = false, last_tight_ = false;
 };
@@ -524,8 +532,7 @@ std::string latex_chars(std::string_view s) {
 
 class LatexRenderer final : public Renderer {
  public:
-  explicit LatexRenderer(std::string_view markdown) : markdown_(markdown) {}
-  [[nodiscard]] std::string take() { return std::move(out_); }
+  using Renderer::Renderer;
 
   void enter_block(MD_BLOCKTYPE type, void* detail) override {
     if (type != MD_BLOCK_LI && type != MD_BLOCK_DOC) flush_item_text();
@@ -616,15 +623,12 @@ class LatexRenderer final : public Renderer {
         inline_ += "\\textbf{";
         break;
       case MD_SPAN_A:
-      case MD_SPAN_IMG: {
-        const MD_ATTRIBUTE& href = type == MD_SPAN_A ? static_cast<MD_SPAN_A_DETAIL*>(detail)->href
-                                                     : static_cast<MD_SPAN_IMG_DETAIL*>(detail)->src;
-        inline_ += concat({"\\href{", std::string_view(href.text, href.size), "}{"});
+      case MD_SPAN_IMG:
+        inline_ += concat({"\\href{", url(type, detail), "}{"});
         break;
-      }
       case MD_SPAN_LATEXMATH:
       case MD_SPAN_LATEXMATH_DISPLAY:
-        math_ = Math{"", {}, type == MD_SPAN_LATEXMATH_DISPLAY, markdown_.data()};
+        start_math(type);
         break;
       default:
         break;
@@ -689,12 +693,9 @@ class LatexRenderer final : public Renderer {
     out_ += take_inline() + "\n";
   }
 
-  std::string_view markdown_;
-  std::string out_, inline_, text_, code_;
+  std::string text_;                // plain text not yet converted by latex_chars
   std::vector<MD_BLOCKTYPE> open_;  // the open lists, quotes and items
   std::vector<int> item_paragraphs_;
-  TableCells table_;
-  Math math_;
 };
 
 // `text` as one paragraph: on one line, and a start that would open a block (a
