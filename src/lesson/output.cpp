@@ -197,9 +197,6 @@ class LatexWriter final : public Writer {
 
 }  // namespace
 
-std::unique_ptr<Writer> make_text_writer(std::size_t width, Style style) {
-  return std::make_unique<TextWriter>(width, style);
-}
 std::unique_ptr<Writer> make_markdown_writer() { return std::make_unique<MarkdownWriter>(); }
 std::unique_ptr<Writer> make_latex_writer(bool relative_files) { return std::make_unique<LatexWriter>(relative_files); }
 
@@ -212,15 +209,9 @@ std::string latex_document(const std::string& body) {
 }
 
 std::unique_ptr<Writer> make_writer(Format format, std::size_t width, Style style) {
-  switch (format) {
-    case Format::text:
-      return make_text_writer(width, style);
-    case Format::markdown:
-      return make_markdown_writer();
-    case Format::latex:
-      return make_latex_writer();
-  }
-  return make_text_writer(width, style);
+  if (format == Format::markdown) return make_markdown_writer();
+  if (format == Format::latex) return make_latex_writer();
+  return std::make_unique<TextWriter>(width, style);
 }
 
 }  // namespace linkage::lesson

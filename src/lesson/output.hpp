@@ -56,8 +56,6 @@ class Writer {
   std::string out_;
 };
 
-/// Aligned text for a terminal `width` columns wide, symbols in `style`.
-[[nodiscard]] std::unique_ptr<Writer> make_text_writer(std::size_t width, Style style);
 /// Markdown: matrices as $$ math, figures as image embeds, clips as <video> with a link,
 /// exercise answers folded in <details>.
 [[nodiscard]] std::unique_ptr<Writer> make_markdown_writer();
@@ -65,6 +63,7 @@ class Writer {
 [[nodiscard]] std::unique_ptr<Writer> make_latex_writer(bool relative_files = false);
 /// A whole LaTeX document around a LaTeX writer's text: the handout lesson.tex.
 [[nodiscard]] std::string latex_document(const std::string& body);
+/// The terminal's writer: for text, aligned for `width` columns with symbols in `style`.
 [[nodiscard]] std::unique_ptr<Writer> make_writer(Format format, std::size_t width, Style style);
 
 }  // namespace linkage::lesson

@@ -40,13 +40,7 @@ TextTemplate TextTemplate::parse(std::string_view text, const std::string& origi
       inside = inside.substr(0, colon);
     }
     part.value.push_back(Expression::parse(inside, origin + ": {{" + excerpt(inside) + "}}", mechanism));
-    part.line =
-        1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(open), '\n'));
-    const std::size_t line_start = text.rfind('\n', open) == std::string_view::npos ? 0 : text.rfind('\n', open) + 1;
-    part.column = 1 + static_cast<std::size_t>(std::count_if(  // characters, not bytes: skip UTF-8 continuations
-                          text.begin() + static_cast<std::ptrdiff_t>(line_start),
-                          text.begin() + static_cast<std::ptrdiff_t>(open),
-                          [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
+    part.where = text_position(text, text.data() + open);
     t.parts_.push_back(std::move(part));
     pos = close + 2;
   }
@@ -65,8 +59,7 @@ void TextTemplate::require_finite(const QuantityValues& values, const std::strin
   for (const Part& part : parts_)
     for (const Expression& e : part.value)
       if (const double value = e.evaluate(values); !std::isfinite(value))
-        throw Error::input(origin + ": line " + std::to_string(part.line) + ", column " + std::to_string(part.column) +
-                           ": {{" + excerpt(e.text()) + "}} is " +
+        throw Error::input(origin + ": " + part.where + ": {{" + excerpt(e.text()) + "}} is " +
                            (std::isnan(value) ? std::string("nan") : format_roundtrip(value)) +
                            " at these inputs; text can show only finite numbers");
 }

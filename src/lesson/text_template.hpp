@@ -31,7 +31,7 @@ class TextTemplate {
     std::string literal;            // text before the placeholder
     std::vector<Expression> value;  // zero or one expression
     int digits = 6;
-    std::size_t line = 0, column = 0;  // of the placeholder's "{{" in the text, from 1
+    std::string where;  // "line 2, column 5" of the placeholder's "{{" in the text
   };
   std::vector<Part> parts_;
 };

@@ -128,8 +128,9 @@ class Renderer {
   Math math_;
 };
 
-// "line 3, column 17" of the character `at` points to in `markdown`.
-std::string source_position(std::string_view markdown, const char* at) {
+}  // namespace
+
+std::string text_position(std::string_view markdown, const char* at) {
   const auto end =
       static_cast<std::size_t>(std::clamp(at, markdown.data(), markdown.data() + markdown.size()) - markdown.data());
   std::size_t line = 1, column = 1;
@@ -143,6 +144,8 @@ std::string source_position(std::string_view markdown, const char* at) {
   }
   return "line " + std::to_string(line) + ", column " + std::to_string(column);
 }
+
+namespace {
 
 bool in_source(std::string_view markdown, const char* at) {
   return !std::less<const char*>()(at, markdown.data()) &&
@@ -181,7 +184,7 @@ void count(Parse& p, int& level, int delta, const char* what) {
 
 Error too_deep(std::string_view markdown, const char* at, const std::string& what) {
   return Error::input(concat(
-      {source_position(markdown, at), ": ", what, " nested more than ", std::to_string(kMaxNesting), " levels deep"}));
+      {text_position(markdown, at), ": ", what, " nested more than ", std::to_string(kMaxNesting), " levels deep"}));
 }
 
 void parse(std::string_view markdown, Renderer& renderer) {
@@ -399,7 +402,7 @@ class TextRenderer final : public Renderer {
       return latex_to_unicode(latex);
     } catch (const LatexNestingError& e) {
       const char* at = math.source_of(latex, e.at());
-      throw Error::input((at != nullptr ? source_position(markdown_, at) : "line 1, column 1") + ": " + e.what());
+      throw Error::input((at != nullptr ? text_position(markdown_, at) : "line 1, column 1") + ": " + e.what());
     }
   }
 

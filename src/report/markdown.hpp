@@ -24,6 +24,10 @@ namespace linkage {
 /// start that would open a block ("1. ", "# ") is kept as text.
 [[nodiscard]] std::string inline_latex(std::string_view text);
 
+/// "line 3, column 17" of the character `at` points to in `markdown` (columns count
+/// characters, not bytes).
+[[nodiscard]] std::string text_position(std::string_view markdown, const char* at);
+
 /// Throws Error::input, starting with `origin` (e.g. "file:3:8: step 1 (say): text"),
 /// for Markdown these functions refuse: math, lists and quotes, or emphasis and links
 /// nested more than kMaxNesting levels deep. So a lesson fails when it is read, not
