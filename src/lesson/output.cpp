@@ -12,6 +12,22 @@
 namespace linkage::lesson {
 namespace {
 
+// The table as a Markdown pipe table: the first column left, the others right.
+std::string pipe_table(const ResultTable& table) {
+  std::string out;
+  auto row = [&](const std::vector<std::string>& cells) {
+    out += "|";
+    for (const std::string& c : cells) out += concat({" ", c, " |"});
+    out += "\n";
+  };
+  row(table.headers);
+  out += "|";
+  for (std::size_t i = 0; i < table.headers.size(); ++i) out += i == 0 ? " --- |" : " ---: |";
+  out += "\n";
+  for (const auto& r : table.rows) row(r);
+  return out;
+}
+
 bool file_exists(const std::filesystem::path& p) {
   std::error_code ec;
   return std::filesystem::is_regular_file(p, ec);
@@ -99,16 +115,7 @@ class MarkdownWriter final : public Writer {
   void table(const ResultTable& table, const std::string& caption) override {
     out_ += "\n";
     if (!caption.empty()) out_ += caption + "\n\n";
-    auto row = [&](const std::vector<std::string>& cells) {
-      out_ += "|";
-      for (const std::string& c : cells) out_ += " " + c + " |";
-      out_ += "\n";
-    };
-    row(table.headers);
-    out_ += "|";
-    for (std::size_t i = 0; i < table.headers.size(); ++i) out_ += i == 0 ? " --- |" : " ---: |";
-    out_ += "\n";
-    for (const auto& r : table.rows) row(r);
+    out_ += pipe_table(table);
   }
   void figure(const FigureRef& f) override {
     if (!file_exists(f.path)) return;
@@ -157,16 +164,9 @@ class LatexWriter final : public Writer {
     out_ += mechanism_latex(worked, options) + "\n";
   }
   void table(const ResultTable& table, const std::string& caption) override {
-    out_ += "\\begin{center}\n\\begin{tabular}{l" + std::string(table.headers.size() - 1, 'r') + "}\n  ";
-    for (std::size_t i = 0; i < table.headers.size(); ++i)
-      out_ += (i > 0 ? " & " : "") + inline_latex(table.headers[i]);
-    out_ += " \\\\\n  \\hline\n";
-    for (const auto& row : table.rows) {
-      out_ += "  ";
-      for (std::size_t i = 0; i < row.size(); ++i) out_ += (i > 0 ? " & " : "") + inline_latex(row[i]);
-      out_ += " \\\\\n";
-    }
-    out_ += "\\end{tabular}\n\\end{center}\n";
+    std::string tabular = markdown_to_latex(pipe_table(table));
+    tabular.pop_back();  // the blank line after it
+    out_ += concat({"\\begin{center}\n", tabular, "\\end{center}\n"});
     if (!caption.empty()) out_ += markdown_to_latex(caption);
     out_ += "\n";
   }
