@@ -18,6 +18,22 @@
 #include "report/unicode_tex.hpp"
 
 namespace linkage {
+
+std::string text_position(std::string_view markdown, const char* at) {
+  const auto end =
+      static_cast<std::size_t>(std::clamp(at, markdown.data(), markdown.data() + markdown.size()) - markdown.data());
+  std::size_t line = 1, column = 1;
+  for (std::size_t i = 0; i < end; ++i) {
+    if (markdown[i] == '\n') {
+      ++line;
+      column = 1;
+    } else if ((static_cast<unsigned char>(markdown[i]) & 0xC0) != 0x80) {  // not a UTF-8 continuation byte
+      ++column;
+    }
+  }
+  return "line " + std::to_string(line) + ", column " + std::to_string(column);
+}
+
 namespace {
 
 // The characters an entity (&amp;, &#233;, &#x3B8;) stands for; the few named ones
@@ -127,25 +143,6 @@ class Renderer {
   TableCells table_;
   Math math_;
 };
-
-}  // namespace
-
-std::string text_position(std::string_view markdown, const char* at) {
-  const auto end =
-      static_cast<std::size_t>(std::clamp(at, markdown.data(), markdown.data() + markdown.size()) - markdown.data());
-  std::size_t line = 1, column = 1;
-  for (std::size_t i = 0; i < end; ++i) {
-    if (markdown[i] == '\n') {
-      ++line;
-      column = 1;
-    } else if ((static_cast<unsigned char>(markdown[i]) & 0xC0) != 0x80) {  // not a UTF-8 continuation byte
-      ++column;
-    }
-  }
-  return "line " + std::to_string(line) + ", column " + std::to_string(column);
-}
-
-namespace {
 
 bool in_source(std::string_view markdown, const char* at) {
   return !std::less<const char*>()(at, markdown.data()) &&
