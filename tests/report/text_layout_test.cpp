@@ -7,6 +7,22 @@
 namespace linkage {
 namespace {
 
+TEST(TextLayout, Utf8DecodesAndEncodesEachLength) {
+  for (const char32_t cp : {U'A', U'θ', U'€', U'𝜃'}) {
+    const std::string bytes = encode_utf8(cp);
+    const Utf8Char c = decode_utf8(bytes, 0);
+    EXPECT_EQ(c.cp, cp);
+    EXPECT_EQ(c.size, bytes.size());
+  }
+  EXPECT_EQ(encode_utf8(U'€'), "\xE2\x82\xAC");
+  // A byte that starts no whole sequence reads as itself, one byte long.
+  for (const std::string bad : {"\x80", "\xE2\x82", "\xE2(x"}) {
+    const Utf8Char c = decode_utf8(bad, 0);
+    EXPECT_EQ(c.cp, static_cast<unsigned char>(bad[0]));
+    EXPECT_EQ(c.size, 1u);
+  }
+}
+
 TEST(TextLayout, DisplayWidthCountsCombiningMarksAsZero) {
   EXPECT_EQ(display_width("abc"), 3u);
   EXPECT_EQ(display_width("θ₁"), 2u);

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "report/text_layout.hpp"
+
 namespace linkage {
 namespace {
 
@@ -29,6 +31,17 @@ TEST(UnicodeTex, MathCodeAndTypographyStay) {
             "```\nθ₂ in a fence\n```\nafter $\\theta$");
   EXPECT_EQ(tex_math_in_prose(""), "");
   EXPECT_EQ(tex_math_in_prose("a $ lone dollar θ"), "a $ lone dollar $\\theta$");
+}
+
+// One table serves both ways: a symbol's TeX reads back as the symbol.
+TEST(UnicodeTex, SymbolsReadBackFromTheirTex) {
+  for (const char* symbol : {"α", "θ", "φ", "Ω", "∂", "×", "±", "≤", "≠", "→", "⇒", "∞", "∑", "∫", "∈", "∼"}) {
+    const std::string_view tex = tex_symbol(decode_utf8(symbol, 0).cp);
+    ASSERT_FALSE(tex.empty()) << symbol;
+    EXPECT_EQ(latex_to_unicode(tex), symbol) << tex;
+  }
+  EXPECT_EQ(tex_symbol(U'·'), "");  // Latin-1: pdflatex prints it as it is
+  EXPECT_EQ(latex_to_unicode("\\cdot \\varepsilon \\epsilon \\phi \\ldots"), "· ε ε φ …");
 }
 
 TEST(LatexToUnicode, FormulasReadInATerminal) {
