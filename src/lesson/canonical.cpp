@@ -4,24 +4,15 @@
 #include <array>
 #include <cstdint>
 #include <cstdio>
+#include <nlohmann/json.hpp>
 
 #include "core/number_format.hpp"
 
 namespace linkage::lesson {
 namespace {
 
-void quote(std::string& out, std::string_view s) {
-  out += '"';
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    if (c == '\n') {
-      out += "\\n";
-      continue;
-    }
-    out += c;
-  }
-  out += '"';
-}
+// A string in double quotes with JSON's escapes.
+void quote(std::string& out, std::string_view s) { out += nlohmann::json(s).dump(); }
 
 void write(std::string& out, const toml::node& node, const std::vector<std::string_view>& skip) {
   if (const auto* t = node.as_table()) {
