@@ -42,10 +42,11 @@ FrameBands frame_bands(const RenderSettings& settings) {
   bands.equations = fit_equations(cr.get(), style, settings.equations, settings.width,
                                   kEquationShare * (settings.height - bands.caption));
   if (bands.equations.fits()) return bands;
-  std::string detail = "the equations (" + std::to_string(settings.equations.lines.size()) + " lines) do not fit a " +
-                       std::to_string(settings.width) + "x" + std::to_string(settings.height) +
-                       " frame at a legible size (" + std::to_string(static_cast<int>(kMinEquationFont)) +
-                       " px or more); ";
+  const std::string& heading = settings.equations.heading;
+  std::string detail = heading.substr(0, heading.find(':'));
+  detail += (detail.empty() ? "the equations (" : "'s equations (") + std::to_string(settings.equations.lines.size()) +
+            " lines) do not fit a " + std::to_string(settings.width) + "x" + std::to_string(settings.height) +
+            " frame at a legible size (" + std::to_string(static_cast<int>(kMinEquationFont)) + " px or more); ";
   for (const Quality& q : kQualities) {
     RenderSettings larger = settings;
     larger.width = q.width;

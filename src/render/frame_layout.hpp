@@ -42,6 +42,8 @@ class FrameLayout {
   [[nodiscard]] const Rect& panel_rect() const { return layout_.panel; }
   [[nodiscard]] const Rect& caption_rect() const { return caption_; }
   [[nodiscard]] const Rect& equations_rect() const { return equations_; }
+  /// The panel's data as plotted (angles in the settings' unit).
+  [[nodiscard]] const PanelData& panel() const { return panel_; }
   [[nodiscard]] const EquationsFit& equations_fit() const { return bands_.equations; }
   /// The equation lines drawn (the report's, their shared indentation removed).
   [[nodiscard]] std::vector<std::string> equation_lines() const;
