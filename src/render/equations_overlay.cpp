@@ -11,6 +11,7 @@ namespace {
 
 constexpr double kMeasure = 100;      // font size the widths are measured at, then scaled
 constexpr double kHeadingGap = 0.35;  // lines between the heading and the equations
+constexpr double kLeading = 1.15;     // line height over the font's ascent + descent: room for raised dots
 
 // Combining marks (the dots of θ̇, θ̈) take no column: they sit on the character before.
 bool combining(char32_t c) {
@@ -60,7 +61,7 @@ Measures measure(cairo_t* cr, const DrawStyle& style, const EquationsText& text,
   const text::Font mono{kMeasure, false, true};
   m.column = text::width(cr, mono, "0") / kMeasure;
   const text::Metrics metrics = text::metrics(cr, mono);
-  m.line = (metrics.ascent + metrics.descent) / kMeasure;
+  m.line = kLeading * (metrics.ascent + metrics.descent) / kMeasure;
   m.ascent = metrics.ascent / kMeasure;
   m.heading = text::width(cr, {kMeasure, true, false}, text.heading.c_str()) / kMeasure;
   m.pad = 0.6 * style.padding();
@@ -73,12 +74,15 @@ double rows(const std::vector<std::string>& lines, const EquationsText& text) {
   return static_cast<double>(lines.size()) + (text.heading.empty() ? 0.0 : 1 + kHeadingGap);
 }
 
-// How far a mark placed for a lowercase letter must rise to clear `base` (θ is taller).
-double mark_raise(cairo_t* cr, const std::string& base) {
-  cairo_text_extents_t x, b;
+// How far `mark`, placed by the font over a lowercase letter, must rise to sit as
+// closely over `base` (θ is taller than x): zero over a short base.
+double mark_raise(cairo_t* cr, const std::string& base, const std::string& mark) {
+  cairo_text_extents_t x, b, m;
   cairo_text_extents(cr, "x", &x);
   cairo_text_extents(cr, base.c_str(), &b);
-  return std::max(0.0, x.y_bearing - b.y_bearing) + (b.y_bearing < x.y_bearing ? 0.1 * x.height : 0.0);
+  cairo_text_extents(cr, mark.c_str(), &m);
+  const double mark_bottom = -(m.y_bearing + m.height), gap = mark_bottom + x.y_bearing;  // above the x-height
+  return std::max(0.0, -b.y_bearing + 0.3 * gap - mark_bottom);
 }
 
 // Draws one line in the mono font from x: each character in its column, a combining
@@ -102,7 +106,7 @@ void draw_line(cairo_t* cr, const text::Font& font, double x, double baseline, d
       flush(i);
       const std::string mark = line.substr(i, p.length);
       cairo_move_to(cr, x + static_cast<double>(col - 1) * column,
-                    baseline - mark_raise(cr, line.substr(base_start, base_length)));
+                    baseline - mark_raise(cr, line.substr(base_start, base_length), mark));
       cairo_show_text(cr, mark.c_str());
       run_start = i + p.length;
       run_col = col;
