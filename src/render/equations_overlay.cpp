@@ -143,7 +143,9 @@ EquationsFit fit_equations(cairo_t* cr, const DrawStyle& style, const EquationsT
   const double content = std::max(m.column * static_cast<double>(m.widest), m.heading);
   const double per_font = m.line * rows(lines, text);
   EquationsFit fit;
-  fit.font_size = std::min({style.text_size(), (width - inset) / content, (max_height - inset) / per_font});
+  // The frame's text size, but never below the legible minimum where there is room for it.
+  fit.font_size = std::min(
+      {std::max(style.text_size(), kMinEquationFont), (width - inset) / content, (max_height - inset) / per_font});
   fit.height = fit.fits() ? std::ceil(fit.font_size * per_font + inset) : 0.0;
   return fit;
 }

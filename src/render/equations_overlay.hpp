@@ -2,9 +2,9 @@
 // The selected case's equations drawn in a band under the motion (--show equations),
 // line for line as `linkage solve` prints them: the report's lines in DejaVu Sans Mono,
 // one column per code point, so wrapped rows stay aligned as on a terminal. The font
-// is the frame's text size, shrunk to fit the width and a share of the height, and
-// never below a legible minimum: a frame too small for that is an error naming a size
-// that fits.
+// is the frame's text size (at least a legible minimum), shrunk to fit the width and a
+// share of the height but never below that minimum: a frame too small for that is an
+// error naming a size that fits.
 #include <cairo.h>
 
 #include <string>

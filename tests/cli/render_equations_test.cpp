@@ -81,8 +81,8 @@ TEST(RenderEquations, BadUseIsOneLineAndNoFile) {
     std::string message;
   };
   const std::vector<Bad> cases{
-      {{"render", "--show", "equations", "--case", "1", "--size", "640x360", "--out", out},
-       "linkage: error: --show: Case 1's equations (8 lines) do not fit a 640x360 frame at a legible size (9 px or "
+      {{"render", "--show", "equations", "--case", "1", "--size", "480x270", "--out", out},
+       "linkage: error: --show: Case 1's equations (8 lines) do not fit a 480x270 frame at a legible size (9 px or "
        "more); use quality low (854x480) or a larger size\n"},
       {{"render", "--mechanism", "slider-crank", "--show", "equations,trail", "--out", out},
        "linkage: error: --show: 'trail' applies to the homework only; with --mechanism --show takes only equations"},

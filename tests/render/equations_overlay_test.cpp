@@ -35,6 +35,16 @@ EquationsText case1() {
           }};
 }
 
+EquationsText case3() {
+  return {"Case 3: four equations in generalized coordinates, no pin force",
+          {
+              "    (1.3)  m D sin θ₁ ẍ₁ - m D cos θ₁ ÿ₁ + I θ̈₁ = m g D cos θ₁",
+              "    (2.3)  m D sin θ₂ ẍ₁ - m D cos θ₂ ÿ₁ + I θ̈₂ = m g D cos θ₂",
+              "    (3.3)  2 ẍ₁ - D sin θ₁ θ̈₁ - D sin θ₂ θ̈₂ = D (θ̇₁² cos θ₁ + θ̇₂² cos θ₂)",
+              "    (4.3)  2 ÿ₁ + D cos θ₁ θ̈₁ + D cos θ₂ θ̈₂ = D (θ̇₁² sin θ₁ + θ̇₂² sin θ₂) - 2 g",
+          }};
+}
+
 PanelData theta_panel(std::size_t n) {
   PanelData data;
   data.t_end = 10;
@@ -116,17 +126,23 @@ TEST(EquationsOverlay, ShrinksToFitThenRefusesNamingASizeThatFits) {
   EXPECT_LE(narrow.height, 300);
   EXPECT_FALSE(fit_equations(cr.get(), style, case1(), 400, 300).fits());
 
-  RenderSettings small = with_equations(640, 360);
+  RenderSettings small = with_equations(480, 270);
   try {
     small.validate();
-    ADD_FAILURE() << "640x360 is too small for Case 1's eight rows";
+    ADD_FAILURE() << "480x270 is too small for Case 1's eight rows";
   } catch (const Error& e) {
     EXPECT_EQ(e.setting(), "show");
     EXPECT_NE(e.detail().find("Case 1's equations (8 lines)"), std::string::npos) << e.detail();
-    EXPECT_NE(e.detail().find("640x360"), std::string::npos) << e.detail();
+    EXPECT_NE(e.detail().find("480x270"), std::string::npos) << e.detail();
     EXPECT_NE(e.detail().find("quality low (854x480)"), std::string::npos) << e.detail();
   }
   EXPECT_NO_THROW(with_equations(854, 480).validate());
+  // Where the frame's text is smaller than legible (480x270: 6.75 px) the band takes the
+  // legible size if it fits: Case 3's four rows do.
+  RenderSettings draft = with_equations(480, 270);
+  draft.equations = case3();
+  EXPECT_NO_THROW(draft.validate());
+  EXPECT_DOUBLE_EQ(frame_bands(draft).equations.font_size, kMinEquationFont);
   small.elements.hide(Element::equations);  // not shown: not checked
   EXPECT_NO_THROW(small.validate());
 }
