@@ -326,6 +326,7 @@ void register_render(CLI::App& app) {
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
       ->group(look);
   add_angle_option(sub, f->angles, "the --panel's angles and angular rates (axis in deg, deg/s)");
+  sub->get_option("--angles")->group(look);
   add_overlay_options(sub, f->overlays, look);
   add_simulation_flags(sub, f->simulation);
   add_input_options(sub, f->inputs);
