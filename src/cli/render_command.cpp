@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/angle_option.hpp"
 #include "cli/commands.hpp"
 #include "cli/input_options.hpp"
 #include "cli/mechanism_options.hpp"
@@ -24,6 +25,7 @@
 #include "pipeline/mechanism_clip.hpp"
 #include "render/settings.hpp"
 #include "render/theme.hpp"
+#include "report/mechanism_text.hpp"
 #include "scene/scene_builder.hpp"
 #include "symbolic/loop_closure.hpp"
 
@@ -37,6 +39,7 @@ struct RenderFlags {
   std::string out = "linkage.mp4", frames, quality = "medium", size, fps, duration, speed, at;
   std::string camera = "follow", view, theme = "light", title, panel, caption, arrow_scale;
   std::vector<std::string> show, hide;
+  std::string angles = "rad";
   bool quiet = false, stats = false;
   CLI::Option* out_option = nullptr;
   CLI::Option* title_option = nullptr;
@@ -93,6 +96,7 @@ RenderSettings resolve_settings(const RenderFlags& f) {
                                   f.mechanism.chosen() ? std::span<const std::string_view>(kMechanismKinds)
                                                        : std::span<const std::string_view>(kArrowKindNames));
   s.panel = split_commas(f.panel);
+  s.angles = parse_angle_unit(f.angles, "--angles");
   if (!f.caption.empty()) s.captions = {{0.0, f.caption}};
   try {
     s.validate();
@@ -101,6 +105,12 @@ RenderSettings resolve_settings(const RenderFlags& f) {
     throw;
   }
   return s;
+}
+
+/// The case's equations as `linkage solve --case N` prints them, for --show equations.
+EquationsText shown_equations(const sym::System& system, int case_id) {
+  CaseEquations e = case_equations(system, static_cast<CaseId>(case_id));
+  return {std::move(e.heading), std::move(e.lines)};
 }
 
 /// The clip the flags describe, checked before any work.
@@ -113,6 +123,9 @@ Clip resolve_clip(const RenderFlags& f) {
   clip.theme = load_theme(clip.settings.theme, assets_dir(LINKAGE_ASSETS_DIR), "theme");
   clip.simulation = resolve_simulation_flags(f.simulation, clip.settings.duration);
   clip.inputs = resolve_inputs(f.inputs);
+  if (clip.settings.elements.has(Element::equations))
+    clip.settings.equations =
+        shown_equations(sym::System(chosen_mechanism(f.mechanism, f.inputs)), clip.simulation.case_id);
   clip.validate();  // the output's checks first, then what only the flags can say
   const bool still = clip.is_still();
   if (f.at_option->count() > 0 && !still)
@@ -143,9 +156,16 @@ void print_stats(const RenderStats& s) {
 }
 
 /// The homework's picture flags have no meaning for a mechanism: an error, not ignored.
+/// Only --show equations applies to both.
 void reject_homework_flags(const RenderFlags& f) {
+  for (const std::string& list : f.show)
+    for (const std::string& item : split_commas(list))
+      if (item != "equations")
+        throw Error::input("--show: '" + item +
+                           "' applies to the homework only; with --mechanism --show takes only equations (the picture "
+                           "is fixed and the camera fits the whole motion, or follows a floating mechanism)");
   const std::pair<CLI::Option*, const char*> flags[] = {
-      {f.show_option, "--show"}, {f.hide_option, "--hide"}, {f.camera_option, "--camera"}, {f.view_option, "--view"}};
+      {f.hide_option, "--hide"}, {f.camera_option, "--camera"}, {f.view_option, "--view"}};
   for (const auto& [option, flag] : flags)
     if (option->count() > 0)
       throw Error::input(std::string(flag) +
@@ -167,6 +187,8 @@ ClipResult render_mechanism(const RenderFlags& f, const ClipProgress& progress) 
   clip.trails = f.trails;
   std::unique_ptr<sym::System> compared;  // the compared run's own, when --compare sets a value
   resolve_overlay_flags(f.overlays, f.mechanism, f.inputs, f.simulation, clip, compared);
+  if (clip.settings.elements.has(Element::equations))
+    clip.settings.equations = shown_equations(system, clip.simulation.case_id);
   clip.validate(system);
   const bool still = clip.is_still();
   if (f.at_option->count() > 0 && !still)
@@ -255,7 +277,10 @@ void register_render(CLI::App& app) {
   sub->add_flag("--stats", f->stats, "Print counters and per-stage times as JSON on stdout")->group(output);
 
   const std::string look = "Picture";
-  f->show_option = sub->add_option("--show", f->show, "Elements to show (comma-separated): " + element_name_list())
+  f->show_option = sub->add_option("--show", f->show,
+                                   "Elements to show (comma-separated): " + element_name_list() +
+                                       "; equations draws the --case's equations under the motion as `linkage "
+                                       "solve` prints them (the only element --mechanism takes)")
                        ->type_name("LIST")
                        ->group(look);
   f->hide_option = sub->add_option("--hide", f->hide, "Elements to hide; default shows all but velocity and axes")
@@ -300,6 +325,8 @@ void register_render(CLI::App& app) {
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
       ->group(look);
+  add_angle_option(sub, f->angles, "the --panel's angles and angular rates (axis in deg, deg/s)");
+  sub->get_option("--angles")->group(look);
   add_overlay_options(sub, f->overlays, look);
   add_simulation_flags(sub, f->simulation);
   add_input_options(sub, f->inputs);

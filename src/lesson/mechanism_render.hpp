@@ -1,8 +1,9 @@
 #pragma once
 // A render step's mechanism (mechanism = "NAME|FILE", set, trail, ensemble, compare), checked when the
-// lesson is read and built again when the step runs.
+// lesson is read and built again when the step runs; the equations a step shows.
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "lesson/lesson.hpp"
 #include "pipeline/mechanism_clip.hpp"
@@ -18,5 +19,10 @@ struct MechanismRender {
   MechanismClip clip;
 };
 [[nodiscard]] MechanismRender mechanism_render(const RenderStep& render, const std::string& origin);
+
+/// Case `case_id`'s equations as `linkage solve` prints them, for a step that shows them.
+[[nodiscard]] EquationsText render_equations(const sym::System& system, int case_id);
+/// Whether a step's show list names only equations (all a mechanism's step may show).
+[[nodiscard]] bool only_equations(const std::vector<std::string>& show);
 
 }  // namespace linkage::lesson

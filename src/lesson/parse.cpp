@@ -573,8 +573,9 @@ class Parser {
         r.fail(key, "'" + std::string(key) + "' applies to a mechanism: give mechanism = \"NAME\" here or at the top");
     if (!s.mechanism.empty())
       for (const std::string_view key : {"show", "hide", "camera", "view"})
-        if (r.has(key))
-          r.fail(key, "'" + std::string(key) + "' is the homework's; a mechanism's clip fits its whole motion");
+        if (r.has(key) && !(key == "show" && only_equations(r.strings("show").value_or(std::vector<std::string>{}))))
+          r.fail(key, "'" + std::string(key) + "' is the homework's (a mechanism's clip fits its whole motion)" +
+                          (key == "show" ? "; a mechanism's show takes only \"equations\"" : ""));
     try {
       s.kind = output_kind(s.out, r.where("out") + ": " + r.context() + ": out");
       g.duration = s.run.options.duration;
@@ -614,6 +615,9 @@ class Parser {
       std::vector<std::string> show = r.strings("show").value_or(std::vector<std::string>{});
       std::vector<std::string> hide = r.strings("hide").value_or(std::vector<std::string>{});
       apply_show_hide(g.elements, show, hide);
+      if (auto a = r.choice("angles", {"rad", "deg"})) g.angles = parse_angle_unit(*a, r.where("angles"));
+      if (s.mechanism.empty() && g.elements.has(Element::equations))
+        g.equations = render_equations(sym::System(homework_mechanism(s.run.inputs)), s.run.options.case_id);
       g.panel = r.strings("panel").value_or(std::vector<std::string>{});
       if (r.has("panel") && g.panel.empty()) r.fail("panel", "'panel' is empty; give at least one quantity");
       g.captions = captions(r, s.kind, g.duration);

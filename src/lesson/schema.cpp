@@ -83,7 +83,7 @@ constexpr std::array<KeySpec, 3> kSimulateKeys{{
      "energy, momentum_x, ..., constraint_velocity_error)."},
 }};
 
-constexpr std::array<KeySpec, 22> kRenderKeys{{
+constexpr std::array<KeySpec, 23> kRenderKeys{{
     {"out", "string", "(required)", "The file in the output folder: .mp4 (a clip), .png, .svg or .pdf (a still)."},
     {"caption", "string", "none", "Text under the clip or still in the lesson document."},
     {"fps", "integer", "30", "Frames per second (as the render command's fps); draft quality lowers it to 15."},
@@ -93,7 +93,8 @@ constexpr std::array<KeySpec, 22> kRenderKeys{{
     {"speed", "number", "1", "Simulated seconds per video second (below 1 is slow motion)."},
     {"show", "list of strings", "none",
      "Elements to show besides the defaults: blocks, pin, pin-force, gravity, "
-     "velocity, trail, com, grid, axes, hud, legend, labels, title."},
+     "velocity, trail, com, grid, axes, hud, legend, labels, title, equations (the case's equations under the "
+     "motion, as the solve step prints them; the only one a mechanism's step takes)."},
     {"hide", "list of strings", "none", "Elements to hide."},
     {"camera", "string", "\"follow\" (\"fixed\" with a view)",
      "follow (keeps the falling centre of mass in frame), fixed (shows view) or fit (the whole motion)."},
@@ -104,8 +105,8 @@ constexpr std::array<KeySpec, 22> kRenderKeys{{
      "Arrow scales as the render command's --arrow-scale: common, common=N_PER_CM or KIND=N_PER_CM,... (pin, gravity, "
      "velocity; with a mechanism joint, applied)."},
     {"mechanism", "string", "the lesson's",
-     "Draw this mechanism (a shipped name or a file relative to the lesson) instead of the homework; show, hide, "
-     "camera and view are the homework's."},
+     "Draw this mechanism (a shipped name or a file relative to the lesson) instead of the homework; hide, "
+     "camera, view and show (but for equations) are the homework's."},
     {"set", "list of strings", "none", "NAME=VALUE settings of the mechanism's parameters or initial coordinates."},
     {"trail", "list of strings", "none", "BODY.POINT paths drawn over the last 2 s (with a mechanism)."},
     {"ensemble", "integer", "none",
@@ -118,6 +119,7 @@ constexpr std::array<KeySpec, 22> kRenderKeys{{
     {"panel", "list of strings", "none",
      "Quantities plotted beside the motion with a cursor at the frame's time, as --panel (plot step names; a "
      "mechanism's columns)."},
+    {"angles", "string", "\"rad\"", "Unit of the panel's angles and angular rates: rad or deg, as render --angles."},
     {"captions", "array of tables", "none",
      "Timed words under the picture: [{at = 2.0, text = \"...\"}, ...], each shown from `at` s until the next."},
 }};

@@ -7,9 +7,25 @@
 #include "lesson/mechanism_render.hpp"
 #include "lesson/runner_context.hpp"
 #include "model/mechanism_toml.hpp"
+#include "render/frame_layout.hpp"
+#include "report/mechanism_text.hpp"
 #include "symbolic/loop_closure.hpp"
 
 namespace linkage::lesson {
+
+namespace {
+
+// A draft previews the motion: equations that need a larger frame to be legible are left out.
+void draft_equations(RenderSettings& settings, Quality quality) {
+  if (quality != Quality::draft || !settings.elements.has(Element::equations)) return;
+  try {
+    (void)frame_bands(settings);
+  } catch (const Error&) {
+    settings.elements.hide(Element::equations);
+  }
+}
+
+}  // namespace
 
 Clip render_clip(const RenderStep& render, Quality quality, const std::filesystem::path& out_dir,
                  const std::filesystem::path& assets) {
@@ -22,9 +38,28 @@ Clip render_clip(const RenderStep& render, Quality quality, const std::filesyste
     clip.settings.height = kDraftHeight;
     clip.settings.fps = std::min(render.settings.fps, kDraftFps);
   }
+  draft_equations(clip.settings, quality);
   clip.theme = load_theme(clip.settings.theme, assets, "theme");
   clip.out = out_dir / render.out;
   return clip;
+}
+
+EquationsText render_equations(const sym::System& system, int case_id) {
+  CaseEquations e = case_equations(system, static_cast<CaseId>(case_id));
+  return {std::move(e.heading), std::move(e.lines)};
+}
+
+bool only_equations(const std::vector<std::string>& show) {
+  return std::all_of(show.begin(), show.end(), [](const std::string& list) {
+    std::size_t start = 0;
+    while (true) {
+      const std::size_t comma = list.find(',', start);
+      if (list.substr(start, comma == std::string::npos ? std::string::npos : comma - start) != "equations")
+        return false;
+      if (comma == std::string::npos) return true;
+      start = comma + 1;
+    }
+  });
 }
 
 namespace {
@@ -82,6 +117,8 @@ MechanismRender mechanism_render(const RenderStep& render, const std::string& or
     out.clip.compare = compared_run(render, mechanism, origin, out.compared);
     if (!out.compared) out.clip.compare->initial = out.state;
   }
+  if (out.clip.settings.elements.has(Element::equations))
+    out.clip.settings.equations = render_equations(*out.system, out.clip.simulation.case_id);
   out.clip.out = render.out;  // checked by its name here; the step puts it in the output folder
   out.clip.validate(*out.system);
   return out;
@@ -101,7 +138,10 @@ void run_render(RunContext& c, const Step& step, const RenderStep& s) {
       made = produce_clip(clip, report);
     } else {
       MechanismRender m = mechanism_render(s, step.where);
+      EquationsText equations = std::move(m.clip.settings.equations);
       m.clip.settings = clip.settings;  // the quality's size and frame rate
+      if (m.clip.settings.elements.has(Element::equations)) m.clip.settings.equations = std::move(equations);
+      draft_equations(m.clip.settings, c.options.quality);
       m.clip.theme = clip.theme;
       m.clip.out = clip.out;
       made = produce_mechanism_clip(*m.system, m.state, m.clip, report);

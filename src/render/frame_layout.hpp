@@ -1,20 +1,33 @@
 #pragma once
-// The frame around the motion: the live plot beside or below it (--panel) and a caption
-// band under both (--caption, a lesson's timed captions). The motion is drawn by its
-// own renderer into the scene's part of the frame, so the homework's clips and any
-// mechanism's are framed alike; with neither, the motion has the whole frame.
+// The frame around the motion: the live plot beside or below it (--panel), the case's
+// equations in a band under both (--show equations) and a caption band at the bottom
+// (--caption, a lesson's timed captions). The motion is drawn by its own renderer into
+// the scene's part of the frame, so the homework's clips and any mechanism's are framed
+// alike; with none of them, the motion has the whole frame.
 #include <cairo.h>
 
 #include <cstddef>
 #include <functional>
+#include <string>
+#include <vector>
 
 #include "core/frame.hpp"
+#include "render/equations_overlay.hpp"
 #include "render/panel.hpp"
 #include "render/settings.hpp"
 #include "render/style.hpp"
 #include "render/theme.hpp"
 
 namespace linkage {
+
+/// The bands across the bottom of a frame: the caption's height and the equations' fit
+/// (zero when not shown). Error::invalid("show", ...) when the equations shown cannot be
+/// drawn at a legible size, naming the smallest --quality preset where they can.
+struct FrameBands {
+  double caption = 0;
+  EquationsFit equations;
+};
+[[nodiscard]] FrameBands frame_bands(const RenderSettings& settings);
 
 class FrameLayout {
  public:
@@ -28,8 +41,14 @@ class FrameLayout {
   [[nodiscard]] const Rect& scene_rect() const { return scene_; }
   [[nodiscard]] const Rect& panel_rect() const { return layout_.panel; }
   [[nodiscard]] const Rect& caption_rect() const { return caption_; }
+  [[nodiscard]] const Rect& equations_rect() const { return equations_; }
+  /// The panel's data as plotted (angles in the settings' unit).
+  [[nodiscard]] const PanelData& panel() const { return panel_; }
+  [[nodiscard]] const EquationsFit& equations_fit() const { return bands_.equations; }
+  /// The equation lines drawn (the report's, their shared indentation removed).
+  [[nodiscard]] std::vector<std::string> equation_lines() const;
   /// Nothing around the motion: draw straight into the frame.
-  [[nodiscard]] bool plain() const { return layout_.panel.empty() && caption_.empty(); }
+  [[nodiscard]] bool plain() const { return layout_.panel.empty() && caption_.empty() && equations_.empty(); }
 
   /// Frame `index` of the motion at time t: `scene` draws the motion into a buffer of
   /// scene_settings()' size, which is copied into `frame`; then the panel and caption.
@@ -45,7 +64,8 @@ class FrameLayout {
   DrawStyle style_;
   PanelData panel_;
   PanelLayout layout_;
-  Rect scene_, caption_;
+  FrameBands bands_;
+  Rect scene_, caption_, equations_;
   Frame scene_frame_;
 };
 

@@ -155,6 +155,15 @@ const std::string& caption_at(const std::vector<Caption>& captions, double t) {
   return *shown;
 }
 
+void convert_angles(PanelData& data, AngleUnit angles) {
+  for (PanelCurve& curve : data.curves) {
+    const double factor = angle_factor(curve.unit, angles);
+    if (factor == 1.0) continue;
+    for (double& v : curve.values) v *= factor;
+    curve.unit = angle_unit_text(curve.unit, angles);
+  }
+}
+
 std::vector<std::string> wrap_text(cairo_t* cr, double font_size, const std::string& text, double max_width) {
   const text::Font font{font_size, false};
   std::vector<std::string> lines;

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/angle_unit.hpp"
 #include "render/overlays.hpp"
 #include "render/plot.hpp"
 #include "render/settings.hpp"
@@ -31,6 +32,10 @@ struct PanelData {
   double t_end = 0;  // s, the right end of the time axis (the clip's duration, or a still's time)
   [[nodiscard]] bool empty() const { return curves.empty(); }
 };
+
+/// The curves with angular units ("rad", "rad/s", "rad/s^{2}") in `angles`: values
+/// times 180/π and "deg..." units for degrees; nothing changes for radians.
+void convert_angles(PanelData& data, AngleUnit angles);
 
 /// Where the motion and the panel go in a width x height frame: the panel to the right
 /// of a landscape frame (wider than 4:3), below otherwise; no panel: the whole frame.

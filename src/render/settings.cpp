@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "core/number_format.hpp"
+#include "render/frame_layout.hpp"
 
 namespace linkage {
 namespace {
@@ -83,6 +84,7 @@ void RenderSettings::validate() const {
     if (c.text.find_first_not_of(" \t\n") == std::string::npos)
       throw Error::invalid("captions", which + " has no text");
   }
+  (void)frame_bands(*this);  // the equations shown fit the frame
 }
 
 const Quality& parse_quality(std::string_view name, const std::string& origin) {

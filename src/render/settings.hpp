@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/angle_unit.hpp"
 #include "render/camera.hpp"
 #include "scene/arrow_scale.hpp"
 #include "scene/elements.hpp"
@@ -35,6 +36,14 @@ inline constexpr double kMaxStillTime = 3600;     // s of simulated time before 
 
 enum class OutputKind { mp4, gif, webm, png, svg, pdf };
 
+/// A case's equations as the text report prints them (report/mechanism_text's
+/// case_equations), drawn in a band under the motion with Element::equations.
+struct EquationsText {
+  std::string heading;             // "Case 3: four equations in generalized coordinates, no pin force"
+  std::vector<std::string> lines;  // as printed, indentation included
+  [[nodiscard]] bool empty() const { return lines.empty(); }
+};
+
 /// Words drawn along the bottom of the frame from time `at` until the next caption's.
 struct Caption {
   double at = 0;  // s of simulated time
@@ -51,10 +60,12 @@ struct RenderSettings {
   View view;  // for CameraMode::fixed
   std::string theme = "light";
   std::string title = "Two blocks joined by a pin, falling freely";
-  std::vector<std::string> panel;  // quantities plotted beside the motion (column names)
-  std::vector<Caption> captions;   // by increasing `at`
-  ArrowScaleRequest arrow_scale;   // --arrow-scale
-  bool free_body = false;          // --view fbd: the blocks drawn apart, each with its loads
+  std::vector<std::string> panel;     // quantities plotted beside the motion (column names)
+  std::vector<Caption> captions;      // by increasing `at`
+  ArrowScaleRequest arrow_scale;      // --arrow-scale
+  bool free_body = false;             // --view fbd: the blocks drawn apart, each with its loads
+  EquationsText equations;            // drawn when elements has Element::equations (filled by the caller)
+  AngleUnit angles = AngleUnit::rad;  // the panel's angles and rates (--angles)
 
   /// round(duration / speed x fps).
   [[nodiscard]] long frame_count() const;
@@ -64,7 +75,8 @@ struct RenderSettings {
   /// `at` (what its trail or panel shows), then `at`.
   [[nodiscard]] std::vector<double> still_times(double look_back) const;
   /// Throws Error::input naming the flag (--size, --fps, --duration, --speed, --at,
-  /// --view, captions) and the valid range for the first bad value.
+  /// --view, captions) and the valid range for the first bad value; Error::invalid("show",
+  /// ...) when the equations shown do not fit the frame at a legible size.
   void validate() const;
 };
 

@@ -29,7 +29,7 @@ void use(cairo_t* cr, const Font& font) {
     cairo_font_options_set_subpixel_order(o.get(), CAIRO_SUBPIXEL_ORDER_DEFAULT);
     return o;
   }();
-  cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
+  cairo_select_font_face(cr, font.mono ? "DejaVu Sans Mono" : "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
                          font.bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
   cairo_set_font_size(cr, font.size);
   cairo_set_font_options(cr, options.get());

@@ -1,5 +1,5 @@
 #pragma once
-// Text with Cairo's toy API in DejaVu Sans (installed with fonts-dejavu-core), with
+// Text with Cairo's toy API in DejaVu Sans or Sans Mono (installed with fonts-dejavu-core), with
 // fixed font options (greyscale antialiasing, no hinting, unhinted metrics) so text
 // looks the same on every machine and measures the same on raster and vector surfaces.
 #include <cairo.h>
@@ -13,6 +13,7 @@ enum class Align { left, centre, right };
 struct Font {
   double size = 12;  // pixels (points on vector surfaces)
   bool bold = false;
+  bool mono = false;  // DejaVu Sans Mono: every code point one column wide (equations as printed)
 };
 
 /// Sets the font and the fixed font options on `cr`.

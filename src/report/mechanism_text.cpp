@@ -275,7 +275,7 @@ class MechanismWriter {
 
   void one_case(const SolvedCase& solved) {
     const CaseSystem& c = solved.system;
-    heading(concat({"Case ", std::to_string(case_number(c.id)), ": ", c.title}), '-');
+    heading(case_heading(c), '-');
     std::vector<const sym::SymbolInfo*> unknowns;
     std::string u_list;
     for (const GiNaC::symbol& u : c.unknowns) {
@@ -288,11 +288,7 @@ class MechanismWriter {
     if (o_.shows(ReportPart::symbolic)) {
       blank();
       line("  Equations, one per row of A q = B:");
-      for (std::size_t r = 0; r < c.A.size(); ++r) {
-        const EquationSides eq = equation_sides(c.A[r], c.B[r], unknowns, system_.table(), style_);
-        const std::string first = concat({"    ", labels[r], "  "});
-        lines(wrap(first, eq.lhs + kBreakMark + " = " + eq.rhs, std::string(display_width(first) + 4, ' '), o_.width));
-      }
+      lines(case_equation_lines(system_, c, o_));
     }
     Table table;
     for (const GiNaC::symbol& u : c.unknowns) table.headers.push_back(spelling(u));
@@ -373,6 +369,30 @@ class MechanismWriter {
 };
 
 }  // namespace
+
+std::string case_heading(const CaseSystem& c) {
+  return concat({"Case ", std::to_string(case_number(c.id)), ": ", c.title});
+}
+
+std::vector<std::string> case_equation_lines(const sym::System& system, const CaseSystem& c,
+                                             const ReportOptions& options) {
+  std::vector<const sym::SymbolInfo*> unknowns;
+  for (const GiNaC::symbol& u : c.unknowns) unknowns.push_back(system.table().find(u));
+  std::vector<std::string> out;
+  for (std::size_t r = 0; r < c.A.size(); ++r) {
+    const EquationSides eq = equation_sides(c.A[r], c.B[r], unknowns, system.table(), options.text_style);
+    const std::string first = concat({"    ", parenthesized(c.labels[r]), "  "});
+    for (std::string& l :
+         wrap(first, eq.lhs + kBreakMark + " = " + eq.rhs, std::string(display_width(first) + 4, ' '), options.width))
+      out.push_back(std::move(l));
+  }
+  return out;
+}
+
+CaseEquations case_equations(const sym::System& system, CaseId id) {
+  const CaseSystem c = derive_case(system, id);
+  return {case_heading(c), case_equation_lines(system, c, ReportOptions{})};
+}
 
 std::string mechanism_text(const MechanismSolution& solution, const ReportOptions& options) {
   return MechanismWriter(solution, options).run();

@@ -3,11 +3,27 @@
 // solution: inputs and definitions, inertia, each joint's constraint at three levels,
 // each body's forces, Newton-Euler per body, then each case and the agreement table.
 #include <string>
+#include <vector>
 
 #include "report/mechanism_solution.hpp"
 #include "report/report_options.hpp"
 
 namespace linkage {
+
+/// "Case 3: four equations in generalized coordinates, no pin force": a case's heading.
+[[nodiscard]] std::string case_heading(const CaseSystem& c);
+/// The lines printed under "Equations, one per row of A q = B:", as printed (indented
+/// four columns, each row labelled, long rows wrapped to options.width).
+[[nodiscard]] std::vector<std::string> case_equation_lines(const sym::System& system, const CaseSystem& c,
+                                                           const ReportOptions& options);
+
+/// A case's heading and equations as the Unicode text report prints them (80 columns),
+/// without solving it: what `linkage render --show equations` draws.
+struct CaseEquations {
+  std::string heading;
+  std::vector<std::string> lines;
+};
+[[nodiscard]] CaseEquations case_equations(const sym::System& system, CaseId id);
 
 [[nodiscard]] std::string mechanism_text(const MechanismSolution& solution, const ReportOptions& options);
 

@@ -24,6 +24,7 @@ enum class Element : std::uint8_t {
   legend,     // what each colour is, arrow scales, the grid spacing
   labels,     // "1", "2" on the blocks and names on the arrows
   title,      // the title line
+  equations,  // the case's equations as `linkage solve` prints them, in a band under the motion
 };
 
 struct ElementInfo {
@@ -32,7 +33,7 @@ struct ElementInfo {
   bool shown_by_default;
 };
 
-inline constexpr std::array<ElementInfo, 13> kElements{{
+inline constexpr std::array<ElementInfo, 14> kElements{{
     {Element::blocks, "blocks", true},
     {Element::pin, "pin", true},
     {Element::pin_force, "pin-force", true},
@@ -46,6 +47,7 @@ inline constexpr std::array<ElementInfo, 13> kElements{{
     {Element::legend, "legend", true},
     {Element::labels, "labels", true},
     {Element::title, "title", true},
+    {Element::equations, "equations", false},
 }};
 
 /// A set of elements (a bit per element).

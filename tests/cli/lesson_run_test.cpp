@@ -383,7 +383,7 @@ TEST(LessonErrors, ABrokenLessonMakesNothing) {
                 ":11:1: step 2 (render): unknown key 'fsp' (did you mean 'fps'?); valid keys: kind, heading, out, "
                 "caption, fps, size, quality, at, speed, show, hide, camera, view, theme, title, arrow_scale, "
                 "mechanism, set, "
-                "trail, ensemble, spread, compare, panel, captions, case, "
+                "trail, ensemble, spread, compare, panel, angles, captions, case, "
                 "integrator, dt, "
                 "rtol, atol, duration, stabilize, baumgarte_alpha, baumgarte_beta, L, w, b, m, g, x1, y1, theta1, "
                 "theta2, x1_dot, y1_dot, theta1_dot, theta2_dot\n");
