@@ -218,7 +218,8 @@ TEST_F(MechanismLesson, CompareMeasuresEveryRunAgainstTheReference) {
   // Projection keeps Case 1 on its constraints; the energy balance drifts with Euler.
   EXPECT_LT(std::stod(rows[3][3]), 1e-12);
   EXPECT_GT(std::stod(rows[3][2]), 1e-3);
-  for (const char* file : {"methods.png", "methods.svg", "methods-cost.png", "methods-cost.svg"})
+  for (const char* file :
+       {"methods.png", "methods.svg", "methods-cost.png", "methods-cost.svg", "crank-still.png"})  // and the render
     EXPECT_GT(fs::file_size(out() / file), 1000U) << file;
 }
 
