@@ -95,7 +95,8 @@ TEST_F(MechanismLesson, ThePistonStartsWhereTheLoopCloses) {
   const auto set_rows = csv_rows(read_text(out() / "crank-0.3.csv"), header);
   ASSERT_EQ(set_rows.size(), 3U);
   EXPECT_DOUBLE_EQ(set_rows[0][1], 0.3);
-  EXPECT_NE(result_->out.find("From here on: a = 0.08, 2.theta = 0.3."), std::string::npos) << result_->out;
+  EXPECT_NE(result_->out.find("From here on: a = 0.08 m (was 0.06), 2.theta = 0.3 rad (was 0.5)."), std::string::npos)
+      << result_->out;
 }
 
 TEST_F(MechanismLesson, PlotsToPngAndSvg) {
