@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "integrate/mechanism_simulation.hpp"
 #include "integrate/series.hpp"
 #include "lesson/lesson.hpp"
 
@@ -23,6 +24,22 @@ struct SampledRun {
 
 /// The sample times of a run: 0, every, 2 every, ..., duration.
 [[nodiscard]] std::vector<double> sample_times(double duration, double every);
+/// The same on a fixed-step integrator's own grid (the nearest whole number of steps).
+[[nodiscard]] std::vector<double> run_sample_times(const SimulationOptions& options, double every);
+/// The rows of `linkage simulate --every`: k every strictly before the end, then the
+/// duration (so a lesson's trajectory is the command's, byte for byte).
+[[nodiscard]] std::vector<double> trajectory_times(double duration, double every);
+
+/// A mechanism run sampled at `times`: each column's values (as `linkage simulate
+/// --mechanism` computes them), the run's figures and its last state y = (q, q', W).
+struct MechanismSampledRun {
+  std::vector<std::vector<double>> columns;
+  MechanismStats stats;
+  Eigen::VectorXd final_state;
+};
+/// Runs a mechanism run (run.built); Error::diverged when it fails or a value is not finite.
+[[nodiscard]] MechanismSampledRun sample_mechanism_run(const Run& run, const std::vector<double>& times,
+                                                       const std::vector<MechanismColumn>& columns);
 
 /// The figures of one run in a compare table.
 struct RunFigures {
@@ -37,6 +54,12 @@ struct RunFigures {
 /// (which cannot drift), for the run's inputs and duration.
 [[nodiscard]] State reference_final_state(const Run& run);
 inline constexpr double kReferenceTolerance = 1e-13;
+
+/// What a mechanism's final error compares: every body's x, y, theta and every slider's
+/// travel (the default trajectory columns without t), the same in every case.
+[[nodiscard]] std::vector<MechanismColumn> mechanism_final_columns(const sym::System& system);
+/// Those columns at the end of the reference run (DOP853 at kReferenceTolerance on Case 3).
+[[nodiscard]] std::vector<double> mechanism_reference_final(const Run& run);
 
 /// Largest |a - b| over x1, y1, theta1, theta2.
 [[nodiscard]] double final_error(const BodyState& a, const State& reference);

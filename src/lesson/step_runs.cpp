@@ -54,8 +54,73 @@ ResultTable simulate_summary(const SimulateStep& s, const SimulationStats& st, c
   return t;
 }
 
+/// "angle of body 2 (2.theta)" for a generalized coordinate, from its column's meaning.
+std::string coordinate_words(const std::vector<MechanismColumn>& all, const std::string& key, std::string& unit) {
+  for (const MechanismColumn& c : all)
+    if (c.name == key) {
+      unit = c.unit;
+      std::string words = c.meaning;  // without a closing remark such as "(not wrapped)"
+      if (!words.empty() && words.back() == ')') words.erase(words.rfind(" ("));
+      return words + " (" + key + ")";
+    }
+  unit.clear();
+  return key;
+}
+
+ResultTable mechanism_summary(const SimulateStep& s, const MechanismStats& st, const Eigen::VectorXd& end) {
+  const SimulationOptions& o = s.run.options;
+  const sym::System& system = *s.run.built->system;
+  ResultTable t;
+  t.headers = {"quantity", "value"};
+  t.rows = {
+      {"mechanism", system.mechanism().name},
+      {"case", std::to_string(o.case_id)},
+      {"method", method_text(o)},
+      {"simulated time", format_significant(o.duration, 6) + " s"},
+      {"steps", std::to_string(st.steps_accepted) + " accepted, " + std::to_string(st.steps_rejected) + " rejected"},
+      {"right-hand sides", std::to_string(st.rhs_evaluations)},
+      {"largest energy-balance error", format_significant(st.max_energy_error, 3) + " of the energy scale"},
+      {"largest constraint error", format_significant(st.max_constraint_error, 3) + " m (rad for a slider's angle)"},
+  };
+  const std::vector<MechanismColumn> all = mechanism_columns(system);
+  const auto& coordinates = system.coordinates();
+  for (std::size_t i = 0; i < coordinates.size() && static_cast<Eigen::Index>(i) < end.size(); ++i) {
+    std::string unit;
+    const std::string words = coordinate_words(all, coordinates[i].coordinate.key, unit);
+    t.rows.push_back({"final " + words,
+                      format_significant(end[static_cast<Eigen::Index>(i)], 6) + (unit.empty() ? "" : " " + unit)});
+  }
+  t.rows.push_back({"run time", format_significant(st.wall_seconds * 1e3, 3) + " ms"});
+  return t;
+}
+
+/// A mechanism's simulate step: the rows and trajectory of `linkage simulate --mechanism`.
+nlohmann::json simulate_mechanism(const RunContext& c, const SimulateStep& s) {
+  const Run& run = s.run;
+  const std::vector<double> times = trajectory_times(run.options.duration, s.every);
+  const MechanismSampledRun data = sample_mechanism_run(run, times, s.mechanism_columns);
+  if (!s.trajectory.empty()) {
+    std::string csv;
+    for (std::size_t j = 0; j < s.mechanism_columns.size(); ++j) csv += (j ? "," : "") + s.mechanism_columns[j].name;
+    csv += "\n";
+    for (std::size_t k = 0; k < times.size(); ++k) {
+      for (std::size_t j = 0; j < data.columns.size(); ++j) {
+        if (j > 0) csv += ',';
+        csv += format_roundtrip(data.columns[j][k]);
+      }
+      csv += "\n";
+    }
+    write_file_atomically(c.options.out_dir / s.trajectory, csv, "out");
+  }
+  nlohmann::json results = {{"table", to_json(mechanism_summary(s, data.stats, data.final_state))}};
+  const std::string warning = mechanism_result_warning(run.options, data.stats);
+  if (!warning.empty()) results["warnings"] = {warning};
+  return results;
+}
+
 /// Runs a simulate step, writing its trajectory (if any) as `linkage simulate` would.
 nlohmann::json simulate(const RunContext& c, const SimulateStep& s) {
+  if (s.run.built) return simulate_mechanism(c, s);
   const Run& run = s.run;
   Simulation sim(run.inputs.params(), run.inputs.state(), run.options);
   const std::vector<double> times = sample_times(run.options.duration, s.every);
@@ -107,9 +172,47 @@ std::string y_label(const std::vector<std::size_t>& y) {
   return shared_axis_label(labels, units);
 }
 
+std::string with_unit_markup(const std::string& words, const std::string& unit) {
+  return unit.empty() ? words : words + " (" + unit + ")";
+}
+
+/// A mechanism's columns for every run: axes and legends in words and units.
+plot::Plot mechanism_plot(const Figure& f, const std::vector<Run>& runs) {
+  plot::Plot p;
+  p.title = f.title;
+  p.x.label = with_unit_markup(column_words(*f.mechanism_x), column_unit_markup(*f.mechanism_x));
+  std::vector<std::string> labels, units;
+  for (const MechanismColumn& c : f.mechanism_y) {
+    labels.push_back(column_words(c));
+    units.push_back(column_unit_markup(c));
+  }
+  p.y.label = labels.size() == 1 ? with_unit_markup(labels[0], units[0]) : shared_axis_label(labels, units);
+  p.x.scale = f.log_x ? plot::Scale::log : plot::Scale::linear;
+  p.y.scale = f.log_y ? plot::Scale::log : plot::Scale::linear;
+  std::vector<MechanismColumn> columns{*f.mechanism_x};
+  columns.insert(columns.end(), f.mechanism_y.begin(), f.mechanism_y.end());
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    const MechanismSampledRun data = sample_mechanism_run(runs[r], run_sample_times(runs[r].options, f.every), columns);
+    for (std::size_t k = 0; k < f.mechanism_y.size(); ++k) {
+      plot::Series series;
+      const std::string& y_name = labels[k];
+      series.name = runs.size() == 1 ? (f.mechanism_y.size() == 1 ? runs[r].label : y_name)
+                                     : (f.mechanism_y.size() == 1 ? runs[r].label : runs[r].label + ": " + y_name);
+      series.color = r % plot::palette_size;
+      series.dash = kDashes[k % kDashes.size()];
+      series.points.reserve(data.columns[0].size());
+      for (std::size_t i = 0; i < data.columns[0].size(); ++i)
+        series.points.push_back({data.columns[0][i], data.columns[k + 1][i]});
+      p.series.push_back(std::move(series));
+    }
+  }
+  return p;
+}
+
 /// The figure's series for every run, sampled and put into a plot description: runs
 /// by colour, series by dash.
 plot::Plot time_plot(const Figure& f, const std::vector<Run>& runs) {
+  if (f.mechanism_x) return mechanism_plot(f, runs);
   plot::Plot p;
   p.title = f.title;
   p.x.label = series_axis_label(f.x);
@@ -158,7 +261,7 @@ std::string column_header(CompareColumn column) {
     case CompareColumn::energy_error:
       return "energy error";
     case CompareColumn::constraint_error:
-      return "constraint error (m)";
+      return "constraint error (m)";  // a slider's angle error is in rad, as small
     case CompareColumn::steps:
       return "steps";
     case CompareColumn::rejected:
@@ -209,7 +312,8 @@ plot::Plot cost_plot(const CompareStep& s, const std::vector<RunFigures>& figure
   plot::Plot p;
   p.title = s.title.empty() ? "Accuracy against cost" : s.title + ": accuracy against cost";
   p.x.label = "right-hand-side evaluations";
-  p.y.label = "final error (largest of |Δx_{1}|, |Δy_{1}|, |Δθ_{1}|, |Δθ_{2}|)";
+  p.y.label = s.runs.front().built ? "final error (largest difference of a body's x, y, θ or a slider's travel)"
+                                   : "final error (largest of |Δx_{1}|, |Δy_{1}|, |Δθ_{1}|, |Δθ_{2}|)";
   p.x.scale = plot::Scale::log;
   p.y.scale = plot::Scale::log;
   std::vector<std::string> order;
@@ -232,11 +336,39 @@ plot::Plot cost_plot(const CompareStep& s, const std::vector<RunFigures>& figure
   return p;
 }
 
+/// A mechanism run's figures: its final body positions against the reference run's,
+/// its energy-balance and constraint errors over the samples, its cost.
+RunFigures mechanism_figures(const Run& run, double every, std::map<std::string, std::vector<double>>& references,
+                             nlohmann::json& warnings) {
+  const std::vector<MechanismColumn> columns = mechanism_final_columns(*run.built->system);
+  const MechanismSampledRun data = sample_mechanism_run(run, run_sample_times(run.options, every), columns);
+  const std::string warning = mechanism_result_warning(run.options, data.stats);
+  if (!warning.empty()) warnings.push_back("run '" + run.label + "': " + warning);
+  std::string key = run.mechanism + ";" + format_roundtrip(run.options.duration);
+  for (const std::string& setting : run.settings) key += ";" + setting;
+  if (!references.count(key)) references[key] = mechanism_reference_final(run);
+  RunFigures f;
+  for (std::size_t j = 0; j < columns.size(); ++j)
+    f.final_error = std::max(f.final_error, std::fabs(data.columns[j].back() - references[key][j]));
+  f.energy_error = data.stats.max_energy_error;
+  f.constraint_error = data.stats.max_constraint_error;
+  f.steps = data.stats.steps_accepted;
+  f.rejected = data.stats.steps_rejected;
+  f.rhs_evaluations = data.stats.rhs_evaluations;
+  f.run_time = data.stats.wall_seconds;
+  return f;
+}
+
 nlohmann::json compare(const RunContext& c, const Step& step, const CompareStep& s) {
   std::map<std::string, State> references;  // by inputs and duration
+  std::map<std::string, std::vector<double>> mechanism_references;
   std::vector<RunFigures> figures;
   nlohmann::json warnings = nlohmann::json::array();
   for (const Run& run : s.runs) {
+    if (run.built) {
+      figures.push_back(mechanism_figures(run, s.every, mechanism_references, warnings));
+      continue;
+    }
     const SampledRun data = sample_run(run, s.every, {});
     const std::string warning = result_warning(run.options, run.inputs.params(), data.stats);
     if (!warning.empty()) warnings.push_back("run '" + run.label + "': " + warning);
@@ -306,8 +438,13 @@ void run_compare(RunContext& c, const Step& step, const CompareStep& s) {
   c.warn(step, results);
   const ResultTable table = table_from_json(results.at("table"));
   const std::string note =
-      "Final error: largest difference of x1, y1, θ1, θ2 at the end from DOP853 at rtol = atol = " +
-      format_significant(kReferenceTolerance, 1) + "; energy error relative to the energy scale.";
+      s.runs.front().built
+          ? "Final error: largest difference of every body's x, y, θ and every slider's travel at the end from Case 3 "
+            "by DOP853 at rtol = atol = " +
+                format_significant(kReferenceTolerance, 1) +
+                "; energy error: the energy balance E − E(0) − W relative to the energy scale."
+          : "Final error: largest difference of x1, y1, θ1, θ2 at the end from DOP853 at rtol = atol = " +
+                format_significant(kReferenceTolerance, 1) + "; energy error relative to the energy scale.";
   c.both([&](Writer& w) { w.table(table, s.caption.empty() ? note : s.caption + " " + note); });
   if (s.plot) c.both([&](Writer& w) { w.figure(c.figure(s.out + ".png", FigureRef::Kind::image, "")); });
   if (s.cost_plot) c.both([&](Writer& w) { w.figure(c.figure(s.out + "-cost.png", FigureRef::Kind::image, "")); });
