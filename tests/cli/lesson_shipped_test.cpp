@@ -108,8 +108,16 @@ double parameter(const Mechanism& mechanism, const std::string& name) {
   return 0;
 }
 
-/// Runs only `file`'s exercise steps with --step, typing `answers` in order, and returns
-/// how many were marked right; every exercise must get an answer.
+double initial(const Mechanism& mechanism, const std::string& key) {
+  for (const InitialValue& v : mechanism.initial)
+    if (v.key == key) return v.value;
+  ADD_FAILURE() << mechanism.name << " has no initial " << key;
+  return 0;
+}
+
+/// Runs only `file`'s exercise steps (and, as --only does, every earlier set step) with
+/// --step, typing `answers` in order, and returns how many were marked right; every
+/// exercise must get an answer.
 int right_answers(const std::string& file, const std::vector<double>& answers) {
   const lesson::Lesson parsed = lesson::parse_lesson(file);
   std::string only;
@@ -130,19 +138,28 @@ int right_answers(const std::string& file, const std::vector<double>& answers) {
 }
 
 // The slider-crank and four-bar lessons: each exercise, answered with the value worked out
-// here from the mechanism file's lengths, is marked right.
+// here from the mechanism file's lengths and start and the lesson's settings, is marked
+// right (the tool's answers come from its own solve: joint forces, closed-loop angles).
 TEST(ShippedLessons, TheMechanismLessonsAcceptTheAnswersTheFormulasGive) {
   const Mechanism crank = load_mechanism("slider-crank");
-  const double r = parameter(crank, "r"), l = parameter(crank, "l");
-  const std::vector<double> slider{2 * r, std::sqrt(l * l - r * r), (l + r) / (l - r)};
+  const double r = parameter(crank, "r"), l = parameter(crank, "l"), mp = parameter(crank, "mp");
+  const double theta0 = initial(crank, "2.theta");
+  const double omega = 10;  // the lesson's set step: g = 0, the crank at 10 rad/s from the outer dead point
+  const std::vector<double> slider{2 * r, std::sqrt(l * l - r * r),
+                                   r * std::cos(theta0) + std::sqrt(l * l - std::pow(r * std::sin(theta0), 2)),
+                                   mp * r * omega * omega * (1 + r / l), (l + r) / (l - r)};
   EXPECT_EQ(right_answers((fs::path(LINKAGE_SOURCE_DIR) / "lessons/12-slider-crank.toml").string(), slider),
             static_cast<int>(slider.size()));
 
   const Mechanism four = load_mechanism("four-bar");
   const double a = parameter(four, "a"), b = parameter(four, "b"), c = parameter(four, "c"), d = parameter(four, "d");
-  const double pi = std::acos(-1.0);
-  const std::vector<double> grashof{(b + c) - (a + d), b + d - c,
-                                    std::acos((b * b + c * c - (d - a) * (d - a)) / (2 * b * c)) * 180 / pi};
+  const double th2 = initial(four, "2.theta");
+  const double deg = 180 / std::acos(-1.0);
+  const double a_long = 0.4;  // the lesson's crank that breaks Grashof's condition
+  const std::vector<double> grashof{
+      (b + c) - (a + d), b + d - c, std::acos((b * b + c * c - (d - a) * (d - a)) / (2 * b * c)) * deg,
+      std::acos((b * b + c * c - a * a - d * d + 2 * a * d * std::cos(th2)) / (2 * b * c)) * deg,
+      std::acos((a_long * a_long + d * d - (b + c) * (b + c)) / (2 * a_long * d))};
   EXPECT_EQ(right_answers((fs::path(LINKAGE_SOURCE_DIR) / "lessons/13-four-bar.toml").string(), grashof),
             static_cast<int>(grashof.size()));
 }
