@@ -5,12 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <regex>
 #include <tuple>
 
 #include "core/number_format.hpp"
 #include "lesson/lesson.hpp"
+#include "model/mechanism_toml.hpp"
 #include "support/test_support.hpp"
 
 namespace linkage::test {
@@ -58,7 +60,8 @@ TEST(ShippedLessons, TheCourseIsComplete) {
   EXPECT_EQ(names,
             (std::vector<std::string>{"01-moments-of-inertia", "02-holonomic-constraints", "03-case1-eight-equations",
                                       "04-case2-six-equations", "05-case3-four-equations", "06-numerical-example",
-                                      "07-constraint-drift", "08-accuracy-and-cost", "09-beyond-the-equations"}));
+                                      "07-constraint-drift", "08-accuracy-and-cost", "09-beyond-the-equations",
+                                      "12-slider-crank", "13-four-bar"}));
 }
 
 TEST(ShippedLessons, RunAtDraftQualityAndCache) {
@@ -96,6 +99,69 @@ TEST(ShippedLessons, RunAtDraftQualityAndCache) {
     EXPECT_EQ(count(second.err, "): made "), 0) << second.err;
     EXPECT_EQ(count(second.err, "): reused "), count(first.err, "): made ")) << second.err;
   }
+}
+
+double parameter(const Mechanism& mechanism, const std::string& name) {
+  for (const Parameter& p : mechanism.parameters)
+    if (p.name == name) return p.value;
+  ADD_FAILURE() << mechanism.name << " has no parameter " << name;
+  return 0;
+}
+
+double initial(const Mechanism& mechanism, const std::string& key) {
+  for (const InitialValue& v : mechanism.initial)
+    if (v.key == key) return v.value;
+  ADD_FAILURE() << mechanism.name << " has no initial " << key;
+  return 0;
+}
+
+/// Runs only `file`'s exercise steps (and, as --only does, every earlier set step) with
+/// --step, typing `answers` in order, and returns how many were marked right; every
+/// exercise must get an answer.
+int right_answers(const std::string& file, const std::vector<double>& answers) {
+  const lesson::Lesson parsed = lesson::parse_lesson(file);
+  std::string only;
+  std::size_t exercises = 0;
+  for (std::size_t i = 0; i < parsed.steps.size(); ++i)
+    if (std::holds_alternative<lesson::ExerciseStep>(parsed.steps[i].body)) {
+      if (!only.empty()) only += ',';
+      only += std::to_string(i + 1);
+      ++exercises;
+    }
+  EXPECT_EQ(exercises, answers.size()) << file;
+  std::string typed;
+  for (double a : answers) typed += format_significant(a, 12) + "\n";
+  TempDir dir;
+  const RunResult r = run_linkage({"lesson", file, "--out", (dir / "out").string(), "--step", "--only", only}, typed);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  return count(r.out, "Right. ");
+}
+
+// The slider-crank and four-bar lessons: each exercise, answered with the value worked out
+// here from the mechanism file's lengths and start and the lesson's settings, is marked
+// right (the tool's answers come from its own solve: joint forces, closed-loop angles).
+TEST(ShippedLessons, TheMechanismLessonsAcceptTheAnswersTheFormulasGive) {
+  const Mechanism crank = load_mechanism("slider-crank");
+  const double r = parameter(crank, "r"), l = parameter(crank, "l"), mp = parameter(crank, "mp");
+  const double theta0 = initial(crank, "2.theta");
+  const double omega = 10;  // the lesson's set step: g = 0, the crank at 10 rad/s from the outer dead point
+  const std::vector<double> slider{2 * r, std::sqrt(l * l - r * r),
+                                   r * std::cos(theta0) + std::sqrt(l * l - std::pow(r * std::sin(theta0), 2)),
+                                   mp * r * omega * omega * (1 + r / l), (l + r) / (l - r)};
+  EXPECT_EQ(right_answers((fs::path(LINKAGE_SOURCE_DIR) / "lessons/12-slider-crank.toml").string(), slider),
+            static_cast<int>(slider.size()));
+
+  const Mechanism four = load_mechanism("four-bar");
+  const double a = parameter(four, "a"), b = parameter(four, "b"), c = parameter(four, "c"), d = parameter(four, "d");
+  const double th2 = initial(four, "2.theta");
+  const double deg = 180 / std::acos(-1.0);
+  const double a_long = 0.4;  // the lesson's crank that breaks Grashof's condition
+  const std::vector<double> grashof{
+      (b + c) - (a + d), b + d - c, std::acos((b * b + c * c - (d - a) * (d - a)) / (2 * b * c)) * deg,
+      std::acos((b * b + c * c - a * a - d * d + 2 * a * d * std::cos(th2)) / (2 * b * c)) * deg,
+      std::acos((a_long * a_long + d * d - (b + c) * (b + c)) / (2 * a_long * d))};
+  EXPECT_EQ(right_answers((fs::path(LINKAGE_SOURCE_DIR) / "lessons/13-four-bar.toml").string(), grashof),
+            static_cast<int>(grashof.size()));
 }
 
 // Lesson 06 prints the spec's worked example: every derived value and every unknown of
