@@ -5,18 +5,21 @@
 // runs, so running a range of steps (--only) keeps what earlier `set` steps made.
 #include <array>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <variant>
 #include <vector>
 
 #include "integrate/columns.hpp"
+#include "integrate/mechanism_columns.hpp"
 #include "integrate/simulation.hpp"
 #include "lesson/expression.hpp"
 #include "lesson/text_template.hpp"
 #include "model/inputs.hpp"
 #include "render/plot.hpp"
 #include "render/settings.hpp"
+#include "symbolic/system.hpp"
 
 namespace linkage::lesson {
 
@@ -31,19 +34,35 @@ enum class SolvePart { inputs, inertia, constraints, energy, symbolic, numeric, 
 inline constexpr std::array<std::string_view, 9> kSolvePartNames{
     "inputs", "inertia", "constraints", "energy", "symbolic", "numeric", "solution", "residual", "comparison"};
 
+/// A mechanism (a shipped name or a file's path) with its NAME=VALUE settings applied in
+/// order and its loops closed: built once when the lesson is read, shared by the steps
+/// and runs that use it.
+struct BuiltMechanism {
+  std::string spec;
+  std::vector<std::string> settings;
+  std::shared_ptr<const sym::System> system;
+  GiNaC::exmap initial;  // generalized coordinates and rates, loops closed
+};
+
 /// One simulation: the inputs it starts from and how it integrates.
 struct Run {
   std::string label;   // legend and table name
   std::string series;  // runs with the same series form one curve in a cost plot
   Inputs inputs;
   SimulationOptions options;
+  // On a mechanism (null: the homework): its spec, the settings in effect (earlier set
+  // steps', the step's `set`, the entry's `set`) and the system built from them.
+  std::string mechanism;
+  std::vector<std::string> settings;
+  std::shared_ptr<const BuiltMechanism> built;
 };
 
 struct SayStep {
   TextTemplate text;
 };
 struct SetStep {
-  std::vector<std::string> keys;  // the inputs this step sets, in file order
+  std::vector<std::string> keys;      // the inputs this step sets, in file order
+  std::vector<std::string> settings;  // on a mechanism: NAME=VALUE, in file order
 };
 struct PauseStep {
   std::string prompt;
@@ -65,9 +84,10 @@ struct SolveStep {
 };
 struct SimulateStep {
   Run run;
-  double every = 0;             // s between trajectory rows
-  std::string trajectory;       // file in the output folder, empty for none
-  std::vector<Column> columns;  // as `linkage simulate --columns`
+  double every = 0;                                // s between trajectory rows
+  std::string trajectory;                          // file in the output folder, empty for none
+  std::vector<Column> columns;                     // as `linkage simulate --columns`
+  std::vector<MechanismColumn> mechanism_columns;  // on a mechanism, as `--mechanism M --columns`
 };
 struct RenderStep {
   std::string out;  // file in the output folder
@@ -90,6 +110,9 @@ struct RenderStep {
 struct Figure {
   std::vector<std::size_t> y;  // series indices
   std::size_t x = 0;           // series index ("t")
+  // On a mechanism: its trajectory columns instead of the series.
+  std::vector<MechanismColumn> mechanism_y;
+  std::optional<MechanismColumn> mechanism_x;
   bool log_x = false, log_y = false;
   std::string title;
   double every = 0;  // s between samples
@@ -122,10 +145,13 @@ using StepBody =
 
 struct Step {
   StepKind kind = StepKind::say;
-  int number = 0;         // 1-based, as --only counts
-  std::string where;      // "file:line:column" of the step's table
-  std::string heading;    // optional section heading
-  Inputs inputs;          // in effect when the step runs
+  int number = 0;       // 1-based, as --only counts
+  std::string where;    // "file:line:column" of the step's table
+  std::string heading;  // optional section heading
+  Inputs inputs;        // in effect when the step runs
+  // The mechanism in effect (the step's own or the lesson's, with the settings of earlier
+  // set steps); null for the homework.
+  std::shared_ptr<const BuiltMechanism> mechanism;
   std::string canonical;  // every option of the step, canonically printed (cache key)
   StepBody body;
 };

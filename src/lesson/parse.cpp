@@ -22,11 +22,13 @@
 #include "lesson/suggest.hpp"
 #include "model/inputs_toml.hpp"
 #include "model/mechanism_toml.hpp"
+#include "model/name_match.hpp"
 #include "pipeline/clip.hpp"
 #include "pipeline/panel_data.hpp"
 #include "render/theme.hpp"
 #include "report/mechanism_solution.hpp"
 #include "scene/scene_builder.hpp"
+#include "symbolic/loop_closure.hpp"
 #include "symbolic/system.hpp"
 
 namespace linkage::lesson {
@@ -184,7 +186,22 @@ class Parser {
     lesson.inputs = inputs;
     if (auto m = top.string("mechanism")) lesson_mechanism_ = mechanism_spec(top, "mechanism", *m);
     lesson.mechanism = lesson_mechanism_;
-    if (!lesson_mechanism_.empty()) mechanism_names_ = mechanism_names(sym::System(load_mechanism(lesson_mechanism_)));
+    if (!lesson_mechanism_.empty()) {
+      try {
+        const auto built = build(lesson_mechanism_, {}, top.where("mechanism"));
+        mechanism_names_ = mechanism_names(*built->system);
+        step_names_ = mechanism_names_;
+        step_spec_ = lesson_mechanism_;
+        for (const Parameter& p : built->system->mechanism().parameters) settable_names_.push_back(p.name);
+        for (const sym::GeneralizedCoordinate& g : built->system->coordinates()) {
+          settable_names_.push_back(g.coordinate.key);
+          settable_names_.push_back(g.coordinate.key + "_dot");
+        }
+      } catch (const Error& e) {
+        if (e.code() != ExitCode::bad_input) throw;
+        rethrow_at(e, {&top});
+      }
+    }
     if (auto d = top.string("description"))
       lesson.description = text_template(*d, top.prefix("description") + "description", inputs, names());
 
@@ -201,6 +218,42 @@ class Parser {
   std::string mechanism_spec(const TableReader& r, std::string_view key, const std::string& name) const {
     const bool file = name.find('/') != std::string::npos || name.ends_with(".toml");
     return file ? referenced_file(r, key, name).string() : name;
+  }
+
+  /// The mechanism `spec` with `settings` applied (errors name `origin`), loops closed;
+  /// built once per distinct spec and settings.
+  std::shared_ptr<const BuiltMechanism> build(const std::string& spec, const std::vector<std::string>& settings,
+                                              const std::string& origin) const {
+    std::string key = spec;
+    for (const std::string& setting : settings) key += "\n" + setting;
+    if (const auto it = built_.find(key); it != built_.end()) return it->second;
+    Mechanism mechanism = load_mechanism(spec);
+    for (const std::string& setting : settings) apply_setting(mechanism, setting, origin);
+    auto made = std::make_shared<BuiltMechanism>();
+    made->spec = spec;
+    made->settings = settings;
+    made->system = std::make_shared<const sym::System>(mechanism);
+    made->initial = sym::checked_initial_state(*made->system).state;
+    built_[key] = made;
+    return made;
+  }
+
+  /// The step's mechanism (its own `mechanism`, else the lesson's) and the settings it
+  /// starts from: the lesson's mechanism keeps what earlier set steps set.
+  void choose_step_mechanism(const TableReader& r, StepKind kind) {
+    step_spec_ = lesson_mechanism_;
+    step_settings_ = lesson_settings_;
+    if (auto m = r.string("mechanism")) {
+      if (kind == StepKind::set || kind == StepKind::pause)
+        r.fail("mechanism",
+               "'mechanism' applies to the steps that work on one (say, exercise, solve, simulate, "
+               "render, plot, compare); give it at the top to change the lesson's");
+      const std::string spec = mechanism_spec(r, "mechanism", *m);
+      if (spec != lesson_mechanism_) {
+        step_spec_ = spec;
+        step_settings_.clear();
+      }
+    }
   }
 
   fs::path referenced_file(const TableReader& r, std::string_view key, const std::string& name) const {
@@ -251,12 +304,24 @@ class Parser {
       extra = input_names();
     }
     if (step.kind == StepKind::set) extra = input_names();
+    if (step.kind == StepKind::set && !lesson_mechanism_.empty())
+      extra.assign(settable_names_.begin(), settable_names_.end());
     const TableReader r(table, file_text_, context, keys, extra);
     r.reject_unknown_keys();
     if (auto h = r.string("heading")) step.heading = *h;
     for (const std::string_view key : {"caption", "unit"})  // Markdown shown as written (no {{...}})
       if (auto text = r.string(key)) check_markdown(*text, r.prefix(key) + std::string(key));
     step.canonical = canonical_text(table, {"heading", "caption"});
+    choose_step_mechanism(r, step.kind);
+    if (!step_spec_.empty() && step.kind != StepKind::set) {
+      try {
+        step.mechanism = build(step_spec_, step_settings_, r.where("mechanism"));
+      } catch (const Error& e) {
+        if (e.code() != ExitCode::bad_input) throw;
+        rethrow_at(e, {&r});
+      }
+      step_names_ = mechanism_names(*step.mechanism->system);
+    }
 
     switch (step.kind) {
       case StepKind::say:
@@ -272,26 +337,14 @@ class Parser {
         step.body = parse_exercise(r, inputs);
         break;
       case StepKind::solve:
-        step.body = parse_solve(r, inputs);
+        step.body = parse_solve(r, inputs, step);
         break;
       case StepKind::simulate:
         step.body = parse_simulate(r, inputs);
         break;
-      case StepKind::render: {
-        RenderStep render = parse_render(r, inputs);
-        // The mechanism (and a file's text) belongs to the cached clip's key.
-        if (!render.mechanism.empty()) {
-          step.canonical += ";mechanism=" + render.mechanism;
-          if (fs::exists(render.mechanism)) {
-            std::ifstream in(render.mechanism, std::ios::binary);
-            std::stringstream content;
-            content << in.rdbuf();
-            step.canonical += ";" + content_hash(content.str());
-          }
-        }
-        step.body = std::move(render);
+      case StepKind::render:
+        step.body = parse_render(r, inputs);
         break;
-      }
       case StepKind::plot:
         step.body = parse_plot(r, inputs);
         break;
@@ -300,6 +353,19 @@ class Parser {
         break;
     }
     step.inputs = inputs;
+    if (step.kind == StepKind::set && !lesson_mechanism_.empty())
+      step.mechanism = build(lesson_mechanism_, lesson_settings_, r.where("set"));
+    // The mechanism, its settings (and a file's text) belong to the cached artifacts' key.
+    if (step.mechanism) {
+      step.canonical += ";mechanism=" + step.mechanism->spec + ";settings=";
+      for (const std::string& setting : step.mechanism->settings) step.canonical += setting + ",";
+      if (fs::exists(step.mechanism->spec)) {
+        std::ifstream in(step.mechanism->spec, std::ios::binary);
+        std::stringstream content;
+        content << in.rdbuf();
+        step.canonical += ";" + content_hash(content.str());
+      }
+    }
     for (const std::string& artifact : step_artifacts(step)) {
       const auto [it, fresh] = artifacts_.emplace(artifact, step.where);
       if (!fresh)
@@ -323,8 +389,30 @@ class Parser {
     return {text_template(content.str(), r.prefix("file") + path.string(), inputs, names())};
   }
 
-  SetStep parse_set(const TableReader& r, Inputs& inputs) const {
+  SetStep parse_set(const TableReader& r, Inputs& inputs) {
     SetStep step;
+    if (!lesson_mechanism_.empty()) {
+      // The lesson's mechanism: `set = ["NAME=VALUE", ...]` and NAME = VALUE keys, in file order.
+      if (auto list = r.strings("set")) step.settings = *list;
+      for (const std::string& key : keys_in_file_order(r.table(), [&](std::string_view k) {
+             return std::find(settable_names_.begin(), settable_names_.end(), k) != settable_names_.end();
+           }))
+        step.settings.push_back(key + "=" + format_roundtrip(*r.number(key, -kInf, kInf, "")));
+      if (step.settings.empty())
+        throw Error::input(r.prefix("") + "a set step needs set = [\"NAME=VALUE\", ...] or NAME = VALUE keys; names: " +
+                           join_names(settable_names_));
+      std::vector<std::string> settings = lesson_settings_;
+      settings.insert(settings.end(), step.settings.begin(), step.settings.end());
+      try {
+        (void)build(lesson_mechanism_, settings, r.where(r.has("set") ? "set" : ""));
+      } catch (const Error& e) {
+        if (e.code() != ExitCode::bad_input) throw;
+        rethrow_at(e, {&r});
+      }
+      lesson_settings_ = std::move(settings);
+      return step;
+    }
+    if (r.has("set")) r.fail("set", "'set' applies to a mechanism: give mechanism = \"NAME\" at the top");
     step.keys = keys_in_file_order(r.table(), [](std::string_view k) { return find_input_key(k) != nullptr; });
     if (step.keys.empty()) throw Error::input(r.prefix("") + "a set step needs at least one of " + input_key_list());
     try {
@@ -372,7 +460,7 @@ class Parser {
     return e;
   }
 
-  SolveStep parse_solve(const TableReader& r, const Inputs& inputs) const {
+  SolveStep parse_solve(const TableReader& r, const Inputs& inputs, const Step& step) const {
     SolveStep s;
     const toml::node* c = r.node("case");
     if (c == nullptr || (c->is_string() && c->as_string()->get() == "all")) {
@@ -391,7 +479,8 @@ class Parser {
       r.fail("case", "'case' must be 1, 2, 3, a list of them like [1, 3], or \"all\"");
     }
     try {  // inputs that overflow a derived quantity or make a matrix singular: refused now
-      (void)work_out_mechanism(homework_mechanism(inputs), case_ids(s.cases));
+      (void)work_out_mechanism(step.mechanism ? step.mechanism->system->mechanism() : homework_mechanism(inputs),
+                               case_ids(s.cases));
     } catch (const Error& e) {
       throw e.rephrased(r.prefix("") + e.what());
     }
@@ -414,17 +503,48 @@ class Parser {
     o.duration = r.number("duration", -kInf, kInf, "").value_or(o.duration);
     o.baumgarte_alpha = r.number("baumgarte_alpha", -kInf, kInf, "").value_or(o.baumgarte_alpha);
     o.baumgarte_beta = r.number("baumgarte_beta", -kInf, kInf, "").value_or(o.baumgarte_beta);
+    if (auto settings = r.strings("set")) {
+      if (run.mechanism.empty())
+        r.fail("set", "'set' applies to a mechanism: give mechanism = \"NAME\" here or at the top");
+      run.settings.insert(run.settings.end(), settings->begin(), settings->end());
+    }
+    for (const InputKey& key : kInputKeys)
+      if (!run.mechanism.empty() && r.has(key.key))
+        r.fail(key.key, "'" + std::string(key.key) + "' is an input of the homework; on a mechanism write set = [\"" +
+                            "NAME=VALUE\"] with the mechanism's names");
     for (const InputKey& key : kInputKeys)
       if (auto v = r.number(key.key, -kInf, kInf, "")) run.inputs.set(key, *v, r.where(key.key));
     run.inputs.validate();
   }
 
-  static std::string default_label(const Run& run, const Inputs& base) {
+  /// Builds a mechanism run's system (its settings checked; errors at the innermost `set`).
+  void build_run(Run& run, std::initializer_list<const TableReader*> readers) const {
+    if (run.mechanism.empty()) return;
+    std::string origin = (*readers.begin())->where("set");
+    for (const TableReader* r : readers)
+      if (r->has("set")) {
+        origin = r->where("set");
+        break;
+      }
+    try {
+      run.built = build(run.mechanism, run.settings, origin);
+    } catch (const Error& e) {
+      if (e.code() != ExitCode::bad_input) throw;
+      rethrow_at(e, readers);
+    }
+  }
+
+  std::string default_label(const Run& run, const Inputs& base) const {
     const SimulationOptions& o = run.options;
     const IntegratorInfo& i = info(o.integrator);
     std::string label = "Case " + std::to_string(o.case_id) + ", " + std::string(i.name);
     label += i.adaptive ? ", rtol " + format_significant(o.rtol, 3) : ", dt " + format_significant(o.dt, 3) + " s";
     if (o.case_id == 1) label += ", " + std::string(name(o.stabilization));
+    for (std::size_t k = step_settings_.size(); k < run.settings.size(); ++k) {
+      std::string setting = run.settings[k];
+      if (const auto equals = setting.find('='); equals != std::string::npos) setting.replace(equals, 1, " = ");
+      label += ", " + setting;
+    }
     for (const InputKey& key : kInputKeys)
       if (run.inputs.value(key) != base.value(key))
         label += ", " + std::string(key.key) + " = " + format_significant(run.inputs.value(key), 4);
@@ -435,12 +555,15 @@ class Parser {
   Run step_run(const TableReader& r, const Inputs& inputs) const {
     Run run;
     run.inputs = inputs;
+    run.mechanism = step_spec_;
+    run.settings = step_settings_;
     apply_run_keys(r, run);
     try {
       run.options.validate();
     } catch (const Error& e) {
       rethrow_at(e, {&r});
     }
+    build_run(run, {&r});
     run.label = default_label(run, inputs);
     run.series = std::string(info(run.options.integrator).name);
     return run;
@@ -456,6 +579,8 @@ class Parser {
     }
     Run base;
     base.inputs = inputs;
+    base.mechanism = step_spec_;
+    base.settings = step_settings_;
     apply_run_keys(r, base);
     const std::vector<KeySpec> keys = concat({run_keys(), run_entry_keys()});
     std::vector<Run> out;
@@ -470,6 +595,7 @@ class Parser {
       } catch (const Error& e) {
         rethrow_at(e, {&entry, &r});
       }
+      build_run(run, {&entry, &r});
       run.label = entry.string("label").value_or(default_label(run, inputs));
       run.series = entry.string("series").value_or(std::string(info(run.options.integrator).name));
       out.push_back(std::move(run));
@@ -508,11 +634,67 @@ class Parser {
     height = h;
   }
 
+  /// The mechanism columns a list key names ("default" and "all" too when `groups`); an
+  /// unknown name is an error at its entry naming the nearest column and every valid one.
+  std::vector<MechanismColumn> mechanism_column_list(const TableReader& r, std::string_view key,
+                                                     const sym::System& system, bool groups) const {
+    const std::vector<MechanismColumn> all = mechanism_columns(system);
+    std::vector<MechanismColumn> out;
+    const auto values = r.strings(key);
+    if (!values) return out;
+    const toml::node* n = r.node(key);
+    const auto* array = n != nullptr ? n->as_array() : nullptr;
+    for (std::size_t i = 0; i < values->size(); ++i) {
+      const std::string& name = (*values)[i];
+      if (groups && (name == "default" || name == "all")) {
+        for (const MechanismColumn& c : select_mechanism_columns(all, name, ""))
+          if (c.quantity != MechanismQuantity::time || out.empty()) out.push_back(c);
+        continue;
+      }
+      const std::string where = array != nullptr ? position(r.file(), array->get(i)->source()) : r.where(key);
+      out.push_back(find_mechanism_column(all, name, where + ": " + r.context() + ": " + std::string(key)));
+    }
+    return out;
+  }
+
+  static MechanismColumn find_mechanism_column(const std::vector<MechanismColumn>& all, const std::string& name,
+                                               const std::string& origin) {
+    std::vector<std::string> names;
+    for (const MechanismColumn& c : all) {
+      if (c.name == name) return c;
+      names.push_back(c.name);
+    }
+    std::string nearest;
+    std::size_t best = std::numeric_limits<std::size_t>::max();
+    // The fewest edits; of equals, one on the same body or joint ("S.x" -> "S.s").
+    const std::string owner = name.substr(0, name.find('.') + 1);
+    for (const std::string& candidate : names) {
+      const std::size_t d = 2 * typo_distance(name, candidate) + (candidate.rfind(owner, 0) == 0 ? 0 : 1);
+      if (d < best) {
+        best = d;
+        nearest = candidate;
+      }
+    }
+    throw Error::input(origin + ": unknown column '" + name + "'; nearest '" + nearest +
+                       "'; valid: " + join_names(names));
+  }
+
   SimulateStep parse_simulate(const TableReader& r, const Inputs& inputs) const {
     SimulateStep s;
     s.run = step_run(r, inputs);
     s.every = sample_interval(r, s.run.options.duration, 100);
     if (r.has("trajectory")) s.trajectory = strip_extension(artifact_name(r, "trajectory"), {".csv"}) + ".csv";
+    if (s.run.built) {
+      // As `linkage simulate --mechanism --columns`: t first, "default" without the key.
+      const sym::System& system = *s.run.built->system;
+      std::vector<MechanismColumn> columns = mechanism_column_list(r, "columns", system, true);
+      if (!r.has("columns")) columns = select_mechanism_columns(mechanism_columns(system), "default", "columns");
+      if (columns.empty()) r.fail("columns", "'columns' is empty; name at least one column, \"default\" or \"all\"");
+      if (columns.front().quantity != MechanismQuantity::time)
+        columns.insert(columns.begin(), mechanism_columns(system).front());
+      s.mechanism_columns = std::move(columns);
+      return s;
+    }
     if (auto columns = r.strings("columns")) {
       std::string list;
       for (const std::string& c : *columns) {
@@ -557,9 +739,8 @@ class Parser {
     s.caption = r.string("caption").value_or("");
     s.run = step_run(r, inputs);
     RenderSettings& g = s.settings;
-    if (auto m = r.string("mechanism")) s.mechanism = mechanism_spec(r, "mechanism", *m);
-    if (s.mechanism.empty()) s.mechanism = lesson_mechanism_;
-    s.settings_list = r.strings("set").value_or(std::vector<std::string>{});
+    s.mechanism = s.run.mechanism;
+    s.settings_list = s.run.settings;
     s.trails = r.strings("trail").value_or(std::vector<std::string>{});
     if (auto n = r.integer("ensemble", 2, 200)) s.ensemble = static_cast<int>(*n);
     if (auto x = r.number("spread", std::numeric_limits<double>::min(), std::numeric_limits<double>::max(),
@@ -568,7 +749,7 @@ class Parser {
       s.spread = *x;
     }
     s.compare = r.strings("compare").value_or(std::vector<std::string>{});
-    for (const std::string_view key : {"set", "trail", "ensemble", "compare"})
+    for (const std::string_view key : {"trail", "ensemble", "compare"})
       if (s.mechanism.empty() && r.has(key))
         r.fail(key, "'" + std::string(key) + "' applies to a mechanism: give mechanism = \"NAME\" here or at the top");
     if (!s.mechanism.empty())
@@ -642,7 +823,12 @@ class Parser {
 
   Figure figure(const TableReader& r, const std::vector<Run>& runs) const {
     Figure f;
-    f.x = *find_series(r.choice("x", series_names()).value_or("t"));
+    if (runs.front().built) {
+      const std::vector<MechanismColumn> all = mechanism_columns(*runs.front().built->system);
+      f.mechanism_x = find_mechanism_column(all, r.string("x").value_or("t"), r.prefix("x") + "x");
+    } else {
+      f.x = *find_series(r.choice("x", series_names()).value_or("t"));
+    }
     f.log_x = r.boolean("log_x").value_or(false);
     f.log_y = r.boolean("log_y").value_or(false);
     f.title = r.string("title").value_or("");
@@ -658,6 +844,11 @@ class Parser {
     s.runs = runs(r, inputs, false);
     r.require("y");
     s.figure = figure(r, s.runs);
+    if (s.runs.front().built) {
+      s.figure.mechanism_y = mechanism_column_list(r, "y", *s.runs.front().built->system, false);
+      if (s.figure.mechanism_y.empty()) r.fail("y", "'y' is empty; name at least one column");
+      return s;
+    }
     s.figure.y = choice_list(r, "y", series_names());
     if (s.figure.y.empty()) r.fail("y", "'y' is empty; name at least one series");
     return s;
@@ -668,6 +859,7 @@ class Parser {
     s.out = strip_extension(artifact_name(r, "out"), {".csv", ".png", ".svg"});
     s.caption = r.string("caption").value_or("");
     s.runs = runs(r, inputs, true);
+    if (s.runs.front().built) r.fail("kind", "a compare step on a mechanism is not supported yet");
     const std::vector<std::string_view> columns(kCompareColumnNames.begin(), kCompareColumnNames.end());
     for (std::size_t i : choice_list(r, "columns", columns)) s.columns.push_back(static_cast<CompareColumn>(i));
     if (s.columns.empty())
@@ -694,9 +886,15 @@ class Parser {
 
   fs::path file_;
   std::string file_text_;
-  std::string lesson_mechanism_;    // the lesson's `mechanism`, for its render steps
+  std::string lesson_mechanism_;              // the lesson's `mechanism`
+  std::vector<std::string> lesson_settings_;  // its settings from the set steps so far
+  std::vector<std::string> settable_names_;   // its parameters, coordinates and rates
+  std::string step_spec_;                     // the step being read: its mechanism and settings
+  std::vector<std::string> step_settings_;
+  MechanismNames step_names_;  // names of the step's mechanism for {{...}} and answers
+  mutable std::map<std::string, std::shared_ptr<const BuiltMechanism>> built_;
   MechanismNames mechanism_names_;  // its names for {{...}} and answers, when it has one
-  [[nodiscard]] const MechanismNames* names() const { return lesson_mechanism_.empty() ? nullptr : &mechanism_names_; }
+  [[nodiscard]] const MechanismNames* names() const { return step_spec_.empty() ? nullptr : &step_names_; }
   fs::path dir_;
   std::map<std::string, std::string> artifacts_;  // file name -> the step that writes it
 };

@@ -108,6 +108,15 @@ void run_set(RunContext& c, const Step& step, const SetStep& s) {
   const Inputs& before =
       step.number > 1 ? c.lesson.steps[static_cast<std::size_t>(step.number - 2)].inputs : c.lesson.inputs;
   std::string text = "*From here on:* ";
+  if (!s.settings.empty()) {  // a mechanism's NAME=VALUE settings
+    for (std::size_t i = 0; i < s.settings.size(); ++i) {
+      std::string setting = s.settings[i];
+      if (const auto equals = setting.find('='); equals != std::string::npos) setting.replace(equals, 1, " = ");
+      text += (i > 0 ? ", " : "") + setting;
+    }
+    c.both([&](Writer& w) { w.markdown(text + "."); });
+    return;
+  }
   for (std::size_t i = 0; i < s.keys.size(); ++i) {
     const InputKey& key = *find_input_key(s.keys[i]);
     text += (i > 0 ? ", " : "") + std::string(key.key) + " = " + format_roundtrip(step.inputs.value(key)) + " " +
@@ -192,7 +201,8 @@ void run_exercise(RunContext& c, const Step& step, const ExerciseStep& e) {
 }
 
 void run_solve(RunContext& c, const Step& step, const SolveStep& s) {
-  const MechanismSolution worked = work_out_mechanism(homework_mechanism(step.inputs), case_ids(s.cases));
+  const MechanismSolution worked = work_out_mechanism(
+      step.mechanism ? step.mechanism->system->mechanism() : homework_mechanism(step.inputs), case_ids(s.cases));
   ReportOptions options;
   options.width = c.options.width;
   options.text_style = c.options.style;

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/error.hpp"
 #include "core/interrupt.hpp"
+#include "core/number_format.hpp"
 
 namespace linkage::lesson {
 
@@ -16,12 +18,52 @@ std::vector<double> sample_times(double duration, double every) {
   return times;
 }
 
-SampledRun sample_run(const Run& run, double every, const std::vector<std::size_t>& series) {
+std::vector<double> run_sample_times(const SimulationOptions& o, double every) {
   // A fixed-step run samples on its own step grid: a sample between grid points would
   // cost an extra short step and inflate the counts a compare table reports.
-  const SimulationOptions& o = run.options;
   if (!info(o.integrator).adaptive) every = o.dt * std::max(1.0, std::round(every / o.dt));
-  const std::vector<double> times = sample_times(o.duration, every);
+  return sample_times(o.duration, every);
+}
+
+std::vector<double> trajectory_times(double duration, double every) {
+  const double ratio = duration / every;
+  const double nearest = std::round(ratio);
+  const bool divides = std::fabs(ratio - nearest) <= 1e-9 * std::max(1.0, ratio);
+  const long count = static_cast<long>(divides ? nearest : std::floor(ratio) + 1) + 1;
+  std::vector<double> times;
+  times.reserve(static_cast<std::size_t>(count));
+  for (long i = 0; i < count; ++i) times.push_back(i + 1 == count ? duration : static_cast<double>(i) * every);
+  return times;
+}
+
+MechanismSampledRun sample_mechanism_run(const Run& run, const std::vector<double>& times,
+                                         const std::vector<MechanismColumn>& columns) {
+  MechanismSimulation sim(*run.built->system, run.built->initial, run.options);
+  MechanismSampledRun out;
+  out.columns.assign(columns.size(), {});
+  for (auto& column : out.columns) column.reserve(times.size());
+  eval::MechanismSample sample;
+  for (const double t : times) {
+    throw_if_interrupted();
+    const Eigen::VectorXd& y = sim.state_at(t);
+    sim.sample(t, y, sample);
+    for (std::size_t j = 0; j < columns.size(); ++j) {
+      const double value = column_value(columns[j], t, y, sample, sim.energy0());
+      if (!std::isfinite(value))
+        throw Error::diverged(columns[j].name + " at t = " + format_roundtrip(t) +
+                              " s is not a finite number; the run stopped (Case " +
+                              std::to_string(run.options.case_id) + ")");
+      out.columns[j].push_back(value);
+    }
+    out.final_state = y;
+  }
+  out.stats = sim.stats();
+  return out;
+}
+
+SampledRun sample_run(const Run& run, double every, const std::vector<std::size_t>& series) {
+  const SimulationOptions& o = run.options;
+  const std::vector<double> times = run_sample_times(o, every);
   Simulation sim(run.inputs.params(), run.inputs.state(), o);
   const bool dynamics =
       std::any_of(series.begin(), series.end(), [](std::size_t i) { return kSeries[i].needs_dynamics; });

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "integrate/mechanism_simulation.hpp"
 #include "integrate/series.hpp"
 #include "lesson/lesson.hpp"
 
@@ -23,6 +24,22 @@ struct SampledRun {
 
 /// The sample times of a run: 0, every, 2 every, ..., duration.
 [[nodiscard]] std::vector<double> sample_times(double duration, double every);
+/// The same on a fixed-step integrator's own grid (the nearest whole number of steps).
+[[nodiscard]] std::vector<double> run_sample_times(const SimulationOptions& options, double every);
+/// The rows of `linkage simulate --every`: k every strictly before the end, then the
+/// duration (so a lesson's trajectory is the command's, byte for byte).
+[[nodiscard]] std::vector<double> trajectory_times(double duration, double every);
+
+/// A mechanism run sampled at `times`: each column's values (as `linkage simulate
+/// --mechanism` computes them), the run's figures and its last state y = (q, q', W).
+struct MechanismSampledRun {
+  std::vector<std::vector<double>> columns;
+  MechanismStats stats;
+  Eigen::VectorXd final_state;
+};
+/// Runs a mechanism run (run.built); Error::diverged when it fails or a value is not finite.
+[[nodiscard]] MechanismSampledRun sample_mechanism_run(const Run& run, const std::vector<double>& times,
+                                                       const std::vector<MechanismColumn>& columns);
 
 /// The figures of one run in a compare table.
 struct RunFigures {

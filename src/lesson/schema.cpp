@@ -21,13 +21,19 @@ constexpr std::array<KeySpec, 7> kLessonKeys{{
     {"step", "array of tables", "(required)", "The steps, in order: one [[step]] table each."},
 }};
 
-constexpr std::array<KeySpec, 2> kCommonKeys{{
+constexpr std::array<KeySpec, 3> kCommonKeys{{
     {"kind", "string", "(required)",
      "What the step does: say, set, pause, exercise, solve, simulate, render, plot or compare."},
     {"heading", "string", "none", "A section heading printed before the step."},
+    {"mechanism", "string", "the lesson's",
+     "Work on this mechanism (a shipped name or a file relative to the lesson) in this step instead of the "
+     "lesson's; it starts from the file's values (earlier set steps change the lesson's mechanism only)."},
 }};
 
-constexpr std::array<KeySpec, 9> kRunKeys{{
+constexpr std::array<KeySpec, 10> kRunKeys{{
+    {"set", "list of strings", "none",
+     "With a mechanism: NAME=VALUE settings of its parameters or initial coordinates, as --set "
+     "([\"a=0.12\", \"2.theta=0.3\"]), after those of earlier set steps."},
     {"case", "integer", "3", "The formulation: 1 (eight DAEs), 2 (six equations) or 3 (four equations)."},
     {"integrator", "string", "\"dop853\"",
      "euler, symplectic-euler, rk4, dopri5, dop853 or gauss-legendre (as `linkage simulate`)."},
@@ -50,6 +56,11 @@ constexpr std::array<KeySpec, 2> kSayKeys{{
      "Markdown, wrapped to the terminal; {{NAME}} or {{EXPRESSION : DIGITS}} "
      "is replaced by the value at the current inputs."},
     {"file", "string", "(text or file)", "Read the Markdown from this file (relative to the lesson file) instead."},
+}};
+
+constexpr std::array<KeySpec, 1> kSetKeys{{
+    {"set", "list of strings", "none",
+     "With a mechanism: NAME=VALUE settings of its parameters or initial coordinates for the following steps."},
 }};
 
 constexpr std::array<KeySpec, 1> kPauseKeys{{
@@ -83,7 +94,7 @@ constexpr std::array<KeySpec, 3> kSimulateKeys{{
      "energy, momentum_x, ..., constraint_velocity_error)."},
 }};
 
-constexpr std::array<KeySpec, 22> kRenderKeys{{
+constexpr std::array<KeySpec, 20> kRenderKeys{{
     {"out", "string", "(required)", "The file in the output folder: .mp4 (a clip), .png, .svg or .pdf (a still)."},
     {"caption", "string", "none", "Text under the clip or still in the lesson document."},
     {"fps", "integer", "30", "Frames per second (as the render command's fps); draft quality lowers it to 15."},
@@ -103,10 +114,6 @@ constexpr std::array<KeySpec, 22> kRenderKeys{{
     {"arrow_scale", "string", "each kind its own",
      "Arrow scales as the render command's --arrow-scale: common, common=N_PER_CM or KIND=N_PER_CM,... (pin, gravity, "
      "velocity; with a mechanism joint, applied)."},
-    {"mechanism", "string", "the lesson's",
-     "Draw this mechanism (a shipped name or a file relative to the lesson) instead of the homework; show, hide, "
-     "camera and view are the homework's."},
-    {"set", "list of strings", "none", "NAME=VALUE settings of the mechanism's parameters or initial coordinates."},
     {"trail", "list of strings", "none", "BODY.POINT paths drawn over the last 2 s (with a mechanism)."},
     {"ensemble", "integer", "none",
      "With a mechanism: N runs (2 .. 200) whose first coordinate starts up to `spread` apart, drawn faint behind the "
@@ -169,7 +176,8 @@ struct KindEntry {
 const std::array<KindEntry, 9>& kinds() {
   static const std::array<KindEntry, 9> table{{
       {"say", "A Markdown paragraph, wrapped to the terminal.", kSayKeys, false},
-      {"set", "Changes inputs (any of the thirteen names) for the following steps.", {}, false},
+      {"set", "Changes inputs (any of the thirteen names, or a mechanism's settings) for the following steps.",
+       kSetKeys, false},
       {"pause", "Waits for Enter with --step; ignored otherwise.", kPauseKeys, false},
       {"exercise", "A question with a numeric answer: asked and checked with --step, answered otherwise.",
        kExerciseKeys, false},

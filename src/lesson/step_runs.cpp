@@ -54,8 +54,73 @@ ResultTable simulate_summary(const SimulateStep& s, const SimulationStats& st, c
   return t;
 }
 
+/// "angle of body 2 (2.theta)" for a generalized coordinate, from its column's meaning.
+std::string coordinate_words(const std::vector<MechanismColumn>& all, const std::string& key, std::string& unit) {
+  for (const MechanismColumn& c : all)
+    if (c.name == key) {
+      unit = c.unit;
+      std::string words = c.meaning;  // without a closing remark such as "(not wrapped)"
+      if (!words.empty() && words.back() == ')') words.erase(words.rfind(" ("));
+      return words + " (" + key + ")";
+    }
+  unit.clear();
+  return key;
+}
+
+ResultTable mechanism_summary(const SimulateStep& s, const MechanismStats& st, const Eigen::VectorXd& end) {
+  const SimulationOptions& o = s.run.options;
+  const sym::System& system = *s.run.built->system;
+  ResultTable t;
+  t.headers = {"quantity", "value"};
+  t.rows = {
+      {"mechanism", system.mechanism().name},
+      {"case", std::to_string(o.case_id)},
+      {"method", method_text(o)},
+      {"simulated time", format_significant(o.duration, 6) + " s"},
+      {"steps", std::to_string(st.steps_accepted) + " accepted, " + std::to_string(st.steps_rejected) + " rejected"},
+      {"right-hand sides", std::to_string(st.rhs_evaluations)},
+      {"largest energy-balance error", format_significant(st.max_energy_error, 3) + " of the energy scale"},
+      {"largest constraint error", format_significant(st.max_constraint_error, 3) + " m (rad for a slider's angle)"},
+  };
+  const std::vector<MechanismColumn> all = mechanism_columns(system);
+  const auto& coordinates = system.coordinates();
+  for (std::size_t i = 0; i < coordinates.size() && static_cast<Eigen::Index>(i) < end.size(); ++i) {
+    std::string unit;
+    const std::string words = coordinate_words(all, coordinates[i].coordinate.key, unit);
+    t.rows.push_back({"final " + words,
+                      format_significant(end[static_cast<Eigen::Index>(i)], 6) + (unit.empty() ? "" : " " + unit)});
+  }
+  t.rows.push_back({"run time", format_significant(st.wall_seconds * 1e3, 3) + " ms"});
+  return t;
+}
+
+/// A mechanism's simulate step: the rows and trajectory of `linkage simulate --mechanism`.
+nlohmann::json simulate_mechanism(const RunContext& c, const SimulateStep& s) {
+  const Run& run = s.run;
+  const std::vector<double> times = trajectory_times(run.options.duration, s.every);
+  const MechanismSampledRun data = sample_mechanism_run(run, times, s.mechanism_columns);
+  if (!s.trajectory.empty()) {
+    std::string csv;
+    for (std::size_t j = 0; j < s.mechanism_columns.size(); ++j) csv += (j ? "," : "") + s.mechanism_columns[j].name;
+    csv += "\n";
+    for (std::size_t k = 0; k < times.size(); ++k) {
+      for (std::size_t j = 0; j < data.columns.size(); ++j) {
+        if (j > 0) csv += ',';
+        csv += format_roundtrip(data.columns[j][k]);
+      }
+      csv += "\n";
+    }
+    write_file_atomically(c.options.out_dir / s.trajectory, csv, "out");
+  }
+  nlohmann::json results = {{"table", to_json(mechanism_summary(s, data.stats, data.final_state))}};
+  const std::string warning = mechanism_result_warning(run.options, data.stats);
+  if (!warning.empty()) results["warnings"] = {warning};
+  return results;
+}
+
 /// Runs a simulate step, writing its trajectory (if any) as `linkage simulate` would.
 nlohmann::json simulate(const RunContext& c, const SimulateStep& s) {
+  if (s.run.built) return simulate_mechanism(c, s);
   const Run& run = s.run;
   Simulation sim(run.inputs.params(), run.inputs.state(), run.options);
   const std::vector<double> times = sample_times(run.options.duration, s.every);
@@ -107,9 +172,47 @@ std::string y_label(const std::vector<std::size_t>& y) {
   return shared_axis_label(labels, units);
 }
 
+std::string with_unit_markup(const std::string& words, const std::string& unit) {
+  return unit.empty() ? words : words + " (" + unit + ")";
+}
+
+/// A mechanism's columns for every run: axes and legends in words and units.
+plot::Plot mechanism_plot(const Figure& f, const std::vector<Run>& runs) {
+  plot::Plot p;
+  p.title = f.title;
+  p.x.label = with_unit_markup(column_words(*f.mechanism_x), column_unit_markup(*f.mechanism_x));
+  std::vector<std::string> labels, units;
+  for (const MechanismColumn& c : f.mechanism_y) {
+    labels.push_back(column_words(c));
+    units.push_back(column_unit_markup(c));
+  }
+  p.y.label = labels.size() == 1 ? with_unit_markup(labels[0], units[0]) : shared_axis_label(labels, units);
+  p.x.scale = f.log_x ? plot::Scale::log : plot::Scale::linear;
+  p.y.scale = f.log_y ? plot::Scale::log : plot::Scale::linear;
+  std::vector<MechanismColumn> columns{*f.mechanism_x};
+  columns.insert(columns.end(), f.mechanism_y.begin(), f.mechanism_y.end());
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    const MechanismSampledRun data = sample_mechanism_run(runs[r], run_sample_times(runs[r].options, f.every), columns);
+    for (std::size_t k = 0; k < f.mechanism_y.size(); ++k) {
+      plot::Series series;
+      const std::string& y_name = labels[k];
+      series.name = runs.size() == 1 ? (f.mechanism_y.size() == 1 ? runs[r].label : y_name)
+                                     : (f.mechanism_y.size() == 1 ? runs[r].label : runs[r].label + ": " + y_name);
+      series.color = r % plot::palette_size;
+      series.dash = kDashes[k % kDashes.size()];
+      series.points.reserve(data.columns[0].size());
+      for (std::size_t i = 0; i < data.columns[0].size(); ++i)
+        series.points.push_back({data.columns[0][i], data.columns[k + 1][i]});
+      p.series.push_back(std::move(series));
+    }
+  }
+  return p;
+}
+
 /// The figure's series for every run, sampled and put into a plot description: runs
 /// by colour, series by dash.
 plot::Plot time_plot(const Figure& f, const std::vector<Run>& runs) {
+  if (f.mechanism_x) return mechanism_plot(f, runs);
   plot::Plot p;
   p.title = f.title;
   p.x.label = series_axis_label(f.x);

@@ -20,6 +20,7 @@ TEST(LessonRenderStep, TakesEveryRenderFlag) {
   std::set<std::string> keys;
   for (const auto& k : lesson::step_keys("render")) keys.insert(std::string(k.name));
   for (const auto& k : lesson::run_keys()) keys.insert(std::string(k.name));
+  for (const auto& k : lesson::common_step_keys()) keys.insert(std::string(k.name));  // mechanism
   for (const auto& k : kInputKeys) keys.insert(std::string(k.key));
   // Not lesson keys: the lesson names the output (out) in its folder, takes its inputs
   // from [parameters], [state] and set steps, and manages progress itself.

@@ -380,11 +380,9 @@ TEST(LessonErrors, ABrokenLessonMakesNothing) {
   EXPECT_EQ(r.out, "");
   EXPECT_EQ(r.err,
             "linkage: error: " + broken.string() +
-                ":11:1: step 2 (render): unknown key 'fsp' (did you mean 'fps'?); valid keys: kind, heading, out, "
-                "caption, fps, size, quality, at, speed, show, hide, camera, view, theme, title, arrow_scale, "
-                "mechanism, set, "
-                "trail, ensemble, spread, compare, panel, captions, case, "
-                "integrator, dt, "
+                ":11:1: step 2 (render): unknown key 'fsp' (did you mean 'fps'?); valid keys: kind, heading, "
+                "mechanism, out, caption, fps, size, quality, at, speed, show, hide, camera, view, theme, title, "
+                "arrow_scale, trail, ensemble, spread, compare, panel, captions, set, case, integrator, dt, "
                 "rtol, atol, duration, stabilize, baumgarte_alpha, baumgarte_beta, L, w, b, m, g, x1, y1, theta1, "
                 "theta2, x1_dot, y1_dot, theta1_dot, theta2_dot\n");
   EXPECT_FALSE(fs::exists(out));
