@@ -20,7 +20,10 @@ namespace linkage::lesson {
 
 /// Names a lesson that names a mechanism may use besides the quantities, each with its
 /// value: the mechanism's parameters, definitions and body inertias (I, I_1), at its
-/// parameter values. Where a name is also a quantity's, the mechanism's wins.
+/// parameter values; its initial coordinates and rates ("2.theta", "S.s_dot") and the Case 3
+/// unknowns at the start with what that case recovers ("2.theta_ddot", "B.force_x",
+/// "O.force_y", "S.normal"), named and valued as `linkage solve --mechanism --format json`.
+/// Where a name is also a quantity's, the mechanism's wins.
 using MechanismNames = std::map<std::string, GiNaC::ex>;
 [[nodiscard]] MechanismNames mechanism_names(const sym::System& system);
 

@@ -190,8 +190,7 @@ class Parser {
     if (!lesson_mechanism_.empty()) {
       try {
         const auto built = build(lesson_mechanism_, {}, top.where("mechanism"));
-        mechanism_names_ = mechanism_names(*built->system);
-        step_names_ = mechanism_names_;
+        if (top.has("description")) step_names_ = names_of(*built);
         step_spec_ = lesson_mechanism_;
         for (const Parameter& p : built->system->mechanism().parameters) settable_names_.push_back(p.name);
         for (const sym::GeneralizedCoordinate& g : built->system->coordinates()) {
@@ -255,6 +254,13 @@ class Parser {
         step_settings_.clear();
       }
     }
+  }
+
+  /// The names {{...}} and answers may use on `built`, worked out once per mechanism and settings.
+  const MechanismNames& names_of(const BuiltMechanism& built) {
+    auto [it, fresh] = names_cache_.try_emplace(&built);
+    if (fresh) it->second = mechanism_names(*built.system);
+    return it->second;
   }
 
   fs::path referenced_file(const TableReader& r, std::string_view key, const std::string& name) const {
@@ -321,7 +327,7 @@ class Parser {
         if (e.code() != ExitCode::bad_input) throw;
         rethrow_at(e, {&r});
       }
-      step_names_ = mechanism_names(*step.mechanism->system);
+      if (step.kind == StepKind::say || step.kind == StepKind::exercise) step_names_ = names_of(*step.mechanism);
     }
 
     switch (step.kind) {
@@ -335,7 +341,7 @@ class Parser {
         step.body = PauseStep{r.string("prompt").value_or("Press Enter to continue")};
         break;
       case StepKind::exercise:
-        step.body = parse_exercise(r, inputs);
+        step.body = parse_exercise(r, inputs, step);
         break;
       case StepKind::solve:
         step.body = parse_solve(r, inputs, step);
@@ -429,7 +435,30 @@ class Parser {
     return step;
   }
 
-  ExerciseStep parse_exercise(const TableReader& r, const Inputs& inputs) const {
+  /// The unit of a name of the mechanism's (a parameter, "2.theta", "S.s_dot",
+  /// "2.theta_ddot", "B.force_x", "S.moment"); empty when it has none.
+  static std::string mechanism_unit(const sym::System& system, const std::string& name) {
+    for (const Parameter& p : system.mechanism().parameters)
+      if (p.name == name) return p.unit;
+    auto ends = [&](std::string_view tail) { return name.size() > tail.size() && name.ends_with(tail); };
+    for (const std::string_view force : {".force_x", ".force_y", ".normal"})
+      if (ends(force)) return "N";
+    if (ends(".moment")) return "N m";
+    std::string base = name, per;
+    if (ends("_ddot")) {
+      base.resize(name.size() - 5);
+      per = "/s^2";
+    } else if (ends("_dot")) {
+      base.resize(name.size() - 4);
+      per = "/s";
+    }
+    const std::string axis = base.substr(base.rfind('.') + 1);
+    if (axis == "theta") return "rad" + per;
+    if (axis == "x" || axis == "y" || axis == "s") return "m" + per;
+    return "";
+  }
+
+  ExerciseStep parse_exercise(const TableReader& r, const Inputs& inputs, const Step& step) const {
     ExerciseStep e;
     r.require("question");
     r.require("answer");
@@ -451,6 +480,8 @@ class Parser {
       e.unit = *unit;
     else if (const QuantityInfo* q = e.answer.single_quantity())
       e.unit = q->unit;
+    else if (step.mechanism)
+      e.unit = mechanism_unit(*step.mechanism->system, e.answer.text());
     e.tolerance = r.number("tolerance", 0, kInf, "valid: tolerance >= 0");
     e.relative_tolerance = r.number("relative_tolerance", 0, 1, "valid: 0 to 1").value_or(e.tolerance ? 0.0 : 0.01);
     e.attempts = static_cast<int>(r.integer("attempts", 1, 10).value_or(3));
@@ -910,7 +941,7 @@ class Parser {
   std::vector<std::string> step_settings_;
   MechanismNames step_names_;  // names of the step's mechanism for {{...}} and answers
   mutable std::map<std::string, std::shared_ptr<const BuiltMechanism>> built_;
-  MechanismNames mechanism_names_;  // its names for {{...}} and answers, when it has one
+  std::map<const BuiltMechanism*, MechanismNames> names_cache_;
   [[nodiscard]] const MechanismNames* names() const { return step_spec_.empty() ? nullptr : &step_names_; }
   fs::path dir_;
   std::map<std::string, std::string> artifacts_;  // file name -> the step that writes it

@@ -130,6 +130,7 @@ class Reader {
       expect(')');
       return e;
     }
+    if (digit(c) && numeric_body_name()) return name();
     if (digit(c) || c == '.') return number();
     if (std::isalpha(static_cast<unsigned char>(c)) != 0 || c == '_') return name();
     fail(pos_, "unexpected '" + std::string(1, c) + "'");
@@ -167,12 +168,35 @@ class Reader {
     const GiNaC::numeric ten(10);
     return scale >= 0 ? whole / GiNaC::pow(ten, scale) : whole * GiNaC::pow(ten, -scale);
   }
+  // Digits '.' a letter or '_' begin a dotted name whose body is numeric ("2.theta",
+  // "2.theta_ddot"), unless the letter starts an exponent ("2.e5", "2.E-3") and the name is
+  // not known: "2.5" and "2.e5" stay numbers.
+  [[nodiscard]] bool numeric_body_name() const {
+    std::size_t j = pos_;
+    while (j < text_.size() && digit(text_[j])) ++j;
+    if (j + 1 >= text_.size() || text_[j] != '.') return false;
+    const char c = text_[j + 1];
+    if (std::isalpha(static_cast<unsigned char>(c)) == 0 && c != '_') return false;
+    std::size_t end = j + 1;
+    while (end < text_.size() && word(text_[end])) ++end;
+    if (names_.symbols.count(std::string(text_.substr(pos_, end - pos_))) > 0) return true;
+    const bool exponent = (c == 'e' || c == 'E') && j + 2 < text_.size() &&
+                          (digit(text_[j + 2]) || ((text_[j + 2] == '-' || text_[j + 2] == '+') &&
+                                                   j + 3 < text_.size() && digit(text_[j + 3])));
+    return !exponent;
+  }
+  // A name, dotted as BODY.NAME ("B.force_x", "2.theta") when a '.' and a letter follow.
   ex name() {
     const std::size_t start = pos_;
     while (pos_ < text_.size() && word(text_[pos_])) ++pos_;
+    while (pos_ + 1 < text_.size() && text_[pos_] == '.' &&
+           (std::isalpha(static_cast<unsigned char>(text_[pos_ + 1])) != 0 || text_[pos_ + 1] == '_')) {
+      ++pos_;
+      while (pos_ < text_.size() && word(text_[pos_])) ++pos_;
+    }
     const std::string w(text_.substr(start, pos_ - start));
     skip_space();
-    if (accept('(')) return call(w, start);
+    if (w.find('.') == std::string::npos && accept('(')) return call(w, start);
     if (const auto it = names_.symbols.find(w); it != names_.symbols.end()) return it->second;
     std::vector<std::string> valid, candidates;
     for (const auto& [n, value] : names_.symbols) {

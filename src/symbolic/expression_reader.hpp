@@ -6,6 +6,8 @@
 //   unary   := ('-' | '+') unary | power
 //   power   := primary ('^' unary)?
 //   primary := number | name | function '(' expr (',' expr)* ')' | '(' expr ')'
+//   name    := word ('.' word)*   e.g. "m", "B.force_x", "2.theta" (digits '.' a letter
+//              begin a name, unless it is unknown and the letter starts an exponent: "2.e5")
 // Numbers are exact (0.08 is 8/100), so expanding leaves no float residue. Our own reader
 // rather than GiNaC's parser, which reads 2*-3+1 as -4, crashes on sin(), gives no position
 // and accepts I, Euler and {lists}. Bounds: kMaxExpressionLength characters, kMaxNesting

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "support/test_support.hpp"
@@ -150,6 +151,30 @@ set = ["q=0.1"]
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("c.toml:5:7: step 1 (simulate):"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("'q'"), std::string::npos) << r.err;
+}
+
+/// The number printed after `lead` (an exercise's "Answer: ", a sentence's words).
+double number_after(const std::string& text, const std::string& lead) {
+  const std::size_t at = text.find(lead);
+  EXPECT_NE(at, std::string::npos) << lead << " in " << text;
+  return at == std::string::npos ? std::nan("") : std::stod(text.substr(at + lead.size()));
+}
+
+TEST_F(MechanismLesson, AnswersAndValuesAreSolvesNumbersAtTheStepsSettings) {
+  ASSERT_EQ(result_->exit_code, 0) << result_->err;
+  const RunResult solve = run_linkage({"solve", "--mechanism", "slider-crank", "--set", "2.theta=0.3", "--set",
+                                       "a=0.08", "--case", "3", "--format", "json"});
+  ASSERT_EQ(solve.exit_code, 0) << solve.err;
+  const nlohmann::json json = nlohmann::json::parse(solve.out);
+  const double alpha = json["cases"][0]["solution"]["2.theta_ddot"].get<double>();
+  EXPECT_NEAR(number_after(result_->out, "Exercise. What is the crank's angular acceleration at the start?\nAnswer: "),
+              alpha, 1e-12 * std::fabs(alpha));
+  EXPECT_NE(result_->out.find(" rad/s^2\n"), std::string::npos);  // the unit from the name
+  EXPECT_DOUBLE_EQ(number_after(result_->out, "the crank turns at "), json["state"]["2.theta_dot"].get<double>());
+  const double force = json["cases"][0]["solution"]["B.force_x"].get<double>();
+  EXPECT_NEAR(number_after(result_->out, "pushes the piston with "), force, 1e-3 * std::fabs(force));  // 4 digits
+  // A step's own mechanism starts from its file's values.
+  EXPECT_DOUBLE_EQ(number_after(result_->out, "And the four-bar's first coordinate?\nAnswer: "), 1.0);
 }
 
 }  // namespace

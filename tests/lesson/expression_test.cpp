@@ -1,6 +1,7 @@
 // Answer expressions and {{...}} placeholders over the named quantities.
 #include "lesson/expression.hpp"
 
+#include <ginac/ginac.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -130,6 +131,39 @@ TEST(TextTemplate, RefusesValuesThatAreNotFinite) {
   EXPECT_NE(error("{{log(x1 - 1)}}").find("{{log(x1 - 1)}} is -inf"), std::string::npos);
   EXPECT_NE(error("{{1/0}}").find("division by zero"), std::string::npos);  // found when read
   EXPECT_EQ(error("{{D}} and {{1/g}} are finite"), "");
+}
+
+// Dotted names, with a numeric body too: "2.theta" is a name when known, "2.5" and
+// "2.e5" stay numbers, and an unknown one names the nearest known name.
+TEST(Expression, ReadsDottedMechanismNames) {
+  MechanismNames names;
+  names["2.theta"] = GiNaC::numeric(1, 2);
+  names["2.theta_ddot"] = GiNaC::numeric(-3);
+  names["B.force_x"] = GiNaC::numeric(4);
+  names["e"] = GiNaC::numeric(10);
+  auto value = [&](const std::string& text) {
+    return Expression::parse(text, "t", &names).evaluate(evaluate_quantities(Inputs{}));
+  };
+  EXPECT_DOUBLE_EQ(value("2.theta"), 0.5);
+  EXPECT_DOUBLE_EQ(value("2*2.theta_ddot + B.force_x"), -2.0);
+  EXPECT_DOUBLE_EQ(value("2.5 + 2.theta"), 3.0);
+  EXPECT_DOUBLE_EQ(value("2.e2"), 200.0);
+  EXPECT_DOUBLE_EQ(value("2.5e1"), 25.0);
+  std::string message;
+  try {
+    (void)Expression::parse("1 + 2.thet", "f.toml:3:10: answer", &names);
+  } catch (const Error& e) {
+    message = e.what();
+  }
+  EXPECT_NE(message.find("f.toml:3:10: answer: unknown name '2.thet' at character 5"), std::string::npos) << message;
+  EXPECT_NE(message.find("did you mean '2.theta'?"), std::string::npos) << message;
+  try {
+    (void)Expression::parse("B.forcex", "f.toml:3:10: answer", &names);
+  } catch (const Error& e) {
+    message = e.what();
+  }
+  EXPECT_NE(message.find("unknown name 'B.forcex'"), std::string::npos) << message;
+  EXPECT_NE(message.find("did you mean 'B.force_x'?"), std::string::npos) << message;
 }
 
 }  // namespace
