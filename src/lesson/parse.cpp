@@ -907,7 +907,6 @@ class Parser {
     s.out = strip_extension(artifact_name(r, "out"), {".csv", ".png", ".svg"});
     s.caption = r.string("caption").value_or("");
     s.runs = runs(r, inputs, true);
-    if (s.runs.front().built) r.fail("kind", "a compare step on a mechanism is not supported yet");
     const std::vector<std::string_view> columns(kCompareColumnNames.begin(), kCompareColumnNames.end());
     for (std::size_t i : choice_list(r, "columns", columns)) s.columns.push_back(static_cast<CompareColumn>(i));
     if (s.columns.empty())
@@ -915,10 +914,17 @@ class Parser {
     s.every = sample_interval(r, longest(s.runs), 400);
     s.title = r.string("title").value_or("");
     figure_size(r, s.width, s.height);
-    if (auto y = r.choice("plot", series_names())) {
+    const bool on_mechanism = s.runs.front().built != nullptr;
+    if (auto y = on_mechanism ? r.string("plot") : r.choice("plot", series_names())) {
       Figure f;
-      f.y = {*find_series(*y)};
-      f.x = *find_series("t");
+      if (on_mechanism) {
+        const std::vector<MechanismColumn> all = mechanism_columns(*s.runs.front().built->system);
+        f.mechanism_y = {find_mechanism_column(all, *y, r.prefix("plot") + "plot")};
+        f.mechanism_x = all.front();  // t
+      } else {
+        f.y = {*find_series(*y)};
+        f.x = *find_series("t");
+      }
       f.log_y = r.boolean("log_y").value_or(true);
       f.title = s.title;
       f.every = s.every;

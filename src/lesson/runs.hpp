@@ -55,6 +55,12 @@ struct RunFigures {
 [[nodiscard]] State reference_final_state(const Run& run);
 inline constexpr double kReferenceTolerance = 1e-13;
 
+/// What a mechanism's final error compares: every body's x, y, theta and every slider's
+/// travel (the default trajectory columns without t), the same in every case.
+[[nodiscard]] std::vector<MechanismColumn> mechanism_final_columns(const sym::System& system);
+/// Those columns at the end of the reference run (DOP853 at kReferenceTolerance on Case 3).
+[[nodiscard]] std::vector<double> mechanism_reference_final(const Run& run);
+
 /// Largest |a - b| over x1, y1, theta1, theta2.
 [[nodiscard]] double final_error(const BodyState& a, const State& reference);
 

@@ -177,5 +177,50 @@ TEST_F(MechanismLesson, AnswersAndValuesAreSolvesNumbersAtTheStepsSettings) {
   EXPECT_DOUBLE_EQ(number_after(result_->out, "And the four-bar's first coordinate?\nAnswer: "), 1.0);
 }
 
+TEST_F(MechanismLesson, SolvePrintsTheCommandsWorkedSolution) {
+  ASSERT_EQ(result_->exit_code, 0) << result_->err;
+  const RunResult solve = run_linkage(
+      {"solve", "--mechanism", "slider-crank", "--set", "2.theta=0.3", "--set", "a=0.08", "--case", "3", "--unicode"});
+  ASSERT_EQ(solve.exit_code, 0) << solve.err;
+  // The solution table, line for line as the command prints it.
+  const std::size_t begin = solve.out.find("  Solution:\n");
+  ASSERT_NE(begin, std::string::npos) << solve.out;
+  const std::string table = solve.out.substr(begin, solve.out.find("\n\n", begin) - begin);
+  EXPECT_NE(result_->out.find(table), std::string::npos) << table << "\n" << result_->out;
+  EXPECT_NE(result_->out.find("Case 3: five equations in generalized coordinates"), std::string::npos);
+  EXPECT_EQ(result_->out.find("Numeric A | B"), std::string::npos);  // show = ["solution"]
+  // lesson.md has the Markdown form.
+  EXPECT_NE(read_text(out() / "lesson.md").find("| $\\ddot{\\theta}_2$ | -228.064 | rad/s² |"), std::string::npos)
+      << read_text(out() / "lesson.md");
+}
+
+TEST_F(MechanismLesson, CompareMeasuresEveryRunAgainstTheReference) {
+  ASSERT_EQ(result_->exit_code, 0) << result_->err;
+  std::vector<std::string> header;
+  std::istringstream csv(read_text(out() / "methods.csv"));
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line, "run,final_error,energy_error,constraint_error,steps,rejected,rhs_evaluations,run_time");
+  std::vector<std::vector<std::string>> rows;
+  while (std::getline(csv, line)) {
+    std::istringstream fields(line);
+    rows.emplace_back();
+    for (std::string field; std::getline(fields, field, ',');) rows.back().push_back(field);
+  }
+  ASSERT_EQ(rows.size(), 4U);
+  // RK4 is fourth order: half the step, about a sixteenth of the error (at least an eighth).
+  const double coarse = std::stod(rows[0][1]), fine = std::stod(rows[1][1]);
+  EXPECT_GT(coarse, 8 * fine);
+  EXPECT_LT(fine, 1e-4);
+  EXPECT_EQ(rows[0][4], "50");   // 0.5 s at 0.01 s
+  EXPECT_EQ(rows[0][6], "200");  // four right-hand sides a step
+  EXPECT_EQ(rows[3][4], "500");
+  // Projection keeps Case 1 on its constraints; the energy balance drifts with Euler.
+  EXPECT_LT(std::stod(rows[3][3]), 1e-12);
+  EXPECT_GT(std::stod(rows[3][2]), 1e-3);
+  for (const char* file : {"methods.png", "methods.svg", "methods-cost.png", "methods-cost.svg"})
+    EXPECT_GT(fs::file_size(out() / file), 1000U) << file;
+}
+
 }  // namespace
 }  // namespace linkage::test
