@@ -63,6 +63,7 @@ struct SayStep {
 struct SetStep {
   std::vector<std::string> keys;      // the inputs this step sets, in file order
   std::vector<std::string> settings;  // on a mechanism: NAME=VALUE, in file order
+  std::vector<std::string> changes;   // and each as "a = 0.08 m (was 0.06)"
 };
 struct PauseStep {
   std::string prompt;

@@ -2,6 +2,7 @@
 // any step runs: a lesson that does not validate renders nothing.
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <fstream>
 #include <functional>
 #include <limits>
@@ -396,6 +397,30 @@ class Parser {
     return {text_template(content.str(), r.prefix("file") + path.string(), inputs, names())};
   }
 
+  /// A parameter's value, or an initial coordinate's or rate's with the loops closed, and its unit.
+  static double setting_value(const BuiltMechanism& built, const std::string& name, std::string& unit) {
+    const sym::System& system = *built.system;
+    for (const Parameter& p : system.mechanism().parameters)
+      if (p.name == name) {
+        unit = p.unit;
+        return p.value;
+      }
+    for (const sym::GeneralizedCoordinate& g : system.coordinates()) {
+      const std::string& key = g.coordinate.key;
+      const bool angle = key.ends_with(".theta");
+      if (name == key) {
+        unit = angle ? "rad" : "m";
+        return sym::to_double(built.initial.at(g.symbols.q));
+      }
+      if (name == key + "_dot") {
+        unit = angle ? "rad/s" : "m/s";
+        return sym::to_double(built.initial.at(g.symbols.q_dot));
+      }
+    }
+    unit.clear();
+    return std::nan("");
+  }
+
   SetStep parse_set(const TableReader& r, Inputs& inputs) {
     SetStep step;
     if (!lesson_mechanism_.empty()) {
@@ -410,11 +435,20 @@ class Parser {
                            join_names(settable_names_));
       std::vector<std::string> settings = lesson_settings_;
       settings.insert(settings.end(), step.settings.begin(), step.settings.end());
+      std::shared_ptr<const BuiltMechanism> before, after;
       try {
-        (void)build(lesson_mechanism_, settings, r.where(r.has("set") ? "set" : ""));
+        before = build(lesson_mechanism_, lesson_settings_, r.where(""));
+        after = build(lesson_mechanism_, settings, r.where(r.has("set") ? "set" : ""));
       } catch (const Error& e) {
         if (e.code() != ExitCode::bad_input) throw;
         rethrow_at(e, {&r});
+      }
+      for (const std::string& setting : step.settings) {
+        const std::string name = setting.substr(0, setting.find('='));
+        std::string unit;
+        const double was = setting_value(*before, name, unit), now = setting_value(*after, name, unit);
+        step.changes.push_back(name + " = " + format_roundtrip(now) + (unit.empty() ? "" : " " + unit) + " (was " +
+                               format_roundtrip(was) + ")");
       }
       lesson_settings_ = std::move(settings);
       return step;

@@ -109,11 +109,7 @@ void run_set(RunContext& c, const Step& step, const SetStep& s) {
       step.number > 1 ? c.lesson.steps[static_cast<std::size_t>(step.number - 2)].inputs : c.lesson.inputs;
   std::string text = "*From here on:* ";
   if (!s.settings.empty()) {  // a mechanism's NAME=VALUE settings
-    for (std::size_t i = 0; i < s.settings.size(); ++i) {
-      std::string setting = s.settings[i];
-      if (const auto equals = setting.find('='); equals != std::string::npos) setting.replace(equals, 1, " = ");
-      text += (i > 0 ? ", " : "") + setting;
-    }
+    for (std::size_t i = 0; i < s.changes.size(); ++i) text += (i > 0 ? ", " : "") + s.changes[i];
     c.both([&](Writer& w) { w.markdown(text + "."); });
     return;
   }

@@ -95,7 +95,8 @@ TEST_F(MechanismLesson, ThePistonStartsWhereTheLoopCloses) {
   const auto set_rows = csv_rows(read_text(out() / "crank-0.3.csv"), header);
   ASSERT_EQ(set_rows.size(), 3U);
   EXPECT_DOUBLE_EQ(set_rows[0][1], 0.3);
-  EXPECT_NE(result_->out.find("From here on: a = 0.08, 2.theta = 0.3."), std::string::npos) << result_->out;
+  EXPECT_NE(result_->out.find("From here on: a = 0.08 m (was 0.06), 2.theta = 0.3 rad (was 0.5)."), std::string::npos)
+      << result_->out;
 }
 
 TEST_F(MechanismLesson, PlotsToPngAndSvg) {
@@ -218,7 +219,8 @@ TEST_F(MechanismLesson, CompareMeasuresEveryRunAgainstTheReference) {
   // Projection keeps Case 1 on its constraints; the energy balance drifts with Euler.
   EXPECT_LT(std::stod(rows[3][3]), 1e-12);
   EXPECT_GT(std::stod(rows[3][2]), 1e-3);
-  for (const char* file : {"methods.png", "methods.svg", "methods-cost.png", "methods-cost.svg"})
+  for (const char* file :
+       {"methods.png", "methods.svg", "methods-cost.png", "methods-cost.svg", "crank-still.png"})  // and the render
     EXPECT_GT(fs::file_size(out() / file), 1000U) << file;
 }
 

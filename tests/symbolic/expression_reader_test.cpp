@@ -153,5 +153,25 @@ TEST(ExpressionReader, NestingAndLengthAreBounded) {
   EXPECT_EQ(value(std::string(500, '0')), 0.0);
 }
 
+// Dotted names, the body a number too, when the table holds them; numbers stay numbers,
+// and a dotted name no table holds is one unknown name (not "2." and a stray word).
+TEST(ExpressionReader, ReadsDottedNamesWithNumericBodies) {
+  const GiNaC::symbol theta("2.theta"), force("B.force_x");
+  const GiNaC::symtab table{{"2.theta", theta}, {"B.force_x", force}, {"a", kA}};
+  const GiNaC::ex sum = read_expression("2.theta * 2 + B.force_x - 2.5 + 1.e1", "t", {table});
+  EXPECT_DOUBLE_EQ(evaluate(sum, {{theta, GiNaC::numeric(1)}, {force, GiNaC::numeric(3)}}), 2 + 3 - 2.5 + 10);
+  std::string message;
+  try {
+    (void)read_expression("a + 2.thta", "m.toml:4:7", {table});
+  } catch (const Error& e) {
+    message = e.what();
+  }
+  EXPECT_NE(message.find("m.toml:4:7: unknown name '2.thta' at character 5"), std::string::npos) << message;
+  EXPECT_NE(message.find("did you mean '2.theta'?"), std::string::npos) << message;
+  // Without such names in the table, 2.x is an unknown name and 2.5 a number as ever.
+  EXPECT_NE(error_of("2.x").find("unknown name '2.x'"), std::string::npos) << error_of("2.x");
+  EXPECT_DOUBLE_EQ(value("2.5 * a"), 7.5);
+}
+
 }  // namespace
 }  // namespace linkage::sym
