@@ -115,6 +115,7 @@ struct Figure {
   std::vector<MechanismColumn> mechanism_y;
   std::optional<MechanismColumn> mechanism_x;
   bool log_x = false, log_y = false;
+  bool difference = false;  // plot steps: each run after the first as abs(run - first run)
   std::string title;
   double every = 0;  // s between samples
   int width = 900, height = 600;

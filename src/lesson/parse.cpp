@@ -18,6 +18,7 @@
 #include "lesson/canonical.hpp"
 #include "lesson/lesson.hpp"
 #include "lesson/mechanism_render.hpp"
+#include "lesson/runs.hpp"
 #include "lesson/schema.hpp"
 #include "model/inputs_toml.hpp"
 #include "model/mechanism_toml.hpp"
@@ -905,6 +906,20 @@ class Parser {
     return f;
   }
 
+  /// `difference` subtracts the first run sample by sample: two runs or more, against
+  /// time, all sampled at the same times.
+  static void check_difference(const TableReader& r, const PlotStep& s) {
+    if (s.runs.size() < 2)
+      r.fail("difference", "'difference' needs two runs or more in 'runs' (the first is the reference)");
+    if (r.has("x") && r.string("x").value_or("t") != "t")
+      r.fail("difference", "'difference' compares runs at the same time; remove 'x' (the default is t)");
+    const std::vector<double> times = run_sample_times(s.runs.front().options, s.figure.every);
+    for (const Run& run : s.runs)
+      if (run_sample_times(run.options, s.figure.every) != times)
+        r.fail("difference", "run '" + run.label + "' is sampled at other times than run '" + s.runs.front().label +
+                                 "' (another duration or fixed step); 'difference' needs the same");
+  }
+
   PlotStep parse_plot(const TableReader& r, const Inputs& inputs) const {
     PlotStep s;
     s.out = strip_extension(artifact_name(r, "out"), {".png", ".svg"});
@@ -912,6 +927,8 @@ class Parser {
     s.runs = runs(r, inputs, false);
     r.require("y");
     s.figure = figure(r, s.runs);
+    s.figure.difference = r.boolean("difference").value_or(false);
+    if (s.figure.difference) check_difference(r, s);
     if (s.runs.front().built) {
       s.figure.mechanism_y = mechanism_column_list(r, "y", *s.runs.front().built->system, false);
       if (s.figure.mechanism_y.empty()) r.fail("y", "'y' is empty; name at least one column");

@@ -8,6 +8,7 @@
 #include "core/interrupt.hpp"
 #include "core/number_format.hpp"
 #include "lesson/canonical.hpp"
+#include "lesson/plot_difference.hpp"
 #include "lesson/runner_context.hpp"
 #include "lesson/runs.hpp"
 #include "render/panel.hpp"
@@ -427,7 +428,13 @@ void run_simulate(RunContext& c, const Step& step, const SimulateStep& s) {
 
 void run_plot(RunContext& c, const Step& step, const PlotStep& s) {
   c.cached(step, [&] {
-    write_plot(c, step, time_plot(s.figure, s.runs), s.out, s.figure.width, s.figure.height);
+    plot::Plot p = time_plot(s.figure, s.runs);
+    if (s.figure.difference) {
+      std::vector<std::string> labels;
+      for (const Run& run : s.runs) labels.push_back(run.label);
+      p = difference_from_first(std::move(p), labels, p.series.size() / s.runs.size());
+    }
+    write_plot(c, step, p, s.out, s.figure.width, s.figure.height);
     return nlohmann::json::object();
   });
   c.both([&](Writer& w) { w.figure(c.figure(s.out + ".png", FigureRef::Kind::image, s.caption)); });

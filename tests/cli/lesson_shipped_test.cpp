@@ -57,11 +57,11 @@ void expect_real_file(const fs::path& file) {
 TEST(ShippedLessons, TheCourseIsComplete) {
   std::vector<std::string> names;
   for (const fs::path& file : shipped_lessons()) names.push_back(file.stem().string());
-  EXPECT_EQ(names,
-            (std::vector<std::string>{"01-moments-of-inertia", "02-holonomic-constraints", "03-case1-eight-equations",
-                                      "04-case2-six-equations", "05-case3-four-equations", "06-numerical-example",
-                                      "07-constraint-drift", "08-accuracy-and-cost", "09-beyond-the-equations",
-                                      "12-slider-crank", "13-four-bar"}));
+  EXPECT_EQ(names, (std::vector<std::string>{
+                       "01-moments-of-inertia", "02-holonomic-constraints", "03-case1-eight-equations",
+                       "04-case2-six-equations", "05-case3-four-equations", "06-numerical-example",
+                       "07-constraint-drift", "08-accuracy-and-cost", "09-beyond-the-equations",
+                       "10-double-pendulum-chaos", "11-unequal-blocks", "12-slider-crank", "13-four-bar"}));
 }
 
 TEST(ShippedLessons, RunAtDraftQualityAndCache) {
@@ -162,6 +162,43 @@ TEST(ShippedLessons, TheMechanismLessonsAcceptTheAnswersTheFormulasGive) {
       std::acos((a_long * a_long + d * d - (b + c) * (b + c)) / (2 * a_long * d))};
   EXPECT_EQ(right_answers((fs::path(LINKAGE_SOURCE_DIR) / "lessons/13-four-bar.toml").string(), grashof),
             static_cast<int>(grashof.size()));
+}
+
+// Every exercise of the course takes its own printed answer: run the exercises alone, read
+// each "Answer: VALUE" (the digits a student sees), then answer them with --step and count
+// the rights. An answer that does not evaluate, or a tolerance tighter than the printed
+// digits, fails here.
+TEST(ShippedLessons, EveryExerciseAcceptsItsPrintedAnswer) {
+  TempDir dir;
+  const std::regex answer_line(R"(Answer: (-?[0-9]+(?:\.[0-9]+)?(?:e[-+]?[0-9]+)?))");
+  int total = 0;
+  for (const fs::path& file : shipped_lessons()) {
+    SCOPED_TRACE(file.filename().string());
+    const lesson::Lesson parsed = lesson::parse_lesson(file);
+    std::string only;
+    int exercises = 0;
+    for (const lesson::Step& step : parsed.steps)
+      if (std::holds_alternative<lesson::ExerciseStep>(step.body)) {
+        if (!only.empty()) only += ',';
+        only += std::to_string(step.number);
+        ++exercises;
+      }
+    if (exercises == 0) continue;
+    const std::string out = (dir / parsed.name).string();
+    const RunResult shown = run_linkage({"lesson", file.string(), "--out", out, "--only", only});
+    ASSERT_EQ(shown.exit_code, 0) << shown.err;
+    std::string answers;
+    int found = 0;
+    for (auto it = std::sregex_iterator(shown.out.begin(), shown.out.end(), answer_line); it != std::sregex_iterator();
+         ++it, ++found)
+      answers += (*it)[1].str() + "\n";
+    ASSERT_EQ(found, exercises) << shown.out;
+    const RunResult asked = run_linkage({"lesson", file.string(), "--out", out, "--only", only, "--step"}, answers);
+    ASSERT_EQ(asked.exit_code, 0) << asked.err;
+    EXPECT_EQ(count(asked.out, "Right. The answer is "), exercises) << asked.out;
+    total += exercises;
+  }
+  EXPECT_GE(total, 30);
 }
 
 // Lesson 06 prints the spec's worked example: every derived value and every unknown of
