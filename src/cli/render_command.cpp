@@ -48,7 +48,7 @@ struct RenderFlags {
   CLI::Option* view_option = nullptr;
   MechanismOptions mechanism;
   std::vector<std::string> trails;  // --trail BODY.POINT, with --mechanism
-  OverlayFlags overlays;            // --ensemble, --spread, --compare, with --mechanism
+  OverlayFlags overlays;            // --ensemble, --spread, --compare
 };
 
 int parse_whole(const std::string& text, const std::string& origin) {
@@ -113,6 +113,7 @@ Clip resolve_clip(const RenderFlags& f) {
   clip.theme = load_theme(clip.settings.theme, assets_dir(LINKAGE_ASSETS_DIR), "theme");
   clip.simulation = resolve_simulation_flags(f.simulation, clip.settings.duration);
   clip.inputs = resolve_inputs(f.inputs);
+  resolve_homework_overlays(f.overlays, clip);
   clip.validate();  // the output's checks first, then what only the flags can say
   const bool still = clip.is_still();
   if (f.at_option->count() > 0 && !still)
@@ -190,7 +191,6 @@ ClipResult render_mechanism(const RenderFlags& f, const ClipProgress& progress) 
 void run_render(const RenderFlags& flags) {
   if (!flags.mechanism.chosen()) {
     if (!flags.trails.empty()) throw Error::input("--trail: applies only with --mechanism");
-    if (flags.overlays.any()) throw Error::input("--ensemble, --spread, --compare: apply only with --mechanism");
     if (!flags.mechanism.settings.empty())
       throw Error::input("--set: applies only with --mechanism; the homework takes its own flags");
   }

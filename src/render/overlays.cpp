@@ -108,25 +108,70 @@ void paint_background(cairo_t* cr, const DrawStyle& style, int width, int height
   cairo_restore(cr);
 }
 
-void paint_grid(cairo_t* cr, const DrawStyle& style, const Camera& camera, const GridSpec& grid, int width,
-                int height) {
-  const View visible = camera.visible();
+double grid_streak_opacity(double band, double line, double spacing) {
+  band = std::fabs(band);
+  if (band < 1.0) return 1.0;
+  const double ink = 2 * line / (band + line);  // a ramp from 0 holding the still line's ink
+  return std::min(1.0, std::max(ink, kGridStreakOpacity * std::min(1.0, spacing / band)));
+}
+
+void paint_grid(cairo_t* cr, const DrawStyle& style, const Camera& camera, const GridSpec& grid, int width, int height,
+                const Camera* earlier) {
+  View visible = camera.visible();
+  if (earlier != nullptr) {  // and the lines that crossed the frame during the shutter interval
+    const View before = earlier->visible();
+    visible = {std::min(visible.xmin, before.xmin), std::min(visible.ymin, before.ymin),
+               std::max(visible.xmax, before.xmax), std::max(visible.ymax, before.ymax)};
+  }
   const double spacing = grid.spacing.metres();
   const double line_width = grid_line_width(style);
-  set_colour(cr, style.theme->grid);
+  const Rgba& colour = style.theme->grid;
+  set_colour(cr, colour);
   cairo_set_line_width(cr, line_width);
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+  // A line that moved a pixel or more in the interval: a band from then (transparent) to
+  // now (most opaque), filled at once; the still ones are stroked together at the end.
+  const auto streak = [&](bool vertical, double then, double now) {
+    const double opacity = grid_streak_opacity(now - then, line_width, spacing * camera.scale());
+    const double direction = now > then ? 1.0 : -1.0;
+    const double from = then - direction * 0.5 * line_width, to = now + direction * 0.5 * line_width;
+    std::unique_ptr<cairo_pattern_t, decltype(&cairo_pattern_destroy)> ramp(
+        vertical ? cairo_pattern_create_linear(from, 0, to, 0) : cairo_pattern_create_linear(0, from, 0, to),
+        &cairo_pattern_destroy);
+    cairo_pattern_add_color_stop_rgba(ramp.get(), 0, colour.r, colour.g, colour.b, 0);
+    cairo_pattern_add_color_stop_rgba(ramp.get(), 1, colour.r, colour.g, colour.b, colour.a * opacity);
+    cairo_save(cr);
+    cairo_new_path(cr);
+    if (vertical)
+      cairo_rectangle(cr, std::min(from, to), 0, std::fabs(to - from), height);
+    else
+      cairo_rectangle(cr, 0, std::min(from, to), width, std::fabs(to - from));
+    cairo_set_source(cr, ramp.get());
+    cairo_fill(cr);
+    cairo_restore(cr);
+  };
+  std::array<double, 2> moved{};  // pixels a line moved along x (vertical lines) and y
+  if (earlier != nullptr) {
+    const Vec2 shift = camera.to_pixels(Vec2::Zero()) - earlier->to_pixels(Vec2::Zero());
+    moved = {shift.x(), shift.y()};
+  }
+  cairo_new_path(cr);
   for_each_grid_line(visible.xmin, visible.xmax, grid.anchor.x(), spacing, [&](long, double x) {
-    const double px = crisp(camera.to_pixels({x, 0.0}).x(), line_width);
-    cairo_move_to(cr, px, 0);
-    cairo_line_to(cr, px, height);
+    const double px = camera.to_pixels({x, 0.0}).x();
+    if (std::fabs(moved[0]) >= 1.0) return streak(true, px - moved[0], px);
+    if (px < -line_width || px > width + line_width) return;
+    cairo_move_to(cr, crisp(px, line_width), 0);
+    cairo_line_to(cr, crisp(px, line_width), height);
+    cairo_stroke(cr);  // now, as a streak's fill would clear the path
   });
   for_each_grid_line(visible.ymin, visible.ymax, grid.anchor.y(), spacing, [&](long, double y) {
-    const double py = crisp(camera.to_pixels({0.0, y}).y(), line_width);
-    cairo_move_to(cr, 0, py);
-    cairo_line_to(cr, width, py);
+    const double py = camera.to_pixels({0.0, y}).y();
+    if (std::fabs(moved[1]) >= 1.0) return streak(false, py - moved[1], py);
+    if (py < -line_width || py > height + line_width) return;
+    cairo_move_to(cr, 0, crisp(py, line_width));
+    cairo_line_to(cr, width, crisp(py, line_width));
+    cairo_stroke(cr);
   });
-  cairo_stroke(cr);
 }
 
 void paint_axes(cairo_t* cr, const DrawStyle& style, const Camera& camera, const GridSpec& grid, int width, int height,
@@ -246,26 +291,32 @@ void paint_path_inset(cairo_t* cr, const DrawStyle& style, const PathInset& inse
   cairo_save(cr);
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
-  // The whole path thin and pale, the part behind G strong.
-  const auto polyline = [&](std::size_t count) {
-    for (std::size_t i = 0; i < count; ++i) {
+  // The part behind G strong, the part ahead dotted: at t = 0 the whole parabola to come,
+  // G at its start.
+  const auto polyline = [&](std::size_t from, std::size_t to) {
+    for (std::size_t i = from; i < to; ++i) {
       const Vec2 p = inset.to_pixels(inset.path[i]);
-      if (i == 0)
-        cairo_move_to(cr, p.x(), p.y());
-      else
-        cairo_line_to(cr, p.x(), p.y());
+      cairo_line_to(cr, p.x(), p.y());
     }
   };
-  polyline(inset.path.size());
-  set_colour(cr, theme.text_muted);
-  cairo_set_line_width(cr, std::max(1.0, 0.8 * style.u));
-  cairo_stroke(cr);
-  polyline(std::min(travelled, inset.path.size()));
+  const std::size_t behind = std::min(travelled, inset.path.size());
   const Vec2 at = inset.to_pixels(now);
-  cairo_line_to(cr, at.x(), at.y());
-  set_colour(cr, theme.trail);
-  cairo_set_line_width(cr, style.trail_width());
-  if (travelled > 0) cairo_stroke(cr);
+  cairo_new_path(cr);
+  cairo_move_to(cr, at.x(), at.y());
+  polyline(behind, inset.path.size());
+  set_colour(cr, theme.text_muted);
+  cairo_set_line_width(cr, std::max(1.2, 1.1 * style.u));
+  const std::array<double, 2> dots{0.0, 3.5 * style.u};
+  cairo_set_dash(cr, dots.data(), 2, 0);
+  cairo_stroke(cr);
+  cairo_set_dash(cr, nullptr, 0, 0);
+  if (behind > 0) {
+    polyline(0, behind);
+    cairo_line_to(cr, at.x(), at.y());
+    set_colour(cr, theme.trail);
+    cairo_set_line_width(cr, style.trail_width());
+    cairo_stroke(cr);
+  }
   cairo_new_path(cr);
   cairo_restore(cr);
   // The heights of the path's ends, so the inset says how far the fall goes.
@@ -355,6 +406,18 @@ void paint_legend(cairo_t* cr, const DrawStyle& style, const std::vector<LegendR
         cairo_move_to(cr, x, centre);
         cairo_line_to(cr, x + glyph_width, centre);
         cairo_stroke(cr);
+        break;
+      }
+      case LegendRow::Glyph::outline:
+      case LegendRow::Glyph::dashed_outline: {
+        // A block's outline, as the other runs are drawn.
+        const std::array<double, 2> dashes{5 * u, 3 * u};
+        cairo_rectangle(cr, x + 2 * u, centre - 4 * u, glyph_width - 4 * u, 8 * u);
+        set_colour(cr, with_alpha(row.colour, row.glyph == LegendRow::Glyph::outline ? 0.7 : 0.9));
+        cairo_set_line_width(cr, 1.3 * style.edge_width());
+        if (row.glyph == LegendRow::Glyph::dashed_outline) cairo_set_dash(cr, dashes.data(), 2, 0);
+        cairo_stroke(cr);
+        cairo_set_dash(cr, nullptr, 0, 0);
         break;
       }
       case LegendRow::Glyph::none:
