@@ -15,8 +15,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// The clip's last time: its duration, or the time of a still.
-double clip_end(const RenderSettings& s, bool still) { return still ? s.at : s.duration; }
+/// The last time drawn: the duration of a clip or frames, the time of a still, or both.
+double clip_end(const RenderSettings& s, bool still, bool frames) {
+  return std::max(still ? s.at : 0.0, !still || frames ? s.duration : 0.0);
+}
 
 bool is_still_out(const std::optional<std::filesystem::path>& out) { return out && out->extension() == ".png"; }
 
@@ -45,7 +47,7 @@ void resolve_compare(const std::string& list, const MechanismOptions& mechanism,
     run.table = std::make_shared<const TrajectoryTable>(
         read_trajectory_csv(list, mechanism_pose_columns(mechanism_geometry(main)),
                             "--compare, to draw the bodies of " + main.mechanism().name + ",", 0.0,
-                            clip_end(clip.settings, is_still_out(clip.out))));
+                            clip_end(clip.settings, is_still_out(clip.out), clip.frames.has_value())));
     clip.compare = std::move(run);
     return;
   }
@@ -188,7 +190,7 @@ void resolve_homework_overlays(const OverlayFlags& flags, Clip& clip) {
       HomeworkRun run{clip.inputs, clip.simulation, fs::path(flags.compare).filename().string(), nullptr};
       run.table = std::make_shared<const TrajectoryTable>(
           read_trajectory_csv(flags.compare, homework_pose_columns(), "--compare, to draw the homework's two blocks,",
-                              0.0, clip_end(clip.settings, clip.is_still())));
+                              0.0, clip_end(clip.settings, clip.is_still(), clip.frames.has_value())));
       clip.compare = std::move(run);
       break;
     }
