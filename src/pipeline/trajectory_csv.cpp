@@ -111,9 +111,10 @@ TrajectoryTable read_trajectory_csv(const std::filesystem::path& file, const std
     for (std::size_t c = 0; c < row.size(); ++c) {
       double value = 0;
       const std::string_view text = row[c];
-      const char* first = text.data() + (text.starts_with('+') ? 1 : 0);
-      const auto [stop, error] = std::from_chars(first, text.data() + text.size(), value);
-      if (text.empty() || error != std::errc{} || stop != text.data() + text.size())
+      const std::string_view digits = text.starts_with('+') ? text.substr(1) : text;
+      const auto [stop, error] = text.empty() ? std::from_chars_result{nullptr, std::errc::invalid_argument}
+                                              : std::from_chars(digits.data(), digits.data() + digits.size(), value);
+      if (error != std::errc{} || stop != digits.data() + digits.size())
         throw Error::input(
             concat({where(number), ": ", table.names[c], " = '", std::string(text), "' is not a number"}));
       if (!std::isfinite(value))

@@ -225,7 +225,9 @@ TEST(TrajectoryCsv, BadRowsNameTheFileAndLine) {
             std::string::npos);
   EXPECT_NE(message("t,x1,y1,theta1,theta2\n\n0,1,2,3,4\n1,1,2,x,4\n").find(file + ":4: theta1 = 'x' is not a number"),
             std::string::npos);
-  EXPECT_EQ(message("t,x1,y1,theta1,theta2\r\n0,1,2,3,4\r\n1,1,2,3,4\r\n"), "(read)");  // CRLF is fine
+  EXPECT_EQ(message("t,x1,y1,theta1,theta2\r\n0,1,2,3,4\r\n1,1,2,3,4\r\n"), "(read)");           // CRLF is fine
+  EXPECT_EQ(message("t, x1, y1, theta1, theta2\n0, +1, 2e0, 3, 4\n1, 1, 2, 3, 4\n"), "(read)");  // spaces, signs
+  EXPECT_NE(message("t,x1,y1,theta1,theta2\n0,1,,3,4\n").find(file + ":2: y1 = '' is not a number"), std::string::npos);
   EXPECT_NE(message("t,x1,y1,theta1,theta2\n0,1,2,3,4\n1,1,2,3,4\n", 1.5).find(file + ":3: the last row"),
             std::string::npos);
   EXPECT_NE(message("t,x1,y1,theta1,theta2\n0,1,2,3,4\n1,inf,2,3,4\n").find(file + ":3: x1 is inf"), std::string::npos);
