@@ -188,9 +188,8 @@ void resolve_homework_overlays(const OverlayFlags& flags, Clip& clip) {
   switch (compare_kind(flags.compare)) {
     case CompareKind::trajectory: {
       HomeworkRun run{clip.inputs, clip.simulation, fs::path(flags.compare).filename().string(), nullptr};
-      run.table = std::make_shared<const TrajectoryTable>(
-          read_trajectory_csv(flags.compare, homework_pose_columns(), "--compare, to draw the homework's two blocks,",
-                              0.0, clip_end(clip.settings, clip.is_still(), clip.frames.has_value())));
+      run.table = std::make_shared<const TrajectoryTable>(read_homework_trajectory(
+          flags.compare, "--compare", clip_end(clip.settings, clip.is_still(), clip.frames.has_value())));
       clip.compare = std::move(run);
       break;
     }

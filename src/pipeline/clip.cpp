@@ -4,6 +4,7 @@
 #include <charconv>
 #include <chrono>
 #include <cmath>
+#include <fstream>
 #include <initializer_list>
 #include <string_view>
 
@@ -183,6 +184,29 @@ void produce_still(const Clip& clip, const ClipProgress& progress, ClipResult& r
 const std::vector<std::string>& homework_pose_columns() {
   static const std::vector<std::string> names{"t", "x1", "y1", "theta1", "theta2"};
   return names;
+}
+
+TrajectoryTable read_homework_trajectory(const std::filesystem::path& file, const std::string& origin, double end) {
+  const std::string purpose = concat({origin, ", to draw the homework's two blocks,"});
+  // Which columns it has decides which the rows are checked against.
+  std::ifstream in(file, std::ios::binary);
+  std::string header;
+  while (in && header.find_first_not_of(" \t\r") == std::string::npos && std::getline(in, header)) {
+  }
+  const std::vector<std::string> mechanism{"t", "1.x", "1.y", "1.theta", "2.theta"};
+  const bool as_mechanism = header.find("1.theta") != std::string::npos && header.find("theta1") == std::string::npos;
+  TrajectoryTable table = read_trajectory_csv(
+      file, as_mechanism ? mechanism : homework_pose_columns(),
+      as_mechanism ? concat({origin, ", to draw the homework's two blocks from two-blocks' columns,"}) : purpose, 0.0,
+      end);
+  for (std::string& name : table.names)
+    for (const InputKey& key : kInputKeys)
+      if (!key.mechanism_key.empty() && name == key.mechanism_key && key.state != nullptr) name = key.key;
+  for (std::string& name : table.names) {  // block 2's centre, not an input
+    if (name == "2.x") name = "x2";
+    if (name == "2.y") name = "y2";
+  }
+  return table;
 }
 
 HomeworkRun homework_compared_run(const std::vector<std::string>& items, const Inputs& inputs,

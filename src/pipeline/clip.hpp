@@ -34,6 +34,13 @@ struct HomeworkRun {
 /// The columns a homework trajectory file needs (x2, y2 are used when present).
 [[nodiscard]] const std::vector<std::string>& homework_pose_columns();
 
+/// A trajectory file of the homework's run, covering 0 .. `end` s: the homework's columns
+/// (homework_pose_columns), or the two-blocks mechanism's (1.x, 1.y, 1.theta, 2.theta;
+/// 2.x, 2.y when present), renamed to the homework's. Error::input as
+/// read_trajectory_csv, naming `origin`.
+[[nodiscard]] TrajectoryTable read_homework_trajectory(const std::filesystem::path& file, const std::string& origin,
+                                                       double end);
+
 /// The compared run of NAME=VALUE items: integrator=NAME, case=N, or an input's name
 /// (theta1=0.1000001, L=0.4) over `inputs` and `simulation`. Error::input naming `origin`,
 /// the item and what is valid.

@@ -136,6 +136,25 @@ TEST(HomeworkOverlay, ATrajectoryFilesPosesAreItsRowsInterpolatedLinearly) {
   }
 }
 
+// simulate --mechanism two-blocks writes the same run in the mechanism's names.
+TEST(HomeworkOverlay, TheTwoBlocksMechanismsColumnsAreTheHomeworks) {
+  test::TempDir dir;
+  test::write_text(dir / "tb.csv", "t,1.x,1.y,1.theta,2.x,2.y,2.theta\n0,1,2,0.1,1.2,2.1,0.2\n1,3,4,0.5,3.2,4.1,0.6\n");
+  const TrajectoryTable table = read_homework_trajectory(dir / "tb.csv", "--compare", 1.0);
+  EXPECT_EQ(table.names, (std::vector<std::string>{"t", "x1", "y1", "theta1", "x2", "y2", "theta2"}));
+  EXPECT_DOUBLE_EQ(table.at(*table.find("theta2"), 0.5), 0.4);
+  test::write_text(dir / "half.csv", "t,1.x,1.y,1.theta\n0,1,2,0.1\n1,3,4,0.5\n");
+  try {
+    (void)read_homework_trajectory(dir / "half.csv", "--compare", 1.0);
+    ADD_FAILURE() << "read a file without 2.theta";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("no column '2.theta'; --compare, to draw the homework's two blocks from "
+                                         "two-blocks' columns, needs the columns t, 1.x, 1.y, 1.theta, 2.theta"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(HomeworkOverlay, FramesWithOverlaysAreTheSameEveryTime) {
   test::TempDir dir;
   Clip clip;
