@@ -51,7 +51,7 @@ struct RenderFlags {
   CLI::Option* view_option = nullptr;
   MechanismOptions mechanism;
   std::vector<std::string> trails;  // --trail BODY.POINT, with --mechanism
-  OverlayFlags overlays;            // --ensemble, --spread, --compare, with --mechanism
+  OverlayFlags overlays;            // --ensemble, --spread, --compare
 };
 
 int parse_whole(const std::string& text, const std::string& origin) {
@@ -126,6 +126,7 @@ Clip resolve_clip(const RenderFlags& f) {
   if (clip.settings.elements.has(Element::equations))
     clip.settings.equations =
         shown_equations(sym::System(chosen_mechanism(f.mechanism, f.inputs)), clip.simulation.case_id);
+  resolve_homework_overlays(f.overlays, clip);
   clip.validate();  // the output's checks first, then what only the flags can say
   const bool still = clip.is_still();
   if (f.at_option->count() > 0 && !still)
@@ -212,7 +213,6 @@ ClipResult render_mechanism(const RenderFlags& f, const ClipProgress& progress) 
 void run_render(const RenderFlags& flags) {
   if (!flags.mechanism.chosen()) {
     if (!flags.trails.empty()) throw Error::input("--trail: applies only with --mechanism");
-    if (flags.overlays.any()) throw Error::input("--ensemble, --spread, --compare: apply only with --mechanism");
     if (!flags.mechanism.settings.empty())
       throw Error::input("--set: applies only with --mechanism; the homework takes its own flags");
   }

@@ -814,7 +814,7 @@ class Parser {
       s.spread = *x;
     }
     s.compare = r.strings("compare").value_or(std::vector<std::string>{});
-    for (const std::string_view key : {"trail", "ensemble", "compare"})
+    for (const std::string_view key : {"trail"})
       if (s.mechanism.empty() && r.has(key))
         r.fail(key, "'" + std::string(key) + "' applies to a mechanism: give mechanism = \"NAME\" here or at the top");
     if (!s.mechanism.empty())
@@ -880,6 +880,9 @@ class Parser {
         const MechanismRender made = mechanism_render(s, r.where("set"));
         if (!r.has("title")) g.title = made.system->mechanism().title;
       }
+      if (s.mechanism.empty() && !s.compare.empty())  // the homework's input names, checked now
+        (void)homework_compared_run(s.compare, s.run.inputs, s.run.options,
+                                    r.where("compare") + ": " + r.context() + ": compare");
       if (is_video(s.kind)) VideoWriter::validate(clip_video_options(g, s.kind));
     } catch (const Error& e) {
       if (e.code() != ExitCode::bad_input) throw;

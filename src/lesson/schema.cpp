@@ -117,12 +117,12 @@ constexpr std::array<KeySpec, 21> kRenderKeys{{
      "velocity; with a mechanism joint, applied)."},
     {"trail", "list of strings", "none", "BODY.POINT paths drawn over the last 2 s (with a mechanism)."},
     {"ensemble", "integer", "none",
-     "With a mechanism: N runs (2 .. 200) whose first coordinate starts up to `spread` apart, drawn faint behind the "
-     "main run, as render --ensemble."},
-    {"spread", "number", "1e-6", "The ensemble's largest initial offset of the first coordinate, rad or m."},
+     "N runs (2 .. 200) whose theta1 (a mechanism's first coordinate) starts up to `spread` apart, drawn faint "
+     "behind the main run, as render --ensemble."},
+    {"spread", "number", "1e-6", "The ensemble's largest initial offset of theta1 or the first coordinate, rad or m."},
     {"compare", "list of strings", "none",
-     "With a mechanism: a second run drawn over the main one, NAME=VALUE items: a set name, integrator=NAME or "
-     "case=N, as render --compare."},
+     "A second run drawn over the main one, NAME=VALUE items: an input name (theta1=0.1000001, L=0.4; with a "
+     "mechanism a set name), integrator=NAME or case=N, as render --compare."},
     {"panel", "list of strings", "none",
      "Quantities plotted beside the motion with a cursor at the frame's time, as --panel (plot step names; a "
      "mechanism's columns)."},

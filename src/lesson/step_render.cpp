@@ -41,6 +41,12 @@ Clip render_clip(const RenderStep& render, Quality quality, const std::filesyste
   draft_equations(clip.settings, quality);
   clip.theme = load_theme(clip.settings.theme, assets, "theme");
   clip.out = out_dir / render.out;
+  if (render.mechanism.empty()) {  // a mechanism's are its own (mechanism_render)
+    clip.ensemble = render.ensemble;
+    clip.spread = render.spread;
+    if (!render.compare.empty())
+      clip.compare = homework_compared_run(render.compare, clip.inputs, clip.simulation, "compare");
+  }
   return clip;
 }
 

@@ -4,6 +4,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
+#include <string_view>
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
@@ -23,6 +25,13 @@ namespace linkage {
 namespace fs = std::filesystem;
 
 namespace {
+
+// Pieces joined (report's concat is not among this module's dependencies).
+[[maybe_unused]] std::string concat(std::initializer_list<std::string_view> pieces) {
+  std::string out;
+  for (const std::string_view piece : pieces) out.append(piece);
+  return out;
+}
 
 constexpr double kTrailSeconds = 2.0;
 constexpr int kTrailSteps = 4;      // trail samples per frame interval
@@ -88,7 +97,11 @@ class MechanismFrames {
         labels_{clip.settings.title, run_label(clip.simulation)},
         overlays_(overlays) {
     labels_.ensemble = std::move(ensemble_row);
-    if (clip.compare) labels_.compare = "compared: " + clip.compare->label;
+    centre_compared_ = clip.compare && clip.compare->centred;
+    if (clip.compare)
+      labels_.compare =
+          concat({"compared: ", clip.compare->label,
+                  centre_compared_ && !scene_.geometry().grounded() ? ", about this run's centroid" : ""});
     style_.theme = &clip.theme;
     style_.u = DrawStyle::unit_for(settings_.width, settings_.height);
     follow_ = !scene_.geometry().grounded();
@@ -97,7 +110,8 @@ class MechanismFrames {
     // Room at the top for the title and the time, which would hide what is under them.
     if (!follow_) view.ymax += kTitleBand * (view.ymax - view.ymin);
     camera_ = Camera(view, settings_.width, settings_.height);
-    scene_.set_shortest_arrow(shortest_arrow_px(style_) / camera_.scale());
+    scene_.set_shortest_arrow(least_visible_arrow_px(style_) / camera_.scale(),
+                              stretched_arrow_px(style_) / camera_.scale());
   }
 
   void draw(std::size_t k, Frame& frame) {
@@ -105,10 +119,12 @@ class MechanismFrames {
     scene_.frame(k, list_);
     add_ghosts(k);
     const Camera camera = follow_ ? camera_.centred_at(scene_.centroid(k)) : camera_;
+    // The camera a frame earlier (the samples are a frame apart): the grid streaks from there.
+    const Camera earlier = follow_ && k > 0 ? camera_.centred_at(scene_.centroid(k - 1)) : camera;
     const cairo::SurfacePtr surface = cairo::surface_for(frame);
     const cairo::ContextPtr cr = cairo::context(surface.get());
-    paint_mechanism_frame(cr.get(), style_, camera, list_, labels_, motion_.times[k], settings_.width,
-                          settings_.height);
+    paint_mechanism_frame(cr.get(), style_, camera, list_, labels_, motion_.times[k], settings_.width, settings_.height,
+                          &earlier);
     cairo::check(cr.get(), "drawing a frame");
     cairo_surface_flush(surface.get());
     ++stats_.frames_drawn;
@@ -124,7 +140,19 @@ class MechanismFrames {
       MechanismDrawList::Ghost ghost;
       ghost.ramp = overlay.ramp;
       ghost.compare = overlay.compare;
-      const std::vector<double>& pose = overlay.motion.samples[k].pose;
+      std::vector<double> pose = overlay.motion.samples[k].pose;
+      if (overlay.compare && centre_compared_ && follow_) {
+        // Another floating mechanism starts elsewhere and falls out of view: drawn about
+        // this run's centroid instead, so the shapes and turning compare.
+        Vec2 other = Vec2::Zero();
+        const std::size_t bodies = overlay.geometry.bodies.size();
+        for (std::size_t b = 0; b < bodies; ++b) other += Vec2(pose[3 * b], pose[3 * b + 1]);
+        const Vec2 shift = scene_.centroid(k) - other / static_cast<double>(std::max<std::size_t>(bodies, 1));
+        for (std::size_t b = 0; b < bodies; ++b) {
+          pose[3 * b] += shift.x();
+          pose[3 * b + 1] += shift.y();
+        }
+      }
       for (std::size_t b = 0; b < overlay.geometry.bodies.size(); ++b)
         ghost.outlines.push_back(
             {b, body_outline(overlay.geometry.bodies[b], pose, b), overlay.geometry.bodies[b].shape});
@@ -138,6 +166,7 @@ class MechanismFrames {
   MechanismLabels labels_;
   DrawStyle style_;
   bool follow_ = false;
+  bool centre_compared_ = false;
   Camera camera_;
   const std::vector<Overlay>& overlays_;
   MechanismDrawList list_;
@@ -260,7 +289,10 @@ std::vector<MechanismMotion> overlay_motions(const sym::System& system, const Gi
       throw_if_interrupted();
       motions.push_back(sample_mechanism_motion(system, state, options, times, 1, scratch));
     }
-  if (clip.compare) {
+  if (clip.compare && clip.compare->table) {
+    const sym::System& other = clip.compare->system != nullptr ? *clip.compare->system : system;
+    motions.push_back(table_motion(*clip.compare->table, mechanism_geometry(other), times));
+  } else if (clip.compare) {
     const sym::System& other = clip.compare->system != nullptr ? *clip.compare->system : system;
     SimulationOptions compared = clip.compare->simulation;
     compared.duration = options.duration;
@@ -271,6 +303,33 @@ std::vector<MechanismMotion> overlay_motions(const sym::System& system, const Gi
   result.stats.samples += scratch.stats.samples;
   result.stats.simulate_seconds += scratch.stats.simulate_seconds;
   return motions;
+}
+
+std::vector<std::string> mechanism_pose_columns(const MechanismGeometry& geometry) {
+  std::vector<std::string> names{"t"};
+  for (const MechanismGeometry::BodyShape& body : geometry.bodies) {
+    names.push_back(body.name + ".x");
+    names.push_back(body.name + ".y");
+    if (body.shape != Shape::point) names.push_back(body.name + ".theta");
+  }
+  return names;
+}
+
+MechanismMotion table_motion(const TrajectoryTable& table, const MechanismGeometry& geometry,
+                             const std::vector<double>& times) {
+  std::vector<std::optional<std::size_t>> columns;  // per body: x, y, theta
+  for (const MechanismGeometry::BodyShape& body : geometry.bodies)
+    for (const char* part : {".x", ".y", ".theta"}) columns.push_back(table.find(body.name + part));
+  MechanismMotion motion;
+  motion.times = times;
+  motion.samples.resize(times.size());
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    std::vector<double>& pose = motion.samples[k].pose;
+    pose.assign(columns.size(), 0.0);
+    for (std::size_t i = 0; i < columns.size(); ++i)
+      if (columns[i]) pose[i] = table.at(*columns[i], times[k]);
+  }
+  return motion;
 }
 
 std::vector<GiNaC::exmap> ensemble_states(const sym::System& system, const GiNaC::exmap& initial, int n,
@@ -317,7 +376,7 @@ void MechanismClip::validate(const sym::System& system) const {
     throw Error::invalid("ensemble", std::to_string(ensemble) + " runs; expected 2 .. 200");
   if (!(std::isfinite(spread) && spread > 0))
     throw Error::invalid("spread", "expected a finite number > 0 (rad or m, the first coordinate's unit)");
-  if (compare) compare->simulation.validate();
+  if (compare && !compare->table) compare->simulation.validate();
 }
 
 ClipResult produce_mechanism_clip(const sym::System& system, const GiNaC::exmap& initial, const MechanismClip& clip,

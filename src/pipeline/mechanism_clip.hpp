@@ -6,12 +6,14 @@
 // duration, speed, at and title; the homework's elements and camera modes do not apply
 // (the camera fits the whole motion, or follows a floating mechanism's centroid).
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "integrate/simulation.hpp"
 #include "pipeline/clip.hpp"
+#include "pipeline/trajectory_csv.hpp"
 #include "render/panel.hpp"
 #include "render/settings.hpp"
 #include "render/theme.hpp"
@@ -26,8 +28,17 @@ struct MechanismRun {
   const sym::System* system = nullptr;  // null: the clip's
   GiNaC::exmap initial;
   SimulationOptions simulation;
-  std::string label;  // the legend row: what differs, "integrator=rk4"
+  std::string label;                               // the legend row: what differs, "integrator=rk4"
+  std::shared_ptr<const TrajectoryTable> table{};  // a trajectory file's run instead of a simulation
+  bool centred = false;  // another mechanism: drawn about the main run's centroid when that is followed
 };
+
+/// The columns a trajectory file needs to draw the bodies of `geometry`: t, then per body
+/// NAME.x, NAME.y and NAME.theta (no theta for a point mass).
+[[nodiscard]] std::vector<std::string> mechanism_pose_columns(const MechanismGeometry& geometry);
+/// The poses of `table` (with mechanism_pose_columns) at `times`, interpolated linearly.
+[[nodiscard]] MechanismMotion table_motion(const TrajectoryTable& table, const MechanismGeometry& geometry,
+                                           const std::vector<double>& times);
 
 struct MechanismClip {
   SimulationOptions simulation;

@@ -76,6 +76,19 @@ std::vector<LegendRow> legend_rows(const Theme& theme, const SceneOptions& optio
   return rows;
 }
 
+// The other runs' rows, before the closing note about the view.
+void add_overlay_rows(const Theme& theme, const ClipOverlays& overlays, std::vector<LegendRow>& rows) {
+  const auto at = rows.empty() || rows.back().glyph != LegendRow::Glyph::none ? rows.end() : rows.end() - 1;
+  std::vector<LegendRow> added;
+  if (!overlays.ensemble_name.empty())
+    added.push_back(
+        {LegendRow::Glyph::outline, overlay_colour(theme, 0.5, false), overlays.ensemble_name, overlays.ensemble_note});
+  if (!overlays.compare_note.empty())
+    added.push_back(
+        {LegendRow::Glyph::dashed_outline, overlay_colour(theme, 0, true), "compared", overlays.compare_note});
+  rows.insert(at, added.begin(), added.end());
+}
+
 // G over the whole clip, at `count` + 1 even times from 0: a parabola, as the only
 // outside force is gravity (exact, so a still needs no motion beyond its own time).
 std::vector<Vec2> com_path(const Params& p, const MotionSample& first, double duration, int count) {
@@ -121,8 +134,12 @@ double clip_duration(const RenderSettings& settings, const Motion& motion) {
 }  // namespace
 
 ClipRenderer::ClipRenderer(const Params& params, const Motion& motion, const RenderSettings& settings, Theme theme,
-                           std::string run)
-    : params_(params), motion_(motion), settings_(settings), theme_(std::move(theme)) {
+                           std::string run, ClipOverlays overlays)
+    : params_(params), motion_(motion), overlays_(std::move(overlays)), settings_(settings), theme_(std::move(theme)) {
+  for (const OverlayRun& other : overlays_.runs)
+    if (other.states.size() != motion_.samples.size())
+      throw Error::failure("an overlaid run has " + std::to_string(other.states.size()) + " states for " +
+                           std::to_string(motion_.samples.size()) + " samples");
   if (motion_.samples.empty()) throw Error::failure("nothing to draw: the motion has no samples");
   style_.theme = &theme_;
   style_.u = DrawStyle::unit_for(settings_.width, settings_.height);
@@ -159,8 +176,10 @@ void ClipRenderer::lay_out(bool first) {
   // would otherwise call every arrow too short.
   if (first) {
     scene_options_.shortest_arrow = 0;
-    if (params_.L * base_camera_.scale() >= 3 * style_.block_label_size())
-      scene_options_.shortest_arrow = shortest_arrow_px(style_) / base_camera_.scale();
+    if (params_.L * base_camera_.scale() >= 3 * style_.block_label_size()) {
+      scene_options_.shortest_arrow = least_visible_arrow_px(style_) / base_camera_.scale();
+      scene_options_.stretched_length = stretched_arrow_px(style_) / base_camera_.scale();
+    }
   }
   // A following camera sees world-fixed lines stream past, each named by its height,
   // a few to a frame so the numbers can be read.
@@ -173,6 +192,7 @@ void ClipRenderer::lay_out(bool first) {
 
   if (shown.has(Element::legend)) {
     legend_ = legend_rows(theme_, scene_options_, follow, any_stretched(params_, scene_options_, motion_));
+    add_overlay_rows(theme_, overlays_, legend_);
     scale_label_ = describe_length(grid_.spacing.mantissa, grid_.spacing.exponent);
     scale_length_px_ = grid_.spacing.metres() * base_camera_.scale();
   }
@@ -247,11 +267,22 @@ void ClipRenderer::paint_static_background(cairo_t* cr) const {
     paint_axes(cr, style_, base_camera_, grid_, settings_.width, settings_.height, panel_rects_);
 }
 
+Camera ClipRenderer::shutter_camera_at(std::size_t index) const {
+  if (settings_.camera != CameraMode::follow) return base_camera_;
+  // G's parabola is exact, so the camera at t - interval needs no earlier sample.
+  const MotionSample& sample = motion_.samples[index];
+  const double interval = std::clamp(settings_.speed / settings_.fps, 0.0, std::max(sample.t, 0.0));
+  const Vec2 g = system_com(sample.state), v = system_com_velocity(sample.state);
+  const Vec2 before = g - interval * v + Vec2(0.0, -0.5 * params_.g * interval * interval);
+  return base_camera_.centred_at(before + fbd_offset_);
+}
+
 void ClipRenderer::paint_grid_of(std::size_t index, cairo_t* cr) const {
   if (!moving_grid_) return;
   const Camera camera = camera_at(index);
   const ElementSet& shown = settings_.elements;
-  if (shown.has(Element::grid)) paint_grid(cr, style_, camera, grid_, settings_.width, settings_.height);
+  const Camera earlier = shutter_camera_at(index);
+  if (shown.has(Element::grid)) paint_grid(cr, style_, camera, grid_, settings_.width, settings_.height, &earlier);
   if (shown.has(Element::grid) || shown.has(Element::axes))
     paint_axes(cr, style_, camera, grid_, settings_.width, settings_.height, panel_rects_);
 }
@@ -320,6 +351,9 @@ void ClipRenderer::prepare_static_layers() {
 
 void ClipRenderer::paint_dynamic(std::size_t index, cairo_t* cr) {
   build_scene(params_, scene_options_, motion_, index, list_);
+  if (settings_.elements.has(Element::blocks))
+    for (const OverlayRun& other : overlays_.runs)
+      add_ghost(other.params, other.states[index], other.ramp, other.compare, list_);
   stats_.trail_points_drawn += static_cast<std::int64_t>(list_.trail.size());
   const std::array<Rect, 4> occupied{title_layout_.rect, legend_rect_, scale_rect_, hud_rect_};
   paint_scene(cr, style_, list_, camera_at(index), settings_.width, settings_.height, occupied, labels_);

@@ -43,12 +43,27 @@ struct RenderStats {
   double png_seconds = 0;       // PNG compression and writing
 };
 
+/// Another run drawn as outlines over the main one: its block states at the motion's
+/// samples, its parameters, and its place (an ensemble member at `ramp`, or the compared run).
+struct OverlayRun {
+  Params params;
+  std::vector<BodyState> states;
+  double ramp = 0;
+  bool compare = false;
+};
+/// The other runs and the legend's words for them ("20 runs", "θ₁ + 0 .. 1e-06 rad";
+/// "integrator=rk4").
+struct ClipOverlays {
+  std::vector<OverlayRun> runs;
+  std::string ensemble_name, ensemble_note, compare_note;
+};
+
 class ClipRenderer {
  public:
   /// `run` is the HUD's second line (e.g. "Case 3 · dop853"). The motion must outlive the
   /// renderer. Chooses arrow scales from the whole motion and the camera for it.
-  ClipRenderer(const Params& params, const Motion& motion, const RenderSettings& settings, Theme theme,
-               std::string run);
+  ClipRenderer(const Params& params, const Motion& motion, const RenderSettings& settings, Theme theme, std::string run,
+               ClipOverlays overlays = {});
   ClipRenderer(const ClipRenderer&) = delete;
   ClipRenderer& operator=(const ClipRenderer&) = delete;
   ~ClipRenderer();
@@ -60,6 +75,9 @@ class ClipRenderer {
 
   /// The camera of sample `index` (follow moves it with G).
   [[nodiscard]] Camera camera_at(std::size_t index) const;
+  /// The camera at the start of sample `index`'s shutter interval (speed / fps of
+  /// simulated time before it, not before 0): the follow view's grid streaks from there.
+  [[nodiscard]] Camera shutter_camera_at(std::size_t index) const;
   [[nodiscard]] const SceneOptions& scene_options() const { return scene_options_; }
   [[nodiscard]] const std::vector<LegendRow>& legend() const { return legend_; }
   /// The names of the frame drawn last, where they went.
@@ -101,6 +119,7 @@ class ClipRenderer {
 
   Params params_;
   const Motion& motion_;
+  ClipOverlays overlays_;
   RenderSettings settings_;
   Theme theme_;
   DrawStyle style_;

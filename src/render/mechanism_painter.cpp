@@ -258,12 +258,12 @@ Rect paint_time(cairo_t* cr, const DrawStyle& style, double t, const MechanismLa
 }  // namespace
 
 void paint_mechanism_frame(cairo_t* cr, const DrawStyle& style, const Camera& camera, const MechanismDrawList& list,
-                           const MechanismLabels& labels, double t, int width, int height) {
+                           const MechanismLabels& labels, double t, int width, int height, const Camera* earlier) {
   paint_background(cr, style, width, height);
   // Grid lines fixed in the world: a following camera shows the motion against them.
   GridSpec grid;
   grid.spacing = grid_spacing_for(camera, width, height);
-  paint_grid(cr, style, camera, grid, width, height);
+  paint_grid(cr, style, camera, grid, width, height, earlier);  // streaking past a following camera
   cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
   paint_lines(cr, style, camera, list, List::Line::Kind::trail);
   paint_lines(cr, style, camera, list, List::Line::Kind::rail);

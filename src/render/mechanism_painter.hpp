@@ -22,6 +22,7 @@ struct MechanismLabels {
 
 /// Paints the whole frame (it is fully covered) for the mechanism at time `t`.
 void paint_mechanism_frame(cairo_t* cr, const DrawStyle& style, const Camera& camera, const MechanismDrawList& list,
-                           const MechanismLabels& labels, double t, int width, int height);
+                           const MechanismLabels& labels, double t, int width, int height,
+                           const Camera* earlier = nullptr);
 
 }  // namespace linkage

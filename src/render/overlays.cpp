@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <memory>
 #include <numbers>
 #include <utility>
 
+#include "render/cairo_util.hpp"
 #include "render/scene_painter.hpp"
 #include "render/text.hpp"
 
@@ -108,25 +110,147 @@ void paint_background(cairo_t* cr, const DrawStyle& style, int width, int height
   cairo_restore(cr);
 }
 
-void paint_grid(cairo_t* cr, const DrawStyle& style, const Camera& camera, const GridSpec& grid, int width,
-                int height) {
+double grid_streak_opacity(double band, double line, double spacing) {
+  band = std::fabs(band);
+  if (band < 1.0) return 1.0;
+  const double ink = 2 * line / (band + line);  // a ramp from 0 holding the still line's ink
+  return std::min(1.0, std::max(ink, kGridStreakOpacity * std::min(1.0, spacing / band)));
+}
+
+namespace {
+
+// Every line of one axis streaking the same way (the camera moved `moved` px along it in
+// the interval; lines `period` px apart, the first now at `first`): as the lines repeat,
+// so does their summed coverage, so it is computed once over one period (a 1-px strip,
+// each band a ramp from transparent where the line was to `opacity` where it is, the
+// line's width included, overlapping bands composited as OVER would) and painted over
+// the whole frame in one pass, however many bands overlap.
+void paint_streaks(cairo_t* cr, const Rgba& colour, bool vertical, double first, double period, double moved,
+                   double line_width, double opacity, int width, int height) {
+  const int samples = std::max(2, static_cast<int>(std::ceil(period)));
+  const cairo::SurfacePtr strip = vertical ? cairo::image_surface(samples, 1) : cairo::image_surface(1, samples);
+  cairo_surface_flush(strip.get());
+  unsigned char* data = cairo_image_surface_get_data(strip.get());
+  const int stride = cairo_image_surface_get_stride(strip.get());
+  const double length = std::fabs(moved) + line_width, direction = moved > 0 ? -1.0 : 1.0;  // towards then
+  const auto reach = static_cast<long>(std::ceil(length / period)) + 1;
+  for (int i = 0; i < samples; ++i) {
+    const double at = (i + 0.5) * period / samples;  // from a line's place now
+    double clear = 1;                                // what the bands leave of the background
+    for (long k = -reach; k <= reach; ++k) {
+      const double along = (at - static_cast<double>(k) * period) * direction + 0.5 * line_width;
+      if (along < 0 || along > length) continue;
+      clear *= 1 - colour.a * opacity * (1 - along / length);
+    }
+    const double alpha = 1 - clear;
+    const auto byte = [&](double c) { return static_cast<std::uint32_t>(std::lround(255 * c * alpha)); };
+    const std::uint32_t pixel = (static_cast<std::uint32_t>(std::lround(255 * alpha)) << 24) | (byte(colour.r) << 16) |
+                                (byte(colour.g) << 8) | byte(colour.b);
+    std::memcpy(data + (vertical ? 4 * i : stride * i), &pixel, 4);
+  }
+  cairo_surface_mark_dirty(strip.get());
+  std::unique_ptr<cairo_pattern_t, decltype(&cairo_pattern_destroy)> pattern(
+      cairo_pattern_create_for_surface(strip.get()), &cairo_pattern_destroy);
+  cairo_pattern_set_extend(pattern.get(), CAIRO_EXTEND_REPEAT);
+  cairo_pattern_set_filter(pattern.get(), CAIRO_FILTER_BILINEAR);
+  // Pixman's transforms are 16.16 fixed point: the offset taken within one period.
+  first -= period * std::floor(first / period);
+  cairo_matrix_t matrix;
+  if (vertical)
+    cairo_matrix_init_scale(&matrix, samples / period, 1);
+  else
+    cairo_matrix_init_scale(&matrix, 1, samples / period);
+  cairo_matrix_translate(&matrix, vertical ? -first : 0, vertical ? 0 : -first);
+  cairo_pattern_set_matrix(pattern.get(), &matrix);
+  cairo_save(cr);
+  cairo_set_source(cr, pattern.get());
+  if (length + 2 >= period) {
+    cairo_paint(cr);
+  } else {  // apart: only the bands' rectangles, not the whole frame
+    const double extent = vertical ? width : height, low = moved > 0 ? -moved : 0.0;
+    cairo_new_path(cr);
+    for (double now = first - period; now < extent + period; now += period) {
+      const double from = std::floor(now + low - 0.5 * line_width - 1);
+      const double size = std::ceil(length + 2);
+      if (vertical)
+        cairo_rectangle(cr, from, 0, size, height);
+      else
+        cairo_rectangle(cr, 0, from, width, size);
+    }
+    cairo_fill(cr);
+  }
+  cairo_restore(cr);
+}
+
+// The same as vector shapes (an SVG or PDF still stays free of bitmaps): one linear
+// gradient per line, from where it was (transparent) to where it is.
+void paint_streak_bands(cairo_t* cr, const Rgba& colour, bool vertical, double first, double period, double moved,
+                        double line_width, double opacity, int width, int height) {
+  const double extent = vertical ? width : height;
+  const double direction = moved > 0 ? 1.0 : -1.0;  // from then to now
+  const long before = static_cast<long>(std::floor((-std::fabs(moved) - line_width - first) / period));
+  const long after = static_cast<long>(std::ceil((extent + std::fabs(moved) + line_width - first) / period));
+  for (long k = before; k <= after && k - before < 1000; ++k) {
+    const double now = first + static_cast<double>(k) * period, then = now - moved;
+    const double from = then - direction * 0.5 * line_width, to = now + direction * 0.5 * line_width;
+    std::unique_ptr<cairo_pattern_t, decltype(&cairo_pattern_destroy)> ramp(
+        vertical ? cairo_pattern_create_linear(from, 0, to, 0) : cairo_pattern_create_linear(0, from, 0, to),
+        &cairo_pattern_destroy);
+    cairo_pattern_add_color_stop_rgba(ramp.get(), 0, colour.r, colour.g, colour.b, 0);
+    cairo_pattern_add_color_stop_rgba(ramp.get(), 1, colour.r, colour.g, colour.b, colour.a * opacity);
+    cairo_new_path(cr);
+    if (vertical)
+      cairo_rectangle(cr, std::min(from, to), 0, std::fabs(to - from), height);
+    else
+      cairo_rectangle(cr, 0, std::min(from, to), width, std::fabs(to - from));
+    cairo_set_source(cr, ramp.get());
+    cairo_fill(cr);
+  }
+}
+
+}  // namespace
+
+void paint_grid(cairo_t* cr, const DrawStyle& style, const Camera& camera, const GridSpec& grid, int width, int height,
+                const Camera* earlier) {
   const View visible = camera.visible();
   const double spacing = grid.spacing.metres();
   const double line_width = grid_line_width(style);
-  set_colour(cr, style.theme->grid);
-  cairo_set_line_width(cr, line_width);
-  cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
-  for_each_grid_line(visible.xmin, visible.xmax, grid.anchor.x(), spacing, [&](long, double x) {
-    const double px = crisp(camera.to_pixels({x, 0.0}).x(), line_width);
-    cairo_move_to(cr, px, 0);
-    cairo_line_to(cr, px, height);
-  });
-  for_each_grid_line(visible.ymin, visible.ymax, grid.anchor.y(), spacing, [&](long, double y) {
-    const double py = crisp(camera.to_pixels({0.0, y}).y(), line_width);
-    cairo_move_to(cr, 0, py);
-    cairo_line_to(cr, width, py);
-  });
-  cairo_stroke(cr);
+  const Rgba& colour = style.theme->grid;
+  std::array<double, 2> moved{};  // pixels every line moved along x (vertical lines) and y in the interval
+  if (earlier != nullptr) {
+    const Vec2 shift = camera.to_pixels(Vec2::Zero()) - earlier->to_pixels(Vec2::Zero());
+    moved = {shift.x(), shift.y()};
+  }
+  const double period = spacing * camera.scale();
+  for (const bool vertical : {true, false}) {
+    const double shift = moved[vertical ? 0 : 1];
+    const double anchor = vertical ? grid.anchor.x() : grid.anchor.y();
+    if (std::fabs(shift) >= 1.0 && period >= 2.0) {
+      const double first = vertical ? camera.to_pixels({anchor, 0.0}).x() : camera.to_pixels({0.0, anchor}).y();
+      const double opacity = grid_streak_opacity(shift, line_width, period);
+      if (cairo_surface_get_type(cairo_get_target(cr)) == CAIRO_SURFACE_TYPE_IMAGE)
+        paint_streaks(cr, colour, vertical, first, period, shift, line_width, opacity, width, height);
+      else
+        paint_streak_bands(cr, colour, vertical, first, period, shift, line_width, opacity, width, height);
+      continue;
+    }
+    set_colour(cr, colour);
+    cairo_set_line_width(cr, line_width);
+    cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+    if (vertical)
+      for_each_grid_line(visible.xmin, visible.xmax, anchor, spacing, [&](long, double x) {
+        const double px = crisp(camera.to_pixels({x, 0.0}).x(), line_width);
+        cairo_move_to(cr, px, 0);
+        cairo_line_to(cr, px, height);
+      });
+    else
+      for_each_grid_line(visible.ymin, visible.ymax, anchor, spacing, [&](long, double y) {
+        const double py = crisp(camera.to_pixels({0.0, y}).y(), line_width);
+        cairo_move_to(cr, 0, py);
+        cairo_line_to(cr, width, py);
+      });
+    cairo_stroke(cr);
+  }
 }
 
 void paint_axes(cairo_t* cr, const DrawStyle& style, const Camera& camera, const GridSpec& grid, int width, int height,
@@ -246,26 +370,32 @@ void paint_path_inset(cairo_t* cr, const DrawStyle& style, const PathInset& inse
   cairo_save(cr);
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
-  // The whole path thin and pale, the part behind G strong.
-  const auto polyline = [&](std::size_t count) {
-    for (std::size_t i = 0; i < count; ++i) {
+  // The part behind G strong, the part ahead dotted: at t = 0 the whole parabola to come,
+  // G at its start.
+  const auto polyline = [&](std::size_t from, std::size_t to) {
+    for (std::size_t i = from; i < to; ++i) {
       const Vec2 p = inset.to_pixels(inset.path[i]);
-      if (i == 0)
-        cairo_move_to(cr, p.x(), p.y());
-      else
-        cairo_line_to(cr, p.x(), p.y());
+      cairo_line_to(cr, p.x(), p.y());
     }
   };
-  polyline(inset.path.size());
-  set_colour(cr, theme.text_muted);
-  cairo_set_line_width(cr, std::max(1.0, 0.8 * style.u));
-  cairo_stroke(cr);
-  polyline(std::min(travelled, inset.path.size()));
+  const std::size_t behind = std::min(travelled, inset.path.size());
   const Vec2 at = inset.to_pixels(now);
-  cairo_line_to(cr, at.x(), at.y());
-  set_colour(cr, theme.trail);
-  cairo_set_line_width(cr, style.trail_width());
-  if (travelled > 0) cairo_stroke(cr);
+  cairo_new_path(cr);
+  cairo_move_to(cr, at.x(), at.y());
+  polyline(behind, inset.path.size());
+  set_colour(cr, theme.text_muted);
+  cairo_set_line_width(cr, std::max(1.2, 1.1 * style.u));
+  const std::array<double, 2> dots{0.0, 3.5 * style.u};
+  cairo_set_dash(cr, dots.data(), 2, 0);
+  cairo_stroke(cr);
+  cairo_set_dash(cr, nullptr, 0, 0);
+  if (behind > 0) {
+    polyline(0, behind);
+    cairo_line_to(cr, at.x(), at.y());
+    set_colour(cr, theme.trail);
+    cairo_set_line_width(cr, style.trail_width());
+    cairo_stroke(cr);
+  }
   cairo_new_path(cr);
   cairo_restore(cr);
   // The heights of the path's ends, so the inset says how far the fall goes.
@@ -355,6 +485,18 @@ void paint_legend(cairo_t* cr, const DrawStyle& style, const std::vector<LegendR
         cairo_move_to(cr, x, centre);
         cairo_line_to(cr, x + glyph_width, centre);
         cairo_stroke(cr);
+        break;
+      }
+      case LegendRow::Glyph::outline:
+      case LegendRow::Glyph::dashed_outline: {
+        // A block's outline, as the other runs are drawn.
+        const std::array<double, 2> dashes{5 * u, 3 * u};
+        cairo_rectangle(cr, x + 2 * u, centre - 4 * u, glyph_width - 4 * u, 8 * u);
+        set_colour(cr, with_alpha(row.colour, row.glyph == LegendRow::Glyph::outline ? 0.7 : 0.9));
+        cairo_set_line_width(cr, 1.3 * style.edge_width());
+        if (row.glyph == LegendRow::Glyph::dashed_outline) cairo_set_dash(cr, dashes.data(), 2, 0);
+        cairo_stroke(cr);
+        cairo_set_dash(cr, nullptr, 0, 0);
         break;
       }
       case LegendRow::Glyph::none:

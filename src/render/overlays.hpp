@@ -32,7 +32,20 @@ struct GridSpec {
 [[nodiscard]] RoundLength grid_spacing_for(const Camera& camera, int width, int height, double lines = 10);
 
 void paint_background(cairo_t* cr, const DrawStyle& style, int width, int height);
-void paint_grid(cairo_t* cr, const DrawStyle& style, const Camera& camera, const GridSpec& grid, int width, int height);
+/// With `earlier` (the camera at the start of the frame's shutter interval, for a camera
+/// that moves), each line is drawn motion-blurred: a band from where it was then to where
+/// it is now, most opaque at now, as much ink as the still line and no less than
+/// kGridStreakOpacity spread over a spacing, so lines that move more than half a spacing
+/// a frame do not appear to jump (temporal aliasing) but streak the way they move.
+void paint_grid(cairo_t* cr, const DrawStyle& style, const Camera& camera, const GridSpec& grid, int width, int height,
+                const Camera* earlier = nullptr);
+/// The opacity a streaking grid line keeps at its newest end while its band is shorter
+/// than a spacing (it falls as spacing / band beyond).
+inline constexpr double kGridStreakOpacity = 0.5;
+/// A still line's opacity at the newest end of a band `band` px long (width `line` px),
+/// `spacing` px between lines: the line's ink spread over the band, at least
+/// kGridStreakOpacity x min(1, spacing / band); 1 when the band is under a pixel.
+[[nodiscard]] double grid_streak_opacity(double band, double line, double spacing);
 /// Coordinate ticks in metres along the bottom and left edges, at the grid lines, except
 /// where a label would touch one of the `avoid` rectangles (the panels). One tick per
 /// axis names it: "x = 1.2 m" (or "Δx = 0.1 m" counted from G for a following camera).
@@ -75,7 +88,7 @@ void paint_title(cairo_t* cr, const DrawStyle& style, const std::string& title, 
 
 /// A legend row: a glyph in a colour, a name, and a note (an arrow scale).
 struct LegendRow {
-  enum class Glyph { arrow, stretched_arrow, line, com, none };
+  enum class Glyph { arrow, stretched_arrow, line, com, outline, dashed_outline, none };
   Glyph glyph = Glyph::none;
   Rgba colour;
   std::string name;

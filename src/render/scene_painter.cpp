@@ -11,6 +11,12 @@
 
 namespace linkage {
 
+Rgba overlay_colour(const Theme& theme, double ramp, bool compare) {
+  if (compare) return theme.text;
+  const Rgba &a = theme.trail, &b = theme.velocity;
+  return {a.r + ramp * (b.r - a.r), a.g + ramp * (b.g - a.g), a.b + ramp * (b.b - a.b), 1.0};
+}
+
 const Rgba& arrow_colour(const Theme& theme, ArrowKind kind) {
   switch (kind) {
     case ArrowKind::pin_force:
@@ -129,6 +135,35 @@ void paint_trail(cairo_t* cr, const DrawStyle& style, const DrawList& list, cons
     cairo_line_to(cr, b.x(), b.y());
     cairo_stroke(cr);
   }
+}
+
+// Other runs' blocks and pins as outlines: the ensemble's thin and faint behind the main
+// run, the compared run's dashed over it (so the same settings trace its edges exactly).
+void paint_ghosts(cairo_t* cr, const DrawStyle& style, const DrawList& list, const Camera& camera, bool compare) {
+  cairo_save(cr);
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  const std::array<double, 2> dashes{5 * style.u, 3 * style.u};
+  for (const GhostBlocks& ghost : list.ghosts) {
+    if (ghost.compare != compare) continue;
+    const Rgba colour = overlay_colour(*style.theme, ghost.ramp, compare);
+    cairo_new_path(cr);
+    for (const BlockShape& block : ghost.blocks) {
+      for (std::size_t c = 0; c < block.corners.size(); ++c) {
+        const Vec2 p = camera.to_pixels(block.corners[c]);
+        cairo_line_to(cr, p.x(), p.y());
+      }
+      cairo_close_path(cr);
+      cairo_new_sub_path(cr);
+    }
+    const Vec2 pin = camera.to_pixels(ghost.pin);
+    cairo_arc(cr, pin.x(), pin.y(), 0.8 * style.pin_radius(), 0, 2 * std::numbers::pi);
+    set_colour(cr, with_alpha(colour, compare ? 0.9 : 0.4));
+    cairo_set_line_width(cr, (compare ? 1.3 : 0.8) * style.edge_width());
+    if (compare) cairo_set_dash(cr, dashes.data(), 2, 0);
+    cairo_stroke(cr);
+    cairo_set_dash(cr, nullptr, 0, 0);
+  }
+  cairo_restore(cr);
 }
 
 void paint_blocks(cairo_t* cr, const DrawStyle& style, const DrawList& list, const Camera& camera) {
@@ -314,7 +349,8 @@ void layout_scene_labels(cairo_t* cr, const DrawStyle& style, const DrawList& li
   const auto name_arrow = [&](const Arrow& arrow) {
     const Vec2 tail = camera.to_pixels(arrow.tail), tip = camera.to_pixels(arrow.tail + arrow.vector);
     const double length = (tip - tail).norm();
-    if (length < 2 * style.arrow_head_length() && !arrow.stretched) return;  // too short to name without clutter
+    // Every arrow drawn is named: one shorter than least_visible_arrow_px is stretched.
+    if (length < least_visible_arrow_px(style) && !arrow.stretched) return;
     const int n = std::snprintf(text.data(), text.size(), "%.*s", static_cast<int>(arrow.tag.size()), arrow.tag.data());
     if (arrow.valued && n > 0 && static_cast<std::size_t>(n) + 6 < text.size()) {
       std::snprintf(text.data() + n, text.size() - static_cast<std::size_t>(n), " = ");
@@ -382,7 +418,9 @@ void paint_scene(cairo_t* cr, const DrawStyle& style, const DrawList& list, cons
                  std::span<const Rect> occupied, SceneLabels& labels) {
   cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
   paint_trail(cr, style, list, camera);
+  paint_ghosts(cr, style, list, camera, false);
   paint_blocks(cr, style, list, camera);
+  paint_ghosts(cr, style, list, camera, true);
   // Arrows before the marks, so arrows visibly start at the centre-of-mass symbols and
   // the pin; pin forces last among arrows, as they are the point of the picture.
   paint_arrows(cr, style, list, camera);

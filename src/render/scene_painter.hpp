@@ -15,6 +15,11 @@
 
 namespace linkage {
 
+/// The colour of another run drawn over the main one: an ensemble member at `ramp` 0..1
+/// (from the trail's colour to the velocity's, apart from the blocks'), or the compared
+/// run (the text colour, dashed).
+[[nodiscard]] Rgba overlay_colour(const Theme& theme, double ramp, bool compare);
+
 /// The colour of an arrow kind in the theme.
 [[nodiscard]] const Rgba& arrow_colour(const Theme& theme, ArrowKind kind);
 
@@ -53,9 +58,13 @@ void paint_scene(cairo_t* cr, const DrawStyle& style, const DrawList& list, cons
 /// An arrow in pixel coordinates from `tail` to `tip`: a shaft and a filled head. Heads
 /// shrink with very short arrows so they never overshoot the tip.
 void paint_arrow(cairo_t* cr, const DrawStyle& style, const Vec2& tail, const Vec2& tip, const Rgba& colour);
-/// The shortest an arrow is drawn, px: one shorter at its scale (a pin force beside
-/// gravity at one scale) is drawn this long, dashed, and its label gives its value.
-[[nodiscard]] inline double shortest_arrow_px(const DrawStyle& style) { return 3 * style.arrow_head_length(); }
+/// The shortest arrow that still reads as one, px: one head length, where paint_arrow's
+/// head is 60% of its full size and the shaft shows behind it. An arrow shorter than this
+/// at its scale (a pin force of a few mN beside gravity at one scale) is drawn
+/// stretched_arrow_px long instead, dashed, its label giving its value.
+[[nodiscard]] inline double least_visible_arrow_px(const DrawStyle& style) { return style.arrow_head_length(); }
+/// How long a stretched arrow is drawn, px: a full head and room for the dashes.
+[[nodiscard]] inline double stretched_arrow_px(const DrawStyle& style) { return 3 * style.arrow_head_length(); }
 /// An arrow drawn longer than its scale says: a dashed shaft and a full head.
 void paint_stretched_arrow(cairo_t* cr, const DrawStyle& style, const Vec2& tail, const Vec2& tip, const Rgba& colour);
 /// The centre-of-mass symbol (a circle with two opposite quarters filled) at a pixel point.

@@ -63,9 +63,20 @@ struct Label {
   int block = 0;
 };
 
-/// Everything of one frame, in drawing order: trail, blocks, markers and arrows, labels.
+/// Another run's blocks and pin, drawn as outlines over this one (render --ensemble,
+/// --compare): an ensemble member faint at `ramp` 0..1 of a colour ramp, or the compared run.
+struct GhostBlocks {
+  std::array<BlockShape, 2> blocks;
+  Vec2 pin = Vec2::Zero();
+  double ramp = 0;
+  bool compare = false;
+};
+
+/// Everything of one frame, in drawing order: trail, the ensemble's blocks, blocks, the
+/// compared run's blocks, markers and arrows, labels.
 struct DrawList {
   std::vector<TrailPoint> trail;  // oldest first
+  std::vector<GhostBlocks> ghosts;
   std::vector<BlockShape> blocks;
   std::vector<Marker> markers;
   std::vector<Arrow> arrows;
@@ -73,6 +84,7 @@ struct DrawList {
 
   void clear() {
     trail.clear();
+    ghosts.clear();
     blocks.clear();
     markers.clear();
     arrows.clear();

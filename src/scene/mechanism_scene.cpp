@@ -333,8 +333,9 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
   }
 }
 
-void MechanismScene::set_shortest_arrow(double metres) {
+void MechanismScene::set_shortest_arrow(double metres, double drawn) {
   shortest_ = metres;
+  stretched_ = drawn > 0 ? drawn : metres;
   legend_.stretched = false;
   for (std::size_t k = 0; k < motion_.samples.size() && !legend_.stretched; ++k) {
     const auto short_at = [&](double newtons, double scale) {
@@ -371,7 +372,7 @@ MechanismDrawList::Arrow MechanismScene::force_arrow(MechanismDrawList::Arrow::K
     // no longer shows.
     arrow.cut = length > arrow_cap_;
     arrow.stretched = !arrow.cut;
-    arrow.vector *= (arrow.cut ? arrow_cap_ : shortest_) / length;
+    arrow.vector *= (arrow.cut ? arrow_cap_ : stretched_) / length;
     if (!applied) arrow.label += ": " + format_quantity(arrow.force, "N");
   }
   return arrow;

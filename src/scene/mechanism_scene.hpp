@@ -163,9 +163,9 @@ class MechanismScene {
   MechanismScene(MechanismGeometry geometry, const MechanismMotion& motion, std::vector<BodyPoint> trails,
                  double trail_seconds = 2.0, const ArrowScaleRequest& arrows = {});
 
-  /// Force arrows shorter than `metres` (but not zero) are drawn that long and marked
-  /// stretched, their labels giving the value; the legend says whether any is.
-  void set_shortest_arrow(double metres);
+  /// Force arrows shorter than `metres` (but not zero) are drawn `drawn` long (0: that
+  /// long) and marked stretched, their labels giving the value; the legend says whether any is.
+  void set_shortest_arrow(double metres, double drawn = 0);
 
   [[nodiscard]] const MechanismGeometry& geometry() const { return geometry_; }
   /// Every outline point over the motion and the ground points (the fixed camera's view).
@@ -197,7 +197,7 @@ class MechanismScene {
   double trail_seconds_;
   Bounds bounds_, view_bounds_;
   double reach_ = 0, view_reach_ = 0, force_scale_ = 0, applied_scale_ = 0, arrow_cap_ = 0, torque_scale_ = 0,
-         extent_ = 1, shortest_ = 0;
+         extent_ = 1, shortest_ = 0, stretched_ = 0;
   MechanismDrawList::Legend legend_;
   std::vector<std::array<double, 2>> rail_span_;    // per joint: slider travel range along the axis
   std::vector<std::array<double, 2>> spring_span_;  // per spring: shortest and longest length

@@ -21,7 +21,7 @@ void add_arrow(DrawList& out, const SceneOptions& options, ArrowKind kind, const
   Arrow arrow{kind, tail, value * scale.metres_per_unit, tag, value.norm()};
   const double length = arrow.vector.norm();
   if (length > 0 && length < options.shortest_arrow) {
-    arrow.vector *= options.shortest_arrow / length;
+    arrow.vector *= (options.stretched_length > 0 ? options.stretched_length : options.shortest_arrow) / length;
     arrow.stretched = true;
   }
   // At one scale the forces' values are said too, so their ratio can be read off.
@@ -114,6 +114,16 @@ bool any_stretched(const Params& p, const SceneOptions& options, const Motion& m
       return true;
   }
   return false;
+}
+
+void add_ghost(const Params& p, const BodyState& s, double ramp, bool compare, DrawList& out) {
+  GhostBlocks ghost;
+  ghost.blocks = {BlockShape{1, block_corners(p, s.x1, s.y1, s.theta1), Vec2(s.x1, s.y1)},
+                  BlockShape{2, block_corners(p, s.x2, s.y2, s.theta2), Vec2(s.x2, s.y2)}};
+  ghost.pin = pin_position(p, s.x1, s.y1, s.theta1);
+  ghost.ramp = ramp;
+  ghost.compare = compare;
+  out.ghosts.push_back(ghost);
 }
 
 void build_scene(const Params& p, const SceneOptions& options, const Motion& motion, std::size_t index, DrawList& out) {

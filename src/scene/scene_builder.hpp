@@ -30,8 +30,9 @@ struct SceneOptions {
   bool common_force_scale = false;                     // pin force and gravity share one scale
   bool relative_to_com = false;
   double trail_seconds = 2.0;
-  double shortest_arrow = 0;  // m: a shorter arrow (not zero) is drawn this long, marked stretched
-  double explode = 0;         // m: > 0 draws the free-body view, the blocks this far apart (no trail, no G)
+  double shortest_arrow = 0;    // m: a shorter arrow (not zero) is drawn stretched_length long, marked stretched
+  double stretched_length = 0;  // m: how long a stretched arrow is drawn; 0: shortest_arrow
+  double explode = 0;           // m: > 0 draws the free-body view, the blocks this far apart (no trail, no G)
 };
 
 /// The longest arrow drawn (metres): 3/4 of D, within L/4 .. L/2.
@@ -48,6 +49,9 @@ struct SceneOptions {
 /// Whether any arrow of the motion is drawn stretched (shorter than
 /// options.shortest_arrow at its scale, not zero).
 [[nodiscard]] bool any_stretched(const Params& p, const SceneOptions& options, const Motion& motion);
+
+/// Adds another run's blocks (with parameters `p`) in state `s` to `out.ghosts`.
+void add_ghost(const Params& p, const BodyState& s, double ramp, bool compare, DrawList& out);
 
 /// Clears `out` and fills it with what sample `index` of `motion` shows.
 void build_scene(const Params& p, const SceneOptions& options, const Motion& motion, std::size_t index, DrawList& out);

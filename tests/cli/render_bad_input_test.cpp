@@ -104,24 +104,84 @@ INSTANTIATE_TEST_SUITE_P(
 // --ensemble, --spread and --compare (render --mechanism): the flag and the valid range.
 INSTANTIATE_TEST_SUITE_P(
     Overlays, RenderBadInput,
-    ::testing::Values(BadInput{{"--mechanism", "double-pendulum", "--ensemble", "1"},
-                               "--ensemble: '1' is not a whole number of runs in 2 .. 200"},
-                      BadInput{{"--mechanism", "double-pendulum", "--ensemble", "201"}, "in 2 .. 200"},
-                      BadInput{{"--mechanism", "double-pendulum", "--ensemble", "2.5"}, "in 2 .. 200"},
-                      BadInput{{"--mechanism", "double-pendulum", "--ensemble", "5", "--spread", "0"},
-                               "--spread: '0' must be a finite number > 0"},
-                      BadInput{{"--mechanism", "double-pendulum", "--ensemble", "5", "--spread", "nan"},
-                               "must be a finite number > 0"},
-                      BadInput{{"--mechanism", "double-pendulum", "--spread", "1e-3"},
-                               "--spread: applies only with --ensemble"},
-                      BadInput{{"--ensemble", "5"}, "apply only with --mechanism"},
-                      BadInput{{"--mechanism", "double-pendulum", "--compare", "2.thet=1"},
-                               "--compare: '2.thet' (--compare 2.thet) is not a parameter or initial coordinate of "
-                               "'double-pendulum' (did you mean '2.theta'?)"},
-                      BadInput{{"--mechanism", "double-pendulum", "--compare", "integrator=rk5"},
-                               "--compare: --integrator: 'rk5' is not an integrator; valid: "},
-                      BadInput{{"--mechanism", "double-pendulum", "--compare", "2.theta"},
-                               "--compare: '2.theta' is not NAME=VALUE"}));
+    ::testing::Values(
+        BadInput{{"--mechanism", "double-pendulum", "--ensemble", "1"},
+                 "--ensemble: '1' is not a whole number of runs in 2 .. 200"},
+        BadInput{{"--mechanism", "double-pendulum", "--ensemble", "201"}, "in 2 .. 200"},
+        BadInput{{"--mechanism", "double-pendulum", "--ensemble", "2.5"}, "in 2 .. 200"},
+        BadInput{{"--mechanism", "double-pendulum", "--ensemble", "5", "--spread", "0"},
+                 "--spread: '0' must be a finite number > 0"},
+        BadInput{{"--mechanism", "double-pendulum", "--ensemble", "5", "--spread", "nan"},
+                 "must be a finite number > 0"},
+        BadInput{{"--mechanism", "double-pendulum", "--spread", "1e-3"}, "--spread: applies only with --ensemble"},
+        BadInput{{"--ensemble", "5", "--view", "fbd"},
+                 "--view: the free-body view draws the blocks pulled apart with their loads"},
+        BadInput{{"--compare", "thta1=0.2"}, "--compare: 'thta1' is not an input (did you mean 'theta1'?)"},
+        BadInput{{"--compare", "L=-1"}, "L = -1"},
+        BadInput{{"--compare", "four-bar"}, "--compare four-bar: another mechanism applies with --mechanism"},
+        BadInput{{"--compare", "{dir}/none.csv"}, "none.csv: cannot read the trajectory file"},
+        BadInput{{"--mechanism", "double-pendulum", "--compare", "four-bar"},
+                 "--compare four-bar: its bodies (2, 3, 4) are not double-pendulum's (1, 2)"},
+        BadInput{{"--mechanism", "double-pendulum", "--compare", "2.thet=1"},
+                 "--compare: '2.thet' (--compare 2.thet) is not a parameter or initial coordinate of "
+                 "'double-pendulum' (did you mean '2.theta'?)"},
+        BadInput{{"--mechanism", "double-pendulum", "--compare", "integrator=rk5"},
+                 "--compare: --integrator: 'rk5' is not an integrator; valid: "},
+        BadInput{{"--mechanism", "double-pendulum", "--compare", "2.theta"},
+                 "--compare: '2.theta' is not NAME=VALUE"}));
+
+// --compare FILE.csv: the file's line and what is wrong or missing; no output.
+struct BadTrajectory {
+  std::vector<std::string> args;
+  std::string csv;
+  std::string expected;  // "{file}" stands for the CSV's path
+};
+class RenderBadTrajectory : public ::testing::TestWithParam<BadTrajectory> {};
+
+TEST_P(RenderBadTrajectory, NamesTheFileAndLine) {
+  TempDir dir;
+  const std::filesystem::path csv = dir / "run.csv";
+  write_text(csv, GetParam().csv);
+  std::vector<std::string> args{"render", "--quiet",   "--size",     "64x36", "--duration",
+                                "1",      "--compare", csv.string(), "--out", (dir / "clip.mp4").string()};
+  args.insert(args.end(), GetParam().args.begin(), GetParam().args.end());
+  const RunResult r = run_linkage(args);
+  std::string expected = GetParam().expected;
+  if (const auto at = expected.find("{file}"); at != std::string::npos) expected.replace(at, 6, csv.string());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find(expected), std::string::npos) << r.err;
+  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"run.csv"}));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Files, RenderBadTrajectory,
+    ::testing::Values(
+        BadTrajectory{{},
+                      "t,x1,y1,theta1\n0,1,2,0.1\n1,1,2,0.1\n",
+                      "{file}: no column 'theta2'; --compare, to draw the homework's two blocks, needs the columns t, "
+                      "x1, y1, theta1, theta2"},
+        BadTrajectory{{},
+                      "t,x1,y1,theta1,theta2\n0,1,2,0.1,0.2\n0.5,1,2,0.1,0.2\n0.5,1,2,0.1,0.2\n1,1,2,0.1,0.2\n",
+                      "{file}:4: t = 0.5 s does not increase (the row before has t = 0.5 s)"},
+        BadTrajectory{{},
+                      "t,x1,y1,theta1,theta2\n0,1,2,0.1,0.2\n0.5,1,abc,0.1,0.2\n1,1,2,0.1,0.2\n",
+                      "{file}:3: y1 = 'abc' is not a number"},
+        BadTrajectory{{},
+                      "t,x1,y1,theta1,theta2\n0,1,2,0.1,0.2\n0.5,1,2,nan,0.2\n1,1,2,0.1,0.2\n",
+                      "{file}:3: theta1 is nan; every value must be a finite number"},
+        BadTrajectory{
+            {}, "t,x1,y1,theta1,theta2\n0,1,2,0.1,0.2\n0.5,1,2,0.1\n", "{file}:3: 4 fields; the header has 5"},
+        BadTrajectory{{},
+                      "t,x1,y1,theta1,theta2\n0,1,2,0.1,0.2\n0.5,1,2,0.1,0.2\n",
+                      "{file}:3: the last row has t = 0.5 s, before the clip's end at 1 s"},
+        BadTrajectory{{},
+                      "t,x1,y1,theta1,theta2\n0.1,1,2,0.1,0.2\n1,1,2,0.1,0.2\n",
+                      "{file}:2: the first row has t = 0.1 s, after the clip's start at 0 s"},
+        BadTrajectory{{"--mechanism", "double-pendulum"},
+                      "t,1.x,1.y,1.theta\n0,1,2,0.1\n1,1,2,0.1\n",
+                      "{file}: no column '2.x'; --compare, to draw the bodies of double-pendulum, needs the columns t, "
+                      "1.x, 1.y, 1.theta, 2.x, 2.y, 2.theta"}));
 
 TEST(RenderBadInputFolder, UnwritableFolderIsAnInputError) {
   if (::geteuid() == 0) GTEST_SKIP() << "root writes anywhere";

@@ -116,6 +116,35 @@ TEST(RenderCli, ArrowScalesAndTheFreeBodyView) {
             still("mechanism_default.png", {"--mechanism", "slider-crank"}));
 }
 
+// Overlays on the homework: an ensemble, settings, and a trajectory file from simulate
+// (a student's own integrator's output would look the same); each changes the picture,
+// the same every time. Then a mechanism's trajectory file and another mechanism.
+TEST(RenderCli, HomeworkOverlaysFromSettingsAndATrajectoryFile) {
+  TempDir dir;
+  const RunResult sim = run_linkage(
+      {"simulate", "--integrator", "euler", "--dt", "0.01", "--duration", "2", "--out", (dir / "euler.csv").string()});
+  ASSERT_EQ(sim.exit_code, 0) << sim.err;
+  const auto still = [&](const std::string& name, std::vector<std::string> flags) {
+    flags.insert(flags.end(), {"--out", (dir / name).string(), "--at", "1.5"});
+    const RunResult r = render(flags);
+    EXPECT_EQ(r.exit_code, 0) << name << ": " << r.err;
+    return file_bytes(dir / name);
+  };
+  const auto plain = still("plain.png", {});
+  EXPECT_NE(still("ensemble.png", {"--ensemble", "5", "--spread", "0.2"}), plain);
+  EXPECT_NE(still("settings.png", {"--compare", "theta2=0.5,integrator=rk4"}), plain);
+  const auto file = still("file.png", {"--compare", (dir / "euler.csv").string()});
+  EXPECT_NE(file, plain);
+  EXPECT_EQ(still("again.png", {"--compare", (dir / "euler.csv").string()}), file);
+  const RunResult dp = run_linkage(
+      {"simulate", "--mechanism", "double-pendulum", "--duration", "2", "--out", (dir / "dp.csv").string()});
+  ASSERT_EQ(dp.exit_code, 0) << dp.err;
+  EXPECT_NE(still("dp.png", {"--mechanism", "double-pendulum", "--compare", (dir / "dp.csv").string()}),
+            still("dp_plain.png", {"--mechanism", "double-pendulum"}));
+  EXPECT_NE(still("blocks.png", {"--mechanism", "two-blocks", "--compare", "unequal-blocks"}),
+            still("blocks_plain.png", {"--mechanism", "two-blocks"}));
+}
+
 TEST(RenderCli, OnlyTheWorkThePictureNeeds) {
   TempDir dir;
   const std::string frames = (dir / "f").string();

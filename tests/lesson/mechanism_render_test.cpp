@@ -10,6 +10,7 @@
 
 #include "core/error.hpp"
 #include "lesson/lesson.hpp"
+#include "lesson/runner.hpp"
 #include "support/test_support.hpp"
 
 namespace linkage::lesson {
@@ -153,6 +154,30 @@ compare = ["case=1"]
   EXPECT_EQ(same.clip.compare->initial.size(), same.state.size());
 }
 
+TEST(LessonMechanism, EnsembleAndCompareWorkOnTheHomeworkToo) {
+  test::TempDir dir;
+  const Lesson lesson = parse_text(dir, R"(title = "Nearby starts"
+[[step]]
+kind = "render"
+out = "fan.png"
+at = 2
+ensemble = 4
+spread = 0.1
+compare = ["theta1=0.1000001", "integrator=rk4"]
+)");
+  const auto& fan = std::get<RenderStep>(lesson.steps[0].body);
+  const Clip clip = render_clip(fan, Quality::draft, dir.path(), {});
+  EXPECT_EQ(clip.ensemble, 4);
+  EXPECT_DOUBLE_EQ(clip.spread, 0.1);
+  ASSERT_TRUE(clip.compare.has_value());
+  EXPECT_EQ(clip.compare->inputs.state().theta1, 0.1000001);
+  EXPECT_EQ(clip.compare->simulation.integrator, IntegratorKind::rk4);
+  EXPECT_NE(error_of("title = \"x\"\n[[step]]\nkind = \"render\"\nout = \"a.png\"\ncompare = [\"thta1=1\"]\n")
+                .find("lesson.toml:5:11: step 1 (render): compare: 'thta1' is not an input (did you mean 'theta1'?)"),
+            std::string::npos)
+      << error_of("title = \"x\"\n[[step]]\nkind = \"render\"\nout = \"a.png\"\ncompare = [\"thta1=1\"]\n");
+}
+
 TEST(LessonMechanism, BadOverlayKeysAreOneLineErrors) {
   const std::string top =
       "title = \"x\"\nmechanism = \"double-pendulum\"\n[[step]]\nkind = \"render\"\nout = \"a.png\"\n";
@@ -162,8 +187,10 @@ TEST(LessonMechanism, BadOverlayKeysAreOneLineErrors) {
   EXPECT_NE(error_of(top + "compare = [\"2.theta\"]\n").find("is not NAME=VALUE"), std::string::npos);
   EXPECT_NE(error_of(top + "compare = [\"case=4\"]\n").find("valid: 1, 2, 3"), std::string::npos);
   EXPECT_NE(error_of(top + "compare = [\"integrator=nope\"]\n").find("nope"), std::string::npos);
-  EXPECT_NE(error_of("title = \"x\"\n[[step]]\nkind = \"render\"\nout = \"a.png\"\nensemble = 3\n")
-                .find("'ensemble' applies to a mechanism"),
+  // The homework takes them too (its own input names in compare).
+  EXPECT_EQ(error_of("title = \"x\"\n[[step]]\nkind = \"render\"\nout = \"a.png\"\nensemble = 3\n"), "");
+  EXPECT_NE(error_of("title = \"x\"\n[[step]]\nkind = \"render\"\nout = \"a.png\"\ncompare = [\"2.theta=1\"]\n")
+                .find("'2.theta' is not an input"),
             std::string::npos);
 }
 

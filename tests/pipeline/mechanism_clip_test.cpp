@@ -343,7 +343,8 @@ TEST(MechanismForces, LabelsKeepClearOfEachOtherArrowsAndBodiesAndOnlyStubsGoUnl
     for (const ArrowScaleRequest* request : {&own, &common, &apart}) {
       SCOPED_TRACE(name + (request == &common ? ", common" : request == &apart ? ", apart" : ", default"));
       MechanismScene scene(mechanism_geometry(system), motion, {}, 2.0, *request);
-      scene.set_shortest_arrow(shortest_arrow_px(style) / frame_camera(scene, 0, kWidth, kHeight).scale());
+      const double scale = frame_camera(scene, 0, kWidth, kHeight).scale();
+      scene.set_shortest_arrow(least_visible_arrow_px(style) / scale, stretched_arrow_px(style) / scale);
       const Rect title{0, 0, 400, 30};
       MechanismDrawList list;
       // Every other frame, so the worst (the most and longest arrows) are among them.

@@ -115,6 +115,46 @@ TEST(ClipRenderer, ForceArrowsPointTheRightWay) {
   }
 }
 
+// The least length is compared with what is drawn, in pixels: an arrow reads as one down
+// to a head's length (its head then 60% of full size). The fast-spin still at one scale
+// (1 cm = 150 mN) drew a 302 mN pin force dashed at 1280x720 although its true length,
+// about 19 px, shows a head and a shaft; below a head's length it is stretched, drawn 3
+// heads long so the dashes show.
+TEST(ClipRenderer, ArrowsAreStretchedOnlyWhenShorterThanAHeadOnScreen) {
+  const Params p;
+  Motion motion = test::still_motion(p, State{}, true);
+  RenderSettings settings;
+  settings.width = 1280;
+  settings.height = 720;
+  settings.arrow_scale.common = true;
+  settings.arrow_scale.common_units_per_cm = 0.15;
+  ClipRenderer renderer(p, motion, settings, load_theme("light", {}, "--theme"), "Case 3");
+  const double scale = renderer.camera_at(0).scale();
+  DrawStyle style;
+  style.u = DrawStyle::unit_for(settings.width, settings.height);
+  EXPECT_NEAR(renderer.scene_options().shortest_arrow * scale, style.arrow_head_length(), 1e-9);
+  const auto pin_arrow = [&](double newtons) {
+    motion.samples[0].pin_force = Vec2(newtons, 0.0);
+    DrawList list;
+    build_scene(p, renderer.scene_options(), motion, 0, list);
+    for (const Arrow& arrow : list.arrows)
+      if (arrow.kind == ArrowKind::pin_force) return arrow;
+    ADD_FAILURE() << "no pin-force arrow";
+    return Arrow{};
+  };
+  const Arrow seen = pin_arrow(0.302);
+  const double true_px = 0.302 * (0.01 / 0.15) * scale;
+  EXPECT_GT(true_px, style.arrow_head_length());
+  EXPECT_LT(true_px, stretched_arrow_px(style));  // what the old least length (3 heads) stretched
+  EXPECT_FALSE(seen.stretched);
+  EXPECT_TRUE(seen.valued);  // at one scale the label gives the value
+  EXPECT_NEAR(seen.vector.norm() * scale, true_px, 1e-9);
+  const Arrow tiny = pin_arrow(0.05);  // 3 px at its scale
+  EXPECT_TRUE(tiny.stretched);
+  EXPECT_NEAR(tiny.vector.norm() * scale, stretched_arrow_px(style), 1e-9);
+  EXPECT_NEAR(tiny.magnitude, 0.05, 1e-15);
+}
+
 TEST(ClipRenderer, StaticLayersAreDrawnOnceForAClip) {
   const Params p;
   const Motion motion = test::closed_form_motion(p, State{}, 12, 1.0 / 30, true);
