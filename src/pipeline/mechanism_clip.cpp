@@ -10,7 +10,9 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
+#include "core/number_format.hpp"
 #include "encode/png_writer.hpp"
+#include "integrate/mechanism_columns.hpp"
 #include "integrate/mechanism_simulation.hpp"
 #include "pipeline/encode_frames.hpp"
 #include "pipeline/panel_data.hpp"
@@ -48,14 +50,21 @@ std::vector<BodyPoint> resolve_trails(const MechanismGeometry& geometry, const s
   return points;
 }
 
-/// The ensemble's legend row: "ensemble: 20 runs, 1.theta + 0 .. 1e-06".
+/// The ensemble's legend row in words: "ensemble: 20 runs, angle θ of body 1 + 0 .. 1e-06 rad".
 std::string ensemble_label(const sym::System& system, const MechanismClip& clip) {
   if (clip.ensemble < 2 || system.coordinates().empty()) return {};
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, " + 0 .. %.3g", clip.spread);
+  const std::string& key = system.coordinates().front().coordinate.key;
+  std::string words = key, unit;
+  for (const MechanismColumn& column : mechanism_columns(system))
+    if (column.name == key) {
+      words = column_words(column);
+      unit = column.unit;
+    }
   std::string row = "ensemble: " + std::to_string(clip.ensemble) + " runs, ";
-  row += system.coordinates().front().coordinate.key;
-  row += buffer;
+  row += words;
+  row += " + 0 .. ";
+  row += format_significant(clip.spread, 3);
+  if (!unit.empty()) row += " " + unit;
   return row;
 }
 
