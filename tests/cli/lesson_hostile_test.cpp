@@ -14,11 +14,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string repeat(std::string_view s, int n) {
-  std::string out;
-  for (int i = 0; i < n; ++i) out += s;
-  return out;
-}
+using test::repeat;
 
 const std::string kTooDeep = "nested more than " + std::to_string(kMaxNesting) + " levels deep";
 

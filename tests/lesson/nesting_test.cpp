@@ -10,26 +10,14 @@
 #include "core/limits.hpp"
 #include "lesson/expression.hpp"
 #include "lesson/text_template.hpp"
+#include "support/test_support.hpp"
 
 namespace linkage::lesson {
 namespace {
 
-std::string repeat(std::string_view s, int n) {
-  std::string out;
-  for (int i = 0; i < n; ++i) out += s;
-  return out;
-}
+using test::repeat;
 
-// The message of the Error::input `f` throws, or "" when it throws none.
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    EXPECT_EQ(e.code(), ExitCode::bad_input);
-    return e.what();
-  }
-  return "";
-}
+std::string error_of(const std::function<void()>& action) { return test::input_error_of(action); }
 
 const std::string kTooDeep = "nested more than " + std::to_string(kMaxNesting) + " levels deep";
 

@@ -12,16 +12,7 @@
 namespace linkage {
 namespace {
 
-std::string error_of(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const Error& e) {
-    EXPECT_EQ(e.code(), ExitCode::bad_input);
-    return e.what();
-  }
-  ADD_FAILURE() << "no error";
-  return {};
-}
+std::string error_of(const std::function<void()>& action) { return test::input_error_of(action); }
 
 TEST(Inputs, DefaultsAreTheSpecExampleAndValid) {
   const Inputs inputs;
@@ -68,11 +59,7 @@ TEST(Inputs, TomlFileErrorsNameFileLineAndColumn) {
   EXPECT_NE(error_of([&] { Inputs().apply_file(dir / "missing.toml"); }).find("does not exist"), std::string::npos);
 }
 
-std::string repeat(std::string_view s, int n) {
-  std::string out;
-  for (int i = 0; i < n; ++i) out += s;
-  return out;
-}
+using test::repeat;
 
 // toml++ recurses once per part of a dotted key: a key of 100,000 parts overflowed the
 // stack. Keys are bounded before toml++ sees them; dots in values, strings and comments

@@ -59,16 +59,7 @@ std::string pendulum_with(std::size_t line, const std::string& text) { return pe
 
 std::string pendulum() { return pendulum_with({}); }
 
-std::string error_of(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const Error& e) {
-    EXPECT_EQ(e.code(), ExitCode::bad_input) << e.what();
-    return e.what();
-  }
-  ADD_FAILURE() << "no error";
-  return {};
-}
+std::string error_of(const std::function<void()>& action) { return test::input_error_of(action); }
 
 std::string read_error(const std::string& text) {
   return error_of([&] { (void)read_mechanism(text, "m.toml"); });

@@ -5,6 +5,7 @@
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace linkage::test {
@@ -69,5 +70,11 @@ double number(const nlohmann::json& value);
 
 std::string read_text(const std::filesystem::path& path);
 void write_text(const std::filesystem::path& path, const std::string& text);
+
+/// `s` written `n` times (hostile input: deep nesting, long names).
+std::string repeat(std::string_view s, int n);
+/// The message of the Error `action` throws, checked to be a bad-input error (exit 2); ""
+/// when it throws none.
+std::string input_error_of(const std::function<void()>& action);
 
 }  // namespace linkage::test

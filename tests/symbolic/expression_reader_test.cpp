@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "core/limits.hpp"
+#include "support/test_support.hpp"
 #include "symbolic/system.hpp"
 
 namespace linkage::sym {
@@ -38,11 +39,7 @@ std::string error_of(const std::string& text) {
   return "";
 }
 
-std::string repeat(std::string_view s, int n) {
-  std::string out;
-  for (int i = 0; i < n; ++i) out += s;
-  return out;
-}
+using test::repeat;
 
 TEST(ExpressionReader, ArithmeticFollowsPrecedence) {
   EXPECT_EQ(value("1 + 2 * 3"), 7.0);
