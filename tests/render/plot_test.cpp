@@ -500,6 +500,20 @@ TEST(PlotFile, LegendAvoidsTheData) {
   EXPECT_LT(crowded.geometry.right, wide - 100);
 }
 
+TEST(PlotFile, ALegendThatWouldHideDataInEveryCornerGoesBesideIt) {
+  Plot plot;
+  // A zigzag between the bottom and the top fills every corner.
+  Series zigzag{"zigzag", {}};
+  for (int i = 0; i <= 40; ++i) zigzag.points.push_back({i / 40.0, static_cast<double>(i % 2)});
+  plot.series.push_back(zigzag);
+  const TempDir dir;
+  const Report report = write(plot, dir / "zigzag.png");
+  EXPECT_EQ(report.legend, LegendPlace::outside_right);
+  // One corner still free: the legend stays inside, in it.
+  plot.series[0].points = {{0, 0}, {1, 1}};
+  EXPECT_EQ(write(plot, dir / "diagonal.png").legend, LegendPlace::top_left);
+}
+
 TEST(PlotFile, LongTextFitsASmallCanvas) {
   Plot plot = sample_plot();
   plot.title = "Accuracy against cost: Case 1, Case 2 and Case 3 with every integrator and step size";
