@@ -53,7 +53,8 @@ struct Series {
 };
 
 /// Where the legend goes. `best` takes the inside corner covering the fewest data
-/// points, or `outside_right` when the legend is too large for a corner.
+/// points, or `outside_right` when the legend is too large for a corner or would hide
+/// data in every corner (unless that leaves the data less than half the width).
 enum class LegendPlace { best, top_left, top_right, bottom_left, bottom_right, outside_right, none };
 
 /// Light (white background, the default) or dark colours.
