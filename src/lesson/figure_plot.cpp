@@ -2,6 +2,7 @@
 // axes and legends in words and units, angles in the step's unit.
 #include "lesson/figure_plot.hpp"
 
+#include <algorithm>
 #include <array>
 
 #include "core/angle_unit.hpp"
@@ -52,6 +53,9 @@ plot::Plot mechanism_plot(const Figure& f, const std::vector<Run>& runs) {
   columns.insert(columns.end(), f.mechanism_y.begin(), f.mechanism_y.end());
   std::vector<double> factors;  // 180/π for an angle plotted in degrees
   for (const MechanismColumn& c : columns) factors.push_back(angle_factor(c.unit, f.angles));
+  p.x.degrees = angle_unit_text(columns.front().unit, f.angles) == "deg";
+  p.y.degrees = std::all_of(f.mechanism_y.begin(), f.mechanism_y.end(),
+                            [&](const MechanismColumn& c) { return angle_unit_text(c.unit, f.angles) == "deg"; });
   for (std::size_t r = 0; r < runs.size(); ++r) {
     const MechanismSampledRun data = sample_mechanism_run(runs[r], run_sample_times(runs[r].options, f.every), columns);
     for (std::size_t k = 0; k < f.mechanism_y.size(); ++k) {
@@ -84,6 +88,9 @@ plot::Plot figure_plot(const Figure& f, const std::vector<Run>& runs) {
   columns.insert(columns.end(), f.y.begin(), f.y.end());
   std::vector<double> factors;  // 180/π for an angle plotted in degrees
   for (std::size_t c : columns) factors.push_back(angle_factor(kSeries[c].unit, f.angles));
+  p.x.degrees = angle_unit_text(kSeries[f.x].unit, f.angles) == "deg";
+  p.y.degrees = std::all_of(f.y.begin(), f.y.end(),
+                            [&](std::size_t i) { return angle_unit_text(kSeries[i].unit, f.angles) == "deg"; });
   for (std::size_t r = 0; r < runs.size(); ++r) {
     const SampledRun data = sample_run(runs[r], f.every, columns);
     for (std::size_t k = 0; k < f.y.size(); ++k) {

@@ -27,6 +27,7 @@ struct Axis {
   Scale scale = Scale::linear;
   std::optional<double> min{};  ///< Fixed lower limit (> 0 on a log axis).
   std::optional<double> max{};  ///< Fixed upper limit (> min).
+  bool degrees = false;         ///< An angle in degrees: ticks at 90, 180, ... (degree_ticks).
 };
 
 /// What is drawn at a series' points.

@@ -117,8 +117,9 @@ class Drawing {
   // --- layout ----------------------------------------------------------------------
 
   [[nodiscard]] Ticks ticks_for(const Axis& axis, const detail::Limits& limits, int max_ticks) const {
-    return axis.scale == Scale::log ? log_ticks(limits.min, limits.max, max_ticks)
-                                    : linear_ticks(limits.min, limits.max, max_ticks);
+    if (axis.scale == Scale::log) return log_ticks(limits.min, limits.max, max_ticks);
+    return axis.degrees ? degree_ticks(limits.min, limits.max, max_ticks)
+                        : linear_ticks(limits.min, limits.max, max_ticks);
   }
 
   /// Ticks for an axis of `length` device units, as many as fit without labels touching.

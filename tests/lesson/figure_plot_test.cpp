@@ -45,6 +45,9 @@ TEST(FigurePlot, MechanismAnglesInDegreesOnBothAxes) {
   EXPECT_EQ(rad.y.label, "angular velocity θ̇ of body 2 (rad/s)");
   EXPECT_EQ(deg.x.label, "angle θ of body 2 (deg)");
   EXPECT_EQ(deg.y.label, "angular velocity θ̇ of body 2 (deg/s)");
+  EXPECT_TRUE(deg.x.degrees);   // crank-angle ticks at 0, 90, 180 ...
+  EXPECT_FALSE(deg.y.degrees);  // a rate: decimal ticks
+  EXPECT_FALSE(rad.x.degrees);
   ASSERT_EQ(rad.series.size(), 1u);
   ASSERT_EQ(deg.series.size(), 1u);
   ASSERT_EQ(deg.series[0].points.size(), rad.series[0].points.size());
@@ -74,6 +77,8 @@ TEST(FigurePlot, HomeworkAnglesInDegrees) {
   const plot::Plot deg = step_plot("", keys + "angles = \"deg\"\n");
   EXPECT_EQ(rad.y.label, "θ_{1}, θ_{2} (rad)");
   EXPECT_EQ(deg.y.label, "θ_{1}, θ_{2} (deg)");
+  EXPECT_TRUE(deg.y.degrees);
+  EXPECT_FALSE(deg.x.degrees);
   EXPECT_EQ(deg.x.label, "time t (s)");
   ASSERT_EQ(deg.series.size(), 2u);
   for (std::size_t k = 0; k < 2; ++k)
