@@ -11,6 +11,7 @@
 #include <variant>
 #include <vector>
 
+#include "core/angle_unit.hpp"
 #include "integrate/columns.hpp"
 #include "integrate/mechanism_columns.hpp"
 #include "integrate/simulation.hpp"
@@ -115,7 +116,8 @@ struct Figure {
   std::vector<MechanismColumn> mechanism_y;
   std::optional<MechanismColumn> mechanism_x;
   bool log_x = false, log_y = false;
-  bool difference = false;  // plot steps: each run after the first as abs(run - first run)
+  bool difference = false;            // plot steps: each run after the first as abs(run - first run)
+  AngleUnit angles = AngleUnit::rad;  // plot steps: angles and angular rates in rad or deg
   std::string title;
   double every = 0;  // s between samples
   int width = 900, height = 600;

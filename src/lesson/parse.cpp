@@ -931,6 +931,7 @@ class Parser {
     r.require("y");
     s.figure = figure(r, s.runs);
     s.figure.difference = r.boolean("difference").value_or(false);
+    if (auto a = r.choice("angles", {"rad", "deg"})) s.figure.angles = parse_angle_unit(*a, r.where("angles"));
     if (s.figure.difference) check_difference(r, s);
     if (s.runs.front().built) {
       s.figure.mechanism_y = mechanism_column_list(r, "y", *s.runs.front().built->system, false);

@@ -136,7 +136,7 @@ constexpr std::array<KeySpec, 2> kCaptionKeys{{
     {"text", "string", "(required)", "The words, wrapped to the frame's width."},
 }};
 
-constexpr std::array<KeySpec, 11> kPlotKeys{{
+constexpr std::array<KeySpec, 12> kPlotKeys{{
     {"out", "string", "(required)", "Base file name: writes OUT.png and OUT.svg in the output folder."},
     {"caption", "string", "none", "Text under the figure in the lesson document."},
     {"title", "string", "none", "The figure's title."},
@@ -146,6 +146,8 @@ constexpr std::array<KeySpec, 11> kPlotKeys{{
     {"log_y", "boolean", "false", "Logarithmic vertical axis (non-positive values are left out)."},
     {"difference", "boolean", "false",
      "Draw each run after the first as abs(run - first run), sample by sample: how far nearby runs part."},
+    {"angles", "string", "\"rad\"",
+     "Unit of plotted angles and angular rates, on either axis: rad or deg (deg, deg/s), as render --angles."},
     {"every", "number", "duration / 400", "Seconds between samples."},
     {"size", "string", "\"900x600\"", "Figure size WxH in pixels (PNG) and points (SVG)."},
     {"runs", "array of tables", "one run of the step's options",

@@ -8,10 +8,10 @@
 #include "core/interrupt.hpp"
 #include "core/number_format.hpp"
 #include "lesson/canonical.hpp"
+#include "lesson/figure_plot.hpp"
 #include "lesson/plot_difference.hpp"
 #include "lesson/runner_context.hpp"
 #include "lesson/runs.hpp"
-#include "render/panel.hpp"
 #include "render/plot.hpp"
 
 namespace linkage::lesson {
@@ -159,86 +159,6 @@ nlohmann::json simulate(const RunContext& c, const SimulateStep& s) {
 }
 
 // --- plots ---------------------------------------------------------------------------
-
-constexpr std::array<plot::Dash, 4> kDashes{plot::Dash::solid, plot::Dash::dashed, plot::Dash::dotted,
-                                            plot::Dash::dash_dot};
-
-std::string y_label(const std::vector<std::size_t>& y) {
-  if (y.size() == 1) return series_axis_label(y.front());
-  std::vector<std::string> labels, units;  // words, never the raw series names
-  for (std::size_t i : y) {
-    labels.emplace_back(kSeries[i].label);
-    units.emplace_back(kSeries[i].unit);
-  }
-  return shared_axis_label(labels, units);
-}
-
-std::string with_unit_markup(const std::string& words, const std::string& unit) {
-  return unit.empty() ? words : words + " (" + unit + ")";
-}
-
-/// A mechanism's columns for every run: axes and legends in words and units.
-plot::Plot mechanism_plot(const Figure& f, const std::vector<Run>& runs) {
-  plot::Plot p;
-  p.title = f.title;
-  p.x.label = with_unit_markup(column_words(*f.mechanism_x), column_unit_markup(*f.mechanism_x));
-  std::vector<std::string> labels, units;
-  for (const MechanismColumn& c : f.mechanism_y) {
-    labels.push_back(column_words(c));
-    units.push_back(column_unit_markup(c));
-  }
-  p.y.label = labels.size() == 1 ? with_unit_markup(labels[0], units[0]) : shared_axis_label(labels, units);
-  p.x.scale = f.log_x ? plot::Scale::log : plot::Scale::linear;
-  p.y.scale = f.log_y ? plot::Scale::log : plot::Scale::linear;
-  std::vector<MechanismColumn> columns{*f.mechanism_x};
-  columns.insert(columns.end(), f.mechanism_y.begin(), f.mechanism_y.end());
-  for (std::size_t r = 0; r < runs.size(); ++r) {
-    const MechanismSampledRun data = sample_mechanism_run(runs[r], run_sample_times(runs[r].options, f.every), columns);
-    for (std::size_t k = 0; k < f.mechanism_y.size(); ++k) {
-      plot::Series series;
-      const std::string& y_name = labels[k];
-      series.name = runs.size() == 1 ? (f.mechanism_y.size() == 1 ? runs[r].label : y_name)
-                                     : (f.mechanism_y.size() == 1 ? runs[r].label : runs[r].label + ": " + y_name);
-      series.color = r % plot::palette_size;
-      series.dash = kDashes[k % kDashes.size()];
-      series.points.reserve(data.columns[0].size());
-      for (std::size_t i = 0; i < data.columns[0].size(); ++i)
-        series.points.push_back({data.columns[0][i], data.columns[k + 1][i]});
-      p.series.push_back(std::move(series));
-    }
-  }
-  return p;
-}
-
-/// The figure's series for every run, sampled and put into a plot description: runs
-/// by colour, series by dash.
-plot::Plot time_plot(const Figure& f, const std::vector<Run>& runs) {
-  if (f.mechanism_x) return mechanism_plot(f, runs);
-  plot::Plot p;
-  p.title = f.title;
-  p.x.label = series_axis_label(f.x);
-  p.y.label = y_label(f.y);
-  p.x.scale = f.log_x ? plot::Scale::log : plot::Scale::linear;
-  p.y.scale = f.log_y ? plot::Scale::log : plot::Scale::linear;
-  std::vector<std::size_t> columns{f.x};
-  columns.insert(columns.end(), f.y.begin(), f.y.end());
-  for (std::size_t r = 0; r < runs.size(); ++r) {
-    const SampledRun data = sample_run(runs[r], f.every, columns);
-    for (std::size_t k = 0; k < f.y.size(); ++k) {
-      plot::Series series;
-      const std::string y_name(kSeries[f.y[k]].label);
-      series.name = runs.size() == 1 ? (f.y.size() == 1 ? runs[r].label : y_name)
-                                     : (f.y.size() == 1 ? runs[r].label : runs[r].label + ": " + y_name);
-      series.color = r % plot::palette_size;
-      series.dash = kDashes[k % kDashes.size()];
-      series.points.reserve(data.columns[0].size());
-      for (std::size_t i = 0; i < data.columns[0].size(); ++i)
-        series.points.push_back({data.columns[0][i], data.columns[k + 1][i]});
-      p.series.push_back(std::move(series));
-    }
-  }
-  return p;
-}
 
 /// Writes `name`.png and `name`.svg. Points dropped from a log axis (exact zeros, e.g.
 /// an error at t = 0) are expected; points that are not finite are worth a word.
@@ -406,7 +326,7 @@ nlohmann::json compare(const RunContext& c, const Step& step, const CompareStep&
     table.rows.push_back(std::move(row));
   }
   write_file_atomically(c.options.out_dir / (s.out + ".csv"), csv, step.where);
-  if (s.plot) write_plot(c, step, time_plot(*s.plot, s.runs), s.out, s.width, s.height);
+  if (s.plot) write_plot(c, step, figure_plot(*s.plot, s.runs), s.out, s.width, s.height);
   if (s.cost_plot) write_plot(c, step, cost_plot(s, figures), s.out + "-cost", s.width, s.height);
   nlohmann::json results = {{"table", to_json(table)}};
   if (!warnings.empty()) results["warnings"] = warnings;
@@ -428,7 +348,7 @@ void run_simulate(RunContext& c, const Step& step, const SimulateStep& s) {
 
 void run_plot(RunContext& c, const Step& step, const PlotStep& s) {
   c.cached(step, [&] {
-    plot::Plot p = time_plot(s.figure, s.runs);
+    plot::Plot p = figure_plot(s.figure, s.runs);
     if (s.figure.difference) {
       std::vector<std::string> labels;
       for (const Run& run : s.runs) labels.push_back(run.label);

@@ -50,6 +50,21 @@ std::string shared_axis_label(const std::vector<std::string>& labels, const std:
     words = labels[0];  // all the same
   else if (const std::size_t space = labels[0].rfind(' ', common); space != std::string::npos && space > 0)
     words = labels[0].substr(0, space);
+  // Words that end in a comma name parts after it ("force of joint B on body 3, x"):
+  // name them all ("..., x and y"), never leave the comma dangling.
+  if (!words.empty() && words.back() == ',') {
+    std::string parts;
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+      if (i > 0) parts += i + 1 == labels.size() ? " and " : ", ";
+      const std::size_t part = labels[i].find_first_not_of(' ', words.size());
+      if (part != std::string::npos) parts += labels[i].substr(part);
+    }
+    words.pop_back();
+    if (words.size() + parts.size() + 2 <= kLongest) {
+      words += ", ";
+      words += parts;
+    }
+  }
   if (words.empty()) {
     for (const std::string& label : labels) {
       if (!words.empty()) words += ", ";

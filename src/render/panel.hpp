@@ -46,7 +46,8 @@ struct PanelLayout {
 [[nodiscard]] PanelLayout panel_layout(int width, int height, bool with_panel);
 
 /// A y-axis label for several curves: their shared unit after the words they begin
-/// with ("pin force F_{x}", "pin force F_{y}" -> "pin force (N)"), else the labels
+/// with ("pin force F_{x}", "pin force F_{y}" -> "pin force (N)"; words ending in a
+/// comma name the parts after it: "force of joint B on body 3, x and y (N)"), else the labels
 /// joined when short ("θ_{1}, θ_{2} (rad)"), else "value"; the unit only when all share it.
 [[nodiscard]] std::string shared_axis_label(const std::vector<std::string>& labels,
                                             const std::vector<std::string>& units);

@@ -27,6 +27,7 @@ struct Axis {
   Scale scale = Scale::linear;
   std::optional<double> min{};  ///< Fixed lower limit (> 0 on a log axis).
   std::optional<double> max{};  ///< Fixed upper limit (> min).
+  bool degrees = false;         ///< An angle in degrees: ticks at 90, 180, ... (degree_ticks).
 };
 
 /// What is drawn at a series' points.
@@ -53,7 +54,8 @@ struct Series {
 };
 
 /// Where the legend goes. `best` takes the inside corner covering the fewest data
-/// points, or `outside_right` when the legend is too large for a corner.
+/// points, or `outside_right` when the legend is too large for a corner or would hide
+/// data in every corner (unless that leaves the data less than half the width).
 enum class LegendPlace { best, top_left, top_right, bottom_left, bottom_right, outside_right, none };
 
 /// Light (white background, the default) or dark colours.

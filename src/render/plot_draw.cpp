@@ -89,17 +89,20 @@ class Drawing {
       }
     }
     require_room_for_data();
-    polylines_.clear();
-    markers_.clear();
-    const Box clip_box{g_.left - 4 * m_.line_width, g_.top - 4 * m_.line_width, g_.right + 4 * m_.line_width,
-                       g_.bottom + 4 * m_.line_width};
-    for (std::size_t i = 0; i < plot_.series.size(); ++i) {
-      polylines_.push_back(has_line(plot_.series[i]) ? detail::device_polylines(data_.series[i], g_, clip_box)
-                                                     : std::vector<std::vector<Point>>{});
-      markers_.push_back(has_markers(plot_.series[i]) ? detail::device_markers(data_.series[i], g_, clip_box)
-                                                      : std::vector<Point>{});
+    trace_data();
+    if (legend_place_ == LegendPlace::best) {
+      const LegendPlace corner = least_occupied_corner();
+      legend_place_ = corner;
+      if (samples_in(legend_box(corner)) > 0) {  // every corner would hide data: beside it, if there is room
+        legend_place_ = LegendPlace::outside_right;
+        lay_out();
+        if (g_.right - g_.left < 0.5 * canvas_.width) {
+          legend_place_ = corner;
+          lay_out();
+        }
+        trace_data();
+      }
     }
-    if (legend_place_ == LegendPlace::best) legend_place_ = least_occupied_corner();
 
     paint_background();
     paint_grid();
@@ -114,8 +117,9 @@ class Drawing {
   // --- layout ----------------------------------------------------------------------
 
   [[nodiscard]] Ticks ticks_for(const Axis& axis, const detail::Limits& limits, int max_ticks) const {
-    return axis.scale == Scale::log ? log_ticks(limits.min, limits.max, max_ticks)
-                                    : linear_ticks(limits.min, limits.max, max_ticks);
+    if (axis.scale == Scale::log) return log_ticks(limits.min, limits.max, max_ticks);
+    return axis.degrees ? degree_ticks(limits.min, limits.max, max_ticks)
+                        : linear_ticks(limits.min, limits.max, max_ticks);
   }
 
   /// Ticks for an axis of `length` device units, as many as fit without labels touching.
@@ -250,37 +254,57 @@ class Drawing {
     return {x, y, x + legend_width_, y + legend_height_};
   }
 
+  /// The data's lines and markers in device space for the current layout.
+  void trace_data() {
+    polylines_.clear();
+    markers_.clear();
+    const Box clip_box{g_.left - 4 * m_.line_width, g_.top - 4 * m_.line_width, g_.right + 4 * m_.line_width,
+                       g_.bottom + 4 * m_.line_width};
+    for (std::size_t i = 0; i < plot_.series.size(); ++i) {
+      polylines_.push_back(has_line(plot_.series[i]) ? detail::device_polylines(data_.series[i], g_, clip_box)
+                                                     : std::vector<std::vector<Point>>{});
+      markers_.push_back(has_markers(plot_.series[i]) ? detail::device_markers(data_.series[i], g_, clip_box)
+                                                      : std::vector<Point>{});
+    }
+  }
+
+  /// How many samples of the data (every half font size along lines, and markers) `b` holds.
+  [[nodiscard]] std::size_t samples_in(const Box& b) const {
+    const double step = 0.5 * canvas_.font_size;
+    std::size_t count = 0;
+    for (const auto& lines : polylines_) {
+      for (const auto& line : lines) {
+        for (std::size_t k = 0; k + 1 < line.size(); ++k) {
+          const Point a = line[k];
+          const Point c = line[k + 1];
+          const double length = std::hypot(c.x - a.x, c.y - a.y);
+          const int samples = 1 + static_cast<int>(length / step);
+          for (int s = 0; s < samples; ++s) {
+            const double t = static_cast<double>(s) / samples;
+            count += b.contains({a.x + t * (c.x - a.x), a.y + t * (c.y - a.y)}) ? 1 : 0;
+          }
+        }
+        if (!line.empty()) count += b.contains(line.back()) ? 1 : 0;
+      }
+    }
+    for (const auto& points : markers_)
+      for (const Point& p : points) count += b.contains(p) ? 1 : 0;
+    return count;
+  }
+
   /// The inside corner whose legend box (with some clearance) would cover the fewest
   /// samples of the data, sampled every half font size along lines; ties keep the first
   /// of top right, top left, bottom left, bottom right.
   [[nodiscard]] LegendPlace least_occupied_corner() const {
     constexpr LegendPlace corners[] = {LegendPlace::top_right, LegendPlace::top_left, LegendPlace::bottom_left,
                                        LegendPlace::bottom_right};
-    const double step = 0.5 * canvas_.font_size;
     LegendPlace best = corners[0];
     std::size_t best_count = static_cast<std::size_t>(-1);
     for (const LegendPlace corner : corners) {
       Box b = legend_box(corner);
       const double clearance = 0.6 * canvas_.font_size;  // data just outside the box counts too
       b = {b.left - clearance, b.top - clearance, b.right + clearance, b.bottom + clearance};
-      std::size_t count = 0;
-      for (const auto& lines : polylines_) {
-        for (const auto& line : lines) {
-          for (std::size_t k = 0; k + 1 < line.size(); ++k) {
-            const Point a = line[k];
-            const Point c = line[k + 1];
-            const double length = std::hypot(c.x - a.x, c.y - a.y);
-            const int samples = 1 + static_cast<int>(length / step);
-            for (int s = 0; s < samples; ++s) {
-              const double t = static_cast<double>(s) / samples;
-              count += b.contains({a.x + t * (c.x - a.x), a.y + t * (c.y - a.y)}) ? 1 : 0;
-            }
-          }
-          if (!line.empty()) count += b.contains(line.back()) ? 1 : 0;
-        }
-      }
-      for (const auto& points : markers_)
-        for (const Point& p : points) count += b.contains(p) ? 1 : 0;
+      const std::size_t count = samples_in(b);
       if (count < best_count) {
         best = corner;
         best_count = count;

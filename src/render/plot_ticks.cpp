@@ -68,6 +68,29 @@ int positive_mod(int a, int b) { return ((a % b) + b) % b; }
 
 }  // namespace
 
+Ticks degree_ticks(double lo, double hi, int max_ticks) {
+  if (!std::isfinite(lo) || !std::isfinite(hi) || !(lo < hi)) return {};
+  max_ticks = std::max(2, max_ticks);
+  constexpr std::array<int, 6> steps{15, 30, 45, 90, 180, 360};
+  for (const int step : steps) {
+    const double first = std::ceil(lo / step - slack);
+    const double last = std::floor(hi / step + slack);
+    if (last - first + 1 > max_ticks) continue;
+    if (last - first + 1 < 3) break;
+    Ticks ticks;
+    for (double k = first; k <= last; ++k) {
+      const double value = k * step == 0 ? 0.0 : k * step;  // no "-0"
+      ticks.major.push_back({value, number_label(value, step, false)});
+    }
+    const int divisions = step == 180 ? 2 : step == 360 ? 4 : 3;
+    const double minor_step = static_cast<double>(step) / divisions;
+    for (double j = std::ceil(lo / minor_step - slack); j <= std::floor(hi / minor_step + slack); ++j)
+      if (std::fmod(std::fabs(j), divisions) != 0.0) ticks.minor.push_back(j * minor_step);
+    return ticks;
+  }
+  return linear_ticks(lo, hi, max_ticks);
+}
+
 Ticks linear_ticks(double lo, double hi, int max_ticks) {
   Ticks ticks;
   if (!std::isfinite(lo) || !std::isfinite(hi) || !(lo < hi)) return ticks;

@@ -26,6 +26,12 @@ struct Ticks {
 /// at least 1e5. Empty when !(lo < hi) or either limit is not finite.
 [[nodiscard]] Ticks linear_ticks(double lo, double hi, int max_ticks);
 
+/// Ticks for an angle in degrees: at multiples of the finest of 15, 30, 45, 90, 180
+/// and 360 that puts at most `max_ticks` ticks in [lo, hi] (0, 90, 180, 270, 360 for a
+/// turn), minor ticks dividing it in 3 (2 for 180, 4 for 360); like linear_ticks when
+/// that leaves fewer than three ticks or the range spans more than 12 turns.
+[[nodiscard]] Ticks degree_ticks(double lo, double hi, int max_ticks);
+
 /// Ticks for a logarithmic axis on [lo, hi], 0 < lo < hi: major ticks at the decades
 /// 10^k inside the range, every n-th decade (n in 1, 2, 3, 5, 10, ...) when there
 /// are more than `max_ticks`; minor ticks at m×10^k (m = 2..9) when every decade is

@@ -69,6 +69,17 @@ TEST(PanelPlot, SeveralCurvesShareTheirWordsAndUnitOnTheAxis) {
                               {"kg m/s", "kg m/s"}),
             "momentum error (kg m/s)");
   EXPECT_EQ(shared_axis_label({"θ_{1}", "θ_{2}"}, {"rad", "rad"}), "θ_{1}, θ_{2} (rad)");
+  // A mechanism's force components: the parts after the comma named, no stray comma.
+  EXPECT_EQ(shared_axis_label({"force of joint B on body 3, x", "force of joint B on body 3, y"}, {"N", "N"}),
+            "force of joint B on body 3, x and y (N)");
+  EXPECT_EQ(shared_axis_label(
+                {"force of joint A on body 2, x", "force of joint A on body 2, y", "force of joint A on body 2, z"},
+                {"N", "N", "N"}),
+            "force of joint A on body 2, x, y and z (N)");
+  // Too long to name the parts: the shared words alone, still without the comma.
+  EXPECT_EQ(shared_axis_label({"force of joint B on body 3, along the slider", "force of joint B on body 3, across it"},
+                              {"N", "N"}),
+            "force of joint B on body 3 (N)");
   EXPECT_EQ(shared_axis_label({"θ_{1}", "pin force F_{x}"}, {"rad", "N"}), "θ_{1}, pin force F_{x}");
   EXPECT_EQ(shared_axis_label({"relative energy error |E − E_{0}| / E_{scale}", "distance of G from the parabola"},
                               {"", "m"}),

@@ -59,6 +59,22 @@ TEST(PlotTicks, LinearFiner) {
   EXPECT_EQ(tenths.major[3].value, 0.6);  // 3 x 0.2 computed as 6 / 10, not 0.6000000000000001
 }
 
+TEST(PlotTicks, DegreesAtRightAnglesOverATurn) {
+  const Ticks turn = degree_ticks(-18, 378, 6);
+  EXPECT_EQ(values(turn.major), (std::vector<double>{0, 90, 180, 270, 360}));
+  EXPECT_EQ(labels(turn.major), (std::vector<std::string>{"0", "90", "180", "270", "360"}));
+  ASSERT_FALSE(turn.minor.empty());
+  // Minor ticks every 30 degrees between the major ones.
+  EXPECT_DOUBLE_EQ(turn.minor.front(), 30);
+  EXPECT_DOUBLE_EQ(turn.minor.back(), 330);
+  EXPECT_EQ(turn.minor.size(), 8u);
+  const Ticks finer = degree_ticks(-110, 110, 5);
+  EXPECT_EQ(values(finer.major), (std::vector<double>{-90, -45, 0, 45, 90}));
+  EXPECT_EQ(labels(finer.major).front(), "−90");
+  // Too short a range for three multiples of 15: decimal steps.
+  EXPECT_EQ(values(degree_ticks(0, 20, 6).major), values(linear_ticks(0, 20, 6).major));
+}
+
 TEST(PlotTicks, LinearNegativeUsesMinusSign) {
   const Ticks ticks = linear_ticks(-2.6, 1.1, 8);
   EXPECT_EQ(labels(ticks.major), (std::vector<std::string>{minus + "2.5", minus + "2.0", minus + "1.5", minus + "1.0",
@@ -498,6 +514,20 @@ TEST(PlotFile, LegendAvoidsTheData) {
   const Report crowded = write(plot, dir / "e.png");
   EXPECT_EQ(crowded.legend, LegendPlace::outside_right);
   EXPECT_LT(crowded.geometry.right, wide - 100);
+}
+
+TEST(PlotFile, ALegendThatWouldHideDataInEveryCornerGoesBesideIt) {
+  Plot plot;
+  // A zigzag between the bottom and the top fills every corner.
+  Series zigzag{"zigzag", {}};
+  for (int i = 0; i <= 40; ++i) zigzag.points.push_back({i / 40.0, static_cast<double>(i % 2)});
+  plot.series.push_back(zigzag);
+  const TempDir dir;
+  const Report report = write(plot, dir / "zigzag.png");
+  EXPECT_EQ(report.legend, LegendPlace::outside_right);
+  // One corner still free: the legend stays inside, in it.
+  plot.series[0].points = {{0, 0}, {1, 1}};
+  EXPECT_EQ(write(plot, dir / "diagonal.png").legend, LegendPlace::top_left);
 }
 
 TEST(PlotFile, LongTextFitsASmallCanvas) {
