@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "render/overlays.hpp"
 #include "render/text.hpp"
 
 namespace linkage {
@@ -162,17 +163,7 @@ void paint_equations(cairo_t* cr, const DrawStyle& style, const EquationsText& t
   const double w = std::max(m.column * static_cast<double>(m.widest), m.heading) * f + 2 * m.pad;
   const double h = m.line * rows(lines, text) * f + 2 * m.pad;
   const double x = area.x + 0.5 * (area.width - w), y = area.y + 0.5 * (area.height - h), r = 0.5 * m.pad;
-  cairo_new_sub_path(cr);
-  cairo_arc(cr, x + w - r, y + r, r, -std::numbers::pi / 2, 0);
-  cairo_arc(cr, x + w - r, y + h - r, r, 0, std::numbers::pi / 2);
-  cairo_arc(cr, x + r, y + h - r, r, std::numbers::pi / 2, std::numbers::pi);
-  cairo_arc(cr, x + r, y + r, r, std::numbers::pi, 1.5 * std::numbers::pi);
-  cairo_close_path(cr);
-  set_colour(cr, style.theme->panel);
-  cairo_fill_preserve(cr);
-  set_colour(cr, style.theme->panel_edge);
-  cairo_set_line_width(cr, std::max(1.0, 0.8 * style.u));
-  cairo_stroke(cr);
+  paint_box(cr, style, {x, y, w, h}, r, std::max(1.0, 0.8 * style.u));
   double baseline = y + m.pad + m.ascent * f;
   if (!text.heading.empty()) {
     text::draw(cr, {f, true, false}, x + m.pad, baseline, text.heading.c_str(), style.theme->text);

@@ -37,13 +37,7 @@ void rounded_rect(cairo_t* cr, const Rect& r, double radius) {
 void paint_panel(cairo_t* cr, const DrawStyle& style, const Rect& r) {
   // A whole number of pixels wide, inside the rectangle, on pixel boundaries.
   const double edge = std::max(1.0, std::round(0.6 * style.u));
-  const Rect inner{r.x + 0.5 * edge, r.y + 0.5 * edge, r.width - edge, r.height - edge};
-  rounded_rect(cr, inner, 5 * style.u);
-  set_colour(cr, style.theme->panel);
-  cairo_fill_preserve(cr);
-  set_colour(cr, style.theme->panel_edge);
-  cairo_set_line_width(cr, edge);
-  cairo_stroke(cr);
+  paint_box(cr, style, {r.x + 0.5 * edge, r.y + 0.5 * edge, r.width - edge, r.height - edge}, 5 * style.u, edge);
 }
 
 // Replaces each ASCII '-' of a NUL-terminated buffer by U+2212 (three bytes), in place.
@@ -99,6 +93,15 @@ double legend_names_width(cairo_t* cr, const DrawStyle& style, const std::vector
 
 RoundLength grid_spacing_for(const Camera& camera, int width, int height, double lines) {
   return round_length_at_least(std::min(width, height) / camera.scale() / lines);
+}
+
+void paint_box(cairo_t* cr, const DrawStyle& style, const Rect& r, double radius, double edge) {
+  rounded_rect(cr, r, radius);
+  set_colour(cr, style.theme->panel);
+  cairo_fill_preserve(cr);
+  set_colour(cr, style.theme->panel_edge);
+  cairo_set_line_width(cr, edge);
+  cairo_stroke(cr);
 }
 
 void paint_background(cairo_t* cr, const DrawStyle& style, int width, int height) {

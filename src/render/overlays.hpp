@@ -32,6 +32,9 @@ struct GridSpec {
 [[nodiscard]] RoundLength grid_spacing_for(const Camera& camera, int width, int height, double lines = 10);
 
 void paint_background(cairo_t* cr, const DrawStyle& style, int width, int height);
+/// A box in the theme's panel colours: `r` with corners of `radius`, filled, its edge
+/// stroked `edge` wide (legend, HUD, caption and equation boxes alike).
+void paint_box(cairo_t* cr, const DrawStyle& style, const Rect& r, double radius, double edge);
 /// With `earlier` (the camera at the start of the frame's shutter interval, for a camera
 /// that moves), each line is drawn motion-blurred: a band from where it was then to where
 /// it is now, most opaque at now, as much ink as the still line and no less than

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "render/overlays.hpp"
 #include "render/text.hpp"
 
 namespace linkage {
@@ -243,17 +244,7 @@ void paint_caption(cairo_t* cr, const DrawStyle& style, const std::string& text,
     for (const std::string& line : c.lines) widest = std::max(widest, text::width(cr, c.font, line.c_str()));
     const double w = widest + 2 * c.pad, h = c.line_height * static_cast<double>(c.lines.size()) + 2 * c.pad;
     const double x = area.x + 0.5 * (area.width - w), y = area.y + 0.5 * (area.height - h), r = 0.5 * c.pad;
-    cairo_new_sub_path(cr);
-    cairo_arc(cr, x + w - r, y + r, r, -std::numbers::pi / 2, 0);
-    cairo_arc(cr, x + w - r, y + h - r, r, 0, std::numbers::pi / 2);
-    cairo_arc(cr, x + r, y + h - r, r, std::numbers::pi / 2, std::numbers::pi);
-    cairo_arc(cr, x + r, y + r, r, std::numbers::pi, 1.5 * std::numbers::pi);
-    cairo_close_path(cr);
-    set_colour(cr, style.theme->panel);
-    cairo_fill_preserve(cr);
-    set_colour(cr, style.theme->panel_edge);
-    cairo_set_line_width(cr, std::max(1.0, 0.8 * style.u));
-    cairo_stroke(cr);
+    paint_box(cr, style, {x, y, w, h}, r, std::max(1.0, 0.8 * style.u));
     double baseline = y + c.pad + 0.5 * (c.line_height - c.line_height / 1.2) + c.ascent;
     for (const std::string& line : c.lines) {
       text::draw(cr, c.font, area.x + 0.5 * area.width, baseline, line.c_str(), style.theme->text, text::Align::centre);
