@@ -16,6 +16,23 @@ namespace {
 constexpr std::array<plot::Dash, 4> kDashes{plot::Dash::solid, plot::Dash::dashed, plot::Dash::dotted,
                                             plot::Dash::dash_dot};
 
+// Run r's curves, one per y quantity (columns[0] is x, columns[k + 1] the k-th y), each
+// scaled by its factor: named by the run, by the quantity, or by both when both vary.
+void add_run_series(plot::Plot& p, std::size_t runs, std::size_t r, const std::string& label,
+                    const std::vector<std::string>& y_names, const std::vector<std::vector<double>>& columns,
+                    const std::vector<double>& factors) {
+  for (std::size_t k = 0; k < y_names.size(); ++k) {
+    plot::Series series;
+    series.name = y_names.size() == 1 ? label : runs == 1 ? y_names[k] : label + ": " + y_names[k];
+    series.color = r % plot::palette_size;
+    series.dash = kDashes[k % kDashes.size()];
+    series.points.reserve(columns[0].size());
+    for (std::size_t i = 0; i < columns[0].size(); ++i)
+      series.points.push_back({factors[0] * columns[0][i], factors[k + 1] * columns[k + 1][i]});
+    p.series.push_back(std::move(series));
+  }
+}
+
 std::string with_unit_markup(const std::string& words, const std::string& unit) {
   return unit.empty() ? words : words + " (" + unit + ")";
 }
@@ -58,18 +75,7 @@ plot::Plot mechanism_plot(const Figure& f, const std::vector<Run>& runs) {
                             [&](const MechanismColumn& c) { return angle_unit_text(c.unit, f.angles) == "deg"; });
   for (std::size_t r = 0; r < runs.size(); ++r) {
     const MechanismSampledRun data = sample_mechanism_run(runs[r], run_sample_times(runs[r].options, f.every), columns);
-    for (std::size_t k = 0; k < f.mechanism_y.size(); ++k) {
-      plot::Series series;
-      const std::string& y_name = labels[k];
-      series.name = runs.size() == 1 ? (f.mechanism_y.size() == 1 ? runs[r].label : y_name)
-                                     : (f.mechanism_y.size() == 1 ? runs[r].label : runs[r].label + ": " + y_name);
-      series.color = r % plot::palette_size;
-      series.dash = kDashes[k % kDashes.size()];
-      series.points.reserve(data.columns[0].size());
-      for (std::size_t i = 0; i < data.columns[0].size(); ++i)
-        series.points.push_back({factors[0] * data.columns[0][i], factors[k + 1] * data.columns[k + 1][i]});
-      p.series.push_back(std::move(series));
-    }
+    add_run_series(p, runs.size(), r, runs[r].label, labels, data.columns, factors);
   }
   return p;
 }
@@ -91,20 +97,11 @@ plot::Plot figure_plot(const Figure& f, const std::vector<Run>& runs) {
   p.x.degrees = angle_unit_text(kSeries[f.x].unit, f.angles) == "deg";
   p.y.degrees = std::all_of(f.y.begin(), f.y.end(),
                             [&](std::size_t i) { return angle_unit_text(kSeries[i].unit, f.angles) == "deg"; });
+  std::vector<std::string> y_names;
+  for (std::size_t i : f.y) y_names.emplace_back(kSeries[i].label);
   for (std::size_t r = 0; r < runs.size(); ++r) {
     const SampledRun data = sample_run(runs[r], f.every, columns);
-    for (std::size_t k = 0; k < f.y.size(); ++k) {
-      plot::Series series;
-      const std::string y_name(kSeries[f.y[k]].label);
-      series.name = runs.size() == 1 ? (f.y.size() == 1 ? runs[r].label : y_name)
-                                     : (f.y.size() == 1 ? runs[r].label : runs[r].label + ": " + y_name);
-      series.color = r % plot::palette_size;
-      series.dash = kDashes[k % kDashes.size()];
-      series.points.reserve(data.columns[0].size());
-      for (std::size_t i = 0; i < data.columns[0].size(); ++i)
-        series.points.push_back({factors[0] * data.columns[0][i], factors[k + 1] * data.columns[k + 1][i]});
-      p.series.push_back(std::move(series));
-    }
+    add_run_series(p, runs.size(), r, runs[r].label, y_names, data.columns, factors);
   }
   return p;
 }
