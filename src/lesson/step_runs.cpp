@@ -35,8 +35,9 @@ std::string csv_field(const std::string& text) {
 
 // --- simulate ------------------------------------------------------------------------
 
-ResultTable simulate_summary(const SimulateStep& s, const SimulationStats& st, const BodyState& end) {
-  const SimulationOptions& o = s.run.options;
+// The rows every run's summary opens with: case, method, simulated time, steps, right-hand sides.
+template <class Stats>
+ResultTable run_summary(const SimulationOptions& o, const Stats& st) {
   ResultTable t;
   t.headers = {"quantity", "value"};
   t.rows = {
@@ -45,13 +46,22 @@ ResultTable simulate_summary(const SimulateStep& s, const SimulationStats& st, c
       {"simulated time", format_significant(o.duration, 6) + " s"},
       {"steps", std::to_string(st.steps_accepted) + " accepted, " + std::to_string(st.steps_rejected) + " rejected"},
       {"right-hand sides", std::to_string(st.rhs_evaluations)},
-      {"largest energy error", format_significant(st.max_energy_error, 3) + " of the energy scale"},
-      {"largest constraint error", format_significant(st.max_constraint_error, 3) + " m"},
-      {"final x1, y1", format_significant(end.x1, 6) + " m, " + format_significant(end.y1, 6) + " m"},
-      {"final theta1, theta2",
-       format_significant(end.theta1, 6) + " rad, " + format_significant(end.theta2, 6) + " rad"},
-      {"run time", format_significant(st.wall_seconds * 1e3, 3) + " ms"},
   };
+  return t;
+}
+
+ResultTable simulate_summary(const SimulateStep& s, const SimulationStats& st, const BodyState& end) {
+  const SimulationOptions& o = s.run.options;
+  ResultTable t = run_summary(o, st);
+  t.rows.insert(t.rows.end(),
+                {
+                    {"largest energy error", format_significant(st.max_energy_error, 3) + " of the energy scale"},
+                    {"largest constraint error", format_significant(st.max_constraint_error, 3) + " m"},
+                    {"final x1, y1", format_significant(end.x1, 6) + " m, " + format_significant(end.y1, 6) + " m"},
+                    {"final theta1, theta2",
+                     format_significant(end.theta1, 6) + " rad, " + format_significant(end.theta2, 6) + " rad"},
+                    {"run time", format_significant(st.wall_seconds * 1e3, 3) + " ms"},
+                });
   return t;
 }
 
@@ -71,18 +81,14 @@ std::string coordinate_words(const std::vector<MechanismColumn>& all, const std:
 ResultTable mechanism_summary(const SimulateStep& s, const MechanismStats& st, const Eigen::VectorXd& end) {
   const SimulationOptions& o = s.run.options;
   const sym::System& system = *s.run.built->system;
-  ResultTable t;
-  t.headers = {"quantity", "value"};
-  t.rows = {
-      {"mechanism", system.mechanism().name},
-      {"case", std::to_string(o.case_id)},
-      {"method", method_text(o)},
-      {"simulated time", format_significant(o.duration, 6) + " s"},
-      {"steps", std::to_string(st.steps_accepted) + " accepted, " + std::to_string(st.steps_rejected) + " rejected"},
-      {"right-hand sides", std::to_string(st.rhs_evaluations)},
-      {"largest energy-balance error", format_significant(st.max_energy_error, 3) + " of the energy scale"},
-      {"largest constraint error", format_significant(st.max_constraint_error, 3) + " m (rad for a slider's angle)"},
-  };
+  ResultTable t = run_summary(o, st);
+  t.rows.insert(t.rows.begin(), {"mechanism", system.mechanism().name});
+  t.rows.insert(t.rows.end(), {
+                                  {"largest energy-balance error",
+                                   format_significant(st.max_energy_error, 3) + " of the energy scale"},
+                                  {"largest constraint error",
+                                   format_significant(st.max_constraint_error, 3) + " m (rad for a slider's angle)"},
+                              });
   const std::vector<MechanismColumn> all = mechanism_columns(system);
   const auto& coordinates = system.coordinates();
   for (std::size_t i = 0; i < coordinates.size() && static_cast<Eigen::Index>(i) < end.size(); ++i) {
