@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "model/mechanism_toml.hpp"
+#include "model/name_match.hpp"
 #include "report/notation.hpp"
 #include "symbolic/loop_closure.hpp"
 
@@ -21,15 +22,6 @@ double clip_end(const RenderSettings& s, bool still, bool frames) {
 }
 
 bool is_still_out(const std::optional<std::filesystem::path>& out) { return out && out->extension() == ".png"; }
-
-std::string joined(const std::vector<std::string>& names) {
-  std::string out;
-  for (const std::string& name : names) {
-    if (!out.empty()) out += ", ";
-    out += name;
-  }
-  return out;
-}
 
 std::string with_spaces(std::string label) {
   for (std::size_t at = label.find(','); at != std::string::npos; at = label.find(',', at + 2))
@@ -63,8 +55,9 @@ void resolve_compare(const std::string& list, const MechanismOptions& mechanism,
     for (const Body& body : own.bodies) ours.push_back(body.name);
     for (const Body& body : other.bodies) theirs.push_back(body.name);
     if (ours != theirs)
-      throw Error::input(concat({"--compare ", list, ": its bodies (", joined(theirs), ") are not ", own.name, "'s (",
-                                 joined(ours), "); a compared mechanism's bodies must be named as the clip's"}));
+      throw Error::input(
+          concat({"--compare ", list, ": its bodies (", join_names(theirs, ""), ") are not ", own.name, "'s (",
+                  join_names(ours, ""), "); a compared mechanism's bodies must be named as the clip's"}));
     MechanismRun run;
     try {
       run.simulation = resolve_simulation_flags(simulation, clip.settings.duration);

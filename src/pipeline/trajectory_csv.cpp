@@ -10,6 +10,7 @@
 
 #include "core/error.hpp"
 #include "core/number_format.hpp"
+#include "model/name_match.hpp"
 
 namespace linkage {
 namespace {
@@ -35,15 +36,6 @@ std::vector<std::string_view> fields(std::string_view line) {
     if (comma == std::string_view::npos) return out;
     start = comma + 1;
   }
-}
-
-std::string joined(const std::vector<std::string>& names) {
-  std::string out;
-  for (const std::string& name : names) {
-    if (!out.empty()) out += ", ";
-    out += name;
-  }
-  return out;
 }
 
 }  // namespace
@@ -80,7 +72,8 @@ TrajectoryTable read_trajectory_csv(const std::filesystem::path& file, const std
   }
   std::string_view header = trimmed(line);
   if (header.starts_with('#')) header = trimmed(header.substr(1));
-  if (header.empty()) throw Error::input(table.file + ": empty; expected a header line such as " + joined(needed));
+  if (header.empty())
+    throw Error::input(table.file + ": empty; expected a header line such as " + join_names(needed, ""));
   std::vector<double> factor;
   for (const std::string_view field : fields(header)) {
     std::string name(field);
@@ -96,8 +89,8 @@ TrajectoryTable read_trajectory_csv(const std::filesystem::path& file, const std
   for (const std::string& name : needed)
     if (!table.find(name))
       throw Error::input(
-          concat({table.file, ": no column '", name, "'; ", purpose, " needs the columns ", joined(needed),
-                  " (as linkage simulate writes them); the header has ", joined(table.names)}));
+          concat({table.file, ": no column '", name, "'; ", purpose, " needs the columns ", join_names(needed, ""),
+                  " (as linkage simulate writes them); the header has ", join_names(table.names, "")}));
   const std::size_t t_column = *table.find("t");
   table.values.assign(table.names.size(), {});
   std::vector<long> lines;
