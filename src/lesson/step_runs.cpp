@@ -263,6 +263,20 @@ plot::Plot cost_plot(const CompareStep& s, const std::vector<RunFigures>& figure
   return p;
 }
 
+// A compare row from a run's counters (the homework's or a mechanism's) and its final error.
+template <class Stats>
+RunFigures run_figures(double error, const Stats& stats) {
+  RunFigures f;
+  f.final_error = error;
+  f.energy_error = stats.max_energy_error;
+  f.constraint_error = stats.max_constraint_error;
+  f.steps = stats.steps_accepted;
+  f.rejected = stats.steps_rejected;
+  f.rhs_evaluations = stats.rhs_evaluations;
+  f.run_time = stats.wall_seconds;
+  return f;
+}
+
 /// A mechanism run's figures: its final body positions against the reference run's,
 /// its energy-balance and constraint errors over the samples, its cost.
 RunFigures mechanism_figures(const Run& run, double every, std::map<std::string, std::vector<double>>& references,
@@ -274,16 +288,10 @@ RunFigures mechanism_figures(const Run& run, double every, std::map<std::string,
   std::string key = run.mechanism + ";" + format_roundtrip(run.options.duration);
   for (const std::string& setting : run.settings) key += ";" + setting;
   if (!references.count(key)) references[key] = mechanism_reference_final(run);
-  RunFigures f;
+  double final = 0;
   for (std::size_t j = 0; j < columns.size(); ++j)
-    f.final_error = std::max(f.final_error, std::fabs(data.columns[j].back() - references[key][j]));
-  f.energy_error = data.stats.max_energy_error;
-  f.constraint_error = data.stats.max_constraint_error;
-  f.steps = data.stats.steps_accepted;
-  f.rejected = data.stats.steps_rejected;
-  f.rhs_evaluations = data.stats.rhs_evaluations;
-  f.run_time = data.stats.wall_seconds;
-  return f;
+    final = std::max(final, std::fabs(data.columns[j].back() - references[key][j]));
+  return run_figures(final, data.stats);
 }
 
 nlohmann::json compare(const RunContext& c, const Step& step, const CompareStep& s) {
@@ -301,15 +309,7 @@ nlohmann::json compare(const RunContext& c, const Step& step, const CompareStep&
     if (!warning.empty()) warnings.push_back("run '" + run.label + "': " + warning);
     const std::string key = canonical_text(run.inputs) + ";" + format_roundtrip(run.options.duration);
     if (!references.count(key)) references[key] = reference_final_state(run);
-    RunFigures f;
-    f.final_error = final_error(data.final_state, references[key]);
-    f.energy_error = data.stats.max_energy_error;
-    f.constraint_error = data.stats.max_constraint_error;
-    f.steps = data.stats.steps_accepted;
-    f.rejected = data.stats.steps_rejected;
-    f.rhs_evaluations = data.stats.rhs_evaluations;
-    f.run_time = data.stats.wall_seconds;
-    figures.push_back(f);
+    figures.push_back(run_figures(final_error(data.final_state, references[key]), data.stats));
   }
   ResultTable table;
   table.headers = {"run"};

@@ -10,12 +10,7 @@
 namespace linkage {
 namespace {
 
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
+using test::lines_of;
 
 void expect_one_line_error(const test::RunResult& r, const std::vector<std::string>& pieces) {
   EXPECT_EQ(r.exit_code, 2) << r.err;

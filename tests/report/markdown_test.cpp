@@ -8,16 +8,12 @@
 
 #include "report/text_layout.hpp"
 #include "support/commonmark_sample.hpp"
+#include "support/test_support.hpp"
 
 namespace linkage {
 namespace {
 
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
+using test::lines_of;
 
 TEST(MarkdownText, ParagraphsWrapToTheWidth) {
   const std::string text =

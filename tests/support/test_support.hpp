@@ -71,6 +71,8 @@ double number(const nlohmann::json& value);
 std::string read_text(const std::filesystem::path& path);
 void write_text(const std::filesystem::path& path, const std::string& text);
 
+/// The text's lines, without their line ends.
+std::vector<std::string> lines_of(const std::string& text);
 /// `s` written `n` times (hostile input: deep nesting, long names).
 std::string repeat(std::string_view s, int n);
 /// The message of the Error `action` throws, checked to be a bad-input error (exit 2); ""
