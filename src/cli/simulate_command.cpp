@@ -28,6 +28,7 @@
 #include "integrate/mechanism_columns.hpp"
 #include "integrate/mechanism_simulation.hpp"
 #include "integrate/simulation.hpp"
+#include "integrate/trajectory_rows.hpp"
 #include "symbolic/loop_closure.hpp"
 
 namespace linkage::cli {
@@ -66,21 +67,14 @@ Format choose_format(const SimulateOptions& o) {
 }
 
 /// The output times k * every strictly before the end, then the duration itself.
-struct Samples {
-  Samples(double duration_s, double every_s) : duration(duration_s), every(every_s) {
-    const double ratio = duration / every;
-    if (ratio > kMaxRows)
-      throw Error::input("--every: " + format_roundtrip(every) + " s gives " + format_significant(ratio, 3) +
-                         " rows for --duration " + format_roundtrip(duration) + " s; the limit is 1e7 rows");
-    const double nearest = std::round(ratio);
-    const bool divides = std::fabs(ratio - nearest) <= 1e-9 * std::max(1.0, ratio);
-    count = static_cast<long>(divides ? nearest : std::floor(ratio) + 1) + 1;
-  }
-  [[nodiscard]] double at(long i) const { return i + 1 == count ? duration : static_cast<double>(i) * every; }
-
-  double duration, every;
-  long count = 0;
-};
+/// The table's row times; more than kMaxRows rows is an input error.
+TrajectoryRows checked_rows(double duration, double every) {
+  const double ratio = duration / every;
+  if (ratio > kMaxRows)
+    throw Error::input("--every: " + format_roundtrip(every) + " s gives " + format_significant(ratio, 3) +
+                       " rows for --duration " + format_roundtrip(duration) + " s; the limit is 1e7 rows");
+  return {duration, every};
+}
 
 /// The columns as written with --angles: angular ones (rad, rad/s, rad/s^2) scaled, and
 /// named with their unit in a CSV header when in degrees ("theta1 (deg)").
@@ -255,7 +249,7 @@ std::string mechanism_json_summary(const MechanismStats& st, double wall) {
 
 void run_simulate_mechanism(const SimulateOptions& o, const SimulationOptions& s, double every, Format format) {
   const auto start = std::chrono::steady_clock::now();
-  const Samples samples(s.duration, every);
+  const TrajectoryRows samples = checked_rows(s.duration, every);
   const sym::System system(chosen_mechanism(o.mechanism, o.inputs));
   const sym::ClosedState closed = sym::checked_initial_state(system);
   const std::vector<MechanismColumn> all = mechanism_columns(system);
@@ -330,7 +324,7 @@ void run_simulate(const SimulateOptions& o) {
     run_simulate_mechanism(o, s, every, choose_format(o));
     return;
   }
-  const Samples samples(s.duration, every);
+  const TrajectoryRows samples = checked_rows(s.duration, every);
   const std::vector<Column> columns = parse_columns(o.columns, "--columns");
   const AngleUnit angles = parse_angle_unit(o.angles, "--angles");
   const Format format = choose_format(o);

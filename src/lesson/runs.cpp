@@ -6,6 +6,7 @@
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
 #include "core/number_format.hpp"
+#include "integrate/trajectory_rows.hpp"
 
 namespace linkage::lesson {
 
@@ -26,13 +27,10 @@ std::vector<double> run_sample_times(const SimulationOptions& o, double every) {
 }
 
 std::vector<double> trajectory_times(double duration, double every) {
-  const double ratio = duration / every;
-  const double nearest = std::round(ratio);
-  const bool divides = std::fabs(ratio - nearest) <= 1e-9 * std::max(1.0, ratio);
-  const long count = static_cast<long>(divides ? nearest : std::floor(ratio) + 1) + 1;
+  const TrajectoryRows rows(duration, every);
   std::vector<double> times;
-  times.reserve(static_cast<std::size_t>(count));
-  for (long i = 0; i < count; ++i) times.push_back(i + 1 == count ? duration : static_cast<double>(i) * every);
+  times.reserve(static_cast<std::size_t>(rows.count));
+  for (long i = 0; i < rows.count; ++i) times.push_back(rows.at(i));
   return times;
 }
 
