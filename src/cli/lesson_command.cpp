@@ -57,11 +57,11 @@ void run_lesson_command(const LessonOptions& o) {
   else
     throw Error::input("--quality: '" + o.quality + "' is not a quality; valid: draft, final");
   if (o.format == "text")
-    options.format = lesson::Format::text;
+    options.format = DocumentFormat::text;
   else if (o.format == "markdown")
-    options.format = lesson::Format::markdown;
+    options.format = DocumentFormat::markdown;
   else if (o.format == "latex")
-    options.format = lesson::Format::latex;
+    options.format = DocumentFormat::latex;
   else
     throw Error::input("--format: '" + o.format + "' is not a format; valid: text, markdown, latex");
 

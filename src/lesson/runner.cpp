@@ -78,15 +78,6 @@ nlohmann::json RunContext::cached(const Step& step, const std::function<nlohmann
   return results;
 }
 
-nlohmann::json to_json(const ResultTable& table) { return {{"headers", table.headers}, {"rows", table.rows}}; }
-
-ResultTable table_from_json(const nlohmann::json& json) {
-  ResultTable t;
-  t.headers = json.at("headers").get<std::vector<std::string>>();
-  t.rows = json.at("rows").get<std::vector<std::vector<std::string>>>();
-  return t;
-}
-
 std::string step_hash(const Step& step, Quality quality) {
   std::string text = "linkage lesson cache 1\nversion=" + std::string(kVersion);
   // Only clips and stills depend on --quality; plots and tables are the same either way.
@@ -247,30 +238,6 @@ std::string read_file(const std::filesystem::path& path) {
   return text.str();
 }
 
-// lesson.pdf from lesson.tex with pdflatex, made under a temporary job name and renamed,
-// so a failed run leaves no partial PDF (and its log as lesson.log, which the error names).
-std::filesystem::path make_pdf(const std::filesystem::path& dir) {
-  const std::string job = "lesson-pdf-partial";  // not a dot file: TeX refuses to write those
-  std::string quoted = "'";
-  for (const char ch : dir.string()) quoted += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
-  quoted += "'";
-  const std::string command = "cd " + quoted + " && pdflatex -interaction=nonstopmode -halt-on-error -jobname=" + job +
-                              " lesson.tex < /dev/null > /dev/null 2>&1";
-  const int result = std::system(command.c_str());
-  std::error_code ignored;
-  for (const char* ext : {".aux", ".out"}) std::filesystem::remove(dir / (job + ext), ignored);
-  if (result != 0 || !std::filesystem::exists(dir / (job + ".pdf"))) {
-    std::filesystem::remove(dir / (job + ".pdf"), ignored);
-    std::filesystem::rename(dir / (job + ".log"), dir / "lesson.log", ignored);
-    throw Error::failure("--pdf: pdflatex could not compile " + (dir / "lesson.tex").string() + "; its log is " +
-                         (dir / "lesson.log").string());
-  }
-  std::filesystem::remove(dir / (job + ".log"), ignored);
-  std::filesystem::remove(dir / "lesson.log", ignored);
-  std::filesystem::rename(dir / (job + ".pdf"), dir / "lesson.pdf");
-  return dir / "lesson.pdf";
-}
-
 }  // namespace
 
 RunSummary run_lesson(const Lesson& lesson, const RunnerOptions& options, std::istream& in, std::ostream& out,
@@ -315,7 +282,7 @@ RunSummary run_lesson(const Lesson& lesson, const RunnerOptions& options, std::i
     if (same && options.pdf)
       c.summary.pdf = options.out_dir / "lesson.pdf";  // made from this very text before
     else if (options.pdf)
-      c.summary.pdf = make_pdf(options.out_dir);
+      c.summary.pdf = compile_latex_pdf(options.out_dir / "lesson.tex");
   }
   return c.summary;
 }

@@ -10,8 +10,8 @@
 
 #include "formulations/expr.hpp"
 #include "lesson/lesson.hpp"
-#include "lesson/output.hpp"
 #include "pipeline/clip.hpp"
+#include "report/document_writer.hpp"
 
 namespace linkage::lesson {
 
@@ -24,10 +24,10 @@ struct RunnerOptions {
   std::filesystem::path out_dir;  // created with its parents if missing
   bool interactive = false;       // --step: pause steps wait, exercises ask
   Quality quality = Quality::draft;
-  Format format = Format::text;  // of the terminal output
-  std::vector<bool> selected;    // per step (--only); empty: every step
-  bool force = false;            // make everything, cached or not
-  std::size_t width = 80;        // terminal columns for text
+  DocumentFormat format = DocumentFormat::text;  // of the terminal output
+  std::vector<bool> selected;                    // per step (--only); empty: every step
+  bool force = false;                            // make everything, cached or not
+  std::size_t width = 80;                        // terminal columns for text
   Style style = Style::unicode;
   std::filesystem::path assets;  // theme folder for render steps (empty: built-in palettes)
   bool pdf = false;              // --pdf: compile lesson.tex to lesson.pdf with pdflatex

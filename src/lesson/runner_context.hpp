@@ -6,9 +6,9 @@
 #include <nlohmann/json.hpp>
 
 #include "lesson/cache.hpp"
-#include "lesson/output.hpp"
 #include "lesson/quantities.hpp"
 #include "lesson/runner.hpp"
+#include "report/document_writer.hpp"
 
 namespace linkage::lesson {
 
@@ -49,9 +49,5 @@ void run_simulate(RunContext& c, const Step& step, const SimulateStep& s);
 void run_plot(RunContext& c, const Step& step, const PlotStep& s);
 void run_compare(RunContext& c, const Step& step, const CompareStep& s);
 void run_render(RunContext& c, const Step& step, const RenderStep& s);
-
-/// A result table as JSON (for cache records) and back.
-[[nodiscard]] nlohmann::json to_json(const ResultTable& table);
-[[nodiscard]] ResultTable table_from_json(const nlohmann::json& json);
 
 }  // namespace linkage::lesson

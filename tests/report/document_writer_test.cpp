@@ -1,11 +1,11 @@
-// The lesson document (lesson.md) keeps a lesson's Markdown as written.
-#include "lesson/output.hpp"
+// The Markdown document writer (a lesson's lesson.md) keeps Markdown as written.
+#include "report/document_writer.hpp"
 
 #include <gtest/gtest.h>
 
 #include "support/commonmark_sample.hpp"
 
-namespace linkage::lesson {
+namespace linkage {
 namespace {
 
 // lesson.md keeps the Markdown as written, for any CommonMark reader.
@@ -16,4 +16,4 @@ TEST(CommonMark, TheLessonDocumentKeepsTheText) {
 }
 
 }  // namespace
-}  // namespace linkage::lesson
+}  // namespace linkage

@@ -1,7 +1,9 @@
-#include "lesson/output.hpp"
+#include "report/document_writer.hpp"
 
+#include <cstdlib>
 #include <system_error>
 
+#include "core/error.hpp"
 #include "report/latex_math.hpp"
 #include "report/markdown.hpp"
 #include "report/mechanism_latex.hpp"
@@ -9,7 +11,7 @@
 #include "report/text_layout.hpp"
 #include "report/unicode_tex.hpp"
 
-namespace linkage::lesson {
+namespace linkage {
 namespace {
 
 // The table as a Markdown pipe table: the first column left, the others right.
@@ -208,10 +210,39 @@ std::string latex_document(const std::string& body) {
          body + "\\end{document}\n";
 }
 
-std::unique_ptr<Writer> make_writer(Format format, std::size_t width, Style style) {
-  if (format == Format::markdown) return make_markdown_writer();
-  if (format == Format::latex) return make_latex_writer();
+std::filesystem::path compile_latex_pdf(const std::filesystem::path& tex) {
+  // Made under a temporary job name and renamed, so a failed run leaves no partial PDF
+  // (and its log as NAME.log, which the error names).
+  const std::filesystem::path dir = tex.parent_path().empty() ? "." : tex.parent_path();
+  const std::string stem = tex.stem().string();
+  const std::string job = stem + "-pdf-partial";  // not a dot file: TeX refuses to write those
+  auto quoted = [](const std::string& text) {
+    std::string out = "'";
+    for (const char ch : text) out += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+    return out + "'";
+  };
+  const std::string command = "cd " + quoted(dir.string()) +
+                              " && pdflatex -interaction=nonstopmode -halt-on-error -jobname=" + job + " " +
+                              quoted(tex.filename().string()) + " < /dev/null > /dev/null 2>&1";
+  const int result = std::system(command.c_str());
+  std::error_code ignored;
+  for (const char* ext : {".aux", ".out"}) std::filesystem::remove(dir / (job + ext), ignored);
+  const std::filesystem::path log = dir / (stem + ".log");
+  if (result != 0 || !std::filesystem::exists(dir / (job + ".pdf"))) {
+    std::filesystem::remove(dir / (job + ".pdf"), ignored);
+    std::filesystem::rename(dir / (job + ".log"), log, ignored);
+    throw Error::failure("--pdf: pdflatex could not compile " + tex.string() + "; its log is " + log.string());
+  }
+  std::filesystem::remove(dir / (job + ".log"), ignored);
+  std::filesystem::remove(log, ignored);
+  std::filesystem::rename(dir / (job + ".pdf"), dir / (stem + ".pdf"));
+  return dir / (stem + ".pdf");
+}
+
+std::unique_ptr<Writer> make_writer(DocumentFormat format, std::size_t width, Style style) {
+  if (format == DocumentFormat::markdown) return make_markdown_writer();
+  if (format == DocumentFormat::latex) return make_latex_writer();
   return std::make_unique<TextWriter>(width, style);
 }
 
-}  // namespace linkage::lesson
+}  // namespace linkage

@@ -1,26 +1,20 @@
 #pragma once
-// How a lesson prints, in each format: the terminal (text, markdown or latex, chosen by
-// --format) and the lesson document (always Markdown). The runner says *what* to show;
-// a Writer decides how it looks. Writers accumulate text; take() hands it over.
+// A document in three formats: plain text for a terminal, Markdown and LaTeX (a lesson
+// prints to all three at once). The caller says *what* to show; a Writer decides how it
+// looks. Writers accumulate text; take() hands it over.
 #include <filesystem>
 #include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "core/result_table.hpp"
 #include "report/mechanism_solution.hpp"
 #include "report/report_options.hpp"
 
-namespace linkage::lesson {
+namespace linkage {
 
-enum class Format { text, markdown, latex };
-
-/// A small table of results (a simulate summary, a compare table). The first column
-/// names the rows.
-struct ResultTable {
-  std::vector<std::string> headers;
-  std::vector<std::vector<std::string>> rows;
-};
+enum class DocumentFormat { text, markdown, latex };
 
 /// A file a step wrote, as the reader should see it.
 struct FigureRef {
@@ -63,7 +57,10 @@ class Writer {
 [[nodiscard]] std::unique_ptr<Writer> make_latex_writer(bool relative_files = false);
 /// A whole LaTeX document around a LaTeX writer's text: the handout lesson.tex.
 [[nodiscard]] std::string latex_document(const std::string& body);
+/// Compiles a LaTeX document (NAME.tex) to NAME.pdf beside it with pdflatex; no partial
+/// PDF on failure (Error::failure naming NAME.log). Returns the PDF's path.
+[[nodiscard]] std::filesystem::path compile_latex_pdf(const std::filesystem::path& tex);
 /// The terminal's writer: for text, aligned for `width` columns with symbols in `style`.
-[[nodiscard]] std::unique_ptr<Writer> make_writer(Format format, std::size_t width, Style style);
+[[nodiscard]] std::unique_ptr<Writer> make_writer(DocumentFormat format, std::size_t width, Style style);
 
-}  // namespace linkage::lesson
+}  // namespace linkage
