@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-#include "lesson/quantities.hpp"
+#include "formulations/homework_quantities.hpp"
 
 namespace GiNaC {
 class ex;
@@ -18,14 +18,9 @@ class System;
 
 namespace linkage::lesson {
 
-/// Names a lesson that names a mechanism may use besides the quantities, each with its
-/// value: the mechanism's parameters, definitions and body inertias (I, I_1), at its
-/// parameter values; its initial coordinates and rates ("2.theta", "S.s_dot") and the Case 3
-/// unknowns at the start with what that case recovers ("2.theta_ddot", "B.force_x",
-/// "O.force_y", "S.normal"), named and valued as `linkage solve --mechanism --format json`.
-/// Where a name is also a quantity's, the mechanism's wins.
+/// Names a lesson that names a mechanism may use besides the quantities, with their values
+/// (report's quotable_values); where a name is also a quantity's, the mechanism's wins.
 using MechanismNames = std::map<std::string, GiNaC::ex>;
-[[nodiscard]] MechanismNames mechanism_names(const sym::System& system);
 
 class Expression {
  public:

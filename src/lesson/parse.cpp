@@ -259,7 +259,7 @@ class Parser {
   /// The names {{...}} and answers may use on `built`, worked out once per mechanism and settings.
   const MechanismNames& names_of(const BuiltMechanism& built) {
     auto [it, fresh] = names_cache_.try_emplace(&built);
-    if (fresh) it->second = mechanism_names(*built.system);
+    if (fresh) it->second = quotable_values(*built.system);
     return it->second;
   }
 

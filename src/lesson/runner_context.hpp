@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "lesson/cache.hpp"
-#include "lesson/quantities.hpp"
+#include "formulations/homework_quantities.hpp"
 #include "lesson/runner.hpp"
 #include "report/document_writer.hpp"
 

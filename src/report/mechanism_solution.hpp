@@ -3,6 +3,7 @@
 // one symbolic system and printed by each format: the state (loops closed), each
 // selected case's symbolic system, its numbers and solution, each body's acceleration
 // and each joint's force per case, and how closely the cases agree.
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -56,5 +57,11 @@ struct JointForce {
 
 /// `linkage solve --mechanism --format json`.
 [[nodiscard]] std::string mechanism_json(const MechanismSolution& s);
+
+/// The values a text may quote, by the names of mechanism_json: the parameters,
+/// definitions and body inertias (I, I_1) at the parameter values; the initial coordinates
+/// and rates with the loops closed ("2.theta", "S.s_dot"); Case 3's unknowns at the start
+/// and what that case recovers ("2.theta_ddot", "B.force_x", "S.normal").
+[[nodiscard]] std::map<std::string, GiNaC::ex> quotable_values(const sym::System& system);
 
 }  // namespace linkage

@@ -6,7 +6,7 @@
 
 #include "integrate/series.hpp"
 #include "lesson/lesson.hpp"
-#include "lesson/quantities.hpp"
+#include "formulations/homework_quantities.hpp"
 #include "lesson/schema.hpp"
 #include "support/test_support.hpp"
 

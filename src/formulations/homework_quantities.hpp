@@ -1,9 +1,9 @@
 #pragma once
-// The named quantities a lesson can ask about or quote: the thirteen inputs, everything
-// `linkage solve` derives (example.json's "derived" names), the accelerations and pin
-// force (the case unknowns), the condition number of each case's matrix, and the
-// system's centre of mass. Exercise answers and {{...}} in text are expressions over
-// these names, so a lesson never carries a hard-coded number the tool could get wrong.
+// The homework's named quantities, by the names of its statement (example.json's): the
+// thirteen inputs, what the derivation derives, the accelerations and pin force (the
+// case unknowns), each case matrix's condition number, the system's centre of mass. A
+// lesson's exercise answers and {{...}} are expressions over these names, so it never
+// carries a number the tool could get wrong.
 #include <array>
 #include <optional>
 #include <string>
@@ -11,7 +11,7 @@
 
 #include "model/inputs.hpp"
 
-namespace linkage::lesson {
+namespace linkage {
 
 struct QuantityInfo {
   std::string_view name;  // e.g. "I_zz_P"
@@ -77,4 +77,4 @@ using QuantityValues = std::array<double, kQuantities.size()>;
 /// when a case matrix is singular.
 [[nodiscard]] QuantityValues evaluate_quantities(const Inputs& inputs);
 
-}  // namespace linkage::lesson
+}  // namespace linkage

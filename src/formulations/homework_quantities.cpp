@@ -1,11 +1,11 @@
-#include "lesson/quantities.hpp"
+#include "formulations/homework_quantities.hpp"
 
 #include <numbers>
 
 #include "formulations/formulation.hpp"
 #include "model/kinematics.hpp"
 
-namespace linkage::lesson {
+namespace linkage {
 
 std::optional<std::size_t> find_quantity(std::string_view name) {
   for (std::size_t i = 0; i < kQuantities.size(); ++i)
@@ -63,4 +63,4 @@ QuantityValues evaluate_quantities(const Inputs& inputs) {
   return v;
 }
 
-}  // namespace linkage::lesson
+}  // namespace linkage
