@@ -5,8 +5,8 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
-#include "lesson/cache.hpp"
 #include "formulations/homework_quantities.hpp"
+#include "lesson/cache.hpp"
 #include "lesson/runner.hpp"
 #include "report/document_writer.hpp"
 

@@ -4,9 +4,9 @@
 
 #include <filesystem>
 
+#include "formulations/homework_quantities.hpp"
 #include "integrate/series.hpp"
 #include "lesson/lesson.hpp"
-#include "formulations/homework_quantities.hpp"
 #include "lesson/schema.hpp"
 #include "support/test_support.hpp"
 
