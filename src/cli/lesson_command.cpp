@@ -11,11 +11,11 @@
 #include <memory>
 
 #include "cli/commands.hpp"
+#include "cli/step_range.hpp"
 #include "core/error.hpp"
 #include "core/program_path.hpp"
 #include "lesson/lesson.hpp"
 #include "lesson/runner.hpp"
-#include "lesson/step_range.hpp"
 #include "render/theme.hpp"
 #include "report/report_options.hpp"
 
@@ -66,7 +66,7 @@ void run_lesson_command(const LessonOptions& o) {
     throw Error::input("--format: '" + o.format + "' is not a format; valid: text, markdown, latex");
 
   const lesson::Lesson lesson = lesson::parse_lesson(o.file);
-  if (!o.only.empty()) options.selected = lesson::parse_step_range(o.only, lesson.steps.size());
+  if (!o.only.empty()) options.selected = parse_step_range(o.only, lesson.steps.size());
   if (o.check) {
     std::cout << o.file << ": valid; " << lesson.steps.size() << " steps";
     const std::vector<std::string> artifacts = lesson.artifacts();

@@ -1,11 +1,11 @@
-#include "lesson/step_range.hpp"
+#include "cli/step_range.hpp"
 
 #include <charconv>
 #include <string_view>
 
 #include "core/error.hpp"
 
-namespace linkage::lesson {
+namespace linkage::cli {
 
 std::vector<bool> parse_step_range(const std::string& text, std::size_t count) {
   std::vector<bool> selected(count, false);
@@ -38,4 +38,4 @@ std::vector<bool> parse_step_range(const std::string& text, std::size_t count) {
   return selected;
 }
 
-}  // namespace linkage::lesson
+}  // namespace linkage::cli

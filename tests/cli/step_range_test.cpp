@@ -1,11 +1,11 @@
 // --only ranges.
-#include "lesson/step_range.hpp"
+#include "cli/step_range.hpp"
 
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
 
-namespace linkage::lesson {
+namespace linkage::cli {
 namespace {
 
 std::vector<bool> only(const std::string& text, std::size_t count = 6) { return parse_step_range(text, count); }
@@ -32,4 +32,4 @@ TEST(StepRange, RejectsBadRanges) {
 }
 
 }  // namespace
-}  // namespace linkage::lesson
+}  // namespace linkage::cli
