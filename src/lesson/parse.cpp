@@ -10,12 +10,12 @@
 #include <span>
 #include <sstream>
 
+#include "core/content_hash.hpp"
 #include "core/error.hpp"
 #include "core/input_file.hpp"
 #include "core/number_format.hpp"
 #include "encode/video_writer.hpp"
 #include "integrate/series.hpp"
-#include "lesson/canonical.hpp"
 #include "lesson/lesson.hpp"
 #include "lesson/mechanism_render.hpp"
 #include "lesson/runs.hpp"
@@ -23,6 +23,7 @@
 #include "model/inputs_toml.hpp"
 #include "model/mechanism_toml.hpp"
 #include "model/name_match.hpp"
+#include "model/toml_table.hpp"
 #include "pipeline/clip.hpp"
 #include "pipeline/panel_data.hpp"
 #include "render/theme.hpp"
@@ -74,30 +75,6 @@ std::vector<std::string> split_list(const std::string& text) {
   return out;
 }
 
-/// Each string of a list must be one of `choices`; returns their indices. Errors point
-/// at the offending entry.
-std::vector<std::size_t> choice_list(const TableReader& r, std::string_view key,
-                                     const std::vector<std::string_view>& choices) {
-  std::vector<std::size_t> out;
-  const toml::node* n = r.node(key);
-  if (n == nullptr) return out;
-  const auto values = r.strings(key);  // type-checks
-  const auto* array = n->as_array();
-  for (std::size_t i = 0; i < values->size(); ++i) {
-    const std::string& v = (*values)[i];
-    const auto it = std::find(choices.begin(), choices.end(), v);
-    if (it != choices.end()) {
-      out.push_back(static_cast<std::size_t>(it - choices.begin()));
-      continue;
-    }
-    const std::string where = array != nullptr ? position(r.file(), array->get(i)->source()) : r.where(key);
-    std::string message = where + ": " + r.context() + ": '" + v + "' in '" + std::string(key) + "' is not valid";
-    const std::vector<std::string> names(choices.begin(), choices.end());
-    throw Error::input(message + did_you_mean(v, names) + "; valid: " + join_names(names));
-  }
-  return out;
-}
-
 /// Re-raises a validator's error about a setting (Error::setting(), e.g. "dt") at the
 /// lesson key of that name ("file:12:6: step 3 (simulate): dt: ..."), in the innermost
 /// table that has it.
@@ -129,20 +106,6 @@ std::string strip_extension(std::string name, std::initializer_list<std::string_
     if (name.size() > ext.size() && name.compare(name.size() - ext.size(), ext.size(), ext) == 0)
       return name.substr(0, name.size() - ext.size());
   return name;
-}
-
-/// The keys of a table in file order (toml++ keeps them sorted by name).
-std::vector<std::string> keys_in_file_order(const toml::table& table,
-                                            const std::function<bool(std::string_view)>& keep) {
-  std::vector<std::pair<toml::source_position, std::string>> keys;
-  for (const auto& [key, value] : table)
-    if (keep(key.str())) keys.emplace_back(key.source().begin, std::string(key.str()));
-  std::sort(keys.begin(), keys.end(), [](const auto& a, const auto& b) {
-    return a.first.line != b.first.line ? a.first.line < b.first.line : a.first.column < b.first.column;
-  });
-  std::vector<std::string> out;
-  for (auto& [where, key] : keys) out.push_back(std::move(key));
-  return out;
 }
 
 /// Lesson text with {{...}} placeholders, each a finite number at `inputs` (where the
@@ -425,7 +388,7 @@ class Parser {
     if (!lesson_mechanism_.empty()) {
       // The lesson's mechanism: `set = ["NAME=VALUE", ...]` and NAME = VALUE keys, in file order.
       if (auto list = r.strings("set")) step.settings = *list;
-      for (const std::string& key : keys_in_file_order(r.table(), [&](std::string_view k) {
+      for (const std::string& key : r.keys_in_file_order([&](std::string_view k) {
              return std::find(settable_names_.begin(), settable_names_.end(), k) != settable_names_.end();
            }))
         step.settings.push_back(key + "=" + format_roundtrip(*r.number(key, -kInf, kInf, "")));
@@ -453,7 +416,7 @@ class Parser {
       return step;
     }
     if (r.has("set")) r.fail("set", "'set' applies to a mechanism: give mechanism = \"NAME\" at the top");
-    step.keys = keys_in_file_order(r.table(), [](std::string_view k) { return find_input_key(k) != nullptr; });
+    step.keys = r.keys_in_file_order([](std::string_view k) { return find_input_key(k) != nullptr; });
     if (step.keys.empty()) throw Error::input(r.prefix("") + "a set step needs at least one of " + input_key_list());
     try {
       for (const std::string& key : step.keys)
@@ -551,7 +514,7 @@ class Parser {
     }
     const std::vector<std::string_view> parts(kSolvePartNames.begin(), kSolvePartNames.end());
     if (!r.has("show")) s.parts.fill(true);
-    for (std::size_t i : choice_list(r, "show", parts)) s.parts[i] = true;
+    for (std::size_t i : r.choice_list("show", parts)) s.parts[i] = true;
     return s;
   }
 
@@ -938,7 +901,7 @@ class Parser {
       if (s.figure.mechanism_y.empty()) r.fail("y", "'y' is empty; name at least one column");
       return s;
     }
-    s.figure.y = choice_list(r, "y", series_names());
+    s.figure.y = r.choice_list("y", series_names());
     if (s.figure.y.empty()) r.fail("y", "'y' is empty; name at least one series");
     return s;
   }
@@ -949,7 +912,7 @@ class Parser {
     s.caption = r.string("caption").value_or("");
     s.runs = runs(r, inputs, true);
     const std::vector<std::string_view> columns(kCompareColumnNames.begin(), kCompareColumnNames.end());
-    for (std::size_t i : choice_list(r, "columns", columns)) s.columns.push_back(static_cast<CompareColumn>(i));
+    for (std::size_t i : r.choice_list("columns", columns)) s.columns.push_back(static_cast<CompareColumn>(i));
     if (s.columns.empty())
       for (std::size_t i = 0; i < columns.size(); ++i) s.columns.push_back(static_cast<CompareColumn>(i));
     s.every = sample_interval(r, longest(s.runs), 400);

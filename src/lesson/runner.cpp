@@ -18,10 +18,10 @@
 #include <sstream>
 
 #include "core/atomic_file.hpp"
+#include "core/content_hash.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
 #include "core/number_format.hpp"
-#include "lesson/canonical.hpp"
 #include "lesson/runner_context.hpp"
 #include "linkage/version.hpp"
 #include "model/mechanism_toml.hpp"

@@ -5,7 +5,7 @@
 #include <span>
 #include <string_view>
 
-#include "lesson/toml_reader.hpp"
+#include "model/toml_table.hpp"
 
 namespace linkage::lesson {
 

@@ -7,11 +7,11 @@
 #include "core/atomic_file.hpp"
 #include "core/interrupt.hpp"
 #include "core/number_format.hpp"
-#include "lesson/canonical.hpp"
 #include "lesson/figure_plot.hpp"
 #include "lesson/plot_difference.hpp"
 #include "lesson/runner_context.hpp"
 #include "lesson/runs.hpp"
+#include "model/inputs.hpp"
 #include "render/plot.hpp"
 
 namespace linkage::lesson {

@@ -77,6 +77,15 @@ std::string source_position(const std::string& file, long line, long column) {
   return file + ":" + std::to_string(line) + ":" + std::to_string(column);
 }
 
+std::string canonical_text(const Inputs& inputs) {
+  std::string out;
+  for (const InputKey& key : kInputKeys) {
+    if (!out.empty()) out += ';';
+    out += std::string(key.key) + "=" + format_roundtrip(inputs.value(key));
+  }
+  return out;
+}
+
 Inputs::Inputs() { origins_.fill("default"); }
 
 double Inputs::value(const InputKey& key) const {

@@ -6,6 +6,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <optional>
 #include <utility>
@@ -14,10 +15,12 @@
 #include "core/number_format.hpp"
 #include "model/inputs_toml.hpp"
 #include "model/name_match.hpp"
+#include "model/toml_table.hpp"
 
 namespace linkage {
 namespace {
 
+constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr std::string_view kQuantity = "number or expression";
 constexpr std::string_view kVector = "[x, y] of numbers or expressions";
 
@@ -78,10 +81,10 @@ constexpr MechanismKey kKeys[] = {
     {"[initial.SLIDER]", "s_dot", "number", "0", "rate of s, m/s"},
 };
 
-std::vector<std::string> keys_of(std::string_view table) {
-  std::vector<std::string> out;
+std::vector<std::string_view> keys_of(std::string_view table) {
+  std::vector<std::string_view> out;
   for (const MechanismKey& key : kKeys)
-    if (key.table == table) out.emplace_back(key.name);
+    if (key.table == table) out.push_back(key.name);
   return out;
 }
 
@@ -119,20 +122,6 @@ std::string q(std::string_view text) {
   return out;
 }
 
-bool before(const toml::source_position& a, const toml::source_position& b) {
-  return a.line < b.line || (a.line == b.line && a.column < b.column);
-}
-
-// A table's entries in file order (toml++ keeps them sorted by key).
-std::vector<std::pair<const toml::key*, const toml::node*>> in_file_order(const toml::table& table) {
-  std::vector<std::pair<const toml::key*, const toml::node*>> entries;
-  for (const auto& [key, node] : table) entries.emplace_back(&key, &node);
-  std::stable_sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) {
-    return before(a.first->source().begin, b.first->source().begin);
-  });
-  return entries;
-}
-
 // A quantity as read, with its number when the file gave a plain number.
 struct ReadQuantity {
   Quantity quantity;
@@ -141,10 +130,11 @@ struct ReadQuantity {
 
 class MechanismReader {
  public:
-  MechanismReader(const toml::table& root, std::string file) : root_(root), file_(std::move(file)) {}
+  MechanismReader(const toml::table& root, std::string file)
+      : file_(std::move(file)), root_(root, file_, "the top level", {}, keys_of("top level")) {}
 
   Mechanism read() {
-    check_keys(root_, "top level", "the top level");
+    root_.reject_unknown_keys();
     read_header();
     read_parameters();
     read_definitions();
@@ -170,62 +160,32 @@ class MechanismReader {
     fail(pos(region), message);
   }
 
-  // The first key (in file order) that `table_name` does not allow.
-  void check_keys(const toml::table& table, std::string_view table_name, const std::string& context) const {
-    check_keys(table, keys_of(table_name), context);
+  // A reader of `table`, named `context` in messages, that allows `keys`.
+  TableReader reader(const toml::table& table, std::string context, std::vector<std::string_view> keys = {}) const {
+    return {table, file_, std::move(context), {}, std::move(keys)};
   }
-  void check_keys(const toml::table& table, const std::vector<std::string>& allowed, const std::string& context) const {
-    const toml::key* first = nullptr;
-    for (const auto& [key, node] : table) {
-      if (std::find(allowed.begin(), allowed.end(), key.str()) != allowed.end()) continue;
-      if (first == nullptr || before(key.source().begin, first->source().begin)) first = &key;
-    }
-    if (first == nullptr) return;
-    const std::string name(first->str());
-    fail(first->source(),
-         "unknown key " + q(name) + " in " + context + did_you_mean(name, allowed) + "; valid: " + join_names(allowed));
+  // The same for a table of the format (kKeys), refusing any key it does not list.
+  TableReader checked(const toml::table& table, std::string context, std::string_view format_table) const {
+    TableReader r = reader(table, std::move(context), keys_of(format_table));
+    r.reject_unknown_keys();
+    return r;
   }
 
-  const toml::table* table_at(const toml::table& parent, std::string_view key, const std::string& context) const {
-    const toml::node* node = parent.get(key);
-    if (node == nullptr) return nullptr;
-    const toml::table* table = node->as_table();
-    if (table == nullptr) fail(node->source(), context + ": " + q(key) + " must be a table, got " + type_phrase(*node));
-    return table;
+  std::optional<std::pair<std::string, SourcePos>> string_at(const TableReader& r, std::string_view key,
+                                                             bool required) const {
+    if (required) r.require(key);
+    auto text = r.string(key);
+    if (!text) return std::nullopt;
+    return std::make_pair(std::move(*text), pos(r.node(key)->source()));
   }
 
-  // The tables of [[key]] (or key = [{...}, ...]).
-  std::vector<const toml::table*> tables_at(std::string_view key) const {
-    const toml::node* node = root_.get(key);
-    if (node == nullptr) return {};
-    const toml::array* array = node->as_array();
-    std::string header = "[[";
-    header += key;
-    header += "]]";
-    if (array == nullptr)
-      fail(node->source(),
-           q(key) + " must be a list of tables, each written " + header + ", got " + type_phrase(*node));
-    std::vector<const toml::table*> out;
-    for (const toml::node& element : *array) {
-      const toml::table* table = element.as_table();
-      if (table == nullptr)
-        fail(element.source(),
-             "every entry of " + q(key) + " must be a table (" + header + "), got " + type_phrase(element));
-      out.push_back(table);
-    }
-    return out;
-  }
-
-  std::optional<std::pair<std::string, SourcePos>> string_at(const toml::table& table, std::string_view key,
-                                                             const std::string& context, bool required) const {
-    const toml::node* node = table.get(key);
-    if (node == nullptr) {
-      if (required) fail(table.source(), context + ": the key " + q(key) + " is required");
-      return std::nullopt;
-    }
-    const auto* text = node->as_string();
-    if (text == nullptr) fail(node->source(), context + ": " + q(key) + " must be a string, got " + type_phrase(*node));
-    return std::make_pair(text->get(), pos(node->source()));
+  // The index of the required string `key` among `names` (a shape, a joint type).
+  template <std::size_t N>
+  static std::size_t choose(const TableReader& r, std::string_view key, const std::array<const char*, N>& names) {
+    r.require(key);
+    const std::vector<std::string_view> valid(names.begin(), names.end());
+    const std::string value = *r.choice(key, valid);
+    return static_cast<std::size_t>(std::find(valid.begin(), valid.end(), value) - valid.begin());
   }
 
   ReadQuantity quantity_of(const toml::node& node, const std::string& what, const std::string& context) const {
@@ -252,17 +212,15 @@ class MechanismReader {
     return out;
   }
 
-  std::optional<ReadQuantity> quantity_at(const toml::table& table, std::string_view key,
-                                          const std::string& context) const {
-    const toml::node* node = table.get(key);
+  std::optional<ReadQuantity> quantity_at(const TableReader& r, std::string_view key) const {
+    const toml::node* node = r.node(key);
     if (node == nullptr) return std::nullopt;
-    return quantity_of(*node, q(key), context);
+    return quantity_of(*node, q(key), r.context());
   }
 
-  ReadQuantity required_quantity(const toml::table& table, std::string_view key, const std::string& context) const {
-    auto read = quantity_at(table, key, context);
-    if (!read) fail(table.source(), context + ": the key " + q(key) + " is required");
-    return *read;
+  ReadQuantity required_quantity(const TableReader& r, std::string_view key) const {
+    r.require(key);
+    return *quantity_at(r, key);
   }
 
   // A plain number must satisfy the bound; an expression is checked at the parameter
@@ -286,27 +244,17 @@ class MechanismReader {
             quantity_of(*array->get(1), what + "[1]", context).quantity};
   }
 
-  std::array<std::pair<std::string, SourcePos>, 2> two_strings(const toml::table& table, std::string_view key,
-                                                               const std::string& context,
+  std::array<std::pair<std::string, SourcePos>, 2> two_strings(const TableReader& r, std::string_view key,
                                                                std::string_view example) const {
-    const toml::node* node = table.get(key);
-    if (node == nullptr)
-      fail(table.source(), context + ": the key " + q(key) + " is required, e.g. " + std::string(example));
-    const toml::array* array = node->as_array();
+    r.require(key, example);
+    const toml::node& node = *r.node(key);
+    const toml::array* array = node.as_array();
     if (array == nullptr || array->size() != 2)
-      fail(node->source(),
-           context + ": " + q(key) + " must be a list of two strings, e.g. " + std::string(example) + ", got " +
-               (array == nullptr ? type_phrase(*node) : "an array of " + std::to_string(array->size()) + " entries"));
-    std::array<std::pair<std::string, SourcePos>, 2> out;
-    for (std::size_t i = 0; i < 2; ++i) {
-      const toml::node& element = *array->get(i);
-      const auto* text = element.as_string();
-      if (text == nullptr)
-        fail(element.source(),
-             context + ": every entry of " + q(key) + " must be a string, got " + type_phrase(element));
-      out[i] = {text->get(), pos(element.source())};
-    }
-    return out;
+      r.fail(key,
+             q(key) + " must be a list of two strings, e.g. " + std::string(example) + ", got " +
+                 (array == nullptr ? type_phrase(node) : "an array of " + std::to_string(array->size()) + " entries"));
+    const std::vector<std::string> text = *r.strings(key);  // every entry a string
+    return {{{text[0], pos(array->get(0)->source())}, {text[1], pos(array->get(1)->source())}}};
   }
 
   void check_part_name(const std::string& name, const SourcePos& at, const std::string& what, bool reserve) const {
@@ -326,24 +274,36 @@ class MechanismReader {
       fail(at, what + " name " + q(name) + " is reserved; reserved: " + join_names(reserved_names()));
   }
 
+  // A part's name, unique among its kind (`lines` remembers where each was given).
+  std::string unique_name(const TableReader& numbered, const std::string& kind, bool reserve,
+                          std::map<std::string, long>& lines) const {
+    const auto name = string_at(numbered, "name", true);
+    check_part_name(name->first, name->second, kind, reserve);
+    if (const auto seen = lines.find(name->first); seen != lines.end())
+      fail(name->second, kind + " name " + q(name->first) + " is used twice (first at line " +
+                             std::to_string(seen->second) + "); names must be unique");
+    lines[name->first] = name->second.line;
+    return name->first;
+  }
+
   // --- the sections -----------------------------------------------------------------
 
   void read_header() {
-    if (auto title = string_at(root_, "title", "title", false)) {
+    if (auto title = string_at(root_, "title", false)) {
       if (title->first.find_first_of("\r\n") != std::string::npos)
         fail(title->second, "the title must be one line; put the rest in 'description'");
       m_.title = title->first;
     }
-    if (auto description = string_at(root_, "description", "description", false)) {
+    if (auto description = root_.string("description")) {
       // One paragraph: line breaks and runs of spaces read as one space.
-      for (char c : description->first) {
+      for (char c : *description) {
         const bool space = std::isspace(static_cast<unsigned char>(c)) != 0;
         if (space && (m_.description.empty() || m_.description.back() == ' ')) continue;
         m_.description += space ? ' ' : c;
       }
       if (!m_.description.empty() && m_.description.back() == ' ') m_.description.pop_back();
     }
-    if (auto gravity = quantity_at(root_, "gravity", "gravity")) {
+    if (auto gravity = quantity_at(root_, "gravity")) {
       if (gravity->number && *gravity->number < 0)
         fail(gravity->quantity.pos, "gravity = " + gravity->quantity.text +
                                         " m/s^2 is out of range; valid: a magnitude >= 0 (it acts along -y), or an "
@@ -353,9 +313,9 @@ class MechanismReader {
   }
 
   void read_parameters() {
-    const toml::table* table = table_at(root_, "parameters", "the top level");
+    const toml::table* table = root_.subtable("parameters");
     if (table == nullptr) return;
-    for (const auto& [key, node] : in_file_order(*table)) {
+    for (const auto& [key, node] : reader(*table, "[parameters]").entries()) {
       const std::string name(key->str());
       check_symbol_name(name, pos(key->source()), "parameter");
       const std::string context = "parameter " + q(name);
@@ -363,11 +323,12 @@ class MechanismReader {
       const toml::node* number = node;
       std::string unit, meaning;
       if (const auto* described = node->as_table()) {
-        check_keys(*described, std::vector<std::string>{"value", "unit", "meaning"}, context);
-        number = described->get("value");
-        if (number == nullptr) fail(node->source(), context + ": the key \"value\" is required");
-        if (auto u = string_at(*described, "unit", context, false)) unit = u->first;
-        if (auto text = string_at(*described, "meaning", context, false)) meaning = text->first;
+        const TableReader r = reader(*described, context, {"value", "unit", "meaning"});
+        r.reject_unknown_keys();
+        r.require("value");
+        number = r.node("value");
+        unit = r.string("unit").value_or("");
+        meaning = r.string("meaning").value_or("");
       }
       std::optional<double> value;
       if (const auto* i = number->as_integer()) value = static_cast<double>(i->get());
@@ -384,9 +345,9 @@ class MechanismReader {
   }
 
   void read_definitions() {
-    const toml::table* table = table_at(root_, "definitions", "the top level");
+    const toml::table* table = root_.subtable("definitions");
     if (table == nullptr) return;
-    for (const auto& [key, node] : in_file_order(*table)) {
+    for (const auto& [key, node] : reader(*table, "[definitions]").entries()) {
       const std::string name(key->str());
       const SourcePos at = pos(key->source());
       check_symbol_name(name, at, "definition");
@@ -398,69 +359,52 @@ class MechanismReader {
     }
   }
 
-  std::vector<NamedPoint> read_points(const toml::table& owner, const std::string& context) const {
-    const toml::table* table = table_at(owner, "points", context);
+  std::vector<NamedPoint> read_points(const TableReader& owner) const {
+    const toml::table* table = owner.subtable("points");
     if (table == nullptr) return {};
     std::vector<NamedPoint> points;
-    for (const auto& [key, node] : in_file_order(*table)) {
+    for (const auto& [key, node] : reader(*table, owner.context()).entries()) {
       const std::string name(key->str());
       const SourcePos at = pos(key->source());
-      check_part_name(name, at, context + ": point", false);
-      points.push_back({name, vector_of(*node, "point " + q(name), context), at});
+      check_part_name(name, at, owner.context() + ": point", false);
+      points.push_back({name, vector_of(*node, "point " + q(name), owner.context()), at});
     }
     return points;
   }
 
   void read_ground() {
-    const toml::table* table = table_at(root_, "ground", "the top level");
+    const toml::table* table = root_.subtable("ground");
     if (table == nullptr) return;
-    check_keys(*table, "[ground]", "[ground]");
-    m_.ground_points = read_points(*table, "[ground]");
+    m_.ground_points = read_points(checked(*table, "[ground]", "[ground]"));
   }
 
   void read_bodies() {
     std::map<std::string, long> lines;
     std::size_t index = 0;
-    for (const toml::table* table : tables_at("body")) {
-      ++index;
-      const std::string numbered = "[[body]] number " + std::to_string(index);
-      check_keys(*table, "[[body]]", numbered);
+    for (const toml::table* table : root_.tables("body", "[[body]]")) {
       Body body;
       body.pos = pos(table->source());
-      const auto name = string_at(*table, "name", numbered, true);
-      body.name = name->first;
-      check_part_name(body.name, name->second, "body", true);
-      if (const auto seen = lines.find(body.name); seen != lines.end())
-        fail(name->second, "body name " + q(body.name) + " is used twice (first at line " +
-                               std::to_string(seen->second) + "); names must be unique");
-      lines[body.name] = name->second.line;
-      const std::string context = "body " + q(body.name);
-
-      const auto shape = string_at(*table, "shape", context, true);
-      const std::vector<std::string> shapes(kShapeNames.begin(), kShapeNames.end());
-      const auto found = std::find(shapes.begin(), shapes.end(), shape->first);
-      if (found == shapes.end())
-        fail(shape->second, context + ": shape " + q(shape->first) + " is not a shape" +
-                                did_you_mean(shape->first, shapes) + "; valid: " + join_names(shapes));
-      body.shape = static_cast<Shape>(found - shapes.begin());
-
-      const ReadQuantity mass = required_quantity(*table, "mass", context);
-      require_bound(mass, "mass", context, true, "kg");
+      body.name =
+          unique_name(checked(*table, "[[body]] number " + std::to_string(++index), "[[body]]"), "body", true, lines);
+      const TableReader r = reader(*table, "body " + q(body.name));
+      body.shape = static_cast<Shape>(choose(r, "shape", kShapeNames));
+      const ReadQuantity mass = required_quantity(r, "mass");
+      require_bound(mass, "mass", r.context(), true, "kg");
       body.mass = mass.quantity;
-      read_sizes(*table, body, context);
-      if (auto inertia = quantity_at(*table, "inertia", context)) {
-        require_bound(*inertia, "inertia", context, true, "kg m^2");
+      read_sizes(r, body);
+      if (auto inertia = quantity_at(r, "inertia")) {
+        require_bound(*inertia, "inertia", r.context(), true, "kg m^2");
         body.inertia = inertia->quantity;
       }
-      body.points = read_points(*table, context);
+      body.points = read_points(r);
       m_.bodies.push_back(std::move(body));
     }
     if (m_.bodies.empty())
-      fail(pos(root_.source()), "no [[body]]: a mechanism needs at least one body; see mechanisms/README.md");
+      fail(root_.table().source(), "no [[body]]: a mechanism needs at least one body; see mechanisms/README.md");
   }
 
   // The sizes the shape takes, each required; any other size is a mistake.
-  void read_sizes(const toml::table& table, Body& body, const std::string& context) const {
+  void read_sizes(const TableReader& r, Body& body) const {
     struct Size {
       std::string_view key;
       std::optional<Quantity> Body::*member;
@@ -474,16 +418,14 @@ class MechanismReader {
     const std::string shape = kShapeNames[static_cast<std::size_t>(body.shape)];
     for (const Size& size : kSizes) {
       const bool used = std::find(takes.begin(), takes.end(), size.key) != takes.end();
-      const toml::node* node = table.get(size.key);
-      if (!used && node != nullptr)
-        fail(node->source(), context + ": a " + shape + " has no " + q(size.key) + "; a " + shape + " takes " +
-                                 (takes.empty() ? std::string("no sizes") : join_names(takes)));
+      if (!used && r.has(size.key))
+        r.fail(size.key, "a " + shape + " has no " + q(size.key) + "; a " + shape + " takes " +
+                             (takes.empty() ? std::string("no sizes") : join_names(takes)));
       if (!used) continue;
-      if (node == nullptr)
-        fail(table.source(),
-             context + ": a " + shape + " needs " + q(size.key) + "; a " + shape + " takes " + join_names(takes));
-      const ReadQuantity read = quantity_of(*node, q(size.key), context);
-      require_bound(read, size.key, context, true, "m");
+      if (!r.has(size.key))
+        r.fail(size.key, "a " + shape + " needs " + q(size.key) + "; a " + shape + " takes " + join_names(takes));
+      const ReadQuantity read = *quantity_at(r, size.key);
+      require_bound(read, size.key, r.context(), true, "m");
       body.*size.member = read.quantity;
     }
   }
@@ -525,72 +467,50 @@ class MechanismReader {
   void read_joints() {
     std::map<std::string, long> lines;
     std::size_t index = 0;
-    for (const toml::table* table : tables_at("joint")) {
-      ++index;
-      const std::string numbered = "[[joint]] number " + std::to_string(index);
-      check_keys(*table, "[[joint]]", numbered);
+    for (const toml::table* table : root_.tables("joint", "[[joint]]")) {
       Joint joint;
       joint.pos = pos(table->source());
-      const auto name = string_at(*table, "name", numbered, true);
-      joint.name = name->first;
-      check_part_name(joint.name, name->second, "joint", true);
-      if (const auto seen = lines.find(joint.name); seen != lines.end())
-        fail(name->second, "joint name " + q(joint.name) + " is used twice (first at line " +
-                               std::to_string(seen->second) + "); names must be unique");
-      lines[joint.name] = name->second.line;
-      const std::string context = "joint " + q(joint.name);
-
-      const auto type = string_at(*table, "type", context, true);
-      const std::vector<std::string> types(kJointTypeNames.begin(), kJointTypeNames.end());
-      const auto found = std::find(types.begin(), types.end(), type->first);
-      if (found == types.end())
-        fail(type->second, context + ": type " + q(type->first) + " is not a joint type" +
-                               did_you_mean(type->first, types) + "; valid: " + join_names(types));
-      joint.type = static_cast<JointType>(found - types.begin());
-
-      const auto bodies = two_strings(*table, "bodies", context, "[\"ground\", \"1\"]");
-      for (const auto& [body, at] : bodies) check_body(body, at, context, true);
+      joint.name = unique_name(checked(*table, "[[joint]] number " + std::to_string(++index), "[[joint]]"), "joint",
+                               true, lines);
+      const TableReader r = reader(*table, "joint " + q(joint.name));
+      joint.type = static_cast<JointType>(choose(r, "type", kJointTypeNames));
+      const auto bodies = two_strings(r, "bodies", "[\"ground\", \"1\"]");
+      for (const auto& [body, at] : bodies) check_body(body, at, r.context(), true);
       if (bodies[0].first == bodies[1].first)
-        fail(bodies[1].second, context + " joins " + q(bodies[0].first) +
+        fail(bodies[1].second, r.context() + " joins " + q(bodies[0].first) +
                                    " to itself; give two different bodies (or a body and \"ground\")");
-      const auto points = two_strings(*table, "points", context, "[\"O\", \"A\"]");
+      const auto points = two_strings(r, "points", "[\"O\", \"A\"]");
       for (std::size_t i = 0; i < 2; ++i) {
         joint.bodies[i] = bodies[i].first;
         joint.points[i] = points[i].first;
-        check_point(bodies[i].first, points[i].first, points[i].second, context);
+        check_point(bodies[i].first, points[i].first, points[i].second, r.context());
       }
-      read_joint_options(*table, joint, context);
+      read_joint_options(r, joint);
       m_.joints.push_back(std::move(joint));
     }
   }
 
-  void read_joint_options(const toml::table& table, Joint& joint, const std::string& context) const {
+  void read_joint_options(const TableReader& r, Joint& joint) const {
     const bool pin = joint.type == JointType::pin;
     for (const std::string_view key : {"stiffness", "damping", "rest_angle"}) {
-      const toml::node* node = table.get(key);
-      if (node == nullptr) continue;
-      if (!pin)
-        fail(node->source(),
-             context + ": " + q(key) + " is for pins only (a torsional spring-damper); a slider takes: axis");
-      const ReadQuantity read = quantity_of(*node, q(key), context);
+      if (!r.has(key)) continue;
+      if (!pin) r.fail(key, q(key) + " is for pins only (a torsional spring-damper); a slider takes: axis");
+      const auto read = quantity_at(r, key);
       if (key == "stiffness") {
-        require_bound(read, key, context, false, "N m/rad");
-        joint.stiffness = read.quantity;
+        require_bound(*read, key, r.context(), false, "N m/rad");
+        joint.stiffness = read->quantity;
       } else if (key == "damping") {
-        require_bound(read, key, context, false, "N m s/rad");
-        joint.damping = read.quantity;
+        require_bound(*read, key, r.context(), false, "N m s/rad");
+        joint.damping = read->quantity;
       } else {
-        joint.rest_angle = read.quantity;
+        joint.rest_angle = read->quantity;
       }
     }
-    const toml::node* axis = table.get("axis");
-    if (pin && axis != nullptr)
-      fail(axis->source(), context + ": 'axis' is for sliders only; a pin takes: stiffness, damping, rest_angle");
+    if (pin && r.has("axis")) r.fail("axis", "'axis' is for sliders only; a pin takes: stiffness, damping, rest_angle");
     if (pin) return;
-    if (axis == nullptr)
-      fail(table.source(),
-           context + ": a slider needs 'axis', its direction [x, y] in the frame of " + q(joint.bodies[0]));
-    joint.axis = vector_of(*axis, "'axis'", context);
+    if (!r.has("axis"))
+      r.fail("axis", "a slider needs 'axis', its direction [x, y] in the frame of " + q(joint.bodies[0]));
+    joint.axis = vector_of(*r.node("axis"), "'axis'", r.context());
     const auto is_zero = [](const Quantity& c) {
       const auto* end = c.text.data() + c.text.size();
       double v = 1;
@@ -598,7 +518,8 @@ class MechanismReader {
       return ec == std::errc() && ptr == end && v == 0;
     };
     if (is_zero(joint.axis->x) && is_zero(joint.axis->y))
-      fail(joint.axis->x.pos, context + ": 'axis' = [0, 0] has no direction; valid: a nonzero vector such as [1, 0]");
+      fail(joint.axis->x.pos,
+           r.context() + ": 'axis' = [0, 0] has no direction; valid: a nonzero vector such as [1, 0]");
   }
 
   PointRef point_ref(const std::pair<std::string, SourcePos>& text, const std::string& context) const {
@@ -614,33 +535,26 @@ class MechanismReader {
   void read_springs() {
     std::map<std::string, long> lines;
     std::size_t index = 0;
-    for (const toml::table* table : tables_at("spring")) {
-      ++index;
-      const std::string numbered = "[[spring]] number " + std::to_string(index);
-      check_keys(*table, "[[spring]]", numbered);
+    for (const toml::table* table : root_.tables("spring", "[[spring]]")) {
       Spring spring;
       spring.pos = pos(table->source());
-      const auto name = string_at(*table, "name", numbered, true);
-      spring.name = name->first;
-      check_part_name(spring.name, name->second, "spring", false);
-      if (const auto seen = lines.find(spring.name); seen != lines.end())
-        fail(name->second, "spring name " + q(spring.name) + " is used twice (first at line " +
-                               std::to_string(seen->second) + "); names must be unique");
-      lines[spring.name] = name->second.line;
-      const std::string context = "spring " + q(spring.name);
-      const auto between = two_strings(*table, "between", context, "[\"ground.O\", \"1.P\"]");
-      for (std::size_t i = 0; i < 2; ++i) spring.between[i] = point_ref(between[i], context);
+      spring.name = unique_name(checked(*table, "[[spring]] number " + std::to_string(++index), "[[spring]]"), "spring",
+                                false, lines);
+      const TableReader r = reader(*table, "spring " + q(spring.name));
+      const auto between = two_strings(r, "between", "[\"ground.O\", \"1.P\"]");
+      for (std::size_t i = 0; i < 2; ++i) spring.between[i] = point_ref(between[i], r.context());
       if (between[0].first == between[1].first)
-        fail(between[1].second, context + " joins " + q(between[0].first) + " to itself; give two different points");
-      const ReadQuantity stiffness = required_quantity(*table, "stiffness", context);
-      require_bound(stiffness, "stiffness", context, false, "N/m");
+        fail(between[1].second,
+             r.context() + " joins " + q(between[0].first) + " to itself; give two different points");
+      const ReadQuantity stiffness = required_quantity(r, "stiffness");
+      require_bound(stiffness, "stiffness", r.context(), false, "N/m");
       spring.stiffness = stiffness.quantity;
-      const ReadQuantity rest = required_quantity(*table, "rest_length", context);
-      require_bound(rest, "rest_length", context, false, "m");
+      const ReadQuantity rest = required_quantity(r, "rest_length");
+      require_bound(rest, "rest_length", r.context(), false, "m");
       spring.rest_length = rest.quantity;
       spring.damping = {"0", spring.pos};
-      if (auto damping = quantity_at(*table, "damping", context)) {
-        require_bound(*damping, "damping", context, false, "N s/m");
+      if (auto damping = quantity_at(r, "damping")) {
+        require_bound(*damping, "damping", r.context(), false, "N s/m");
         spring.damping = damping->quantity;
       }
       m_.springs.push_back(std::move(spring));
@@ -649,50 +563,46 @@ class MechanismReader {
 
   void read_loads() {
     std::size_t index = 0;
-    for (const toml::table* table : tables_at("force")) {
-      ++index;
-      const std::string context = "[[force]] number " + std::to_string(index);
-      check_keys(*table, "[[force]]", context);
+    for (const toml::table* table : root_.tables("force", "[[force]]")) {
+      const TableReader r = checked(*table, "[[force]] number " + std::to_string(++index), "[[force]]");
       AppliedForce force;
       force.pos = pos(table->source());
-      const auto body = string_at(*table, "body", context, true);
-      check_body(body->first, body->second, context, false);
-      const auto point = string_at(*table, "point", context, true);
-      check_point(body->first, point->first, point->second, context);
-      const toml::node* value = table->get("value");
-      if (value == nullptr) fail(table->source(), context + ": the key 'value' is required, e.g. [\"0\", \"-F0\"]");
+      const auto body = string_at(r, "body", true);
+      check_body(body->first, body->second, r.context(), false);
+      const auto point = string_at(r, "point", true);
+      check_point(body->first, point->first, point->second, r.context());
+      r.require("value", "[\"0\", \"-F0\"]");
       force.body = body->first;
       force.point = point->first;
-      force.value = vector_of(*value, "'value'", context);
+      force.value = vector_of(*r.node("value"), "'value'", r.context());
       m_.forces.push_back(std::move(force));
     }
     index = 0;
-    for (const toml::table* table : tables_at("torque")) {
-      ++index;
-      const std::string context = "[[torque]] number " + std::to_string(index);
-      check_keys(*table, "[[torque]]", context);
+    for (const toml::table* table : root_.tables("torque", "[[torque]]")) {
+      const TableReader r = checked(*table, "[[torque]] number " + std::to_string(++index), "[[torque]]");
       AppliedTorque torque;
       torque.pos = pos(table->source());
-      const auto body = string_at(*table, "body", context, true);
-      check_body(body->first, body->second, context, false);
+      const auto body = string_at(r, "body", true);
+      check_body(body->first, body->second, r.context(), false);
       torque.body = body->first;
-      torque.value = required_quantity(*table, "value", context).quantity;
+      torque.value = required_quantity(r, "value").quantity;
       m_.torques.push_back(std::move(torque));
     }
   }
 
   void read_initial() {
-    const toml::table* table = table_at(root_, "initial", "the top level");
-    m_.initial_pos = pos(table != nullptr ? table->source() : root_.source());
+    const toml::table* table = root_.subtable("initial");
+    m_.initial_pos = pos(table != nullptr ? table->source() : root_.table().source());
     if (table == nullptr) return;
+    const TableReader initial = reader(*table, "[initial]");
     std::vector<std::string> entries{"independent"};
     for (const Body& body : m_.bodies) entries.push_back(body.name);
     for (const Joint& joint : m_.joints)
       if (joint.type == JointType::slider) entries.push_back(joint.name);
-    for (const auto& [key, node] : in_file_order(*table)) {
+    for (const auto& [key, node] : initial.entries()) {
       const std::string name(key->str());
       if (name == "independent") {
-        read_independent(*node);
+        read_independent(initial);
         continue;
       }
       const Body* body = m_.find_body(name);
@@ -710,40 +620,31 @@ class MechanismReader {
         fail(node->source(), context + " must be a table such as { " +
                                  (body != nullptr ? "theta = 0.1, theta_dot = 0" : "s = 0.1, s_dot = 0") + " }, got " +
                                  type_phrase(*node));
-      std::vector<std::string> allowed;
+      std::vector<std::string_view> allowed;
       if (body != nullptr) allowed = keys_of("[initial.BODY]");
       if (slider)
-        for (const std::string& k : keys_of("[initial.SLIDER]")) allowed.push_back(k);
-      check_keys(*values, allowed, context);
-      for (const auto& [value_key, value] : in_file_order(*values)) {
-        const std::string full = name + "." + std::string(value_key->str());
-        std::optional<double> number;
-        if (const auto* i = value->as_integer()) number = static_cast<double>(i->get());
-        if (const auto* f = value->as_floating_point()) number = f->get();
-        if (!number) fail(value->source(), "[initial] " + full + " must be a number, got " + type_phrase(*value));
-        if (!std::isfinite(*number))
-          fail(value->source(), "[initial] " + full + " = " + format_roundtrip(*number) + " is not a finite number");
-        m_.initial.push_back({full, *number, pos(value->source())});
+        for (std::string_view k : keys_of("[initial.SLIDER]")) allowed.push_back(k);
+      const TableReader r = reader(*values, context, allowed);
+      r.reject_unknown_keys();
+      for (const auto& [value_key, value] : r.entries()) {
+        const std::string coordinate(value_key->str());
+        const double number = *r.number(coordinate, -kInf, kInf, "");
+        m_.initial.push_back({name + "." + coordinate, number, pos(value->source())});
       }
     }
   }
 
-  void read_independent(const toml::node& node) {
+  void read_independent(const TableReader& initial) {
+    const toml::node& node = *initial.node("independent");
     m_.independent_pos = pos(node.source());
-    const toml::array* array = node.as_array();
-    if (array == nullptr)
-      fail(node.source(),
-           "[initial]: 'independent' must be a list of coordinates such as [\"2.theta\"], got " + type_phrase(node));
-    for (const toml::node& element : *array) {
-      const auto* text = element.as_string();
-      if (text == nullptr)
-        fail(element.source(), "[initial]: every entry of 'independent' must be a string, got " + type_phrase(element));
-      m_.independent.push_back(text->get());
-    }
+    if (!node.is_array())
+      initial.fail("independent",
+                   "'independent' must be a list of coordinates such as [\"2.theta\"], got " + type_phrase(node));
+    m_.independent = *initial.strings("independent");  // every entry a string
   }
 
-  const toml::table& root_;
   std::string file_;
+  TableReader root_;
   Mechanism m_;
 };
 

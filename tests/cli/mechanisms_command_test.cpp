@@ -92,8 +92,9 @@ TEST(MechanismsCommand, BadFileOrNameExitsTwoInOneLine) {
   test::TempDir dir;
   const std::string file = (dir / "bad.toml").string();
   test::write_text(dir / "bad.toml", "[[body]]\nname = \"1\"\nshape = \"circle\"\nmass = 1\n");
-  expect_one_line_error(test::run_linkage({"mechanisms", file}),
-                        {file + ":3:9: body '1': shape 'circle' is not a shape", "valid: rectangle, rod, disc, point"});
+  expect_one_line_error(
+      test::run_linkage({"mechanisms", file}),
+      {file + ":3:9: body '1': 'shape' = 'circle' is not valid", "valid: rectangle, rod, disc, point"});
   expect_one_line_error(test::run_linkage({"mechanisms", "to-blocks"}),
                         {"mechanisms: 'to-blocks' is not a shipped mechanism (did you mean 'two-blocks'?)",
                          "valid: double-pendulum, four-bar", "or a file path"});

@@ -1,27 +1,14 @@
-// Content hashes and the artifact cache.
+// The artifact cache.
 #include "lesson/cache.hpp"
 
 #include <gtest/gtest.h>
 
 #include <sstream>
 
-#include "lesson/canonical.hpp"
 #include "support/test_support.hpp"
 
 namespace linkage::lesson {
 namespace {
-
-TEST(ContentHash, CanonicalTextIsOrderFreeAndValueExact) {
-  const toml::table a = toml::parse("b = 1\na = [0.1, \"x\"]\nc = { d = true }");
-  const toml::table b = toml::parse("c = { d = true }\na = [0.1, \"x\"]\nb = 1");
-  const toml::table c = toml::parse("b = 1\na = [0.10000000000000002, \"x\"]\nc = { d = true }");
-  EXPECT_EQ(canonical_text(a), canonical_text(b));
-  EXPECT_NE(canonical_text(a), canonical_text(c));
-  EXPECT_EQ(canonical_text(a), "{\"a\"=[0.1,\"x\"],\"b\"=1,\"c\"={\"d\"=true}}");
-  EXPECT_EQ(canonical_text(a, {"b"}), "{\"a\"=[0.1,\"x\"],\"c\"={\"d\"=true}}");
-  EXPECT_EQ(content_hash(""), "cbf29ce484222325");  // FNV-1a 64 offset basis
-  EXPECT_EQ(content_hash("a"), "af63dc4c8601ec8c");
-}
 
 TEST(ArtifactCache, HitsOnlyWithTheSameHashAndIntactFiles) {
   test::TempDir dir;

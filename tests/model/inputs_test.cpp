@@ -25,6 +25,17 @@ TEST(Inputs, DefaultsAreTheSpecExampleAndValid) {
   }
 }
 
+TEST(Inputs, CanonicalTextListsEveryInputInRoundTripForm) {
+  Inputs inputs;
+  inputs.set(*find_input_key("theta2_dot"), 0.1 + 0.2, "test");
+  EXPECT_EQ(canonical_text(inputs),
+            "L=0.3;w=0.1;b=0.04;m=0.1;g=9.81;x1=1;y1=2;theta1=0.1;theta2=0.2;x1_dot=0.15;"
+            "y1_dot=0.25;theta1_dot=0.35;theta2_dot=0.30000000000000004");
+  Inputs other;
+  other.set(*find_input_key("theta2_dot"), 0.3, "test");
+  EXPECT_NE(canonical_text(inputs), canonical_text(other));
+}
+
 TEST(Inputs, RangeErrorsNameValueOriginAndRange) {
   Inputs inputs;
   inputs.set(*find_input_key("b"), 0.5, "--b");

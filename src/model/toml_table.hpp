@@ -1,22 +1,22 @@
 #pragma once
-// Typed, position-aware reading of one TOML table of a lesson. Every error is one line
-// "FILE:LINE:COLUMN: CONTEXT: problem; valid choices", pointing at the offending key
-// or value, with the closest valid spelling for a typo.
+// Typed, position-aware reading of one TOML table (a lesson's, a mechanism file's). Every
+// error is one line "FILE:LINE:COLUMN: CONTEXT: problem; valid ...", pointing at the
+// offending key, value or list entry, with the closest valid spelling for a typo.
 #include <toml++/toml.h>
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
-#include "model/inputs_toml.hpp"
-
-namespace linkage::lesson {
+namespace linkage {
 
 /// One allowed key of a table: its name, type, default and meaning (also the source of
-/// lessons/README.md's tables, which a test keeps in step).
+/// the format READMEs' tables, which tests keep in step).
 struct KeySpec {
   std::string_view name;
   std::string_view type;          // e.g. "string", "number", "list of strings"
@@ -24,13 +24,20 @@ struct KeySpec {
   std::string_view doc;
 };
 
-/// "file:line:column" of a node.
+/// "file:line:column" of a node; a region toml++ did not record (line 0) is 1:1, the
+/// file as a whole.
 [[nodiscard]] std::string position(const std::string& file, const toml::source_region& where);
+
+/// A canonical text of a TOML value for content hashes: keys sorted, numbers in shortest
+/// round-trip form, strings quoted with escapes, so equal tables give equal text and any
+/// change of a value changes it. Keys of a table listed in `skip` are left out (only at
+/// the top level).
+[[nodiscard]] std::string canonical_text(const toml::node& node, const std::vector<std::string_view>& skip = {});
 
 class TableReader {
  public:
-  /// `context` names the table in messages, e.g. "step 4 (render)". `extra_keys` are
-  /// allowed besides `keys` (e.g. the thirteen input names).
+  /// `context` names the table in messages, e.g. "step 4 (render)" or "body '1'".
+  /// `extra_keys` are allowed besides `keys` (e.g. the thirteen input names).
   TableReader(const toml::table& table, std::string file, std::string context, std::span<const KeySpec> keys,
               std::vector<std::string_view> extra_keys = {});
 
@@ -49,8 +56,10 @@ class TableReader {
   /// "file:line:column: context: " for messages about `key`.
   [[nodiscard]] std::string prefix(std::string_view key) const;
   [[noreturn]] void fail(std::string_view key, const std::string& problem) const;
-  /// Fails unless `key` is present.
-  void require(std::string_view key) const;
+  /// Fails at `node` (a list entry, a nested value) in this table's context.
+  [[noreturn]] void fail_at(const toml::node& node, const std::string& problem) const;
+  /// Fails unless `key` is present; `example` (e.g. "[\"O\", \"A\"]") shows a value.
+  void require(std::string_view key, std::string_view example = {}) const;
 
   [[nodiscard]] std::optional<std::string> string(std::string_view key) const;
   /// A number (integer or float), finite, within [lo, hi]; `rule` words the range.
@@ -62,8 +71,20 @@ class TableReader {
   /// A string that must be one of `choices`.
   [[nodiscard]] std::optional<std::string> choice(std::string_view key,
                                                   const std::vector<std::string_view>& choices) const;
-  /// The array of tables (inline or [[...]]) under `key`.
-  [[nodiscard]] std::vector<const toml::table*> tables(std::string_view key) const;
+  /// A string or list of strings, each one of `choices`: their indices (empty when the
+  /// key is absent). An error points at the offending entry.
+  [[nodiscard]] std::vector<std::size_t> choice_list(std::string_view key,
+                                                     const std::vector<std::string_view>& choices) const;
+  /// The table under `key`, or null when absent.
+  [[nodiscard]] const toml::table* subtable(std::string_view key) const;
+  /// The array of tables (inline or [[...]]) under `key`; `written` shows how one is
+  /// written in messages (e.g. "[[body]]").
+  [[nodiscard]] std::vector<const toml::table*> tables(std::string_view key, std::string_view written = {}) const;
+
+  /// The entries in file order (toml++ keeps them sorted by name).
+  [[nodiscard]] std::vector<std::pair<const toml::key*, const toml::node*>> entries() const;
+  /// The names of the keys `keep` accepts, in file order.
+  [[nodiscard]] std::vector<std::string> keys_in_file_order(const std::function<bool(std::string_view)>& keep) const;
 
  private:
   const toml::table& table_;
@@ -73,6 +94,4 @@ class TableReader {
   std::vector<std::string_view> extra_keys_;
 };
 
-using linkage::type_phrase;  // model/inputs_toml.hpp
-
-}  // namespace linkage::lesson
+}  // namespace linkage
