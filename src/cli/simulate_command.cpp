@@ -4,7 +4,6 @@
 #include <cctype>
 #include <cerrno>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <memory>
@@ -21,7 +20,6 @@
 #include "core/angle_unit.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
-#include "core/interrupt.hpp"
 #include "core/number_format.hpp"
 #include "core/progress.hpp"
 #include "integrate/columns.hpp"
@@ -29,6 +27,7 @@
 #include "integrate/mechanism_simulation.hpp"
 #include "integrate/simulation.hpp"
 #include "integrate/trajectory_rows.hpp"
+#include "pipeline/simulate_rows.hpp"
 #include "symbolic/loop_closure.hpp"
 
 namespace linkage::cli {
@@ -76,24 +75,6 @@ TrajectoryRows checked_rows(double duration, double every) {
   return {duration, every};
 }
 
-/// The columns as written with --angles: angular ones (rad, rad/s, rad/s^2) scaled, and
-/// named with their unit in a CSV header when in degrees ("theta1 (deg)").
-struct WrittenColumns {
-  std::vector<std::string> names;  // CSV header
-  std::vector<std::string> units;  // JSON "units"
-  std::vector<double> factors;
-
-  void add(const std::string& name, std::string_view unit, AngleUnit angles) {
-    const double factor = angle_factor(unit, angles);
-    units.push_back(angle_unit_text(unit, angles));
-    names.push_back(factor == 1 ? name : name + " (" + units.back() + ")");
-    factors.push_back(factor);
-  }
-  void scale(std::vector<double>& values) const {
-    for (std::size_t j = 0; j < values.size(); ++j) values[j] *= factors[j];
-  }
-};
-
 /// Writes rows as they are computed: CSV lines go out whole, so a run that fails
 /// part way leaves only complete lines on stdout (and no file at all with --out).
 class TableWriter {
@@ -103,9 +84,7 @@ class TableWriter {
 
   void begin(const std::vector<std::string>& names, const std::string& json_header) {
     if (format_ == Format::csv) {
-      std::string line;
-      for (std::size_t i = 0; i < names.size(); ++i) line += (i ? "," : "") + names[i];
-      emit(line + "\n");
+      emit(joined_names(names) + "\n");
     } else {
       json_ = json_header + "  \"rows\": [";
     }
@@ -114,10 +93,7 @@ class TableWriter {
   void row(const std::vector<double>& values) {
     line_.clear();
     if (format_ == Format::json) line_ += rows_ ? ",\n    [" : "\n    [";
-    for (std::size_t i = 0; i < values.size(); ++i) {
-      if (i) line_ += format_ == Format::csv ? "," : ", ";
-      line_ += format_roundtrip(values[i]);
-    }
+    line_ += joined_values(values, format_ == Format::csv ? "," : ", ");
     line_ += format_ == Format::csv ? "\n" : "]";
     ++rows_;
     if (format_ == Format::csv)
@@ -265,29 +241,16 @@ void run_simulate_mechanism(const SimulateOptions& o, const SimulationOptions& s
   if (!o.out.empty()) file.emplace(o.out, "out");
   TableWriter writer(format, stdout, file ? &*file : nullptr);
   const AngleUnit angles = parse_angle_unit(o.angles, "--angles");
-  WrittenColumns written;
-  for (const MechanismColumn& c : columns) written.add(c.name, c.unit, angles);
+  const WrittenColumns written = written_columns(columns, angles);
   writer.begin(written.names,
                format == Format::json ? mechanism_json_header(system, closed.state, s, every, columns, written) : "");
   Progress progress("simulate", s.duration, "s simulated", o.quiet);
   simulation.on_progress([&progress](double t) { progress.update(t); });
-  eval::MechanismSample sample;
-  std::vector<double> values(columns.size());
-  for (long i = 0; i < samples.count; ++i) {
-    const double t = samples.at(i);
-    const Eigen::VectorXd& y = simulation.state_at(t);
-    simulation.sample(t, y, sample);
-    for (std::size_t j = 0; j < columns.size(); ++j) {
-      values[j] = column_value(columns[j], t, y, sample, simulation.energy0());
-      if (!std::isfinite(values[j]))
-        throw Error::diverged(columns[j].name + " at t = " + format_roundtrip(t) +
-                              " s is not a finite number; the run stopped (Case " + std::to_string(s.case_id) + ")");
-    }
-    written.scale(values);
-    writer.row(values);
-    progress.update(t);
-    throw_if_interrupted();
-  }
+  (void)mechanism_trajectory(simulation, s.case_id, samples, columns, angles,
+                             [&](double t, const std::vector<double>& values) {
+                               writer.row(values);
+                               progress.update(t);
+                             });
   progress.finish();
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   writer.end(mechanism_json_summary(simulation.stats(), wall));
@@ -335,26 +298,16 @@ void run_simulate(const SimulateOptions& o) {
   std::optional<AtomicFile> file;
   if (!o.out.empty()) file.emplace(o.out, "out");
   TableWriter writer(format, stdout, file ? &*file : nullptr);
-  WrittenColumns written;
-  for (const Column c : columns) written.add(std::string(info(c).name), info(c).unit, angles);
+  const WrittenColumns written = written_columns(columns, angles);
   writer.begin(written.names, format == Format::json ? json_header(inputs, s, every, columns, written) : "");
   // In simulated time, reported from inside long steps too: one row may take minutes.
   Progress progress("simulate", s.duration, "s simulated", o.quiet);
   simulation.on_progress([&progress](double t) { progress.update(t); });
-  std::vector<double> values;
-  for (long i = 0; i < samples.count; ++i) {
-    const double t = samples.at(i);
-    compute_row(simulation, t, simulation.state_at(t), columns, values);
-    for (std::size_t j = 0; j < values.size(); ++j)
-      if (!std::isfinite(values[j]))
-        throw Error::diverged(std::string(info(columns[j]).name) + " at t = " + format_roundtrip(t) +
-                              " s is not a finite number; the run stopped" +
-                              (likely_causes(inputs).empty() ? "" : " (inputs: " + likely_causes(inputs) + ")"));
-    written.scale(values);
-    writer.row(values);
-    progress.update(t);
-    throw_if_interrupted();
-  }
+  (void)homework_trajectory(simulation, inputs, samples, columns, angles,
+                            [&](double t, const std::vector<double>& values) {
+                              writer.row(values);
+                              progress.update(t);
+                            });
   progress.finish();
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   writer.end(json_summary(simulation.stats(), wall));

@@ -3,6 +3,7 @@
 // the formats, bad lessons, and a document that links only files that exist.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <regex>
 #include <set>
@@ -399,6 +400,29 @@ std::set<std::string> document_links(const std::string& doc) {
   for (auto it = std::sregex_iterator(doc.begin(), doc.end(), pattern); it != std::sregex_iterator(); ++it)
     links.insert((*it)[1].matched ? (*it)[1].str() : (*it)[2].str());
   return links;
+}
+
+TEST(LessonDocument, TheTrajectoryIsTheCommandsByteForByte) {
+  // 0.1 s does not divide 0.3 s in binary: the rows still end once, at the duration.
+  TempDir dir;
+  const std::string file = (dir / "t.toml").string(), out = (dir / "out").string();
+  write_text(file, R"(title = "Trajectory"
+[[step]]
+kind = "simulate"
+duration = 0.3
+every = 0.1
+integrator = "rk4"
+dt = 0.01
+columns = ["t", "x1", "theta2_dot", "F_y", "energy"]
+trajectory = "motion.csv"
+)");
+  const RunResult r = run_linkage({"lesson", file, "--out", out});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const RunResult cli = run_linkage({"simulate", "--duration", "0.3", "--every", "0.1", "--integrator", "rk4", "--dt",
+                                     "0.01", "--columns", "t,x1,theta2_dot,F_y,energy", "--quiet"});
+  ASSERT_EQ(cli.exit_code, 0) << cli.err;
+  EXPECT_EQ(read_text(dir / "out" / "motion.csv"), cli.out);
+  EXPECT_EQ(std::count(cli.out.begin(), cli.out.end(), '\n'), 5);  // the header and t = 0, 0.1, 0.2, 0.3
 }
 
 TEST(LessonDocument, LinksOnlyFilesThatExist) {

@@ -1,14 +1,12 @@
-#include "lesson/runs.hpp"
+#include "pipeline/run_samples.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "core/error.hpp"
 #include "core/interrupt.hpp"
-#include "core/number_format.hpp"
-#include "integrate/trajectory_rows.hpp"
+#include "pipeline/simulate_rows.hpp"
 
-namespace linkage::lesson {
+namespace linkage {
 
 std::vector<double> sample_times(double duration, double every) {
   std::vector<double> times;
@@ -26,14 +24,6 @@ std::vector<double> run_sample_times(const SimulationOptions& o, double every) {
   return sample_times(o.duration, every);
 }
 
-std::vector<double> trajectory_times(double duration, double every) {
-  const TrajectoryRows rows(duration, every);
-  std::vector<double> times;
-  times.reserve(static_cast<std::size_t>(rows.count));
-  for (long i = 0; i < rows.count; ++i) times.push_back(rows.at(i));
-  return times;
-}
-
 MechanismSampledRun sample_mechanism_run(const Run& run, const std::vector<double>& times,
                                          const std::vector<MechanismColumn>& columns) {
   MechanismSimulation sim(*run.built->system, run.built->initial, run.options);
@@ -41,18 +31,12 @@ MechanismSampledRun sample_mechanism_run(const Run& run, const std::vector<doubl
   out.columns.assign(columns.size(), {});
   for (auto& column : out.columns) column.reserve(times.size());
   eval::MechanismSample sample;
+  std::vector<double> values;
   for (const double t : times) {
     throw_if_interrupted();
     const Eigen::VectorXd& y = sim.state_at(t);
-    sim.sample(t, y, sample);
-    for (std::size_t j = 0; j < columns.size(); ++j) {
-      const double value = column_value(columns[j], t, y, sample, sim.energy0());
-      if (!std::isfinite(value))
-        throw Error::diverged(columns[j].name + " at t = " + format_roundtrip(t) +
-                              " s is not a finite number; the run stopped (Case " +
-                              std::to_string(run.options.case_id) + ")");
-      out.columns[j].push_back(value);
-    }
+    mechanism_row(sim, run.options.case_id, t, y, columns, sample, values);
+    for (std::size_t j = 0; j < columns.size(); ++j) out.columns[j].push_back(values[j]);
     out.final_state = y;
   }
   out.stats = sim.stats();
@@ -119,4 +103,4 @@ double final_error(const BodyState& a, const State& r) {
       {std::fabs(a.x1 - r.x1), std::fabs(a.y1 - r.y1), std::fabs(a.theta1 - r.theta1), std::fabs(a.theta2 - r.theta2)});
 }
 
-}  // namespace linkage::lesson
+}  // namespace linkage

@@ -1,14 +1,13 @@
 #pragma once
 // Running the simulations of plot and compare steps: sampling series along a run, and
 // the reference a compare table measures final errors against.
-#include <cstdint>
 #include <vector>
 
 #include "integrate/mechanism_simulation.hpp"
 #include "integrate/series.hpp"
-#include "lesson/lesson.hpp"
+#include "pipeline/run.hpp"
 
-namespace linkage::lesson {
+namespace linkage {
 
 /// One run sampled at t = 0, every, 2 every, ... and exactly at its duration.
 struct SampledRun {
@@ -26,10 +25,6 @@ struct SampledRun {
 [[nodiscard]] std::vector<double> sample_times(double duration, double every);
 /// The same on a fixed-step integrator's own grid (the nearest whole number of steps).
 [[nodiscard]] std::vector<double> run_sample_times(const SimulationOptions& options, double every);
-/// The rows of `linkage simulate --every`: k every strictly before the end, then the
-/// duration (so a lesson's trajectory is the command's, byte for byte).
-[[nodiscard]] std::vector<double> trajectory_times(double duration, double every);
-
 /// A mechanism run sampled at `times`: each column's values (as `linkage simulate
 /// --mechanism` computes them), the run's figures and its last state y = (q, q', W).
 struct MechanismSampledRun {
@@ -40,15 +35,6 @@ struct MechanismSampledRun {
 /// Runs a mechanism run (run.built); Error::diverged when it fails or a value is not finite.
 [[nodiscard]] MechanismSampledRun sample_mechanism_run(const Run& run, const std::vector<double>& times,
                                                        const std::vector<MechanismColumn>& columns);
-
-/// The figures of one run in a compare table.
-struct RunFigures {
-  double final_error = 0;       // largest |error| of x1, y1, theta1, theta2 at the end (m or rad)
-  double energy_error = 0;      // largest relative energy error over the samples
-  double constraint_error = 0;  // largest |C| over the samples, m
-  std::int64_t steps = 0, rejected = 0, rhs_evaluations = 0;
-  double run_time = 0;  // s
-};
 
 /// The reference for final errors: DOP853 at rtol = atol = kReferenceTolerance on Case 3
 /// (which cannot drift), for the run's inputs and duration.
@@ -64,4 +50,4 @@ inline constexpr double kReferenceTolerance = 1e-13;
 /// Largest |a - b| over x1, y1, theta1, theta2.
 [[nodiscard]] double final_error(const BodyState& a, const State& reference);
 
-}  // namespace linkage::lesson
+}  // namespace linkage

@@ -1,0 +1,72 @@
+// A plot step as the lesson reads it: `difference` refused where it would mean nothing,
+// and `angles` checked against its choices.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <variant>
+
+#include "core/error.hpp"
+#include "lesson/lesson.hpp"
+#include "support/test_support.hpp"
+
+namespace linkage::lesson {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string plot_lesson(const std::string& keys) {
+  return "title = \"d\"\nmechanism = \"double-pendulum\"\n[[step]]\nkind = \"plot\"\nout = \"d\"\ny = \"2.theta\"\n"
+         "difference = true\nduration = 1\n" +
+         keys;
+}
+
+std::string parse_error(const std::string& text) {
+  test::TempDir dir;
+  const fs::path file = dir / "d.toml";
+  test::write_text(file, text);
+  try {
+    (void)parse_lesson(file);
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ExitCode::bad_input);
+    return e.what();
+  }
+  return "";
+}
+
+TEST(PlotStepParse, DifferenceIsRefusedWithoutARunToCompare) {
+  EXPECT_NE(parse_error(plot_lesson("")).find("'difference' needs two runs or more"), std::string::npos);
+  EXPECT_NE(parse_error(plot_lesson("x = \"1.theta\"\nruns = [{label = \"a\"}, {label = \"b\"}]\n")).find("remove 'x'"),
+            std::string::npos);
+  // A fixed-step run on another grid samples other times.
+  const std::string grids =
+      "runs = [{label = \"a\", integrator = \"rk4\", dt = 0.01}, {label = \"b\", integrator = \"rk4\", dt = 0.003}]\n"
+      "every = 0.01\n";
+  EXPECT_NE(parse_error(plot_lesson(grids)).find("run 'b' is sampled at other times than run 'a'"), std::string::npos);
+  // Two runs on the same times: accepted.
+  test::TempDir dir;
+  test::write_text(dir / "ok.toml",
+                   plot_lesson("runs = [{label = \"a\"}, {label = \"b\", set = [\"1.theta=-0.799999\"]}]\n"));
+  const Lesson lesson = parse_lesson(dir / "ok.toml");
+  const auto& plot_step = std::get<PlotStep>(lesson.steps.at(0).body);
+  EXPECT_TRUE(plot_step.figure.difference);
+}
+
+TEST(PlotStepParse, AnUnknownAngleUnitNamesItsPlaceAndTheChoices) {
+  test::TempDir dir;
+  const fs::path file = dir / "lesson.toml";
+  test::write_text(file,
+                   "title = \"Plot\"\n[[step]]\nkind = \"plot\"\nout = \"p\"\ny = \"theta1\"\nangles = \"grad\"\n");
+  try {
+    (void)parse_lesson(file);
+    FAIL() << "no error";
+  } catch (const std::exception& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("lesson.toml:6:"), std::string::npos) << what;
+    EXPECT_NE(what.find("grad"), std::string::npos) << what;
+    EXPECT_NE(what.find("rad"), std::string::npos) << what;
+    EXPECT_NE(what.find("deg"), std::string::npos) << what;
+  }
+}
+
+}  // namespace
+}  // namespace linkage::lesson
