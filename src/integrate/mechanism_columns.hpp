@@ -45,8 +45,14 @@ struct MechanismColumn {
 /// Every column this mechanism has, in table order.
 [[nodiscard]] std::vector<MechanismColumn> mechanism_columns(const sym::System& system);
 
-/// "default", "all" or a comma-separated list of names; an unknown name is an
-/// Error::input naming `origin` and the nearest column.
+/// The column named `name`; else Error::input "ORIGIN: unknown column 'NAME'; nearest
+/// 'N'; valid: ..." (the fewest edits, of equals one on the same body or joint; `groups`:
+/// "default" and "all" are valid too, and listed).
+[[nodiscard]] MechanismColumn find_mechanism_column(const std::vector<MechanismColumn>& all, const std::string& name,
+                                                    const std::string& origin, bool groups = false);
+
+/// "default", "all" or a comma-separated list of names (t first); an unknown name is
+/// find_mechanism_column's error.
 [[nodiscard]] std::vector<MechanismColumn> select_mechanism_columns(const std::vector<MechanismColumn>& all,
                                                                     const std::string& spec, const std::string& origin);
 

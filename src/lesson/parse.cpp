@@ -396,30 +396,6 @@ class Parser {
     return {text_template(content.str(), r.prefix("file") + path.string(), inputs, names())};
   }
 
-  /// A parameter's value, or an initial coordinate's or rate's with the loops closed, and its unit.
-  static double setting_value(const BuiltMechanism& built, const std::string& name, std::string& unit) {
-    const sym::System& system = *built.system;
-    for (const Parameter& p : system.mechanism().parameters)
-      if (p.name == name) {
-        unit = p.unit;
-        return p.value;
-      }
-    for (const sym::GeneralizedCoordinate& g : system.coordinates()) {
-      const std::string& key = g.coordinate.key;
-      const bool angle = key.ends_with(".theta");
-      if (name == key) {
-        unit = angle ? "rad" : "m";
-        return sym::to_double(built.initial.at(g.symbols.q));
-      }
-      if (name == key + "_dot") {
-        unit = angle ? "rad/s" : "m/s";
-        return sym::to_double(built.initial.at(g.symbols.q_dot));
-      }
-    }
-    unit.clear();
-    return std::nan("");
-  }
-
   SetStep parse_set(const TableReader& r, Inputs& inputs) {
     SetStep step;
     if (!lesson_mechanism_.empty()) {
@@ -442,12 +418,16 @@ class Parser {
         if (e.code() != ExitCode::bad_input) throw;
         rethrow_at(e, {&r});
       }
+      // A parameter's value, or an initial coordinate's or rate's with the loops closed.
+      const auto value = [](const BuiltMechanism& built, const std::string& name) {
+        const GiNaC::ex symbol = built.system->table().find(name)->symbol;
+        return format_roundtrip(sym::to_double(symbol.subs(built.initial).subs(built.system->parameter_values())));
+      };
       for (const std::string& setting : step.settings) {
         const std::string name = setting.substr(0, setting.find('='));
-        std::string unit;
-        const double was = setting_value(*before, name, unit), now = setting_value(*after, name, unit);
-        step.changes.push_back(name + " = " + format_roundtrip(now) + (unit.empty() ? "" : " " + unit) + " (was " +
-                               format_roundtrip(was) + ")");
+        const std::string& unit = after->system->table().find(name)->unit;
+        step.changes.push_back(name + " = " + value(*after, name) + (unit.empty() ? "" : " " + unit) + " (was " +
+                               value(*before, name) + ")");
       }
       lesson_settings_ = std::move(settings);
       return step;
@@ -466,29 +446,6 @@ class Parser {
       throw;
     }
     return step;
-  }
-
-  /// The unit of a name of the mechanism's (a parameter, "2.theta", "S.s_dot",
-  /// "2.theta_ddot", "B.force_x", "S.moment"); empty when it has none.
-  static std::string mechanism_unit(const sym::System& system, const std::string& name) {
-    for (const Parameter& p : system.mechanism().parameters)
-      if (p.name == name) return p.unit;
-    auto ends = [&](std::string_view tail) { return name.size() > tail.size() && name.ends_with(tail); };
-    for (const std::string_view force : {".force_x", ".force_y", ".normal"})
-      if (ends(force)) return "N";
-    if (ends(".moment")) return "N m";
-    std::string base = name, per;
-    if (ends("_ddot")) {
-      base.resize(name.size() - 5);
-      per = "/s^2";
-    } else if (ends("_dot")) {
-      base.resize(name.size() - 4);
-      per = "/s";
-    }
-    const std::string axis = base.substr(base.rfind('.') + 1);
-    if (axis == "theta") return "rad" + per;
-    if (axis == "x" || axis == "y" || axis == "s") return "m" + per;
-    return "";
   }
 
   ExerciseStep parse_exercise(const TableReader& r, const Inputs& inputs, const Step& step) const {
@@ -513,8 +470,9 @@ class Parser {
       e.unit = *unit;
     else if (const QuantityInfo* q = e.answer.single_quantity())
       e.unit = q->unit;
-    else if (step.mechanism)
-      e.unit = mechanism_unit(*step.mechanism->system, e.answer.text());
+    else if (const sym::SymbolInfo* name =
+                 step.mechanism ? step.mechanism->system->table().find(e.answer.text()) : nullptr)
+      e.unit = name->unit;  // a parameter, coordinate, rate, acceleration, joint force ...
     e.tolerance = r.number("tolerance", 0, kInf, "valid: tolerance >= 0");
     e.relative_tolerance = r.number("relative_tolerance", 0, 1, "valid: 0 to 1").value_or(e.tolerance ? 0.0 : 0.01);
     e.attempts = static_cast<int>(r.integer("attempts", 1, 10).value_or(3));
@@ -562,12 +520,7 @@ class Parser {
     if (auto i = r.choice("integrator", integrator_names())) o.integrator = parse_integrator(*i, r.where("integrator"));
     if (auto s = r.choice("stabilize", {"none", "baumgarte", "projection"}))
       o.stabilization = parse_stabilization(*s, r.where("stabilize"));
-    o.dt = r.number("dt", -kInf, kInf, "").value_or(o.dt);
-    o.rtol = r.number("rtol", -kInf, kInf, "").value_or(o.rtol);
-    o.atol = r.number("atol", -kInf, kInf, "").value_or(o.atol);
-    o.duration = r.number("duration", -kInf, kInf, "").value_or(o.duration);
-    o.baumgarte_alpha = r.number("baumgarte_alpha", -kInf, kInf, "").value_or(o.baumgarte_alpha);
-    o.baumgarte_beta = r.number("baumgarte_beta", -kInf, kInf, "").value_or(o.baumgarte_beta);
+    for (const NumberOption& n : kNumberOptions) o.*n.field = r.number(n.name, -kInf, kInf, "").value_or(o.*n.field);
     if (auto settings = r.strings("set")) {
       if (run.mechanism.empty())
         r.fail("set", "'set' applies to a mechanism: give mechanism = \"NAME\" here or at the top");
@@ -717,31 +670,9 @@ class Parser {
         continue;
       }
       const std::string where = array != nullptr ? position(r.file(), array->get(i)->source()) : r.where(key);
-      out.push_back(find_mechanism_column(all, name, where + ": " + r.context() + ": " + std::string(key)));
+      out.push_back(find_mechanism_column(all, name, where + ": " + r.context() + ": " + std::string(key), groups));
     }
     return out;
-  }
-
-  static MechanismColumn find_mechanism_column(const std::vector<MechanismColumn>& all, const std::string& name,
-                                               const std::string& origin) {
-    std::vector<std::string> names;
-    for (const MechanismColumn& c : all) {
-      if (c.name == name) return c;
-      names.push_back(c.name);
-    }
-    std::string nearest;
-    std::size_t best = std::numeric_limits<std::size_t>::max();
-    // The fewest edits; of equals, one on the same body or joint ("S.x" -> "S.s").
-    const std::string owner = name.substr(0, name.find('.') + 1);
-    for (const std::string& candidate : names) {
-      const std::size_t d = 2 * typo_distance(name, candidate) + (candidate.rfind(owner, 0) == 0 ? 0 : 1);
-      if (d < best) {
-        best = d;
-        nearest = candidate;
-      }
-    }
-    throw Error::input(origin + ": unknown column '" + name + "'; nearest '" + nearest +
-                       "'; valid: " + join_names(names));
   }
 
   SimulateStep parse_simulate(const TableReader& r, const Inputs& inputs) const {

@@ -144,7 +144,19 @@ TEST(MechanismSimulation, ColumnsFollowTheContract) {
     (void)select_mechanism_columns(all, "t,B.forcex", "--columns");
     FAIL() << "a misspelt column was accepted";
   } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("did you mean 'B.force_x'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("--columns: unknown column 'B.forcex'; nearest 'B.force_x'; valid: default, "
+                                         "all, t, 2.x,"),
+              std::string::npos)
+        << e.what();
+  }
+  // One name: of the nearest by edits, the one on the same joint ("S.x": S.s, not 2.x).
+  EXPECT_EQ(find_mechanism_column(all, "S.moment", "y").unit, "N m");
+  try {
+    (void)find_mechanism_column(all, "S.x", "y");
+    FAIL() << "an unknown column was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("y: unknown column 'S.x'; nearest 'S.s'; valid: t, 2.x,"), std::string::npos)
+        << e.what();
   }
 }
 
