@@ -210,8 +210,7 @@ class Parser {
  private:
   /// A shipped mechanism's name as it is, a file's as its path from the lesson's folder.
   std::string mechanism_spec(const TableReader& r, std::string_view key, const std::string& name) const {
-    const bool file = name.find('/') != std::string::npos || name.ends_with(".toml");
-    return file ? referenced_file(r, key, name).string() : name;
+    return is_mechanism_file(name) ? referenced_file(r, key, name).string() : name;
   }
 
   /// The mechanism `spec` with `settings` applied (errors name `origin`), loops closed;
@@ -821,25 +820,19 @@ class Parser {
     for (std::size_t i : choice_list(r, "columns", columns)) s.columns.push_back(static_cast<CompareColumn>(i));
     if (s.columns.empty())
       for (std::size_t i = 0; i < columns.size(); ++i) s.columns.push_back(static_cast<CompareColumn>(i));
-    s.every = sample_interval(r, longest(s.runs), 400);
-    s.title = r.string("title").value_or("");
-    figure_size(r, s.width, s.height);
+    Figure f = figure(r, s.runs);  // against t (a compare step has no x), every 1/400 of the run
+    s.every = f.every;
+    s.title = f.title;
+    s.width = f.width;
+    s.height = f.height;
     const bool on_mechanism = s.runs.front().built != nullptr;
     if (auto y = on_mechanism ? r.string("plot") : r.choice("plot", spellings(kSeries, &SeriesInfo::name))) {
-      Figure f;
-      if (on_mechanism) {
-        const std::vector<MechanismColumn> all = mechanism_columns(*s.runs.front().built->system);
-        f.mechanism_y = {find_mechanism_column(all, *y, r.prefix("plot") + "plot")};
-        f.mechanism_x = all.front();  // t
-      } else {
+      if (on_mechanism)
+        f.mechanism_y = {
+            find_mechanism_column(mechanism_columns(*s.runs.front().built->system), *y, r.prefix("plot") + "plot")};
+      else
         f.y = {*find_series(*y)};
-        f.x = *find_series("t");
-      }
       f.log_y = r.boolean("log_y").value_or(true);
-      f.title = s.title;
-      f.every = s.every;
-      f.width = s.width;
-      f.height = s.height;
       s.plot = f;
     } else if (r.has("log_y")) {
       r.fail("log_y", "'log_y' applies to the plot; add plot = \"SERIES\" or remove it");
