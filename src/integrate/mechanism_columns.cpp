@@ -89,25 +89,33 @@ MechanismColumn find_mechanism_column(const std::vector<MechanismColumn>& all, c
                      "'; valid: " + join_names(names));
 }
 
+std::vector<MechanismColumn> select_mechanism_columns(const std::vector<MechanismColumn>& all,
+                                                      const std::vector<std::string>& names,
+                                                      const std::function<std::string(std::size_t)>& origin) {
+  std::vector<MechanismColumn> out;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (names[i] != "default" && names[i] != "all") {
+      out.push_back(find_mechanism_column(all, names[i], origin(i), true));
+      continue;
+    }
+    for (const MechanismColumn& c : all)
+      if ((c.by_default || names[i] == "all") && (c.quantity != MechanismQuantity::time || out.empty()))
+        out.push_back(c);
+  }
+  if (!out.empty() && out.front().quantity != MechanismQuantity::time) out.insert(out.begin(), all.front());
+  return out;
+}
+
 std::vector<MechanismColumn> select_mechanism_columns(const std::vector<MechanismColumn>& all, const std::string& spec,
                                                       const std::string& origin) {
-  std::vector<MechanismColumn> out;
-  if (spec == "default") {
-    for (const MechanismColumn& c : all)
-      if (c.by_default) out.push_back(c);
-    return out;
-  }
-  if (spec == "all") return all;
+  std::vector<std::string> names;
   std::stringstream in(spec);
-  std::string item;
-  while (std::getline(in, item, ',')) out.push_back(find_mechanism_column(all, item, origin, true));
-  if (out.empty()) {
-    std::vector<std::string> names;
+  for (std::string item; std::getline(in, item, ',');) names.push_back(item);
+  if (names.empty()) {
     for (const MechanismColumn& c : all) names.push_back(c.name);
     throw Error::input(origin + ": empty list; valid: default, all, " + join_names(names));
   }
-  if (out.front().quantity != MechanismQuantity::time) out.insert(out.begin(), all.front());
-  return out;
+  return select_mechanism_columns(all, names, [&](std::size_t) { return origin; });
 }
 
 double column_value(const MechanismColumn& c, double t, const Eigen::VectorXd& y, const eval::MechanismSample& s,

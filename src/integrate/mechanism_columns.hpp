@@ -4,6 +4,7 @@
 // <body>.theta (no theta for a point mass); <joint>.s for sliders (the default); on
 // request the rates, each joint's force and constraint error, the energy and its
 // balance, and the momenta when nothing holds the mechanism to the ground.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -51,8 +52,12 @@ struct MechanismColumn {
 [[nodiscard]] MechanismColumn find_mechanism_column(const std::vector<MechanismColumn>& all, const std::string& name,
                                                     const std::string& origin, bool groups = false);
 
-/// "default", "all" or a comma-separated list of names (t first); an unknown name is
-/// find_mechanism_column's error.
+/// The columns `names` select, t first: each a column's name, or "default" or "all" for
+/// theirs (t once); an unknown name is find_mechanism_column's error at `origin(i)`.
+[[nodiscard]] std::vector<MechanismColumn> select_mechanism_columns(
+    const std::vector<MechanismColumn>& all, const std::vector<std::string>& names,
+    const std::function<std::string(std::size_t)>& origin);
+/// The same from a comma-separated list (`simulate --columns`), every error at `origin`.
 [[nodiscard]] std::vector<MechanismColumn> select_mechanism_columns(const std::vector<MechanismColumn>& all,
                                                                     const std::string& spec, const std::string& origin);
 

@@ -594,25 +594,11 @@ class Parser {
     height = h;
   }
 
-  /// The mechanism columns a list key names ("default" and "all" too when `groups`); an
-  /// unknown name is an error at its entry naming the nearest column and every valid one.
-  std::vector<MechanismColumn> mechanism_column_list(const TableReader& r, std::string_view key,
-                                                     const sym::System& system, bool groups) const {
-    const std::vector<MechanismColumn> all = mechanism_columns(system);
-    std::vector<MechanismColumn> out;
-    const auto values = r.strings(key);
-    const auto* array = r.has(key) ? r.node(key)->as_array() : nullptr;
-    for (std::size_t i = 0; values && i < values->size(); ++i) {
-      const std::string& name = (*values)[i];
-      if (groups && (name == "default" || name == "all")) {
-        for (const MechanismColumn& c : select_mechanism_columns(all, name, ""))
-          if (c.quantity != MechanismQuantity::time || out.empty()) out.push_back(c);
-        continue;
-      }
-      const std::string where = array != nullptr ? position(r.file(), array->get(i)->source()) : r.where(key);
-      out.push_back(find_mechanism_column(all, name, where + ": " + r.context() + ": " + std::string(key), groups));
-    }
-    return out;
+  /// "file:line:column: context: key" of entry `i` of a list key (of the key for a single string).
+  static std::string entry_origin(const TableReader& r, std::string_view key, std::size_t i) {
+    const toml::array* array = r.node(key)->as_array();
+    const std::string where = array != nullptr ? position(r.file(), array->get(i)->source()) : r.where(key);
+    return where + ": " + r.context() + ": " + std::string(key);
   }
 
   SimulateStep parse_simulate(const TableReader& r, const Inputs& inputs) const {
@@ -620,15 +606,11 @@ class Parser {
     s.run = step_run(r, inputs);
     s.every = sample_interval(r, s.run.options.duration, 100);
     if (r.has("trajectory")) s.trajectory = strip_extension(artifact_name(r, "trajectory"), {".csv"}) + ".csv";
-    if (s.run.built) {
-      // As `linkage simulate --mechanism --columns`: t first, "default" without the key.
-      const sym::System& system = *s.run.built->system;
-      std::vector<MechanismColumn> columns = mechanism_column_list(r, "columns", system, true);
-      if (!r.has("columns")) columns = select_mechanism_columns(mechanism_columns(system), "default", "columns");
-      if (columns.empty()) r.fail("columns", "'columns' is empty; name at least one column, \"default\" or \"all\"");
-      if (columns.front().quantity != MechanismQuantity::time)
-        columns.insert(columns.begin(), mechanism_columns(system).front());
-      s.mechanism_columns = std::move(columns);
+    if (s.run.built) {  // as `linkage simulate --mechanism --columns`: t first, "default" without the key
+      const auto names = r.strings("columns").value_or(std::vector<std::string>{"default"});
+      if (names.empty()) r.fail("columns", "'columns' is empty; name at least one column, \"default\" or \"all\"");
+      s.mechanism_columns = select_mechanism_columns(mechanism_columns(*s.run.built->system), names,
+                                                     [&](std::size_t i) { return entry_origin(r, "columns", i); });
       return s;
     }
     const auto columns = r.strings("columns");  // as `linkage simulate --columns A,B`
@@ -802,7 +784,10 @@ class Parser {
     if (auto a = r.choice("angles", {"rad", "deg"})) s.figure.angles = parse_angle_unit(*a, r.where("angles"));
     if (s.figure.difference) check_difference(r, s);
     if (s.runs.front().built) {
-      s.figure.mechanism_y = mechanism_column_list(r, "y", *s.runs.front().built->system, false);
+      const std::vector<MechanismColumn> all = mechanism_columns(*s.runs.front().built->system);
+      const auto names = *r.strings("y");
+      for (std::size_t i = 0; i < names.size(); ++i)
+        s.figure.mechanism_y.push_back(find_mechanism_column(all, names[i], entry_origin(r, "y", i)));
       if (s.figure.mechanism_y.empty()) r.fail("y", "'y' is empty; name at least one column");
       return s;
     }
