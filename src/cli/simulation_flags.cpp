@@ -24,16 +24,16 @@ void add_simulation_flags(CLI::App* sub, SimulationFlags& o) {
   sub->add_option("--integrator", o.integrator, "Integrator (default " + o.integrator + "):" + names)
       ->type_name("NAME")
       ->group(group);
-  sub->add_option("--dt", o.dt,
+  sub->add_option("--dt", o.numbers["dt"],
                   "Step of fixed-step integrators, first step of adaptive ones, s (default " + fmt(d.dt) + ")")
       ->type_name("S")
       ->group(group);
   o.rtol_option =
-      sub->add_option("--rtol", o.rtol,
+      sub->add_option("--rtol", o.numbers["rtol"],
                       "Relative tolerance of adaptive integrators, in [1e-14, 1] (default " + fmt(d.rtol) + ")")
           ->type_name("NUM")
           ->group(group);
-  o.atol_option = sub->add_option("--atol", o.atol,
+  o.atol_option = sub->add_option("--atol", o.numbers["atol"],
                                   "Absolute tolerance of adaptive integrators, in [1e-20, 1], in the state's units "
                                   "(m, rad, m/s, rad/s) (default " +
                                       fmt(d.atol) + ")")
@@ -45,11 +45,11 @@ void add_simulation_flags(CLI::App* sub, SimulationFlags& o) {
                       o.stabilize + ")")
       ->type_name("KIND")
       ->group(group);
-  o.alpha_option = sub->add_option("--baumgarte-alpha", o.baumgarte_alpha,
+  o.alpha_option = sub->add_option("--baumgarte-alpha", o.numbers["baumgarte_alpha"],
                                    "Baumgarte damping gain alpha, 1/s (default " + fmt(d.baumgarte_alpha) + ")")
                        ->type_name("NUM")
                        ->group(group);
-  o.beta_option = sub->add_option("--baumgarte-beta", o.baumgarte_beta,
+  o.beta_option = sub->add_option("--baumgarte-beta", o.numbers["baumgarte_beta"],
                                   "Baumgarte stiffness gain beta, 1/s (default " + fmt(d.baumgarte_beta) +
                                       "; alpha = beta is critically damped)")
                       ->type_name("NUM")
@@ -65,11 +65,9 @@ SimulationOptions resolve_simulation_flags(const SimulationFlags& o, double dura
   s.integrator = parse_integrator(o.integrator, "--integrator");
   s.stabilization = parse_stabilization(o.stabilize, "--stabilize");
   s.duration = duration;
-  if (!o.dt.empty()) s.dt = parse_number(o.dt, "--dt", "s");
-  if (!o.rtol.empty()) s.rtol = parse_number(o.rtol, "--rtol", "");
-  if (!o.atol.empty()) s.atol = parse_number(o.atol, "--atol", "");
-  if (!o.baumgarte_alpha.empty()) s.baumgarte_alpha = parse_number(o.baumgarte_alpha, "--baumgarte-alpha", "1/s");
-  if (!o.baumgarte_beta.empty()) s.baumgarte_beta = parse_number(o.baumgarte_beta, "--baumgarte-beta", "1/s");
+  for (const NumberOption& n : kNumberOptions)
+    if (const auto it = o.numbers.find(n.name); it != o.numbers.end() && !it->second.empty())
+      s.*n.field = parse_number(it->second, flag_name(n.name), std::string(n.unit));
   s.validate();
   return s;
 }

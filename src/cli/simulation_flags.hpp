@@ -3,7 +3,9 @@
 // the same flags): --case, --integrator, --dt, --rtol, --atol, --stabilize and the
 // Baumgarte gains, with the same help and checks.
 #include <CLI/CLI.hpp>
+#include <map>
 #include <string>
+#include <string_view>
 
 #include "integrate/simulation.hpp"
 
@@ -12,7 +14,7 @@ namespace linkage::cli {
 struct SimulationFlags {
   std::string which_case = "3";
   std::string integrator = "dop853";
-  std::string dt, rtol, atol, baumgarte_alpha, baumgarte_beta;
+  std::map<std::string_view, std::string> numbers;  // by kNumberOptions' name: "dt", "rtol", ...
   std::string stabilize = "none";
   CLI::Option* rtol_option = nullptr;
   CLI::Option* atol_option = nullptr;

@@ -1,5 +1,8 @@
 #include "core/input_file.hpp"
 
+#include <fstream>
+#include <sstream>
+
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 
@@ -16,6 +19,14 @@ void require_regular_file(const fs::path& path, const std::string& setting) {
     throw Error::invalid(setting, name + " is a FIFO, not a regular file (it would block reading)");
   if (!fs::is_regular_file(status))
     throw Error::invalid(setting, name + " is a device or special file, not a regular file");
+}
+
+std::optional<std::string> read_file_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
 }
 
 }  // namespace linkage

@@ -3,6 +3,7 @@
 // regular files. A FIFO would block the program forever and a device (/dev/zero) never
 // ends or reads as empty, so both are refused up front.
 #include <filesystem>
+#include <optional>
 #include <string>
 
 namespace linkage {
@@ -10,5 +11,8 @@ namespace linkage {
 /// Error::invalid(setting) unless `path` exists and is a regular file (a symlink to one
 /// is fine): a missing file, a folder, a FIFO or a device each get their own message.
 void require_regular_file(const std::filesystem::path& path, const std::string& setting);
+
+/// The whole of a file's bytes, or nullopt when it cannot be opened.
+[[nodiscard]] std::optional<std::string> read_file_text(const std::filesystem::path& path);
 
 }  // namespace linkage

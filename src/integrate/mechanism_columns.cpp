@@ -1,6 +1,7 @@
 #include "integrate/mechanism_columns.hpp"
 
 #include <cctype>
+#include <limits>
 #include <sstream>
 
 #include "core/error.hpp"
@@ -68,33 +69,53 @@ std::vector<MechanismColumn> mechanism_columns(const sym::System& system) {
   return out;
 }
 
+MechanismColumn find_mechanism_column(const std::vector<MechanismColumn>& all, const std::string& name,
+                                      const std::string& origin, bool groups) {
+  std::vector<std::string> names;
+  if (groups) names = {"default", "all"};
+  std::string nearest;
+  std::size_t best = std::numeric_limits<std::size_t>::max();
+  const std::string owner = name.substr(0, name.find('.') + 1);  // "S." prefers "S.s" to "t" for "S.x"
+  for (const MechanismColumn& c : all) {
+    if (c.name == name) return c;
+    names.push_back(c.name);
+    const std::size_t d = 2 * typo_distance(name, c.name) + (c.name.rfind(owner, 0) == 0 ? 0 : 1);
+    if (d < best) {
+      best = d;
+      nearest = c.name;
+    }
+  }
+  throw Error::input(origin + ": unknown column '" + name + "'; nearest '" + nearest +
+                     "'; valid: " + join_names(names));
+}
+
+std::vector<MechanismColumn> select_mechanism_columns(const std::vector<MechanismColumn>& all,
+                                                      const std::vector<std::string>& names,
+                                                      const std::function<std::string(std::size_t)>& origin) {
+  std::vector<MechanismColumn> out;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (names[i] != "default" && names[i] != "all") {
+      out.push_back(find_mechanism_column(all, names[i], origin(i), true));
+      continue;
+    }
+    for (const MechanismColumn& c : all)
+      if ((c.by_default || names[i] == "all") && (c.quantity != MechanismQuantity::time || out.empty()))
+        out.push_back(c);
+  }
+  if (!out.empty() && out.front().quantity != MechanismQuantity::time) out.insert(out.begin(), all.front());
+  return out;
+}
+
 std::vector<MechanismColumn> select_mechanism_columns(const std::vector<MechanismColumn>& all, const std::string& spec,
                                                       const std::string& origin) {
-  std::vector<MechanismColumn> out;
-  if (spec == "default") {
-    for (const MechanismColumn& c : all)
-      if (c.by_default) out.push_back(c);
-    return out;
-  }
-  if (spec == "all") return all;
   std::vector<std::string> names;
-  for (const MechanismColumn& c : all) names.push_back(c.name);
   std::stringstream in(spec);
-  std::string item;
-  while (std::getline(in, item, ',')) {
-    bool found = false;
-    for (const MechanismColumn& c : all)
-      if (c.name == item) {
-        out.push_back(c);
-        found = true;
-      }
-    if (!found)
-      throw Error::input(origin + ": '" + item + "' is not a column of this mechanism" + did_you_mean(item, names) +
-                         "; valid: default, all, " + join_names(names));
+  for (std::string item; std::getline(in, item, ',');) names.push_back(item);
+  if (names.empty()) {
+    for (const MechanismColumn& c : all) names.push_back(c.name);
+    throw Error::input(origin + ": empty list; valid: default, all, " + join_names(names));
   }
-  if (out.empty()) throw Error::input(origin + ": empty list; valid: default, all, " + join_names(names));
-  if (out.front().quantity != MechanismQuantity::time) out.insert(out.begin(), all.front());
-  return out;
+  return select_mechanism_columns(all, names, [&](std::size_t) { return origin; });
 }
 
 double column_value(const MechanismColumn& c, double t, const Eigen::VectorXd& y, const eval::MechanismSample& s,

@@ -4,6 +4,7 @@
 // <body>.theta (no theta for a point mass); <joint>.s for sliders (the default); on
 // request the rates, each joint's force and constraint error, the energy and its
 // balance, and the momenta when nothing holds the mechanism to the ground.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -45,8 +46,18 @@ struct MechanismColumn {
 /// Every column this mechanism has, in table order.
 [[nodiscard]] std::vector<MechanismColumn> mechanism_columns(const sym::System& system);
 
-/// "default", "all" or a comma-separated list of names; an unknown name is an
-/// Error::input naming `origin` and the nearest column.
+/// The column named `name`; else Error::input "ORIGIN: unknown column 'NAME'; nearest
+/// 'N'; valid: ..." (the fewest edits, of equals one on the same body or joint; `groups`:
+/// "default" and "all" are valid too, and listed).
+[[nodiscard]] MechanismColumn find_mechanism_column(const std::vector<MechanismColumn>& all, const std::string& name,
+                                                    const std::string& origin, bool groups = false);
+
+/// The columns `names` select, t first: each a column's name, or "default" or "all" for
+/// theirs (t once); an unknown name is find_mechanism_column's error at `origin(i)`.
+[[nodiscard]] std::vector<MechanismColumn> select_mechanism_columns(
+    const std::vector<MechanismColumn>& all, const std::vector<std::string>& names,
+    const std::function<std::string(std::size_t)>& origin);
+/// The same from a comma-separated list (`simulate --columns`), every error at `origin`.
 [[nodiscard]] std::vector<MechanismColumn> select_mechanism_columns(const std::vector<MechanismColumn>& all,
                                                                     const std::string& spec, const std::string& origin);
 

@@ -50,6 +50,22 @@ struct SimulationOptions {
   void validate() const;
 };
 
+/// The options that are numbers, by the name a lesson's run key and (with '-' for '_')
+/// a flag give them, with their unit: one table for both.
+struct NumberOption {
+  std::string_view name;
+  double SimulationOptions::*field;
+  std::string_view unit;
+};
+inline constexpr std::array<NumberOption, 6> kNumberOptions{{
+    {"dt", &SimulationOptions::dt, "s"},
+    {"rtol", &SimulationOptions::rtol, ""},
+    {"atol", &SimulationOptions::atol, ""},
+    {"duration", &SimulationOptions::duration, "s"},
+    {"baumgarte_alpha", &SimulationOptions::baumgarte_alpha, "1/s"},
+    {"baumgarte_beta", &SimulationOptions::baumgarte_beta, "1/s"},
+}};
+
 struct SimulationStats {
   std::int64_t steps_accepted = 0;
   std::int64_t steps_rejected = 0;

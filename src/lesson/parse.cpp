@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <fstream>
 #include <functional>
 #include <limits>
 #include <map>
@@ -45,21 +44,11 @@ std::vector<KeySpec> concat(std::initializer_list<std::span<const KeySpec>> part
   return out;
 }
 
-std::vector<std::string_view> input_names() {
+/// The names of a table's entries, e.g. spellings(kSeries, &SeriesInfo::name).
+template <class Range, class Member>
+std::vector<std::string_view> spellings(const Range& entries, Member name) {
   std::vector<std::string_view> out;
-  for (const InputKey& k : kInputKeys) out.push_back(k.key);
-  return out;
-}
-
-std::vector<std::string_view> series_names() {
-  std::vector<std::string_view> out;
-  for (const SeriesInfo& s : kSeries) out.push_back(s.name);
-  return out;
-}
-
-std::vector<std::string_view> integrator_names() {
-  std::vector<std::string_view> out;
-  for (const IntegratorInfo& i : integrators()) out.push_back(i.name);
+  for (const auto& entry : entries) out.push_back(entry.*name);
   return out;
 }
 
@@ -84,6 +73,17 @@ std::vector<std::string> split_list(const std::string& text) {
     if (!key.empty() && r->has(key)) throw e.rephrased(r->prefix(key) + e.what());
   const TableReader& innermost = **readers.begin();
   throw e.rephrased(innermost.prefix("") + e.what());
+}
+
+/// Runs `f`, re-raising its bad-input errors at the keys of `readers` (rethrow_at).
+template <class F>
+auto at_keys(std::initializer_list<const TableReader*> readers, F&& f) -> decltype(f()) {
+  try {
+    return f();
+  } catch (const Error& e) {
+    if (e.code() != ExitCode::bad_input) throw;
+    rethrow_at(e, readers);
+  }
 }
 
 /// A plain file name inside the output folder.
@@ -150,21 +150,15 @@ class Parser {
     lesson.inputs = inputs;
     if (auto m = top.string("mechanism")) lesson_mechanism_ = mechanism_spec(top, "mechanism", *m);
     lesson.mechanism = lesson_mechanism_;
-    if (!lesson_mechanism_.empty()) {
-      try {
+    if (!lesson_mechanism_.empty())
+      at_keys({&top}, [&] {
         const auto built = build(lesson_mechanism_, {}, top.where("mechanism"));
         if (top.has("description")) step_names_ = names_of(*built);
         step_spec_ = lesson_mechanism_;
         for (const Parameter& p : built->system->mechanism().parameters) settable_names_.push_back(p.name);
-        for (const sym::GeneralizedCoordinate& g : built->system->coordinates()) {
-          settable_names_.push_back(g.coordinate.key);
-          settable_names_.push_back(g.coordinate.key + "_dot");
-        }
-      } catch (const Error& e) {
-        if (e.code() != ExitCode::bad_input) throw;
-        rethrow_at(e, {&top});
-      }
-    }
+        for (const sym::GeneralizedCoordinate& g : built->system->coordinates())
+          settable_names_.insert(settable_names_.end(), {g.coordinate.key, g.coordinate.key + "_dot"});
+      });
     if (auto d = top.string("description"))
       lesson.description = text_template(*d, top.prefix("description") + "description", inputs, names());
 
@@ -179,8 +173,7 @@ class Parser {
  private:
   /// A shipped mechanism's name as it is, a file's as its path from the lesson's folder.
   std::string mechanism_spec(const TableReader& r, std::string_view key, const std::string& name) const {
-    const bool file = name.find('/') != std::string::npos || name.ends_with(".toml");
-    return file ? referenced_file(r, key, name).string() : name;
+    return is_mechanism_file(name) ? referenced_file(r, key, name).string() : name;
   }
 
   /// The mechanism `spec` with `settings` applied (errors name `origin`), loops closed;
@@ -241,16 +234,13 @@ class Parser {
   void read_inputs(const TableReader& top, std::string_view key, bool parameters, Inputs& inputs) const {
     const toml::node* n = top.node(key);
     if (n == nullptr) return;
-    const toml::table* t = n->as_table();
-    if (t == nullptr) top.fail(key, "'" + std::string(key) + "' must be a table, got " + type_phrase(*n));
-    for (const auto& [name, value] : *t) {
-      const InputKey* input = find_input_key(name.str());
-      if (input == nullptr || (input->param != nullptr) == parameters) continue;
-      throw Error::input(
-          position(file_text_, name.source()) + ": lesson: '" + std::string(name.str()) + "' is " +
-          (parameters ? "a state value; put it under [state]" : "a parameter; put it under [parameters]"));
-    }
-    apply_toml(inputs, *t, file_text_);
+    if (!n->is_table()) top.fail(key, "'" + std::string(key) + "' must be a table, got " + type_phrase(*n));
+    for (const auto& [name, value] : *n->as_table())
+      if (const InputKey* input = find_input_key(name.str()); input && (input->param != nullptr) != parameters)
+        throw Error::input(
+            position(file_text_, name.source()) + ": lesson: '" + std::string(name.str()) + "' is " +
+            (parameters ? "a state value; put it under [state]" : "a parameter; put it under [parameters]"));
+    apply_toml(inputs, *n->as_table(), file_text_);
   }
 
   Step parse_step(const toml::table& table, int number, Inputs& inputs) {
@@ -258,25 +248,20 @@ class Parser {
     step.number = number;
     step.where = position(file_text_, table.source());
     const std::string bare_context = "step " + std::to_string(number);
-    {
-      TableReader kind_reader(table, file_text_, bare_context, common_step_keys());
-      kind_reader.require("kind");
-      const std::vector<std::string_view> kinds(kStepKindNames.begin(), kStepKindNames.end());
-      const std::string kind = *kind_reader.choice("kind", kinds);
-      step.kind = static_cast<StepKind>(std::find(kinds.begin(), kinds.end(), kind) - kinds.begin());
-    }
+    const TableReader kind_reader(table, file_text_, bare_context, common_step_keys());
+    kind_reader.require("kind");
+    const std::vector<std::string_view> kinds(kStepKindNames.begin(), kStepKindNames.end());
+    const auto kind_at = std::find(kinds.begin(), kinds.end(), *kind_reader.choice("kind", kinds));
+    step.kind = static_cast<StepKind>(kind_at - kinds.begin());
     const std::string_view kind = name(step.kind);
-    const std::string context = bare_context + " (" + std::string(kind) + ")";
-    std::vector<KeySpec> keys = concat({common_step_keys(), step_keys(kind)});
+    const bool run_keys_too = takes_run_keys(kind);
+    const std::vector<KeySpec> keys =
+        concat({common_step_keys(), step_keys(kind), run_keys_too ? run_keys() : std::span<const KeySpec>{}});
     std::vector<std::string_view> extra;
-    if (takes_run_keys(kind)) {
-      keys = concat({keys, run_keys()});
-      extra = input_names();
-    }
-    if (step.kind == StepKind::set) extra = input_names();
+    if (run_keys_too || step.kind == StepKind::set) extra = spellings(kInputKeys, &InputKey::key);
     if (step.kind == StepKind::set && !lesson_mechanism_.empty())
       extra.assign(settable_names_.begin(), settable_names_.end());
-    const TableReader r(table, file_text_, context, keys, extra);
+    const TableReader r(table, file_text_, bare_context + " (" + std::string(kind) + ")", keys, extra);
     r.reject_unknown_keys();
     if (auto h = r.string("heading")) step.heading = *h;
     for (const std::string_view key : {"caption", "unit"})  // Markdown shown as written (no {{...}})
@@ -284,44 +269,23 @@ class Parser {
     step.canonical = canonical_text(table, {"heading", "caption"});
     choose_step_mechanism(r, step.kind);
     if (!step_spec_.empty() && step.kind != StepKind::set) {
-      try {
-        step.mechanism = build(step_spec_, step_settings_, r.where("mechanism"));
-      } catch (const Error& e) {
-        if (e.code() != ExitCode::bad_input) throw;
-        rethrow_at(e, {&r});
-      }
+      step.mechanism = at_keys({&r}, [&] { return build(step_spec_, step_settings_, r.where("mechanism")); });
       if (step.kind == StepKind::say || step.kind == StepKind::exercise) step_names_ = names_of(*step.mechanism);
     }
 
-    switch (step.kind) {
-      case StepKind::say:
-        step.body = parse_say(r, inputs);
-        break;
-      case StepKind::set:
-        step.body = parse_set(r, inputs);
-        break;
-      case StepKind::pause:
-        step.body = PauseStep{r.string("prompt").value_or("Press Enter to continue")};
-        break;
-      case StepKind::exercise:
-        step.body = parse_exercise(r, inputs, step);
-        break;
-      case StepKind::solve:
-        step.body = parse_solve(r, inputs, step);
-        break;
-      case StepKind::simulate:
-        step.body = parse_simulate(r, inputs);
-        break;
-      case StepKind::render:
-        step.body = parse_render(r, inputs);
-        break;
-      case StepKind::plot:
-        step.body = parse_plot(r, inputs);
-        break;
-      case StepKind::compare:
-        step.body = parse_compare(r, inputs);
-        break;
-    }
+    const std::array<std::function<StepBody()>, kStepKindNames.size()> read{{
+        // In StepKind's order.
+        [&] { return StepBody(parse_say(r, inputs)); },
+        [&] { return StepBody(parse_set(r, inputs)); },
+        [&] { return StepBody(PauseStep{r.string("prompt").value_or("Press Enter to continue")}); },
+        [&] { return StepBody(parse_exercise(r, inputs, step)); },
+        [&] { return StepBody(parse_solve(r, inputs, step)); },
+        [&] { return StepBody(parse_simulate(r, inputs)); },
+        [&] { return StepBody(parse_render(r, inputs)); },
+        [&] { return StepBody(parse_plot(r, inputs)); },
+        [&] { return StepBody(parse_compare(r, inputs)); },
+    }};
+    step.body = read[static_cast<std::size_t>(step.kind)]();
     step.inputs = inputs;
     if (step.kind == StepKind::set && !lesson_mechanism_.empty())
       step.mechanism = build(lesson_mechanism_, lesson_settings_, r.where("set"));
@@ -329,12 +293,8 @@ class Parser {
     if (step.mechanism) {
       step.canonical += ";mechanism=" + step.mechanism->spec + ";settings=";
       for (const std::string& setting : step.mechanism->settings) step.canonical += setting + ",";
-      if (fs::exists(step.mechanism->spec)) {
-        std::ifstream in(step.mechanism->spec, std::ios::binary);
-        std::stringstream content;
-        content << in.rdbuf();
-        step.canonical += ";" + content_hash(content.str());
-      }
+      if (fs::exists(step.mechanism->spec))
+        step.canonical += ";" + content_hash(read_file_text(step.mechanism->spec).value_or(""));
     }
     for (const std::string& artifact : step_artifacts(step)) {
       const auto [it, fresh] = artifacts_.emplace(artifact, step.where);
@@ -352,113 +312,69 @@ class Parser {
     if (!text && !file) r.require("text");
     if (text) return {text_template(*text, r.prefix("text") + "text", inputs, names())};
     const fs::path path = referenced_file(r, "file", *file);
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream content;
-    content << in.rdbuf();
-    if (!in && !in.eof()) r.fail("file", "cannot read '" + path.string() + "'");
-    return {text_template(content.str(), r.prefix("file") + path.string(), inputs, names())};
-  }
-
-  /// A parameter's value, or an initial coordinate's or rate's with the loops closed, and its unit.
-  static double setting_value(const BuiltMechanism& built, const std::string& name, std::string& unit) {
-    const sym::System& system = *built.system;
-    for (const Parameter& p : system.mechanism().parameters)
-      if (p.name == name) {
-        unit = p.unit;
-        return p.value;
-      }
-    for (const sym::GeneralizedCoordinate& g : system.coordinates()) {
-      const std::string& key = g.coordinate.key;
-      const bool angle = key.ends_with(".theta");
-      if (name == key) {
-        unit = angle ? "rad" : "m";
-        return sym::to_double(built.initial.at(g.symbols.q));
-      }
-      if (name == key + "_dot") {
-        unit = angle ? "rad/s" : "m/s";
-        return sym::to_double(built.initial.at(g.symbols.q_dot));
-      }
-    }
-    unit.clear();
-    return std::nan("");
+    const auto content = read_file_text(path);
+    if (!content) r.fail("file", "cannot read '" + path.string() + "'");
+    return {text_template(*content, r.prefix("file") + path.string(), inputs, names())};
   }
 
   SetStep parse_set(const TableReader& r, Inputs& inputs) {
     SetStep step;
-    if (!lesson_mechanism_.empty()) {
-      // The lesson's mechanism: `set = ["NAME=VALUE", ...]` and NAME = VALUE keys, in file order.
-      if (auto list = r.strings("set")) step.settings = *list;
-      for (const std::string& key : r.keys_in_file_order([&](std::string_view k) {
-             return std::find(settable_names_.begin(), settable_names_.end(), k) != settable_names_.end();
-           }))
-        step.settings.push_back(key + "=" + format_roundtrip(*r.number(key, -kInf, kInf, "")));
-      if (step.settings.empty())
-        throw Error::input(r.prefix("") + "a set step needs set = [\"NAME=VALUE\", ...] or NAME = VALUE keys; names: " +
-                           join_names(settable_names_));
-      std::vector<std::string> settings = lesson_settings_;
-      settings.insert(settings.end(), step.settings.begin(), step.settings.end());
-      std::shared_ptr<const BuiltMechanism> before, after;
+    if (lesson_mechanism_.empty()) {
+      if (r.has("set")) r.fail("set", "'set' applies to a mechanism: give mechanism = \"NAME\" at the top");
+      step.keys = r.keys_in_file_order([](std::string_view k) { return find_input_key(k) != nullptr; });
+      if (step.keys.empty()) throw Error::input(r.prefix("") + "a set step needs at least one of " + input_key_list());
       try {
-        before = build(lesson_mechanism_, lesson_settings_, r.where(""));
-        after = build(lesson_mechanism_, settings, r.where(r.has("set") ? "set" : ""));
+        for (const std::string& key : step.keys)
+          inputs.set(*find_input_key(key), *r.number(key, -kInf, kInf, ""), r.where(key));
+        inputs.validate();
       } catch (const Error& e) {
-        if (e.code() != ExitCode::bad_input) throw;
-        rethrow_at(e, {&r});
+        // The error is about the value's origin, FILE:LINE:COLUMN of a key: name the step too.
+        for (const std::string& key : step.keys)
+          if (e.setting() == r.where(key)) throw e.rephrased(r.prefix(key) + e.detail());
+        throw;
       }
-      for (const std::string& setting : step.settings) {
-        const std::string name = setting.substr(0, setting.find('='));
-        std::string unit;
-        const double was = setting_value(*before, name, unit), now = setting_value(*after, name, unit);
-        step.changes.push_back(name + " = " + format_roundtrip(now) + (unit.empty() ? "" : " " + unit) + " (was " +
-                               format_roundtrip(was) + ")");
-      }
-      lesson_settings_ = std::move(settings);
       return step;
     }
-    if (r.has("set")) r.fail("set", "'set' applies to a mechanism: give mechanism = \"NAME\" at the top");
-    step.keys = r.keys_in_file_order([](std::string_view k) { return find_input_key(k) != nullptr; });
-    if (step.keys.empty()) throw Error::input(r.prefix("") + "a set step needs at least one of " + input_key_list());
-    try {
-      for (const std::string& key : step.keys)
-        inputs.set(*find_input_key(key), *r.number(key, -kInf, kInf, ""), r.where(key));
-      inputs.validate();
-    } catch (const Error& e) {
-      // The error is about the value's origin, FILE:LINE:COLUMN of a key: name the step too.
-      for (const std::string& key : step.keys)
-        if (e.setting() == r.where(key)) throw e.rephrased(r.prefix(key) + e.detail());
-      throw;
+    // The lesson's mechanism: `set = ["NAME=VALUE", ...]` and NAME = VALUE keys, in file order.
+    if (auto list = r.strings("set")) step.settings = *list;
+    for (const std::string& key : r.keys_in_file_order([&](std::string_view k) {
+           return std::find(settable_names_.begin(), settable_names_.end(), k) != settable_names_.end();
+         }))
+      step.settings.push_back(key + "=" + format_roundtrip(*r.number(key, -kInf, kInf, "")));
+    if (step.settings.empty())
+      throw Error::input(r.prefix("") + "a set step needs set = [\"NAME=VALUE\", ...] or NAME = VALUE keys; names: " +
+                         join_names(settable_names_));
+    std::vector<std::string> settings = lesson_settings_;
+    settings.insert(settings.end(), step.settings.begin(), step.settings.end());
+    const auto [before, after] = at_keys({&r}, [&] {
+      return std::pair{build(lesson_mechanism_, lesson_settings_, r.where("")),
+                       build(lesson_mechanism_, settings, r.where(r.has("set") ? "set" : ""))};
+    });
+    // A parameter's value, or an initial coordinate's or rate's with the loops closed.
+    const auto value = [](const BuiltMechanism& built, const std::string& name) {
+      const GiNaC::ex symbol = built.system->table().find(name)->symbol;
+      return format_roundtrip(sym::to_double(symbol.subs(built.initial).subs(built.system->parameter_values())));
+    };
+    for (const std::string& setting : step.settings) {
+      const std::string name = setting.substr(0, setting.find('='));
+      const std::string& unit = after->system->table().find(name)->unit;
+      step.changes.push_back(name + " = " + value(*after, name) + (unit.empty() ? "" : " " + unit) + " (was " +
+                             value(*before, name) + ")");
     }
+    lesson_settings_ = std::move(settings);
     return step;
   }
 
-  /// The unit of a name of the mechanism's (a parameter, "2.theta", "S.s_dot",
-  /// "2.theta_ddot", "B.force_x", "S.moment"); empty when it has none.
-  static std::string mechanism_unit(const sym::System& system, const std::string& name) {
-    for (const Parameter& p : system.mechanism().parameters)
-      if (p.name == name) return p.unit;
-    auto ends = [&](std::string_view tail) { return name.size() > tail.size() && name.ends_with(tail); };
-    for (const std::string_view force : {".force_x", ".force_y", ".normal"})
-      if (ends(force)) return "N";
-    if (ends(".moment")) return "N m";
-    std::string base = name, per;
-    if (ends("_ddot")) {
-      base.resize(name.size() - 5);
-      per = "/s^2";
-    } else if (ends("_dot")) {
-      base.resize(name.size() - 4);
-      per = "/s";
-    }
-    const std::string axis = base.substr(base.rfind('.') + 1);
-    if (axis == "theta") return "rad" + per;
-    if (axis == "x" || axis == "y" || axis == "s") return "m" + per;
-    return "";
+  /// The text of `key`, a {{...}} template checked at `inputs`.
+  TextTemplate text_at(const TableReader& r, std::string_view key, const Inputs& inputs) const {
+    return text_template(*r.string(key), r.prefix(key) + std::string(key), inputs, names());
   }
 
   ExerciseStep parse_exercise(const TableReader& r, const Inputs& inputs, const Step& step) const {
     ExerciseStep e;
     r.require("question");
     r.require("answer");
-    e.question = text_template(*r.string("question"), r.prefix("question") + "question", inputs, names());
+    e.question = text_at(r, "question", inputs);
     const toml::node& answer = *r.node("answer");
     if (const auto* s = answer.as_string()) {
       e.answer = Expression::parse(s->get(), r.prefix("answer") + "answer", names());
@@ -469,22 +385,21 @@ class Parser {
       r.fail("answer",
              "'answer' must be an expression string (e.g. \"I_zz_P\") or a number, got " + type_phrase(answer));
     }
-    const double value = e.answer.evaluate(evaluate_quantities(inputs));
-    if (!std::isfinite(value))
+    if (!std::isfinite(e.answer.evaluate(evaluate_quantities(inputs))))
       r.fail("answer", "'" + e.answer.text() + "' is not a finite number at this step's inputs");
     if (auto unit = r.string("unit"))
       e.unit = *unit;
     else if (const QuantityInfo* q = e.answer.single_quantity())
       e.unit = q->unit;
-    else if (step.mechanism)
-      e.unit = mechanism_unit(*step.mechanism->system, e.answer.text());
+    else if (const sym::SymbolInfo* name =
+                 step.mechanism ? step.mechanism->system->table().find(e.answer.text()) : nullptr)
+      e.unit = name->unit;  // a parameter, coordinate, rate, acceleration, joint force ...
     e.tolerance = r.number("tolerance", 0, kInf, "valid: tolerance >= 0");
     e.relative_tolerance = r.number("relative_tolerance", 0, 1, "valid: 0 to 1").value_or(e.tolerance ? 0.0 : 0.01);
     e.attempts = static_cast<int>(r.integer("attempts", 1, 10).value_or(3));
     e.digits = static_cast<int>(r.integer("digits", 1, 17).value_or(6));
-    if (auto hint = r.string("hint")) e.hint = text_template(*hint, r.prefix("hint") + "hint", inputs, names());
-    if (auto x = r.string("explanation"))
-      e.explanation = text_template(*x, r.prefix("explanation") + "explanation", inputs, names());
+    if (r.has("hint")) e.hint = text_at(r, "hint", inputs);
+    if (r.has("explanation")) e.explanation = text_at(r, "explanation", inputs);
     return e;
   }
 
@@ -522,44 +437,49 @@ class Parser {
   void apply_run_keys(const TableReader& r, Run& run) const {
     SimulationOptions& o = run.options;
     if (auto c = r.integer("case", 1, 3)) o.case_id = static_cast<int>(*c);
-    if (auto i = r.choice("integrator", integrator_names())) o.integrator = parse_integrator(*i, r.where("integrator"));
+    if (auto i = r.choice("integrator", spellings(integrators(), &IntegratorInfo::name)))
+      o.integrator = parse_integrator(*i, r.where("integrator"));
     if (auto s = r.choice("stabilize", {"none", "baumgarte", "projection"}))
       o.stabilization = parse_stabilization(*s, r.where("stabilize"));
-    o.dt = r.number("dt", -kInf, kInf, "").value_or(o.dt);
-    o.rtol = r.number("rtol", -kInf, kInf, "").value_or(o.rtol);
-    o.atol = r.number("atol", -kInf, kInf, "").value_or(o.atol);
-    o.duration = r.number("duration", -kInf, kInf, "").value_or(o.duration);
-    o.baumgarte_alpha = r.number("baumgarte_alpha", -kInf, kInf, "").value_or(o.baumgarte_alpha);
-    o.baumgarte_beta = r.number("baumgarte_beta", -kInf, kInf, "").value_or(o.baumgarte_beta);
+    for (const NumberOption& n : kNumberOptions) o.*n.field = r.number(n.name, -kInf, kInf, "").value_or(o.*n.field);
     if (auto settings = r.strings("set")) {
       if (run.mechanism.empty())
         r.fail("set", "'set' applies to a mechanism: give mechanism = \"NAME\" here or at the top");
       run.settings.insert(run.settings.end(), settings->begin(), settings->end());
     }
-    for (const InputKey& key : kInputKeys)
-      if (!run.mechanism.empty() && r.has(key.key))
+    for (const InputKey& key : kInputKeys) {
+      if (!r.has(key.key)) continue;
+      if (!run.mechanism.empty())
         r.fail(key.key, "'" + std::string(key.key) + "' is an input of the homework; on a mechanism write set = [\"" +
                             "NAME=VALUE\"] with the mechanism's names");
-    for (const InputKey& key : kInputKeys)
-      if (auto v = r.number(key.key, -kInf, kInf, "")) run.inputs.set(key, *v, r.where(key.key));
+      run.inputs.set(key, *r.number(key.key, -kInf, kInf, ""), r.where(key.key));
+    }
     run.inputs.validate();
   }
 
-  /// Builds a mechanism run's system (its settings checked; errors at the innermost `set`).
-  void build_run(Run& run, std::initializer_list<const TableReader*> readers) const {
-    if (run.mechanism.empty()) return;
-    std::string origin = (*readers.begin())->where("set");
-    for (const TableReader* r : readers)
-      if (r->has("set")) {
-        origin = r->where("set");
-        break;
-      }
-    try {
-      run.built = build(run.mechanism, run.settings, origin);
-    } catch (const Error& e) {
-      if (e.code() != ExitCode::bad_input) throw;
-      rethrow_at(e, readers);
+  /// A run of the step's mechanism and settings from `inputs`, with the run keys of `r`.
+  Run base_run(const TableReader& r, const Inputs& inputs) const {
+    Run run;
+    run.inputs = inputs;
+    run.mechanism = step_spec_;
+    run.settings = step_settings_;
+    apply_run_keys(r, run);
+    return run;
+  }
+
+  /// `run` checked and named: its options, its mechanism built with its settings, errors at
+  /// the innermost of `readers` (a `runs` entry, then its step) that has the key.
+  Run finish_run(Run run, std::initializer_list<const TableReader*> readers, const Inputs& inputs) const {
+    at_keys(readers, [&] { run.options.validate(); });
+    if (!run.mechanism.empty()) {
+      const auto with_set = std::find_if(readers.begin(), readers.end(), [](auto* r) { return r->has("set"); });
+      const std::string origin = (with_set != readers.end() ? *with_set : *readers.begin())->where("set");
+      run.built = at_keys(readers, [&] { return build(run.mechanism, run.settings, origin); });
     }
+    const TableReader& innermost = **readers.begin();
+    run.label = innermost.string("label").value_or(default_label(run, inputs));
+    run.series = innermost.string("series").value_or(std::string(info(run.options.integrator).name));
+    return run;
   }
 
   std::string default_label(const Run& run, const Inputs& base) const {
@@ -581,20 +501,7 @@ class Parser {
 
   /// The step's own run (its run keys over the current inputs).
   Run step_run(const TableReader& r, const Inputs& inputs) const {
-    Run run;
-    run.inputs = inputs;
-    run.mechanism = step_spec_;
-    run.settings = step_settings_;
-    apply_run_keys(r, run);
-    try {
-      run.options.validate();
-    } catch (const Error& e) {
-      rethrow_at(e, {&r});
-    }
-    build_run(run, {&r});
-    run.label = default_label(run, inputs);
-    run.series = std::string(info(run.options.integrator).name);
-    return run;
+    return finish_run(base_run(r, inputs), {&r}, inputs);
   }
 
   /// The `runs` entries, each the step's run with the entry's keys on top.
@@ -605,28 +512,16 @@ class Parser {
       if (r.has("runs")) r.fail("runs", "'runs' is empty; give at least one run");
       return {step_run(r, inputs)};
     }
-    Run base;
-    base.inputs = inputs;
-    base.mechanism = step_spec_;
-    base.settings = step_settings_;
-    apply_run_keys(r, base);
+    const Run base = base_run(r, inputs);
     const std::vector<KeySpec> keys = concat({run_keys(), run_entry_keys()});
     std::vector<Run> out;
     for (std::size_t i = 0; i < tables.size(); ++i) {
       const TableReader entry(*tables[i], file_text_, r.context() + ", run " + std::to_string(i + 1), keys,
-                              input_names());
+                              spellings(kInputKeys, &InputKey::key));
       entry.reject_unknown_keys();
       Run run = base;
       apply_run_keys(entry, run);
-      try {
-        run.options.validate();
-      } catch (const Error& e) {
-        rethrow_at(e, {&entry, &r});
-      }
-      build_run(run, {&entry, &r});
-      run.label = entry.string("label").value_or(default_label(run, inputs));
-      run.series = entry.string("series").value_or(std::string(info(run.options.integrator).name));
-      out.push_back(std::move(run));
+      out.push_back(finish_run(std::move(run), {&entry, &r}, inputs));
     }
     return out;
   }
@@ -662,49 +557,11 @@ class Parser {
     height = h;
   }
 
-  /// The mechanism columns a list key names ("default" and "all" too when `groups`); an
-  /// unknown name is an error at its entry naming the nearest column and every valid one.
-  std::vector<MechanismColumn> mechanism_column_list(const TableReader& r, std::string_view key,
-                                                     const sym::System& system, bool groups) const {
-    const std::vector<MechanismColumn> all = mechanism_columns(system);
-    std::vector<MechanismColumn> out;
-    const auto values = r.strings(key);
-    if (!values) return out;
-    const toml::node* n = r.node(key);
-    const auto* array = n != nullptr ? n->as_array() : nullptr;
-    for (std::size_t i = 0; i < values->size(); ++i) {
-      const std::string& name = (*values)[i];
-      if (groups && (name == "default" || name == "all")) {
-        for (const MechanismColumn& c : select_mechanism_columns(all, name, ""))
-          if (c.quantity != MechanismQuantity::time || out.empty()) out.push_back(c);
-        continue;
-      }
-      const std::string where = array != nullptr ? position(r.file(), array->get(i)->source()) : r.where(key);
-      out.push_back(find_mechanism_column(all, name, where + ": " + r.context() + ": " + std::string(key)));
-    }
-    return out;
-  }
-
-  static MechanismColumn find_mechanism_column(const std::vector<MechanismColumn>& all, const std::string& name,
-                                               const std::string& origin) {
-    std::vector<std::string> names;
-    for (const MechanismColumn& c : all) {
-      if (c.name == name) return c;
-      names.push_back(c.name);
-    }
-    std::string nearest;
-    std::size_t best = std::numeric_limits<std::size_t>::max();
-    // The fewest edits; of equals, one on the same body or joint ("S.x" -> "S.s").
-    const std::string owner = name.substr(0, name.find('.') + 1);
-    for (const std::string& candidate : names) {
-      const std::size_t d = 2 * typo_distance(name, candidate) + (candidate.rfind(owner, 0) == 0 ? 0 : 1);
-      if (d < best) {
-        best = d;
-        nearest = candidate;
-      }
-    }
-    throw Error::input(origin + ": unknown column '" + name + "'; nearest '" + nearest +
-                       "'; valid: " + join_names(names));
+  /// "file:line:column: context: key" of entry `i` of a list key (of the key for a single string).
+  static std::string entry_origin(const TableReader& r, std::string_view key, std::size_t i) {
+    const toml::array* array = r.node(key)->as_array();
+    const std::string where = array != nullptr ? position(r.file(), array->get(i)->source()) : r.where(key);
+    return where + ": " + r.context() + ": " + std::string(key);
   }
 
   SimulateStep parse_simulate(const TableReader& r, const Inputs& inputs) const {
@@ -712,27 +569,20 @@ class Parser {
     s.run = step_run(r, inputs);
     s.every = sample_interval(r, s.run.options.duration, 100);
     if (r.has("trajectory")) s.trajectory = strip_extension(artifact_name(r, "trajectory"), {".csv"}) + ".csv";
-    if (s.run.built) {
-      // As `linkage simulate --mechanism --columns`: t first, "default" without the key.
-      const sym::System& system = *s.run.built->system;
-      std::vector<MechanismColumn> columns = mechanism_column_list(r, "columns", system, true);
-      if (!r.has("columns")) columns = select_mechanism_columns(mechanism_columns(system), "default", "columns");
-      if (columns.empty()) r.fail("columns", "'columns' is empty; name at least one column, \"default\" or \"all\"");
-      if (columns.front().quantity != MechanismQuantity::time)
-        columns.insert(columns.begin(), mechanism_columns(system).front());
-      s.mechanism_columns = std::move(columns);
+    if (s.run.built) {  // as `linkage simulate --mechanism --columns`: t first, "default" without the key
+      const auto names = r.strings("columns").value_or(std::vector<std::string>{"default"});
+      if (names.empty()) r.fail("columns", "'columns' is empty; name at least one column, \"default\" or \"all\"");
+      s.mechanism_columns = select_mechanism_columns(mechanism_columns(*s.run.built->system), names,
+                                                     [&](std::size_t i) { return entry_origin(r, "columns", i); });
       return s;
     }
-    if (auto columns = r.strings("columns")) {
-      std::string list;
-      for (const std::string& c : *columns) {
-        if (!list.empty()) list += ',';
-        list += c;
-      }
-      s.columns = parse_columns(list, r.prefix("columns") + "columns");
-    } else {
-      s.columns = parse_columns("all", "columns");
+    const auto columns = r.strings("columns");  // as `linkage simulate --columns A,B`
+    std::string list = columns ? "" : "all";
+    for (const std::string& c : columns.value_or(std::vector<std::string>{})) {
+      list += list.empty() ? "" : ",";
+      list += c;
     }
+    s.columns = parse_columns(list, columns ? r.prefix("columns") + "columns" : "columns");
     return s;
   }
 
@@ -862,7 +712,7 @@ class Parser {
       const std::vector<MechanismColumn> all = mechanism_columns(*runs.front().built->system);
       f.mechanism_x = find_mechanism_column(all, r.string("x").value_or("t"), r.prefix("x") + "x");
     } else {
-      f.x = *find_series(r.choice("x", series_names()).value_or("t"));
+      f.x = *find_series(r.choice("x", spellings(kSeries, &SeriesInfo::name)).value_or("t"));
     }
     f.log_x = r.boolean("log_x").value_or(false);
     f.log_y = r.boolean("log_y").value_or(false);
@@ -897,11 +747,14 @@ class Parser {
     if (auto a = r.choice("angles", {"rad", "deg"})) s.figure.angles = parse_angle_unit(*a, r.where("angles"));
     if (s.figure.difference) check_difference(r, s);
     if (s.runs.front().built) {
-      s.figure.mechanism_y = mechanism_column_list(r, "y", *s.runs.front().built->system, false);
+      const std::vector<MechanismColumn> all = mechanism_columns(*s.runs.front().built->system);
+      const auto names = *r.strings("y");
+      for (std::size_t i = 0; i < names.size(); ++i)
+        s.figure.mechanism_y.push_back(find_mechanism_column(all, names[i], entry_origin(r, "y", i)));
       if (s.figure.mechanism_y.empty()) r.fail("y", "'y' is empty; name at least one column");
       return s;
     }
-    s.figure.y = r.choice_list("y", series_names());
+    s.figure.y = r.choice_list("y", spellings(kSeries, &SeriesInfo::name));
     if (s.figure.y.empty()) r.fail("y", "'y' is empty; name at least one series");
     return s;
   }
@@ -915,25 +768,19 @@ class Parser {
     for (std::size_t i : r.choice_list("columns", columns)) s.columns.push_back(static_cast<CompareColumn>(i));
     if (s.columns.empty())
       for (std::size_t i = 0; i < columns.size(); ++i) s.columns.push_back(static_cast<CompareColumn>(i));
-    s.every = sample_interval(r, longest(s.runs), 400);
-    s.title = r.string("title").value_or("");
-    figure_size(r, s.width, s.height);
+    Figure f = figure(r, s.runs);  // against t (a compare step has no x), every 1/400 of the run
+    s.every = f.every;
+    s.title = f.title;
+    s.width = f.width;
+    s.height = f.height;
     const bool on_mechanism = s.runs.front().built != nullptr;
-    if (auto y = on_mechanism ? r.string("plot") : r.choice("plot", series_names())) {
-      Figure f;
-      if (on_mechanism) {
-        const std::vector<MechanismColumn> all = mechanism_columns(*s.runs.front().built->system);
-        f.mechanism_y = {find_mechanism_column(all, *y, r.prefix("plot") + "plot")};
-        f.mechanism_x = all.front();  // t
-      } else {
+    if (auto y = on_mechanism ? r.string("plot") : r.choice("plot", spellings(kSeries, &SeriesInfo::name))) {
+      if (on_mechanism)
+        f.mechanism_y = {
+            find_mechanism_column(mechanism_columns(*s.runs.front().built->system), *y, r.prefix("plot") + "plot")};
+      else
         f.y = {*find_series(*y)};
-        f.x = *find_series("t");
-      }
       f.log_y = r.boolean("log_y").value_or(true);
-      f.title = s.title;
-      f.every = s.every;
-      f.width = s.width;
-      f.height = s.height;
       s.plot = f;
     } else if (r.has("log_y")) {
       r.fail("log_y", "'log_y' applies to the plot; add plot = \"SERIES\" or remove it");
@@ -961,23 +808,17 @@ class Parser {
 
 std::vector<std::string> step_artifacts(const Step& step) {
   std::vector<std::string> out;
+  const auto figure = [&](const std::string& base) { out.insert(out.end(), {base + ".png", base + ".svg"}); };
   if (const auto* s = std::get_if<SimulateStep>(&step.body)) {
     if (!s->trajectory.empty()) out.push_back(s->trajectory);
   } else if (const auto* r = std::get_if<RenderStep>(&step.body)) {
     out.push_back(r->out);
   } else if (const auto* p = std::get_if<PlotStep>(&step.body)) {
-    out.push_back(p->out + ".png");
-    out.push_back(p->out + ".svg");
+    figure(p->out);
   } else if (const auto* c = std::get_if<CompareStep>(&step.body)) {
     out.push_back(c->out + ".csv");
-    if (c->plot) {
-      out.push_back(c->out + ".png");
-      out.push_back(c->out + ".svg");
-    }
-    if (c->cost_plot) {
-      out.push_back(c->out + "-cost.png");
-      out.push_back(c->out + "-cost.svg");
-    }
+    if (c->plot) figure(c->out);
+    if (c->cost_plot) figure(c->out + "-cost");
   }
   return out;
 }

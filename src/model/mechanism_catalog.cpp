@@ -40,12 +40,13 @@ Mechanism read_mechanism_file(const std::filesystem::path& path) {
   return read_mechanism(text.str(), path.string());
 }
 
+bool is_mechanism_file(std::string_view name_or_file) {
+  return name_or_file.find('/') != std::string_view::npos || name_or_file.ends_with(".toml");
+}
+
 Mechanism load_mechanism(const std::string& name_or_file) {
   const std::string suffix = ".toml";
-  const bool file = name_or_file.find('/') != std::string::npos ||
-                    (name_or_file.size() >= suffix.size() &&
-                     name_or_file.compare(name_or_file.size() - suffix.size(), suffix.size(), suffix) == 0);
-  if (file) return read_mechanism_file(name_or_file);
+  if (is_mechanism_file(name_or_file)) return read_mechanism_file(name_or_file);
   for (const EmbeddedMechanism& shipped : kEmbeddedMechanisms) {
     if (shipped.name != name_or_file) continue;
     Mechanism mechanism = read_mechanism(shipped.toml, name_or_file + suffix);

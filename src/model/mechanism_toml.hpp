@@ -21,6 +21,9 @@ namespace linkage {
 /// A shipped mechanism by NAME (no '/' and no ".toml": built into the program), or else a
 /// file path.
 [[nodiscard]] Mechanism load_mechanism(const std::string& name_or_file);
+/// Whether load_mechanism reads `name_or_file` as a file (it has a '/' or ends in .toml)
+/// rather than a shipped mechanism's name.
+[[nodiscard]] bool is_mechanism_file(std::string_view name_or_file);
 /// The homework's inputs (flags, --config) on mechanisms/two-blocks.toml: every value not
 /// at its default is set there with its origin, so the general derivation takes them.
 class Inputs;

@@ -144,7 +144,36 @@ TEST(MechanismSimulation, ColumnsFollowTheContract) {
     (void)select_mechanism_columns(all, "t,B.forcex", "--columns");
     FAIL() << "a misspelt column was accepted";
   } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("did you mean 'B.force_x'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("--columns: unknown column 'B.forcex'; nearest 'B.force_x'; valid: default, "
+                                         "all, t, 2.x,"),
+              std::string::npos)
+        << e.what();
+  }
+  // A list of names (a lesson's): groups anywhere, t once and first; errors at each entry.
+  const auto at = [](std::size_t i) { return "entry " + std::to_string(i + 1); };
+  const std::vector<MechanismColumn> picked = select_mechanism_columns(all, {"S.moment", "default", "all"}, at);
+  ASSERT_EQ(picked.size(), 2 + names.size() - 1 + all.size() - 1);
+  EXPECT_EQ(picked[0].name, "t");
+  EXPECT_EQ(picked[1].name, "S.moment");
+  EXPECT_EQ(picked[2].name, "2.x");
+  EXPECT_EQ(select_mechanism_columns(all, {"S.s"}, at).front().name, "t");
+  EXPECT_TRUE(select_mechanism_columns(all, std::vector<std::string>{}, at).empty());
+  try {
+    (void)select_mechanism_columns(all, {"S.s", "S.x"}, at);
+    FAIL() << "an unknown column was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("entry 2: unknown column 'S.x'; nearest 'S.s'; valid: default, all, t,"),
+              std::string::npos)
+        << e.what();
+  }
+  // One name: of the nearest by edits, the one on the same joint ("S.x": S.s, not 2.x).
+  EXPECT_EQ(find_mechanism_column(all, "S.moment", "y").unit, "N m");
+  try {
+    (void)find_mechanism_column(all, "S.x", "y");
+    FAIL() << "an unknown column was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("y: unknown column 'S.x'; nearest 'S.s'; valid: t, 2.x,"), std::string::npos)
+        << e.what();
   }
 }
 

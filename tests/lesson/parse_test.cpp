@@ -219,5 +219,44 @@ TEST(LessonParse, TextAndAnswersUseTheNamesOfTheLessonsMechanism) {
   }
 }
 
+// A set step on the lesson's mechanism says what changed with the symbol table's units;
+// an exercise's unit is the named symbol's; every number option is a run key.
+TEST(LessonParse, MechanismSetStepsAndAnswersTakeTheSymbolsUnits) {
+  test::TempDir dir;
+  const Lesson lesson = parse_text(dir, R"(title = "T"
+mechanism = "four-bar"
+[[step]]
+kind = "set"
+set = ["a=0.12", "2.theta_dot=2"]
+[[step]]
+kind = "exercise"
+question = "Q"
+answer = "2.theta_ddot"
+[[step]]
+kind = "exercise"
+question = "Q"
+answer = "B.force_x"
+[[step]]
+kind = "simulate"
+dt = 0.002
+rtol = 1e-8
+atol = 1e-9
+duration = 3
+baumgarte_alpha = 5
+baumgarte_beta = 6
+)");
+  EXPECT_EQ(std::get<SetStep>(lesson.steps[0].body).changes,
+            (std::vector<std::string>{"a = 0.12 m (was 0.1)", "2.theta_dot = 2 rad/s (was 3)"}));
+  EXPECT_EQ(std::get<ExerciseStep>(lesson.steps[1].body).unit, "rad/s^2");
+  EXPECT_EQ(std::get<ExerciseStep>(lesson.steps[2].body).unit, "N");
+  const SimulationOptions& o = std::get<SimulateStep>(lesson.steps[3].body).run.options;
+  EXPECT_EQ(o.dt, 0.002);
+  EXPECT_EQ(o.rtol, 1e-8);
+  EXPECT_EQ(o.atol, 1e-9);
+  EXPECT_EQ(o.duration, 3.0);
+  EXPECT_EQ(o.baumgarte_alpha, 5.0);
+  EXPECT_EQ(o.baumgarte_beta, 6.0);
+}
+
 }  // namespace
 }  // namespace linkage::lesson

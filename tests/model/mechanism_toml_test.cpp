@@ -561,6 +561,10 @@ TEST(MechanismToml, LoadByNameOrFile) {
             "'for-bar' is not a shipped mechanism (did you mean 'four-bar'?); valid: double-pendulum, four-bar, "
             "slider-crank, spring-pendulum, triple-pendulum, two-blocks, unequal-blocks, or a file path (with '/' or "
             "ending in .toml)");
+  EXPECT_FALSE(is_mechanism_file("four-bar"));
+  EXPECT_TRUE(is_mechanism_file("my.toml"));
+  EXPECT_TRUE(is_mechanism_file("sub/four-bar"));
+  EXPECT_FALSE(is_mechanism_file(".tom"));
   test::TempDir dir;
   EXPECT_NE(invalid((dir / "missing.toml").string()).find("does not exist"), std::string::npos);
   EXPECT_NE(invalid(dir.path().string() + "/").find("is a folder"), std::string::npos);
