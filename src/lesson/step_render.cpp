@@ -55,19 +55,6 @@ EquationsText render_equations(const sym::System& system, int case_id) {
   return {std::move(e.heading), std::move(e.lines)};
 }
 
-bool only_equations(const std::vector<std::string>& show) {
-  return std::all_of(show.begin(), show.end(), [](const std::string& list) {
-    std::size_t start = 0;
-    while (true) {
-      const std::size_t comma = list.find(',', start);
-      if (list.substr(start, comma == std::string::npos ? std::string::npos : comma - start) != "equations")
-        return false;
-      if (comma == std::string::npos) return true;
-      start = comma + 1;
-    }
-  });
-}
-
 namespace {
 
 // compare = ["NAME=VALUE", ...]: integrator=NAME, case=N, or a set name (then the run
