@@ -72,45 +72,10 @@ void resolve_compare(const std::string& list, const MechanismOptions& mechanism,
     clip.compare = std::move(run);
     return;
   }
-  SimulationFlags flags = simulation;
-  std::vector<std::string> settings;
-  for (const std::string& item : split_commas(list)) {
-    const auto equals = item.find('=');
-    if (equals == std::string::npos || equals == 0 || equals + 1 == item.size())
-      throw Error::input("--compare: '" + item +
-                         "' is not NAME=VALUE, a .csv trajectory, a .toml mechanism or a shipped mechanism's name; "
-                         "e.g. --compare 2.theta=-1.2000001, --compare integrator=rk4,case=1 or --compare run.csv");
-    const std::string name = item.substr(0, equals), value = item.substr(equals + 1);
-    if (name == "integrator")
-      flags.integrator = value;
-    else if (name == "case")
-      flags.which_case = value;
-    else
-      settings.push_back(item);
-  }
-  MechanismRun run;
-  try {
-    run.simulation = resolve_simulation_flags(flags, clip.settings.duration);
-  } catch (const Error& e) {
-    throw Error::input("--compare: " + describe(e));
-  }
-  run.label = with_spaces(list);
-  if (settings.empty()) {
-    run.initial = {};  // the clip's own, filled in by the caller
-  } else {
-    Mechanism other = chosen_mechanism(mechanism, inputs);
-    for (const std::string& setting : settings) {
-      try {
-        apply_setting(other, setting, "--compare " + setting.substr(0, setting.find('=')));
-      } catch (const Error& e) {
-        throw Error::input("--compare: " + e.detail() + "; or integrator=NAME, case=1|2|3");
-      }
-    }
-    compared = std::make_unique<sym::System>(std::move(other));
-    run.system = compared.get();
-    run.initial = sym::checked_initial_state(*compared).state;
-  }
-  clip.compare = std::move(run);
+  const SimulationOptions options = resolve_simulation_flags(simulation, clip.settings.duration);
+  clip.compare =
+      mechanism_compared_run(split_commas(list), chosen_mechanism(mechanism, inputs), options, "--compare", compared);
+  if (!compared) clip.compare->initial = {};  // the clip's own, filled in by the caller
 }
 
 }  // namespace

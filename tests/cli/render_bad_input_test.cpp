@@ -126,7 +126,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "--compare: '2.thet' (--compare 2.thet) is not a parameter or initial coordinate of "
                  "'double-pendulum' (did you mean '2.theta'?)"},
         BadInput{{"--mechanism", "double-pendulum", "--compare", "integrator=rk5"},
-                 "--compare: --integrator: 'rk5' is not an integrator; valid: "},
+                 "--compare: integrator: 'rk5' is not an integrator; valid: "},
         BadInput{{"--mechanism", "double-pendulum", "--compare", "2.theta"},
                  "--compare: '2.theta' is not NAME=VALUE"}));
 
