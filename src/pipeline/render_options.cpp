@@ -149,7 +149,7 @@ void arrow_scale(RenderDraft& d, const std::string& text) {
 
 void panel(RenderDraft& d, const std::string& text) {
   d.request.settings.panel = split_commas(text);
-  if (d.request.settings.panel.empty()) throw Error::invalid("panel", "is empty; give at least one quantity");
+  if (d.request.settings.panel.empty()) throw Error::invalid("panel", "the list is empty; give at least one quantity");
   if (!d.target.mechanism) validate_homework_panel(d.request.settings.panel);  // a mechanism's: with its system
 }
 

@@ -119,7 +119,7 @@ TEST(RenderOptions, BadValuesNameTheirOptionAndTheRange) {
   EXPECT_EQ(error_of({{"ensemble", "201"}}), "ensemble|'201' is not a whole number of runs in 2 .. 200");
   EXPECT_EQ(error_of({{"ensemble", "4"}, {"spread", "0"}}), "spread|'0' must be a finite number > 0 (rad or m)");
   EXPECT_EQ(error_of({{"spread", "1e-3"}}), "spread|applies only with --ensemble N");
-  EXPECT_EQ(error_of({{"panel", ""}}), "panel|is empty; give at least one quantity");
+  EXPECT_EQ(error_of({{"panel", ""}}), "panel|the list is empty; give at least one quantity");
   EXPECT_EQ(error_of({{"panel", "theta3"}}).substr(0, 30), "panel|'theta3' is not a quanti");
   EXPECT_EQ(error_of({{"arrow_scale", "pin=0"}}).rfind("arrow_scale|'pin=0' has no positive number", 0), 0U);
   EXPECT_EQ(error_of({{"size", "65x36"}}).rfind("size|size 65x36 must have an even width and height", 0), 0U);
