@@ -3,7 +3,6 @@
 // or a mechanism's: other runs drawn over the main one (nearby initial states for chaos,
 // one run with other settings, another mechanism, or a trajectory file), checked before
 // any work.
-#include <CLI/CLI.hpp>
 #include <memory>
 #include <string>
 
@@ -12,35 +11,27 @@
 #include "cli/simulation_flags.hpp"
 #include "pipeline/clip.hpp"
 #include "pipeline/mechanism_clip.hpp"
+#include "pipeline/render_options.hpp"
 #include "symbolic/system.hpp"
 
 namespace linkage::cli {
-
-struct OverlayFlags {
-  std::string ensemble, spread, compare;
-  /// Whether any of the flags was given.
-  [[nodiscard]] bool any() const { return !ensemble.empty() || !spread.empty() || !compare.empty(); }
-};
-
-/// Adds --ensemble, --spread and --compare to `sub` in `group`.
-void add_overlay_options(CLI::App* sub, OverlayFlags& flags, const std::string& group);
 
 /// What --compare names, by its form: a trajectory (.csv), a mechanism (.toml or a
 /// shipped name), or NAME=VALUE settings.
 enum class CompareKind { settings, trajectory, mechanism };
 [[nodiscard]] CompareKind compare_kind(const std::string& compare);
 
-/// Sets clip.ensemble, clip.spread and clip.compare from the flags (Error::input naming
-/// the flag and the valid range). --compare NAME=VALUE,...: integrator=NAME, case=N, or
-/// a --set name; a parameter or coordinate, or another mechanism (its bodies named as
-/// the clip's), builds the compared run's own system, kept in `compared` (which must
-/// outlive the clip); FILE.csv: the bodies' columns, covering the clip.
-void resolve_overlay_flags(const OverlayFlags& flags, const MechanismOptions& mechanism, const InputOptions& inputs,
+/// Sets clip.ensemble, clip.spread and clip.compare from the request (the flags read
+/// through render_options, Error::input naming --compare and the valid range). --compare NAME=VALUE,...:
+/// integrator=NAME, case=N, or a --set name; a parameter or coordinate, or another mechanism (its bodies named as the
+/// clip's), builds the compared run's own system, kept in `compared` (which must outlive the clip); FILE.csv: the
+/// bodies' columns, covering the clip.
+void resolve_overlay_flags(const RenderRequest& request, const MechanismOptions& mechanism, const InputOptions& inputs,
                            const SimulationFlags& simulation, MechanismClip& clip,
                            std::unique_ptr<sym::System>& compared);
 
 /// The same for the homework's clip: settings are its input names (theta1=0.1000001,
 /// L=0.4), integrator=NAME, case=N; FILE.csv needs t, x1, y1, theta1, theta2.
-void resolve_homework_overlays(const OverlayFlags& flags, Clip& clip);
+void resolve_homework_overlays(const RenderRequest& request, Clip& clip);
 
 }  // namespace linkage::cli

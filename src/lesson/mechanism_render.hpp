@@ -22,7 +22,5 @@ struct MechanismRender {
 
 /// Case `case_id`'s equations as `linkage solve` prints them, for a step that shows them.
 [[nodiscard]] EquationsText render_equations(const sym::System& system, int case_id);
-/// Whether a step's show list names only equations (all a mechanism's step may show).
-[[nodiscard]] bool only_equations(const std::vector<std::string>& show);
 
 }  // namespace linkage::lesson

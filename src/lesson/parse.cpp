@@ -24,6 +24,7 @@
 #include "model/toml_table.hpp"
 #include "pipeline/clip.hpp"
 #include "pipeline/panel_data.hpp"
+#include "pipeline/render_options.hpp"
 #include "pipeline/run_samples.hpp"
 #include "render/theme.hpp"
 #include "report/markdown.hpp"
@@ -49,18 +50,6 @@ template <class Range, class Member>
 std::vector<std::string_view> spellings(const Range& entries, Member name) {
   std::vector<std::string_view> out;
   for (const auto& entry : entries) out.push_back(entry.*name);
-  return out;
-}
-
-std::vector<std::string> split_list(const std::string& text) {
-  std::vector<std::string> out;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ',')) {
-    item.erase(0, item.find_first_not_of(' '));
-    item.erase(item.find_last_not_of(' ') + 1);
-    if (!item.empty()) out.push_back(item);
-  }
   return out;
 }
 
@@ -616,76 +605,48 @@ class Parser {
     s.out = artifact_name(r, "out");
     s.caption = r.string("caption").value_or("");
     s.run = step_run(r, inputs);
-    RenderSettings& g = s.settings;
     s.mechanism = s.run.mechanism;
     s.settings_list = s.run.settings;
-    s.trails = r.strings("trail").value_or(std::vector<std::string>{});
-    if (auto n = r.integer("ensemble", 2, 200)) s.ensemble = static_cast<int>(*n);
-    if (auto x = r.number("spread", std::numeric_limits<double>::min(), std::numeric_limits<double>::max(),
-                          "a finite number > 0 (rad or m)")) {
-      if (s.ensemble == 0) r.fail("spread", "'spread' applies with 'ensemble = N'");
-      s.spread = *x;
+    // Each render option's TOML value as the text its flag would carry.
+    std::vector<std::pair<std::string, std::string>> given;
+    for (const RenderOption& o : render_options()) {
+      if (!r.has(o.name)) continue;
+      std::string text;
+      if (o.value == RenderValue::integer) {
+        text = std::to_string(
+            *r.integer(o.name, std::numeric_limits<std::int64_t>::min(), std::numeric_limits<std::int64_t>::max()));
+      } else if (o.value == RenderValue::number) {
+        text = format_roundtrip(*r.number(o.name, -kInf, kInf, ""));
+      } else if (o.value == RenderValue::list) {
+        const std::vector<std::string> items = *r.strings(o.name);
+        for (std::size_t i = 0; i < items.size(); ++i) text.append(i > 0 ? "," : "").append(items[i]);
+      } else {
+        text = *r.string(o.name);
+      }
+      given.emplace_back(std::string(o.name), std::move(text));
     }
-    s.compare = r.strings("compare").value_or(std::vector<std::string>{});
-    for (const std::string_view key : {"trail"})
-      if (s.mechanism.empty() && r.has(key))
-        r.fail(key, "'" + std::string(key) + "' applies to a mechanism: give mechanism = \"NAME\" here or at the top");
-    if (!s.mechanism.empty())
-      for (const std::string_view key : {"show", "hide", "camera", "view"})
-        if (r.has(key) && !(key == "show" && only_equations(r.strings("show").value_or(std::vector<std::string>{}))))
-          r.fail(key, "'" + std::string(key) + "' is the homework's (a mechanism's clip fits its whole motion)" +
-                          (key == "show" ? "; a mechanism's show takes only \"equations\"" : ""));
     try {
       s.kind = output_kind(s.out, r.where("out") + ": " + r.context() + ": out");
-      g.duration = s.run.options.duration;
-      std::vector<std::string_view> qualities;
-      for (const Quality& q : kQualities) qualities.push_back(q.name);
-      const Quality& preset = parse_quality(r.choice("quality", qualities).value_or("medium"), r.where("quality"));
-      g.width = preset.width;
-      g.height = preset.height;
-      g.fps = preset.fps;
-      if (auto size = r.string("size"))
-        parse_size(*size, r.where("size") + ": " + r.context() + ": size", g.width, g.height);
-      if (auto fps = r.integer("fps", 1, kMaxFps)) g.fps = static_cast<int>(*fps);
-      g.at = r.number("at", -kInf, kInf, "").value_or(g.at);
-      g.speed = r.number("speed", -kInf, kInf, "").value_or(g.speed);
-      const auto camera = r.choice("camera", {"follow", "fixed", "fit"});
-      g.camera = camera          ? parse_camera(*camera, r.where("camera"))
-                 : r.has("view") ? CameraMode::fixed
-                                 : CameraMode::follow;
-      if (auto v = r.string("view")) {
-        g.view = parse_view(*v, r.where("view") + ": " + r.context() + ": view");
-        if (g.camera != CameraMode::fixed)
-          r.fail("view", "'view' applies only to camera = \"fixed\" (the " + *camera + " camera chooses its own view)");
-      } else if (g.camera == CameraMode::fixed) {
-        r.fail("camera", "camera = \"fixed\" needs a view = \"xmin,ymin,xmax,ymax\" in metres");
-      }
-      std::vector<std::string> theme_names = split_list(theme_name_list());
-      const std::vector<std::string_view> themes(theme_names.begin(), theme_names.end());
-      if (auto t = r.choice("theme", themes)) g.theme = *t;
-      if (auto t = r.string("title")) g.title = *t;
-      if (auto a = r.string("arrow_scale")) {
-        static constexpr std::array<std::string_view, 2> kMechanismKinds{"joint", "applied"};
-        g.arrow_scale =
-            parse_arrow_scale_request(*a, r.where("arrow_scale") + ": " + r.context() + ": arrow_scale",
-                                      s.mechanism.empty() ? std::span<const std::string_view>(kArrowKindNames)
-                                                          : std::span<const std::string_view>(kMechanismKinds));
-      }
-      std::vector<std::string> show = r.strings("show").value_or(std::vector<std::string>{});
-      std::vector<std::string> hide = r.strings("hide").value_or(std::vector<std::string>{});
-      apply_show_hide(g.elements, show, hide);
-      if (auto a = r.choice("angles", {"rad", "deg"})) g.angles = parse_angle_unit(*a, r.where("angles"));
-      if (s.mechanism.empty() && g.elements.has(Element::equations))
+      RenderSettings base;
+      base.duration = s.run.options.duration;
+      base.captions = captions(r, s.kind, base.duration);
+      RenderTarget target;
+      target.mechanism = !s.mechanism.empty();
+      target.still = is_still(s.kind);
+      target.spell = [](std::string_view key) { return std::string(key); };
+      target.with_mechanism = "a mechanism: give mechanism = \"NAME\" here or at the top";
+      RenderRequest request = resolve_render_options(given, target, base);
+      RenderSettings& g = s.settings = std::move(request.settings);
+      s.trails = std::move(request.trails);
+      s.ensemble = request.ensemble;
+      s.spread = request.spread;
+      s.compare = r.strings("compare").value_or(std::vector<std::string>{});
+      if (s.mechanism.empty() && g.elements.has(Element::equations)) {
         g.equations = render_equations(sym::System(homework_mechanism(s.run.inputs)), s.run.options.case_id);
-      g.panel = r.strings("panel").value_or(std::vector<std::string>{});
-      if (r.has("panel") && g.panel.empty()) r.fail("panel", "'panel' is empty; give at least one quantity");
-      g.captions = captions(r, s.kind, g.duration);
-      g.validate();
-      if (s.mechanism.empty() && !g.panel.empty()) validate_homework_panel(g.panel);
+        g.validate();  // the equations fit the frame
+      }
       if (is_still(s.kind) && r.has("duration"))
         r.fail("duration", "'duration' applies to a clip; a still (" + s.out + ") shows the time 'at'");
-      if (!is_still(s.kind) && r.has("at"))
-        r.fail("at", "'at' applies to a still (out = \"NAME.png\", .svg or .pdf); a clip shows 0 .. duration");
       if (!s.mechanism.empty()) {
         if (s.kind == OutputKind::svg || s.kind == OutputKind::pdf)
           r.fail("out", "a mechanism's still is a .png (or a clip .mp4, .gif or .webm)");

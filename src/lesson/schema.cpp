@@ -1,6 +1,9 @@
 #include "lesson/schema.hpp"
 
 #include <array>
+#include <vector>
+
+#include "pipeline/render_options.hpp"
 
 namespace linkage::lesson {
 namespace {
@@ -94,42 +97,22 @@ constexpr std::array<KeySpec, 3> kSimulateKeys{{
      "energy, momentum_x, ..., constraint_velocity_error)."},
 }};
 
-constexpr std::array<KeySpec, 21> kRenderKeys{{
-    {"out", "string", "(required)", "The file in the output folder: .mp4 (a clip), .png, .svg or .pdf (a still)."},
-    {"caption", "string", "none", "Text under the clip or still in the lesson document."},
-    {"fps", "integer", "30", "Frames per second (as the render command's fps); draft quality lowers it to 15."},
-    {"size", "string", "\"1280x720\"", "Frame size WxH, even numbers; draft quality renders 480x270."},
-    {"quality", "string", "\"medium\"", "A size and fps preset: low, medium, high or 4k."},
-    {"at", "number", "0", "The time in s a still shows (stills only; a clip shows 0 .. duration)."},
-    {"speed", "number", "1", "Simulated seconds per video second (below 1 is slow motion)."},
-    {"show", "list of strings", "none",
-     "Elements to show besides the defaults: blocks, pin, pin-force, gravity, "
-     "velocity, trail, com, grid, axes, hud, legend, labels, title, equations (the case's equations under the "
-     "motion, as the solve step prints them; the only one a mechanism's step takes)."},
-    {"hide", "list of strings", "none", "Elements to hide."},
-    {"camera", "string", "\"follow\" (\"fixed\" with a view)",
-     "follow (keeps the falling centre of mass in frame), fixed (shows view) or fit (the whole motion)."},
-    {"view", "string", "none", "xmin,ymin,xmax,ymax in metres; implies camera = \"fixed\"."},
-    {"theme", "string", "\"light\"", "Colour theme: light, dark or print."},
-    {"title", "string", "the render default", "The title line drawn in the clip (\"\" for none)."},
-    {"arrow_scale", "string", "each kind its own",
-     "Arrow scales as the render command's --arrow-scale: common, common=N_PER_CM or KIND=N_PER_CM,... (pin, gravity, "
-     "velocity; with a mechanism joint, applied)."},
-    {"trail", "list of strings", "none", "BODY.POINT paths drawn over the last 2 s (with a mechanism)."},
-    {"ensemble", "integer", "none",
-     "N runs (2 .. 200) whose theta1 (a mechanism's first coordinate) starts up to `spread` apart, drawn faint "
-     "behind the main run, as render --ensemble."},
-    {"spread", "number", "1e-6", "The ensemble's largest initial offset of theta1 or the first coordinate, rad or m."},
-    {"compare", "list of strings", "none",
-     "A second run drawn over the main one, NAME=VALUE items: an input name (theta1=0.1000001, L=0.4; with a "
-     "mechanism a set name), integrator=NAME or case=N, as render --compare."},
-    {"panel", "list of strings", "none",
-     "Quantities plotted beside the motion with a cursor at the frame's time, as --panel (plot step names; a "
-     "mechanism's columns)."},
-    {"angles", "string", "\"rad\"", "Unit of the panel's angles and angular rates: rad or deg, as render --angles."},
-    {"captions", "array of tables", "none",
-     "Timed words under the picture: [{at = 2.0, text = \"...\"}, ...], each shown from `at` s until the next."},
-}};
+/// A render step's keys: its output and caption, every option of `linkage render`
+/// (pipeline/render_options), and its timed captions.
+std::span<const KeySpec> render_keys() {
+  static const std::vector<KeySpec> keys = [] {
+    std::vector<KeySpec> out{
+        {"out", "string", "(required)", "The file in the output folder: .mp4 (a clip), .png, .svg or .pdf (a still)."},
+        {"caption", "string", "none", "Text under the clip or still in the lesson document."},
+    };
+    for (const RenderOption& o : render_options()) out.push_back({o.name, o.type, o.default_text, o.doc});
+    out.push_back({"captions", "array of tables", "none",
+                   "Timed words under the picture: [{at = 2.0, text = \"...\"}, ...], each shown from `at` s until "
+                   "the next."});
+    return out;
+  }();
+  return keys;
+}
 
 constexpr std::array<KeySpec, 2> kCaptionKeys{{
     {"at", "number", "(required)", "The time in s the caption appears; later than the one before."},
@@ -189,7 +172,7 @@ const std::array<KindEntry, 9>& kinds() {
        kExerciseKeys, false},
       {"solve", "The worked solution of `linkage solve`, showing the chosen parts.", kSolveKeys, false},
       {"simulate", "Runs the motion and prints a summary; optionally writes the trajectory.", kSimulateKeys, true},
-      {"render", "A clip or a still, with any option of the render command.", kRenderKeys, true},
+      {"render", "A clip or a still, with any option of the render command.", render_keys(), true},
       {"plot", "Series against time for several runs, to PNG and SVG.", kPlotKeys, true},
       {"compare", "Several runs side by side in a table, optionally with plots.", kCompareKeys, true},
   }};

@@ -55,59 +55,6 @@ EquationsText render_equations(const sym::System& system, int case_id) {
   return {std::move(e.heading), std::move(e.lines)};
 }
 
-bool only_equations(const std::vector<std::string>& show) {
-  return std::all_of(show.begin(), show.end(), [](const std::string& list) {
-    std::size_t start = 0;
-    while (true) {
-      const std::size_t comma = list.find(',', start);
-      if (list.substr(start, comma == std::string::npos ? std::string::npos : comma - start) != "equations")
-        return false;
-      if (comma == std::string::npos) return true;
-      start = comma + 1;
-    }
-  });
-}
-
-namespace {
-
-// compare = ["NAME=VALUE", ...]: integrator=NAME, case=N, or a set name (then the run
-// gets its own system, built from the step's mechanism with these settings on top).
-MechanismRun compared_run(const RenderStep& render, const Mechanism& mechanism, const std::string& origin,
-                          std::unique_ptr<sym::System>& system) {
-  MechanismRun run;
-  run.simulation = render.run.options;
-  Mechanism other = mechanism;
-  bool own_system = false;
-  for (const std::string& item : render.compare) {
-    const auto equals = item.find('=');
-    if (equals == std::string::npos || equals == 0 || equals + 1 == item.size())
-      throw Error::input(origin + ": compare: '" + item +
-                         "' is not NAME=VALUE; e.g. \"2.theta=-1.2000001\", \"integrator=rk4\" or \"case=1\"");
-    const std::string name = item.substr(0, equals), value = item.substr(equals + 1);
-    if (name == "integrator") {
-      run.simulation.integrator = parse_integrator(value, origin + ": compare: integrator");
-    } else if (name == "case") {
-      if (value != "1" && value != "2" && value != "3")
-        throw Error::input(origin + ": compare: case '" + value + "' is not a case; valid: 1, 2, 3");
-      run.simulation.case_id = value[0] - '0';
-    } else {
-      apply_setting(other, item, origin + ": compare");
-      own_system = true;
-    }
-    if (!run.label.empty()) run.label += ", ";
-    run.label += item;
-  }
-  run.simulation.validate();
-  if (own_system) {
-    system = std::make_unique<sym::System>(std::move(other));
-    run.system = system.get();
-    run.initial = sym::checked_initial_state(*system).state;
-  }
-  return run;
-}
-
-}  // namespace
-
 MechanismRender mechanism_render(const RenderStep& render, const std::string& origin) {
   MechanismRender out;
   Mechanism mechanism = load_mechanism(render.mechanism);
@@ -120,7 +67,7 @@ MechanismRender mechanism_render(const RenderStep& render, const std::string& or
   out.clip.ensemble = render.ensemble;
   out.clip.spread = render.spread;
   if (!render.compare.empty()) {
-    out.clip.compare = compared_run(render, mechanism, origin, out.compared);
+    out.clip.compare = mechanism_compared_run(render.compare, mechanism, render.run.options, "compare", out.compared);
     if (!out.compared) out.clip.compare->initial = out.state;
   }
   if (out.clip.settings.elements.has(Element::equations))

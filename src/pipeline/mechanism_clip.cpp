@@ -14,6 +14,7 @@
 #include "encode/png_writer.hpp"
 #include "integrate/mechanism_columns.hpp"
 #include "integrate/mechanism_simulation.hpp"
+#include "model/mechanism_toml.hpp"
 #include "pipeline/encode_frames.hpp"
 #include "pipeline/panel_data.hpp"
 #include "render/cairo_util.hpp"
@@ -312,6 +313,50 @@ std::vector<MechanismMotion> overlay_motions(const sym::System& system, const Gi
   result.stats.samples += scratch.stats.samples;
   result.stats.simulate_seconds += scratch.stats.simulate_seconds;
   return motions;
+}
+
+MechanismRun mechanism_compared_run(const std::vector<std::string>& items, const Mechanism& mechanism,
+                                    const SimulationOptions& simulation, const std::string& flag,
+                                    std::unique_ptr<sym::System>& system) {
+  MechanismRun run;
+  run.simulation = simulation;
+  Mechanism other = mechanism;
+  bool own_system = false;
+  for (const std::string& item : items) {
+    const auto equals = item.find('=');
+    if (equals == std::string::npos || equals == 0 || equals + 1 == item.size())
+      throw Error::invalid("compare",
+                           "'" + item + "' is not NAME=VALUE; e.g. 2.theta=-1.2000001, integrator=rk4 or case=1");
+    const std::string name = item.substr(0, equals), value = item.substr(equals + 1);
+    try {
+      if (name == "integrator") {
+        run.simulation.integrator = parse_integrator(value, "integrator");
+      } else if (name == "case") {
+        if (value != "1" && value != "2" && value != "3")
+          throw Error::invalid("case", "'" + value + "' is not a case; valid: 1, 2, 3");
+        run.simulation.case_id = value[0] - '0';
+      } else {
+        apply_setting(other, item, flag + " " + name);
+        own_system = true;
+      }
+    } catch (const Error& e) {
+      if (e.setting() != "set") throw Error::invalid("compare", e.what());
+      throw Error::invalid("compare", e.detail() + "; or integrator=NAME, case=1|2|3");
+    }
+    if (!run.label.empty()) run.label += ", ";
+    run.label += item;
+  }
+  try {
+    run.simulation.validate();
+  } catch (const Error& e) {
+    throw Error::invalid("compare", e.what());
+  }
+  if (own_system) {
+    system = std::make_unique<sym::System>(std::move(other));
+    run.system = system.get();
+    run.initial = sym::checked_initial_state(*system).state;
+  }
+  return run;
 }
 
 std::vector<std::string> mechanism_pose_columns(const MechanismGeometry& geometry) {

@@ -33,6 +33,15 @@ struct MechanismRun {
   bool centred = false;  // another mechanism: drawn about the main run's centroid when that is followed
 };
 
+/// The compared run of NAME=VALUE items (`linkage render --compare`, a lesson's compare):
+/// integrator=NAME, case=N, or settings of `mechanism`'s parameters and initial
+/// coordinates, which give the run its own system, kept in `system` (it must outlive the
+/// run; without settings the run is the clip's, its initial state the caller's to fill).
+/// Error::invalid("compare", ...) naming the item; `flag` spells compare in the message.
+[[nodiscard]] MechanismRun mechanism_compared_run(const std::vector<std::string>& items, const Mechanism& mechanism,
+                                                  const SimulationOptions& simulation, const std::string& flag,
+                                                  std::unique_ptr<sym::System>& system);
+
 /// The columns a trajectory file needs to draw the bodies of `geometry`: t, then per body
 /// NAME.x, NAME.y and NAME.theta (no theta for a point mass).
 [[nodiscard]] std::vector<std::string> mechanism_pose_columns(const MechanismGeometry& geometry);

@@ -73,7 +73,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{{"--hide", "grid,legnd"}, "--hide: 'legnd' is not an element"},
         BadInput{{"--theme", "neon"}, "--theme: 'neon' is not a theme; valid: dark, light, print"},
         BadInput{{"--camera", "orbit"}, "--camera: 'orbit' is not a camera; valid: follow, fixed, fit"},
-        BadInput{{"--camera", "fixed"}, "--camera fixed: needs --view xmin,ymin,xmax,ymax"},
+        BadInput{{"--camera", "fixed"}, "--camera: fixed needs --view xmin,ymin,xmax,ymax"},
         BadInput{{"--view", "0,0,1,0"}, "--view: '0,0,1,0' has zero or negative area"},
         BadInput{{"--view", "0,0,1"}, "is not xmin,ymin,xmax,ymax"},
         BadInput{{"--camera", "fit", "--view", "0,0,1,1"}, "--view: applies only to --camera fixed"},
@@ -126,7 +126,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "--compare: '2.thet' (--compare 2.thet) is not a parameter or initial coordinate of "
                  "'double-pendulum' (did you mean '2.theta'?)"},
         BadInput{{"--mechanism", "double-pendulum", "--compare", "integrator=rk5"},
-                 "--compare: --integrator: 'rk5' is not an integrator; valid: "},
+                 "--compare: integrator: 'rk5' is not an integrator; valid: "},
         BadInput{{"--mechanism", "double-pendulum", "--compare", "2.theta"},
                  "--compare: '2.theta' is not NAME=VALUE"}));
 

@@ -85,7 +85,7 @@ TEST(RenderEquations, BadUseIsOneLineAndNoFile) {
        "linkage: error: --show: Case 1's equations (8 lines) do not fit a 480x270 frame at a legible size (9 px or "
        "more); use quality low (854x480) or a larger size\n"},
       {{"render", "--mechanism", "slider-crank", "--show", "equations,trail", "--out", out},
-       "linkage: error: --show: 'trail' applies to the homework only; with --mechanism --show takes only equations"},
+       "linkage: error: --show: 'trail' applies to the homework only; a mechanism's picture shows only equations"},
       {{"render", "--mechanism", "slider-crank", "--hide", "equations", "--out", out},
        "linkage: error: --hide: applies to the homework only"},
       {{"render", "--angles", "grad", "--out", out},
@@ -123,7 +123,10 @@ TEST(RenderEquations, LessonStepsShowThemHomeworkAndMechanism) {
   write_text(file, render_lesson("mechanism = \"slider-crank\"\nshow = [\"equations\", \"trail\"]"));
   const RunResult r = run_linkage({"lesson", file.string(), "--check"});
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("a mechanism's show takes only \"equations\""), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(":7:8: step 1 (render): show: 'trail' applies to the homework only; a mechanism's picture shows "
+                       "only equations"),
+            std::string::npos)
+      << r.err;
   write_text(file, render_lesson("angles = \"grad\""));
   const RunResult angles = run_linkage({"lesson", file.string(), "--check"});
   EXPECT_EQ(angles.exit_code, 2);
