@@ -1,7 +1,7 @@
 #pragma once
-// Every key a lesson file may hold, per table, with its type, default and meaning. The
-// parser accepts exactly these, and lessons/README.md documents exactly these (a test
-// checks that every key here appears there).
+// Every key a lesson file may hold, per table, with its type and default. The parser
+// accepts exactly these; lessons/README.md says what each means (a test checks that it
+// has a row for every key here, with this type and default).
 #include <span>
 #include <string_view>
 
@@ -25,7 +25,5 @@ namespace linkage::lesson {
 [[nodiscard]] std::span<const KeySpec> step_keys(std::string_view kind);
 /// Whether a kind of step takes the run keys.
 [[nodiscard]] bool takes_run_keys(std::string_view kind);
-/// One line saying what a kind of step does.
-[[nodiscard]] std::string_view step_summary(std::string_view kind);
 
 }  // namespace linkage::lesson

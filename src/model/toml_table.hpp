@@ -15,13 +15,12 @@
 
 namespace linkage {
 
-/// One allowed key of a table: its name, type, default and meaning (also the source of
-/// the format READMEs' tables, which tests keep in step).
+/// One allowed key of a table: its name, type and default, as a format's README lists
+/// them (tests keep the README's rows in step; the README says what each means).
 struct KeySpec {
   std::string_view name;
   std::string_view type;          // e.g. "string", "number", "list of strings"
   std::string_view default_text;  // e.g. "3", "(required)"
-  std::string_view doc;
 };
 
 /// "file:line:column" of a node; a region toml++ did not record (line 0) is 1:1, the
