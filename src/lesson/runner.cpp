@@ -3,23 +3,19 @@
 // step_runs.cpp and step_render.cpp.
 #include "lesson/runner.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <istream>
 #include <ostream>
-#include <sstream>
 
 #include "core/atomic_file.hpp"
 #include "core/content_hash.hpp"
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 #include "core/interrupt.hpp"
 #include "core/number_format.hpp"
 #include "lesson/runner_context.hpp"
@@ -229,17 +225,6 @@ void run_step(RunContext& c, const Step& step) {
 
 }  // namespace
 
-namespace {
-
-std::string read_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-}  // namespace
-
 RunSummary run_lesson(const Lesson& lesson, const RunnerOptions& options, std::istream& in, std::ostream& out,
                       std::ostream& status) {
   ensure_directory(options.out_dir, "out");
@@ -276,7 +261,7 @@ RunSummary run_lesson(const Lesson& lesson, const RunnerOptions& options, std::i
     write_file_atomically(c.summary.document, c.document->take(), "out");
     c.summary.handout = options.out_dir / "lesson.tex";
     const std::string tex = latex_document(c.handout->take());
-    const bool same = std::filesystem::exists(c.summary.handout) && read_file(c.summary.handout) == tex &&
+    const bool same = std::filesystem::exists(c.summary.handout) && read_file_text(c.summary.handout) == tex &&
                       std::filesystem::exists(options.out_dir / "lesson.pdf");
     write_file_atomically(c.summary.handout, tex, "out");
     if (same && options.pdf)
