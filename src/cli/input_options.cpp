@@ -25,22 +25,6 @@ void add_input_options(CLI::App* sub, InputOptions& options) {
   }
 }
 
-double parse_number(const std::string& text, const std::string& origin, const std::string& unit) {
-  double value = 0;
-  const char* first = text.data();
-  const char* last = text.data() + text.size();
-  if (!text.empty() && *first == '+') ++first;
-  const auto [ptr, ec] = std::from_chars(first, last, value);
-  if (ec == std::errc::result_out_of_range && ptr == last)
-    throw Error::input(origin + ": '" + text + "' is outside the range of double precision (about 1e-308 to 1e308)");
-  if (text.empty() || ec != std::errc() || ptr != last)
-    throw Error::input(origin + ": '" + text + "' is not a number" + (unit.empty() ? "" : " (" + unit + ")"));
-  if (!std::isfinite(value))
-    throw Error::input(origin + ": '" + text + "' is not a finite number; give a finite value" +
-                       (unit.empty() ? "" : " in " + unit));
-  return value;
-}
-
 std::string flag_name(std::string_view setting) {
   std::string flag = "--" + std::string(setting);
   std::replace(flag.begin() + 2, flag.end(), '_', '-');
@@ -69,17 +53,6 @@ Inputs resolve_inputs(const InputOptions& options) {
   }
   inputs.validate();
   return inputs;
-}
-
-std::vector<std::string> split_commas(const std::string& list) {
-  std::vector<std::string> items;
-  std::size_t at = 0;
-  while (!list.empty() && at <= list.size()) {
-    const std::size_t comma = std::min(list.find(',', at), list.size());
-    items.push_back(list.substr(at, comma - at));
-    at = comma + 1;
-  }
-  return items;
 }
 
 }  // namespace linkage::cli

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/parse_text.hpp"
 #include "model/inputs.hpp"
 
 namespace linkage::cli {
@@ -29,11 +30,5 @@ void add_input_options(CLI::App* sub, InputOptions& options);
 [[nodiscard]] std::string flag_name(std::string_view setting);
 /// An error as the command line says it: a setting's error names its flag.
 [[nodiscard]] std::string describe(const Error& error);
-
-/// Parses a whole-string finite double, or throws Error::input naming `origin`.
-/// "a,b,,c" -> {"a", "b", "", "c"} (an empty item stays, for the caller to refuse); "" -> {}.
-[[nodiscard]] std::vector<std::string> split_commas(const std::string& list);
-
-[[nodiscard]] double parse_number(const std::string& text, const std::string& origin, const std::string& unit);
 
 }  // namespace linkage::cli
