@@ -16,11 +16,11 @@
 #include "cli/commands.hpp"
 #include "cli/input_options.hpp"
 #include "cli/mechanism_options.hpp"
-#include "cli/overlay_options.hpp"
 #include "cli/simulation_flags.hpp"
 #include "core/error.hpp"
 #include "core/progress.hpp"
 #include "pipeline/clip.hpp"
+#include "pipeline/clip_request.hpp"
 #include "pipeline/mechanism_clip.hpp"
 #include "pipeline/render_options.hpp"
 #include "render/settings.hpp"
@@ -45,13 +45,6 @@ struct RenderFlags {
   std::vector<std::vector<std::string>> values = std::vector<std::vector<std::string>>(render_options().size());
   std::vector<CLI::Option*> flags;
 };
-
-bool given(const RenderFlags& f, std::string_view name) {
-  const std::span<const RenderOption> options = render_options();
-  for (std::size_t i = 0; i < options.size(); ++i)
-    if (options[i].name == name) return f.flags[i]->count() > 0;
-  return false;
-}
 
 /// The output --out names: by default linkage.mp4, unless only a PNG sequence was asked for.
 std::optional<fs::path> chosen_out(const RenderFlags& f) {
@@ -91,30 +84,29 @@ RenderRequest resolve_request(const RenderFlags& f) {
   }
 }
 
-/// The case's equations as `linkage solve --case N` prints them, for --show equations.
-EquationsText shown_equations(const sym::System& system, int case_id) {
-  CaseEquations e = case_equations(system, static_cast<CaseId>(case_id));
-  return {std::move(e.heading), std::move(e.lines)};
+/// Where the clip goes and how messages spell its flags.
+ClipPlan plan_of(const RenderFlags& f) {
+  ClipPlan plan;
+  if (!f.frames.empty()) plan.frames = fs::path(f.frames);
+  plan.out = chosen_out(f);
+  plan.assets = assets_dir(LINKAGE_ASSETS_DIR);
+  plan.equations = case_equations_as<EquationsText>;
+  plan.spell = [](std::string_view name) { return flag_name(name); };
+  return plan;
 }
 
-/// The clip the flags describe, checked before any work.
-Clip resolve_clip(const RenderFlags& f) {
-  Clip clip;
-  const RenderRequest request = resolve_request(f);
-  clip.settings = request.settings;
-  if (!f.frames.empty()) clip.frames = fs::path(f.frames);
-  clip.out = chosen_out(f);
-  clip.theme = load_theme(clip.settings.theme, assets_dir(LINKAGE_ASSETS_DIR), "theme");
-  clip.simulation = resolve_simulation_flags(f.simulation, clip.settings.duration);
-  clip.inputs = resolve_inputs(f.inputs);
-  if (clip.settings.elements.has(Element::equations))
-    clip.settings.equations =
-        shown_equations(sym::System(chosen_mechanism(f.mechanism, f.inputs)), clip.simulation.case_id);
-  resolve_homework_overlays(request, clip);
-  clip.validate();
-  const bool still = clip.is_still();
-  if (still && !clip.frames && f.duration_option->count() > 0 && !f.quiet)
+void note_duration(const RenderFlags& f, bool still, bool frames) {
+  if (still && !frames && f.duration_option->count() > 0 && !f.quiet)
     std::fprintf(stderr, "linkage: note: --duration applies to a clip; a still shows the time --at (default 0)\n");
+}
+
+/// The homework's clip the flags describe, checked before any work.
+Clip resolve_clip(const RenderFlags& f) {
+  const RenderRequest request = resolve_request(f);
+  const ClipPlan plan = plan_of(f);
+  const SimulationOptions simulation = resolve_simulation_flags(f.simulation, request.settings.duration);
+  const Clip clip = homework_clip(request, resolve_inputs(f.inputs), simulation, plan);
+  note_duration(f, clip.is_still(), clip.frames.has_value());
   if (!f.quiet) note_ignored_simulation_flags(f.simulation, clip.simulation);
   return clip;
 }
@@ -142,25 +134,13 @@ void print_stats(const RenderStats& s) {
 ClipResult render_mechanism(const RenderFlags& f, const ClipProgress& progress) {
   const RenderRequest request = resolve_request(f);
   const sym::System system(chosen_mechanism(f.mechanism, f.inputs));
-  MechanismClip clip;
-  clip.settings = request.settings;
-  if (!given(f, "title")) clip.settings.title = system.mechanism().title;
-  if (!f.frames.empty()) clip.frames = fs::path(f.frames);
-  clip.out = chosen_out(f);
-  clip.theme = load_theme(clip.settings.theme, assets_dir(LINKAGE_ASSETS_DIR), "theme");
-  clip.simulation = resolve_simulation_flags(f.simulation, clip.settings.duration);
-  clip.trails = request.trails;
-  std::unique_ptr<sym::System> compared;  // the compared run's own, when --compare sets a value
-  resolve_overlay_flags(request, f.mechanism, f.inputs, f.simulation, clip, compared);
-  if (clip.settings.elements.has(Element::equations))
-    clip.settings.equations = shown_equations(system, clip.simulation.case_id);
-  clip.validate(system);
-  const bool still = clip.is_still();
+  const ClipPlan plan = plan_of(f);
+  const SimulationOptions simulation = resolve_simulation_flags(f.simulation, request.settings.duration);
   const sym::ClosedState closed = sym::checked_initial_state(system);
-  if (clip.compare && clip.compare->system == nullptr) clip.compare->initial = closed.state;
+  const CheckedMechanismClip made = mechanism_clip(request, system, closed.state, simulation, plan);
+  const MechanismClip& clip = made.clip;
+  note_duration(f, clip.is_still(), clip.frames.has_value());
   if (!f.quiet) {
-    if (still && !clip.frames && f.duration_option->count() > 0)
-      std::fprintf(stderr, "linkage: note: --duration applies to a clip; a still shows the time --at (default 0)\n");
     // Only whether the case keeps any constraint matters to the notes: Case 1 keeps every
     // joint, Cases 2 and 3 the joints that close loops.
     int kept = 0;

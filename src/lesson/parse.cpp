@@ -16,19 +16,20 @@
 #include "encode/video_writer.hpp"
 #include "integrate/series.hpp"
 #include "lesson/lesson.hpp"
-#include "lesson/mechanism_render.hpp"
 #include "lesson/schema.hpp"
 #include "model/inputs_toml.hpp"
 #include "model/mechanism_toml.hpp"
 #include "model/name_match.hpp"
 #include "model/toml_table.hpp"
 #include "pipeline/clip.hpp"
+#include "pipeline/clip_request.hpp"
 #include "pipeline/panel_data.hpp"
 #include "pipeline/render_options.hpp"
 #include "pipeline/run_samples.hpp"
 #include "render/theme.hpp"
 #include "report/markdown.hpp"
 #include "report/mechanism_solution.hpp"
+#include "report/mechanism_text.hpp"
 #include "scene/scene_builder.hpp"
 #include "symbolic/loop_closure.hpp"
 #include "symbolic/system.hpp"
@@ -635,29 +636,30 @@ class Parser {
       target.still = is_still(s.kind);
       target.spell = [](std::string_view key) { return std::string(key); };
       target.with_mechanism = "a mechanism: give mechanism = \"NAME\" here or at the top";
-      RenderRequest request = resolve_render_options(given, target, base);
-      RenderSettings& g = s.settings = std::move(request.settings);
-      s.trails = std::move(request.trails);
+      const RenderRequest request = resolve_render_options(given, target, base);
+      s.trails = request.trails;
       s.ensemble = request.ensemble;
       s.spread = request.spread;
       s.compare = r.strings("compare").value_or(std::vector<std::string>{});
-      if (s.mechanism.empty() && g.elements.has(Element::equations)) {
-        g.equations = render_equations(sym::System(homework_mechanism(s.run.inputs)), s.run.options.case_id);
-        g.validate();  // the equations fit the frame
-      }
       if (is_still(s.kind) && r.has("duration"))
         r.fail("duration", "'duration' applies to a clip; a still (" + s.out + ") shows the time 'at'");
-      if (!s.mechanism.empty()) {
-        if (s.kind == OutputKind::svg || s.kind == OutputKind::pdf)
-          r.fail("out", "a mechanism's still is a .png (or a clip .mp4, .gif or .webm)");
-        // The whole mechanism checked now, so a bad lesson fails before any step runs.
-        const MechanismRender made = mechanism_render(s, r.where("set"));
-        if (!r.has("title")) g.title = made.system->mechanism().title;
+      if (!s.mechanism.empty() && (s.kind == OutputKind::svg || s.kind == OutputKind::pdf))
+        r.fail("out", "a mechanism's still is a .png (or a clip .mp4, .gif or .webm)");
+      // The whole clip checked now (its output by name), so a bad lesson fails before any
+      // step runs; the settings keep the mechanism's title and the equations shown.
+      ClipPlan plan;
+      plan.out = s.out;
+      plan.equations = case_equations_as<EquationsText>;
+      plan.compare_files = false;
+      if (s.run.built) {
+        plan.compare_origin = "compare";
+        s.settings =
+            mechanism_clip(request, *s.run.built->system, s.run.built->initial, s.run.options, plan).clip.settings;
+      } else {
+        plan.compare_origin = r.where("compare") + ": " + r.context() + ": compare";
+        s.settings = homework_clip(request, s.run.inputs, s.run.options, plan).settings;
       }
-      if (s.mechanism.empty() && !s.compare.empty())  // the homework's input names, checked now
-        (void)homework_compared_run(s.compare, s.run.inputs, s.run.options,
-                                    r.where("compare") + ": " + r.context() + ": compare");
-      if (is_video(s.kind)) VideoWriter::validate(clip_video_options(g, s.kind));
+      if (is_video(s.kind)) VideoWriter::validate(clip_video_options(s.settings, s.kind));
     } catch (const Error& e) {
       if (e.code() != ExitCode::bad_input) throw;
       const std::string what = e.what();

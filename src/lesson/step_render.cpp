@@ -1,80 +1,52 @@
-// The render step: the step's clip or still produced in process by the same pipeline as
-// the render command (src/pipeline), so a lesson's clips are exactly what it gives.
+// The render step: the step's clip or still assembled and produced in process by the same
+// pipeline as the render command (src/pipeline), so a lesson's clips are exactly what it gives.
 #include <algorithm>
 
-#include "core/error.hpp"
 #include "core/progress.hpp"
-#include "lesson/mechanism_render.hpp"
 #include "lesson/runner_context.hpp"
-#include "model/mechanism_toml.hpp"
-#include "render/frame_layout.hpp"
+#include "pipeline/clip_request.hpp"
 #include "report/mechanism_text.hpp"
-#include "symbolic/loop_closure.hpp"
 
 namespace linkage::lesson {
 
 namespace {
 
-// A draft previews the motion: equations that need a larger frame to be legible are left out.
-void draft_equations(RenderSettings& settings, Quality quality) {
-  if (quality != Quality::draft || !settings.elements.has(Element::equations)) return;
-  try {
-    (void)frame_bands(settings);
-  } catch (const Error&) {
-    settings.elements.hide(Element::equations);
+/// The step's request as render_options read it (parse_render): at draft quality 480x270
+/// and at most 15 fps.
+RenderRequest step_request(const RenderStep& render, Quality quality) {
+  RenderRequest request;
+  request.settings = render.settings;
+  request.titled = true;  // the mechanism's title, the default, was set when the lesson was read
+  request.trails = render.trails;
+  request.ensemble = render.ensemble;
+  request.spread = render.spread;
+  for (std::size_t i = 0; i < render.compare.size(); ++i)
+    request.compare.append(i > 0 ? "," : "").append(render.compare[i]);
+  if (quality == Quality::draft) {
+    request.settings.width = kDraftWidth;
+    request.settings.height = kDraftHeight;
+    request.settings.fps = std::min(render.settings.fps, kDraftFps);
   }
+  return request;
+}
+
+ClipPlan step_plan(const std::filesystem::path& out, const std::filesystem::path& assets, Quality quality) {
+  ClipPlan plan;
+  plan.out = out;
+  plan.assets = assets;
+  plan.equations = case_equations_as<EquationsText>;
+  plan.compare_origin = "compare";
+  plan.compare_files = false;
+  plan.draft = quality == Quality::draft;  // a draft previews the motion
+  return plan;
 }
 
 }  // namespace
 
 Clip render_clip(const RenderStep& render, Quality quality, const std::filesystem::path& out_dir,
                  const std::filesystem::path& assets) {
-  Clip clip;
-  clip.inputs = render.run.inputs;
-  clip.simulation = render.run.options;
-  clip.settings = render.settings;
-  if (quality == Quality::draft) {
-    clip.settings.width = kDraftWidth;
-    clip.settings.height = kDraftHeight;
-    clip.settings.fps = std::min(render.settings.fps, kDraftFps);
-  }
-  draft_equations(clip.settings, quality);
-  clip.theme = load_theme(clip.settings.theme, assets, "theme");
-  clip.out = out_dir / render.out;
-  if (render.mechanism.empty()) {  // a mechanism's are its own (mechanism_render)
-    clip.ensemble = render.ensemble;
-    clip.spread = render.spread;
-    if (!render.compare.empty())
-      clip.compare = homework_compared_run(render.compare, clip.inputs, clip.simulation, "compare");
-  }
-  return clip;
-}
-
-EquationsText render_equations(const sym::System& system, int case_id) {
-  CaseEquations e = case_equations(system, static_cast<CaseId>(case_id));
-  return {std::move(e.heading), std::move(e.lines)};
-}
-
-MechanismRender mechanism_render(const RenderStep& render, const std::string& origin) {
-  MechanismRender out;
-  Mechanism mechanism = load_mechanism(render.mechanism);
-  for (const std::string& setting : render.settings_list) apply_setting(mechanism, setting, origin);
-  out.system = std::make_unique<sym::System>(mechanism);
-  out.state = sym::checked_initial_state(*out.system).state;
-  out.clip.simulation = render.run.options;
-  out.clip.settings = render.settings;
-  out.clip.trails = render.trails;
-  out.clip.ensemble = render.ensemble;
-  out.clip.spread = render.spread;
-  if (!render.compare.empty()) {
-    out.clip.compare = mechanism_compared_run(render.compare, mechanism, render.run.options, "compare", out.compared);
-    if (!out.compared) out.clip.compare->initial = out.state;
-  }
-  if (out.clip.settings.elements.has(Element::equations))
-    out.clip.settings.equations = render_equations(*out.system, out.clip.simulation.case_id);
-  out.clip.out = render.out;  // checked by its name here; the step puts it in the output folder
-  out.clip.validate(*out.system);
-  return out;
+  return homework_clip(step_request(render, quality), render.run.inputs, render.run.options,
+                       step_plan(out_dir / render.out, assets, quality));
 }
 
 void run_render(RunContext& c, const Step& step, const RenderStep& s) {
@@ -85,19 +57,15 @@ void run_render(RunContext& c, const Step& step, const RenderStep& s) {
       if (!progress) progress.emplace("render " + s.out, total, "frames");
       progress->update(done);
     };
-    const Clip clip = render_clip(s, c.options.quality, c.options.out_dir, c.options.assets);
     ClipResult made;
-    if (s.mechanism.empty()) {
-      made = produce_clip(clip, report);
+    if (!s.run.built) {
+      made = produce_clip(render_clip(s, c.options.quality, c.options.out_dir, c.options.assets), report);
     } else {
-      MechanismRender m = mechanism_render(s, step.where);
-      EquationsText equations = std::move(m.clip.settings.equations);
-      m.clip.settings = clip.settings;  // the quality's size and frame rate
-      if (m.clip.settings.elements.has(Element::equations)) m.clip.settings.equations = std::move(equations);
-      draft_equations(m.clip.settings, c.options.quality);
-      m.clip.theme = clip.theme;
-      m.clip.out = clip.out;
-      made = produce_mechanism_clip(*m.system, m.state, m.clip, report);
+      const BuiltMechanism& built = *s.run.built;
+      const CheckedMechanismClip clip =
+          mechanism_clip(step_request(s, c.options.quality), *built.system, built.initial, s.run.options,
+                         step_plan(c.options.out_dir / s.out, c.options.assets, c.options.quality));
+      made = produce_mechanism_clip(*built.system, built.initial, clip.clip, report);
     }
     nlohmann::json made_results = nlohmann::json::object();
     if (!made.warnings.empty()) made_results["warnings"] = made.warnings;

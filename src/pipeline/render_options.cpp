@@ -28,17 +28,6 @@ namespace {
 
 constexpr std::array<std::string_view, 2> kMechanismArrowKinds{"joint", "applied"};
 
-/// "a,b,,c" -> {"a", "b", "", "c"} (an empty item stays, for its reader to refuse); "" -> {}.
-std::vector<std::string> split_commas(const std::string& list) {
-  std::vector<std::string> items;
-  for (std::size_t at = 0; !list.empty() && at <= list.size();) {
-    const std::size_t comma = std::min(list.find(',', at), list.size());
-    items.push_back(list.substr(at, comma - at));
-    at = comma + 1;
-  }
-  return items;
-}
-
 /// A whole-string finite number; `unit` words what it counts.
 double number(const std::string& text, const std::string& name, const std::string& unit) {
   double value = 0;
@@ -137,7 +126,10 @@ void theme(RenderDraft& d, const std::string& text) {
   d.request.settings.theme = text;
 }
 
-void title(RenderDraft& d, const std::string& text) { d.request.settings.title = text; }
+void title(RenderDraft& d, const std::string& text) {
+  d.request.settings.title = text;
+  d.request.titled = true;
+}
 
 void arrow_scale(RenderDraft& d, const std::string& text) {
   const std::span<const std::string_view> kinds = d.target.mechanism
@@ -251,6 +243,16 @@ std::vector<RenderOption> make_options() {
 }
 
 }  // namespace
+
+std::vector<std::string> split_commas(const std::string& list) {
+  std::vector<std::string> items;
+  for (std::size_t at = 0; !list.empty() && at <= list.size();) {
+    const std::size_t comma = std::min(list.find(',', at), list.size());
+    items.push_back(list.substr(at, comma - at));
+    at = comma + 1;
+  }
+  return items;
+}
 
 std::span<const RenderOption> render_options() {
   static const std::vector<RenderOption> options = make_options();

@@ -53,6 +53,7 @@ struct RenderRequest {
   int ensemble = 0;                 // 0, or 2 .. 200 runs
   double spread = 1e-6;
   std::string compare;  // as given: NAME=VALUE,..., a trajectory FILE.csv or a mechanism
+  bool titled = false;  // the title was given: a mechanism's own is not the default
 };
 
 /// Applies the `given` options (name, text) over `base` (its duration is the run's),
@@ -60,5 +61,8 @@ struct RenderRequest {
 /// equations shown and validates again). Error::invalid naming the option at fault.
 [[nodiscard]] RenderRequest resolve_render_options(const std::vector<std::pair<std::string, std::string>>& given,
                                                    const RenderTarget& target, RenderSettings base = {});
+
+/// "a,b,,c" -> {"a", "b", "", "c"} (an empty item stays, for its reader to refuse); "" -> {}.
+[[nodiscard]] std::vector<std::string> split_commas(const std::string& list);
 
 }  // namespace linkage

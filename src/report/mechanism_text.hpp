@@ -3,6 +3,7 @@
 // solution: inputs and definitions, inertia, each joint's constraint at three levels,
 // each body's forces, Newton-Euler per body, then each case and the agreement table.
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "report/mechanism_solution.hpp"
@@ -24,6 +25,13 @@ struct CaseEquations {
   std::vector<std::string> lines;
 };
 [[nodiscard]] CaseEquations case_equations(const sym::System& system, CaseId id);
+/// The same as a `Text` {heading, lines}: render's EquationsText, which report may not
+/// name, for `linkage render --show equations` and a lesson's render step alike.
+template <class Text>
+[[nodiscard]] Text case_equations_as(const sym::System& system, int case_id) {
+  CaseEquations e = case_equations(system, static_cast<CaseId>(case_id));
+  return Text{std::move(e.heading), std::move(e.lines)};
+}
 
 [[nodiscard]] std::string mechanism_text(const MechanismSolution& solution, const ReportOptions& options);
 

@@ -131,13 +131,13 @@ title = "A still"
   EXPECT_FALSE(r.settings.elements.has(Element::hud));
   EXPECT_TRUE(r.settings.elements.has(Element::blocks));
   // The clip the step makes is the render command's, at the step's settings.
-  const Clip clip = render_clip(r, Quality::final, "out");
+  const Clip clip = render_clip(r, Quality::final, dir.path());
   EXPECT_EQ(clip.settings.width, 640);
   EXPECT_EQ(clip.settings.theme, "dark");
   ASSERT_TRUE(clip.out.has_value());
-  EXPECT_EQ(*clip.out, std::filesystem::path("out") / "still.svg");
+  EXPECT_EQ(*clip.out, dir.path() / "still.svg");
   EXPECT_TRUE(clip.is_still());
-  const Clip draft = render_clip(r, Quality::draft, "out");
+  const Clip draft = render_clip(r, Quality::draft, dir.path());
   EXPECT_EQ(draft.settings.width, kDraftWidth);
   EXPECT_EQ(draft.settings.height, kDraftHeight);
 }
@@ -158,7 +158,7 @@ captions = [{at = 0, text = "The blocks start at rest."}, {at = 2.5, text = "Now
   EXPECT_EQ(r.settings.captions[1].at, 2.5);
   EXPECT_EQ(r.settings.captions[1].text, "Now watch the pin.");
   // The step's clip carries them to the pipeline, at any quality.
-  const Clip draft = render_clip(r, Quality::draft, "out");
+  const Clip draft = render_clip(r, Quality::draft, dir.path());
   EXPECT_EQ(draft.settings.captions.size(), 2u);
   EXPECT_EQ(draft.settings.panel.size(), 2u);
 }

@@ -1,0 +1,167 @@
+#include "pipeline/clip_request.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <vector>
+
+#include "core/error.hpp"
+#include "model/mechanism_toml.hpp"
+#include "model/name_match.hpp"
+#include "render/frame_layout.hpp"
+#include "render/theme.hpp"
+#include "symbolic/loop_closure.hpp"
+
+namespace linkage {
+namespace fs = std::filesystem;
+
+namespace {
+
+/// The last time drawn: the duration of a clip or frames, the time of a still, or both.
+double clip_end(const RenderSettings& s, bool still, bool frames) {
+  return std::max(still ? s.at : 0.0, !still || frames ? s.duration : 0.0);
+}
+
+bool is_still_out(const std::optional<fs::path>& out) { return out && out->extension() == ".png"; }
+
+/// The settings the clip draws: the request's, with the equations it shows; a draft
+/// leaves out equations that need a larger frame to be legible.
+RenderSettings shown_settings(RenderSettings settings, const sym::System& system, int case_id, const ClipPlan& plan) {
+  if (!settings.elements.has(Element::equations)) return settings;
+  settings.equations = plan.equations(system, case_id);
+  if (plan.draft) {
+    try {
+      (void)frame_bands(settings);
+    } catch (const Error&) {
+      settings.elements.hide(Element::equations);
+    }
+  }
+  return settings;
+}
+
+CompareKind kind_of(const std::string& compare, const ClipPlan& plan) {
+  return plan.compare_files ? compare_kind(compare) : CompareKind::settings;
+}
+
+/// Another mechanism drawn over the clip's (its bodies named as the clip's).
+MechanismRun compared_mechanism(const std::string& spec, const sym::System& system, const MechanismClip& clip,
+                                const ClipPlan& plan, std::unique_ptr<sym::System>& compared) {
+  const Mechanism& own = system.mechanism();
+  Mechanism other;
+  try {
+    other = load_mechanism(spec);
+  } catch (const Error& e) {
+    const std::string& setting = e.setting();
+    const bool identifier = !setting.empty() && std::all_of(setting.begin(), setting.end(), [](char c) {
+      return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+    });
+    throw Error::input(plan.compare_origin + ": " + (identifier ? plan.spell(setting) + ": " + e.detail() : e.what()));
+  }
+  std::vector<std::string> ours, theirs;
+  for (const Body& body : own.bodies) ours.push_back(body.name);
+  for (const Body& body : other.bodies) theirs.push_back(body.name);
+  if (ours != theirs) {
+    std::string message = plan.compare_origin;
+    message.append(" ").append(spec).append(": its bodies (").append(join_names(theirs, "")).append(") are not ");
+    message.append(own.name).append("'s (").append(join_names(ours, ""));
+    message.append("); a compared mechanism's bodies must be named as the clip's");
+    throw Error::input(message);
+  }
+  MechanismRun run;
+  run.simulation = clip.simulation;
+  run.label = other.name;
+  run.centred = true;
+  compared = std::make_unique<sym::System>(std::move(other));
+  run.system = compared.get();
+  run.initial = sym::checked_initial_state(*compared).state;
+  return run;
+}
+
+}  // namespace
+
+CompareKind compare_kind(const std::string& compare) {
+  if (compare.find('=') != std::string::npos) return CompareKind::settings;
+  const std::string extension = fs::path(compare).extension().string();
+  if (extension == ".csv") return CompareKind::trajectory;
+  if (extension == ".toml") return CompareKind::mechanism;
+  const std::vector<std::string> shipped = shipped_mechanism_names();
+  if (std::find(shipped.begin(), shipped.end(), compare) != shipped.end()) return CompareKind::mechanism;
+  return CompareKind::settings;
+}
+
+Clip homework_clip(const RenderRequest& request, const Inputs& inputs, const SimulationOptions& simulation,
+                   const ClipPlan& plan) {
+  Clip clip;
+  clip.frames = plan.frames;
+  clip.out = plan.out;
+  clip.theme = load_theme(request.settings.theme, plan.assets, "theme");
+  clip.simulation = simulation;
+  clip.inputs = inputs;
+  clip.settings = shown_settings(request.settings, sym::System(homework_mechanism(inputs)), simulation.case_id, plan);
+  clip.ensemble = request.ensemble;
+  clip.spread = request.spread;
+  const std::string& compare = request.compare;
+  if (!compare.empty()) {
+    switch (kind_of(compare, plan)) {
+      case CompareKind::trajectory: {
+        HomeworkRun run{clip.inputs, clip.simulation, fs::path(compare).filename().string(), nullptr};
+        run.table = std::make_shared<const TrajectoryTable>(read_homework_trajectory(
+            compare, plan.compare_origin, clip_end(clip.settings, clip.is_still(), clip.frames.has_value())));
+        clip.compare = std::move(run);
+        break;
+      }
+      case CompareKind::mechanism:
+        throw Error::input(plan.compare_origin + " " + compare +
+                           ": another mechanism applies with --mechanism; the homework compares settings "
+                           "(theta1=0.1000001, L=0.4, integrator=rk4, case=1) or a trajectory FILE.csv");
+      case CompareKind::settings:
+        clip.compare = homework_compared_run(split_commas(compare), clip.inputs, clip.simulation, plan.compare_origin);
+        break;
+    }
+  }
+  clip.validate();
+  return clip;
+}
+
+CheckedMechanismClip mechanism_clip(const RenderRequest& request, const sym::System& system,
+                                    const GiNaC::exmap& initial, const SimulationOptions& simulation,
+                                    const ClipPlan& plan) {
+  CheckedMechanismClip made;
+  MechanismClip& clip = made.clip;
+  clip.settings = request.settings;
+  if (!request.titled) clip.settings.title = system.mechanism().title;
+  clip.frames = plan.frames;
+  clip.out = plan.out;
+  clip.theme = load_theme(clip.settings.theme, plan.assets, "theme");
+  clip.simulation = simulation;
+  clip.trails = request.trails;
+  clip.ensemble = request.ensemble;
+  clip.spread = request.spread;
+  const std::string& compare = request.compare;
+  if (!compare.empty()) {
+    switch (kind_of(compare, plan)) {
+      case CompareKind::trajectory: {
+        MechanismRun run;
+        run.label = fs::path(compare).filename().string();
+        run.table = std::make_shared<const TrajectoryTable>(
+            read_trajectory_csv(compare, mechanism_pose_columns(mechanism_geometry(system)),
+                                plan.compare_origin + ", to draw the bodies of " + system.mechanism().name + ",", 0.0,
+                                clip_end(clip.settings, is_still_out(clip.out), clip.frames.has_value())));
+        clip.compare = std::move(run);
+        break;
+      }
+      case CompareKind::mechanism:
+        clip.compare = compared_mechanism(compare, system, clip, plan, made.compared);
+        break;
+      case CompareKind::settings:
+        clip.compare = mechanism_compared_run(split_commas(compare), system.mechanism(), clip.simulation,
+                                              plan.compare_origin, made.compared);
+        break;
+    }
+  }
+  clip.settings = shown_settings(std::move(clip.settings), system, simulation.case_id, plan);
+  clip.validate(system);
+  if (clip.compare && clip.compare->system == nullptr) clip.compare->initial = initial;
+  return made;
+}
+
+}  // namespace linkage
