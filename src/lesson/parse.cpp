@@ -645,10 +645,13 @@ class Parser {
         r.fail("duration", "'duration' applies to a clip; a still (" + s.out + ") shows the time 'at'");
       if (!s.mechanism.empty() && (s.kind == OutputKind::svg || s.kind == OutputKind::pdf))
         r.fail("out", "a mechanism's still is a .png (or a clip .mp4, .gif or .webm)");
-      // The whole clip checked now (its output by name), so a bad lesson fails before any
-      // step runs; the settings keep the mechanism's title and the equations shown.
+      // The whole clip checked now, so a bad lesson fails before any step runs; the settings
+      // keep the mechanism's title and the equations shown. Its output is checked by name:
+      // the folder is the runner's, known when the step runs (not the current one).
       ClipPlan plan;
-      plan.out = s.out;
+      std::error_code no_temp;
+      const fs::path temp = fs::temp_directory_path(no_temp);
+      plan.out = no_temp ? fs::path(s.out) : temp / s.out;
       plan.equations = case_equations_as<EquationsText>;
       plan.compare_files = false;
       if (s.run.built) {

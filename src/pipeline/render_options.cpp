@@ -8,6 +8,7 @@
 
 #include "core/angle_unit.hpp"
 #include "core/error.hpp"
+#include "core/parse_text.hpp"
 #include "pipeline/panel_data.hpp"
 #include "render/theme.hpp"
 #include "scene/arrow_scale.hpp"
@@ -27,23 +28,6 @@ struct RenderDraft {
 namespace {
 
 constexpr std::array<std::string_view, 2> kMechanismArrowKinds{"joint", "applied"};
-
-/// A whole-string finite number; `unit` words what it counts.
-double number(const std::string& text, const std::string& name, const std::string& unit) {
-  double value = 0;
-  const char* first = text.data();
-  const char* last = text.data() + text.size();
-  if (!text.empty() && *first == '+') ++first;
-  const auto [ptr, ec] = std::from_chars(first, last, value);
-  if (ec == std::errc::result_out_of_range && ptr == last)
-    throw Error::invalid(name, "'" + text + "' is outside the range of double precision (about 1e-308 to 1e308)");
-  if (text.empty() || ec != std::errc() || ptr != last)
-    throw Error::invalid(name, "'" + text + "' is not a number" + (unit.empty() ? "" : " (" + unit + ")"));
-  if (!std::isfinite(value))
-    throw Error::invalid(
-        name, "'" + text + "' is not a finite number; give a finite value" + (unit.empty() ? "" : " in " + unit));
-  return value;
-}
 
 /// Runs `parse`, whose errors are worded "NAME: ...", and makes them the setting's.
 template <typename Parse>
@@ -77,18 +61,18 @@ void size(RenderDraft& d, const std::string& text) {
 }
 
 void fps(RenderDraft& d, const std::string& text) {
-  const double value = number(text, "fps", "");
+  const double value = parse_number(text, "fps", "");
   if (value != std::floor(value) || std::fabs(value) > 1e9)
     throw Error::invalid("fps", "'" + text + "' is not a whole number");
   d.request.settings.fps = static_cast<int>(value);  // its range checked with the others
 }
 
 void speed(RenderDraft& d, const std::string& text) {
-  d.request.settings.speed = number(text, "speed", "simulated s per video s");
+  d.request.settings.speed = parse_number(text, "speed", "simulated s per video s");
 }
 
 void at(RenderDraft& d, const std::string& text) {
-  d.request.settings.at = number(text, "at", "s");
+  d.request.settings.at = parse_number(text, "at", "s");
   d.at = true;
 }
 
@@ -166,7 +150,7 @@ void spread(RenderDraft& d, const std::string& text) {
   const std::string range = "'" + text + "' must be a finite number > 0 (rad or m)";
   double value = 0;
   try {
-    value = number(text, "spread", "");
+    value = parse_number(text, "spread", "");
   } catch (const Error&) {
     throw Error::invalid("spread", range);
   }
@@ -243,16 +227,6 @@ std::vector<RenderOption> make_options() {
 }
 
 }  // namespace
-
-std::vector<std::string> split_commas(const std::string& list) {
-  std::vector<std::string> items;
-  for (std::size_t at = 0; !list.empty() && at <= list.size();) {
-    const std::size_t comma = std::min(list.find(',', at), list.size());
-    items.push_back(list.substr(at, comma - at));
-    at = comma + 1;
-  }
-  return items;
-}
 
 std::span<const RenderOption> render_options() {
   static const std::vector<RenderOption> options = make_options();

@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/parse_text.hpp"
 #include "render/settings.hpp"
 
 namespace linkage {
@@ -61,8 +62,5 @@ struct RenderRequest {
 /// equations shown and validates again). Error::invalid naming the option at fault.
 [[nodiscard]] RenderRequest resolve_render_options(const std::vector<std::pair<std::string, std::string>>& given,
                                                    const RenderTarget& target, RenderSettings base = {});
-
-/// "a,b,,c" -> {"a", "b", "", "c"} (an empty item stays, for its reader to refuse); "" -> {}.
-[[nodiscard]] std::vector<std::string> split_commas(const std::string& list);
 
 }  // namespace linkage
