@@ -17,6 +17,7 @@
 #include "lesson/expression.hpp"
 #include "lesson/text_template.hpp"
 #include "model/inputs.hpp"
+#include "pipeline/render_options.hpp"
 #include "pipeline/run.hpp"
 #include "render/plot.hpp"
 #include "render/settings.hpp"
@@ -71,19 +72,11 @@ struct SimulateStep {
 struct RenderStep {
   std::string out;  // file in the output folder
   std::string caption;
-  Run run;
-  RenderSettings settings;  // as written; --quality draft shrinks size and fps
+  Run run;  // on the homework, or on run.built's mechanism
   OutputKind kind = OutputKind::mp4;
-  // Any mechanism instead of the homework: a shipped name or a file's path, its
-  // NAME=VALUE settings and the BODY.POINT trails drawn.
-  std::string mechanism;
-  std::vector<std::string> settings_list;
-  std::vector<std::string> trails;
-  // Other runs drawn over the main one, as render --ensemble N --spread X and --compare:
-  // NAME=VALUE items (a set name, integrator=NAME, case=N).
-  int ensemble = 0;
-  double spread = 1e-6;
-  std::vector<std::string> compare;
+  // The picture as render_options read it (the settings with the mechanism's title and the
+  // equations shown, trails, ensemble, compare); --quality draft shrinks size and fps.
+  RenderRequest request;
 };
 struct PlotStep {
   std::string out;  // base name: out.png and out.svg

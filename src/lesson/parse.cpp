@@ -606,8 +606,6 @@ class Parser {
     s.out = artifact_name(r, "out");
     s.caption = r.string("caption").value_or("");
     s.run = step_run(r, inputs);
-    s.mechanism = s.run.mechanism;
-    s.settings_list = s.run.settings;
     // Each render option's TOML value as the text its flag would carry.
     std::vector<std::pair<std::string, std::string>> given;
     for (const RenderOption& o : render_options()) {
@@ -632,18 +630,14 @@ class Parser {
       base.duration = s.run.options.duration;
       base.captions = captions(r, s.kind, base.duration);
       RenderTarget target;
-      target.mechanism = !s.mechanism.empty();
+      target.mechanism = s.run.built != nullptr;
       target.still = is_still(s.kind);
       target.spell = [](std::string_view key) { return std::string(key); };
       target.with_mechanism = "a mechanism: give mechanism = \"NAME\" here or at the top";
-      const RenderRequest request = resolve_render_options(given, target, base);
-      s.trails = request.trails;
-      s.ensemble = request.ensemble;
-      s.spread = request.spread;
-      s.compare = r.strings("compare").value_or(std::vector<std::string>{});
+      RenderRequest& request = s.request = resolve_render_options(given, target, base);
       if (is_still(s.kind) && r.has("duration"))
         r.fail("duration", "'duration' applies to a clip; a still (" + s.out + ") shows the time 'at'");
-      if (!s.mechanism.empty() && (s.kind == OutputKind::svg || s.kind == OutputKind::pdf))
+      if (s.run.built && (s.kind == OutputKind::svg || s.kind == OutputKind::pdf))
         r.fail("out", "a mechanism's still is a .png (or a clip .mp4, .gif or .webm)");
       // The whole clip checked now, so a bad lesson fails before any step runs; the settings
       // keep the mechanism's title and the equations shown. Its output is checked by name:
@@ -656,13 +650,13 @@ class Parser {
       plan.compare_files = false;
       if (s.run.built) {
         plan.compare_origin = "compare";
-        s.settings =
+        request.settings =
             mechanism_clip(request, *s.run.built->system, s.run.built->initial, s.run.options, plan).clip.settings;
       } else {
         plan.compare_origin = r.where("compare") + ": " + r.context() + ": compare";
-        s.settings = homework_clip(request, s.run.inputs, s.run.options, plan).settings;
+        request.settings = homework_clip(request, s.run.inputs, s.run.options, plan).settings;
       }
-      if (is_video(s.kind)) VideoWriter::validate(clip_video_options(s.settings, s.kind));
+      if (is_video(s.kind)) VideoWriter::validate(clip_video_options(request.settings, s.kind));
     } catch (const Error& e) {
       if (e.code() != ExitCode::bad_input) throw;
       const std::string what = e.what();

@@ -11,21 +11,14 @@ namespace linkage::lesson {
 
 namespace {
 
-/// The step's request as render_options read it (parse_render): at draft quality 480x270
-/// and at most 15 fps.
+/// The step's request as parse_render read it: at draft quality 480x270 and at most 15 fps.
 RenderRequest step_request(const RenderStep& render, Quality quality) {
-  RenderRequest request;
-  request.settings = render.settings;
+  RenderRequest request = render.request;
   request.titled = true;  // the mechanism's title, the default, was set when the lesson was read
-  request.trails = render.trails;
-  request.ensemble = render.ensemble;
-  request.spread = render.spread;
-  for (std::size_t i = 0; i < render.compare.size(); ++i)
-    request.compare.append(i > 0 ? "," : "").append(render.compare[i]);
   if (quality == Quality::draft) {
     request.settings.width = kDraftWidth;
     request.settings.height = kDraftHeight;
-    request.settings.fps = std::min(render.settings.fps, kDraftFps);
+    request.settings.fps = std::min(render.request.settings.fps, kDraftFps);
   }
   return request;
 }

@@ -51,11 +51,11 @@ mechanism = "pendulum.toml"
   ASSERT_EQ(lesson.steps.size(), 2U);
   const auto& a = std::get<RenderStep>(lesson.steps[0].body);
   const auto& b = std::get<RenderStep>(lesson.steps[1].body);
-  EXPECT_EQ(a.mechanism, "four-bar");
-  EXPECT_EQ(a.trails, std::vector<std::string>{"3.B"});
-  EXPECT_EQ(a.settings.title, "Four-bar linkage: a Grashof crank-rocker");
-  EXPECT_EQ(fs::path(b.mechanism).filename(), "pendulum.toml");
-  EXPECT_EQ(b.settings.title, "Double pendulum: two uniform rods from a ground pin");
+  EXPECT_EQ(a.run.mechanism, "four-bar");
+  EXPECT_EQ(a.request.trails, std::vector<std::string>{"3.B"});
+  EXPECT_EQ(a.request.settings.title, "Four-bar linkage: a Grashof crank-rocker");
+  EXPECT_EQ(fs::path(b.run.mechanism).filename(), "pendulum.toml");
+  EXPECT_EQ(b.request.settings.title, "Double pendulum: two uniform rods from a ground pin");
   // The mechanism is part of the cached clip's key.
   EXPECT_NE(lesson.steps[0].canonical.find("mechanism=four-bar"), std::string::npos);
 }
@@ -119,12 +119,12 @@ out = "case.png"
 compare = ["case=1"]
 )");
   const auto& fan = std::get<RenderStep>(lesson.steps[0].body);
-  EXPECT_EQ(fan.ensemble, 5);
-  EXPECT_DOUBLE_EQ(fan.spread, 1e-4);
-  EXPECT_EQ(fan.compare, (std::vector<std::string>{"2.theta=-1.25", "integrator=rk4"}));
+  EXPECT_EQ(fan.request.ensemble, 5);
+  EXPECT_DOUBLE_EQ(fan.request.spread, 1e-4);
+  EXPECT_EQ(fan.request.compare, "2.theta=-1.25,integrator=rk4");
   // What they make of the clip is the pipeline's (tests/pipeline/clip_request_test.cpp).
   const auto& by_case = std::get<RenderStep>(lesson.steps[1].body);
-  EXPECT_EQ(by_case.compare, std::vector<std::string>{"case=1"});
+  EXPECT_EQ(by_case.request.compare, "case=1");
 }
 
 TEST(LessonMechanism, EnsembleAndCompareWorkOnTheHomeworkToo) {

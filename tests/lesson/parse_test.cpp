@@ -120,16 +120,16 @@ title = "A still"
 )");
   const auto& r = std::get<RenderStep>(lesson.steps[0].body);
   EXPECT_EQ(r.kind, OutputKind::svg);
-  EXPECT_EQ(r.settings.width, 640);
-  EXPECT_EQ(r.settings.height, 360);
-  EXPECT_EQ(r.settings.at, 1.5);
-  EXPECT_EQ(r.settings.camera, CameraMode::fixed);
-  EXPECT_EQ(r.settings.view.xmax, 2.0);
-  EXPECT_EQ(r.settings.theme, "dark");
-  EXPECT_EQ(r.settings.title, "A still");
-  EXPECT_TRUE(r.settings.elements.has(Element::velocity));
-  EXPECT_FALSE(r.settings.elements.has(Element::hud));
-  EXPECT_TRUE(r.settings.elements.has(Element::blocks));
+  EXPECT_EQ(r.request.settings.width, 640);
+  EXPECT_EQ(r.request.settings.height, 360);
+  EXPECT_EQ(r.request.settings.at, 1.5);
+  EXPECT_EQ(r.request.settings.camera, CameraMode::fixed);
+  EXPECT_EQ(r.request.settings.view.xmax, 2.0);
+  EXPECT_EQ(r.request.settings.theme, "dark");
+  EXPECT_EQ(r.request.settings.title, "A still");
+  EXPECT_TRUE(r.request.settings.elements.has(Element::velocity));
+  EXPECT_FALSE(r.request.settings.elements.has(Element::hud));
+  EXPECT_TRUE(r.request.settings.elements.has(Element::blocks));
   // The clip the step makes is the render command's, at the step's settings.
   const Clip clip = render_clip(r, Quality::final, dir.path());
   EXPECT_EQ(clip.settings.width, 640);
@@ -153,10 +153,10 @@ panel = ["theta1", "theta2"]
 captions = [{at = 0, text = "The blocks start at rest."}, {at = 2.5, text = "Now watch the pin."}]
 )");
   const auto& r = std::get<RenderStep>(lesson.steps[0].body);
-  EXPECT_EQ(r.settings.panel, (std::vector<std::string>{"theta1", "theta2"}));
-  ASSERT_EQ(r.settings.captions.size(), 2u);
-  EXPECT_EQ(r.settings.captions[1].at, 2.5);
-  EXPECT_EQ(r.settings.captions[1].text, "Now watch the pin.");
+  EXPECT_EQ(r.request.settings.panel, (std::vector<std::string>{"theta1", "theta2"}));
+  ASSERT_EQ(r.request.settings.captions.size(), 2u);
+  EXPECT_EQ(r.request.settings.captions[1].at, 2.5);
+  EXPECT_EQ(r.request.settings.captions[1].text, "Now watch the pin.");
   // The step's clip carries them to the pipeline, at any quality.
   const Clip draft = render_clip(r, Quality::draft, dir.path());
   EXPECT_EQ(draft.settings.captions.size(), 2u);
