@@ -118,7 +118,6 @@ struct Lesson {
   std::string title;
   TextTemplate description;
   Inputs inputs;          // at the start
-  std::string mechanism;  // render steps' default: a shipped name or a file's path; empty for the homework
   std::vector<Step> steps;
 
   /// Every artifact file the lesson declares, relative to the output folder.

@@ -139,7 +139,6 @@ class Parser {
     inputs.validate();
     lesson.inputs = inputs;
     if (auto m = top.string("mechanism")) lesson_mechanism_ = mechanism_spec(top, "mechanism", *m);
-    lesson.mechanism = lesson_mechanism_;
     if (!lesson_mechanism_.empty())
       at_keys({&top}, [&] {
         const auto built = build(lesson_mechanism_, {}, top.where("mechanism"));
