@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/name_match.hpp"
 #include "model/mechanism_toml.hpp"
-#include "model/name_match.hpp"
 #include "report/notation.hpp"
 #include "symbolic/loop_closure.hpp"
 
