@@ -13,6 +13,7 @@
 #include "cli/commands.hpp"
 #include "cli/step_range.hpp"
 #include "core/error.hpp"
+#include "core/name_match.hpp"
 #include "core/program_path.hpp"
 #include "lesson/lesson.hpp"
 #include "lesson/runner.hpp"
@@ -55,7 +56,8 @@ void run_lesson_command(const LessonOptions& o) {
   else if (o.quality == "final")
     options.quality = lesson::Quality::final;
   else
-    throw Error::input("--quality: '" + o.quality + "' is not a quality; valid: draft, final");
+    throw Error::input("--quality: '" + o.quality + "' is not a quality" + did_you_mean(o.quality, {"draft", "final"}) +
+                       "; valid: draft, final");
   if (o.format == "text")
     options.format = DocumentFormat::text;
   else if (o.format == "markdown")

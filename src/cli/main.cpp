@@ -15,8 +15,8 @@
 #include "cli/input_options.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
+#include "core/name_match.hpp"
 #include "linkage/version.hpp"
-#include "model/name_match.hpp"
 
 namespace {
 

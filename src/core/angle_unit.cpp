@@ -3,6 +3,7 @@
 #include <numbers>
 
 #include "core/error.hpp"
+#include "core/name_match.hpp"
 
 namespace linkage {
 namespace {
@@ -16,7 +17,9 @@ AngleUnit parse_angle_unit(std::string_view text, const std::string& origin) {
   std::string message = origin;
   message += ": '";
   message += text;
-  message += "' is not an angle unit; valid: rad, deg";
+  message += "' is not an angle unit";
+  message += did_you_mean(text, {"rad", "deg"});
+  message += "; valid: rad, deg";
   throw Error::input(message);
 }
 

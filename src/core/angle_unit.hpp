@@ -8,7 +8,8 @@ namespace linkage {
 
 enum class AngleUnit { rad, deg };
 
-/// "rad" or "deg"; Error::input naming `origin` and both choices otherwise.
+/// "rad" or "deg"; Error::input naming `origin`, the nearer choice for a typo and both
+/// choices otherwise.
 [[nodiscard]] AngleUnit parse_angle_unit(std::string_view text, const std::string& origin);
 
 /// The factor a value in `unit` (e.g. "rad", "rad/s", "rad/s^2", "m") is multiplied by

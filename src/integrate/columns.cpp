@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/error.hpp"
+#include "core/name_match.hpp"
 #include "model/kinematics.hpp"
 
 namespace linkage {
@@ -13,19 +14,18 @@ std::vector<Column> parse_columns(std::string_view list, const std::string& orig
     for (const ColumnInfo& c : kColumns) columns.push_back(c.column);
     return columns;
   }
-  auto valid = [] {
-    std::string names = "all";
-    for (const ColumnInfo& c : kColumns) names += ", " + std::string(c.name);
-    return names;
-  };
   std::size_t start = 0;
   while (start <= list.size()) {
     const std::size_t comma = std::min(list.find(',', start), list.size());
     const std::string_view name = list.substr(start, comma - start);
     const auto found =
         std::find_if(kColumns.begin(), kColumns.end(), [&](const ColumnInfo& c) { return c.name == name; });
-    if (found == kColumns.end())
-      throw Error::invalid(origin, "'" + std::string(name) + "' is not a column; valid: " + valid());
+    if (found == kColumns.end()) {
+      std::vector<std::string> names{"all"};
+      for (const ColumnInfo& c : kColumns) names.emplace_back(c.name);
+      throw Error::invalid(origin, "'" + std::string(name) + "' is not a column" + did_you_mean(name, names) +
+                                       "; valid: " + join_names(names));
+    }
     if (std::find(columns.begin(), columns.end(), found->column) != columns.end())
       throw Error::invalid(origin, "column '" + std::string(name) + "' is listed twice");
     columns.push_back(found->column);

@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
-#include "model/name_match.hpp"
+#include "core/name_match.hpp"
 
 namespace linkage {
 

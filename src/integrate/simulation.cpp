@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
+#include "core/name_match.hpp"
 #include "core/number_format.hpp"
 #include "integrate/adaptive_rk.hpp"
 #include "integrate/dop853.hpp"
@@ -71,19 +72,23 @@ const IntegratorInfo& info(IntegratorKind kind) {
 }
 
 IntegratorKind parse_integrator(std::string_view name, const std::string& origin) {
-  std::string valid;
+  std::vector<std::string> names;
   for (const IntegratorInfo& i : kIntegrators) {
     if (i.name == name) return i.kind;
-    valid += (valid.empty() ? "" : ", ") + std::string(i.name);
+    names.emplace_back(i.name);
   }
-  throw Error::invalid(origin, "'" + std::string(name) + "' is not an integrator; valid: " + valid);
+  throw Error::invalid(origin, "'" + std::string(name) + "' is not an integrator" + did_you_mean(name, names) +
+                                   "; valid: " + join_names(names));
 }
 
 Stabilization parse_stabilization(std::string_view name, const std::string& origin) {
-  for (const auto& [kind, spelling] : kStabilizations)
+  std::vector<std::string> names;
+  for (const auto& [kind, spelling] : kStabilizations) {
     if (spelling == name) return kind;
-  throw Error::invalid(origin,
-                       "'" + std::string(name) + "' is not a stabilization; valid: none, baumgarte, projection");
+    names.emplace_back(spelling);
+  }
+  throw Error::invalid(origin, "'" + std::string(name) + "' is not a stabilization" + did_you_mean(name, names) +
+                                   "; valid: " + join_names(names));
 }
 
 std::string_view name(Stabilization s) {

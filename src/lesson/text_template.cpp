@@ -5,8 +5,8 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/name_match.hpp"
 #include "core/number_format.hpp"
-#include "model/name_match.hpp"
 #include "report/markdown.hpp"
 
 namespace linkage::lesson {

@@ -9,10 +9,12 @@
 
 namespace linkage {
 
-/// Applies every key of `table`; an unknown key (with the closest valid one), a value
-/// that is not a number, or a non-finite number is an Error::input naming
-/// file:line:column.
-void apply_toml(Inputs& inputs, const toml::table& table, const std::string& file);
+/// Applies every key of `table` (in file order), read by TableReader: an unknown key (with
+/// the closest valid one), a value that is not a number, or a non-finite number is an
+/// Error::input "file:line:column: CONTEXT: problem". `context` names the table: "config"
+/// for a --config file, "[parameters]" or "[state]" for a lesson's.
+void apply_toml(Inputs& inputs, const toml::table& table, const std::string& file,
+                const std::string& context = "inputs");
 
 /// "a string", "an integer", "a table", ... for "must be a number, got ..." messages.
 [[nodiscard]] std::string type_phrase(const toml::node& node);

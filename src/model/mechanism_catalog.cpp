@@ -8,10 +8,10 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/input_file.hpp"
+#include "core/name_match.hpp"
 #include "linkage/embedded_mechanisms.hpp"
 #include "model/inputs.hpp"
 #include "model/mechanism_toml.hpp"
-#include "model/name_match.hpp"
 
 namespace linkage {
 

@@ -4,9 +4,9 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/name_match.hpp"
 #include "core/number_format.hpp"
 #include "model/mechanism_toml.hpp"
-#include "model/name_match.hpp"
 #include "model/spanning_tree.hpp"
 
 namespace linkage {

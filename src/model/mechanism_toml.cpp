@@ -12,9 +12,9 @@
 #include <utility>
 
 #include "core/error.hpp"
+#include "core/name_match.hpp"
 #include "core/number_format.hpp"
 #include "model/inputs_toml.hpp"
-#include "model/name_match.hpp"
 #include "model/toml_table.hpp"
 
 namespace linkage {

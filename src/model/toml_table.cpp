@@ -5,10 +5,10 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "core/name_match.hpp"
 #include "core/number_format.hpp"
 #include "model/inputs.hpp"
 #include "model/inputs_toml.hpp"
-#include "model/name_match.hpp"
 
 namespace linkage {
 namespace {

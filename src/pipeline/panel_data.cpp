@@ -5,8 +5,8 @@
 
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
+#include "core/name_match.hpp"
 #include "integrate/series.hpp"
-#include "model/name_match.hpp"
 
 namespace linkage {
 namespace {

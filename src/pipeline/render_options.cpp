@@ -103,10 +103,7 @@ void hide(RenderDraft& d, const std::string& text) {
 }
 
 void theme(RenderDraft& d, const std::string& text) {
-  const std::string names = theme_name_list();
-  const std::string quoted = ", " + names + ",";
-  if (text.empty() || text.find(',') != std::string::npos || quoted.find(", " + text + ",") == std::string::npos)
-    throw Error::invalid("theme", "'" + text + "' is not a theme; valid: " + names);
+  check_theme_name(text, "theme");
   d.request.settings.theme = text;
 }
 

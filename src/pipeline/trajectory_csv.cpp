@@ -9,8 +9,8 @@
 #include <string_view>
 
 #include "core/error.hpp"
+#include "core/name_match.hpp"
 #include "core/number_format.hpp"
-#include "model/name_match.hpp"
 
 namespace linkage {
 namespace {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/name_match.hpp"
 #include "core/number_format.hpp"
 #include "render/frame_layout.hpp"
 
@@ -89,12 +90,15 @@ void RenderSettings::validate() const {
 
 const Quality& parse_quality(std::string_view name, const std::string& origin) {
   std::string valid;
+  std::vector<std::string> names;
   for (const Quality& q : kQualities) {
     if (q.name == name) return q;
     valid += std::string(valid.empty() ? "" : ", ") + std::string(q.name) + " (" + std::to_string(q.width) + "x" +
              std::to_string(q.height) + "@" + std::to_string(q.fps) + ")";
+    names.emplace_back(q.name);
   }
-  throw Error::invalid(origin, "'" + std::string(name) + "' is not a quality; valid: " + valid);
+  throw Error::invalid(
+      origin, "'" + std::string(name) + "' is not a quality" + did_you_mean(name, names) + "; valid: " + valid);
 }
 
 void parse_size(std::string_view text, const std::string& origin, int& width, int& height) {
@@ -115,7 +119,8 @@ CameraMode parse_camera(std::string_view name, const std::string& origin) {
   if (name == "follow") return CameraMode::follow;
   if (name == "fixed") return CameraMode::fixed;
   if (name == "fit") return CameraMode::fit;
-  throw Error::invalid(origin, "'" + std::string(name) + "' is not a camera; valid: follow, fixed, fit");
+  throw Error::invalid(origin, "'" + std::string(name) + "' is not a camera" +
+                                   did_you_mean(name, {"follow", "fixed", "fit"}) + "; valid: follow, fixed, fit");
 }
 
 View parse_view(std::string_view text, const std::string& origin) {

@@ -7,16 +7,16 @@
 #include <fstream>
 #include <sstream>
 #include <utility>
+#include <vector>
 
 #include "core/error.hpp"
+#include "core/name_match.hpp"
 #include "linkage/embedded_themes.hpp"
+#include "model/inputs_toml.hpp"
+#include "model/toml_table.hpp"
 
 namespace linkage {
 namespace {
-
-std::string position(const std::string& source, const toml::source_region& region) {
-  return source + ":" + std::to_string(region.begin.line) + ":" + std::to_string(region.begin.column);
-}
 
 int hex_digit(char c) {
   if (c >= '0' && c <= '9') return c - '0';
@@ -65,19 +65,34 @@ constexpr std::array<std::pair<std::string_view, Accessor>, 17> kColourKeys{{
 }};
 #undef LINKAGE_COLOUR
 
-std::string all_keys() {
-  std::string list;
-  for (const auto& [key, accessor] : kColourKeys) list += std::string(list.empty() ? "" : ", ") + std::string(key);
-  return list;
+// The [colors] keys for TableReader: every one required.
+const std::array<KeySpec, kColourKeys.size()>& colour_specs() {
+  static const auto specs = [] {
+    std::array<KeySpec, kColourKeys.size()> out{};
+    for (std::size_t i = 0; i < kColourKeys.size(); ++i)
+      out[i] = {kColourKeys[i].first, "colour", "(required)", "\"#RRGGBB\" or \"#RRGGBBAA\""};
+    return out;
+  }();
+  return specs;
+}
+
+constexpr std::array<KeySpec, 1> kTopKeys{{{"colors", "table", "(required)", "the palette"}}};
+
+std::vector<std::string> theme_names() {
+  std::vector<std::string> names;
+  for (const EmbeddedTheme& theme : kEmbeddedThemes) names.emplace_back(theme.name);
+  return names;
 }
 
 }  // namespace
 
-std::string theme_name_list() {
-  std::string list;
-  for (const EmbeddedTheme& theme : kEmbeddedThemes)
-    list += std::string(list.empty() ? "" : ", ") + std::string(theme.name);
-  return list;
+std::string theme_name_list() { return join_names(theme_names()); }
+
+void check_theme_name(std::string_view name, const std::string& origin) {
+  const std::vector<std::string> names = theme_names();
+  if (std::find(names.begin(), names.end(), name) == names.end())
+    throw Error::invalid(origin, "'" + std::string(name) + "' is not a theme" + did_you_mean(name, names) +
+                                     "; valid: " + join_names(names));
 }
 
 Theme parse_theme(std::string_view toml_text, const std::string& name, const std::string& source) {
@@ -87,30 +102,31 @@ Theme parse_theme(std::string_view toml_text, const std::string& name, const std
   } catch (const toml::parse_error& e) {
     throw Error::input(position(source, e.source()) + ": " + std::string(e.description()));
   }
-  for (const auto& [key, node] : root)
-    if (key.str() != "colors")
-      throw Error::input(position(source, key.source()) + ": unknown key '" + std::string(key.str()) +
-                         "'; a theme has only a [colors] table");
-  const toml::table* colours = root["colors"].as_table();
-  if (colours == nullptr) throw Error::input(source + ": no [colors] table");
+  const TableReader top(root, source, "theme", kTopKeys);
+  top.reject_unknown_keys();
+  top.require("colors", "[colors] with background = \"#FFFFFF\"");
+  const TableReader colours(*top.subtable("colors"), source, "[colors]", colour_specs());
+  colours.reject_unknown_keys();
 
   Theme theme;
   theme.name = name;
-  for (const auto& [key, node] : *colours) {
-    const auto known =
-        std::find_if(kColourKeys.begin(), kColourKeys.end(), [&](const auto& k) { return k.first == key.str(); });
-    if (known == kColourKeys.end())
-      throw Error::input(position(source, key.source()) + ": unknown colour '" + std::string(key.str()) +
-                         "'; valid: " + all_keys());
-    const auto* text = node.as_string();
-    if (text == nullptr || !parse_colour(text->get(), known->second(theme)))
-      throw Error::input(position(source, node.source()) + ": " + std::string(key.str()) +
-                         " must be a colour \"#RRGGBB\" or \"#RRGGBBAA\"");
+  for (const auto& [key, accessor] : kColourKeys) {
+    const toml::node* node = colours.node(key);
+    if (node == nullptr) continue;  // reported below, all at once
+    std::string quoted(1, '\'');    // appended: "literal" + std::string trips GCC 12's -Wrestrict
+    quoted += key;
+    quoted += '\'';
+    const auto* text = node->as_string();
+    if (text == nullptr)
+      colours.fail(key, quoted + " must be a colour \"#RRGGBB\" or \"#RRGGBBAA\", got " + type_phrase(*node));
+    if (!parse_colour(text->get(), accessor(theme)))
+      colours.fail(key, quoted + " = '" + text->get() + "' is not a colour; valid: \"#RRGGBB\" or \"#RRGGBBAA\"");
   }
-  std::string missing;
+  std::vector<std::string> missing;
   for (const auto& [key, accessor] : kColourKeys)
-    if (!colours->contains(key)) missing += std::string(missing.empty() ? "" : ", ") + std::string(key);
-  if (!missing.empty()) throw Error::input(source + ": [colors] is missing " + missing);
+    if (!colours.has(key)) missing.emplace_back(key);
+  if (!missing.empty())
+    colours.fail_at(colours.table(), "missing " + join_names(missing) + "; a theme sets every colour");
   return theme;
 }
 
@@ -123,6 +139,7 @@ std::filesystem::path assets_dir(const std::filesystem::path& built_in) {
 }
 
 Theme load_theme(std::string_view name, const std::filesystem::path& assets, const std::string& origin) {
+  check_theme_name(name, origin);
   for (const EmbeddedTheme& embedded : kEmbeddedThemes) {
     if (embedded.name != name) continue;
     const std::filesystem::path file =
@@ -137,7 +154,7 @@ Theme load_theme(std::string_view name, const std::filesystem::path& assets, con
     }
     return parse_theme(embedded.toml, std::string(name), "embedded themes/" + std::string(name) + ".toml");
   }
-  throw Error::invalid(origin, "'" + std::string(name) + "' is not a theme; valid: " + theme_name_list());
+  throw Error::failure(origin, "theme '" + std::string(name) + "' is not embedded");  // checked above
 }
 
 }  // namespace linkage

@@ -25,9 +25,13 @@ struct Theme {
 /// The themes shipped: light, dark, print.
 [[nodiscard]] std::string theme_name_list();
 
+/// Throws Error::invalid naming `origin` unless `name` is a shipped theme, with the
+/// nearest name for a typo.
+void check_theme_name(std::string_view name, const std::string& origin);
+
 /// Parses a palette; `source` names it in errors ("assets/themes/dark.toml"). Throws
-/// Error::input naming source:line:column for a syntax error, an unknown or missing key,
-/// or a colour that is not "#RRGGBB" / "#RRGGBBAA".
+/// Error::input "source:line:column: CONTEXT: problem" (TableReader's form) for a syntax
+/// error, an unknown or missing key, or a colour that is not "#RRGGBB" / "#RRGGBBAA".
 [[nodiscard]] Theme parse_theme(std::string_view toml_text, const std::string& name, const std::string& source);
 
 /// The assets folder: $LINKAGE_ASSETS_DIR when set, else `built_in` (the source tree's

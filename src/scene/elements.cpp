@@ -1,6 +1,7 @@
 #include "scene/elements.hpp"
 
 #include "core/error.hpp"
+#include "core/name_match.hpp"
 
 namespace linkage {
 
@@ -29,9 +30,13 @@ std::string element_name_list() {
 }
 
 Element parse_element(std::string_view text, const std::string& origin) {
-  for (const ElementInfo& info : kElements)
+  std::vector<std::string> names;
+  for (const ElementInfo& info : kElements) {
     if (info.name == text) return info.element;
-  throw Error::invalid(origin, "'" + std::string(text) + "' is not an element; valid: " + element_name_list());
+    names.emplace_back(info.name);
+  }
+  throw Error::invalid(origin, "'" + std::string(text) + "' is not an element" + did_you_mean(text, names) +
+                                   "; valid: " + element_name_list());
 }
 
 namespace {

@@ -7,7 +7,7 @@
 
 #include "core/error.hpp"
 #include "core/limits.hpp"
-#include "model/name_match.hpp"
+#include "core/name_match.hpp"
 
 namespace linkage::sym {
 namespace {

@@ -70,9 +70,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{{"--speed", "0"}, "--speed: 0 must be a positive number"},
         BadInput{{"--duration", "0.001"}, "is less than one frame"},
         BadInput{{"--show", "arrows"}, "--show: 'arrows' is not an element; valid: blocks, pin, pin-force, gravity"},
-        BadInput{{"--hide", "grid,legnd"}, "--hide: 'legnd' is not an element"},
+        BadInput{{"--hide", "grid,legnd"}, "--hide: 'legnd' is not an element (did you mean 'legend'?); valid: "},
         BadInput{{"--theme", "neon"}, "--theme: 'neon' is not a theme; valid: dark, light, print"},
         BadInput{{"--camera", "orbit"}, "--camera: 'orbit' is not a camera; valid: follow, fixed, fit"},
+        BadInput{{"--camera", "folow"}, "--camera: 'folow' is not a camera (did you mean 'follow'?); valid: follow"},
+        BadInput{{"--quality", "hgh"}, "--quality: 'hgh' is not a quality (did you mean 'high'?); valid: low"},
+        BadInput{{"--theme", "lihgt"}, "--theme: 'lihgt' is not a theme (did you mean 'light'?); valid: dark"},
         BadInput{{"--camera", "fixed"}, "--camera: fixed needs --view xmin,ymin,xmax,ymax"},
         BadInput{{"--view", "0,0,1,0"}, "--view: '0,0,1,0' has zero or negative area"},
         BadInput{{"--view", "0,0,1"}, "is not xmin,ymin,xmax,ymax"},
@@ -126,7 +129,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "--compare: '2.thet' (--compare 2.thet) is not a parameter or initial coordinate of "
                  "'double-pendulum' (did you mean '2.theta'?)"},
         BadInput{{"--mechanism", "double-pendulum", "--compare", "integrator=rk5"},
-                 "--compare: integrator: 'rk5' is not an integrator; valid: "},
+                 "--compare: integrator: 'rk5' is not an integrator (did you mean 'rk4'?); valid: "},
         BadInput{{"--mechanism", "double-pendulum", "--compare", "2.theta"},
                  "--compare: '2.theta' is not NAME=VALUE"}));
 

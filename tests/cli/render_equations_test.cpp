@@ -89,7 +89,7 @@ TEST(RenderEquations, BadUseIsOneLineAndNoFile) {
       {{"render", "--mechanism", "slider-crank", "--hide", "equations", "--out", out},
        "linkage: error: --hide: applies to the homework only"},
       {{"render", "--angles", "grad", "--out", out},
-       "linkage: error: --angles: 'grad' is not an angle unit; valid: rad, deg\n"},
+       "linkage: error: --angles: 'grad' is not an angle unit (did you mean 'rad'?); valid: rad, deg\n"},
   };
   for (const Bad& bad : cases) {
     SCOPED_TRACE(bad.args[2]);

@@ -222,7 +222,9 @@ TEST(SimulateCli, AnglesInDegreesScaleAngleColumnsAndSayTheUnit) {
   EXPECT_NEAR(j["rows"][0][2].get<double>(), 5.729577951308232, 1e-12);
   const RunResult bad = run_linkage({"simulate", "--angles", "grad"});
   EXPECT_EQ(bad.exit_code, 2);
-  EXPECT_NE(bad.err.find("--angles: 'grad' is not an angle unit; valid: rad, deg"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("--angles: 'grad' is not an angle unit (did you mean 'rad'?); valid: rad, deg"),
+            std::string::npos)
+      << bad.err;
   EXPECT_TRUE(bad.out.empty());
 }
 

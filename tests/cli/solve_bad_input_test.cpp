@@ -104,13 +104,14 @@ TEST(SolveBadInput, ConfigFileErrorsNameFileLineColumnAndValidKeys) {
   const std::string pin = file("pin.toml", "b = 0.5\n");
   std::filesystem::create_directories(dir / "folder.toml");
   const std::vector<BadInput> cases = {
-      {{"--config", misspelt}, {misspelt + ":2:3: unknown key 'thetta1'", "did you mean 'theta1'?", valid_keys}},
-      {{"--config", unknown}, {unknown + ":2:1: unknown key 'colour'", valid_keys}},
-      {{"--config", case_key}, {case_key + ":1:1: unknown key 'Theta1'", "did you mean 'theta1'?", valid_keys}},
-      {{"--config", table}, {table + ":1:2: unknown key 'inputs'", valid_keys}},
-      {{"--config", nan}, {nan + ":1:5", "g = nan", "not a finite number"}},
-      {{"--config", inf}, {inf + ":1:5", "m = -inf", "not a finite number"}},
-      {{"--config", text}, {text + ":1:5", "m must be a number in kg, got a string"}},
+      {{"--config", misspelt},
+       {misspelt + ":2:3: config: unknown key 'thetta1'", "did you mean 'theta1'?", valid_keys}},
+      {{"--config", unknown}, {unknown + ":2:1: config: unknown key 'colour'", valid_keys}},
+      {{"--config", case_key}, {case_key + ":1:1: config: unknown key 'Theta1'", "did you mean 'theta1'?", valid_keys}},
+      {{"--config", table}, {table + ":1:2: config: unknown key 'inputs'", valid_keys}},
+      {{"--config", nan}, {nan + ":1:5", "config: 'g' = nan is not a finite number"}},
+      {{"--config", inf}, {inf + ":1:5", "config: 'm' = -inf is not a finite number"}},
+      {{"--config", text}, {text + ":1:5", "config: 'm' must be a number in kg, got a string"}},
       {{"--config", negative}, {negative + ":2:5", "m = -1 kg", "must be > 0"}},
       {{"--config", syntax}, {syntax + ":2:"}},
       {{"--config", pin}, {pin + ":1:5", "b = 0.5 m", "[0, L] = [0, 0.3] m"}},

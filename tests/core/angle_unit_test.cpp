@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <numbers>
+#include <utility>
 
 #include "core/error.hpp"
 
@@ -34,6 +35,17 @@ TEST(AngleUnit, ParsesRadAndDegAndNamesTheFlagOtherwise) {
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ExitCode::bad_input);
     EXPECT_STREQ(e.what(), "--angles: 'degrees' is not an angle unit; valid: rad, deg");
+  }
+  // A typo gets the nearer unit (a lesson's `angles = "degs"` reads through here too).
+  for (const auto& [typo, message] :
+       {std::pair{"degs", "angles: 'degs' is not an angle unit (did you mean 'deg'?); valid: rad, deg"},
+        std::pair{"RAD", "angles: 'RAD' is not an angle unit (did you mean 'rad'?); valid: rad, deg"}}) {
+    try {
+      (void)parse_angle_unit(typo, "angles");
+      ADD_FAILURE() << typo << " accepted";
+    } catch (const Error& e) {
+      EXPECT_STREQ(e.what(), message);
+    }
   }
 }
 

@@ -470,10 +470,31 @@ TEST(SimulationOptions, ParsesNamesAndListsTheValidOnes) {
     FAIL();
   } catch (const Error& e) {
     EXPECT_EQ(std::string(e.what()),
-              "--integrator: 'rk45' is not an integrator; valid: euler, symplectic-euler, rk4, "
+              "--integrator: 'rk45' is not an integrator (did you mean 'rk4'?); valid: euler, symplectic-euler, rk4, "
               "dopri5, dop853, gauss-legendre");
   }
-  EXPECT_THROW((void)parse_stabilization("baumgärte", "--stabilize"), Error);
+  const auto message = [](auto parse) {
+    try {
+      (void)parse();
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(message([] { return parse_integrator("euler", "x"); }), "accepted");
+  EXPECT_NE(message([] {
+              return parse_integrator("dorpi5", "integrator");
+            }).find("integrator: 'dorpi5' is not an integrator (did you mean 'dopri5'?); valid: euler,"),
+            std::string::npos);
+  EXPECT_EQ(message([] { return parse_integrator("leapfrog", "integrator"); }),
+            "integrator: 'leapfrog' is not an integrator; valid: euler, symplectic-euler, rk4, dopri5, dop853, "
+            "gauss-legendre");
+  EXPECT_EQ(message([] { return parse_stabilization("baumgärte", "--stabilize"); }),
+            "--stabilize: 'baumgärte' is not a stabilization (did you mean 'baumgarte'?); valid: none, baumgarte, "
+            "projection");
+  EXPECT_EQ(message([] { return parse_stabilization("projektion", "--stabilize"); }),
+            "--stabilize: 'projektion' is not a stabilization (did you mean 'projection'?); valid: none, baumgarte, "
+            "projection");
 }
 
 }  // namespace

@@ -8,8 +8,8 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/name_match.hpp"
 #include "lesson/text_template.hpp"
-#include "model/name_match.hpp"
 #include "support/test_support.hpp"
 
 namespace linkage::lesson {

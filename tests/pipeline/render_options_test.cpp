@@ -109,13 +109,31 @@ TEST(RenderOptions, CameraAndView) {
   EXPECT_EQ(error_of({{"camera", "orbit"}}), "camera|'orbit' is not a camera; valid: follow, fixed, fit");
 }
 
+// A lesson's render keys and the CLI's flags read through these: a typo gets the nearest name.
+TEST(RenderOptions, MisspeltWordsSuggestTheNearestValidOne) {
+  EXPECT_EQ(error_of({{"camera", "folow"}}),
+            "camera|'folow' is not a camera (did you mean 'follow'?); valid: follow, "
+            "fixed, fit");
+  EXPECT_EQ(error_of({{"quality", "hgh"}}),
+            "quality|'hgh' is not a quality (did you mean 'high'?); valid: low "
+            "(854x480@30), medium (1280x720@30), high (1920x1080@60), 4k (3840x2160@60)");
+  EXPECT_EQ(error_of({{"angles", "degs"}}),
+            "angles|'degs' is not an angle unit (did you mean 'deg'?); valid: rad, deg");
+  EXPECT_EQ(error_of({{"theme", "drak"}}),
+            "theme|'drak' is not a theme (did you mean 'dark'?); valid: dark, light, "
+            "print");
+  EXPECT_EQ(error_of({{"show", "velocty"}}).rfind("show|'velocty' is not an element (did you mean 'velocity'?)", 0),
+            0U);
+}
+
 TEST(RenderOptions, BadValuesNameTheirOptionAndTheRange) {
   EXPECT_EQ(error_of({{"fps", "29.97"}}), "fps|'29.97' is not a whole number");
   EXPECT_EQ(error_of({{"fps", "500"}}), "fps|500 is outside 1 .. 240");
   EXPECT_EQ(error_of({{"speed", "fast"}}), "speed|'fast' is not a number (simulated s per video s)");
   EXPECT_EQ(error_of({{"theme", "neon"}}), "theme|'neon' is not a theme; valid: dark, light, print");
   EXPECT_EQ(error_of({{"theme", "dark,light"}}), "theme|'dark,light' is not a theme; valid: dark, light, print");
-  EXPECT_EQ(error_of({{"angles", "grad"}}), "angles|'grad' is not an angle unit; valid: rad, deg");
+  EXPECT_EQ(error_of({{"angles", "grad"}}),
+            "angles|'grad' is not an angle unit (did you mean 'rad'?); valid: rad, deg");
   EXPECT_EQ(error_of({{"ensemble", "201"}}), "ensemble|'201' is not a whole number of runs in 2 .. 200");
   EXPECT_EQ(error_of({{"ensemble", "4"}, {"spread", "0"}}), "spread|'0' must be a finite number > 0 (rad or m)");
   EXPECT_EQ(error_of({{"spread", "1e-3"}}), "spread|applies only with --ensemble N");

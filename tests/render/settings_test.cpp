@@ -91,6 +91,13 @@ TEST(RenderSettings, ViewsCamerasQualitiesAndExtensions) {
   EXPECT_EQ(parse_quality("low", "--quality").width, 854);
   EXPECT_NE(input_error([] { (void)parse_quality("ultra", "--quality"); }).find("medium (1280x720@30)"),
             std::string::npos);
+  // A typo gets the nearest name, whether from a flag or a lesson's render key.
+  EXPECT_EQ(input_error([] { (void)parse_camera("folow", "camera"); }),
+            "camera: 'folow' is not a camera (did you mean 'follow'?); valid: follow, fixed, fit");
+  EXPECT_EQ(input_error([] { (void)parse_quality("hgh", "--quality"); }),
+            "--quality: 'hgh' is not a quality (did you mean 'high'?); valid: low (854x480@30), medium (1280x720@30), "
+            "high (1920x1080@60), 4k (3840x2160@60)");
+  EXPECT_EQ(input_error([] { (void)parse_quality("ultra", "--quality"); }).find("did you mean"), std::string::npos);
   EXPECT_EQ(output_kind("a/b.svg", "--out"), OutputKind::svg);
   EXPECT_EQ(output_kind("clip.mp4", "--out"), OutputKind::mp4);
   EXPECT_EQ(output_kind("clip.gif", "--out"), OutputKind::gif);

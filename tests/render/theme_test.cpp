@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 #include "core/error.hpp"
@@ -57,20 +58,45 @@ TEST(Theme, UnknownThemeNamesTheChoices) {
   } catch (const Error& e) {
     EXPECT_EQ(std::string(e.what()), "--theme: 'neon' is not a theme; valid: dark, light, print");
   }
+  // The render option's check (flag or lesson key) and load_theme give the same words.
+  for (const auto& check : {std::function<void()>([] { check_theme_name("lihgt", "theme"); }),
+                            std::function<void()>([] { (void)load_theme("lihgt", {}, "theme"); })}) {
+    try {
+      check();
+      FAIL();
+    } catch (const Error& e) {
+      EXPECT_EQ(std::string(e.what()),
+                "theme: 'lihgt' is not a theme (did you mean 'light'?); valid: dark, light, print");
+    }
+  }
+  EXPECT_THROW(check_theme_name("", "theme"), Error);
+  EXPECT_THROW(check_theme_name("dark,light", "theme"), Error);
+  EXPECT_NO_THROW(check_theme_name("print", "theme"));
 }
 
 TEST(Theme, BadPalettesNameFileLineAndColumn) {
   std::string light(kEmbeddedThemes[1].toml);
   EXPECT_EQ(error_of(light), "");
-  EXPECT_NE(error_of("[colors]\nbackground = \"#FFFFFF\"\nvelocty = \"#000000\"\n")
-                .find("t.toml:3:1: unknown colour 'velocty'"),
-            std::string::npos);
-  EXPECT_NE(error_of("[colors]\nbackground = \"#FFF\"\n").find("t.toml:2:14: background must be a colour"),
-            std::string::npos);
-  EXPECT_NE(error_of("[colors]\nbackground = 3\n").find("must be a colour"), std::string::npos);
-  EXPECT_NE(error_of("[colors]\nbackground = \"#FFFFFF\"\n").find("is missing grid, text"), std::string::npos);
+  // Read by TableReader: "file:line:column: context: problem; valid ...".
+  EXPECT_EQ(error_of("[colors]\nbackground = \"#FFFFFF\"\nvelocty = \"#000000\"\n"),
+            "t.toml:3:1: [colors]: unknown key 'velocty' (did you mean 'velocity'?); valid keys: background, grid, "
+            "text, text_muted, panel, panel_edge, block1_fill, block1_edge, block2_fill, block2_edge, pin_fill, "
+            "pin_edge, pin_force, gravity, velocity, trail, com");
+  EXPECT_EQ(error_of("[colors]\nbackground = \"#FFF\"\n"),
+            "t.toml:2:14: [colors]: 'background' = '#FFF' is not a colour; valid: \"#RRGGBB\" or \"#RRGGBBAA\"");
+  EXPECT_EQ(error_of("[colors]\nbackground = 3\n"),
+            "t.toml:2:14: [colors]: 'background' must be a colour \"#RRGGBB\" or \"#RRGGBBAA\", got an integer");
+  EXPECT_EQ(error_of("[colors]\nbackground = \"#FFFFFF\"\n"),
+            "t.toml:1:1: [colors]: missing grid, text, text_muted, panel, panel_edge, block1_fill, block1_edge, "
+            "block2_fill, block2_edge, pin_fill, pin_edge, pin_force, gravity, velocity, trail, com; a theme sets "
+            "every colour");
   EXPECT_NE(error_of("[colors\n").find("t.toml:1:"), std::string::npos);
-  EXPECT_NE(error_of("[fonts]\n").find("unknown key 'fonts'"), std::string::npos);
+  EXPECT_EQ(error_of("[fonts]\n"), "t.toml:1:2: theme: unknown key 'fonts'; valid keys: colors");
+  EXPECT_EQ(error_of("[colours]\n"),
+            "t.toml:1:2: theme: unknown key 'colours' (did you mean 'colors'?); valid keys: colors");
+  EXPECT_EQ(error_of("# nothing\n"),
+            "t.toml:1:1: theme: the key 'colors' is required, e.g. [colors] with background = \"#FFFFFF\"");
+  EXPECT_EQ(error_of("colors = 3\n"), "t.toml:1:10: theme: 'colors' must be a table, got an integer");
 }
 
 }  // namespace

@@ -42,6 +42,12 @@ TEST(Elements, UnknownNameNamesFlagAndChoices) {
     EXPECT_NE(message.find("pin-force"), std::string::npos) << message;
   }
   EXPECT_THROW(apply_show_hide(set, {"blocks,"}, {}), Error);  // an empty name
+  try {
+    apply_show_hide(set, {"velocty"}, {});
+    FAIL() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.detail(), "'velocty' is not an element (did you mean 'velocity'?); valid: " + element_name_list());
+  }
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-#include "model/name_match.hpp"
+#include "core/name_match.hpp"
 
 #include <algorithm>
 #include <cctype>

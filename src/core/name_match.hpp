@@ -1,5 +1,6 @@
 #pragma once
-// "Did you mean ...?" and name lists for messages (the mechanism reader, lessons).
+// "Did you mean ...?" and name lists for messages: the TOML readers, the value parsers of
+// flags and keys (camera, quality, angles, integrator, ...), lessons.
 #include <optional>
 #include <string>
 #include <string_view>
