@@ -117,7 +117,7 @@ struct Lesson {
   std::string name;  // the file's stem, e.g. "06-numerical-example"
   std::string title;
   TextTemplate description;
-  Inputs inputs;          // at the start
+  Inputs inputs;  // at the start
   std::vector<Step> steps;
 
   /// Every artifact file the lesson declares, relative to the output folder.

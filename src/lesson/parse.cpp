@@ -12,6 +12,7 @@
 #include "core/content_hash.hpp"
 #include "core/error.hpp"
 #include "core/input_file.hpp"
+#include "core/name_match.hpp"
 #include "core/number_format.hpp"
 #include "encode/video_writer.hpp"
 #include "integrate/series.hpp"
@@ -19,7 +20,6 @@
 #include "lesson/schema.hpp"
 #include "model/inputs_toml.hpp"
 #include "model/mechanism_toml.hpp"
-#include "model/name_match.hpp"
 #include "model/toml_table.hpp"
 #include "pipeline/clip.hpp"
 #include "pipeline/clip_request.hpp"
@@ -229,7 +229,7 @@ class Parser {
         throw Error::input(
             position(file_text_, name.source()) + ": lesson: '" + std::string(name.str()) + "' is " +
             (parameters ? "a state value; put it under [state]" : "a parameter; put it under [parameters]"));
-    apply_toml(inputs, *n->as_table(), file_text_);
+    apply_toml(inputs, *n->as_table(), file_text_, parameters ? "[parameters]" : "[state]");
   }
 
   Step parse_step(const toml::table& table, int number, Inputs& inputs) {

@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/name_match.hpp"
 #include "model/mechanism_toml.hpp"
-#include "model/name_match.hpp"
 #include "render/frame_layout.hpp"
 #include "render/theme.hpp"
 #include "symbolic/loop_closure.hpp"

@@ -69,14 +69,13 @@ constexpr std::array<std::pair<std::string_view, Accessor>, 17> kColourKeys{{
 const std::array<KeySpec, kColourKeys.size()>& colour_specs() {
   static const auto specs = [] {
     std::array<KeySpec, kColourKeys.size()> out{};
-    for (std::size_t i = 0; i < kColourKeys.size(); ++i)
-      out[i] = {kColourKeys[i].first, "colour", "(required)", "\"#RRGGBB\" or \"#RRGGBBAA\""};
+    for (std::size_t i = 0; i < kColourKeys.size(); ++i) out[i] = {kColourKeys[i].first, "colour", "(required)"};
     return out;
   }();
   return specs;
 }
 
-constexpr std::array<KeySpec, 1> kTopKeys{{{"colors", "table", "(required)", "the palette"}}};
+constexpr std::array<KeySpec, 1> kTopKeys{{{"colors", "table", "(required)"}}};
 
 std::vector<std::string> theme_names() {
   std::vector<std::string> names;
