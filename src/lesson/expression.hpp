@@ -1,7 +1,8 @@
 #pragma once
 // Exercise answers and {{...}} in lesson text: the mechanism files' expression language
-// (symbolic/expression_reader.hpp) over the names of quantities.hpp, read once (names
-// resolved, errors found at validation) and evaluated at each step's values.
+// (symbolic/expression_reader.hpp) over the homework's quantities
+// (formulations/homework_quantities.hpp) and a mechanism's quotable values, read once
+// (names resolved, errors found at validation) and evaluated at each step's values.
 #include <map>
 #include <memory>
 #include <string>
