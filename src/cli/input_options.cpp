@@ -32,11 +32,7 @@ std::string flag_name(std::string_view setting) {
 }
 
 std::string describe(const Error& error) {
-  const std::string& setting = error.setting();
-  const bool identifier = !setting.empty() && std::all_of(setting.begin(), setting.end(), [](char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
-  });
-  return identifier ? flag_name(setting) + ": " + error.detail() : error.what();
+  return error.setting_is_name() ? flag_name(error.setting()) + ": " + error.detail() : error.what();
 }
 
 Inputs resolve_inputs(const InputOptions& options) {

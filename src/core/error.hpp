@@ -6,6 +6,8 @@
 // "theta1_dot") and the detail ("0 s is out of range; valid: ..."). Only the reader of
 // the setting phrases where it came from: the CLI as a flag (--dt: ...), a lesson as
 // FILE:LINE:COLUMN and its key. Lower modules never name a flag.
+#include <algorithm>
+#include <cctype>
 #include <stdexcept>
 #include <string>
 
@@ -32,6 +34,13 @@ class Error : public std::runtime_error {
   [[nodiscard]] int exit_status() const noexcept { return signal_ != 0 ? 128 + signal_ : static_cast<int>(code_); }
   /// The setting the error is about (neutral name), or empty when the message is whole.
   [[nodiscard]] const std::string& setting() const noexcept { return setting_; }
+  /// Whether the setting is a neutral name ("dt", "arrow_scale") that a reader spells its
+  /// own way (--dt, a lesson key), not a phrase already said as the user wrote it.
+  [[nodiscard]] bool setting_is_name() const noexcept {
+    return !setting_.empty() && std::all_of(setting_.begin(), setting_.end(), [](char c) {
+      return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+    });
+  }
   /// The message without the setting's name.
   [[nodiscard]] const std::string& detail() const noexcept { return detail_; }
 

@@ -1,7 +1,6 @@
 #include "pipeline/clip_request.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <vector>
 
 #include "core/error.hpp"
@@ -21,13 +20,13 @@ double clip_end(const RenderSettings& s, bool still, bool frames) {
   return std::max(still ? s.at : 0.0, !still || frames ? s.duration : 0.0);
 }
 
-bool is_still_out(const std::optional<fs::path>& out) { return out && out->extension() == ".png"; }
-
-/// The settings the clip draws: the request's, with the equations it shows; a draft
-/// leaves out equations that need a larger frame to be legible.
-RenderSettings shown_settings(RenderSettings settings, const sym::System& system, int case_id, const ClipPlan& plan) {
+/// The settings the clip draws: the request's, with the equations it shows (made only
+/// then: `equations` derives the case); a draft leaves out equations that need a larger
+/// frame to be legible.
+RenderSettings shown_settings(RenderSettings settings, const std::function<EquationsText()>& equations,
+                              const ClipPlan& plan) {
   if (!settings.elements.has(Element::equations)) return settings;
-  settings.equations = plan.equations(system, case_id);
+  settings.equations = equations();
   if (plan.draft) {
     try {
       (void)frame_bands(settings);
@@ -50,11 +49,8 @@ MechanismRun compared_mechanism(const std::string& spec, const sym::System& syst
   try {
     other = load_mechanism(spec);
   } catch (const Error& e) {
-    const std::string& setting = e.setting();
-    const bool identifier = !setting.empty() && std::all_of(setting.begin(), setting.end(), [](char c) {
-      return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
-    });
-    throw Error::input(plan.compare_origin + ": " + (identifier ? plan.spell(setting) + ": " + e.detail() : e.what()));
+    throw Error::input(plan.compare_origin + ": " +
+                       (e.setting_is_name() ? plan.spell(e.setting()) + ": " + e.detail() : e.what()));
   }
   std::vector<std::string> ours, theirs;
   for (const Body& body : own.bodies) ours.push_back(body.name);
@@ -96,7 +92,9 @@ Clip homework_clip(const RenderRequest& request, const Inputs& inputs, const Sim
   clip.theme = load_theme(request.settings.theme, plan.assets, "theme");
   clip.simulation = simulation;
   clip.inputs = inputs;
-  clip.settings = shown_settings(request.settings, sym::System(homework_mechanism(inputs)), simulation.case_id, plan);
+  clip.settings = shown_settings(
+      request.settings, [&] { return plan.equations(sym::System(homework_mechanism(inputs)), simulation.case_id); },
+      plan);
   clip.ensemble = request.ensemble;
   clip.spread = request.spread;
   const std::string& compare = request.compare;
@@ -145,7 +143,7 @@ CheckedMechanismClip mechanism_clip(const RenderRequest& request, const sym::Sys
         run.table = std::make_shared<const TrajectoryTable>(
             read_trajectory_csv(compare, mechanism_pose_columns(mechanism_geometry(system)),
                                 plan.compare_origin + ", to draw the bodies of " + system.mechanism().name + ",", 0.0,
-                                clip_end(clip.settings, is_still_out(clip.out), clip.frames.has_value())));
+                                clip_end(clip.settings, clip.is_still(), clip.frames.has_value())));
         clip.compare = std::move(run);
         break;
       }
@@ -158,7 +156,8 @@ CheckedMechanismClip mechanism_clip(const RenderRequest& request, const sym::Sys
         break;
     }
   }
-  clip.settings = shown_settings(std::move(clip.settings), system, simulation.case_id, plan);
+  clip.settings = shown_settings(
+      std::move(clip.settings), [&] { return plan.equations(system, simulation.case_id); }, plan);
   clip.validate(system);
   if (clip.compare && clip.compare->system == nullptr) clip.compare->initial = initial;
   return made;

@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "lesson/lesson.hpp"
+#include "lesson/lesson_text.hpp"
 #include "lesson/runner.hpp"
 #include "support/test_support.hpp"
 
@@ -14,12 +15,8 @@ namespace linkage::lesson {
 namespace {
 
 namespace fs = std::filesystem;
-
-Lesson parse_text(const test::TempDir& dir, const std::string& text) {
-  const fs::path file = dir / "lesson.toml";
-  test::write_text(file, text);
-  return parse_lesson(file);
-}
+using test_text::error_of;
+using test_text::parse_text;
 
 TEST(LessonParse, StepsCarryTheInputsEarlierSetStepsMade) {
   test::TempDir dir;

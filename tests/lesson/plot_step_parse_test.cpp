@@ -7,12 +7,15 @@
 
 #include "core/error.hpp"
 #include "lesson/lesson.hpp"
+#include "lesson/lesson_text.hpp"
 #include "support/test_support.hpp"
 
 namespace linkage::lesson {
 namespace {
 
 namespace fs = std::filesystem;
+using test_text::error_of;
+using test_text::parse_text;
 
 std::string plot_lesson(const std::string& keys) {
   return "title = \"d\"\nmechanism = \"double-pendulum\"\n[[step]]\nkind = \"plot\"\nout = \"d\"\ny = \"2.theta\"\n"
@@ -20,28 +23,15 @@ std::string plot_lesson(const std::string& keys) {
          keys;
 }
 
-std::string parse_error(const std::string& text) {
-  test::TempDir dir;
-  const fs::path file = dir / "d.toml";
-  test::write_text(file, text);
-  try {
-    (void)parse_lesson(file);
-  } catch (const Error& e) {
-    EXPECT_EQ(e.code(), ExitCode::bad_input);
-    return e.what();
-  }
-  return "";
-}
-
 TEST(PlotStepParse, DifferenceIsRefusedWithoutARunToCompare) {
-  EXPECT_NE(parse_error(plot_lesson("")).find("'difference' needs two runs or more"), std::string::npos);
-  EXPECT_NE(parse_error(plot_lesson("x = \"1.theta\"\nruns = [{label = \"a\"}, {label = \"b\"}]\n")).find("remove 'x'"),
+  EXPECT_NE(error_of(plot_lesson("")).find("'difference' needs two runs or more"), std::string::npos);
+  EXPECT_NE(error_of(plot_lesson("x = \"1.theta\"\nruns = [{label = \"a\"}, {label = \"b\"}]\n")).find("remove 'x'"),
             std::string::npos);
   // A fixed-step run on another grid samples other times.
   const std::string grids =
       "runs = [{label = \"a\", integrator = \"rk4\", dt = 0.01}, {label = \"b\", integrator = \"rk4\", dt = 0.003}]\n"
       "every = 0.01\n";
-  EXPECT_NE(parse_error(plot_lesson(grids)).find("run 'b' is sampled at other times than run 'a'"), std::string::npos);
+  EXPECT_NE(error_of(plot_lesson(grids)).find("run 'b' is sampled at other times than run 'a'"), std::string::npos);
   // Two runs on the same times: accepted.
   test::TempDir dir;
   test::write_text(dir / "ok.toml",
