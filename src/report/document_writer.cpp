@@ -1,9 +1,10 @@
 #include "report/document_writer.hpp"
 
-#include <cstdlib>
+#include <chrono>
 #include <system_error>
 
 #include "core/error.hpp"
+#include "core/run_program.hpp"
 #include "report/latex_math.hpp"
 #include "report/markdown.hpp"
 #include "report/mechanism_latex.hpp"
@@ -13,6 +14,9 @@
 
 namespace linkage {
 namespace {
+
+// A handout compiles in seconds; a document that loops (TeX can) is stopped.
+constexpr std::chrono::seconds kPdfTimeout{120};
 
 // The table as a Markdown pipe table: the first column left, the others right.
 std::string pipe_table(const ResultTable& table) {
@@ -212,26 +216,26 @@ std::string latex_document(const std::string& body) {
 
 std::filesystem::path compile_latex_pdf(const std::filesystem::path& tex) {
   // Made under a temporary job name and renamed, so a failed run leaves no partial PDF
-  // (and its log as NAME.log, which the error names).
+  // (and its log as NAME.log, which the error names). The lesson text in the document may
+  // come from anyone: no shell escape (\write18), and no shell reading the command.
   const std::filesystem::path dir = tex.parent_path().empty() ? "." : tex.parent_path();
   const std::string stem = tex.stem().string();
   const std::string job = stem + "-pdf-partial";  // not a dot file: TeX refuses to write those
-  auto quoted = [](const std::string& text) {
-    std::string out = "'";
-    for (const char ch : text) out += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
-    return out + "'";
-  };
-  const std::string command = "cd " + quoted(dir.string()) +
-                              " && pdflatex -interaction=nonstopmode -halt-on-error -jobname=" + job + " " +
-                              quoted(tex.filename().string()) + " < /dev/null > /dev/null 2>&1";
-  const int result = std::system(command.c_str());
+  ProgramRun run;
+  run.argv = {"pdflatex",       "-no-shell-escape", "-interaction=nonstopmode",
+              "-halt-on-error", "-jobname=" + job,  tex.filename().string()};
+  run.directory = dir;
+  run.timeout = kPdfTimeout;
+  const ProgramResult result = run_program(run);
   std::error_code ignored;
   for (const char* ext : {".aux", ".out"}) std::filesystem::remove(dir / (job + ext), ignored);
   const std::filesystem::path log = dir / (stem + ".log");
-  if (result != 0 || !std::filesystem::exists(dir / (job + ".pdf"))) {
+  if (!result.succeeded() || !std::filesystem::exists(dir / (job + ".pdf"))) {
     std::filesystem::remove(dir / (job + ".pdf"), ignored);
     std::filesystem::rename(dir / (job + ".log"), log, ignored);
-    throw Error::failure("--pdf: pdflatex could not compile " + tex.string() + "; its log is " + log.string());
+    throw Error::failure("pdf", "pdflatex could not compile " + tex.string() +
+                                    (result.timed_out ? " within " + std::to_string(kPdfTimeout.count()) + " s" : "") +
+                                    "; its log is " + log.string());
   }
   std::filesystem::remove(dir / (job + ".log"), ignored);
   std::filesystem::remove(log, ignored);

@@ -9,6 +9,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "core/program_path.hpp"
 #include "support/test_support.hpp"
@@ -53,6 +55,38 @@ TEST(LessonHandout, BuildsThePdfBothWaysAndEachCaptionShowsOnce) {
   const std::string seen = test::read_text(dir / "lesson.txt");
   for (const char* caption : {"The instant section 6 solves for, as a vector figure for handouts."})
     EXPECT_EQ(count(seen, caption), 1) << caption << "\n" << seen;
+}
+
+// The handout is compiled with no shell and no shell escape: a lesson named with quotes,
+// ';', $(...) and backquotes makes its PDF in the folder named after it, and TeX in the
+// lesson's text cannot run a program (makeindex is on TeX Live's list of commands a
+// restricted \write18 may run; touch is not).
+TEST(LessonHandout, NeitherTheFileNameNorTheTextRunsAnything) {
+  if (!on_path("pdflatex")) {
+    if (std::getenv("CI") != nullptr) FAIL() << "pdflatex is missing: ./scripts/install-deps --tests installs it";
+    GTEST_SKIP() << "pdflatex is not installed";
+  }
+  test::TempDir dir;
+  const std::string name = "it's \"q\"; $(touch pwned) `touch pwned`";
+  test::write_text(dir / (name + ".toml"), R"(title = "Handout"
+[[step]]
+kind = "say"
+text = '''
+TeX would run programs: $\immediate\openout15=pwned3.idx \immediate\write15{\string\indexentry{a}{1}}\immediate\closeout15 \immediate\write18{makeindex pwned3}\immediate\write18{touch pwned2}$.
+'''
+)");
+  test::RunOptions run;
+  run.args = {"lesson", name + ".toml", "--pdf"};
+  run.cwd = dir.path();
+  const test::RunResult r = test::run_linkage(run);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::filesystem::path out = dir / name;
+  EXPECT_EQ(test::read_text(out / "lesson.pdf").rfind("%PDF", 0), 0u);
+  EXPECT_NE(test::read_text(out / "lesson.tex").find("\\write18{makeindex pwned3}"), std::string::npos);
+  EXPECT_EQ(dir.entries(), (std::vector<std::string>{name, name + ".toml"}));  // no pwned
+  // TeX itself may write pwned3.idx in its folder; no program read it.
+  for (const char* made : {"pwned", "pwned2", "pwned3.ind", "pwned3.ilg"})
+    EXPECT_FALSE(std::filesystem::exists(out / made)) << made;
 }
 
 }  // namespace
