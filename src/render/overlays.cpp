@@ -67,8 +67,10 @@ double crisp(double pixel, double width) {
 // Calls line(k, pixel) for every grid line across one axis of the frame.
 template <typename Line>
 void for_each_grid_line(double low, double high, double anchor, double spacing, Line line) {
-  const long first = static_cast<long>(std::ceil((low - anchor) / spacing));
-  const long last = static_cast<long>(std::floor((high - anchor) / spacing));
+  const double from = std::ceil((low - anchor) / spacing), to = std::floor((high - anchor) / spacing);
+  if (!(std::fabs(from) < 1e15 && std::fabs(to) < 1e15)) return;  // a line count no long holds: none drawn
+  const auto first = static_cast<long>(from);
+  const auto last = static_cast<long>(to);
   for (long k = first; k <= last && k - first < 1000; ++k) line(k, anchor + static_cast<double>(k) * spacing);
 }
 

@@ -1,6 +1,7 @@
 #include "render/settings.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -13,6 +14,8 @@
 
 namespace linkage {
 namespace {
+
+constexpr double kMaxViewCoordinate = 1e9;  // m (the message says -1e9 .. 1e9)
 
 // A whole-string finite double, or Error::input.
 double parse_double(std::string_view text, const std::string& origin, std::string_view whole) {
@@ -125,16 +128,24 @@ CameraMode parse_camera(std::string_view name, const std::string& origin) {
 
 View parse_view(std::string_view text, const std::string& origin) {
   std::vector<double> values;
+  std::vector<std::string_view> pieces;
   std::size_t start = 0;
   while (true) {
     const std::size_t comma = text.find(',', start);
-    values.push_back(parse_double(
-        text.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start), origin, text));
+    pieces.push_back(text.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start));
+    values.push_back(parse_double(pieces.back(), origin, text));
     if (comma == std::string_view::npos) break;
     start = comma + 1;
   }
   if (values.size() != 4)
     throw Error::invalid(origin, "'" + std::string(text) + "' is not xmin,ymin,xmax,ymax (four numbers in metres)");
+  // Far beyond any motion the program simulates (an hour's fall is 6e7 m), and small
+  // enough that the view's width and height are finite.
+  constexpr std::array<const char*, 4> kNames{"xmin", "ymin", "xmax", "ymax"};
+  for (std::size_t i = 0; i < values.size(); ++i)
+    if (std::fabs(values[i]) > kMaxViewCoordinate)
+      throw Error::invalid(origin, "'" + std::string(text) + "': " + kNames[i] + " = " + std::string(pieces[i]) +
+                                       " m is outside -1e9 .. 1e9 m");
   const View view{values[0], values[1], values[2], values[3]};
   if (!(view.xmax > view.xmin) || !(view.ymax > view.ymin))
     throw Error::invalid(origin,

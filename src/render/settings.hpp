@@ -85,7 +85,7 @@ struct RenderSettings {
 /// "WxH" (e.g. "1280x720"), each positive, even and within 7680x4320.
 void parse_size(std::string_view text, const std::string& origin, int& width, int& height);
 [[nodiscard]] CameraMode parse_camera(std::string_view name, const std::string& origin);
-/// "xmin,ymin,xmax,ymax" in metres with xmin < xmax and ymin < ymax.
+/// "xmin,ymin,xmax,ymax" in metres with xmin < xmax and ymin < ymax, each within ±1e9 m.
 [[nodiscard]] View parse_view(std::string_view text, const std::string& origin);
 /// The output kind from a file's extension (.mp4, .gif, .webm, .png, .svg, .pdf).
 [[nodiscard]] OutputKind output_kind(const std::filesystem::path& file, const std::string& origin);

@@ -34,7 +34,8 @@ constexpr std::array<int, 9> kScaleMantissas{10, 15, 20, 25, 30, 40, 50, 60, 80}
 int floor_div(int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 
 // mantissa x 10^exponent written with an SI prefix so the number is in 1 .. 999:
-// (15, -4) -> "1.5 m", (3, -4) -> "300 µ", (2, 0) -> "2 ".
+// (15, -4) -> "1.5 m", (3, -4) -> "300 µ", (2, 0) -> "2 "; beyond pico and tera in
+// scientific notation: (1, -300) -> "1e-300 ".
 std::string with_prefix(int mantissa, int exponent) {
   static constexpr std::array<const char*, 9> kPrefixes{"p", "n", "µ", "m", "", "k", "M", "G", "T"};
   std::string digits = std::to_string(mantissa);
@@ -44,6 +45,12 @@ std::string with_prefix(int mantissa, int exponent) {
   }
   const int magnitude = static_cast<int>(digits.size()) - 1 + exponent;  // floor(log10(value))
   const int group = std::clamp(floor_div(magnitude, 3), -4, 4);
+  if (group != floor_div(magnitude, 3)) {      // beyond p .. T: "1.5e-300 ", never a row of zeros
+    std::string number = digits.substr(0, 1);  // appended piece by piece: GCC 12's -Wrestrict misfires on "." + ...
+    if (digits.size() > 1) number.append(".").append(digits, 1);
+    number.append("e").append(std::to_string(magnitude)).append(" ");
+    return number;
+  }
   const int shift = exponent - 3 * group;  // value / 1000^group = digits x 10^shift
   std::string number;
   if (shift >= 0) {

@@ -85,6 +85,10 @@ TEST(RenderSettings, ViewsCamerasQualitiesAndExtensions) {
             std::string::npos);
   EXPECT_NE(input_error([] { (void)parse_view("0,0,1", "--view"); }).find("four numbers"), std::string::npos);
   EXPECT_NE(input_error([] { (void)parse_view("0,0,1,x", "--view"); }).find("not a finite number"), std::string::npos);
+  // A view whose width would overflow is refused at once, naming the coordinate and the range.
+  EXPECT_EQ(input_error([] { (void)parse_view("-1e308,0,1e308,1", "view"); }),
+            "view: '-1e308,0,1e308,1': xmin = -1e308 m is outside -1e9 .. 1e9 m");
+  EXPECT_DOUBLE_EQ(parse_view("-1e9,0,1e9,1", "view").xmax, 1e9);
   EXPECT_EQ(parse_camera("fit", "--camera"), CameraMode::fit);
   EXPECT_NE(input_error([] { (void)parse_camera("orbit", "--camera"); }).find("follow, fixed, fit"), std::string::npos);
   EXPECT_EQ(parse_quality("4k", "--quality").height, 2160);

@@ -61,6 +61,18 @@ TEST(RoundLength, GridSpacingsAreOneTwoFive) {
   EXPECT_EQ(describe_length(1, 3), "1 km");
 }
 
+// Beyond the prefixes (pico .. tera) the number is scientific, never a row of zeros
+// (--arrow-scale joint=1e-300 once printed 300 of them in the legend).
+TEST(ArrowScale, ExtremeScalesAndLengthsStayShort) {
+  EXPECT_EQ(describe_arrow_scale(arrow_scale_of(1e-300), "N"), "1 cm = 1e-300 N");
+  EXPECT_EQ(describe_arrow_scale(arrow_scale_of(2.5e200), "N"), "1 cm = 2.5e200 N");
+  EXPECT_EQ(describe_arrow_scale(arrow_scale_of(2.5e-12), "N"), "1 cm = 2.5 pN");
+  EXPECT_EQ(describe_arrow_scale(arrow_scale_of(999e12), "N"), "1 cm = 999 TN");
+  EXPECT_EQ(describe_arrow_scale(arrow_scale_of(1e15), "N"), "1 cm = 1e15 N");
+  EXPECT_EQ(describe_length(2, 307), "2e307 m");
+  EXPECT_EQ(describe_length(5, -16), "5e-16 m");
+}
+
 TEST(ArrowScale, AGivenScaleIsKeptToThreeDigits) {
   EXPECT_EQ(describe_arrow_scale(arrow_scale_of(2.0), "N"), "1 cm = 2 N");
   EXPECT_EQ(describe_arrow_scale(arrow_scale_of(0.0025), "N"), "1 cm = 2.5 mN");
