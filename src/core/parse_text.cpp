@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 
+#include "core/character_text.hpp"
 #include "core/error.hpp"
 
 namespace linkage {
@@ -17,7 +18,8 @@ double parse_number(const std::string& text, const std::string& setting, const s
   if (ec == std::errc::result_out_of_range && ptr == last)
     throw Error::invalid(setting, "'" + text + "' is outside the range of double precision (about 1e-308 to 1e308)");
   if (text.empty() || ec != std::errc() || ptr != last)
-    throw Error::invalid(setting, "'" + text + "' is not a number" + (unit.empty() ? "" : " (" + unit + ")"));
+    throw Error::invalid(
+        setting, "'" + text + "' is not a number" + (unit.empty() ? "" : " (" + unit + ")") + lookalike_advice(text));
   if (!std::isfinite(value))
     throw Error::invalid(
         setting, "'" + text + "' is not a finite number; give a finite value" + (unit.empty() ? "" : " in " + unit));

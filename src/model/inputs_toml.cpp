@@ -9,6 +9,7 @@
 #include <sstream>
 #include <vector>
 
+#include "core/character_text.hpp"
 #include "core/error.hpp"
 #include "core/input_file.hpp"
 #include "core/limits.hpp"
@@ -80,6 +81,19 @@ std::optional<std::size_t> overly_nested_key(std::string_view text) {
   return std::nullopt;
 }
 
+/// The byte at `line`:`column` (both from 1; columns count UTF-8 characters), or npos.
+std::size_t byte_offset(std::string_view text, std::size_t line, std::size_t column) {
+  std::size_t at = 0;
+  for (std::size_t l = 1; l < line; ++l) {
+    at = text.find('\n', at);
+    if (at == std::string_view::npos) return at;
+    ++at;
+  }
+  for (std::size_t c = 1; at < text.size(); ++at)
+    if ((static_cast<unsigned char>(text[at]) & 0xC0) != 0x80 && c++ == column) return at;
+  return std::string_view::npos;
+}
+
 }  // namespace
 
 toml::table parse_toml_file(const std::string& path, const std::string& origin) {
@@ -110,7 +124,9 @@ toml::table parse_toml_text(std::string_view toml_text, const std::string& path,
   } catch (const toml::parse_error& e) {
     const auto& where = e.source().begin;
     if (where.line == 0) throw Error::invalid(origin, "cannot read '" + path + "': " + std::string(e.description()));
-    throw Error::input(source_position(path, where.line, where.column) + ": " + std::string(e.description()));
+    const std::size_t at = byte_offset(toml_text, where.line, where.column);
+    throw Error::input(source_position(path, where.line, where.column) + ": " + std::string(e.description()) +
+                       (at == std::string_view::npos ? "" : lookalike_advice(toml_text, at)));
   }
 }
 

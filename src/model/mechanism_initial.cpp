@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 
+#include "core/character_text.hpp"
 #include "core/error.hpp"
 #include "core/name_match.hpp"
 #include "core/number_format.hpp"
@@ -170,7 +171,8 @@ void apply_setting(Mechanism& mechanism, const std::string& setting, const std::
   const char* end = text.data() + text.size();
   const auto [at, error] = std::from_chars(text.data(), end, value);
   if (text.empty() || error != std::errc() || at != end)
-    throw Error::invalid("set", q(text) + " (" + origin + ") is not a number; give NAME=VALUE with a number");
+    throw Error::invalid("set", q(text) + " (" + origin + ") is not a number" + lookalike_advice(text) +
+                                    "; give NAME=VALUE with a number");
   set_value(mechanism, name, value, origin);
 }
 

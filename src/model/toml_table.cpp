@@ -4,6 +4,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "core/character_text.hpp"
 #include "core/error.hpp"
 #include "core/name_match.hpp"
 #include "core/number_format.hpp"
@@ -103,12 +104,14 @@ std::string TableReader::where(std::string_view key) const {
 
 std::string TableReader::prefix(std::string_view key) const { return where(key) + ": " + context_ + ": "; }
 
+// A value echoed in `problem` may hold a NUL (TOML's \u0000): written \0, or the message
+// would end there.
 void TableReader::fail(std::string_view key, const std::string& problem) const {
-  throw Error::input(prefix(key) + problem);
+  throw Error::input(prefix(key) + visible_nul(problem));
 }
 
 void TableReader::fail_at(const toml::node& node, const std::string& problem) const {
-  throw Error::input(position(file_, node.source()) + ": " + context_ + ": " + problem);
+  throw Error::input(position(file_, node.source()) + ": " + context_ + ": " + visible_nul(problem));
 }
 
 void TableReader::require(std::string_view key, std::string_view example) const {

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <vector>
 
+#include "core/character_text.hpp"
 #include "core/error.hpp"
 #include "core/name_match.hpp"
 #include "core/number_format.hpp"
@@ -25,7 +26,8 @@ double parse_double(std::string_view text, const std::string& origin, std::strin
   if (first != last && *first == '+') ++first;
   const auto [ptr, ec] = std::from_chars(first, last, value);
   if (text.empty() || ec != std::errc() || ptr != last || !std::isfinite(value))
-    throw Error::invalid(origin, "'" + std::string(whole) + "': '" + std::string(text) + "' is not a finite number");
+    throw Error::invalid(origin, "'" + std::string(whole) + "': '" + std::string(text) + "' is not a finite number" +
+                                     lookalike_advice(text));
   return value;
 }
 

@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cstdlib>
 
+#include "core/character_text.hpp"
 #include "core/error.hpp"
 #include "core/limits.hpp"
 #include "core/name_match.hpp"
@@ -51,7 +52,7 @@ class Reader {
     if (pos_ == text_.size()) fail(pos_, "the expression is empty");
     const ex e = sum();
     skip_space();
-    if (pos_ != text_.size()) fail(pos_, "unexpected '" + std::string(text_.substr(pos_, 1)) + "'");
+    if (pos_ != text_.size()) fail(pos_, "unexpected " + describe_character(text_, pos_));
     if (text_.size() > kMaxExpressionLength) too_long();
     return e;
   }
@@ -133,7 +134,7 @@ class Reader {
     if (digit(c) && numeric_body_name()) return name();
     if (digit(c) || c == '.') return number();
     if (std::isalpha(static_cast<unsigned char>(c)) != 0 || c == '_') return name();
-    fail(pos_, "unexpected '" + std::string(1, c) + "'");
+    fail(pos_, "unexpected " + describe_character(text_, pos_));  // the whole character: '−' (U+2212), not a byte
   }
   // Digits [. digits] [e [+-] digits], as an exact fraction.
   ex number() {
