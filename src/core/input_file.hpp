@@ -8,8 +8,9 @@
 
 namespace linkage {
 
-/// Error::invalid(setting) unless `path` exists and is a regular file (a symlink to one
-/// is fine): a missing file, a folder, a FIFO or a device each get their own message.
+/// Error::invalid(setting) unless `path` exists and is a readable regular file (a symlink
+/// to one is fine): a missing file, a symbolic link loop, a path through a file, a folder
+/// or a file not readable for permissions, a folder, a FIFO or a device each get their own message.
 void require_regular_file(const std::filesystem::path& path, const std::string& setting);
 
 /// The whole of a file's bytes, or nullopt when it cannot be opened.

@@ -211,7 +211,8 @@ class Parser {
   fs::path referenced_file(const TableReader& r, std::string_view key, const std::string& name) const {
     const fs::path path = fs::path(name).is_absolute() ? fs::path(name) : dir_ / name;
     std::error_code ec;
-    if (!fs::exists(path, ec)) r.fail(key, "the file '" + name + "' does not exist (looked for " + path.string() + ")");
+    if (!fs::exists(path, ec) && !ec)  // else a loop or a folder it may not enter: said below
+      r.fail(key, "the file '" + name + "' does not exist (looked for " + path.string() + ")");
     try {
       require_regular_file(path, std::string(key));  // not a folder, a FIFO or a device
     } catch (const Error& e) {

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
 
 #include "core/error.hpp"
@@ -26,6 +27,21 @@ TEST(InputFile, RefusesFoldersAndMissingFiles) {
             std::string::npos);
   EXPECT_NE(test::input_error_of([&] { require_regular_file(dir / "none", "file"); }).find("does not exist"),
             std::string::npos);
+}
+
+// Each reason a path cannot be looked at is said: a loop of links once "did not exist".
+TEST(InputFile, SaysWhyAPathCannotBeLookedAt) {
+  test::TempDir dir;
+  std::filesystem::create_symlink("loop.toml", dir / "loop.toml");
+  EXPECT_NE(
+      test::input_error_of([&] { require_regular_file(dir / "loop.toml", "file"); }).find("is a symbolic link loop"),
+      std::string::npos);
+  test::write_text(dir / "plain.toml", "");
+  EXPECT_NE(test::input_error_of([&] {
+              require_regular_file(dir / "plain.toml" / "inner.toml", "file");
+            }).find("a part of the path before the file name is a file, not a folder"),
+            std::string::npos);
+  require_regular_file(dir / "plain.toml", "file");  // readable: no error
 }
 
 }  // namespace
