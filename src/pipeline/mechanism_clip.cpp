@@ -47,7 +47,7 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 std::vector<BodyPoint> resolve_trails(const MechanismGeometry& geometry, const std::vector<std::string>& trails) {
   std::vector<BodyPoint> points;
-  for (const std::string& trail : trails) points.push_back(geometry.resolve(trail, "--trail"));
+  for (const std::string& trail : trails) points.push_back(geometry.resolve(trail, "trail"));
   return points;
 }
 

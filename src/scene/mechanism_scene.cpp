@@ -81,12 +81,12 @@ bool MechanismGeometry::grounded() const {
   return false;
 }
 
-BodyPoint MechanismGeometry::resolve(const std::string& reference, const std::string& origin) const {
+BodyPoint MechanismGeometry::resolve(const std::string& reference, const std::string& setting) const {
   const auto dot = reference.find('.');
   std::string body_names = kGround;
   for (const BodyShape& b : bodies) body_names += ", " + b.name;
   if (dot == std::string::npos)
-    throw Error::input(origin + ": '" + reference + "' is not BODY.POINT; bodies: " + body_names);
+    throw Error::invalid(setting, "'" + reference + "' is not BODY.POINT; bodies: " + body_names);
   const std::string body = reference.substr(0, dot), point = reference.substr(dot + 1);
   const std::vector<std::pair<std::string, Vec2>>* points = nullptr;
   int index = -1;
@@ -100,10 +100,10 @@ BodyPoint MechanismGeometry::resolve(const std::string& reference, const std::st
       }
   }
   if (points == nullptr)
-    throw Error::input(origin + ": '" + body + "' is not a body of the mechanism; valid: " + body_names);
+    throw Error::invalid(setting, "'" + body + "' is not a body of the mechanism; valid: " + body_names);
   for (const auto& [name, at] : *points)
     if (name == point) return {index, at};
-  throw Error::input(origin + ": '" + point + "' is not a point of " + body + "; valid: " + names_of(*points));
+  throw Error::invalid(setting, "'" + point + "' is not a point of " + body + "; valid: " + names_of(*points));
 }
 
 MechanismGeometry mechanism_geometry(const sym::System& system) {

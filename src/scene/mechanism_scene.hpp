@@ -61,9 +61,9 @@ struct MechanismGeometry {
 
   /// Whether any joint or spring holds the mechanism to the ground (else it floats).
   [[nodiscard]] bool grounded() const;
-  /// `body.point` ("3.B", "ground.O") resolved; Error::input naming `origin` and the
-  /// valid bodies or points otherwise.
-  [[nodiscard]] BodyPoint resolve(const std::string& reference, const std::string& origin) const;
+  /// `body.point` ("3.B", "ground.O") resolved; Error::invalid(`setting`, ...) naming the
+  /// valid bodies or points otherwise (its reader says where: --trail, a lesson key).
+  [[nodiscard]] BodyPoint resolve(const std::string& reference, const std::string& setting) const;
 };
 
 /// The drawing's numbers, evaluated at the mechanism's parameters.
