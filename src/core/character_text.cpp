@@ -82,13 +82,8 @@ std::string lookalike_advice(std::string_view text, std::size_t at) {
 }
 
 std::string visible_nul(std::string_view text) {
-  std::string out;
-  for (const char c : text) {
-    if (c == '\0')
-      out += "\\0";
-    else
-      out += c;
-  }
+  std::string out(text);
+  for (std::size_t at = out.find('\0'); at != std::string::npos; at = out.find('\0', at + 2)) out.replace(at, 1, "\\0");
   return out;
 }
 
