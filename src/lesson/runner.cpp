@@ -13,6 +13,7 @@
 #include <ostream>
 
 #include "core/atomic_file.hpp"
+#include "core/character_text.hpp"
 #include "core/content_hash.hpp"
 #include "core/error.hpp"
 #include "core/input_file.hpp"
@@ -165,7 +166,8 @@ void run_exercise(RunContext& c, const Step& step, const ExerciseStep& e) {
     }
     const auto given = parse_answer(line);
     if (!given) {
-      c.out << "'" << line << "' is not a number; type one like 0.0123 or 1.2e-3, or press Enter to see the answer.\n";
+      c.out << "'" << line << "' is not a number" << lookalike_advice(line)
+            << "; type one like 0.0123 or 1.2e-3, or press Enter to see the answer.\n";
       continue;
     }
     if (std::fabs(*given - answer) <= tolerance) {

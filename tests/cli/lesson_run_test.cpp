@@ -45,12 +45,14 @@ TEST(LessonExercise, WithStepChecksScriptedAnswers) {
   TempDir dir;
   write_text(dir / "ex.toml", kExercise);
   const std::vector<std::string> args{"lesson", (dir / "ex.toml").string(), "--out", (dir / "out").string(), "--step"};
-  {  // wrong, not a number (not counted), then right within 1 %
-    const RunResult r = run_linkage(args, "0.000204\nabc\n0.002045\n");
+  {  // wrong, not a number twice (not counted; a pasted minus sign named), then right within 1 %
+    const RunResult r = run_linkage(args, "0.000204\nabc\n\u22121\n0.002045\n");
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_EQ(count(r.out, "Your answer (kg m^2): "), 3) << r.out;
+    EXPECT_EQ(count(r.out, "Your answer (kg m^2): "), 4) << r.out;
     EXPECT_NE(r.out.find("Not quite. Hint: Parallel axes. (2 tries left)"), std::string::npos) << r.out;
-    EXPECT_NE(r.out.find("'abc' is not a number"), std::string::npos);
+    EXPECT_NE(r.out.find("'abc' is not a number; type one like"), std::string::npos);
+    EXPECT_NE(r.out.find("'\u22121' is not a number; '\u2212' (U+2212): use '-'; type one like"), std::string::npos)
+        << r.out;
     EXPECT_NE(r.out.find("Right. The answer is 0.00204333 kg m^2."), std::string::npos) << r.out;
   }
   {  // three wrong answers reveal it
