@@ -21,7 +21,8 @@ void require_regular_file(const fs::path& path, const std::string& setting) {
     if (ec == std::errc::too_many_symbolic_link_levels)
       throw Error::invalid(setting, name + " is a symbolic link loop (a link that leads back to itself)");
     if (ec == std::errc::permission_denied)
-      throw Error::invalid(setting, "permission denied: " + name + " is in a folder you may not enter");
+      throw Error::invalid(setting,
+                           "cannot read " + name + ": permission denied (a folder on its path may not be entered)");
     if (ec == std::errc::not_a_directory)
       throw Error::invalid(setting, name + ": a part of the path before the file name is a file, not a folder");
     throw Error::invalid(setting, "cannot look at " + name + ": " + ec.message());
@@ -33,7 +34,7 @@ void require_regular_file(const fs::path& path, const std::string& setting) {
   if (!fs::is_regular_file(status))
     throw Error::invalid(setting, name + " is a device or special file, not a regular file");
   if (::access(path.c_str(), R_OK) != 0 && errno == EACCES)
-    throw Error::invalid(setting, "permission denied: " + name + " is not readable by you");
+    throw Error::invalid(setting, "cannot read " + name + ": permission denied (the file is not readable by you)");
 }
 
 std::optional<std::string> read_file_text(const fs::path& path) {

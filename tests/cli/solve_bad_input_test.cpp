@@ -5,7 +5,12 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
 
+#include "core/program_path.hpp"
+#include "core/run_program.hpp"
 #include "support/test_support.hpp"
 
 namespace linkage {
@@ -132,6 +137,38 @@ TEST(SolveBadInput, UnreadableConfigFile) {
   test::write_text(path, "m = 1\n");
   std::filesystem::permissions(path, std::filesystem::perms::none);
   expect_one_line_error(solve({"--config", path.string()}), {{}, {"secret.toml", "cannot read"}});
+}
+
+// Permission denied is said as such (a file in a folder one may not enter once "did not
+// exist"). Root reads everything, so as root the program runs as nobody (setpriv).
+TEST(SolveBadInput, PermissionDeniedIsSaid) {
+  std::vector<std::string> as_user;
+  if (::geteuid() == 0) {
+    if (!on_path("setpriv")) GTEST_SKIP() << "root reads files whatever their permissions, and setpriv is missing";
+    as_user = {"setpriv", "--reuid=65534", "--regid=65534", "--clear-groups"};
+  }
+  test::TempDir dir;
+  std::filesystem::permissions(dir.path(), std::filesystem::perms::all);  // others may enter
+  test::write_text(dir / "secret.toml", "m = 1\n");
+  std::filesystem::permissions(dir / "secret.toml", std::filesystem::perms::none);
+  std::filesystem::create_directory(dir / "locked");
+  test::write_text(dir / "locked" / "c.toml", "m = 1\n");
+  std::filesystem::permissions(dir / "locked", std::filesystem::perms::owner_all);
+  for (const auto& [file, why] :
+       {std::pair<std::string, std::string>{"secret.toml", "(the file is not readable by you)"},
+        {"locked/c.toml", "(a folder on its path may not be entered)"}}) {
+    ProgramRun run;
+    run.argv = as_user;
+    for (const std::string& a :
+         {test::linkage_binary(), std::string("solve"), std::string("--config"), (dir / file).string()})
+      run.argv.push_back(a);
+    run.capture_output = true;
+    const ProgramResult r = run_program(run);
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_EQ(r.output,
+              "linkage: error: --config: cannot read '" + (dir / file).string() + "': permission denied " + why + "\n");
+  }
+  std::filesystem::permissions(dir / "locked", std::filesystem::perms::all);
 }
 
 TEST(SolveBadInput, OverflowIsABadInputAndASingularMatrixIsNamed) {
