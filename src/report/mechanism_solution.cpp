@@ -1,6 +1,7 @@
 #include "report/mechanism_solution.hpp"
 
 #include <nlohmann/json.hpp>
+#include <set>
 
 #include "core/error.hpp"
 #include "evaluate/case_evaluator.hpp"
@@ -121,6 +122,57 @@ nlohmann::ordered_json derived_json(const MechanismSolution& s) {
   return derived;
 }
 
+// The [aliases] rename keys the JSON has, each to a name no other key has.
+void check_aliases(const MechanismSolution& s) {
+  const sym::System& system = *s.system;
+  const Mechanism& m = system.mechanism();
+  if (m.aliases.empty()) return;
+  std::set<std::string> keys;
+  for (const Parameter& p : m.parameters) keys.insert(p.name);
+  const nlohmann::ordered_json derived = derived_json(s);
+  for (const auto& [key, value] : derived.items()) keys.insert(key);
+  for (const sym::SymbolInfo& info : system.table().all()) keys.insert(info.key);
+  std::set<std::string> renamed;
+  for (const Alias& a : m.aliases) renamed.insert(a.key);
+  for (const Alias& a : m.aliases) {
+    if (!keys.contains(a.key))
+      throw Error::input(concat({where(a.pos), "[aliases]: '", a.key,
+                                 "' is not a key of the JSON of the worked solution; valid: a key of its parameters, "
+                                 "state, derived values or unknowns (linkage solve --mechanism ",
+                                 m.name, " --format json), e.g. 'I', '1.theta_ddot'"}));
+    if (keys.contains(a.name) && !renamed.contains(a.name))
+      throw Error::input(concat({where(a.pos), "[aliases]: '", a.key, "' = '", a.name, "' names the key '", a.name,
+                                 "' the JSON already has; choose another alias"}));
+  }
+}
+
+// `object` with each key that has an alias renamed to it, in the same order.
+nlohmann::ordered_json renamed(const nlohmann::ordered_json& object, const std::map<std::string, std::string>& names) {
+  auto name = [&](const std::string& key) {
+    const auto it = names.find(key);
+    return it == names.end() ? key : it->second;
+  };
+  if (object.is_array()) {
+    nlohmann::ordered_json out = nlohmann::ordered_json::array();
+    for (const auto& key : object) out.push_back(name(key.get<std::string>()));
+    return out;
+  }
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  for (const auto& [key, value] : object.items()) out[name(key)] = value;
+  return out;
+}
+
+// The file's aliases in place of the quantity keys they rename (bodies and joints keep
+// their names).
+void apply_aliases(nlohmann::ordered_json& doc, const Mechanism& m) {
+  std::map<std::string, std::string> names;
+  for (const Alias& a : m.aliases) names[a.key] = a.name;
+  for (const char* section : {"parameters", "state", "derived", "agreement"})
+    if (doc.contains(section)) doc[section] = renamed(doc[section], names);
+  for (auto& one : doc["cases"])
+    for (const char* section : {"unknowns", "solution", "recovered"}) one[section] = renamed(one[section], names);
+}
+
 }  // namespace
 
 MechanismSolution work_out_mechanism(const Mechanism& mechanism, const std::vector<CaseId>& cases) {
@@ -136,6 +188,7 @@ MechanismSolution work_out_mechanism(const Mechanism& mechanism, const std::vect
     const std::string causes = likely_causes(mechanism);
     throw causes.empty() ? e : e.rephrased(concat({e.what(), "; likely causes: ", causes}));
   }
+  check_aliases(out);
   return out;
 }
 
@@ -159,7 +212,7 @@ JointForce joint_force(const MechanismSolution& s, const SolvedCase& c, std::siz
   return f;
 }
 
-std::string mechanism_json(const MechanismSolution& s) {
+std::string mechanism_json(const MechanismSolution& s, JsonKeys keys) {
   using nlohmann::ordered_json;
   const sym::System& system = *s.system;
   const Mechanism& m = system.mechanism();
@@ -227,6 +280,7 @@ std::string mechanism_json(const MechanismSolution& s) {
     for (const MechanismAgreement& a : s.agreement) agreement[key(a.unknown)] = a.max_abs_difference;
     doc["agreement"] = agreement;
   }
+  if (keys == JsonKeys::aliases) apply_aliases(doc, m);
   return json_layout(doc);
 }
 
