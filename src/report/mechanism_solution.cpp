@@ -41,12 +41,13 @@ void require_printed_finite(const MechanismSolution& s) {
   for (const auto& [name, e] : quantities) require_finite(name, value_at(e, s.values));
 }
 
-void work_out_numbers(MechanismSolution& out, const std::vector<CaseId>& cases) {
+void work_out_numbers(MechanismSolution& out, const std::vector<CaseId>& cases, CaseForm form) {
   const sym::System& system = *out.system;
   out.values = state_values(system, out.state, 0);
   require_printed_finite(out);
   for (CaseId id : cases) {
-    SolvedCase solved{derive_case(system, id), {}};
+    const bool lagrange = form == CaseForm::lagrange && id == CaseId::reduced;
+    SolvedCase solved{lagrange ? lagrange_case(system) : derive_case(system, id), {}};
     // The numbers from the case's own expressions, compiled.
     const eval::CaseEvaluator evaluator(system, solved.system);
     Eigen::MatrixXd A;
@@ -175,7 +176,7 @@ void apply_aliases(nlohmann::ordered_json& doc, const Mechanism& m) {
 
 }  // namespace
 
-MechanismSolution work_out_mechanism(const Mechanism& mechanism, const std::vector<CaseId>& cases) {
+MechanismSolution work_out_mechanism(const Mechanism& mechanism, const std::vector<CaseId>& cases, CaseForm form) {
   MechanismSolution out;
   out.system = std::make_shared<const sym::System>(mechanism);
   const sym::System& system = *out.system;
@@ -183,7 +184,7 @@ MechanismSolution work_out_mechanism(const Mechanism& mechanism, const std::vect
   out.state = closed.state;
   out.closure_note = closed.note;
   try {  // a number that overflows, or a singular matrix: name the values that likely caused it
-    work_out_numbers(out, cases);
+    work_out_numbers(out, cases, form);
   } catch (const Error& e) {
     const std::string causes = likely_causes(mechanism);
     throw causes.empty() ? e : e.rephrased(concat({e.what(), "; likely causes: ", causes}));

@@ -41,7 +41,11 @@ struct MechanismSolution {
 /// Derives and solves the selected cases. Errors name the file position of a bad value,
 /// an alias of a key the JSON does not have or one that names another key, and the case
 /// and condition number of a singular matrix.
-[[nodiscard]] MechanismSolution work_out_mechanism(const Mechanism& mechanism, const std::vector<CaseId>& cases);
+/// How Case 3 is written: by eliminating the tree's joint forces from Newton-Euler (the
+/// homework's (1.3) to (4.3)), or in Lagrange's form M(q) q'' = Q (`solve --form lagrange`).
+enum class CaseForm { newton_euler, lagrange };
+[[nodiscard]] MechanismSolution work_out_mechanism(const Mechanism& mechanism, const std::vector<CaseId>& cases,
+                                                   CaseForm form = CaseForm::newton_euler);
 
 /// A body's centre-of-mass acceleration and angular acceleration in a solved case.
 struct BodyMotion {
