@@ -5,13 +5,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "model/mechanism_toml.hpp"
 #include "support/test_support.hpp"
 
 namespace linkage {
 namespace {
-
-const std::vector<std::string> kShipped = {"two-blocks",      "unequal-blocks", "double-pendulum", "triple-pendulum",
-                                           "spring-pendulum", "slider-crank",   "four-bar"};
 
 nlohmann::json case3(const std::string& mechanism, const std::string& form) {
   const test::RunResult r =
@@ -45,7 +43,7 @@ TEST_P(SolveLagrange, EveryFormatRunsAndSolvesAsCase3) {
   EXPECT_EQ(case3(GetParam(), "lagrange"), lagrange);
 }
 
-INSTANTIATE_TEST_SUITE_P(Shipped, SolveLagrange, testing::ValuesIn(kShipped),
+INSTANTIATE_TEST_SUITE_P(Shipped, SolveLagrange, testing::ValuesIn(shipped_mechanism_names()),
                          [](const testing::TestParamInfo<std::string>& p) {
                            std::string name = p.param;
                            for (char& c : name)
