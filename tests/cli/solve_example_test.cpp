@@ -101,6 +101,21 @@ TEST(SolveExample, ReproducesEveryValueOfExampleJson) {
     }
     EXPECT_EQ(unknowns, 8) << name;
   }
+
+  // Every key of example.json at the same place, but its free-text note: the solution
+  // (from Case 1, the first case shown) and the units as well.
+  for (const auto& [key, value] : example.items()) {
+    if (key != "note") {
+      EXPECT_TRUE(doc.contains(key)) << key << " missing";
+    }
+  }
+  ASSERT_EQ(doc["solution"].size(), example["solution"].size());
+  for (const auto& [key, value] : example["solution"].items()) {
+    ASSERT_TRUE(doc["solution"].contains(key)) << "solution." << key << " missing";
+    EXPECT_EQ(doc["solution"][key], doc["cases"][0]["solution"][key]) << key;
+    expect_relative(doc["solution"][key].get<double>(), test::number(value), "solution." + key);
+  }
+  for (const auto& [key, unit] : example["units"].items()) EXPECT_EQ(doc["units"][key], unit) << "units." << key;
 }
 
 TEST(SolveExample, EachCaseHasTheIssuesFieldsInRowOrder) {
@@ -171,7 +186,7 @@ TEST(SolveExample, OneCaseAndInputsFromFileAndFlags) {
 TEST(SolveExample, MechanismTwoBlocksKeepsTheMechanismKeys) {
   const json homework = solve_json({});
   const json mechanism = solve_json({"--mechanism", "two-blocks"});
-  for (const char* section : {"parameters", "state", "derived", "agreement"}) {
+  for (const char* section : {"parameters", "state", "derived", "solution", "units", "agreement"}) {
     ASSERT_EQ(mechanism[section].size(), homework[section].size()) << section;
     for (const auto& [key, value] : homework[section].items()) {
       ASSERT_TRUE(mechanism[section].contains(contract(key))) << section << "." << contract(key) << " missing";
