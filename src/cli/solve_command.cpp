@@ -1,4 +1,5 @@
 // `linkage solve`: the worked solution of the spec at any parameters and state.
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 
@@ -26,6 +27,7 @@ struct SolveOptions {
   bool ascii = false;
   bool unicode = false;
   std::string angles = "rad";
+  std::string form = "newton-euler";
   MechanismOptions mechanism;
 };
 
@@ -38,6 +40,16 @@ std::vector<int> parse_case_selection(const std::string& which) {
   if (which == "all") return {1, 2, 3};
   if (which == "1" || which == "2" || which == "3") return {which[0] - '0'};
   throw Error::input("--case: '" + which + "' is not a case; valid: 1, 2, 3, all");
+}
+
+CaseForm parse_form(const std::string& form, const std::vector<int>& cases) {
+  if (form != "newton-euler" && form != "lagrange")
+    throw Error::input("--form: '" + form + "' is not a form; valid: newton-euler, lagrange");
+  if (form == "newton-euler") return CaseForm::newton_euler;
+  if (std::find(cases.begin(), cases.end(), 3) == cases.end())
+    throw Error::input("--form lagrange writes Case 3, which --case " + std::to_string(cases.front()) +
+                       " leaves out; valid with --case 3 or all");
+  return CaseForm::lagrange;
 }
 
 int parse_digits(const std::string& text) {
@@ -62,10 +74,11 @@ void run_solve(const SolveOptions& options) {
   if (report.angles != AngleUnit::rad && format != "text")
     throw Error::input("--angles: deg applies to the text format; " + format + " keeps radians");
   report.text_style = options.ascii ? Style::ascii : options.unicode ? Style::unicode : text_style_from_locale();
+  const CaseForm form = parse_form(options.form, cases);
   const MechanismSolution solution =
-      work_out_mechanism(chosen_mechanism(options.mechanism, options.inputs), case_ids(cases));
-  if (format == "json")
-    write_stdout(mechanism_json(solution));
+      work_out_mechanism(chosen_mechanism(options.mechanism, options.inputs), case_ids(cases), form);
+  if (format == "json")  // the homework's interface keeps the spec's names (two-blocks.toml's [aliases])
+    write_stdout(mechanism_json(solution, options.mechanism.chosen() ? JsonKeys::mechanism : JsonKeys::aliases));
   else if (format == "latex")
     write_stdout(mechanism_latex(solution, report));
   else if (format == "markdown")
@@ -105,6 +118,12 @@ void register_solve(CLI::App& app) {
                 "Text format in plain ASCII (th1'', x1'') whatever the locale (default: Unicode symbols when "
                 "the locale uses UTF-8, else ASCII)");
   sub->add_flag("--unicode", options->unicode, "Text format with Unicode symbols whatever the locale");
+  sub->add_option("--form", options->form,
+                  "How Case 3 is written: newton-euler (the tree's joint forces eliminated from Newton-Euler, the "
+                  "homework's (1.3) to (4.3)) or lagrange (the board's form: Lagrange's equations M(q) q'' = Q, one "
+                  "row per generalized coordinate, M symmetric, trigonometry contracted; a closed loop adds its "
+                  "forces as J^T lambda and its rows) (default newton-euler)")
+      ->type_name("newton-euler|lagrange");
   add_angle_option(sub, options->angles, "angles, rates and angular accelerations in the text format's tables");
   add_mechanism_options(sub, options->mechanism);
   add_input_options(sub, options->inputs);

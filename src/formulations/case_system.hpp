@@ -5,6 +5,7 @@
 //   case_maximal.cpp      Case 1: x, y, theta of every body and every joint force
 //   case_generalized.cpp  Case 2: the tree's generalized coordinates, joint forces kept
 //   case_reduced.cpp      Case 3: the tree's joint forces eliminated
+//   case_lagrange.cpp     Case 3 in Lagrange's form, the board's M(q) q'' = Q
 #include <ginac/ginac.h>
 
 #include <array>
@@ -54,6 +55,10 @@ struct CaseSystem {
 [[nodiscard]] CaseSystem generalized_case(const sym::System& system);
 [[nodiscard]] CaseSystem reduced_case(const sym::System& system);
 [[nodiscard]] CaseSystem derive_case(const sym::System& system, CaseId id);
+/// Case 3's unknowns in Lagrange's form: one row per generalized coordinate, M(q) q'' = Q
+/// with M symmetric and sums of sin/cos products contracted (cos(θ₁ - θ₂)), the
+/// loop-closing forces entering as J^T lambda; then the loop rows. Recovers what Case 3 does.
+[[nodiscard]] CaseSystem lagrange_case(const sym::System& system);
 
 /// "pin force" (one pin), "slider force" (one slider) or "joint forces", for titles.
 [[nodiscard]] std::string force_phrase(const sym::System& system);

@@ -119,6 +119,14 @@ struct InitialValue {
   SourcePos pos;
 };
 
+/// Another name for a key of the worked solution's JSON ("1.x_ddot" = "x1_ddot"): the name
+/// an interface built on this file prints instead (plain `linkage solve` on two-blocks).
+struct Alias {
+  std::string key;   // as `linkage solve --mechanism --format json` prints it
+  std::string name;  // printed instead
+  SourcePos pos;     // of the key
+};
+
 struct Mechanism {
   std::string name;                 // file stem, e.g. "two-blocks"
   std::string title;                // one line
@@ -137,6 +145,7 @@ struct Mechanism {
   SourcePos initial_pos;                 // the [initial] table (the file's start when absent)
   std::vector<std::string> independent;  // loop closure keeps these coordinates
   SourcePos independent_pos;
+  std::vector<Alias> aliases;  // [aliases], in file order
 
   [[nodiscard]] const Body* find_body(const std::string& body_name) const;
   /// Index into `bodies`, -1 for the ground or a name that is not a body.

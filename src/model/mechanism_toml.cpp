@@ -39,6 +39,8 @@ constexpr MechanismKey kKeys[] = {
     {"top level", "force", "list of tables", "none", "applied forces at points, world frame"},
     {"top level", "torque", "list of tables", "none", "applied torques on bodies"},
     {"top level", "initial", "table", "(required)", "the generalized coordinates and rates at t = 0"},
+    {"top level", "aliases", "table of strings", "none",
+     "other names for keys of the worked solution's JSON, printed by an interface built on the file"},
     {"[ground]", "points", "table of [x, y]", "none", "named points of the fixed frame, world coordinates, m"},
     {"[[body]]", "name", "string", "(required)", "the body's name: letters, digits, '_' or '-' (e.g. \"1\")"},
     {"[[body]]", "shape", "string", "(required)", "rectangle, rod, disc or point"},
@@ -144,6 +146,7 @@ class MechanismReader {
     read_springs();
     read_loads();
     read_initial();
+    read_aliases();
     return std::move(m_);
   }
 
@@ -641,6 +644,29 @@ class MechanismReader {
       initial.fail("independent",
                    "'independent' must be a list of coordinates such as [\"2.theta\"], got " + type_phrase(node));
     m_.independent = *initial.strings("independent");  // every entry a string
+  }
+
+  // "1.x_ddot" = "x1_ddot": each a name of its own (the JSON key it replaces is checked
+  // when the JSON is made, where the keys are known).
+  void read_aliases() {
+    const toml::table* table = root_.subtable("aliases");
+    if (table == nullptr) return;
+    std::map<std::string, long> lines;
+    for (const auto& [key, node] : reader(*table, "[aliases]").entries()) {
+      const std::string context = "[aliases]: " + q(key->str());
+      const auto* name = node->as_string();
+      if (name == nullptr)
+        fail(node->source(), context + " must be a string such as \"x1_ddot\", got " + type_phrase(*node));
+      const SourcePos at = pos(node->source());
+      if (!is_symbol_name(name->get()))
+        fail(at,
+             context + ": " + q(name->get()) + " is not a valid alias; valid: a letter, then letters, digits or '_'");
+      if (const auto seen = lines.find(name->get()); seen != lines.end())
+        fail(at, context + ": the alias " + q(name->get()) + " is used twice (first at line " +
+                     std::to_string(seen->second) + "); aliases must be unique");
+      lines[name->get()] = at.line;
+      m_.aliases.push_back({std::string(key->str()), name->get(), pos(key->source())});
+    }
   }
 
   std::string file_;

@@ -1,6 +1,7 @@
 #include "report/mechanism_solution.hpp"
 
 #include <nlohmann/json.hpp>
+#include <set>
 
 #include "core/error.hpp"
 #include "evaluate/case_evaluator.hpp"
@@ -15,6 +16,19 @@
 namespace linkage {
 
 namespace {
+
+// Case 1's unknowns, in its order: every body's accelerations, then every joint's force
+// components.
+std::vector<GiNaC::symbol> case1_unknowns(const sym::System& system) {
+  std::vector<GiNaC::symbol> out;
+  for (const sym::BodySystem& b : system.bodies()) {
+    out.push_back(b.x.q_ddot);
+    out.push_back(b.y.q_ddot);
+    if (b.rotates) out.push_back(b.theta.q_ddot);
+  }
+  for (const sym::JointSystem& j : system.joints()) out.insert(out.end(), j.unknowns.begin(), j.unknowns.end());
+  return out;
+}
 
 double solved_value(const MechanismSolution& s, const SolvedCase& c, const GiNaC::symbol& u) {
   const auto value = case_value(c.system, c.numbers, s.values, u);
@@ -40,12 +54,13 @@ void require_printed_finite(const MechanismSolution& s) {
   for (const auto& [name, e] : quantities) require_finite(name, value_at(e, s.values));
 }
 
-void work_out_numbers(MechanismSolution& out, const std::vector<CaseId>& cases) {
+void work_out_numbers(MechanismSolution& out, const std::vector<CaseId>& cases, CaseForm form) {
   const sym::System& system = *out.system;
   out.values = state_values(system, out.state, 0);
   require_printed_finite(out);
   for (CaseId id : cases) {
-    SolvedCase solved{derive_case(system, id), {}};
+    const bool lagrange = form == CaseForm::lagrange && id == CaseId::reduced;
+    SolvedCase solved{lagrange ? lagrange_case(system) : derive_case(system, id), {}};
     // The numbers from the case's own expressions, compiled.
     const eval::CaseEvaluator evaluator(system, solved.system);
     Eigen::MatrixXd A;
@@ -85,45 +100,101 @@ void work_out_numbers(MechanismSolution& out, const std::vector<CaseId>& cases) 
 
 // What the worked derivation computes before the cases, keyed as the symbols are: the
 // definitions and inertias, the inertias about the pins, each joint's position, the
-// maximal coordinates and rates the generalized ones imply, the energy and momenta.
-nlohmann::ordered_json derived_json(const MechanismSolution& s) {
+// maximal coordinates and rates the generalized ones imply, the energy and momenta; and
+// the unit of each in `units`.
+nlohmann::ordered_json derived_json(const MechanismSolution& s, nlohmann::ordered_json& units) {
   const sym::System& system = *s.system;
   nlohmann::ordered_json derived = nlohmann::ordered_json::object();
+  auto put = [&](const std::string& key, const GiNaC::ex& e, const std::string& unit) {
+    derived[key] = value_at(e, s.values);
+    units[key] = unit;
+  };
   for (const sym::SymbolInfo& info : system.table().all())
-    if (info.role == sym::Role::definition || info.role == sym::Role::inertia)
-      derived[info.key] = value_at(info.symbol, s.values);
-  for (const PinInertia& p : pin_inertias(system)) derived[p.ascii] = value_at(p.formula, s.values);
+    if (info.role == sym::Role::definition || info.role == sym::Role::inertia) put(info.key, info.symbol, info.unit);
+  for (const PinInertia& p : pin_inertias(system)) put(p.ascii, p.formula, "kg m^2");
   const Mechanism& m = system.mechanism();
   for (const Joint& joint : m.joints) {
     const int body = m.body_index(joint.bodies[0]);
     const sym::Vec2 at = system.point_position(body, joint.points[0]);
-    derived[joint.name + ".x"] = value_at(at.x, s.values);
-    derived[joint.name + ".y"] = value_at(at.y, s.values);
+    put(joint.name + ".x", at.x, "m");
+    put(joint.name + ".y", at.y, "m");
   }
   for (const sym::SymbolInfo& info : system.table().all()) {
     if (info.role != sym::Role::coordinate && info.role != sym::Role::rate && info.role != sym::Role::length) continue;
     if (info.key.ends_with(".s") || info.key.ends_with(".s_dot")) continue;
     if (s.state.find(info.symbol) != s.state.end()) continue;  // in "state" already
-    derived[info.key] = value_at(info.symbol, s.values);
+    put(info.key, info.symbol, info.unit);
   }
   const GiNaC::ex T = sym::kinetic_energy(system), V = sym::potential_energy(system);
-  derived["kinetic_energy"] = value_at(T, s.values);
-  derived["potential_energy"] = value_at(V, s.values);
-  derived["energy"] = value_at(T + V, s.values);
+  put("kinetic_energy", T, "J");
+  put("potential_energy", V, "J");
+  put("energy", T + V, "J");
   const GiNaC::ex P = sym::nonconservative_power(system);
-  if (!P.is_zero()) derived["power"] = value_at(P, s.values);
+  if (!P.is_zero()) put("power", P, "W");
   const sym::Vec2 p = sym::linear_momentum(system);
-  derived["momentum_x"] = value_at(p.x, s.values);
-  derived["momentum_y"] = value_at(p.y, s.values);
-  derived["angular_momentum_O"] = value_at(sym::angular_momentum(system), s.values);
+  put("momentum_x", p.x, "kg m/s");
+  put("momentum_y", p.y, "kg m/s");
+  put("angular_momentum_O", sym::angular_momentum(system), "kg m^2/s");
   if (!touches_ground(system.mechanism()))
-    derived["angular_momentum_c"] = value_at(sym::angular_momentum_about_centre(system), s.values);
+    put("angular_momentum_c", sym::angular_momentum_about_centre(system), "kg m^2/s");
   return derived;
+}
+
+// The [aliases] rename keys the JSON has, each to a name no other key has.
+void check_aliases(const MechanismSolution& s) {
+  const sym::System& system = *s.system;
+  const Mechanism& m = system.mechanism();
+  if (m.aliases.empty()) return;
+  std::set<std::string> keys;
+  for (const Parameter& p : m.parameters) keys.insert(p.name);
+  nlohmann::ordered_json units;
+  const nlohmann::ordered_json derived = derived_json(s, units);
+  for (const auto& [key, value] : derived.items()) keys.insert(key);
+  for (const sym::SymbolInfo& info : system.table().all()) keys.insert(info.key);
+  std::set<std::string> renamed;
+  for (const Alias& a : m.aliases) renamed.insert(a.key);
+  for (const Alias& a : m.aliases) {
+    if (!keys.contains(a.key))
+      throw Error::input(concat({where(a.pos), "[aliases]: '", a.key,
+                                 "' is not a key of the JSON of the worked solution; valid: a key of its parameters, "
+                                 "state, derived values or unknowns (linkage solve --mechanism ",
+                                 m.name, " --format json), e.g. 'I', '1.theta_ddot'"}));
+    if (keys.contains(a.name) && !renamed.contains(a.name))
+      throw Error::input(concat({where(a.pos), "[aliases]: '", a.key, "' = '", a.name, "' names the key '", a.name,
+                                 "' the JSON already has; choose another alias"}));
+  }
+}
+
+// `object` with each key that has an alias renamed to it, in the same order.
+nlohmann::ordered_json renamed(const nlohmann::ordered_json& object, const std::map<std::string, std::string>& names) {
+  auto name = [&](const std::string& key) {
+    const auto it = names.find(key);
+    return it == names.end() ? key : it->second;
+  };
+  if (object.is_array()) {
+    nlohmann::ordered_json out = nlohmann::ordered_json::array();
+    for (const auto& key : object) out.push_back(name(key.get<std::string>()));
+    return out;
+  }
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  for (const auto& [key, value] : object.items()) out[name(key)] = value;
+  return out;
+}
+
+// The file's aliases in place of the quantity keys they rename (bodies and joints keep
+// their names).
+void apply_aliases(nlohmann::ordered_json& doc, const Mechanism& m) {
+  std::map<std::string, std::string> names;
+  for (const Alias& a : m.aliases) names[a.key] = a.name;
+  for (const char* section : {"parameters", "state", "derived", "solution", "units", "agreement"})
+    if (doc.contains(section)) doc[section] = renamed(doc[section], names);
+  for (auto& one : doc["cases"])
+    for (const char* section : {"unknowns", "solution", "recovered"}) one[section] = renamed(one[section], names);
 }
 
 }  // namespace
 
-MechanismSolution work_out_mechanism(const Mechanism& mechanism, const std::vector<CaseId>& cases) {
+MechanismSolution work_out_mechanism(const Mechanism& mechanism, const std::vector<CaseId>& cases, CaseForm form) {
   MechanismSolution out;
   out.system = std::make_shared<const sym::System>(mechanism);
   const sym::System& system = *out.system;
@@ -131,11 +202,12 @@ MechanismSolution work_out_mechanism(const Mechanism& mechanism, const std::vect
   out.state = closed.state;
   out.closure_note = closed.note;
   try {  // a number that overflows, or a singular matrix: name the values that likely caused it
-    work_out_numbers(out, cases);
+    work_out_numbers(out, cases, form);
   } catch (const Error& e) {
     const std::string causes = likely_causes(mechanism);
     throw causes.empty() ? e : e.rephrased(concat({e.what(), "; likely causes: ", causes}));
   }
+  check_aliases(out);
   return out;
 }
 
@@ -159,13 +231,16 @@ JointForce joint_force(const MechanismSolution& s, const SolvedCase& c, std::siz
   return f;
 }
 
-std::string mechanism_json(const MechanismSolution& s) {
+std::string mechanism_json(const MechanismSolution& s, JsonKeys keys) {
   using nlohmann::ordered_json;
   const sym::System& system = *s.system;
   const Mechanism& m = system.mechanism();
   ordered_json doc;
   doc["mechanism"] = m.name;
   doc["title"] = m.title;
+  ordered_json units = ordered_json::object();  // of every quantity the document gives
+  for (const Parameter& p : m.parameters)
+    if (!p.unit.empty()) units[p.name] = p.unit;
   ordered_json parameters = ordered_json::object();
   for (const Parameter& p : m.parameters) parameters[p.name] = p.value;
   doc["parameters"] = parameters;
@@ -173,10 +248,12 @@ std::string mechanism_json(const MechanismSolution& s) {
   for (const sym::GeneralizedCoordinate& g : system.coordinates()) {
     state[g.coordinate.key] = sym::to_double(s.state.at(g.symbols.q));
     state[g.coordinate.key + "_dot"] = sym::to_double(s.state.at(g.symbols.q_dot));
+    units[g.coordinate.key] = system.table().find(g.symbols.q)->unit;
+    units[g.coordinate.key + "_dot"] = system.table().find(g.symbols.q_dot)->unit;
   }
   doc["state"] = state;
   if (!s.closure_note.empty()) doc["loop_closure"] = s.closure_note;
-  doc["derived"] = derived_json(s);
+  doc["derived"] = derived_json(s, units);
   auto key = [&](const GiNaC::symbol& u) { return system.table().find(u)->key; };
   ordered_json cases = ordered_json::array();
   for (const SolvedCase& c : s.cases) {
@@ -222,11 +299,23 @@ std::string mechanism_json(const MechanismSolution& s) {
     cases.push_back(one);
   }
   doc["cases"] = cases;
+  // The solution as example.json has it: every body's acceleration and every joint force,
+  // from the first case shown (the cases agree to round-off; "agreement" says how well).
+  if (!s.cases.empty()) {
+    ordered_json solution = ordered_json::object();
+    for (const GiNaC::symbol& u : case1_unknowns(system)) {
+      solution[key(u)] = solved_value(s, s.cases.front(), u);
+      units[key(u)] = system.table().find(u)->unit;
+    }
+    doc["solution"] = solution;
+  }
+  doc["units"] = units;
   if (!s.agreement.empty()) {
     ordered_json agreement = ordered_json::object();
     for (const MechanismAgreement& a : s.agreement) agreement[key(a.unknown)] = a.max_abs_difference;
     doc["agreement"] = agreement;
   }
+  if (keys == JsonKeys::aliases) apply_aliases(doc, m);
   return json_layout(doc);
 }
 

@@ -39,8 +39,13 @@ struct MechanismSolution {
 };
 
 /// Derives and solves the selected cases. Errors name the file position of a bad value,
-/// and the case and condition number of a singular matrix.
-[[nodiscard]] MechanismSolution work_out_mechanism(const Mechanism& mechanism, const std::vector<CaseId>& cases);
+/// an alias of a key the JSON does not have or one that names another key, and the case
+/// and condition number of a singular matrix.
+/// How Case 3 is written: by eliminating the tree's joint forces from Newton-Euler (the
+/// homework's (1.3) to (4.3)), or in Lagrange's form M(q) q'' = Q (`solve --form lagrange`).
+enum class CaseForm { newton_euler, lagrange };
+[[nodiscard]] MechanismSolution work_out_mechanism(const Mechanism& mechanism, const std::vector<CaseId>& cases,
+                                                   CaseForm form = CaseForm::newton_euler);
 
 /// A body's centre-of-mass acceleration and angular acceleration in a solved case.
 struct BodyMotion {
@@ -55,8 +60,12 @@ struct JointForce {
 };
 [[nodiscard]] JointForce joint_force(const MechanismSolution& s, const SolvedCase& c, std::size_t joint);
 
-/// `linkage solve --mechanism --format json`.
-[[nodiscard]] std::string mechanism_json(const MechanismSolution& s);
+/// The names of the JSON's quantity keys: the mechanism's own ("1.x_ddot", "P.force_x"), or
+/// its file's [aliases] where it has them ("x1_ddot", "F_x").
+enum class JsonKeys { mechanism, aliases };
+
+/// `linkage solve --format json`.
+[[nodiscard]] std::string mechanism_json(const MechanismSolution& s, JsonKeys keys = JsonKeys::mechanism);
 
 /// The values a text may quote, by the names of mechanism_json: the parameters,
 /// definitions and body inertias (I, I_1) at the parameter values; the initial coordinates

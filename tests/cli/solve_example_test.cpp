@@ -1,10 +1,12 @@
-// `linkage solve --case all --format json` reproduces every value of the spec's
-// example.json (exact to 17 digits) to 1e-10 relative: the derived quantities and, for
-// each case, every unknown, those it solves for and those it recovers (Case 1's x2_ddot,
-// Case 3's F_x, ...). The JSON names them as the mechanism contract does ("2.x",
-// "P.force_x"); the spec's names map onto them here.
+// `linkage solve --case all --format json` reproduces the spec's example.json (exact to 17
+// digits) key by key under its names (two-blocks.toml's [aliases]): parameters, state and
+// derived at the same paths, and for each case every unknown of its "solution", those the
+// case solves for in "solution" and those it recovers in "recovered" (Case 3's F_x, ...).
+// `--mechanism two-blocks` prints the same numbers under the mechanism contract's names
+// ("2.x", "P.force_x"); the spec's names map onto them here.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <string>
@@ -16,6 +18,8 @@ namespace {
 
 using nlohmann::json;
 
+// The cases' matrices have condition numbers up to about 1.2e4: a solution is good to
+// about that times the machine epsilon, relative; 1e-10 leaves room for the derived sums.
 constexpr double kRelative = 1e-10;
 
 // The spec's names in example.json -> the contract's, for two-blocks.toml.
@@ -66,15 +70,18 @@ TEST(SolveExample, ReproducesEveryValueOfExampleJson) {
   const json& example = test::spec_example();
   const json doc = solve_json({"--case", "all"});
 
-  for (const auto& [key, value] : example["parameters"].items())
+  for (const auto& [key, value] : example["parameters"].items()) {
+    ASSERT_TRUE(doc["parameters"].contains(key)) << "parameters." << key << " missing";
     EXPECT_EQ(doc["parameters"][key].get<double>(), test::number(value)) << key;
-  for (const auto& [key, value] : example["state"].items())
-    EXPECT_EQ(doc["state"][contract(key)].get<double>(), test::number(value)) << key;
-
+  }
+  for (const auto& [key, value] : example["state"].items()) {
+    ASSERT_TRUE(doc["state"].contains(key)) << "state." << key << " missing";
+    EXPECT_EQ(doc["state"][key].get<double>(), test::number(value)) << key;
+  }
   int compared = 0;
   for (const auto& [key, value] : example["derived"].items()) {
-    ASSERT_TRUE(doc["derived"].contains(contract(key))) << "derived." << contract(key) << " missing";
-    expect_relative(doc["derived"][contract(key)].get<double>(), test::number(value), "derived." + key);
+    ASSERT_TRUE(doc["derived"].contains(key)) << "derived." << key << " missing";
+    expect_relative(doc["derived"][key].get<double>(), test::number(value), "derived." + key);
     ++compared;
   }
   EXPECT_EQ(compared, 14);
@@ -83,16 +90,32 @@ TEST(SolveExample, ReproducesEveryValueOfExampleJson) {
   for (const json& c : doc["cases"]) {
     const std::string name = "Case " + std::to_string(c["case"].get<int>());
     int unknowns = 0;
-    for (const auto& [spec_key, value] : example["solution"].items()) {
-      const std::string key = contract(spec_key);
+    for (const auto& [key, value] : example["solution"].items()) {
       const bool solved = c["solution"].contains(key);
       ASSERT_TRUE(solved || c["recovered"].contains(key)) << name << " lacks " << key;
+      const auto listed = c["unknowns"].get<std::vector<std::string>>();
+      EXPECT_EQ(solved, std::find(listed.begin(), listed.end(), key) != listed.end()) << name << " " << key;
       const json& got = solved ? c["solution"][key] : c["recovered"][key];
       expect_relative(got.get<double>(), test::number(value), name + " " + key);
       ++unknowns;
     }
     EXPECT_EQ(unknowns, 8) << name;
   }
+
+  // Every key of example.json at the same place, but its free-text note: the solution
+  // (from Case 1, the first case shown) and the units as well.
+  for (const auto& [key, value] : example.items()) {
+    if (key != "note") {
+      EXPECT_TRUE(doc.contains(key)) << key << " missing";
+    }
+  }
+  ASSERT_EQ(doc["solution"].size(), example["solution"].size());
+  for (const auto& [key, value] : example["solution"].items()) {
+    ASSERT_TRUE(doc["solution"].contains(key)) << "solution." << key << " missing";
+    EXPECT_EQ(doc["solution"][key], doc["cases"][0]["solution"][key]) << key;
+    expect_relative(doc["solution"][key].get<double>(), test::number(value), "solution." + key);
+  }
+  for (const auto& [key, unit] : example["units"].items()) EXPECT_EQ(doc["units"][key], unit) << "units." << key;
 }
 
 TEST(SolveExample, EachCaseHasTheIssuesFieldsInRowOrder) {
@@ -101,9 +124,9 @@ TEST(SolveExample, EachCaseHasTheIssuesFieldsInRowOrder) {
                                                         {"1.2", "2.2", "3.2", "4.2", "5.2", "6.2"},
                                                         {"1.3", "2.3", "3.3", "4.3"}};
   const std::vector<std::vector<std::string>> unknowns = {
-      {"1.x_ddot", "1.y_ddot", "1.theta_ddot", "2.x_ddot", "2.y_ddot", "2.theta_ddot", "P.force_x", "P.force_y"},
-      {"1.x_ddot", "1.y_ddot", "1.theta_ddot", "2.theta_ddot", "P.force_x", "P.force_y"},
-      {"1.x_ddot", "1.y_ddot", "1.theta_ddot", "2.theta_ddot"}};
+      {"x1_ddot", "y1_ddot", "theta1_ddot", "x2_ddot", "y2_ddot", "theta2_ddot", "F_x", "F_y"},
+      {"x1_ddot", "y1_ddot", "theta1_ddot", "theta2_ddot", "F_x", "F_y"},
+      {"x1_ddot", "y1_ddot", "theta1_ddot", "theta2_ddot"}};
   ASSERT_EQ(doc["cases"].size(), 3u);
   for (std::size_t i = 0; i < 3; ++i) {
     const json& c = doc["cases"][i];
@@ -137,10 +160,10 @@ TEST(SolveExample, OneCaseAndInputsFromFileAndFlags) {
   ASSERT_EQ(doc["cases"].size(), 1u);
   EXPECT_EQ(doc["cases"][0]["case"], 3);
   EXPECT_FALSE(doc.contains("agreement"));
-  EXPECT_EQ(doc["parameters"]["m"], 2.0);   // from the file
-  EXPECT_EQ(doc["state"]["2.theta"], 0.7);  // the flag overrides the file
-  EXPECT_EQ(doc["parameters"]["L"], 0.3);   // the default
-  expect_relative(doc["derived"]["I"].get<double>(), 2 * (0.01 + 0.09) / 12, "I");
+  EXPECT_EQ(doc["parameters"]["m"], 2.0);  // from the file
+  EXPECT_EQ(doc["state"]["theta2"], 0.7);  // the flag overrides the file
+  EXPECT_EQ(doc["parameters"]["L"], 0.3);  // the default
+  expect_relative(doc["derived"]["I_zz_C"].get<double>(), 2 * (0.01 + 0.09) / 12, "I_zz_C");
 
   // The text report says where the inputs came from.
   const test::RunResult text = test::run_linkage(
@@ -156,6 +179,38 @@ TEST(SolveExample, OneCaseAndInputsFromFileAndFlags) {
                         "in the shipped two-blocks.toml."),
             std::string::npos)
       << text.out.substr(0, 1600);
+}
+
+// --mechanism two-blocks is the same solution under the mechanism's own keys: every value
+// of the homework's JSON at the key the contract gives it, and no spec name left.
+TEST(SolveExample, MechanismTwoBlocksKeepsTheMechanismKeys) {
+  const json homework = solve_json({});
+  const json mechanism = solve_json({"--mechanism", "two-blocks"});
+  for (const char* section : {"parameters", "state", "derived", "solution", "units", "agreement"}) {
+    ASSERT_EQ(mechanism[section].size(), homework[section].size()) << section;
+    for (const auto& [key, value] : homework[section].items()) {
+      ASSERT_TRUE(mechanism[section].contains(contract(key))) << section << "." << contract(key) << " missing";
+      EXPECT_EQ(mechanism[section][contract(key)], value) << section << "." << key;
+      if (contract(key) != key) {
+        EXPECT_FALSE(mechanism[section].contains(key)) << section << "." << key;
+      }
+    }
+  }
+  ASSERT_EQ(mechanism["cases"].size(), homework["cases"].size());
+  for (std::size_t i = 0; i < homework["cases"].size(); ++i) {
+    const json& h = homework["cases"][i];
+    const json& m = mechanism["cases"][i];
+    std::vector<std::string> unknowns;
+    for (const json& u : h["unknowns"]) unknowns.push_back(contract(u.get<std::string>()));
+    EXPECT_EQ(m["unknowns"].get<std::vector<std::string>>(), unknowns);
+    for (const char* section : {"solution", "recovered"}) {
+      ASSERT_EQ(m[section].size(), h[section].size());
+      for (const auto& [key, value] : h[section].items()) EXPECT_EQ(m[section][contract(key)], value) << key;
+    }
+    EXPECT_EQ(m["A"], h["A"]);
+    EXPECT_EQ(m["bodies"], h["bodies"]);
+    EXPECT_EQ(m["joints"], h["joints"]);
+  }
 }
 
 }  // namespace

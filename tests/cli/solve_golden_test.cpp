@@ -1,6 +1,7 @@
 // Golden files of `linkage solve` for the spec's example, in tests/data/solve/. Text is
 // checked in ASCII and in Unicode (forced, so the locale does not matter), LaTeX,
-// Markdown and JSON byte for byte: the output is deterministic.
+// Markdown and JSON byte for byte: the output is deterministic. Two more hold Case 3 in
+// Lagrange's form (--form lagrange) for a tree and a closed loop.
 //
 // Regenerate after an intended change, then review the diff:
 //   LINKAGE_UPDATE_GOLDENS=1 ctest --test-dir build -R SolveGolden
@@ -26,6 +27,11 @@ const std::vector<Golden>& goldens() {
       {"example-all.tex", {"solve", "--format", "latex"}},
       {"example-all.md", {"solve", "--format", "markdown"}},
       {"example-all.json", {"solve", "--format", "json"}},
+      // Case 3 in Lagrange's form: a tree and a closed loop.
+      {"lagrange-double-pendulum-unicode.txt",
+       {"solve", "--mechanism", "double-pendulum", "--case", "3", "--form", "lagrange", "--unicode"}},
+      {"lagrange-slider-crank-ascii.txt",
+       {"solve", "--mechanism", "slider-crank", "--case", "3", "--form", "lagrange", "--ascii"}},
   };
   return list;
 }
