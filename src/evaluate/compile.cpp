@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "evaluate/program.hpp"
+#include "symbolic/system.hpp"
 
 namespace linkage::eval {
 namespace {
@@ -162,7 +163,7 @@ class Builder {
 
   Index number(const GiNaC::numeric& n, const GiNaC::ex& source) {
     if (!n.is_real()) fail(source, "a complex number");
-    return constant(n.to_double());
+    return constant(sym::to_double(n));
   }
 
   Index constant(double v) {
