@@ -144,7 +144,10 @@ class Builder {
       return number(GiNaC::ex_to<GiNaC::numeric>(v), e);
     }
     if (GiNaC::is_a<GiNaC::add>(e)) return sum(e);
-    if (GiNaC::is_a<GiNaC::mul>(e)) return product(e);
+    if (GiNaC::is_a<GiNaC::mul>(e)) {
+      const GiNaC::ex distributed = sym::in_double_range(e);
+      return distributed.is_equal(e) ? product(e) : value(distributed);
+    }
     if (GiNaC::is_a<GiNaC::power>(e)) return power(e.op(0), e.op(1));
     if (GiNaC::is_a<GiNaC::function>(e)) return function(e);
     fail(e, "a " + std::string(GiNaC::ex_to<GiNaC::basic>(e).class_name()));

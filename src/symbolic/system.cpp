@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 
 #include "core/error.hpp"
@@ -66,6 +67,10 @@ double evaluate(const ex& e, const GiNaC::exmap& values) {
     return evaluate(it->second, values);
   }
   if (GiNaC::is_a<GiNaC::constant>(e)) return GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(e)).to_double();
+  if (GiNaC::is_a<GiNaC::mul>(e)) {
+    const ex distributed = in_double_range(e);
+    if (!distributed.is_equal(e)) return evaluate(distributed, values);
+  }
   if (GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e)) {
     const bool sum = GiNaC::is_a<GiNaC::add>(e);
     std::vector<double> parts;
@@ -109,6 +114,17 @@ double evaluate(const ex& e, const GiNaC::exmap& values) {
 }
 
 double to_double(const ex& e) { return evaluate(e, {}); }
+
+ex in_double_range(const ex& e) {
+  if (!GiNaC::is_a<GiNaC::mul>(e)) return e;
+  const GiNaC::numeric largest(std::numeric_limits<double>::max()), smallest(std::numeric_limits<double>::min());
+  for (std::size_t k = 0; k < e.nops(); ++k) {
+    if (!GiNaC::is_a<GiNaC::numeric>(e.op(k))) continue;
+    const GiNaC::numeric size = GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(e.op(k)));
+    if (size > largest || (!size.is_zero() && size < smallest)) return GiNaC::expand(e);
+  }
+  return e;
+}
 
 namespace {
 

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "core/error.hpp"
 #include "symbolic/loop_closure.hpp"
 
@@ -128,6 +130,18 @@ TEST(Validate, GravityNegativeAtTheParametersIsRefused) {
   m.gravity = q("g", 2);
   m.parameters[2].value = -9.81;
   EXPECT_EQ(error_of(m), "m.toml:2:9: gravity \"g\" is -9.81 at the parameters; valid: >= 0");
+}
+
+// Issue 22 F06: exact decimals multiply into numbers beyond double range; GiNaC keeps an
+// inertia of them as 1/N m (K1 w^2 + K2) with N = 3.8e1317, which evaluated to 0 * inf.
+TEST(Validate, ProductsOfExactDecimalsEvaluateInDoubleRange) {
+  const GiNaC::symbol m("m"), w("w");
+  const GiNaC::ex decimal = GiNaC::numeric("30000000000000001") / GiNaC::pow(GiNaC::numeric(10), 17);
+  const GiNaC::ex length = GiNaC::pow(decimal, 12) / GiNaC::pow(GiNaC::numeric(3, 10), 11);
+  const GiNaC::ex inertia = m * (GiNaC::pow(length, 2) + GiNaC::pow(w, 2)) / 12;
+  const GiNaC::exmap values{{m, GiNaC::numeric(0.1)}, {w, GiNaC::numeric(0.1)}};
+  const double exact = 0.0008333333333333339;  // by Python's fractions, rounded once
+  EXPECT_NEAR(sym::evaluate(inertia, values), exact, 4 * std::numeric_limits<double>::epsilon() * exact);
 }
 
 // Issue 22 F04/F05: numbers beyond double range threw CLN's "floating point underflow".
