@@ -25,9 +25,9 @@
 #include "pipeline/render_options.hpp"
 #include "render/settings.hpp"
 #include "render/theme.hpp"
+#include "report/mechanism_solution.hpp"
 #include "report/mechanism_text.hpp"
 #include "scene/scene_builder.hpp"
-#include "symbolic/loop_closure.hpp"
 
 namespace linkage::cli {
 namespace {
@@ -133,11 +133,13 @@ void print_stats(const RenderStats& s) {
 /// Any mechanism (--mechanism): its own scene and camera, the same outputs and checks.
 ClipResult render_mechanism(const RenderFlags& f, const ClipProgress& progress) {
   const RenderRequest request = resolve_request(f);
-  const sym::System system(chosen_mechanism(f.mechanism, f.inputs));
   const ClipPlan plan = plan_of(f);
   const SimulationOptions simulation = resolve_simulation_flags(f.simulation, request.settings.duration);
-  const sym::ClosedState closed = sym::checked_initial_state(system);
-  const CheckedMechanismClip made = mechanism_clip(request, system, closed.state, simulation, plan);
+  // The initial state worked out as solve does, so a value that breaks it is named the same way.
+  const MechanismSolution checked =
+      work_out_mechanism(chosen_mechanism(f.mechanism, f.inputs), {static_cast<CaseId>(simulation.case_id)});
+  const sym::System& system = *checked.system;
+  const CheckedMechanismClip made = mechanism_clip(request, system, checked.state, simulation, plan);
   const MechanismClip& clip = made.clip;
   note_duration(f, clip.is_still(), clip.frames.has_value());
   if (!f.quiet) {
@@ -147,9 +149,9 @@ ClipResult render_mechanism(const RenderFlags& f, const ClipProgress& progress) 
     for (const sym::JointSystem& joint : system.joints())
       if (clip.simulation.case_id == 1 || !joint.in_tree) ++kept;
     note_ignored_simulation_flags(f.simulation, clip.simulation, kept);
-    if (!closed.note.empty()) std::fprintf(stderr, "linkage: note: %s\n", closed.note.c_str());
+    if (!checked.closure_note.empty()) std::fprintf(stderr, "linkage: note: %s\n", checked.closure_note.c_str());
   }
-  return produce_mechanism_clip(system, closed.state, clip, progress);
+  return produce_mechanism_clip(system, checked.state, clip, progress);
 }
 
 void run_render(const RenderFlags& flags) {

@@ -28,7 +28,7 @@
 #include "integrate/simulation.hpp"
 #include "integrate/trajectory_rows.hpp"
 #include "pipeline/simulate_rows.hpp"
-#include "symbolic/loop_closure.hpp"
+#include "report/mechanism_solution.hpp"
 
 namespace linkage::cli {
 namespace {
@@ -226,16 +226,18 @@ std::string mechanism_json_summary(const MechanismStats& st, double wall) {
 void run_simulate_mechanism(const SimulateOptions& o, const SimulationOptions& s, double every, Format format) {
   const auto start = std::chrono::steady_clock::now();
   const TrajectoryRows samples = checked_rows(s.duration, every);
-  const sym::System system(chosen_mechanism(o.mechanism, o.inputs));
-  const sym::ClosedState closed = sym::checked_initial_state(system);
+  // The initial state worked out as solve does, so a value that breaks it is named the same way.
+  const MechanismSolution checked =
+      work_out_mechanism(chosen_mechanism(o.mechanism, o.inputs), {static_cast<CaseId>(s.case_id)});
+  const sym::System& system = *checked.system;
   const std::vector<MechanismColumn> all = mechanism_columns(system);
   const bool asked = o.columns_option != nullptr && o.columns_option->count() > 0;
   const std::vector<MechanismColumn> columns =
       select_mechanism_columns(all, asked ? o.columns : "default", "--columns");
-  MechanismSimulation simulation(system, closed.state, s);
+  MechanismSimulation simulation(system, checked.state, s);
   if (!o.quiet) {
     note_ignored_simulation_flags(o.simulation, s, simulation.dynamics().constraint_rows());
-    if (!closed.note.empty()) std::fprintf(stderr, "linkage: note: %s\n", closed.note.c_str());
+    if (!checked.closure_note.empty()) std::fprintf(stderr, "linkage: note: %s\n", checked.closure_note.c_str());
   }
   std::optional<AtomicFile> file;
   if (!o.out.empty()) file.emplace(o.out, "out");
@@ -243,7 +245,7 @@ void run_simulate_mechanism(const SimulateOptions& o, const SimulationOptions& s
   const AngleUnit angles = parse_angle_unit(o.angles, "--angles");
   const WrittenColumns written = written_columns(columns, angles);
   writer.begin(written.names,
-               format == Format::json ? mechanism_json_header(system, closed.state, s, every, columns, written) : "");
+               format == Format::json ? mechanism_json_header(system, checked.state, s, every, columns, written) : "");
   Progress progress("simulate", s.duration, "s simulated", o.quiet);
   simulation.on_progress([&progress](double t) { progress.update(t); });
   (void)mechanism_trajectory(simulation, s.case_id, samples, columns, angles,

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "evaluate/program.hpp"
+#include "symbolic/system.hpp"
 
 namespace linkage::eval {
 namespace {
@@ -143,7 +144,10 @@ class Builder {
       return number(GiNaC::ex_to<GiNaC::numeric>(v), e);
     }
     if (GiNaC::is_a<GiNaC::add>(e)) return sum(e);
-    if (GiNaC::is_a<GiNaC::mul>(e)) return product(e);
+    if (GiNaC::is_a<GiNaC::mul>(e)) {
+      const GiNaC::ex distributed = sym::in_double_range(e);
+      return distributed.is_equal(e) ? product(e) : value(distributed);
+    }
     if (GiNaC::is_a<GiNaC::power>(e)) return power(e.op(0), e.op(1));
     if (GiNaC::is_a<GiNaC::function>(e)) return function(e);
     fail(e, "a " + std::string(GiNaC::ex_to<GiNaC::basic>(e).class_name()));
@@ -162,7 +166,7 @@ class Builder {
 
   Index number(const GiNaC::numeric& n, const GiNaC::ex& source) {
     if (!n.is_real()) fail(source, "a complex number");
-    return constant(n.to_double());
+    return constant(sym::to_double(n));
   }
 
   Index constant(double v) {

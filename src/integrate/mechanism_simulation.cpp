@@ -13,6 +13,7 @@
 #include "integrate/dopri5.hpp"
 #include "integrate/explicit_rk.hpp"
 #include "integrate/gauss_legendre.hpp"
+#include "integrate/step_budget.hpp"
 #include "integrate/symplectic_euler.hpp"
 
 namespace linkage {
@@ -21,8 +22,6 @@ namespace {
 
 using Vector = Eigen::VectorXd;
 constexpr int kDynamic = Eigen::Dynamic;
-// Steps between polls for Ctrl-C and progress reports.
-constexpr unsigned kCheckInterval = 4096;
 // A loop whose constraint error passes this, in metres (or radians), has come apart: the
 // numbers no longer describe the mechanism.
 constexpr double kOpenLoop = 1e-3;
@@ -84,10 +83,12 @@ struct MechanismSimulation::Impl {
 
   void start_stepper();
   void advance(double t);
-  void after_step(double t) {
-    if (++steps % kCheckInterval != 0) return;
+  /// Every kCheckInterval steps: lets Ctrl-C stop the run and reports progress. True on those steps.
+  bool after_step(double t) {
+    if (++steps % kCheckInterval != 0) return false;
     throw_if_interrupted();
     if (report) report(t);
+    return true;
   }
   void check_loop(double t) {
     if (dynamics.constraint_rows() == 0) return;
@@ -122,6 +123,7 @@ struct MechanismSimulation::Impl {
   MechanismStats stats;
   std::function<void(double)> report;
   unsigned steps = 0;
+  StepBudget budget;  // adaptive runs only
   // One of these steps, by the integrator chosen.
   std::unique_ptr<ode::ExplicitEuler<double, kDynamic>> euler;
   std::unique_ptr<ode::SymplecticEuler<double, kDynamic>> symplectic;
@@ -175,7 +177,11 @@ void MechanismSimulation::Impl::advance(double t) {
         y = stepper.y();
         check_loop(stepper.t());
         if (project) stepper.replace_state(rhs, y);
-        after_step(stepper.t());
+        if (!after_step(stepper.t())) continue;
+        if (const auto overrun = budget.check(stepper.t(), stepper.counters().steps_accepted, options)) {
+          fail(options, overrun->what + " (last step " + format_significant(stepper.last_step(), 3) + " s)",
+               overrun->hint, stepper.t());
+        }
       }
       stepper.dense(rhs, t, sample_y);
       if (project && t != stepper.t()) dynamics.project(t, sample_y);

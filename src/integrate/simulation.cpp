@@ -17,6 +17,7 @@
 #include "integrate/gauss_legendre.hpp"
 #include "integrate/linkage_rhs.hpp"
 #include "integrate/projection.hpp"
+#include "integrate/step_budget.hpp"
 #include "integrate/symplectic_euler.hpp"
 
 namespace linkage {
@@ -46,13 +47,7 @@ constexpr std::array<std::pair<Stabilization, std::string_view>, 3> kStabilizati
 constexpr double kMaxDuration = 1e6;  // s
 constexpr double kMinRtol = 1e-14, kMaxTol = 1.0;
 constexpr double kMinAtol = 1e-20;
-constexpr double kMaxGain = 1e6;   // 1/s
-constexpr double kMaxSteps = 1e9;  // fixed-step runs by validation, adaptive ones as they go
-// Steps between polls for Ctrl-C, progress reports and checks of the adaptive step
-// budget: milliseconds of work.
-constexpr unsigned kCheckInterval = 4096;
-// The adaptive step budget judges the mean step over this many of those intervals.
-constexpr std::size_t kBudgetIntervals = 16;
+constexpr double kMaxGain = 1e6;  // 1/s
 
 std::string num(double v) { return format_roundtrip(v); }
 
@@ -120,14 +115,6 @@ void SimulationOptions::validate() const {
 // --- the runs -----------------------------------------------------------------------
 
 namespace {
-
-/// "try A, B or C".
-std::string try_list(const std::vector<std::string>& options) {
-  std::string text = "try ";
-  for (std::size_t i = 0; i < options.size(); ++i)
-    text += (i == 0 ? "" : i + 1 == options.size() ? " or " : ", ") + options[i];
-  return text;
-}
 
 /// Ends a run that cannot go on: one line naming the time, the step, the case and
 /// integrator, what happened and what to try.
@@ -386,44 +373,13 @@ class AdaptiveRun final : public CaseRun<Case> {
     return s;
   }
 
-  /// The floor under adaptive steps, relative to t and the duration: at the mean step
-  /// of the last kBudgetIntervals x kCheckInterval steps, the run must reach its end
-  /// within kMaxSteps steps in all (the limit a fixed-step run is refused at: from a
-  /// quarter of an hour of DOP853 steps to hours), else it ends now instead of
-  /// grinding for hours and then, often, underflowing (1e8 rad/s did, after 6e7
-  /// steps). A physical time scale (the spin period, sqrt(L / g)) was measured and
-  /// rejected as the floor: at angles of 1e7 rad and more, round-off in the angle holds
-  /// the step near 1e-7 of the spin period for thousands of steps, and such runs still
-  /// end well. The long window lets such dips pass.
   void check_budget() {
-    const double t = stepper_.t(), duration = this->options.duration;
-    const double then = checked_at_[next_check_ % kBudgetIntervals];  // kBudgetIntervals checks ago
-    checked_at_[next_check_++ % kBudgetIntervals] = t;
-    if (next_check_ < kBudgetIntervals) return;
-    const auto steps = static_cast<double>(stepper_.counters().steps_accepted);
-    const double mean_step = (t - then) / (kBudgetIntervals * kCheckInterval);
-    const double needed = steps + std::max(0.0, duration - t) / mean_step;
-    if (!(needed > kMaxSteps)) return;
-    const SimulationOptions& o = this->options;
-    std::vector<std::string> remedies;
-    // Smooth steps grow about as tol^(1 / order); steps held down by round-off (far below
-    // the run's mean so far) grow much faster with a looser tolerance.
-    const double rtol = o.rtol * std::pow(needed / kMaxSteps, info(o.integrator).order);
-    if (mean_step < 1e-3 * t / steps && (o.rtol < 1e-6 || o.atol < 1e-6))
-      remedies.emplace_back("a looser rtol/atol");
-    else if (rtol <= 1e-6)
-      remedies.push_back("an rtol/atol of " + format_significant(rtol, 1) + " or looser");
-    remedies.push_back("a duration under " + format_significant(t + (kMaxSteps - steps) * mean_step, 2) + " s");
-    fail(o,
-         "at its recent steps (" + format_significant(mean_step, 2) + " s on average) it needs about " +
-             format_significant(needed, 2) + " steps to reach " + format_significant(duration, 6) +
-             " s, more than the limit of " + format_significant(kMaxSteps, 1),
-         try_list(remedies), t, stepper_.last_step());
+    const auto overrun = budget_.check(stepper_.t(), stepper_.counters().steps_accepted, this->options);
+    if (overrun) fail(this->options, overrun->what, overrun->hint, stepper_.t(), stepper_.last_step());
   }
 
   Stepper stepper_;
-  std::array<double, kBudgetIntervals> checked_at_{};  // t at the last budget checks (and 0 at the start)
-  std::size_t next_check_ = 0;
+  StepBudget budget_;
 };
 
 template <class Case>

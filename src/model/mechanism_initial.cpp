@@ -101,6 +101,9 @@ void validate_initial(const Mechanism& mechanism) {
 void set_value(Mechanism& mechanism, const std::string& name, double value, const std::string& origin) {
   if (!std::isfinite(value))
     throw Error::invalid("set", name + " = " + format_roundtrip(value) + " (" + origin + ") is not a finite number");
+  if (!in_magnitude_range(value))
+    throw Error::invalid(
+        "set", name + " = " + format_roundtrip(value) + " (" + origin + ") is out of range; valid: " + kMagnitudeRange);
   const SourcePos from{origin, 0, 0};
   for (Parameter& parameter : mechanism.parameters) {
     if (parameter.name != name) continue;

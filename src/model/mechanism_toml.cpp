@@ -6,6 +6,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 #include <optional>
@@ -122,6 +123,30 @@ std::string q(std::string_view text) {
   out += text;
   out += '\'';
   return out;
+}
+
+// The names an expression's text mentions (numbers, exponents included, skipped).
+std::vector<std::string> names_in(std::string_view text) {
+  std::vector<std::string> names;
+  std::size_t i = 0;
+  auto word = [&](std::size_t j) {
+    return j < text.size() && (std::isalnum(static_cast<unsigned char>(text[j])) != 0 || text[j] == '_');
+  };
+  while (i < text.size()) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (std::isdigit(c) != 0 || c == '.') {
+      while (i < text.size() && (word(i) || text[i] == '.' ||
+                                 ((text[i] == '+' || text[i] == '-') && (text[i - 1] == 'e' || text[i - 1] == 'E'))))
+        ++i;
+    } else if (std::isalpha(c) != 0 || c == '_') {
+      const std::size_t start = i;
+      while (word(i)) ++i;
+      names.emplace_back(text.substr(start, i - start));
+    } else {
+      ++i;
+    }
+  }
+  return names;
 }
 
 // A quantity as read, with its number when the file gave a plain number.
@@ -343,6 +368,9 @@ class MechanismReader {
                                    type_phrase(*number) + "; an expression belongs in [definitions]");
       if (!std::isfinite(*value))
         fail(number->source(), context + " = " + format_roundtrip(*value) + " is not a finite number");
+      if (!in_magnitude_range(*value))
+        fail(number->source(),
+             context + " = " + format_roundtrip(*value) + " is out of range; valid: " + kMagnitudeRange);
       m_.parameters.push_back({name, *value, pos(number->source()), unit, meaning});
     }
   }
@@ -360,6 +388,42 @@ class MechanismReader {
                        "; names must be unique");
       m_.definitions.push_back({name, quantity_of(*node, q(name), "definition " + q(name)).quantity, at});
     }
+    order_definitions();
+  }
+
+  // A TOML table has no order: each definition goes after the ones it uses (file order
+  // otherwise), and a cycle is refused naming it.
+  void order_definitions() {
+    std::vector<Definition>& all = m_.definitions;
+    auto uses = [&](const Definition& d) {
+      std::vector<std::size_t> out;
+      for (const std::string& word : names_in(d.value.text))
+        for (std::size_t k = 0; k < all.size(); ++k)
+          if (all[k].name == word) out.push_back(k);
+      return out;
+    };
+    std::vector<int> state(all.size(), 0);  // 0 not yet, 1 on the path, 2 placed
+    std::vector<std::size_t> order, path;
+    const std::function<void(std::size_t)> place = [&](std::size_t k) {
+      if (state[k] == 2) return;
+      if (state[k] == 1) {
+        std::string cycle;
+        const auto from = std::find(path.begin(), path.end(), k);
+        for (auto i = from; i != path.end(); ++i) cycle += all[*i].name + " -> ";
+        fail(all[k].value.pos, "definition " + q(all[k].name) + " depends on itself: " + cycle + all[k].name +
+                                   "; valid: definitions that end in parameters and numbers");
+      }
+      state[k] = 1;
+      path.push_back(k);
+      for (const std::size_t used : uses(all[k])) place(used);
+      path.pop_back();
+      state[k] = 2;
+      order.push_back(k);
+    };
+    for (std::size_t k = 0; k < all.size(); ++k) place(k);
+    std::vector<Definition> sorted;
+    for (const std::size_t k : order) sorted.push_back(std::move(all[k]));
+    all = std::move(sorted);
   }
 
   std::vector<NamedPoint> read_points(const TableReader& owner) const {
@@ -632,6 +696,9 @@ class MechanismReader {
       for (const auto& [value_key, value] : r.entries()) {
         const std::string coordinate(value_key->str());
         const double number = *r.number(coordinate, -kInf, kInf, "");
+        if (!in_magnitude_range(number))
+          fail(value->source(), context + ": " + coordinate + " = " + format_roundtrip(number) +
+                                    " is out of range; valid: " + kMagnitudeRange);
         m_.initial.push_back({name + "." + coordinate, number, pos(value->source())});
       }
     }

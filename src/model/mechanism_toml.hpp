@@ -3,7 +3,9 @@
 // is one line "FILE:LINE:COLUMN: TABLE: what is wrong; valid ..." thrown as Error::input,
 // worded by model/toml_table.hpp as a lesson file's errors are.
 // Expressions are kept as text; the symbolic layer parses them and checks their values.
+#include <cmath>
 #include <filesystem>
+#include <limits>
 #include <span>
 #include <string>
 #include <string_view>
@@ -37,7 +39,16 @@ void validate_initial(const Mechanism& mechanism);
 
 /// `--set NAME=VALUE`: a parameter ("L") or an initial coordinate or rate ("2.theta",
 /// "1.x_dot", "slider.s"); `origin` says where the setting came from. Throws
-/// Error::invalid("set", ...) for an unknown name or a value that is not finite.
+/// A parameter's or initial value's magnitude: 0 or a normal double. A subnormal one
+/// (5e-324) has lost its digits already and trapped in CLN's arithmetic; a huge one is
+/// refused where it overflows, naming it (likely_causes).
+inline constexpr const char* kMagnitudeRange =
+    "0 or a magnitude of at least 2.2250738585072014e-308 (double's normal range)";
+[[nodiscard]] inline bool in_magnitude_range(double v) {
+  return v == 0 || !(std::fabs(v) < std::numeric_limits<double>::min());
+}
+
+/// Error::invalid("set", ...) for an unknown name or a value that is not finite or out of range.
 void set_value(Mechanism& mechanism, const std::string& name, double value, const std::string& origin);
 /// The same from "NAME=VALUE" text (a --set flag, a lesson's `set` list); Error::invalid
 /// ("set", ...) naming `origin` when the text is not NAME=NUMBER.

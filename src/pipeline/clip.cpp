@@ -304,7 +304,8 @@ void Clip::validate() const {
     throw Error::invalid("frames", "'" + frames->string() + "' exists and is not a folder");
   if (ensemble != 0 && (ensemble < 2 || ensemble > 200))
     throw Error::invalid("ensemble", std::to_string(ensemble) + " runs; expected 2 .. 200");
-  if (!(std::isfinite(spread) && spread > 0)) throw Error::invalid("spread", "expected a finite number > 0 (rad)");
+  if (!(spread > 0 && spread <= kMaxSpread))
+    throw Error::invalid("spread", "expected a number in (0, " + format_significant(kMaxSpread, 6) + "] (rad)");
   // Apart at the pin, each block with its loads: other runs' blocks over them would hide
   // the very forces the view is for.
   if (settings.free_body && (ensemble != 0 || compare))

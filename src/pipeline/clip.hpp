@@ -47,6 +47,10 @@ struct HomeworkRun {
 [[nodiscard]] HomeworkRun homework_compared_run(const std::vector<std::string>& items, const Inputs& inputs,
                                                 const SimulationOptions& simulation, const std::string& origin);
 
+/// The largest ensemble spread, rad or m: far past any spread that shows chaos, and
+/// far below where the states would leave double precision (1e308 overflowed).
+inline constexpr double kMaxSpread = 1e3;
+
 /// The ensemble's other initial states: theta1 moved by spread k / (n - 1), k = 1 .. n - 1.
 [[nodiscard]] std::vector<State> homework_ensemble_states(const State& state, int n, double spread);
 

@@ -428,8 +428,9 @@ void MechanismClip::validate(const sym::System& system) const {
   if (!settings.panel.empty()) (void)mechanism_panel_columns(mechanism_columns(system), settings.panel);
   if (ensemble != 0 && (ensemble < 2 || ensemble > 200))
     throw Error::invalid("ensemble", std::to_string(ensemble) + " runs; expected 2 .. 200");
-  if (!(std::isfinite(spread) && spread > 0))
-    throw Error::invalid("spread", "expected a finite number > 0 (rad or m, the first coordinate's unit)");
+  if (!(spread > 0 && spread <= kMaxSpread))
+    throw Error::invalid("spread", "expected a number in (0, " + format_significant(kMaxSpread, 6) +
+                                       "] (rad or m, the first coordinate's unit)");
   if (compare && !compare->table) compare->simulation.validate();
 }
 

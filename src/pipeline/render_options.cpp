@@ -8,7 +8,9 @@
 
 #include "core/angle_unit.hpp"
 #include "core/error.hpp"
+#include "core/number_format.hpp"
 #include "core/parse_text.hpp"
+#include "pipeline/clip.hpp"
 #include "pipeline/panel_data.hpp"
 #include "render/theme.hpp"
 #include "scene/arrow_scale.hpp"
@@ -144,14 +146,14 @@ void ensemble(RenderDraft& d, const std::string& text) {
 
 void spread(RenderDraft& d, const std::string& text) {
   if (d.request.ensemble == 0) throw Error::invalid("spread", "applies only with " + d.target.spell("ensemble") + " N");
-  const std::string range = "'" + text + "' must be a finite number > 0 (rad or m)";
+  const std::string valid = "; valid: 0 < spread <= " + format_significant(kMaxSpread, 6) + " (rad or m)";
   double value = 0;
   try {
     value = parse_number(text, "spread", "");
   } catch (const Error&) {
-    throw Error::invalid("spread", range);
+    throw Error::invalid("spread", "'" + text + "' is not a finite number" + valid);
   }
-  if (!(value > 0)) throw Error::invalid("spread", range);
+  if (!(value > 0 && value <= kMaxSpread)) throw Error::invalid("spread", "'" + text + "' is out of range" + valid);
   d.request.spread = value;
 }
 

@@ -165,6 +165,16 @@ class Reader {
       scale -= exponent;
       pos_ = end;
     }
+    // More digits than a double holds would be kept exactly here and then lost, in different
+    // places, when the equations are evaluated in double precision: refused instead.
+    if (pos_ > kMaxExpressionLength) too_long();  // the length is the first thing wrong
+    const std::size_t first = digits.find_first_not_of('0');
+    const std::size_t last = digits.find_last_not_of('0');
+    if (first != std::string::npos && last - first + 1 > kMaxDecimalDigits)
+      fail(start,
+           "the number '" + std::string(text_.substr(start, pos_ - start)) + "' has " +
+               std::to_string(last - first + 1) + " significant digits, more than double precision holds",
+           "; valid: at most " + std::to_string(kMaxDecimalDigits) + " significant digits");
     const GiNaC::numeric whole(digits.c_str());
     const GiNaC::numeric ten(10);
     return scale >= 0 ? whole / GiNaC::pow(ten, scale) : whole * GiNaC::pow(ten, -scale);

@@ -24,6 +24,8 @@ namespace linkage::sym {
 
 inline constexpr std::size_t kMaxExpressionLength = 500;
 inline constexpr int kMaxExponent = 12;
+/// The most significant digits of a decimal: what a double holds (std::numeric_limits<double>::max_digits10).
+inline constexpr std::size_t kMaxDecimalDigits = 17;
 
 /// The functions, as error messages list them: sin cos tan asin acos atan atan2 sqrt exp log
 /// abs (GiNaC's), hypot(a, b) read as sqrt(a^2 + b^2) and log10(x) as log(x)/log(10).

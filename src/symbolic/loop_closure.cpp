@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <Eigen/LU>
 #include <cmath>
+#include <numbers>
 
 #include "core/error.hpp"
 #include "core/number_format.hpp"
@@ -84,6 +85,14 @@ ClosedState close_loops(const System& system, const GiNaC::exmap& state) {
                        (independent.empty() ? std::string("these values") : "the independent coordinates kept") +
                        " (constraint error " + format_significant(residual, 3) +
                        " m); valid: independent values at which the links can meet (check the lengths and the angles)");
+
+  // Newton may land a whole turn away: keep each angle within pi of where the user put it.
+  for (std::size_t d : dependent) {
+    if (coordinates[d].coordinate.kind != CoordinateKind::theta) continue;
+    const GiNaC::symbol& q = coordinates[d].symbols.q;
+    const double given = to_double(start.at(q));
+    out.state[q] = GiNaC::numeric(given + std::remainder(to_double(out.state[q]) - given, 2 * std::numbers::pi));
+  }
 
   // Rates: Phi_q q' = 0 with the independent rates kept.
   Eigen::MatrixXd Jd(n, n);

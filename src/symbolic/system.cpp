@@ -1,8 +1,11 @@
 #include "symbolic/system.hpp"
 
+#include <cln/float.h>
+
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 
 #include "core/error.hpp"
@@ -36,10 +39,26 @@ ex simplify_trig(const ex& e) {
   return out;
 }
 
+namespace {
+
+// As IEEE arithmetic rounds: beyond double range inf, below it 0, where CLN would throw
+// (so the finiteness checks name the values, not "floating point overflow").
+double rounded(const GiNaC::numeric& n) {
+  try {
+    return n.to_double();
+  } catch (const cln::floating_point_overflow_exception&) {
+    return n.is_negative() ? -HUGE_VAL : HUGE_VAL;
+  } catch (const cln::floating_point_underflow_exception&) {
+    return n.is_negative() ? -0.0 : 0.0;
+  }
+}
+
+}  // namespace
+
 double evaluate(const ex& e, const GiNaC::exmap& values) {
   if (GiNaC::is_a<GiNaC::numeric>(e)) {
     const auto& n = GiNaC::ex_to<GiNaC::numeric>(e);
-    return n.is_real() ? n.to_double() : std::nan("");
+    return n.is_real() ? rounded(n) : std::nan("");
   }
   if (GiNaC::is_a<GiNaC::symbol>(e)) {
     const auto it = values.find(e);
@@ -48,6 +67,10 @@ double evaluate(const ex& e, const GiNaC::exmap& values) {
     return evaluate(it->second, values);
   }
   if (GiNaC::is_a<GiNaC::constant>(e)) return GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(e)).to_double();
+  if (GiNaC::is_a<GiNaC::mul>(e)) {
+    const ex distributed = in_double_range(e);
+    if (!distributed.is_equal(e)) return evaluate(distributed, values);
+  }
   if (GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e)) {
     const bool sum = GiNaC::is_a<GiNaC::add>(e);
     std::vector<double> parts;
@@ -92,6 +115,17 @@ double evaluate(const ex& e, const GiNaC::exmap& values) {
 
 double to_double(const ex& e) { return evaluate(e, {}); }
 
+ex in_double_range(const ex& e) {
+  if (!GiNaC::is_a<GiNaC::mul>(e)) return e;
+  const GiNaC::numeric largest(std::numeric_limits<double>::max()), smallest(std::numeric_limits<double>::min());
+  for (std::size_t k = 0; k < e.nops(); ++k) {
+    if (!GiNaC::is_a<GiNaC::numeric>(e.op(k))) continue;
+    const GiNaC::numeric size = GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(e.op(k)));
+    if (size > largest || (!size.is_zero() && size < smallest)) return GiNaC::expand(e);
+  }
+  return e;
+}
+
 namespace {
 
 // The noun a report uses for a body of this shape: "block 1", "rod 2".
@@ -119,6 +153,16 @@ int body_index(const Mechanism& m, const std::string& name) {
   for (std::size_t i = 0; i < m.bodies.size(); ++i)
     if (m.bodies[i].name == name) return static_cast<int>(i);
   return -1;
+}
+
+// A slider's axis; one that is zero whatever the parameters ("r-r") is refused here, before
+// its unit vector divides by zero (validate.cpp refuses one that is zero at the values).
+Vec2 slider_axis_of(const Joint& joint, Vec2 axis) {
+  if ((axis.x * axis.x + axis.y * axis.y).is_zero())
+    throw Error::input(where(joint.axis->x.pos) + "the axis of slider " + joint.name + " (\"" + joint.axis->x.text +
+                       "\", \"" + joint.axis->y.text +
+                       "\") is zero for any parameter values; valid: a direction of non-zero length");
+  return axis;
 }
 
 }  // namespace
@@ -319,7 +363,7 @@ void System::add_joints() {
       js.constraints = pin_constraints(ends);
       pin_force(js, table_);
     } else {
-      ends.axis = {quantity(joint.axis->x, false), quantity(joint.axis->y, false)};
+      ends.axis = slider_axis_of(joint, {quantity(joint.axis->x, false), quantity(joint.axis->y, false)});
       const Spelling n = spell_indexed("N", 0, joint.name);
       const Spelling m = spell_indexed("M", 0, joint.name);
       js.unknowns.push_back(table_
@@ -433,7 +477,7 @@ void System::add_generalized() {
     if (joint.type == JointType::pin) {
       placed[i] = pin_place(ends, child_is_b, bs.rotates ? ex(bs.theta.q) : ex(0));
     } else {
-      ends.axis = {quantity(joint.axis->x, false), quantity(joint.axis->y, false)};
+      ends.axis = slider_axis_of(joint, {quantity(joint.axis->x, false), quantity(joint.axis->y, false)});
       const Spelling s0 = spell_indexed("s", 0, joint.name);
       const Spelling s1 = spell_indexed("s", 1, joint.name);
       const Spelling s2 = spell_indexed("s", 2, joint.name);

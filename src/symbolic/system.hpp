@@ -141,6 +141,11 @@ class System {
 /// A number from a closed expression (no free symbol left); throws std::logic_error if not.
 [[nodiscard]] double to_double(const GiNaC::ex& e);
 
+/// A product whose number is beyond double range distributed over its sums, so each term's
+/// number is in range: GiNaC keeps a product of exact decimals as c (K1 a + K2) with
+/// c = 1e-1318 and K = 1e1314, which double would evaluate as 0 * inf. Otherwise e itself.
+[[nodiscard]] GiNaC::ex in_double_range(const GiNaC::ex& e);
+
 /// The value of `e` with each symbol's value taken from `values` (itself evaluated), in
 /// double precision. Deterministic where GiNaC's own evalf is not: GiNaC orders the terms
 /// of a sum by hash values that change from run to run, so adding floats in its order

@@ -6,6 +6,7 @@
 
 #include "core/error.hpp"
 #include "core/number_format.hpp"
+#include "model/mechanism_toml.hpp"
 
 namespace linkage::sym {
 
@@ -51,7 +52,7 @@ void require_non_negative(const System& system, const Quantity& q, const std::st
 void validate_quantities(const System& system) {
   const Mechanism& m = system.mechanism();
   for (const Definition& d : m.definitions) (void)checked_value(system, d.value, false, "definition " + d.name);
-  if (m.gravity) (void)checked_value(system, *m.gravity, false, "gravity");
+  if (m.gravity) require_non_negative(system, *m.gravity, "gravity");  // a magnitude: it acts along -y
   for (const NamedPoint& p : m.ground_points) {
     (void)checked_value(system, p.at.x, false, "ground point " + p.name + " x");
     (void)checked_value(system, p.at.y, false, "ground point " + p.name + " y");
@@ -130,12 +131,27 @@ void validate_constraints(const System& system, const GiNaC::exmap& state) {
       for (std::size_t c = 0; c < coordinates.size(); ++c)
         more(rows.rows() + static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) =
             to_double(GiNaC::diff(phi[r], coordinates[c]).subs(values));
+    if (!more.allFinite()) {  // an overflow, not a redundancy: name the values behind it
+      const std::string causes = likely_causes(m);
+      throw Error::input(where(m.joints[j].pos) + "the constraint of joint " + m.joints[j].name +
+                         " is not a finite number at the initial state (an overflow of double precision)" +
+                         (causes.empty() ? std::string() : "; likely causes: " + causes) +
+                         "; valid: parameters and initial values of physical sizes");
+    }
     Eigen::FullPivLU<Eigen::MatrixXd> lu(more);
     lu.setThreshold(1e-9);
     const Eigen::Index new_rank = lu.rank();
     if (new_rank < rank + static_cast<Eigen::Index>(phi.size())) {
       std::string earlier;
       for (std::size_t k = 0; k < j; ++k) earlier += (earlier.empty() ? "" : ", ") + m.joints[k].name;
+      if (earlier.empty()) {  // nothing before it to repeat: its own rows are degenerate at these values
+        const std::string causes = likely_causes(m);
+        throw Error::input(where(m.joints[j].pos) + "the constraint rows of joint " + m.joints[j].name +
+                           " are not independent at the initial state (values of very different sizes, or a "
+                           "degenerate geometry)" +
+                           (causes.empty() ? std::string() : "; likely causes: " + causes) +
+                           "; valid: parameters and initial values of physical sizes");
+      }
       throw Error::input(where(m.joints[j].pos) + "joint " + m.joints[j].name +
                          " is redundant at the initial state: joints " + earlier +
                          " already fix what it constrains (one joint too many, or links in line at a change "

@@ -362,6 +362,38 @@ TEST(MechanismToml, PlainNumbersOutOfRange) {
   EXPECT_NO_THROW((void)read_mechanism(pendulum_with(12, "mass = \"-m\""), "m.toml"));
 }
 
+// Issue 22 F14: a TOML table has no order, so a definition may use one defined below it.
+TEST(MechanismToml, DefinitionsAreOrderedByUse) {
+  const Mechanism m = read_mechanism(pendulum() + "[definitions]\nA = \"B + C\"\nB = \"2*C\"\nC = \"l\"\n", "m.toml");
+  ASSERT_EQ(m.definitions.size(), 3u);
+  EXPECT_EQ(m.definitions[0].name, "C");
+  EXPECT_EQ(m.definitions[1].name, "B");
+  EXPECT_EQ(m.definitions[2].name, "A");
+  // Numbers and exponents are not names.
+  const Mechanism n = read_mechanism(pendulum() + "[definitions]\nA = \"1e-3*B\"\nB = \"2.5E+2\"\n", "m.toml");
+  EXPECT_EQ(n.definitions[0].name, "B");
+  expect_error(pendulum() + "[definitions]\nA = \"B\"\nB = \"C + 1\"\nC = \"A\"\n", "23:5",
+               {"definition 'A' depends on itself: A -> B -> C -> A"});
+  expect_error(pendulum() + "[definitions]\nA = \"2*A\"\n", "23:5", {"definition 'A' depends on itself: A -> A"});
+}
+
+// Issue 22 F04: a value below double precision's normal range trapped in CLN.
+TEST(MechanismToml, SubnormalValuesAreRefusedWhereRead) {
+  expect_error(pendulum_with(4, "l = 5e-324"), "4:5",
+               {"parameter 'l' = 5e-324 is out of range; valid: 0 or a magnitude of at least "
+                "2.2250738585072014e-308 (double's normal range)"});
+  expect_error(pendulum_with(21, "\"1\" = { theta = -1, theta_dot = -1e-310 }"), "21:33",
+               {"theta_dot = -1e-310 is out of range"});
+  Mechanism m = read_mechanism(pendulum(), "m.toml");
+  EXPECT_NE(error_of([&] {
+              set_value(m, "l", 1e-320, "--set l=1e-320");
+            }).find("l = 1e-320 (--set l=1e-320) is out of range; valid: 0 or a magnitude of at least"),
+            std::string::npos);
+  EXPECT_NO_THROW(set_value(m, "l", 0, "--set l=0"));
+  EXPECT_NO_THROW(set_value(m, "l", 2.2250738585072014e-308, "--set l=2.2250738585072014e-308"));
+  EXPECT_NO_THROW(set_value(m, "l", 1e308, "--set l=1e308"));  // refused where it overflows, if it does
+}
+
 TEST(MechanismToml, Names) {
   expect_error(pendulum_with(4, "t = 0.3"), "4:1", {"parameter name 't' is reserved", "reserved: ground, t, pi, sin"});
   expect_error(pendulum_with(4, "pi = 3"), "4:1", {"parameter name 'pi' is reserved"});

@@ -135,7 +135,11 @@ TEST(RenderOptions, BadValuesNameTheirOptionAndTheRange) {
   EXPECT_EQ(error_of({{"angles", "grad"}}),
             "angles|'grad' is not an angle unit (did you mean 'rad'?); valid: rad, deg");
   EXPECT_EQ(error_of({{"ensemble", "201"}}), "ensemble|'201' is not a whole number of runs in 2 .. 200");
-  EXPECT_EQ(error_of({{"ensemble", "4"}, {"spread", "0"}}), "spread|'0' must be a finite number > 0 (rad or m)");
+  EXPECT_EQ(error_of({{"ensemble", "4"}, {"spread", "0"}}),
+            "spread|'0' is out of range; valid: 0 < spread <= 1000 (rad or m)");
+  // Issue 22 F05: 1e308 passed here (and a lesson's --check) and overflowed in the run.
+  EXPECT_EQ(error_of({{"ensemble", "4"}, {"spread", "1e308"}}),
+            "spread|'1e308' is out of range; valid: 0 < spread <= 1000 (rad or m)");
   EXPECT_EQ(error_of({{"spread", "1e-3"}}), "spread|applies only with --ensemble N");
   EXPECT_EQ(error_of({{"panel", ""}}), "panel|the list is empty; give at least one quantity");
   EXPECT_EQ(error_of({{"panel", "theta3"}}).substr(0, 30), "panel|'theta3' is not a quanti");

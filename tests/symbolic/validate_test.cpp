@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "core/error.hpp"
 #include "symbolic/loop_closure.hpp"
 
@@ -98,6 +100,56 @@ TEST(Validate, ASliderOnAPointMassIsRefused) {
   m.joints.push_back(slider);
   const std::string e = error_of(m);
   EXPECT_NE(e.find("slider s joins the point mass 'bead'"), std::string::npos) << e;
+}
+
+// Issue 22 F03: an axis zero whatever the parameters was GiNaC's "division by zero".
+TEST(Validate, ASliderAxisZeroForAnyParametersIsRefused) {
+  Mechanism m = pendulum();
+  m.bodies[0].points.push_back({"A", {q("L/2"), q("0")}, {}});
+  Body block = m.bodies[0];
+  block.name = "2";
+  m.bodies.push_back(block);
+  Joint slider;
+  slider.name = "s";
+  slider.type = JointType::slider;
+  slider.bodies = {"1", "2"};
+  slider.points = {"A", "O"};
+  slider.axis = Vector2Quantity{q("L-L", 30), q("0", 30)};
+  m.joints.push_back(slider);
+  m.initial.push_back({"s.s", 0.1, {}});
+  EXPECT_EQ(error_of(m),
+            "m.toml:30:9: the axis of slider s (\"L-L\", \"0\") is zero for any parameter values; valid: a "
+            "direction of non-zero length");
+}
+
+// Issue 22 F13: only a literal's sign was checked; "-g" made gravity point up.
+TEST(Validate, GravityNegativeAtTheParametersIsRefused) {
+  Mechanism m = pendulum();
+  m.gravity = q("-g", 2);
+  EXPECT_EQ(error_of(m), "m.toml:2:9: gravity \"-g\" is -9.81 at the parameters; valid: >= 0");
+  m.gravity = q("g", 2);
+  m.parameters[2].value = -9.81;
+  EXPECT_EQ(error_of(m), "m.toml:2:9: gravity \"g\" is -9.81 at the parameters; valid: >= 0");
+}
+
+// Issue 22 F06: exact decimals multiply into numbers beyond double range; GiNaC keeps an
+// inertia of them as 1/N m (K1 w^2 + K2) with N = 3.8e1317, which evaluated to 0 * inf.
+TEST(Validate, ProductsOfExactDecimalsEvaluateInDoubleRange) {
+  const GiNaC::symbol m("m"), w("w");
+  const GiNaC::ex decimal = GiNaC::numeric("30000000000000001") / GiNaC::pow(GiNaC::numeric(10), 17);
+  const GiNaC::ex length = GiNaC::pow(decimal, 12) / GiNaC::pow(GiNaC::numeric(3, 10), 11);
+  const GiNaC::ex inertia = m * (GiNaC::pow(length, 2) + GiNaC::pow(w, 2)) / 12;
+  const GiNaC::exmap values{{m, GiNaC::numeric(0.1)}, {w, GiNaC::numeric(0.1)}};
+  const double exact = 0.0008333333333333339;  // by Python's fractions, rounded once
+  EXPECT_NEAR(sym::evaluate(inertia, values), exact, 4 * std::numeric_limits<double>::epsilon() * exact);
+}
+
+// Issue 22 F04/F05: numbers beyond double range threw CLN's "floating point underflow".
+TEST(Validate, NumbersBeyondDoubleRangeAreNamedNotTrapped) {
+  EXPECT_EQ(error_of(pendulum("m*1e-300*1e-300")),
+            "m.toml:7:9: mass of body 1 \"m*1e-300*1e-300\" is 0 at the parameters; valid: > 0");
+  const std::string huge = error_of(pendulum("m*1e300*1e300"));
+  EXPECT_NE(huge.find("m.toml:7:9: "), std::string::npos) << huge;
 }
 
 }  // namespace

@@ -1,0 +1,42 @@
+#include "integrate/step_budget.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/number_format.hpp"
+
+namespace linkage {
+
+std::string try_list(const std::vector<std::string>& options) {
+  std::string text = "try ";
+  for (std::size_t i = 0; i < options.size(); ++i)
+    text += (i == 0 ? "" : i + 1 == options.size() ? " or " : ", ") + options[i];
+  return text;
+}
+
+std::optional<StepBudget::Overrun> StepBudget::check(double t, std::int64_t steps, const SimulationOptions& o) {
+  const double then = checked_at_[next_check_ % kBudgetIntervals];  // kBudgetIntervals checks ago
+  checked_at_[next_check_++ % kBudgetIntervals] = t;
+  if (next_check_ < kBudgetIntervals) return std::nullopt;
+  const auto taken = static_cast<double>(steps);
+  const double mean_step = (t - then) / (kBudgetIntervals * kCheckInterval);
+  const double needed = taken + std::max(0.0, o.duration - t) / mean_step;
+  if (!(needed > kMaxSteps)) return std::nullopt;
+  Overrun out;
+  std::vector<std::string> remedies;
+  // Smooth steps grow about as tol^(1 / order); steps held down by round-off (far below
+  // the run's mean so far) grow much faster with a looser tolerance.
+  const double rtol = o.rtol * std::pow(needed / kMaxSteps, info(o.integrator).order);
+  if (mean_step < 1e-3 * t / taken && (o.rtol < 1e-6 || o.atol < 1e-6))
+    remedies.emplace_back("a looser rtol/atol");
+  else if (rtol <= 1e-6)
+    remedies.push_back("an rtol/atol of " + format_significant(rtol, 1) + " or looser");
+  remedies.push_back("a duration under " + format_significant(t + (kMaxSteps - taken) * mean_step, 2) + " s");
+  out.hint = try_list(remedies);
+  out.what = "at its recent steps (" + format_significant(mean_step, 2) + " s on average) it needs about " +
+             format_significant(needed, 2) + " steps to reach " + format_significant(o.duration, 6) +
+             " s, more than the limit of " + format_significant(kMaxSteps, 1);
+  return out;
+}
+
+}  // namespace linkage
