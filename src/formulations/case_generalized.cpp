@@ -7,6 +7,7 @@
 // (5.2), (6.2)); then each loop-closing joint's constraint at the acceleration level.
 #include <stdexcept>
 
+#include "core/interrupt.hpp"
 #include "formulations/case_system.hpp"
 #include "symbolic/joints.hpp"
 
@@ -34,6 +35,7 @@ GeneralizedRows generalized_rows(const sym::System& system) {
 
   std::vector<BodyRows> per_body(bodies.size());
   for (const sym::NewtonEulerRows& ne : system.newton_euler()) {
+    throw_if_interrupted();
     const auto b = static_cast<std::size_t>(ne.body);
     BodyRows& rows = per_body[b];
     for (const GiNaC::ex& r : ne.rows) rows.rows.push_back(GiNaC::expand(r.subs(to_q)));
