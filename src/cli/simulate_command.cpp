@@ -226,6 +226,8 @@ std::string mechanism_json_summary(const MechanismStats& st, double wall) {
 void run_simulate_mechanism(const SimulateOptions& o, const SimulationOptions& s, double every, Format format) {
   const auto start = std::chrono::steady_clock::now();
   const TrajectoryRows samples = checked_rows(s.duration, every);
+  // A long chain's derivation can take seconds: a line on a terminal says so.
+  ElapsedLine deriving("linkage: deriving the equations", o.quiet);
   const sym::System system(chosen_mechanism(o.mechanism, o.inputs));
   const sym::ClosedState closed = sym::checked_initial_state(system);
   const std::vector<MechanismColumn> all = mechanism_columns(system);
@@ -233,6 +235,7 @@ void run_simulate_mechanism(const SimulateOptions& o, const SimulationOptions& s
   const std::vector<MechanismColumn> columns =
       select_mechanism_columns(all, asked ? o.columns : "default", "--columns");
   MechanismSimulation simulation(system, closed.state, s);
+  deriving.finish();
   if (!o.quiet) {
     note_ignored_simulation_flags(o.simulation, s, simulation.dynamics().constraint_rows());
     if (!closed.note.empty()) std::fprintf(stderr, "linkage: note: %s\n", closed.note.c_str());

@@ -7,6 +7,7 @@
 #include "cli/input_options.hpp"
 #include "cli/mechanism_options.hpp"
 #include "core/error.hpp"
+#include "core/progress.hpp"
 #include "report/code_export.hpp"
 #include "report/mechanism_latex.hpp"
 #include "report/mechanism_solution.hpp"
@@ -62,8 +63,10 @@ void run_solve(const SolveOptions& options) {
   if (report.angles != AngleUnit::rad && format != "text")
     throw Error::input("--angles: deg applies to the text format; " + format + " keeps radians");
   report.text_style = options.ascii ? Style::ascii : options.unicode ? Style::unicode : text_style_from_locale();
+  ElapsedLine deriving("linkage: deriving the equations");  // a long chain's take seconds
   const MechanismSolution solution =
       work_out_mechanism(chosen_mechanism(options.mechanism, options.inputs), case_ids(cases));
+  deriving.finish();
   if (format == "json")
     write_stdout(mechanism_json(solution));
   else if (format == "latex")

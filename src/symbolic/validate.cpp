@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "core/number_format.hpp"
 
 namespace linkage::sym {
@@ -120,16 +121,39 @@ void validate_constraints(const System& system, const GiNaC::exmap& state) {
   for (const auto& [symbol, expression] : system.to_generalized())
     if (!expression.has(system.time())) values[symbol] = GiNaC::evalf(expression.subs(values));
   const Mechanism& m = system.mechanism();
+  // Every joint's rows; a row's derivative by a coordinate it does not hold is 0.
+  std::vector<Eigen::MatrixXd> jacobians;
+  Eigen::Index total = 0;
+  for (const JointSystem& joint : system.joints()) {
+    throw_if_interrupted();
+    const auto& phi = joint.constraints;
+    Eigen::MatrixXd jacobian =
+        Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(phi.size()), static_cast<Eigen::Index>(coordinates.size()));
+    for (std::size_t r = 0; r < phi.size(); ++r)
+      for (std::size_t c = 0; c < coordinates.size(); ++c)
+        if (phi[r].has(coordinates[c]))
+          jacobian(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) =
+              to_double(GiNaC::diff(phi[r], coordinates[c]).subs(values));
+    total += jacobian.rows();
+    jacobians.push_back(std::move(jacobian));
+  }
+  // All rows independent: no joint is redundant (one factorization, not one per joint).
+  Eigen::MatrixXd all(total, static_cast<Eigen::Index>(coordinates.size()));
+  for (Eigen::Index at = 0; const Eigen::MatrixXd& jacobian : jacobians) {
+    all.middleRows(at, jacobian.rows()) = jacobian;
+    at += jacobian.rows();
+  }
+  Eigen::FullPivLU<Eigen::MatrixXd> whole(all);
+  whole.setThreshold(1e-9);
+  if (whole.rank() == total) return;
+  // Else the first joint that adds less than its rows' count to the rank.
   Eigen::MatrixXd rows(0, static_cast<Eigen::Index>(coordinates.size()));
   Eigen::Index rank = 0;
   for (std::size_t j = 0; j < system.joints().size(); ++j) {
     const auto& phi = system.joints()[j].constraints;
     Eigen::MatrixXd more(rows.rows() + static_cast<Eigen::Index>(phi.size()), rows.cols());
     more.topRows(rows.rows()) = rows;
-    for (std::size_t r = 0; r < phi.size(); ++r)
-      for (std::size_t c = 0; c < coordinates.size(); ++c)
-        more(rows.rows() + static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) =
-            to_double(GiNaC::diff(phi[r], coordinates[c]).subs(values));
+    more.bottomRows(static_cast<Eigen::Index>(phi.size())) = jacobians[j];
     Eigen::FullPivLU<Eigen::MatrixXd> lu(more);
     lu.setThreshold(1e-9);
     const Eigen::Index new_rank = lu.rank();
