@@ -122,8 +122,10 @@ MechanismDynamics::MechanismDynamics(const sym::System& system, CaseId id) : id_
 
 GiNaC::ex MechanismDynamics::prepare(const GiNaC::ex& e) const {
   // Expanded, as CaseEvaluator does: one form whatever GiNaC's term order.
-  return GiNaC::expand(
-      e.subs(system_->lengths()).subs(to_state_).subs(system_->constants()).subs(system_->constants()));
+  return GiNaC::expand(e.subs(system_->lengths(), GiNaC::subs_options::no_pattern)
+                           .subs(to_state_, GiNaC::subs_options::no_pattern)
+                           .subs(system_->constants(), GiNaC::subs_options::no_pattern)
+                           .subs(system_->constants(), GiNaC::subs_options::no_pattern));
 }
 
 void MechanismDynamics::compile_case() const {
@@ -147,7 +149,7 @@ void MechanismDynamics::compile_case() const {
   // The sample: with the unknowns as inputs, and the eliminated forces recovered from them.
   GiNaC::exmap recovered;
   for (const Recovered& r : c.recovered) recovered[r.symbol] = r.value;
-  auto prepare_output = [&](const ex& e) { return prepare(e.subs(recovered)); };
+  auto prepare_output = [&](const ex& e) { return prepare(e.subs(recovered, GiNaC::subs_options::no_pattern)); };
   std::vector<GiNaC::symbol> output_inputs = input_symbols_;
   output_inputs.insert(output_inputs.end(), c.unknowns.begin(), c.unknowns.end());
   std::vector<ex> out;
@@ -186,7 +188,10 @@ void MechanismDynamics::compile_case() const {
   // their rates, each a sum over the body's ancestors: expanded, a chain of n links has
   // n^3 terms, so these two are compiled as they stand (n^2 operations).
   auto substituted = [&](const ex& e) {
-    return e.subs(system.lengths()).subs(to_state_).subs(system.constants()).subs(system.constants());
+    return e.subs(system.lengths(), GiNaC::subs_options::no_pattern)
+        .subs(to_state_, GiNaC::subs_options::no_pattern)
+        .subs(system.constants(), GiNaC::subs_options::no_pattern)
+        .subs(system.constants(), GiNaC::subs_options::no_pattern);
   };
   out.push_back(substituted(sym::kinetic_energy(system)));
   out.push_back(prepare(sym::potential_energy(system)));

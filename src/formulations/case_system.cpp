@@ -52,7 +52,9 @@ CaseSystem linear_system(CaseId id, const std::vector<GiNaC::ex>& rows, const st
     for (std::size_t k = 0; k < unknowns.size(); ++k)
       a.push_back(terms[k].empty() ? GiNaC::ex(0) : GiNaC::ex(GiNaC::add(terms[k])).coeff(unknowns[k], 1));
     system.A.push_back(std::move(a));
-    system.B.push_back(GiNaC::expand(-row.subs(zero)));
+    // Keys that are symbols only: no_pattern looks each node up in the map instead of
+    // matching it against every key (hundreds for a long chain), with the same result.
+    system.B.push_back(GiNaC::expand(-row.subs(zero, GiNaC::subs_options::no_pattern)));
     system.labels.push_back(std::to_string(i + 1) + "." + std::to_string(case_number(id)));
   }
   return system;
