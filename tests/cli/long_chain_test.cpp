@@ -22,17 +22,26 @@ struct Rod {
   double length = 0.1, mass = 0.1, theta = -0.5;
 };
 
-/// The chain's file: rod i has the parameters l<i>, m<i>, its points A (towards the ground)
-/// and B; joint J1 pins A of rod 1 to the ground's O, joint J<i> pins A of rod i to B of rod i-1.
+/// The chain's file: rod i has its length and mass, its points A (towards the ground) and
+/// B; joint J1 pins A of rod 1 to the ground's O, joint J<i> pins A of rod i to B of rod i-1.
+/// Identical rods share the parameters l and m (with a mass and a length per rod, Case 3's
+/// mass matrix has n^3 terms: each entry sums the masses beyond its rows' links).
 std::string chain_toml(const std::vector<Rod>& rods) {
+  bool identical = true;
+  for (const Rod& r : rods) identical = identical && r.length == rods[0].length && r.mass == rods[0].mass;
   std::ostringstream f;
   f << "title = \"Chain of " << rods.size() << " rods\"\ngravity = \"g\"\n\n[parameters]\ng = 9.81\n";
-  for (std::size_t i = 1; i <= rods.size(); ++i)
-    f << "l" << i << " = " << rods[i - 1].length << "\nm" << i << " = " << rods[i - 1].mass << "\n";
+  if (identical)
+    f << "l = " << rods[0].length << "\nm = " << rods[0].mass << "\n";
+  else
+    for (std::size_t i = 1; i <= rods.size(); ++i)
+      f << "l" << i << " = " << rods[i - 1].length << "\nm" << i << " = " << rods[i - 1].mass << "\n";
   f << "\n[ground]\npoints = { O = [0, 0] }\n";
-  for (std::size_t i = 1; i <= rods.size(); ++i)
-    f << "\n[[body]]\nname = \"" << i << "\"\nshape = \"rod\"\nmass = \"m" << i << "\"\nlength = \"l" << i
-      << "\"\npoints = { A = [\"-l" << i << "/2\", 0], B = [\"l" << i << "/2\", 0] }\n";
+  for (std::size_t i = 1; i <= rods.size(); ++i) {
+    const std::string k = identical ? "" : std::to_string(i);
+    f << "\n[[body]]\nname = \"" << i << "\"\nshape = \"rod\"\nmass = \"m" << k << "\"\nlength = \"l" << k
+      << "\"\npoints = { A = [\"-l" << k << "/2\", 0], B = [\"l" << k << "/2\", 0] }\n";
+  }
   for (std::size_t i = 1; i <= rods.size(); ++i)
     f << "\n[[joint]]\nname = \"J" << i << "\"\ntype = \"pin\"\nbodies = [\""
       << (i == 1 ? "ground" : std::to_string(i - 1)) << "\", \"" << i << "\"]\npoints = [\"" << (i == 1 ? "O" : "B")
