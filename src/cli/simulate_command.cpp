@@ -227,6 +227,8 @@ void run_simulate_mechanism(const SimulateOptions& o, const SimulationOptions& s
   const auto start = std::chrono::steady_clock::now();
   const TrajectoryRows samples = checked_rows(s.duration, every);
   // The initial state worked out as solve does, so a value that breaks it is named the same way.
+  // A long chain's derivation can take seconds: a line on a terminal says so.
+  ElapsedLine deriving("linkage: deriving the equations", o.quiet);
   const MechanismSolution checked =
       work_out_mechanism(chosen_mechanism(o.mechanism, o.inputs), {static_cast<CaseId>(s.case_id)});
   const sym::System& system = *checked.system;
@@ -235,6 +237,7 @@ void run_simulate_mechanism(const SimulateOptions& o, const SimulationOptions& s
   const std::vector<MechanismColumn> columns =
       select_mechanism_columns(all, asked ? o.columns : "default", "--columns");
   MechanismSimulation simulation(system, checked.state, s);
+  deriving.finish();
   if (!o.quiet) {
     note_ignored_simulation_flags(o.simulation, s, simulation.dynamics().constraint_rows());
     if (!checked.closure_note.empty()) std::fprintf(stderr, "linkage: note: %s\n", checked.closure_note.c_str());

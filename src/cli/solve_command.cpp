@@ -8,6 +8,7 @@
 #include "cli/input_options.hpp"
 #include "cli/mechanism_options.hpp"
 #include "core/error.hpp"
+#include "core/progress.hpp"
 #include "report/code_export.hpp"
 #include "report/mechanism_latex.hpp"
 #include "report/mechanism_solution.hpp"
@@ -75,8 +76,10 @@ void run_solve(const SolveOptions& options) {
     throw Error::input("--angles: deg applies to the text format; " + format + " keeps radians");
   report.text_style = options.ascii ? Style::ascii : options.unicode ? Style::unicode : text_style_from_locale();
   const CaseForm form = parse_form(options.form, cases);
+  ElapsedLine deriving("linkage: deriving the equations");  // a long chain's take seconds
   const MechanismSolution solution =
       work_out_mechanism(chosen_mechanism(options.mechanism, options.inputs), case_ids(cases), form);
+  deriving.finish();
   if (format == "json")  // the homework's interface keeps the spec's names (two-blocks.toml's [aliases])
     write_stdout(mechanism_json(solution, options.mechanism.chosen() ? JsonKeys::mechanism : JsonKeys::aliases));
   else if (format == "latex")

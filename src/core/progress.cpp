@@ -88,4 +88,33 @@ void Progress::finish() {
   std::fflush(output_.sink);
 }
 
+ElapsedLine::ElapsedLine(std::string label, bool quiet, ProgressOutput output, std::chrono::duration<double> delay)
+    : label_(std::move(label)), output_(std::move(output)) {
+  if (quiet || !output_.terminal) return;
+  thread_ = std::thread([this, delay] {
+    const auto start = std::chrono::steady_clock::now();
+    std::unique_lock lock(mutex_);
+    if (wake_.wait_for(lock, delay, [this] { return done_; })) return;
+    do {
+      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      std::fprintf(output_.sink, "\r\033[K%s: %.0f s", label_.c_str(), elapsed);
+      std::fflush(output_.sink);
+    } while (!wake_.wait_for(lock, std::chrono::seconds(1), [this] { return done_; }));
+    std::fprintf(output_.sink, "\r\033[K");
+    std::fflush(output_.sink);
+  });
+}
+
+ElapsedLine::~ElapsedLine() { finish(); }
+
+void ElapsedLine::finish() {
+  if (!thread_.joinable()) return;
+  {
+    const std::lock_guard lock(mutex_);
+    done_ = true;
+  }
+  wake_.notify_all();
+  thread_.join();
+}
+
 }  // namespace linkage

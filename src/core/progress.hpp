@@ -5,9 +5,12 @@
 // "linkage: simulate: 41% (410000 of 1e+06 s simulated), 12 s so far", once the work
 // has lasted that long. `quiet` silences both.
 #include <chrono>
+#include <condition_variable>
 #include <cstdio>
 #include <functional>
+#include <mutex>
 #include <string>
+#include <thread>
 
 namespace linkage {
 
@@ -57,6 +60,29 @@ class Progress {
   bool finished_ = false;
   ProgressOutput::Clock::time_point start_;
   ProgressOutput::Clock::time_point last_draw_;
+};
+
+/// A line for one long step that has no measure of its own progress (deriving a long
+/// chain's equations): on a terminal, once the step has lasted `delay`, "label: 3 s" redrawn
+/// every second by a thread of its own, erased when done; nothing elsewhere or when quiet.
+class ElapsedLine {
+ public:
+  explicit ElapsedLine(std::string label, bool quiet = false,
+                       ProgressOutput output = ProgressOutput::from_environment(),
+                       std::chrono::duration<double> delay = std::chrono::seconds(1));
+  ElapsedLine(const ElapsedLine&) = delete;
+  ElapsedLine& operator=(const ElapsedLine&) = delete;
+  ~ElapsedLine();
+  /// Stops the thread and erases the line if it was shown.
+  void finish();
+
+ private:
+  std::string label_;
+  ProgressOutput output_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  bool done_ = false;
+  std::thread thread_;
 };
 
 /// True when stderr is a terminal.

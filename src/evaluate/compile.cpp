@@ -17,6 +17,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/interrupt.hpp"
 #include "evaluate/program.hpp"
 #include "symbolic/system.hpp"
 
@@ -437,7 +438,10 @@ Program compile(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::
   Builder builder(inputs);
   std::vector<Index> nodes;
   nodes.reserve(outputs.size());
-  for (std::size_t k = 0; k < outputs.size(); ++k) nodes.push_back(builder.output(outputs[k], k));
+  for (std::size_t k = 0; k < outputs.size(); ++k) {
+    throw_if_interrupted();  // a long chain's case has thousands of outputs
+    nodes.push_back(builder.output(outputs[k], k));
+  }
   Parts parts = builder.finish(nodes);
   return Program(std::move(parts.input_names), std::move(parts.constants), std::move(parts.code),
                  std::move(parts.output_registers), parts.register_count);

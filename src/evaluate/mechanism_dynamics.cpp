@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "core/interrupt.hpp"
 #include "evaluate/tree_dynamics.hpp"
 #include "symbolic/energy.hpp"
 #include "symbolic/joints.hpp"
@@ -121,8 +122,10 @@ MechanismDynamics::MechanismDynamics(const sym::System& system, CaseId id) : id_
 
 GiNaC::ex MechanismDynamics::prepare(const GiNaC::ex& e) const {
   // Expanded, as CaseEvaluator does: one form whatever GiNaC's term order.
-  return GiNaC::expand(
-      e.subs(system_->lengths()).subs(to_state_).subs(system_->constants()).subs(system_->constants()));
+  return GiNaC::expand(e.subs(system_->lengths(), GiNaC::subs_options::no_pattern)
+                           .subs(to_state_, GiNaC::subs_options::no_pattern)
+                           .subs(system_->constants(), GiNaC::subs_options::no_pattern)
+                           .subs(system_->constants(), GiNaC::subs_options::no_pattern));
 }
 
 void MechanismDynamics::compile_case() const {
@@ -136,15 +139,17 @@ void MechanismDynamics::compile_case() const {
   if (rows_ != cols_ || cols_ < n_)
     throw std::logic_error("a case's system is not square with the accelerations first");
   std::vector<ex> rhs;
-  for (const auto& row : c.A)
+  for (const auto& row : c.A) {
+    throw_if_interrupted();
     for (const ex& e : row) rhs.push_back(prepare(e));
+  }
   for (const ex& e : c.B) rhs.push_back(prepare(e));
   rhs_ = compile(rhs, input_symbols_);
 
   // The sample: with the unknowns as inputs, and the eliminated forces recovered from them.
   GiNaC::exmap recovered;
   for (const Recovered& r : c.recovered) recovered[r.symbol] = r.value;
-  auto prepare_output = [&](const ex& e) { return prepare(e.subs(recovered)); };
+  auto prepare_output = [&](const ex& e) { return prepare(e.subs(recovered, GiNaC::subs_options::no_pattern)); };
   std::vector<GiNaC::symbol> output_inputs = input_symbols_;
   output_inputs.insert(output_inputs.end(), c.unknowns.begin(), c.unknowns.end());
   std::vector<ex> out;
@@ -179,13 +184,22 @@ void MechanismDynamics::compile_case() const {
     // Each row on its own: |C| of an expanded C^2 would cancel to sqrt(round-off).
     for (std::size_t r = 0; r < 2; ++r) out.push_back(r < j.constraints.size() ? prepare(j.constraints[r]) : ex(0));
   }
-  out.push_back(prepare(sym::kinetic_energy(system)));
+  // The kinetic energy and the angular momentum are sums over the bodies of products of
+  // their rates, each a sum over the body's ancestors: expanded, a chain of n links has
+  // n^3 terms, so these two are compiled as they stand (n^2 operations).
+  auto substituted = [&](const ex& e) {
+    return e.subs(system.lengths(), GiNaC::subs_options::no_pattern)
+        .subs(to_state_, GiNaC::subs_options::no_pattern)
+        .subs(system.constants(), GiNaC::subs_options::no_pattern)
+        .subs(system.constants(), GiNaC::subs_options::no_pattern);
+  };
+  out.push_back(substituted(sym::kinetic_energy(system)));
   out.push_back(prepare(sym::potential_energy(system)));
   out.push_back(prepare(sym::nonconservative_power(system)));
   const sym::Vec2 p = sym::linear_momentum(system);
   out.push_back(prepare(p.x));
   out.push_back(prepare(p.y));
-  out.push_back(prepare(sym::angular_momentum_about_centre(system)));
+  out.push_back(substituted(sym::angular_momentum_about_centre(system)));
   outputs_ = compile(out, output_inputs);
 
   output_inputs_.assign(output_inputs.size(), 0.0);

@@ -195,7 +195,9 @@ TreeDynamics::TreeDynamics(const sym::System& system) : impl_(std::make_unique<I
   }
   inputs.push_back(system.time());
   auto prepare = [&](const ex& e) {
-    return GiNaC::expand(e.subs(system.lengths()).subs(system.constants()).subs(system.constants()));
+    return GiNaC::expand(e.subs(system.lengths(), GiNaC::subs_options::no_pattern)
+                             .subs(system.constants(), GiNaC::subs_options::no_pattern)
+                             .subs(system.constants(), GiNaC::subs_options::no_pattern));
   };
   std::vector<ex> per_body(3 * system.bodies().size(), ex(0));
   for (const sym::Load& load : system.loads()) {
@@ -237,10 +239,12 @@ TreeDynamics::TreeDynamics(const sym::System& system) : impl_(std::make_unique<I
   for (const GiNaC::symbol& a : accelerations) no_acceleration[a] = 0;
   for (int j : tree.loop_joints)
     for (const ex& phi : system.joints()[static_cast<std::size_t>(j)].constraints) {
-      const ex rows = GiNaC::expand(
-          system.time_derivative(system.time_derivative(phi.subs(system.to_generalized()))).subs(system.constants()));
+      const ex rows = GiNaC::expand(system
+                                        .time_derivative(system.time_derivative(
+                                            phi.subs(system.to_generalized(), GiNaC::subs_options::no_pattern)))
+                                        .subs(system.constants(), GiNaC::subs_options::no_pattern));
       for (const GiNaC::symbol& a : accelerations) jacobian.push_back(prepare(rows.coeff(a, 1)));
-      bias.push_back(prepare(rows.subs(no_acceleration)));
+      bias.push_back(prepare(rows.subs(no_acceleration, GiNaC::subs_options::no_pattern)));
       ++m.loop_rows;
     }
   jacobian.insert(jacobian.end(), bias.begin(), bias.end());

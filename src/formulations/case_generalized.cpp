@@ -7,6 +7,7 @@
 // (5.2), (6.2)); then each loop-closing joint's constraint at the acceleration level.
 #include <stdexcept>
 
+#include "core/interrupt.hpp"
 #include "formulations/case_system.hpp"
 #include "symbolic/joints.hpp"
 
@@ -34,9 +35,11 @@ GeneralizedRows generalized_rows(const sym::System& system) {
 
   std::vector<BodyRows> per_body(bodies.size());
   for (const sym::NewtonEulerRows& ne : system.newton_euler()) {
+    throw_if_interrupted();
     const auto b = static_cast<std::size_t>(ne.body);
     BodyRows& rows = per_body[b];
-    for (const GiNaC::ex& r : ne.rows) rows.rows.push_back(GiNaC::expand(r.subs(to_q)));
+    for (const GiNaC::ex& r : ne.rows)
+      rows.rows.push_back(GiNaC::expand(r.subs(to_q, GiNaC::subs_options::no_pattern)));
     rows.own.assign(rows.rows.size(), -1);
     // A slider's child: its translation rows along and across the axis.
     const TreeBody& node = tree.bodies[b];
@@ -47,7 +50,8 @@ GeneralizedRows generalized_rows(const sym::System& system) {
       const GiNaC::ex ay = system.quantity(joint.axis->y, false);
       const GiNaC::ex length = GiNaC::sqrt(ax * ax + ay * ay);
       // The axis turns with bodies[0]; the child keeps that angle.
-      const GiNaC::ex angle = bodies[b].rotates ? GiNaC::ex(bodies[b].theta.q).subs(to_q) : GiNaC::ex(0);
+      const GiNaC::ex angle =
+          bodies[b].rotates ? GiNaC::ex(bodies[b].theta.q).subs(to_q, GiNaC::subs_options::no_pattern) : GiNaC::ex(0);
       const sym::Vec2 u = sym::rotate(angle, {ax / length, ay / length});
       const GiNaC::ex rx = rows.rows[0], ry = rows.rows[1];
       rows.rows[0] = GiNaC::expand(u.x * rx + u.y * ry);
@@ -73,7 +77,8 @@ GeneralizedRows generalized_rows(const sym::System& system) {
     }
   for (int j : tree.loop_joints)
     for (const GiNaC::ex& phi : system.joints()[static_cast<std::size_t>(j)].constraints)
-      out.rows.push_back(GiNaC::expand(system.time_derivative(system.time_derivative(phi.subs(to_q)))));
+      out.rows.push_back(GiNaC::expand(
+          system.time_derivative(system.time_derivative(phi.subs(to_q, GiNaC::subs_options::no_pattern)))));
 
   for (const sym::BodySystem& b : bodies) {
     auto recover = [&](const sym::CoordinateSymbols& c) {

@@ -52,6 +52,17 @@ GiNaC::exmap state_values(const sym::System& system, const GiNaC::exmap& state, 
   return values;
 }
 
+namespace {
+
+GiNaC::exset symbols_in(const GiNaC::ex& e) {
+  GiNaC::exset out;
+  for (auto i = e.preorder_begin(); i != e.preorder_end(); ++i)
+    if (GiNaC::is_a<GiNaC::symbol>(*i)) out.insert(*i);
+  return out;
+}
+
+}  // namespace
+
 std::optional<double> case_value(const CaseSystem& c, const CaseNumbers& numbers, const GiNaC::exmap& values,
                                  const GiNaC::symbol& u, bool* recovered) {
   for (std::size_t j = 0; j < c.unknowns.size(); ++j)
@@ -64,11 +75,15 @@ std::optional<double> case_value(const CaseSystem& c, const CaseNumbers& numbers
       GiNaC::exmap with_solution = values;
       for (std::size_t j = 0; j < c.unknowns.size(); ++j)
         with_solution[c.unknowns[j]] = GiNaC::numeric(numbers.solution(static_cast<Eigen::Index>(j)));
-      // A recovered force may use forces recovered before it.
+      // A recovered force may use forces recovered before it (those it holds: a long
+      // chain recovers hundreds, and most values hold none).
       GiNaC::ex e = r.value;
+      GiNaC::exset held = symbols_in(e);
       for (const Recovered& earlier : c.recovered) {
         if (&earlier == &r) break;
+        if (held.count(earlier.symbol) == 0) continue;
         e = e.subs(GiNaC::exmap{{earlier.symbol, earlier.value}});
+        held = symbols_in(e);
       }
       if (recovered != nullptr) *recovered = true;
       return value_at(e, with_solution);

@@ -27,24 +27,21 @@ int role_band(Role role) {
 }
 
 const SymbolInfo& SymbolTable::add(SymbolInfo info) {
-  int in_band = 0;
-  for (const SymbolInfo& e : entries_)
-    if (e.role == info.role) ++in_band;
-  info.rank = role_band(info.role) + in_band;
+  info.rank = role_band(info.role) + in_band_[info.role]++;
+  by_symbol_.emplace(info.symbol, entries_.size());
+  by_key_.emplace(info.key, entries_.size());
   entries_.push_back(std::move(info));
   return entries_.back();
 }
 
 const SymbolInfo* SymbolTable::find(const GiNaC::symbol& symbol) const {
-  for (const SymbolInfo& e : entries_)
-    if (e.symbol.is_equal(symbol)) return &e;
-  return nullptr;
+  const auto it = by_symbol_.find(symbol);
+  return it == by_symbol_.end() ? nullptr : &entries_[it->second];
 }
 
 const SymbolInfo* SymbolTable::find(const std::string& key) const {
-  for (const SymbolInfo& e : entries_)
-    if (e.key == key) return &e;
-  return nullptr;
+  const auto it = by_key_.find(key);
+  return it == by_key_.end() ? nullptr : &entries_[it->second];
 }
 
 }  // namespace linkage::sym

@@ -7,6 +7,7 @@
 #include <ginac/ginac.h>
 
 #include <deque>
+#include <map>
 #include <string>
 
 namespace linkage::sym {
@@ -49,6 +50,11 @@ class SymbolTable {
 
  private:
   std::deque<SymbolInfo> entries_;  // a deque: entries stay where they are as the table grows
+  // Lookups by symbol and by key, and the entries of each role so far: a long chain's
+  // table has thousands of entries, looked up for every factor printed.
+  std::map<GiNaC::ex, std::size_t, GiNaC::ex_is_less> by_symbol_;
+  std::map<std::string, std::size_t, std::less<>> by_key_;
+  std::map<Role, int> in_band_;
 };
 
 /// The band of ranks of each role, so a product's factors sort by role first.

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "symbolic/expression_reader.hpp"
 #include "symbolic/joints.hpp"
 #include "symbolic/spelling.hpp"
@@ -29,10 +30,13 @@ ex cross(const Vec2& a, const Vec2& b) { return a.x * b.y - a.y * b.x; }
 
 ex simplify_trig(const ex& e) {
   ex out = GiNaC::expand(e);
+  // Only the arguments whose sine occurs squared or higher: a substitution that matches
+  // nothing leaves the expression as it was, and costs a pass over it.
   GiNaC::exset arguments;
   for (auto i = out.preorder_begin(); i != out.preorder_end(); ++i)
-    if (GiNaC::is_a<GiNaC::function>(*i) && GiNaC::ex_to<GiNaC::function>(*i).get_name() == "sin")
-      arguments.insert(i->op(0));
+    if (GiNaC::is_a<GiNaC::power>(*i) && GiNaC::is_a<GiNaC::function>(i->op(0)) &&
+        GiNaC::ex_to<GiNaC::function>(i->op(0)).get_name() == "sin")
+      arguments.insert(i->op(0).op(0));
   for (const ex& x : arguments)
     out = GiNaC::expand(
         out.subs(GiNaC::pow(GiNaC::sin(x), 2) == 1 - GiNaC::pow(GiNaC::cos(x), 2), GiNaC::subs_options::algebraic));
@@ -442,9 +446,15 @@ void System::add_loads() {
 }
 
 ex System::time_derivative(const ex& e) const {
+  // The symbols e holds, in the order of derivative_ (same comparator), so the sum is
+  // built term by term as a walk over every coordinate would build it.
+  GiNaC::exset held;
+  for (auto i = e.preorder_begin(); i != e.preorder_end(); ++i)
+    if (GiNaC::is_a<symbol>(*i)) held.insert(*i);
   ex out = GiNaC::diff(e, t_);
-  for (const auto& [q, q_dot] : derivative_)
-    if (e.has(q)) out += GiNaC::diff(e, GiNaC::ex_to<symbol>(q)) * q_dot;
+  for (const ex& q : held)
+    if (const auto it = derivative_.find(q); it != derivative_.end())
+      out += GiNaC::diff(e, GiNaC::ex_to<symbol>(q)) * it->second;
   return out;
 }
 
@@ -455,6 +465,7 @@ void System::add_generalized() {
     return placed[static_cast<std::size_t>(body)];
   };
   for (int body : tree_.order) {
+    throw_if_interrupted();
     const auto i = static_cast<std::size_t>(body);
     const TreeBody& node = tree_.bodies[i];
     const BodySystem& bs = bodies_[i];
@@ -524,6 +535,7 @@ void System::add_generalized() {
 
   // Every maximal symbol that is not itself generalized, as an expression in them.
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    throw_if_interrupted();
     const BodySystem& b = bodies_[i];
     const Placement& p = placed[i];
     auto map = [&](const CoordinateSymbols& c, const ex& position) {

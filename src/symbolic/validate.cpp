@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "core/number_format.hpp"
 #include "model/mechanism_toml.hpp"
 
@@ -121,23 +122,46 @@ void validate_constraints(const System& system, const GiNaC::exmap& state) {
   for (const auto& [symbol, expression] : system.to_generalized())
     if (!expression.has(system.time())) values[symbol] = GiNaC::evalf(expression.subs(values));
   const Mechanism& m = system.mechanism();
-  Eigen::MatrixXd rows(0, static_cast<Eigen::Index>(coordinates.size()));
-  Eigen::Index rank = 0;
+  // Every joint's rows; a row's derivative by a coordinate it does not hold is 0.
+  std::vector<Eigen::MatrixXd> jacobians;
+  Eigen::Index total = 0;
   for (std::size_t j = 0; j < system.joints().size(); ++j) {
+    throw_if_interrupted();
     const auto& phi = system.joints()[j].constraints;
-    Eigen::MatrixXd more(rows.rows() + static_cast<Eigen::Index>(phi.size()), rows.cols());
-    more.topRows(rows.rows()) = rows;
+    Eigen::MatrixXd jacobian =
+        Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(phi.size()), static_cast<Eigen::Index>(coordinates.size()));
     for (std::size_t r = 0; r < phi.size(); ++r)
       for (std::size_t c = 0; c < coordinates.size(); ++c)
-        more(rows.rows() + static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) =
-            to_double(GiNaC::diff(phi[r], coordinates[c]).subs(values));
-    if (!more.allFinite()) {  // an overflow, not a redundancy: name the values behind it
+        if (phi[r].has(coordinates[c]))
+          jacobian(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) =
+              to_double(GiNaC::diff(phi[r], coordinates[c]).subs(values));
+    if (!jacobian.allFinite()) {  // an overflow, not a redundancy: name the values behind it
       const std::string causes = likely_causes(m);
       throw Error::input(where(m.joints[j].pos) + "the constraint of joint " + m.joints[j].name +
                          " is not a finite number at the initial state (an overflow of double precision)" +
                          (causes.empty() ? std::string() : "; likely causes: " + causes) +
                          "; valid: parameters and initial values of physical sizes");
     }
+    total += jacobian.rows();
+    jacobians.push_back(std::move(jacobian));
+  }
+  // All rows independent: no joint is redundant (one factorization, not one per joint).
+  Eigen::MatrixXd all(total, static_cast<Eigen::Index>(coordinates.size()));
+  for (Eigen::Index at = 0; const Eigen::MatrixXd& jacobian : jacobians) {
+    all.middleRows(at, jacobian.rows()) = jacobian;
+    at += jacobian.rows();
+  }
+  Eigen::FullPivLU<Eigen::MatrixXd> whole(all);
+  whole.setThreshold(1e-9);
+  if (whole.rank() == total) return;
+  // Else the first joint that adds less than its rows' count to the rank.
+  Eigen::MatrixXd rows(0, static_cast<Eigen::Index>(coordinates.size()));
+  Eigen::Index rank = 0;
+  for (std::size_t j = 0; j < system.joints().size(); ++j) {
+    const auto& phi = system.joints()[j].constraints;
+    Eigen::MatrixXd more(rows.rows() + static_cast<Eigen::Index>(phi.size()), rows.cols());
+    more.topRows(rows.rows()) = rows;
+    more.bottomRows(static_cast<Eigen::Index>(phi.size())) = jacobians[j];
     Eigen::FullPivLU<Eigen::MatrixXd> lu(more);
     lu.setThreshold(1e-9);
     const Eigen::Index new_rank = lu.rank();

@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <memory>
 #include <string>
+#include <thread>
 
 namespace linkage {
 namespace {
@@ -128,6 +129,22 @@ TEST(Progress, IntervalFromTheEnvironment) {
   ::unsetenv("LINKAGE_PROGRESS_INTERVAL");
   EXPECT_DOUBLE_EQ(ProgressOutput::from_environment().interval.count(), 5.0);
   EXPECT_FALSE(ProgressOutput::from_environment().plain) << "off a terminal, silent unless asked";
+}
+
+TEST(ElapsedLine, ShowsOnATerminalOnlyOnceTheStepLastsTheDelayAndErasesItself) {
+  Harness quick, slow, plain;
+  { ElapsedLine line("deriving", false, quick.output(true, 5.0), std::chrono::milliseconds(500)); }
+  EXPECT_EQ(quick.text(), "") << "a step shorter than the delay shows nothing";
+  {
+    ElapsedLine line("deriving", false, slow.output(true, 5.0), std::chrono::milliseconds(20));
+    std::this_thread::sleep_for(milliseconds(200));
+  }
+  EXPECT_EQ(slow.text(), "\r\033[Kderiving: 0 s\r\033[K");
+  {
+    ElapsedLine line("deriving", false, plain.output(false, 5.0), std::chrono::milliseconds(20));
+    std::this_thread::sleep_for(milliseconds(100));
+  }
+  EXPECT_EQ(plain.text(), "") << "off a terminal";
 }
 
 }  // namespace
