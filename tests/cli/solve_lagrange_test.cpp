@@ -44,12 +44,7 @@ TEST_P(SolveLagrange, EveryFormatRunsAndSolvesAsCase3) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Shipped, SolveLagrange, testing::ValuesIn(shipped_mechanism_names()),
-                         [](const testing::TestParamInfo<std::string>& p) {
-                           std::string name = p.param;
-                           for (char& c : name)
-                             if (c == '-') c = '_';
-                           return name;
-                         });
+                         [](const testing::TestParamInfo<std::string>& p) { return test::test_name(p.param); });
 
 TEST(SolveLagrangeForm, TheDoublePendulumReadsAsOnTheBoard) {
   const test::RunResult r =

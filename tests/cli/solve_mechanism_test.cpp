@@ -53,12 +53,7 @@ TEST_P(SolveMechanism, EveryRunPrintsTheSameBits) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Shipped, SolveMechanism, testing::ValuesIn(kShipped),
-                         [](const testing::TestParamInfo<std::string>& p) {
-                           std::string name = p.param;
-                           for (char& c : name)
-                             if (c == '-') c = '_';
-                           return name;
-                         });
+                         [](const testing::TestParamInfo<std::string>& p) { return test::test_name(p.param); });
 
 TEST(SolveMechanismSet, ChangesAParameterAndACoordinate) {
   const auto base = nlohmann::json::parse(

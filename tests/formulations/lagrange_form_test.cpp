@@ -13,6 +13,7 @@
 #include "formulations/case_system.hpp"
 #include "model/mechanism_toml.hpp"
 #include "support/mechanisms_in_code.hpp"
+#include "support/test_support.hpp"
 #include "symbolic/loop_closure.hpp"
 
 namespace linkage {
@@ -22,9 +23,7 @@ std::vector<built::Named> mechanisms() {
   std::vector<built::Named> out = built::all_mechanisms();
   for (const std::string& name : shipped_mechanism_names())
     out.push_back({"shipped_" + name, [name] { return load_mechanism(name); }});
-  for (built::Named& named : out)
-    for (char& c : named.name)
-      if (c == '-') c = '_';
+  for (built::Named& named : out) named.name = test::test_name(named.name);
   return out;
 }
 

@@ -274,6 +274,12 @@ std::string repeat(std::string_view s, int n) {
   return out;
 }
 
+std::string test_name(std::string name) {
+  for (char& c : name)
+    if (c == '-') c = '_';
+  return name;
+}
+
 std::string input_error_of(const std::function<void()>& action) {
   try {
     action();

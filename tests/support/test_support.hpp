@@ -75,6 +75,8 @@ void write_text(const std::filesystem::path& path, const std::string& text);
 std::vector<std::string> lines_of(const std::string& text);
 /// `s` written `n` times (hostile input: deep nesting, long names).
 std::string repeat(std::string_view s, int n);
+/// A mechanism's name as a GoogleTest parameter name (letters, digits and '_' only).
+std::string test_name(std::string name);
 /// The message of the Error `action` throws, checked to be a bad-input error (exit 2); ""
 /// when it throws none.
 std::string input_error_of(const std::function<void()>& action);
