@@ -596,6 +596,14 @@ class Parser {
       if (!out.empty() && !(c.at > out.back().at))
         entry.fail("at", format_significant(c.at, 6) + " s must come after caption " + std::to_string(i) + "'s " +
                              format_significant(out.back().at, 6) + " s");
+      if (entry.has("until"))
+        c.until = *entry.number("until", c.at, limit, format_significant(c.at, 6) + " .. " + rule.substr(5));
+      if (entry.has("until") && !(c.until > c.at))
+        entry.fail("until", format_significant(c.until, 6) + " s must come after the caption's at (" +
+                                format_significant(c.at, 6) + " s)");
+      if (!out.empty() && std::isfinite(out.back().until) && out.back().until > c.at)
+        entry.fail("at", format_significant(c.at, 6) + " s comes before caption " + std::to_string(i) + " ends (" +
+                             format_significant(out.back().until, 6) + " s)");
       out.push_back(std::move(c));
     }
     return out;

@@ -93,9 +93,10 @@ std::span<const KeySpec> render_keys() {
   return keys;
 }
 
-constexpr std::array<KeySpec, 2> kCaptionKeys{{
+constexpr std::array<KeySpec, 3> kCaptionKeys{{
     {"at", "number", "(required)"},
     {"text", "string", "(required)"},
+    {"until", "number", "the next caption's at"},
 }};
 
 constexpr std::array<KeySpec, 12> kPlotKeys{{

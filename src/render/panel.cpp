@@ -167,7 +167,7 @@ const std::string& caption_at(const std::vector<Caption>& captions, double t) {
   static const std::string none;
   const std::string* shown = &none;
   for (const Caption& c : captions)
-    if (c.at <= t + 1e-9) shown = &c.text;
+    if (c.at <= t + 1e-9) shown = t < c.until - 1e-9 ? &c.text : &none;
   return *shown;
 }
 

@@ -89,6 +89,13 @@ void RenderSettings::validate() const {
                                            format_roundtrip(captions[i - 1].at) + " s)");
     if (c.text.find_first_not_of(" \t\n") == std::string::npos)
       throw Error::invalid("captions", which + " has no text");
+    if (!(c.until > c.at))
+      throw Error::invalid("captions", which + " ends at " + format_roundtrip(c.until) + " s, not after its start " +
+                                           format_roundtrip(c.at) + " s");
+    if (i + 1 < captions.size() && std::isfinite(c.until) && c.until > captions[i + 1].at)
+      throw Error::invalid("captions", which + " ends at " + format_roundtrip(c.until) + " s, after caption " +
+                                           std::to_string(i + 2) + " starts (" + format_roundtrip(captions[i + 1].at) +
+                                           " s)");
   }
   (void)frame_bands(*this);  // the equations shown fit the frame
 }

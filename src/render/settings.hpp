@@ -6,6 +6,7 @@
 // motion at t = k S / F.
 #include <array>
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -44,10 +45,12 @@ struct EquationsText {
   [[nodiscard]] bool empty() const { return lines.empty(); }
 };
 
-/// Words drawn along the bottom of the frame from time `at` until the next caption's.
+/// Words drawn along the bottom of the frame from time `at` until `until`, or until the
+/// next caption's `at` when `until` is infinite: a caption about a moment ends with it.
 struct Caption {
   double at = 0;  // s of simulated time
   std::string text;
+  double until = std::numeric_limits<double>::infinity();  // s; > at, <= the next caption's at
 };
 
 struct RenderSettings {

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "core/error.hpp"
 #include "render/cairo_util.hpp"
 #include "render/frame_layout.hpp"
 #include "render/render_test_support.hpp"
@@ -127,6 +128,27 @@ TEST(Captions, EachShownFromItsTimeUntilTheNext) {
   EXPECT_EQ(caption_at(captions, 1.99), "first");
   EXPECT_EQ(caption_at(captions, 2.0), "second");
   EXPECT_EQ(caption_at({{1.0, "late"}}, 0.5), "");
+}
+
+TEST(Captions, ACaptionWithAnEndGoesAtItsEnd) {
+  const std::vector<Caption> captions{{0.0, "dead point", 0.25}, {1.0, "one turn"}};
+  EXPECT_EQ(caption_at(captions, 0.2), "dead point");
+  EXPECT_EQ(caption_at(captions, 0.25), "");
+  EXPECT_EQ(caption_at(captions, 0.9), "");
+  EXPECT_EQ(caption_at(captions, 1.0), "one turn");
+  EXPECT_EQ(caption_at(captions, 50.0), "one turn");
+}
+
+TEST(Captions, AnEndAfterTheNextCaptionOrBeforeItsStartIsRefused) {
+  RenderSettings settings;
+  settings.captions = {{0.0, "first", 1.5}, {1.0, "second"}};
+  EXPECT_THROW(settings.validate(), Error);
+  settings.captions = {{0.5, "first", 0.5}};
+  EXPECT_THROW(settings.validate(), Error);
+  settings.captions = {{0.0, "first", 1.0}, {1.0, "second"}};
+  EXPECT_NO_THROW(settings.validate());
+  settings.captions = {{0.0, "first"}, {1.0, "second", 2.0}};
+  EXPECT_NO_THROW(settings.validate());
 }
 
 TEST(Captions, LongTextWrapsAtSpacesWithinTheWidth) {
