@@ -121,6 +121,49 @@ TEST(PanelPaint, CursorAndDotAtTheFramesTime) {
   EXPECT_EQ(frame.pixel(50, 20), 0u);
 }
 
+// D6: energy (J) and a force (N) never share an axis: one plot per unit, stacked, each
+// axis its quantity and unit; the lowest plot (the force's) fills the lower half and its
+// dot at the frame's time is in the force's colour slot (1), not the energy's.
+TEST(PanelPaint, QuantitiesOfDifferentUnitsGetTheirOwnAxes) {
+  PanelData data = ramp();
+  data.curves[0] = {"energy E = T + V", "J", {}};
+  data.curves.push_back({"force of joint O2 on the ground, x", "N", {}});
+  data.curves.push_back({"force of joint O2 on the ground, y", "N", {}});
+  for (std::size_t i = 0; i < data.t.size(); ++i) {
+    data.curves[0].values.push_back(2.5);
+    data.curves[1].values.push_back(std::sin(data.t[i]));
+    data.curves[2].values.push_back(-14 * std::cos(data.t[i]));
+  }
+  const std::vector<std::vector<std::size_t>> groups = unit_groups(data);
+  ASSERT_EQ(groups.size(), 2u);
+  EXPECT_EQ(groups[0], std::vector<std::size_t>{0});
+  EXPECT_EQ(groups[1], (std::vector<std::size_t>{1, 2}));
+  EXPECT_EQ(panel_index(data, 5.0), 50u);
+  EXPECT_EQ(panel_index(data, 5.04), 50u);
+  EXPECT_EQ(panel_index(data, -1.0), 0u);
+  const Theme theme = load_theme("light", {}, "theme");
+  DrawStyle style;
+  style.theme = &theme;
+  style.u = 1;
+  Frame frame(500, 700);
+  const cairo::SurfacePtr surface = cairo::surface_for(frame);
+  const cairo::ContextPtr cr = cairo::context(surface.get());
+  const Rect rect{0, 0, 500, 700};
+  const plot::Report report = paint_panel(cr.get(), style, data, 50, rect);
+  cairo_surface_flush(surface.get());
+  const plot::Geometry& g = report.geometry;
+  // In the lower plot's own coordinates (drawn 350 down): the forces' limits, padded 6 %.
+  EXPECT_NEAR(g.y.min, -14 - 0.06 * 28, 0.01);
+  EXPECT_NEAR(g.y.max, 14 + 0.06 * 28, 0.01);
+  EXPECT_NE(report.legend, plot::LegendPlace::none);
+  const plot::Rgb orange = plot::palette(plot::Theme::light)[1];
+  const test::Rgb8 colour{static_cast<int>(std::lround(255 * orange.r)), static_cast<int>(std::lround(255 * orange.g)),
+                          static_cast<int>(std::lround(255 * orange.b))};
+  const plot::Point dot = g.to_device({5.0, std::sin(5.0)});
+  EXPECT_LE(test::colour_distance(test::rgb_at(frame, static_cast<int>(dot.x), static_cast<int>(350 + dot.y)), colour),
+            40);
+}
+
 TEST(Captions, EachShownFromItsTimeUntilTheNext) {
   const std::vector<Caption> captions{{0.0, "first"}, {2.0, "second"}};
   EXPECT_EQ(caption_at(captions, 0.0), "first");
