@@ -98,7 +98,7 @@ constexpr std::array<KeySpec, 2> kCaptionKeys{{
     {"text", "string", "(required)"},
 }};
 
-constexpr std::array<KeySpec, 12> kPlotKeys{{
+constexpr std::array<KeySpec, 13> kPlotKeys{{
     {"out", "string", "(required)"},
     {"caption", "string", "none"},
     {"title", "string", "none"},
@@ -106,6 +106,7 @@ constexpr std::array<KeySpec, 12> kPlotKeys{{
     {"x", "string", "\"t\""},
     {"log_x", "boolean", "false"},
     {"log_y", "boolean", "false"},
+    {"equal_axes", "boolean", "false"},
     {"difference", "boolean", "false"},
     {"angles", "string", "\"rad\""},
     {"every", "number", "duration / 400"},
