@@ -1,6 +1,7 @@
 #include "render/panel.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <numbers>
 
@@ -91,6 +92,36 @@ PanelLayout panel_layout(int width, int height, bool with_panel) {
 
 namespace {
 
+/// What tells each label from the others: what follows the whole words all of them begin
+/// with, and the last of those words before a number ("force of joint O2 on the ground,
+/// x" -> "x"; "angle θ of body 2" -> "body 2"); the labels themselves when no word is
+/// shared.
+std::vector<std::string> distinguishing_words(const std::vector<std::string>& labels) {
+  if (labels.size() < 2) return labels;
+  std::size_t common = labels[0].size();
+  for (const std::string& label : labels) {
+    std::size_t n = 0;
+    while (n < common && n < label.size() && label[n] == labels[0][n]) ++n;
+    common = n;
+  }
+  const std::size_t space = labels[0].rfind(' ', common);
+  if (space == std::string::npos || space == 0) return labels;
+  std::size_t cut = space + 1;  // after the last shared word
+  const bool numbered = std::any_of(labels.begin(), labels.end(), [&](const std::string& l) {
+    return cut < l.size() && std::isdigit(static_cast<unsigned char>(l[cut]));
+  });
+  if (numbered && labels[0][space - 1] != ',') {
+    const std::size_t before = labels[0].rfind(' ', space - 1);
+    cut = before == std::string::npos ? 0 : before + 1;  // keep that word
+  }
+  std::vector<std::string> out;
+  for (const std::string& label : labels) {
+    if (cut >= label.size()) return labels;
+    out.push_back(label.substr(cut));
+  }
+  return out;
+}
+
 /// The plot of the curves `which` (all of one unit) at sample `index`; each curve keeps
 /// its colour slot by its place in `data`.
 plot::Plot curves_plot(const PanelData& data, const std::vector<std::size_t>& which, std::size_t index, bool dark,
@@ -113,12 +144,15 @@ plot::Plot curves_plot(const PanelData& data, const std::vector<std::size_t>& wh
   }
   p.y.label = one ? with_unit(labels[0], units[0]) : shared_axis_label(labels, units);
   p.legend = one ? plot::LegendPlace::none : plot::LegendPlace::best;
+  // The axis names the words the curves share and their unit: the legend names the rest.
+  const std::vector<std::string> legend_names = distinguishing_words(labels);
+  std::size_t k = 0;
   const std::size_t n = data.t.size();
   const std::size_t now = std::min(index, n == 0 ? 0 : n - 1);
   for (const std::size_t c : which) {
     const PanelCurve& curve = data.curves[c];
     plot::Series past, ahead;
-    past.name = one ? "" : with_unit(curve.label, curve.unit);
+    past.name = one ? "" : with_unit(legend_names[k++], curve.unit);
     past.color = ahead.color = c % plot::palette_size;
     ahead.dash = plot::Dash::dotted;
     for (std::size_t i = 0; i < n && i < curve.values.size(); ++i) {

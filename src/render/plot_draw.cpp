@@ -3,6 +3,7 @@
 // legend over the data).
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <numbers>
 
 #include "core/error.hpp"
@@ -64,6 +65,8 @@ bool has_markers(const Series& s) { return s.style != Style::line; }
 
 // A legend at most this share of the canvas' width may go beside the data.
 constexpr double kNarrowLegend = 0.2;
+// A legend outside the data must leave it this share of the canvas' height.
+constexpr double kLeastDataHeight = 1.0 / 3;
 
 class Drawing {
  public:
@@ -84,13 +87,10 @@ class Drawing {
     legend_place_ = plot_.legend;
     if (legend_entries_.empty()) legend_place_ = LegendPlace::none;
     lay_out();
-    if (legend_place_ == LegendPlace::best && !legend_fits_inside()) {
-      legend_place_ = LegendPlace::outside_right;
+    if (legend_place_ == LegendPlace::best && !legend_fits_inside() &&
+        !place_outside({LegendPlace::outside_right, LegendPlace::above})) {
+      legend_place_ = LegendPlace::best;  // no room outside: over the data after all
       lay_out();
-      if (g_.right - g_.left < 0.5 * canvas_.width) {  // a legend this wide overlaps the data instead
-        legend_place_ = LegendPlace::best;
-        lay_out();
-      }
     }
     require_room_for_data();
     trace_data();
@@ -98,10 +98,9 @@ class Drawing {
       const LegendPlace corner = least_occupied_corner();
       legend_place_ = corner;
       if (samples_in(legend_box(corner)) > 0) {  // every corner would hide data: beside it if narrow, else above
-        legend_place_ =
-            legend_width_ <= kNarrowLegend * canvas_.width ? LegendPlace::outside_right : LegendPlace::above;
-        lay_out();
-        if (g_.right - g_.left < 0.5 * canvas_.width || g_.bottom - g_.top < 0.5 * canvas_.height) {
+        const bool narrow = legend_width_ <= kNarrowLegend * canvas_.width;
+        if (!place_outside(narrow ? std::initializer_list<LegendPlace>{LegendPlace::outside_right, LegendPlace::above}
+                                  : std::initializer_list<LegendPlace>{LegendPlace::above})) {
           legend_place_ = corner;
           lay_out();
         }
@@ -120,6 +119,18 @@ class Drawing {
 
  private:
   // --- layout ----------------------------------------------------------------------
+
+  /// The first of `places` outside the data that leaves the data half the width and a
+  /// third of the height at least, laid out; false (and the layout of the last) if none.
+  bool place_outside(std::initializer_list<LegendPlace> places) {
+    for (const LegendPlace place : places) {
+      legend_place_ = place;
+      lay_out();
+      if (g_.right - g_.left >= 0.5 * canvas_.width && g_.bottom - g_.top >= kLeastDataHeight * canvas_.height)
+        return true;
+    }
+    return false;
+  }
 
   [[nodiscard]] Ticks ticks_for(const Axis& axis, const detail::Limits& limits, int max_ticks) const {
     if (axis.scale == Scale::log) return log_ticks(limits.min, limits.max, max_ticks);

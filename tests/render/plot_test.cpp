@@ -560,12 +560,16 @@ TEST(PlotFile, LegendAvoidsTheData) {
   EXPECT_LT(crowded.geometry.right, wide - 100);
 }
 
+/// A zigzag between the bottom and the top: it fills every corner.
+Series zigzag(const std::string& name) {
+  Series out{name, {}};
+  for (int i = 0; i <= 40; ++i) out.points.push_back({i / 40.0, static_cast<double>(i % 2)});
+  return out;
+}
+
 TEST(PlotFile, ALegendThatWouldHideDataInEveryCornerGoesBesideIt) {
   Plot plot;
-  // A zigzag between the bottom and the top fills every corner.
-  Series zigzag{"zigzag", {}};
-  for (int i = 0; i <= 40; ++i) zigzag.points.push_back({i / 40.0, static_cast<double>(i % 2)});
-  plot.series.push_back(zigzag);
+  plot.series.push_back(zigzag("zigzag"));
   const TempDir dir;
   const Report report = write(plot, dir / "zigzag.png");
   EXPECT_EQ(report.legend, LegendPlace::outside_right);
@@ -579,9 +583,7 @@ TEST(PlotFile, ALegendThatWouldHideDataInEveryCornerGoesBesideIt) {
 TEST(PlotFile, AWideLegendThatWouldHideDataInEveryCornerGoesAboveIt) {
   Plot plot;
   plot.title = "The crank's speed over one turn";
-  Series zigzag{"crank at 10 rad/s from θ = 0, g = 0", {}};
-  for (int i = 0; i <= 40; ++i) zigzag.points.push_back({i / 40.0, static_cast<double>(i % 2)});
-  plot.series.push_back(zigzag);
+  plot.series.push_back(zigzag("crank at 10 rad/s from θ = 0, g = 0"));
   const TempDir dir;
   const Report wide = write(plot, dir / "wide.png");
   EXPECT_EQ(wide.legend, LegendPlace::above);
