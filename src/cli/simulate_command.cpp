@@ -347,8 +347,9 @@ void register_simulate(CLI::App& app) {
       sub->add_option("--columns", o->columns,
                       "Comma-separated columns to compute and write, or all (default all): " + column_names +
                           ". With --mechanism: default (t, every body's x, y, theta, every "
-                          "slider's s), all, or names such as 2.theta_dot, B.force_x, "
-                          "energy_error")
+                          "slider's s), all, or names such as 2.theta_dot, 2.theta_ddot, "
+                          "S.s_ddot, B.force_x, energy_error, and a named point's 3.P.x, .y, "
+                          ".vx, .vy, .ax, .ay (world frame; m, m/s, m/s^2)")
           ->type_name("LIST");
   add_angle_option(sub, o->angles, "angle columns (theta, rates, accelerations) in the table");
   sub->add_flag("--quiet", o->quiet, "No progress or notes on stderr (the summary and warnings stay)");

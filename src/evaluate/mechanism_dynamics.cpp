@@ -21,7 +21,34 @@ Eigen::Index idx(std::size_t i) { return static_cast<Eigen::Index>(i); }
 // A Newton projection that has not met the constraints in this many iterations will not.
 constexpr int kProjectionIterations = 12;
 
+/// A slider's s, the position along its axis in maximal coordinates (0 for a pin).
+ex slider_position(const sym::System& system, const Joint& joint) {
+  switch (joint.type) {
+    case JointType::pin:
+      return 0;
+    case JointType::slider:
+      break;
+  }
+  const Mechanism& mechanism = system.mechanism();
+  const int a = mechanism.body_index(joint.bodies[0]), b = mechanism.body_index(joint.bodies[1]);
+  const ex angle = a < 0 || !system.bodies()[static_cast<std::size_t>(a)].rotates
+                       ? ex(0)
+                       : ex(system.bodies()[static_cast<std::size_t>(a)].theta.q);
+  const ex ax = system.quantity(joint.axis->x, false), ay = system.quantity(joint.axis->y, false);
+  const ex length = GiNaC::sqrt(ax * ax + ay * ay);
+  const sym::Vec2 u = sym::rotate(angle, {ax / length, ay / length});
+  const sym::Vec2 d = system.point_position(b, joint.points[1]) - system.point_position(a, joint.points[0]);
+  return u.x * d.x + u.y * d.y;
+}
+
 }  // namespace
+
+std::vector<NamedPoint> named_points(const sym::System& system) {
+  std::vector<NamedPoint> out;
+  for (std::size_t b = 0; b < system.bodies().size(); ++b)
+    for (const auto& [name, position] : system.bodies()[b].points) out.push_back({b, name});
+  return out;
+}
 
 MechanismDynamics::MechanismDynamics(const sym::System& system, CaseId id) : id_(id), system_(&system) {
   const bool maximal = id == CaseId::maximal;
@@ -165,19 +192,7 @@ void MechanismDynamics::compile_case() const {
   }
   for (const sym::JointSystem& j : system.joints()) {
     const Joint& joint = mechanism.joints[static_cast<std::size_t>(j.index)];
-    ex s = 0;
-    if (joint.type == JointType::slider) {
-      const int a = mechanism.body_index(joint.bodies[0]), b = mechanism.body_index(joint.bodies[1]);
-      const ex angle = a < 0 || !system.bodies()[static_cast<std::size_t>(a)].rotates
-                           ? ex(0)
-                           : ex(system.bodies()[static_cast<std::size_t>(a)].theta.q);
-      const ex ax = system.quantity(joint.axis->x, false), ay = system.quantity(joint.axis->y, false);
-      const ex length = GiNaC::sqrt(ax * ax + ay * ay);
-      const sym::Vec2 u = sym::rotate(angle, {ax / length, ay / length});
-      const sym::Vec2 d = system.point_position(b, joint.points[1]) - system.point_position(a, joint.points[0]);
-      s = u.x * d.x + u.y * d.y;
-    }
-    out.push_back(prepare(s));
+    out.push_back(prepare(slider_position(system, joint)));
     out.push_back(prepare_output(j.force.x));
     out.push_back(prepare_output(j.force.y));
     out.push_back(prepare_output(j.moment));
@@ -201,6 +216,7 @@ void MechanismDynamics::compile_case() const {
   out.push_back(prepare(p.y));
   out.push_back(substituted(sym::angular_momentum_about_centre(system)));
   outputs_ = compile(out, output_inputs);
+  output_symbols_ = output_inputs;
 
   output_inputs_.assign(output_inputs.size(), 0.0);
   values_.resize(std::max({values_.size(), rhs_.output_count(), outputs_.output_count()}));
@@ -208,6 +224,39 @@ void MechanismDynamics::compile_case() const {
   A_.resize(idx(rows_), idx(cols_));
   B_.resize(idx(rows_));
   compiled_ = true;
+}
+
+void MechanismDynamics::compile_kinematics() const {
+  compile_case();
+  if (kinematics_compiled_) return;
+  const sym::System& system = *system_;
+  // Accelerations in the state's coordinates: the maximal ones by the tree for Cases 2 and 3
+  // (positions and rates are prepare()'s), then the unknowns carry q''.
+  GiNaC::exmap accelerations;
+  if (id_ != CaseId::maximal)
+    for (const auto& [symbol, expression] : system.to_generalized()) {
+      const sym::SymbolInfo* info = system.table().find(GiNaC::ex_to<GiNaC::symbol>(symbol));
+      if (info != nullptr && info->role == sym::Role::acceleration) accelerations[symbol] = expression;
+    }
+  auto prepare = [&](const ex& e) { return this->prepare(e.subs(accelerations, GiNaC::subs_options::no_pattern)); };
+  std::vector<ex> out;
+  for (const sym::BodySystem& b : system.bodies()) {
+    out.push_back(prepare(b.x.q_ddot));
+    out.push_back(prepare(b.y.q_ddot));
+    out.push_back(b.rotates ? prepare(b.theta.q_ddot) : ex(0));
+  }
+  for (const sym::JointSystem& j : system.joints())
+    out.push_back(prepare(system.time_derivative(system.time_derivative(
+        slider_position(system, system.mechanism().joints[static_cast<std::size_t>(j.index)])))));
+  for (const NamedPoint& p : named_points(system)) {
+    const sym::Vec2 position = system.point_position(static_cast<int>(p.body), p.name);
+    const sym::Vec2 velocity{system.time_derivative(position.x), system.time_derivative(position.y)};
+    for (const ex& e : {position.x, position.y, velocity.x, velocity.y, system.time_derivative(velocity.x),
+                        system.time_derivative(velocity.y)})
+      out.push_back(prepare(e));
+  }
+  kinematics_ = compile(out, output_symbols_);
+  kinematics_compiled_ = true;
 }
 
 MechanismDynamics::~MechanismDynamics() = default;
@@ -338,8 +387,9 @@ double MechanismDynamics::project(double t, Eigen::VectorXd& y) const {
   return C.cwiseAbs().maxCoeff();
 }
 
-void MechanismDynamics::sample(double t, const Eigen::VectorXd& y, MechanismSample& out) const {
+void MechanismDynamics::sample(double t, const Eigen::VectorXd& y, MechanismSample& out, bool kinematics) const {
   compile_case();
+  if (kinematics) compile_kinematics();
   Eigen::VectorXd u;
   const bool solved = unknowns(t, y, u) > 0;
   fill_inputs(t, y);
@@ -370,6 +420,14 @@ void MechanismDynamics::sample(double t, const Eigen::VectorXd& y, MechanismSamp
   out.momentum_x = values[k++];
   out.momentum_y = values[k++];
   out.angular_momentum = values[k++];
+  if (!kinematics) return;
+  values.resize(kinematics_.output_count());
+  scratch.resize(kinematics_.scratch_size());
+  kinematics_.run(output_inputs_.data(), values.data(), scratch.data());
+  const auto at = [&](std::size_t i) { return values.begin() + static_cast<std::ptrdiff_t>(i); };
+  out.accelerations.assign(at(0), at(3 * bodies_));
+  out.slider_accelerations.assign(at(3 * bodies_), at(3 * bodies_ + joints_));
+  out.points.assign(at(3 * bodies_ + joints_), values.end());
 }
 
 }  // namespace linkage::eval

@@ -36,7 +36,19 @@ struct MechanismSample {
   double power = 0;  // of dampers and applied loads, W
   double momentum_x = 0, momentum_y = 0;
   double angular_momentum = 0;  // about the centre of mass
+  // Only when sample() is asked for the kinematics (a column needs them), else empty:
+  std::vector<double> accelerations;         // per body: x'', y'', theta'' (0 for a point mass)
+  std::vector<double> slider_accelerations;  // per joint: s'' for a slider, 0 for a pin
+  std::vector<double> points;                // per named point: x, y, x', y', x'', y'' (world frame)
 };
+
+/// A named point of a moving body, in the order of MechanismSample::points: bodies in
+/// file order, each body's points by name.
+struct NamedPoint {
+  std::size_t body = 0;
+  std::string name;
+};
+[[nodiscard]] std::vector<NamedPoint> named_points(const sym::System& system);
 
 class MechanismDynamics {
  public:
@@ -77,14 +89,16 @@ class MechanismDynamics {
   /// The name of the joint whose kept constraint is violated most at y ("" without).
   [[nodiscard]] std::string worst_joint(double t, const Eigen::VectorXd& y) const;
 
-  /// Everything a sample reports at (t, y), from one evaluation of the unknowns.
-  void sample(double t, const Eigen::VectorXd& y, MechanismSample& out) const;
+  /// Everything a sample reports at (t, y), from one evaluation of the unknowns; with
+  /// `kinematics` the accelerations and the named points' motion too (compiled on first need).
+  void sample(double t, const Eigen::VectorXd& y, MechanismSample& out, bool kinematics = false) const;
 
  private:
   [[nodiscard]] GiNaC::ex prepare(const GiNaC::ex& e) const;
   /// Derives the case and compiles A, B and the sample, on first need: a long chain's
   /// Case 3 integrates by the tree's recursion without ever expanding them.
   void compile_case() const;
+  void compile_kinematics() const;
   void fill_inputs(double t, const Eigen::VectorXd& y) const;
   void evaluate_constraints(double t, const Eigen::VectorXd& y) const;
 
@@ -108,6 +122,9 @@ class MechanismDynamics {
   mutable Program rhs_;                         // A (row major), B
   Program constraints_;                         // C, dC/dq (row major), M (row major)
   mutable Program outputs_;                     // the sample, with the unknowns as inputs too
+  mutable Program kinematics_;                  // accelerations and points, with the same inputs
+  mutable bool kinematics_compiled_ = false;
+  mutable std::vector<GiNaC::symbol> output_symbols_;
   double two_alpha_ = 0, beta_squared_ = 0;
   mutable std::vector<double> inputs_, values_, scratch_, constraint_values_, output_inputs_, power_values_;
   mutable Eigen::MatrixXd A_, J_, M_;

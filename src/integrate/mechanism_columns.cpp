@@ -45,6 +45,26 @@ std::vector<MechanismColumn> mechanism_columns(const sym::System& system) {
       out.push_back({body.name + "." + axes[c] + "_dot", c == 2 ? "rad/s" : "m/s",
                      "rate of " + body.name + "." + axes[c], Q::rate, 3 * b + c, false});
   }
+  for (std::size_t b = 0; b < system.bodies().size(); ++b) {
+    const sym::BodySystem& body = system.bodies()[b];
+    for (std::size_t c = 0; c < (body.rotates ? 3U : 2U); ++c)
+      out.push_back({body.name + "." + axes[c] + "_ddot", c == 2 ? "rad/s^2" : "m/s^2",
+                     "acceleration of " + body.name + "." + axes[c], Q::acceleration, 3 * b + c, false});
+  }
+  for (std::size_t j = 0; j < m.joints.size(); ++j)
+    if (m.joints[j].type == JointType::slider)
+      out.push_back({m.joints[j].name + ".s_ddot", "m/s^2", "acceleration along slider " + m.joints[j].name,
+                     Q::slider_acceleration, j, false});
+  const std::vector<eval::NamedPoint> points = eval::named_points(system);
+  for (std::size_t p = 0; p < points.size(); ++p) {
+    const std::string name = system.bodies()[points[p].body].name + "." + points[p].name;
+    static const char* const suffix[] = {"x", "y", "vx", "vy", "ax", "ay"};
+    static const char* const unit[] = {"m", "m", "m/s", "m/s", "m/s^2", "m/s^2"};
+    static const char* const what[] = {"x", "y", "velocity, x", "velocity, y", "acceleration, x", "acceleration, y"};
+    for (std::size_t c = 0; c < 6; ++c)
+      out.push_back({name + "." + suffix[c], unit[c], std::string(what[c]) + " of point " + name + " (world frame)",
+                     Q::point, 6 * p + c, false});
+  }
   for (std::size_t j = 0; j < m.joints.size(); ++j) {
     const Joint& joint = m.joints[j];
     const std::string on = "force of joint " + joint.name + " on " +
@@ -118,6 +138,29 @@ std::vector<MechanismColumn> select_mechanism_columns(const std::vector<Mechanis
   return select_mechanism_columns(all, names, [&](std::size_t) { return origin; });
 }
 
+bool needs_kinematics(const std::vector<MechanismColumn>& columns) {
+  for (const MechanismColumn& c : columns) switch (c.quantity) {
+      case MechanismQuantity::acceleration:
+      case MechanismQuantity::slider_acceleration:
+      case MechanismQuantity::point:
+        return true;
+      case MechanismQuantity::time:
+      case MechanismQuantity::position:
+      case MechanismQuantity::rate:
+      case MechanismQuantity::slider:
+      case MechanismQuantity::force:
+      case MechanismQuantity::constraint:
+      case MechanismQuantity::energy:
+      case MechanismQuantity::energy_error:
+      case MechanismQuantity::work:
+      case MechanismQuantity::momentum_x:
+      case MechanismQuantity::momentum_y:
+      case MechanismQuantity::angular_momentum:
+        break;
+    }
+  return false;
+}
+
 double column_value(const MechanismColumn& c, double t, const Eigen::VectorXd& y, const eval::MechanismSample& s,
                     double energy0) {
   const double work = y[y.size() - 1];
@@ -128,8 +171,14 @@ double column_value(const MechanismColumn& c, double t, const Eigen::VectorXd& y
       return s.pose[c.index];
     case MechanismQuantity::rate:
       return s.rates[c.index];
+    case MechanismQuantity::acceleration:
+      return s.accelerations.at(c.index);
     case MechanismQuantity::slider:
       return s.slider[c.index];
+    case MechanismQuantity::slider_acceleration:
+      return s.slider_accelerations.at(c.index);
+    case MechanismQuantity::point:
+      return s.points.at(c.index);
     case MechanismQuantity::force:
       return s.force[c.index];
     case MechanismQuantity::constraint:
@@ -154,6 +203,14 @@ std::string column_words(const MechanismColumn& c) {
   const std::string owner = c.name.substr(0, c.name.rfind('.'));
   static const char* const position[] = {"x of body ", "y of body ", "angle θ of body "};
   static const char* const rate[] = {"velocity ẋ of body ", "velocity ẏ of body ", "angular velocity θ̇ of body "};
+  static const char* const acceleration[] = {"acceleration ẍ of body ", "acceleration ÿ of body ",
+                                             "angular acceleration θ̈ of body "};
+  static const char* const point[] = {"x of point ",
+                                      "y of point ",
+                                      "velocity v_{x} of point ",
+                                      "velocity v_{y} of point ",
+                                      "acceleration a_{x} of point ",
+                                      "acceleration a_{y} of point "};
   using Q = MechanismQuantity;
   switch (c.quantity) {
     case Q::time:
@@ -162,6 +219,10 @@ std::string column_words(const MechanismColumn& c) {
       return position[c.index % 3] + owner;
     case Q::rate:
       return rate[c.index % 3] + owner;
+    case Q::acceleration:
+      return acceleration[c.index % 3] + owner;
+    case Q::point:
+      return point[c.index % 6] + owner;
     case Q::energy:
       return "energy E = T + V";
     case Q::work:
@@ -175,6 +236,7 @@ std::string column_words(const MechanismColumn& c) {
     case Q::angular_momentum:
       return "angular momentum H_{G}";
     case Q::slider:
+    case Q::slider_acceleration:
     case Q::force:
     case Q::constraint:
       break;

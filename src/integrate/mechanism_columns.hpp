@@ -2,8 +2,10 @@
 // The columns of a mechanism's trajectory table (`linkage simulate --mechanism`), named
 // as the mechanism file's contract says: t; for every body <body>.x, <body>.y,
 // <body>.theta (no theta for a point mass); <joint>.s for sliders (the default); on
-// request the rates, each joint's force and constraint error, the energy and its
-// balance, and the momenta when nothing holds the mechanism to the ground.
+// request the rates and accelerations, each named point's position, velocity and
+// acceleration (<body>.<point>.x, .y, .vx, .vy, .ax, .ay), each joint's force and
+// constraint error, the energy and its balance, and the momenta when nothing holds the
+// mechanism to the ground.
 #include <functional>
 #include <string>
 #include <vector>
@@ -15,11 +17,14 @@ namespace linkage {
 
 enum class MechanismQuantity {
   time,
-  position,    // index: 3 body + component (x, y, theta)
-  rate,        // the same, of the rates
-  slider,      // index: joint
-  force,       // index: 3 joint + component (x, y, moment)
-  constraint,  // index: joint
+  position,             // index: 3 body + component (x, y, theta)
+  rate,                 // the same, of the rates
+  acceleration,         // the same, of the accelerations
+  slider,               // index: joint
+  slider_acceleration,  // index: joint
+  point,                // index: 6 named point + component (x, y, vx, vy, ax, ay)
+  force,                // index: 3 joint + component (x, y, moment)
+  constraint,           // index: joint
   energy,
   energy_error,  // E - E0 - W: the balance, 0 up to the integration error
   work,          // W, of dampers and applied loads since t = 0
@@ -60,6 +65,9 @@ struct MechanismColumn {
 /// The same from a comma-separated list (`simulate --columns`), every error at `origin`.
 [[nodiscard]] std::vector<MechanismColumn> select_mechanism_columns(const std::vector<MechanismColumn>& all,
                                                                     const std::string& spec, const std::string& origin);
+
+/// Whether any of `columns` needs the sample's kinematics (accelerations, points).
+[[nodiscard]] bool needs_kinematics(const std::vector<MechanismColumn>& columns);
 
 /// A column's value at a sample; `y` the state (its last entry W), `energy0` E at t = 0.
 [[nodiscard]] double column_value(const MechanismColumn& column, double t, const Eigen::VectorXd& y,

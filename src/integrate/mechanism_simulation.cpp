@@ -270,9 +270,9 @@ const Eigen::VectorXd& MechanismSimulation::state_at(double t) {
   return run.sample_y;
 }
 
-void MechanismSimulation::sample(double t, const Eigen::VectorXd& y, eval::MechanismSample& out) {
+void MechanismSimulation::sample(double t, const Eigen::VectorXd& y, eval::MechanismSample& out, bool kinematics) {
   Impl& run = *impl_;
-  run.dynamics.sample(t, y, out);
+  run.dynamics.sample(t, y, out, kinematics);
   const double work = y[y.size() - 1];
   const double balance = std::fabs(out.kinetic + out.potential - run.energy0 - work) / run.stats.energy_scale;
   run.stats.max_energy_error = std::max(run.stats.max_energy_error, balance);

@@ -38,8 +38,9 @@ class MechanismSimulation {
   /// a state that stops being finite, a matrix that turns singular (a dead point, a
   /// change point), a loop that opens.
   [[nodiscard]] const Eigen::VectorXd& state_at(double t);
-  /// Everything a sample reports at (t, y); updates the energy and constraint figures.
-  void sample(double t, const Eigen::VectorXd& y, eval::MechanismSample& out);
+  /// Everything a sample reports at (t, y) (with `kinematics`, the accelerations and the
+  /// named points' motion too); updates the energy and constraint figures.
+  void sample(double t, const Eigen::VectorXd& y, eval::MechanismSample& out, bool kinematics = false);
 
   void on_progress(std::function<void(double t)> report);
   [[nodiscard]] const eval::MechanismDynamics& dynamics() const;

@@ -720,11 +720,30 @@ class Parser {
       for (std::size_t i = 0; i < names.size(); ++i)
         s.figure.mechanism_y.push_back(find_mechanism_column(all, names[i], entry_origin(r, "y", i)));
       if (s.figure.mechanism_y.empty()) r.fail("y", "'y' is empty; name at least one column");
+      std::vector<std::string> units;
+      for (const MechanismColumn& c : s.figure.mechanism_y) units.push_back(c.unit);
+      check_equal_axes(r, s, s.figure.mechanism_x->unit, units);
       return s;
     }
     s.figure.y = r.choice_list("y", spellings(kSeries, &SeriesInfo::name));
     if (s.figure.y.empty()) r.fail("y", "'y' is empty; name at least one series");
+    std::vector<std::string> units;
+    for (std::size_t i : s.figure.y) units.emplace_back(kSeries[i].unit);
+    check_equal_axes(r, s, std::string(kSeries[s.figure.x].unit), units);
     return s;
+  }
+
+  /// `equal_axes` draws x and y at one scale: both linear, and in one unit (a length
+  /// against a length), else a metre on one axis would be matched to a radian.
+  static void check_equal_axes(const TableReader& r, PlotStep& s, const std::string& x_unit,
+                               const std::vector<std::string>& y_units) {
+    s.figure.equal_axes = r.boolean("equal_axes").value_or(false);
+    if (!s.figure.equal_axes) return;
+    if (s.figure.log_x || s.figure.log_y)
+      r.fail("equal_axes", "'equal_axes' needs linear axes; remove 'log_x' and 'log_y' or 'equal_axes'");
+    for (const std::string& unit : y_units)
+      if (unit != x_unit)
+        r.fail("equal_axes", "'equal_axes' needs x and y in one unit; x is in '" + x_unit + "', y in '" + unit + "'");
   }
 
   CompareStep parse_compare(const TableReader& r, const Inputs& inputs) const {

@@ -99,7 +99,7 @@ constexpr std::array<KeySpec, 3> kCaptionKeys{{
     {"until", "number", "the next caption's at"},
 }};
 
-constexpr std::array<KeySpec, 12> kPlotKeys{{
+constexpr std::array<KeySpec, 13> kPlotKeys{{
     {"out", "string", "(required)"},
     {"caption", "string", "none"},
     {"title", "string", "none"},
@@ -107,6 +107,7 @@ constexpr std::array<KeySpec, 12> kPlotKeys{{
     {"x", "string", "\"t\""},
     {"log_x", "boolean", "false"},
     {"log_y", "boolean", "false"},
+    {"equal_axes", "boolean", "false"},
     {"difference", "boolean", "false"},
     {"angles", "string", "\"rad\""},
     {"every", "number", "duration / 400"},

@@ -37,9 +37,10 @@ namespace {
 }
 
 constexpr double kTrailSeconds = 2.0;
-constexpr int kTrailSteps = 4;      // trail samples per frame interval
-constexpr double kMargin = 0.1;     // of the view's larger side, around the whole motion
-constexpr double kTitleBand = 0.1;  // of the view's height
+constexpr int kTrailSteps = 4;          // trail samples per frame interval
+constexpr double kPanelSamples = 4000;  // a panel's samples over the clip, at least (one per frame when fewer)
+constexpr double kMargin = 0.1;         // of the view's larger side, around the whole motion
+constexpr double kTitleBand = 0.1;      // of the view's height
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -256,25 +257,41 @@ MechanismMotion sample_mechanism_motion(const sym::System& system, const GiNaC::
   motion.times = frame_times;
   motion.samples.resize(frame_times.size());
   const bool fine = trail_steps > 1;
+  const bool kinematics = needs_kinematics(columns);
+  // The panel between frames too, at least kPanelSamples over the clip: its peaks are the
+  // table's, not the frames' (a force's spike lasts a few ms).
+  const double panel_step = (frame_times.back() - frame_times.front()) / kPanelSamples;
   eval::MechanismSample between;
+  auto add_panel = [&](double t, const Eigen::VectorXd& y, const eval::MechanismSample& sample) {
+    panel->t.push_back(t);
+    for (std::size_t c = 0; c < columns.size(); ++c)
+      panel->curves[c].values.push_back(column_value(columns[c], t, y, sample, simulation.energy0()));
+  };
   const long total = static_cast<long>(frame_times.size());
   // One pass in time order: state_at only goes forward.
   for (std::size_t i = 0; i < frame_times.size(); ++i) {
     throw_if_interrupted();
-    for (int step = 1; fine && i > 0 && step < trail_steps; ++step) {
-      const double t = frame_times[i - 1] + (frame_times[i] - frame_times[i - 1]) * step / trail_steps;
-      simulation.sample(t, simulation.state_at(t), between);
-      motion.trail_times.push_back(t);
-      motion.trail_poses.push_back(between.pose);
+    std::vector<std::pair<double, bool>> inner;  // (t, a trail's) between the frames, in time order
+    const double span = i > 0 ? frame_times[i] - frame_times[i - 1] : 0;
+    for (int step = 1; fine && i > 0 && step < trail_steps; ++step)
+      inner.emplace_back(frame_times[i - 1] + span * step / trail_steps, true);
+    const int panel_steps = columns.empty() || !(panel_step > 0) ? 1 : static_cast<int>(std::ceil(span / panel_step));
+    for (int step = 1; i > 0 && step < panel_steps; ++step)
+      inner.emplace_back(frame_times[i - 1] + span * step / panel_steps, false);
+    std::sort(inner.begin(), inner.end());
+    for (const auto& [t, trail] : inner) {
+      const Eigen::VectorXd& y = simulation.state_at(t);
+      simulation.sample(t, y, between, !trail && kinematics);
+      if (trail) {
+        motion.trail_times.push_back(t);
+        motion.trail_poses.push_back(between.pose);
+      } else {
+        add_panel(t, y, between);
+      }
     }
     const Eigen::VectorXd& y = simulation.state_at(frame_times[i]);
-    simulation.sample(frame_times[i], y, motion.samples[i]);
-    if (!columns.empty()) {
-      panel->t.push_back(frame_times[i]);
-      for (std::size_t c = 0; c < columns.size(); ++c)
-        panel->curves[c].values.push_back(
-            column_value(columns[c], frame_times[i], y, motion.samples[i], simulation.energy0()));
-    }
+    simulation.sample(frame_times[i], y, motion.samples[i], kinematics);
+    if (!columns.empty()) add_panel(frame_times[i], y, motion.samples[i]);
     if (fine) {
       motion.trail_times.push_back(frame_times[i]);
       motion.trail_poses.push_back(motion.samples[i].pose);

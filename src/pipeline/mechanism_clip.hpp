@@ -70,7 +70,8 @@ struct MechanismClip {
 /// poses at that many steps per frame interval (trail_times, the frame times among them),
 /// so a trail stays smooth however fast a point moves between frames. Adds the run's
 /// samples, seconds and warning to `result`. With `panel`, also the panel's columns at
-/// every frame time (settings.panel, checked by validate()).
+/// every frame time and between them, at least 4000 samples over the clip (settings.panel,
+/// checked by validate()).
 MechanismMotion sample_mechanism_motion(const sym::System& system, const GiNaC::exmap& initial,
                                         const SimulationOptions& options, const std::vector<double>& frame_times,
                                         int trail_steps, ClipResult& result, const ClipProgress& progress = {},

@@ -48,6 +48,7 @@ struct Figure {
   std::vector<MechanismColumn> mechanism_y;
   std::optional<MechanismColumn> mechanism_x;
   bool log_x = false, log_y = false;
+  bool equal_axes = false;            // plot steps: x and y at one scale (a path keeps its shape)
   bool difference = false;            // plot steps: each run after the first as abs(run - first run)
   AngleUnit angles = AngleUnit::rad;  // plot steps: angles and angular rates in rad or deg
   std::string title;

@@ -149,6 +149,7 @@ plot::Plot difference_from_first(plot::Plot plot, const std::vector<std::string>
 
 plot::Plot runs_plot(const Figure& f, const std::vector<Run>& runs) {
   plot::Plot p = figure_plot(f, runs);
+  p.equal_scale = f.equal_axes;
   if (!f.difference) return p;
   std::vector<std::string> labels;
   for (const Run& run : runs) labels.push_back(run.label);

@@ -44,7 +44,7 @@ void homework_row(Simulation& simulation, const Inputs& inputs, double t, const 
 void mechanism_row(MechanismSimulation& simulation, int case_id, double t, const Eigen::VectorXd& y,
                    const std::vector<MechanismColumn>& columns, eval::MechanismSample& sample,
                    std::vector<double>& values) {
-  simulation.sample(t, y, sample);
+  simulation.sample(t, y, sample, needs_kinematics(columns));
   values.resize(columns.size());
   for (std::size_t j = 0; j < columns.size(); ++j) {
     values[j] = column_value(columns[j], t, y, sample, simulation.energy0());

@@ -99,13 +99,13 @@ std::vector<std::string> FrameLayout::equation_lines() const {
   return equations_.empty() ? std::vector<std::string>{} : equation_lines_drawn(settings_.equations);
 }
 
-void FrameLayout::paint_around(std::size_t index, double t, cairo_t* cr) const {
-  if (!layout_.panel.empty()) (void)paint_panel(cr, style_, panel_, index, layout_.panel);
+void FrameLayout::paint_around(double t, cairo_t* cr) const {
+  if (!layout_.panel.empty()) (void)paint_panel(cr, style_, panel_, panel_index(panel_, t), layout_.panel);
   if (!equations_.empty()) paint_equations(cr, style_, settings_.equations, bands_.equations, equations_);
   if (!caption_.empty()) paint_caption(cr, style_, caption_at(settings_.captions, t), caption_);
 }
 
-void FrameLayout::draw(std::size_t index, double t, Frame& frame, const std::function<void(Frame&)>& scene) {
+void FrameLayout::draw(std::size_t /*index*/, double t, Frame& frame, const std::function<void(Frame&)>& scene) {
   if (plain()) {
     scene(frame);
     return;
@@ -120,18 +120,19 @@ void FrameLayout::draw(std::size_t index, double t, Frame& frame, const std::fun
                 scene_frame_.pixels.data() + static_cast<std::ptrdiff_t>(y) * scene_frame_.stride, row);
   const cairo::SurfacePtr surface = cairo::surface_for(frame);
   const cairo::ContextPtr cr = cairo::context(surface.get());
-  paint_around(index, t, cr.get());
+  paint_around(t, cr.get());
   cairo::check(cr.get(), "cannot draw the panel or caption");
   cairo_surface_flush(surface.get());
 }
 
-void FrameLayout::draw_vector(std::size_t index, double t, cairo_t* cr, const std::function<void(cairo_t*)>& scene) {
+void FrameLayout::draw_vector(std::size_t /*index*/, double t, cairo_t* cr,
+                              const std::function<void(cairo_t*)>& scene) {
   cairo_save(cr);
   cairo_rectangle(cr, scene_.x, scene_.y, scene_.width, scene_.height);
   cairo_clip(cr);
   scene(cr);
   cairo_restore(cr);
-  paint_around(index, t, cr);
+  paint_around(t, cr);
 }
 
 }  // namespace linkage

@@ -57,7 +57,8 @@ class FrameLayout {
   void draw_vector(std::size_t index, double t, cairo_t* cr, const std::function<void(cairo_t*)>& scene);
 
  private:
-  void paint_around(std::size_t index, double t, cairo_t* cr) const;
+  /// The panel (its sample at t: it may be sampled more finely than the frames), equations, caption.
+  void paint_around(double t, cairo_t* cr) const;
 
   RenderSettings settings_, scene_settings_;
   Theme theme_;

@@ -1,6 +1,7 @@
 #include "render/panel.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <numbers>
 
@@ -12,16 +13,18 @@ namespace {
 
 constexpr double kPanelShare = 0.4;     // of the frame's width (beside) or height (below)
 constexpr double kLandscape = 4.0 / 3;  // wider than this: the panel goes beside
+constexpr double kSmallestPart = 120;   // device units: the least height of one of stacked plots
 
 std::string with_unit(const std::string& label, const std::string& unit) {
   return unit.empty() ? label : label + " (" + unit + ")";
 }
 
-/// Fixed limits over every value, padded by 6 % (or by 1 when the data is flat).
-std::pair<double, double> value_limits(const PanelData& data) {
+/// Fixed limits over every value of the curves `which`, padded by 6 % (or by 1 when the
+/// data is flat).
+std::pair<double, double> value_limits(const PanelData& data, const std::vector<std::size_t>& which) {
   double lo = 1e300, hi = -1e300;
-  for (const PanelCurve& c : data.curves)
-    for (double v : c.values)
+  for (const std::size_t k : which)
+    for (double v : data.curves[k].values)
       if (std::isfinite(v)) {
         lo = std::min(lo, v);
         hi = std::max(hi, v);
@@ -87,31 +90,69 @@ PanelLayout panel_layout(int width, int height, bool with_panel) {
   return {{0, 0, w, h - below}, {0, h - below, w, below}};
 }
 
-plot::Plot panel_plot(const PanelData& data, std::size_t index, bool dark) {
+namespace {
+
+/// What tells each label from the others: what follows the whole words all of them begin
+/// with, and the last of those words before a number ("force of joint O2 on the ground,
+/// x" -> "x"; "angle θ of body 2" -> "body 2"); the labels themselves when no word is
+/// shared.
+std::vector<std::string> distinguishing_words(const std::vector<std::string>& labels) {
+  if (labels.size() < 2) return labels;
+  std::size_t common = labels[0].size();
+  for (const std::string& label : labels) {
+    std::size_t n = 0;
+    while (n < common && n < label.size() && label[n] == labels[0][n]) ++n;
+    common = n;
+  }
+  const std::size_t space = labels[0].rfind(' ', common);
+  if (space == std::string::npos || space == 0) return labels;
+  std::size_t cut = space + 1;  // after the last shared word
+  const bool numbered = std::any_of(labels.begin(), labels.end(), [&](const std::string& l) {
+    return cut < l.size() && std::isdigit(static_cast<unsigned char>(l[cut]));
+  });
+  if (numbered && labels[0][space - 1] != ',') {
+    const std::size_t before = labels[0].rfind(' ', space - 1);
+    cut = before == std::string::npos ? 0 : before + 1;  // keep that word
+  }
+  std::vector<std::string> out;
+  for (const std::string& label : labels) {
+    if (cut >= label.size()) return labels;
+    out.push_back(label.substr(cut));
+  }
+  return out;
+}
+
+/// The plot of the curves `which` (all of one unit) at sample `index`; each curve keeps
+/// its colour slot by its place in `data`.
+plot::Plot curves_plot(const PanelData& data, const std::vector<std::size_t>& which, std::size_t index, bool dark,
+                       bool time_label) {
   plot::Plot p;
   p.theme = dark ? plot::Theme::dark : plot::Theme::light;
-  p.x.label = "time t (s)";
+  p.x.label = time_label ? "time t (s)" : "";
   p.x.min = data.t.empty() ? 0.0 : std::min(0.0, data.t.front());
   p.x.max = std::max(data.t_end, *p.x.min + 0.1);  // a still at t = 0 still has an axis
-  const auto [lo, hi] = value_limits(data);
+  const auto [lo, hi] = value_limits(data, which);
   p.y.min = lo;
   p.y.max = hi;
   // One curve: its words on the axis. Several: each in the legend, the axis names the
   // shared unit (or none when the units differ).
-  const bool one = data.curves.size() == 1;
+  const bool one = which.size() == 1;
   std::vector<std::string> labels, units;
-  for (const PanelCurve& c : data.curves) {
-    labels.push_back(c.label);
-    units.push_back(c.unit);
+  for (const std::size_t k : which) {
+    labels.push_back(data.curves[k].label);
+    units.push_back(data.curves[k].unit);
   }
   p.y.label = one ? with_unit(labels[0], units[0]) : shared_axis_label(labels, units);
   p.legend = one ? plot::LegendPlace::none : plot::LegendPlace::best;
+  // The axis names the words the curves share and their unit: the legend names the rest.
+  const std::vector<std::string> legend_names = distinguishing_words(labels);
+  std::size_t k = 0;
   const std::size_t n = data.t.size();
   const std::size_t now = std::min(index, n == 0 ? 0 : n - 1);
-  for (std::size_t c = 0; c < data.curves.size(); ++c) {
+  for (const std::size_t c : which) {
     const PanelCurve& curve = data.curves[c];
     plot::Series past, ahead;
-    past.name = one ? "" : with_unit(curve.label, curve.unit);
+    past.name = one ? "" : with_unit(legend_names[k++], curve.unit);
     past.color = ahead.color = c % plot::palette_size;
     ahead.dash = plot::Dash::dotted;
     for (std::size_t i = 0; i < n && i < curve.values.size(); ++i) {
@@ -125,41 +166,83 @@ plot::Plot panel_plot(const PanelData& data, std::size_t index, bool dark) {
   return p;
 }
 
+}  // namespace
+
+std::vector<std::vector<std::size_t>> unit_groups(const PanelData& data) {
+  std::vector<std::vector<std::size_t>> groups;
+  std::vector<std::string> units;
+  for (std::size_t c = 0; c < data.curves.size(); ++c) {
+    const auto it = std::find(units.begin(), units.end(), data.curves[c].unit);
+    if (it == units.end()) {
+      units.push_back(data.curves[c].unit);
+      groups.push_back({c});
+    } else {
+      groups[static_cast<std::size_t>(it - units.begin())].push_back(c);
+    }
+  }
+  return groups;
+}
+
+plot::Plot panel_plot(const PanelData& data, std::size_t index, bool dark) {
+  std::vector<std::size_t> all(data.curves.size());
+  for (std::size_t c = 0; c < all.size(); ++c) all[c] = c;
+  return curves_plot(data, all, index, dark, true);
+}
+
+std::size_t panel_index(const PanelData& data, double t) {
+  const auto after = std::upper_bound(data.t.begin(), data.t.end(), t + 1e-9);
+  return after == data.t.begin() ? 0 : static_cast<std::size_t>(after - data.t.begin()) - 1;
+}
+
 plot::Report paint_panel(cairo_t* cr, const DrawStyle& style, const PanelData& data, std::size_t index,
                          const Rect& rect) {
   const Rgba& bg = style.theme->background;
   const bool dark = 0.2126 * bg.r + 0.7152 * bg.g + 0.0722 * bg.b < 0.5;
-  const plot::Plot p = panel_plot(data, index, dark);
-  const plot::Canvas canvas{std::max(100.0, rect.width), std::max(100.0, rect.height),
-                            std::clamp(style.text_size(), 4.0, 200.0)};
-  cairo_save(cr);
-  cairo_rectangle(cr, rect.x, rect.y, rect.width, rect.height);
-  cairo_clip(cr);
-  cairo_translate(cr, rect.x, rect.y);
-  const plot::Report report = plot::draw(cr, p, canvas, "panel");
-  // The cursor: a line at the frame's time and a dot on each curve there.
-  if (!data.t.empty()) {
-    const std::size_t now = std::min(index, data.t.size() - 1);
-    const plot::Geometry& g = report.geometry;
-    const double x = g.x(data.t[now]);
-    set_colour(cr, with_alpha(style.theme->text, 0.55));
-    cairo_set_line_width(cr, std::max(1.0, 1.2 * style.u));
-    cairo_move_to(cr, x, g.top);
-    cairo_line_to(cr, x, g.bottom);
-    cairo_stroke(cr);
-    const auto& colours = plot::palette(p.theme);
-    for (std::size_t c = 0; c < data.curves.size(); ++c) {
-      if (now >= data.curves[c].values.size() || !std::isfinite(data.curves[c].values[now])) continue;
-      const plot::Rgb& colour = colours[c % plot::palette_size];
-      cairo_arc(cr, x, g.y(data.curves[c].values[now]), 3.5 * style.u, 0, 2 * std::numbers::pi);
-      cairo_set_source_rgb(cr, colour.r, colour.g, colour.b);
-      cairo_fill_preserve(cr);
-      set_colour(cr, style.theme->background);
-      cairo_set_line_width(cr, 1.2 * style.u);
+  // Quantities of different units never share an axis: one plot per unit, stacked, the
+  // time axis named on the lowest.
+  std::vector<std::vector<std::size_t>> groups = unit_groups(data);
+  // A panel too small to stack (a thumbnail) keeps one axis: its label then names no unit.
+  if (groups.empty() || rect.height / static_cast<double>(groups.size()) < kSmallestPart)
+    groups = std::vector<std::vector<std::size_t>>(1);
+  const double height = rect.height / static_cast<double>(groups.size());
+  plot::Report report;
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    const bool lowest = g + 1 == groups.size();
+    const Rect part{rect.x, rect.y + height * static_cast<double>(g), rect.width, height};
+    if (groups[g].empty())
+      for (std::size_t c = 0; c < data.curves.size(); ++c) groups[g].push_back(c);
+    const plot::Plot p = curves_plot(data, groups[g], index, dark, lowest);
+    const plot::Canvas canvas{std::max(100.0, part.width), std::max(100.0, part.height),
+                              std::clamp(style.text_size(), 4.0, 200.0)};
+    cairo_save(cr);
+    cairo_rectangle(cr, part.x, part.y, part.width, part.height);
+    cairo_clip(cr);
+    cairo_translate(cr, part.x, part.y);
+    report = plot::draw(cr, p, canvas, "panel");
+    // The cursor: a line at the frame's time and a dot on each curve there.
+    if (!data.t.empty()) {
+      const std::size_t now = std::min(index, data.t.size() - 1);
+      const plot::Geometry& geometry = report.geometry;
+      const double x = geometry.x(data.t[now]);
+      set_colour(cr, with_alpha(style.theme->text, 0.55));
+      cairo_set_line_width(cr, std::max(1.0, 1.2 * style.u));
+      cairo_move_to(cr, x, geometry.top);
+      cairo_line_to(cr, x, geometry.bottom);
       cairo_stroke(cr);
+      const auto& colours = plot::palette(p.theme);
+      for (const std::size_t c : groups[g]) {
+        if (now >= data.curves[c].values.size() || !std::isfinite(data.curves[c].values[now])) continue;
+        const plot::Rgb& colour = colours[c % plot::palette_size];
+        cairo_arc(cr, x, geometry.y(data.curves[c].values[now]), 3.5 * style.u, 0, 2 * std::numbers::pi);
+        cairo_set_source_rgb(cr, colour.r, colour.g, colour.b);
+        cairo_fill_preserve(cr);
+        set_colour(cr, style.theme->background);
+        cairo_set_line_width(cr, 1.2 * style.u);
+        cairo_stroke(cr);
+      }
     }
+    cairo_restore(cr);
   }
-  cairo_restore(cr);
   return report;
 }
 

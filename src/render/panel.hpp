@@ -57,8 +57,16 @@ struct PanelLayout {
 /// `index` solid and the rest dotted without a legend entry.
 [[nodiscard]] plot::Plot panel_plot(const PanelData& data, std::size_t index, bool dark);
 
-/// Paints the panel for sample `index` into `rect`, with a cursor line at its time and
-/// a dot on each curve; returns where the plot put its data.
+/// The curves by unit, in order of first appearance: each group shares one axis.
+[[nodiscard]] std::vector<std::vector<std::size_t>> unit_groups(const PanelData& data);
+
+/// The sample to show at time t: the last at or before it (the panel may be sampled more
+/// finely than the frames).
+[[nodiscard]] std::size_t panel_index(const PanelData& data, double t);
+
+/// Paints the panel for sample `index` into `rect`, one plot per unit stacked (each axis
+/// its quantity and unit), with a cursor line at its time and a dot on each curve;
+/// returns where the lowest plot put its data.
 plot::Report paint_panel(cairo_t* cr, const DrawStyle& style, const PanelData& data, std::size_t index,
                          const Rect& rect);
 

@@ -165,6 +165,8 @@ void validate(const Plot& plot, const Canvas& canvas, const std::string& origin)
     throw Error::invalid(origin, "plot font size " + number(canvas.font_size) + " is outside 4..200");
   validate_axis(plot.x, origin + ": x axis");
   validate_axis(plot.y, origin + ": y axis");
+  if (plot.equal_scale && (plot.x.scale == Scale::log || plot.y.scale == Scale::log))
+    throw Error::invalid(origin, "axes at one scale must both be linear, not logarithmic");
   for (std::size_t i = 0; i < plot.series.size(); ++i) {
     const Series& series = plot.series[i];
     if (series.color && *series.color >= palette_size)

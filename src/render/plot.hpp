@@ -54,9 +54,11 @@ struct Series {
 };
 
 /// Where the legend goes. `best` takes the inside corner covering the fewest data
-/// points, or `outside_right` when the legend is too large for a corner or would hide
-/// data in every corner (unless that leaves the data less than half the width).
-enum class LegendPlace { best, top_left, top_right, bottom_left, bottom_right, outside_right, none };
+/// points, or `outside_right` when the legend is too large for a corner (unless that
+/// leaves the data less than half the width); when it would hide data in every corner,
+/// `outside_right` if it is narrow (a fifth of the width at most), else `above`: a band
+/// between the title and the data, so the data keeps the whole width.
+enum class LegendPlace { best, top_left, top_right, bottom_left, bottom_right, outside_right, above, none };
 
 /// Light (white background, the default) or dark colours.
 enum class Theme { light, dark };
@@ -69,6 +71,9 @@ struct Plot {
   std::vector<Series> series{};
   LegendPlace legend = LegendPlace::best;
   Theme theme = Theme::light;
+  /// x and y at one scale: a data unit as long on both axes (a path keeps its shape); the
+  /// axis whose data is shorter on the page is widened about its centre. Linear axes only.
+  bool equal_scale = false;
 };
 
 /// The drawing size and text size. Pixels for PNG (rounded to whole pixels), points

@@ -3,6 +3,7 @@
 // legend over the data).
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <numbers>
 
 #include "core/error.hpp"
@@ -62,6 +63,11 @@ Marker marker_shape(const Series& series, std::size_t index) {
 bool has_line(const Series& s) { return s.style != Style::markers; }
 bool has_markers(const Series& s) { return s.style != Style::line; }
 
+// A legend at most this share of the canvas' width may go beside the data.
+constexpr double kNarrowLegend = 0.2;
+// A legend outside the data must leave it this share of the canvas' height.
+constexpr double kLeastDataHeight = 1.0 / 3;
+
 class Drawing {
  public:
   Drawing(cairo_t* cr, const Plot& plot, const Canvas& canvas, const std::string& origin)
@@ -72,7 +78,8 @@ class Drawing {
         m_(canvas.font_size),
         colors_(theme_colors(plot.theme)),
         data_(detail::clean(plot)),
-        limits_(detail::resolve_limits(plot, data_)) {}
+        data_limits_(detail::resolve_limits(plot, data_)),
+        limits_(data_limits_) {}
 
   Report run() {
     set_plot_font_options(cr_);
@@ -80,23 +87,20 @@ class Drawing {
     legend_place_ = plot_.legend;
     if (legend_entries_.empty()) legend_place_ = LegendPlace::none;
     lay_out();
-    if (legend_place_ == LegendPlace::best && !legend_fits_inside()) {
-      legend_place_ = LegendPlace::outside_right;
+    if (legend_place_ == LegendPlace::best && !legend_fits_inside() &&
+        !place_outside({LegendPlace::outside_right, LegendPlace::above})) {
+      legend_place_ = LegendPlace::best;  // no room outside: over the data after all
       lay_out();
-      if (g_.right - g_.left < 0.5 * canvas_.width) {  // a legend this wide overlaps the data instead
-        legend_place_ = LegendPlace::best;
-        lay_out();
-      }
     }
     require_room_for_data();
     trace_data();
     if (legend_place_ == LegendPlace::best) {
       const LegendPlace corner = least_occupied_corner();
       legend_place_ = corner;
-      if (samples_in(legend_box(corner)) > 0) {  // every corner would hide data: beside it, if there is room
-        legend_place_ = LegendPlace::outside_right;
-        lay_out();
-        if (g_.right - g_.left < 0.5 * canvas_.width) {
+      if (samples_in(legend_box(corner)) > 0) {  // every corner would hide data: beside it if narrow, else above
+        const bool narrow = legend_width_ <= kNarrowLegend * canvas_.width;
+        if (!place_outside(narrow ? std::initializer_list<LegendPlace>{LegendPlace::outside_right, LegendPlace::above}
+                                  : std::initializer_list<LegendPlace>{LegendPlace::above})) {
           legend_place_ = corner;
           lay_out();
         }
@@ -116,6 +120,18 @@ class Drawing {
  private:
   // --- layout ----------------------------------------------------------------------
 
+  /// The first of `places` outside the data that leaves the data half the width and a
+  /// third of the height at least, laid out; false (and the layout of the last) if none.
+  bool place_outside(std::initializer_list<LegendPlace> places) {
+    for (const LegendPlace place : places) {
+      legend_place_ = place;
+      lay_out();
+      if (g_.right - g_.left >= 0.5 * canvas_.width && g_.bottom - g_.top >= kLeastDataHeight * canvas_.height)
+        return true;
+    }
+    return false;
+  }
+
   [[nodiscard]] Ticks ticks_for(const Axis& axis, const detail::Limits& limits, int max_ticks) const {
     if (axis.scale == Scale::log) return log_ticks(limits.min, limits.max, max_ticks);
     return axis.degrees ? degree_ticks(limits.min, limits.max, max_ticks)
@@ -132,7 +148,30 @@ class Drawing {
     return ticks;
   }
 
+  /// Lays out the plot; at one scale (`equal_scale`), widens the axis whose data is
+  /// shorter on the page so a data unit is as long on x as on y, and lays out again with
+  /// those limits (tick labels may move the area a little: twice settles it).
   void lay_out() {
+    if (!plot_.equal_scale) {
+      lay_out_once();
+      return;
+    }
+    limits_ = data_limits_;
+    for (int pass = 0; pass < 3; ++pass) {
+      lay_out_once();
+      const double width = g_.right - g_.left, height = g_.bottom - g_.top;
+      if (!(width > 0 && height > 0)) return;
+      const detail::Limits& x = data_limits_.x;
+      const detail::Limits& y = data_limits_.y;
+      const double per_unit = std::max((x.max - x.min) / width, (y.max - y.min) / height);
+      const double cx = 0.5 * (x.min + x.max), cy = 0.5 * (y.min + y.max);
+      limits_.x = {cx - 0.5 * per_unit * width, cx + 0.5 * per_unit * width};
+      limits_.y = {cy - 0.5 * per_unit * height, cy + 0.5 * per_unit * height};
+    }
+    lay_out_once();
+  }
+
+  void lay_out_once() {
     const double f = canvas_.font_size;
     const TextExtent tick_label = measure_text(cr_, "10^{8}", m_.tick_font);
     tick_label_ascent_ = tick_label.ascent;
@@ -144,6 +183,8 @@ class Drawing {
     if (!plot_.y.label.empty()) left += measure_text(cr_, plot_.y.label, m_.label_font).height() + 0.45 * f;
     double right = canvas_.width - m_.pad;
     if (legend_place_ == LegendPlace::outside_right) right -= legend_width_ + 0.8 * f;
+    legend_band_top_ = top;
+    if (legend_place_ == LegendPlace::above) top += legend_height_ + 0.6 * f;
     top = std::round(top);
     bottom = std::round(bottom);
 
@@ -243,6 +284,10 @@ class Drawing {
       case LegendPlace::outside_right:
         x = g_.right + 0.8 * canvas_.font_size;
         y = g_.top;
+        break;
+      case LegendPlace::above:
+        x = g_.right - legend_width_;
+        y = legend_band_top_;
         break;
       case LegendPlace::top_right:
       case LegendPlace::best:
@@ -532,7 +577,9 @@ class Drawing {
   Metrics m_;
   const Colors& colors_;
   detail::CleanData data_;
-  detail::PlotLimits limits_;
+  double legend_band_top_ = 0;      // where an `above` legend's band starts
+  detail::PlotLimits data_limits_;  // from the data and the fixed limits
+  detail::PlotLimits limits_;       // drawn: data_limits_, widened at one scale
   Geometry g_;
   Ticks x_ticks_;
   Ticks y_ticks_;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <numbers>
 
 namespace linkage::plot {
 namespace {
@@ -43,6 +44,63 @@ std::string with_minus_signs(std::string_view text) {
       out += c;
   }
   return out;
+}
+
+// Combining dots above (U+0307 one, U+0308 two), as in θ̇ and θ̈: Cairo's text API
+// places glyphs one by one without shaping, so the mark would not sit on its letter; the
+// dots are drawn over the letter instead.
+constexpr unsigned char kCombiningLead = 0xCC;
+int combining_dots(std::string_view text, std::size_t i) {
+  if (i + 1 >= text.size() || static_cast<unsigned char>(text[i]) != kCombiningLead) return 0;
+  const auto next = static_cast<unsigned char>(text[i + 1]);
+  return next == 0x87 ? 1 : next == 0x88 ? 2 : 0;
+}
+
+std::string without_combining_dots(std::string_view text) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (combining_dots(text, i) > 0) {
+      ++i;
+      continue;
+    }
+    out += text[i];
+  }
+  return out;
+}
+
+/// Shows `text` from the current point, each combining dot drawn over the letter before it.
+void show_with_dots(cairo_t* cr, const std::string& text, double size) {
+  std::string chunk;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const int dots = combining_dots(text, i);
+    if (dots == 0) {
+      chunk += text[i];
+      continue;
+    }
+    ++i;
+    // The letter the dots belong to: the last UTF-8 character of the chunk.
+    std::size_t start = chunk.size();
+    while (start > 0 && (static_cast<unsigned char>(chunk[start - 1]) & 0xC0) == 0x80) --start;
+    if (start > 0) --start;
+    const std::string letter = chunk.substr(start);
+    cairo_show_text(cr, chunk.c_str());
+    chunk.clear();
+    if (letter.empty()) continue;
+    double x = 0, y = 0;
+    cairo_get_current_point(cr, &x, &y);
+    cairo_text_extents_t e{};
+    cairo_text_extents(cr, letter.c_str(), &e);
+    const double r = 0.065 * size, gap = 0.22 * size;
+    const double centre = x - e.x_advance + e.x_bearing + 0.5 * e.width, top = y + e.y_bearing - 0.12 * size - r;
+    for (int k = 0; k < dots; ++k) {
+      const double dx = dots == 1 ? 0.0 : (k == 0 ? -0.5 : 0.5) * gap;
+      cairo_new_sub_path(cr);
+      cairo_arc(cr, centre + dx, top, r, 0, 2 * std::numbers::pi);
+    }
+    cairo_fill(cr);
+    cairo_move_to(cr, x, y);
+  }
+  cairo_show_text(cr, chunk.c_str());
 }
 
 }  // namespace
@@ -96,7 +154,7 @@ TextExtent measure_text(cairo_t* cr, std::string_view markup, const Font& font) 
     const double size = run_size(run, font);
     select_font(cr, font, size);
     cairo_text_extents_t text{};
-    cairo_text_extents(cr, run.text.c_str(), &text);
+    cairo_text_extents(cr, without_combining_dots(run.text).c_str(), &text);
     cairo_font_extents_t face{};
     cairo_font_extents(cr, &face);
     cairo_text_extents_t capital{};
@@ -117,9 +175,9 @@ void draw_text(cairo_t* cr, std::string_view markup, const Font& font, double x,
   for (const TextRun& run : parse_markup(markup)) {
     select_font(cr, font, run_size(run, font));
     cairo_move_to(cr, x, baseline - run_rise(run, font));
-    cairo_show_text(cr, run.text.c_str());
+    show_with_dots(cr, run.text, run_size(run, font));
     cairo_text_extents_t text{};
-    cairo_text_extents(cr, run.text.c_str(), &text);
+    cairo_text_extents(cr, without_combining_dots(run.text).c_str(), &text);
     x += text.x_advance;
   }
 }

@@ -58,5 +58,24 @@ TEST(PlotStepParse, AnUnknownAngleUnitNamesItsPlaceAndTheChoices) {
   }
 }
 
+// `equal_axes` draws x and y at one scale: accepted for a point's x against its y,
+// refused at its place on log axes or in two units (a length against an angle).
+TEST(PlotStepParse, EqualAxesNeedsLinearAxesInOneUnit) {
+  const std::string head =
+      "title = \"d\"\nmechanism = \"four-bar\"\n[[step]]\nkind = \"plot\"\nout = \"d\"\n"
+      "duration = 0.1\nequal_axes = true\n";
+  test::TempDir dir;
+  test::write_text(dir / "ok.toml", head + "x = \"3.P.x\"\ny = \"3.P.y\"\n");
+  const Lesson lesson = parse_lesson(dir / "ok.toml");
+  const auto& plot_step = std::get<PlotStep>(lesson.steps.at(0).body);
+  EXPECT_TRUE(plot_step.figure.equal_axes);
+  EXPECT_EQ(plot_step.figure.mechanism_x->name, "3.P.x");
+  const std::string units = error_of(head + "x = \"3.P.x\"\ny = \"2.theta\"\n");
+  EXPECT_NE(units.find(":7:"), std::string::npos) << units;  // the line of equal_axes
+  EXPECT_NE(units.find("'equal_axes' needs x and y in one unit; x is in 'm', y in 'rad'"), std::string::npos) << units;
+  const std::string log = error_of(head + "x = \"3.P.x\"\ny = \"3.P.y\"\nlog_y = true\n");
+  EXPECT_NE(log.find("'equal_axes' needs linear axes"), std::string::npos) << log;
+}
+
 }  // namespace
 }  // namespace linkage::lesson

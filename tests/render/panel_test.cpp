@@ -87,21 +87,37 @@ TEST(PanelPlot, SeveralCurvesShareTheirWordsAndUnitOnTheAxis) {
             "value");
 }
 
-TEST(PanelPaint, CursorAndDotAtTheFramesTime) {
+/// The panel of `data` at sample `index` painted into `rect` of a light width x height frame.
+struct Painted {
+  Frame frame;
+  plot::Report report;
+};
+Painted painted(const PanelData& data, std::size_t index, int width, int height, const Rect& rect) {
   const Theme theme = load_theme("light", {}, "theme");
   DrawStyle style;
   style.theme = &theme;
   style.u = 1;
-  Frame frame(500, 400);
-  const cairo::SurfacePtr surface = cairo::surface_for(frame);
+  Painted out{Frame(width, height), {}};
+  const cairo::SurfacePtr surface = cairo::surface_for(out.frame);
   const cairo::ContextPtr cr = cairo::context(surface.get());
-  const Rect rect{100, 50, 400, 300};
-  const plot::Report report = paint_panel(cr.get(), style, ramp(), 50, rect);
+  out.report = paint_panel(cr.get(), style, data, index, rect);
   cairo_surface_flush(surface.get());
-  const plot::Geometry& g = report.geometry;
-  const plot::Rgb blue = plot::palette(plot::Theme::light)[0];
-  const test::Rgb8 curve{static_cast<int>(std::lround(255 * blue.r)), static_cast<int>(std::lround(255 * blue.g)),
-                         static_cast<int>(std::lround(255 * blue.b))};
+  return out;
+}
+
+/// Colour slot `slot` of the light palette in 8-bit channels.
+test::Rgb8 slot_colour(std::size_t slot) {
+  const plot::Rgb c = plot::palette(plot::Theme::light)[slot];
+  return {static_cast<int>(std::lround(255 * c.r)), static_cast<int>(std::lround(255 * c.g)),
+          static_cast<int>(std::lround(255 * c.b))};
+}
+
+TEST(PanelPaint, CursorAndDotAtTheFramesTime) {
+  const Rect rect{100, 50, 400, 300};
+  const Painted p = painted(ramp(), 50, 500, 400, rect);
+  const Frame& frame = p.frame;
+  const plot::Geometry& g = p.report.geometry;
+  const test::Rgb8 curve = slot_colour(0);
   // The dot on the curve at t = 5 s, in the frame's coordinates (the panel is offset).
   const plot::Point now = g.to_device({5.0, 5.0});
   EXPECT_LE(test::colour_distance(
@@ -120,6 +136,44 @@ TEST(PanelPaint, CursorAndDotAtTheFramesTime) {
   EXPECT_LT(cursor.r + cursor.g + cursor.b, beside.r + beside.g + beside.b - 150);
   // Nothing outside the panel's rectangle.
   EXPECT_EQ(frame.pixel(50, 20), 0u);
+}
+
+// D6: energy (J) and a force (N) never share an axis: one plot per unit, stacked, each
+// axis its quantity and unit; the lowest plot (the force's) fills the lower half and its
+// dot at the frame's time is in the force's colour slot (1), not the energy's.
+TEST(PanelPaint, QuantitiesOfDifferentUnitsGetTheirOwnAxes) {
+  PanelData data = ramp();
+  data.curves[0] = {"energy E = T + V", "J", {}};
+  data.curves.push_back({"force of joint O2 on the ground, x", "N", {}});
+  data.curves.push_back({"force of joint O2 on the ground, y", "N", {}});
+  for (std::size_t i = 0; i < data.t.size(); ++i) {
+    data.curves[0].values.push_back(2.5);
+    data.curves[1].values.push_back(std::sin(data.t[i]));
+    data.curves[2].values.push_back(-14 * std::cos(data.t[i]));
+  }
+  const std::vector<std::vector<std::size_t>> groups = unit_groups(data);
+  ASSERT_EQ(groups.size(), 2u);
+  EXPECT_EQ(groups[0], std::vector<std::size_t>{0});
+  EXPECT_EQ(groups[1], (std::vector<std::size_t>{1, 2}));
+  EXPECT_EQ(panel_index(data, 5.0), 50u);
+  EXPECT_EQ(panel_index(data, 5.04), 50u);
+  EXPECT_EQ(panel_index(data, -1.0), 0u);
+  const Painted p = painted(data, 50, 500, 700, {0, 0, 500, 700});
+  const plot::Report& report = p.report;
+  const plot::Geometry& g = report.geometry;
+  // In the lower plot's own coordinates (drawn 350 down): the forces' limits, padded 6 %.
+  EXPECT_NEAR(g.y.min, -14 - 0.06 * 28, 0.01);
+  EXPECT_NEAR(g.y.max, 14 + 0.06 * 28, 0.01);
+  EXPECT_NE(report.legend, plot::LegendPlace::none);
+  // The legend names what tells the forces apart; the axis the words they share.
+  const plot::Plot forces = panel_plot(PanelData{data.t, {data.curves[1], data.curves[2]}, data.t_end}, 50, false);
+  EXPECT_EQ(forces.y.label, "force of joint O2 on the ground, x and y (N)");
+  EXPECT_EQ(forces.series[0].name, "x (N)");
+  EXPECT_EQ(forces.series[2].name, "y (N)");
+  const plot::Point dot = g.to_device({5.0, std::sin(5.0)});
+  EXPECT_LE(test::colour_distance(test::rgb_at(p.frame, static_cast<int>(dot.x), static_cast<int>(350 + dot.y)),
+                                  slot_colour(1)),
+            40);
 }
 
 TEST(Captions, EachShownFromItsTimeUntilTheNext) {

@@ -11,7 +11,9 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <numbers>
 #include <sstream>
+#include <tuple>
 #include <vector>
 
 #include "core/error.hpp"
@@ -179,6 +181,48 @@ TEST(PlotText, Markup) {
   EXPECT_EQ(runs[3].text, "1");
   EXPECT_EQ(runs[3].shift, TextRun::Shift::subscript);
   EXPECT_EQ(runs[4].text, " 2^3 ^{");  // no markup without braces, or without a closing one
+}
+
+// D7: "θ̇" (θ and U+0307) and "θ̈" (U+0308) get their dots above the letter, in ink
+// where plain "θ" has none, and measure as wide as the letter alone.
+TEST(PlotText, CombiningDotsAreDrawnOverTheirLetter) {
+  auto ink_above = [](const std::string& text) {
+    const std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface(
+        cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 120, 120), &cairo_surface_destroy);
+    const std::unique_ptr<cairo_t, decltype(&cairo_destroy)> cr(cairo_create(surface.get()), &cairo_destroy);
+    set_plot_font_options(cr.get());
+    const Font font{40, false};
+    cairo_set_source_rgb(cr.get(), 0, 0, 0);
+    draw_text(cr.get(), "a" + text, font, 10, 100, Align::start);
+    cairo_text_extents_t theta{};
+    cairo_text_extents(cr.get(), "θ", &theta);
+    cairo_surface_flush(surface.get());
+    const unsigned char* data = cairo_image_surface_get_data(surface.get());
+    const int stride = cairo_image_surface_get_stride(surface.get());
+    const int top = static_cast<int>(std::floor(100 + theta.y_bearing)) - 2;  // above the letter's ink
+    int columns_lo = 120, columns_hi = -1, count = 0;
+    for (int y = 0; y < top; ++y)
+      for (int x = 0; x < 120; ++x)
+        if (data[y * stride + 4 * x + 3] > 128) {
+          ++count;
+          columns_lo = std::min(columns_lo, x);
+          columns_hi = std::max(columns_hi, x);
+        }
+    const double width = measure_text(cr.get(), "a" + text, font).width;
+    return std::tuple{count, columns_lo, columns_hi, width};
+  };
+  const auto [plain, plain_lo, plain_hi, plain_width] = ink_above("θ");
+  const auto [dot, dot_lo, dot_hi, dot_width] = ink_above("θ\u0307");
+  const auto [two, two_lo, two_hi, two_width] = ink_above("θ\u0308");
+  EXPECT_EQ(plain, 0);
+  EXPECT_GT(dot, 4);
+  EXPECT_GT(two, dot);
+  EXPECT_GT(dot_lo, 10 + 0.5 * plain_width / 2);  // over the θ, not the a
+  EXPECT_GT(two_hi - two_lo, dot_hi - dot_lo + 3);
+  EXPECT_DOUBLE_EQ(dot_width, plain_width);
+  EXPECT_DOUBLE_EQ(two_width, plain_width);
+  (void)plain_lo;
+  (void)plain_hi;
 }
 
 // --- data ----------------------------------------------------------------------------
@@ -516,18 +560,39 @@ TEST(PlotFile, LegendAvoidsTheData) {
   EXPECT_LT(crowded.geometry.right, wide - 100);
 }
 
+/// A zigzag between the bottom and the top: it fills every corner.
+Series zigzag(const std::string& name) {
+  Series out{name, {}};
+  for (int i = 0; i <= 40; ++i) out.points.push_back({i / 40.0, static_cast<double>(i % 2)});
+  return out;
+}
+
 TEST(PlotFile, ALegendThatWouldHideDataInEveryCornerGoesBesideIt) {
   Plot plot;
-  // A zigzag between the bottom and the top fills every corner.
-  Series zigzag{"zigzag", {}};
-  for (int i = 0; i <= 40; ++i) zigzag.points.push_back({i / 40.0, static_cast<double>(i % 2)});
-  plot.series.push_back(zigzag);
+  plot.series.push_back(zigzag("zigzag"));
   const TempDir dir;
   const Report report = write(plot, dir / "zigzag.png");
   EXPECT_EQ(report.legend, LegendPlace::outside_right);
   // One corner still free: the legend stays inside, in it.
   plot.series[0].points = {{0, 0}, {1, 1}};
   EXPECT_EQ(write(plot, dir / "diagonal.png").legend, LegendPlace::top_left);
+}
+
+// A wide legend that would hide data in every corner goes above the data, in a band of
+// its own: the data keeps the whole width (beside it, it kept 60 % of a lesson's plot).
+TEST(PlotFile, AWideLegendThatWouldHideDataInEveryCornerGoesAboveIt) {
+  Plot plot;
+  plot.title = "The crank's speed over one turn";
+  plot.series.push_back(zigzag("crank at 10 rad/s from θ = 0, g = 0"));
+  const TempDir dir;
+  const Report wide = write(plot, dir / "wide.png");
+  EXPECT_EQ(wide.legend, LegendPlace::above);
+  plot.legend = LegendPlace::none;
+  const Report none = write(plot, dir / "none.png");
+  EXPECT_DOUBLE_EQ(wide.geometry.left, none.geometry.left);
+  EXPECT_DOUBLE_EQ(wide.geometry.right, none.geometry.right);
+  EXPECT_GT(wide.geometry.top, none.geometry.top + 20);  // the band
+  EXPECT_GT(wide.geometry.bottom - wide.geometry.top, 0.6 * 600);
 }
 
 TEST(PlotFile, LongTextFitsASmallCanvas) {
@@ -562,6 +627,53 @@ TEST(PlotDraw, DrawsIntoACallersContextAndRestoresIt) {
   EXPECT_LT(report.geometry.right, 500);
   EXPECT_GT(report.geometry.left, 0);
   EXPECT_EQ(cairo_status(cr.get()), CAIRO_STATUS_SUCCESS);
+}
+
+// At one scale a data unit is as many pixels on x as on y, whatever the canvas' shape and
+// the data's extents; the data stays inside the widened limits, centred; log axes refuse.
+TEST(PlotFile, EqualScaleGivesBothAxesThePixelsPerUnit) {
+  for (const Canvas canvas : {Canvas{900, 600, 14}, Canvas{500, 800, 12}})
+    for (const double tall : {0.05, 3.0}) {  // data wider than tall, then taller than wide
+      Plot plot;
+      plot.x.label = "x of point 3.P (m)";
+      plot.y.label = "y of point 3.P (m)";
+      plot.equal_scale = true;
+      Series ellipse{"P"};
+      for (int k = 0; k <= 200; ++k) {
+        const double a = 2 * std::numbers::pi * k / 200;
+        ellipse.points.push_back({0.12 + 0.3 * std::cos(a), 0.25 + tall * std::sin(a)});
+      }
+      plot.series.push_back(ellipse);
+      const TempDir dir;
+      const Report report = write(plot, dir / "p.png", canvas);
+      const Geometry& g = report.geometry;
+      const double x_per_unit = (g.x.to - g.x.from) / (g.x.max - g.x.min);
+      const double y_per_unit = (g.y.from - g.y.to) / (g.y.max - g.y.min);
+      EXPECT_NEAR(x_per_unit / y_per_unit, 1.0, 1e-9) << canvas.width << " " << tall;
+      EXPECT_LE(g.x.min, 0.12 - 0.3);
+      EXPECT_GE(g.x.max, 0.12 + 0.3);
+      EXPECT_LE(g.y.min, 0.25 - tall);
+      EXPECT_GE(g.y.max, 0.25 + tall);
+      EXPECT_NEAR(0.5 * (g.x.min + g.x.max), 0.12, 1e-9);
+      EXPECT_NEAR(0.5 * (g.y.min + g.y.max), 0.25, 1e-9);
+      // Without it the same data fills the area: the scales differ.
+      plot.equal_scale = false;
+      const Geometry free = write(plot, dir / "q.png", canvas).geometry;
+      EXPECT_GT(std::fabs((free.x.to - free.x.from) / (free.x.max - free.x.min) /
+                              ((free.y.from - free.y.to) / (free.y.max - free.y.min)) -
+                          1),
+                0.1);
+    }
+  Plot log;
+  log.equal_scale = true;
+  log.y.scale = Scale::log;
+  log.series.push_back({"a", {{1, 1}, {2, 10}}});
+  try {
+    (void)write(log, TempDir() / "log.png");
+    FAIL() << "one scale on a log axis was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("linear"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
