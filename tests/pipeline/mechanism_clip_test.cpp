@@ -17,6 +17,7 @@
 #include "render/cairo_util.hpp"
 #include "render/mechanism_forces.hpp"
 #include "render/scene_painter.hpp"
+#include "render/xml_check.hpp"
 #include "scene/mechanism_scene.hpp"
 #include "support/test_support.hpp"
 #include "symbolic/loop_closure.hpp"
@@ -157,12 +158,34 @@ TEST(MechanismClip, GifAndWebmClipsMatchTheirDrawnFrames) {
   }
 }
 
-TEST(MechanismClip, RejectsVectorStillsAndUnknownTrailPoints) {
+TEST(MechanismClip, EveryShippedMechanismGivesSvgAndPdfStills) {
+  test::TempDir dir;
+  for (const std::string& name : shipped_mechanism_names()) {
+    SCOPED_TRACE(name);
+    const sym::System system(load_mechanism(name));
+    const GiNaC::exmap initial = sym::checked_initial_state(system).state;
+    const auto svg = dir / (name + ".svg"), pdf = dir / (name + ".pdf");
+    EXPECT_EQ(produce_mechanism_clip(system, initial, small_still(svg.string())).stats.frames_drawn, 1);
+    EXPECT_EQ(produce_mechanism_clip(system, initial, small_still(pdf.string())).stats.frames_drawn, 1);
+    const std::string figure = test::read_text(svg);
+    EXPECT_EQ(test::xml_error(figure), "");
+    EXPECT_NE(figure.find("width=\"160px\""), std::string::npos) << figure.substr(0, 300);
+    EXPECT_EQ(figure.find("<image"), std::string::npos) << "a vector figure holds no bitmaps";
+    // A filled outline per body at least, besides the background.
+    std::size_t paths = 0;
+    for (std::size_t at = figure.find("<path"); at != std::string::npos; at = figure.find("<path", at + 1)) ++paths;
+    EXPECT_GT(paths, system.mechanism().bodies.size());
+    const std::string document = test::read_text(pdf);
+    EXPECT_EQ(document.rfind("%PDF-", 0), 0U);
+    EXPECT_NE(document.find("%%EOF", document.size() - 8), std::string::npos);
+  }
+  EXPECT_EQ(test::entries(dir.path()).size(), 2 * shipped_mechanism_names().size());  // no temporary left
+}
+
+TEST(MechanismClip, RejectsUnknownTrailPoints) {
   test::TempDir dir;
   const sym::System system(load_mechanism("four-bar"));
-  MechanismClip clip = small_still((dir / "x.svg").string());
-  test::expect_error([&] { clip.validate(system); }, ExitCode::bad_input, ".mp4, .gif, .webm or .png");
-  clip.out = dir / "x.png";
+  MechanismClip clip = small_still((dir / "x.png").string());
   clip.trails = {"3.Q"};
   test::expect_error([&] { clip.validate(system); }, ExitCode::bad_input, "valid: A, B");
   clip.trails = {"9.A"};
@@ -289,7 +312,9 @@ TEST(MechanismScene, TwoBlocksFloatAndLabelForcesByJointAndBody) {
   const sym::System system(load_mechanism("two-blocks"));
   const MechanismMotion motion = sampled(system, 0.2, 0.1);
   const MechanismGeometry geometry = mechanism_geometry(system);
-  const MechanismScene scene(geometry, motion, {geometry.resolve("1.P", "--trail")});
+  ElementSet joints_only = ElementSet::defaults();
+  joints_only.hide(Element::gravity);  // the joint's pair alone
+  const MechanismScene scene(geometry, motion, {geometry.resolve("1.P", "--trail")}, 2.0, {}, joints_only);
   EXPECT_FALSE(scene.geometry().grounded());
   MechanismDrawList list;
   scene.frame(2, list);
@@ -398,7 +423,9 @@ TEST(MechanismScene, ArrowScalesAsAskedAndShortArrowsStretched) {
   const MechanismMotion motion = clip_motion(system, 1.0, 30);
   ArrowScaleRequest request;
   request.fixed = {{"joint", 1000.0}};  // 1 cm = 1 kN: every joint force is a stub
-  MechanismScene scene(mechanism_geometry(system), motion, {}, 2.0, request);
+  ElementSet joints_only = ElementSet::defaults();
+  joints_only.hide(Element::gravity);  // gravity keeps a scale of its own
+  MechanismScene scene(mechanism_geometry(system), motion, {}, 2.0, request, joints_only);
   EXPECT_NEAR(scene.force_scale(), 0.01 / 1000, 1e-18);
   MechanismDrawList list;
   scene.frame(3, list);
@@ -420,7 +447,9 @@ TEST(MechanismScene, LegendScaleIsTheArrowsScaleAndATypicalFrameReads) {
     SCOPED_TRACE(name);
     const sym::System system(load_mechanism(name));
     const MechanismMotion motion = clip_motion(system, 4.0, 30);
-    const MechanismScene scene(mechanism_geometry(system), motion, {});
+    ElementSet joints_only = ElementSet::defaults();
+    joints_only.hide(Element::gravity);  // gravity keeps a scale of its own
+    const MechanismScene scene(mechanism_geometry(system), motion, {}, 2.0, {}, joints_only);
     MechanismDrawList list;
     scene.frame(0, list);
     const MechanismDrawList::Legend& legend = list.legend;

@@ -1,0 +1,174 @@
+// Issue 23, Deliver 2: every picture feature on every mechanism. The draw list holds what
+// --show/--hide ask for; gravity, springs and velocities are arrows with the values the
+// System gives; the camera is the one asked for (fit and follow by default).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "model/mechanism_toml.hpp"
+#include "pipeline/mechanism_clip.hpp"
+#include "scene/mechanism_scene.hpp"
+#include "symbolic/loop_closure.hpp"
+
+namespace linkage {
+namespace {
+
+using Kind = MechanismDrawList::Arrow::Kind;
+
+MechanismMotion motion_of(const sym::System& system, double duration, double fps) {
+  std::vector<double> times;
+  for (long k = 0; k <= std::lround(duration * fps); ++k) times.push_back(static_cast<double>(k) / fps);
+  SimulationOptions options;
+  options.duration = duration;
+  ClipResult result;
+  return sample_mechanism_motion(system, sym::checked_initial_state(system).state, options, times, 1, result);
+}
+
+std::vector<MechanismDrawList::Arrow> arrows_of(const MechanismDrawList& list, Kind kind) {
+  std::vector<MechanismDrawList::Arrow> out;
+  for (const MechanismDrawList::Arrow& arrow : list.arrows)
+    if (arrow.kind == kind) out.push_back(arrow);
+  return out;
+}
+
+bool has_row(const MechanismDrawList::Legend& legend, Kind kind) {
+  for (const MechanismDrawList::Legend::Row& row : legend.rows)
+    if (row.kind == kind) return true;
+  return false;
+}
+
+// The spring-pendulum's disc (m = 0.2 kg, g = 9.81) on k = 20 N/m, l0 = 0.3 m, c = 0.05 N s/m
+// from O = (0, 0): m g down at the centre, and k (l - l0) + c l' along the spring, pulling
+// the disc towards O, as worked out here by hand from the sample's pose and rates.
+TEST(MechanismPicture, GravityAndSpringArrowsCarryTheLoadsValues) {
+  const sym::System system(load_mechanism("spring-pendulum"));
+  const MechanismMotion motion = motion_of(system, 1.0, 30);
+  ElementSet shown = ElementSet::defaults();
+  shown.show(Element::velocity);
+  const MechanismScene scene(mechanism_geometry(system), motion, {}, 2.0, {}, shown);
+  MechanismDrawList list;
+  for (const std::size_t k : {0UL, 7UL, 30UL}) {
+    SCOPED_TRACE(k);
+    scene.frame(k, list);
+    const eval::MechanismSample& s = motion.samples[k];
+    const Vec2 centre(s.pose[0], s.pose[1]), velocity(s.rates[0], s.rates[1]);
+    const auto gravity = arrows_of(list, Kind::gravity);
+    ASSERT_EQ(gravity.size(), 1U);
+    EXPECT_NEAR(gravity[0].force, 0.2 * 9.81, 1e-12);
+    EXPECT_NEAR((gravity[0].tail - centre).norm(), 0, 1e-12);
+    EXPECT_NEAR(gravity[0].vector.normalized().y(), -1, 1e-12);
+    EXPECT_EQ(gravity[0].label, "m g on 1");
+    const auto spring = arrows_of(list, Kind::spring);
+    ASSERT_EQ(spring.size(), 1U);  // the ground's end is not drawn
+    const double length = centre.norm(), rate = centre.dot(velocity) / length;
+    const double tension = 20 * (length - 0.3) + 0.05 * rate;
+    EXPECT_NEAR(spring[0].force, std::fabs(tension), 1e-9);
+    EXPECT_NEAR((spring[0].vector.normalized() - std::copysign(1.0, tension) * (-centre / length)).norm(), 0, 1e-9);
+    EXPECT_EQ(spring[0].label.rfind("k1 on 1", 0), 0U);
+    const auto velocities = arrows_of(list, Kind::velocity);
+    ASSERT_EQ(velocities.size(), k == 0 ? 0U : 1U);  // it starts at rest
+    if (k > 0) {
+      EXPECT_NEAR(velocities[0].force, velocity.norm(), 1e-12);
+      if (!velocities[0].cut && !velocities[0].stretched) {
+        EXPECT_NEAR((velocities[0].vector - scene.scale_of(Kind::velocity) * velocity).norm(), 0, 1e-12);
+      }
+    }
+    for (const MechanismDrawList::Arrow& arrow : list.arrows) {
+      if (!arrow.cut && !arrow.stretched) {
+        EXPECT_NEAR(arrow.vector.norm(), scene.scale_of(arrow.kind) * arrow.force, 1e-12) << arrow.label;
+      }
+    }
+  }
+  EXPECT_TRUE(has_row(list.legend, Kind::gravity));
+  EXPECT_TRUE(has_row(list.legend, Kind::spring));
+  EXPECT_TRUE(has_row(list.legend, Kind::velocity));
+  // By default each kind its own scale; common gives gravity and the spring one.
+  EXPECT_NE(scene.scale_of(Kind::gravity), scene.scale_of(Kind::spring));
+  ArrowScaleRequest common;
+  common.common = true;
+  const MechanismScene shared(mechanism_geometry(system), motion, {}, 2.0, common, shown);
+  EXPECT_EQ(shared.scale_of(Kind::gravity), shared.scale_of(Kind::spring));
+  EXPECT_NE(shared.scale_of(Kind::velocity), shared.scale_of(Kind::gravity));  // not a force
+  ArrowScaleRequest fixed;
+  fixed.fixed = {{"gravity", 2.0}};  // 1 cm = 2 N
+  const MechanismScene two(mechanism_geometry(system), motion, {}, 2.0, fixed, shown);
+  EXPECT_NEAR(two.scale_of(Kind::gravity), 0.01 / 2, 1e-15);
+}
+
+TEST(MechanismPicture, ShowAndHideDecideTheDrawList) {
+  const sym::System system(load_mechanism("four-bar"));
+  const MechanismMotion motion = motion_of(system, 0.5, 30);
+  const MechanismGeometry geometry = mechanism_geometry(system);
+  const std::vector<BodyPoint> trail{geometry.resolve("3.B", "trail")};
+  MechanismDrawList list;
+  const auto count = [&](MechanismDrawList::Marker::Kind kind) {
+    return std::count_if(list.markers.begin(), list.markers.end(), [&](const auto& m) { return m.kind == kind; });
+  };
+  const MechanismScene shown(geometry, motion, trail);
+  shown.frame(10, list);
+  EXPECT_EQ(list.outlines.size(), 3U);
+  EXPECT_EQ(list.labels.size(), 3U);
+  EXPECT_EQ(count(MechanismDrawList::Marker::Kind::pin), 4);
+  EXPECT_EQ(count(MechanismDrawList::Marker::Kind::com), 3);
+  EXPECT_EQ(arrows_of(list, Kind::joint).size(), 6U);  // two per joint between bodies, one at each ground pin
+  EXPECT_EQ(arrows_of(list, Kind::gravity).size(), 3U);
+  EXPECT_TRUE(arrows_of(list, Kind::velocity).empty());  // off by default
+  EXPECT_TRUE(std::any_of(list.lines.begin(), list.lines.end(),
+                          [](const auto& l) { return l.kind == MechanismDrawList::Line::Kind::trail; }));
+  EXPECT_TRUE(list.shown.has(Element::grid));
+
+  ElementSet few = ElementSet::defaults();
+  for (const Element e : {Element::blocks, Element::pin, Element::pin_force, Element::labels, Element::trail,
+                          Element::com, Element::grid, Element::legend})
+    few.hide(e);
+  const MechanismScene hidden(geometry, motion, trail, 2.0, {}, few);
+  hidden.frame(10, list);
+  EXPECT_TRUE(list.outlines.empty());
+  EXPECT_TRUE(list.labels.empty());
+  EXPECT_EQ(count(MechanismDrawList::Marker::Kind::pin), 0);
+  EXPECT_EQ(count(MechanismDrawList::Marker::Kind::com), 0);
+  EXPECT_EQ(count(MechanismDrawList::Marker::Kind::ground), 2);  // the ground stays
+  EXPECT_TRUE(arrows_of(list, Kind::joint).empty());
+  ASSERT_EQ(arrows_of(list, Kind::gravity).size(), 3U);
+  for (const MechanismDrawList::Arrow& arrow : list.arrows) EXPECT_EQ(arrow.label, "");  // labels hidden
+  EXPECT_FALSE(std::any_of(list.lines.begin(), list.lines.end(),
+                           [](const auto& l) { return l.kind == MechanismDrawList::Line::Kind::trail; }));
+  EXPECT_FALSE(list.shown.has(Element::grid));  // the painter's part
+  EXPECT_FALSE(list.legend.joint);
+  EXPECT_TRUE(has_row(list.legend, Kind::gravity));
+}
+
+TEST(MechanismPicture, CameraIsFitOrFollowByDefaultAndAsAsked) {
+  RenderSettings settings;
+  settings.width = 320;
+  settings.height = 180;
+  const sym::System four_bar(load_mechanism("four-bar")), blocks(load_mechanism("two-blocks"));
+  EXPECT_EQ(mechanism_camera_mode(settings, mechanism_geometry(four_bar)), CameraMode::fit);
+  EXPECT_EQ(mechanism_camera_mode(settings, mechanism_geometry(blocks)), CameraMode::follow);
+  settings.camera_chosen = true;
+  settings.camera = CameraMode::follow;
+  EXPECT_EQ(mechanism_camera_mode(settings, mechanism_geometry(four_bar)), CameraMode::follow);
+
+  const MechanismMotion motion = motion_of(four_bar, 1.0, 30);
+  const MechanismScene scene(mechanism_geometry(four_bar), motion, {});
+  // Fit: every outline point and arrow tip of every frame inside the frame.
+  const Camera fit = mechanism_camera(scene, settings, CameraMode::fit);
+  const View visible = fit.visible();
+  EXPECT_LE(visible.xmin, scene.view_bounds().min.x());
+  EXPECT_GE(visible.xmax, scene.view_bounds().max.x());
+  EXPECT_LE(visible.ymin, scene.view_bounds().min.y());
+  EXPECT_GE(visible.ymax, scene.view_bounds().max.y());
+  // Follow: centred on the centroid, holding the widest reach.
+  const Camera follow = mechanism_camera(scene, settings, CameraMode::follow);
+  EXPECT_NEAR((follow.centre() - scene.centroid(0)).norm(), 0, 1e-12);
+  EXPECT_NEAR(0.5 * settings.height / follow.scale(), 1.1 * scene.view_reach(), 1e-9);
+  // Fixed: exactly the view asked for, widened to the frame's shape.
+  settings.view = {-1, -0.5, 1, 0.5};
+  const Camera fixed = mechanism_camera(scene, settings, CameraMode::fixed);
+  EXPECT_NEAR(fixed.visible().xmin, -1, 1e-12);
+  EXPECT_NEAR(fixed.visible().xmax, 1, 1e-12);
+  EXPECT_NEAR(fixed.centre().y(), 0, 1e-12);
+}
+
+}  // namespace
+}  // namespace linkage
