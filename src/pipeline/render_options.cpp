@@ -75,13 +75,7 @@ void camera(RenderDraft& d, const std::string& text) {
   d.camera = text;
 }
 
-void view(RenderDraft& d, const std::string& text) {
-  if (d.target.mechanism && text == "fbd")
-    throw Error::invalid("view",
-                         "fbd applies to the homework only for now; a mechanism takes a rectangle "
-                         "xmin,ymin,xmax,ymax (metres) for the fixed camera");
-  d.view = text;
-}
+void view(RenderDraft& d, const std::string& text) { d.view = text; }
 
 void show(RenderDraft& d, const std::string& text) { d.show.push_back(text); }
 
@@ -164,7 +158,7 @@ std::vector<RenderOption> make_options() {
        camera},
       {"view", V::string, "string", "X0,Y0,X1,Y1|fbd", "none",
        "World rectangle xmin,ymin,xmax,ymax in metres for the fixed camera (implied by it), or fbd: the free-body "
-       "view (the blocks drawn apart at the pin, each with its forces; the homework's only)",
+       "view (the bodies drawn apart at their joints, each with every force on it)",
        view},
       {"show", V::list, "list of strings", "LIST", "none",
        "Elements to show (comma-separated): " + element_name_list() +

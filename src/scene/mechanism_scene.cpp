@@ -13,6 +13,7 @@ namespace {
 constexpr int kDiscSides = 48;
 constexpr int kCapSides = 8;               // per round end of a rod
 constexpr int kSpringTurns = 8;            // fixed, so the coil visibly stretches and compresses
+constexpr double kApart = 0.5;             // the free-body view's spread, of each centre's distance from the centroid
 constexpr double kTypicalShare = 1.0 / 6;  // a typical frame's largest force arrow, of the extent
 constexpr double kCapFactor = 1.5;         // arrows longer than this times the typical are cut
 // "Typical": the upper quartile. The 90th percentile is still a peak for a four-bar
@@ -261,12 +262,13 @@ void MechanismDrawList::clear() {
 }
 
 MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion& motion, std::vector<BodyPoint> trails,
-                               double trail_seconds, const ArrowScaleRequest& arrows, ElementSet shown)
+                               double trail_seconds, const ArrowScaleRequest& arrows, ElementSet shown, bool free_body)
     : geometry_(std::move(geometry)),
       motion_(motion),
       trails_(std::move(trails)),
       trail_seconds_(trail_seconds),
-      shown_(shown) {
+      shown_(shown),
+      free_body_(free_body) {
   if (!shown_.has(Element::trail)) trails_.clear();
   const std::size_t joints = geometry_.joints.size(), samples = motion_.samples.size();
   rail_span_.assign(joints, {1e300, -1e300});
@@ -402,7 +404,7 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
   view_reach_ = reach_;
   MechanismDrawList list;
   const bool arrows_drawn = force_scale_ > 0 || torque_scale_ > 0 || !legend_.rows.empty();
-  for (std::size_t k = 0; arrows_drawn && k < samples; ++k) {
+  for (std::size_t k = 0; (arrows_drawn || free_body_) && k < samples; ++k) {
     frame(k, list);
     const Vec2 c = centroid(k);
     const auto include = [&](const Vec2& p) {
@@ -410,6 +412,8 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
       view_reach_ = std::max(view_reach_, (p - c).norm());
     };
     for (const MechanismDrawList::Arrow& arrow : list.arrows) include(arrow.tail + arrow.vector);
+    for (const MechanismDrawList::Outline& outline : list.outlines)
+      for (const Vec2& p : outline.points) include(p);  // pulled apart in the free-body view
     for (const MechanismDrawList::Torque& torque : list.torques) {
       include(torque.centre - Vec2(torque.radius, torque.radius));
       include(torque.centre + Vec2(torque.radius, torque.radius));
@@ -498,6 +502,7 @@ void MechanismScene::add_load_arrows(std::size_t k, MechanismDrawList& out) cons
     const std::string& body = geometry_.bodies[static_cast<std::size_t>(load.body)].name;
     out.arrows.push_back(
         force_arrow(kind, at, force, tags ? (load.gravity ? "m g on " + body : load.name + " on " + body) : ""));
+    out.arrows.back().body = load.body;
   }
   const std::vector<double>& rates = motion_.samples[k].rates;
   for (std::size_t i = 0; velocity_scale_ > 0 && i < geometry_.bodies.size() && !rates.empty(); ++i) {
@@ -506,6 +511,7 @@ void MechanismScene::add_load_arrows(std::size_t k, MechanismDrawList& out) cons
     if (v.norm() == 0) continue;
     out.arrows.push_back(force_arrow(Kind::velocity, Vec2(pose[3 * i], pose[3 * i + 1]), v,
                                      tags ? "v of " + geometry_.bodies[i].name : ""));
+    out.arrows.back().body = static_cast<int>(i);
   }
 }
 
@@ -569,6 +575,7 @@ void MechanismScene::add_loads(std::size_t k, MechanismDrawList& out) const {
     if (!tags) label.clear();
     out.arrows.push_back(force_arrow(MechanismDrawList::Arrow::Kind::applied, world_point(pose, geometry_.forces[i].at),
                                      force, std::move(label)));
+    out.arrows.back().body = geometry_.forces[i].at.body;
   }
   for (std::size_t i = 0; torque_scale_ > 0 && shown_.has(Element::loads) && i < geometry_.torques.size(); ++i) {
     const double torque = torque_[k][i];
@@ -585,7 +592,8 @@ void MechanismScene::add_loads(std::size_t k, MechanismDrawList& out) const {
     if (geometry_.torques.size() > 1) label.append(std::to_string(i + 1));
     label.append(" = ").append(format_quantity(std::fabs(torque), "N m"));
     if (!tags) label.clear();
-    out.torques.push_back({Vec2(pose[3 * body], pose[3 * body + 1]), radius, start, sweep, std::move(label)});
+    out.torques.push_back(
+        {Vec2(pose[3 * body], pose[3 * body + 1]), radius, start, sweep, std::move(label), static_cast<int>(body)});
   }
 }
 
@@ -603,6 +611,7 @@ void MechanismScene::add_trails(std::size_t k, MechanismDrawList& out) const {
       line.points.push_back(world_point(fine ? motion_.trail_poses[i] : motion_.samples[i].pose, trail));
       line.fade.push_back(trail_seconds_ > 0 ? std::clamp(1.0 - (now - *it) / trail_seconds_, 0.0, 1.0) : 1.0);
     }
+    line.body = trail.body;
     out.lines.push_back(std::move(line));
     // A traced point off its body's outline (a coupler point) is tied to the body's
     // centre by a thin bar, so the picture shows what carries it.
@@ -613,7 +622,7 @@ void MechanismScene::add_trails(std::size_t k, MechanismDrawList& out) const {
     // Grown by 5 % about the centre: a point on the outline (a rod's end) is the body's own.
     std::vector<Vec2> outline = body_outline(geometry_.bodies[b], pose, b);
     for (Vec2& v : outline) v = centre + 1.05 * (v - centre);
-    if (!inside(outline, at)) out.lines.push_back({MechanismDrawList::Line::Kind::spin, {centre, at}, {}});
+    if (!inside(outline, at)) out.lines.push_back({MechanismDrawList::Line::Kind::spin, {centre, at}, {}, trail.body});
   }
 }
 
@@ -629,14 +638,19 @@ void MechanismScene::frame(std::size_t k, MechanismDrawList& out) const {
     out.outlines.push_back({i, body_outline(body, pose, i), body.shape});
     const Vec2 centre(pose[3 * i], pose[3 * i + 1]);
     if (body.shape == Shape::disc)  // a radius along body x, so the spin shows
-      out.lines.push_back(
-          {MechanismDrawList::Line::Kind::spin, {centre, centre + rotated(pose[3 * i + 2], {body.radius, 0.0})}});
-    if (shown_.has(Element::labels)) out.labels.push_back({centre, body.name});
+      out.lines.push_back({MechanismDrawList::Line::Kind::spin,
+                           {centre, centre + rotated(pose[3 * i + 2], {body.radius, 0.0})},
+                           {},
+                           static_cast<int>(i)});
+    if (shown_.has(Element::labels)) out.labels.push_back({centre, body.name, static_cast<int>(i)});
   }
   for (std::size_t i = 0; shown_.has(Element::com) && i < geometry_.bodies.size(); ++i)
-    out.markers.push_back({MechanismDrawList::Marker::Kind::com, Vec2(pose[3 * i], pose[3 * i + 1])});
+    out.markers.push_back(
+        {MechanismDrawList::Marker::Kind::com, Vec2(pose[3 * i], pose[3 * i + 1]), Vec2::UnitX(), static_cast<int>(i)});
   for (const auto& [name, at] : geometry_.ground) out.markers.push_back({MechanismDrawList::Marker::Kind::ground, at});
-  for (std::size_t i = 0; i < geometry_.springs.size(); ++i) add_spring(geometry_.springs[i], i, pose, out);
+  // In the free-body view a spring is the force it exerts, not a part.
+  for (std::size_t i = 0; !free_body_ && i < geometry_.springs.size(); ++i)
+    add_spring(geometry_.springs[i], i, pose, out);
 
   for (std::size_t j = 0; j < geometry_.joints.size(); ++j) {
     const MechanismGeometry::JointShape& joint = geometry_.joints[j];
@@ -646,10 +660,18 @@ void MechanismScene::frame(std::size_t k, MechanismDrawList& out) const {
       const Vec2 axis = rotated(theta0, joint.axis);
       const double margin = 0.1 * extent_;
       out.lines.push_back({MechanismDrawList::Line::Kind::rail,
-                           {p0 + (rail_span_[j][0] - margin) * axis, p0 + (rail_span_[j][1] + margin) * axis}});
-      out.markers.push_back({MechanismDrawList::Marker::Kind::guide, p1, axis});
+                           {p0 + (rail_span_[j][0] - margin) * axis, p0 + (rail_span_[j][1] + margin) * axis},
+                           {},
+                           joint.points[0].body});
+      out.markers.push_back({MechanismDrawList::Marker::Kind::guide, p1, axis, joint.points[1].body});
+    } else if (joints && !free_body_) {
+      out.markers.push_back({MechanismDrawList::Marker::Kind::pin, p0, Vec2::UnitX(), joint.points[0].body});
     } else if (joints) {
-      out.markers.push_back({MechanismDrawList::Marker::Kind::pin, p0});
+      // Pulled apart, each body keeps its half of the pin (the ground's stays with its support).
+      for (std::size_t side = 0; side < 2; ++side)
+        if (joint.points[side].body >= 0)
+          out.markers.push_back(
+              {MechanismDrawList::Marker::Kind::pin, side == 0 ? p0 : p1, Vec2::UnitX(), joint.points[side].body});
     }
     if (force_scale_ <= 0 || !shown_.has(Element::pin_force)) continue;
     const Vec2 force(s.force[3 * j], s.force[3 * j + 1]);
@@ -660,11 +682,33 @@ void MechanismScene::frame(std::size_t k, MechanismDrawList& out) const {
           MechanismDrawList::Arrow::Kind::joint, side == 0 ? p0 : p1, side == 0 ? force : Vec2(-force),
           shown_.has(Element::labels) ? joint.name + " on " + geometry_.bodies[static_cast<std::size_t>(body)].name
                                       : ""));
+      out.arrows.back().body = body;
     }
   }
   add_loads(k, out);
   add_load_arrows(k, out);
   add_trails(k, out);
+  if (free_body_) pull_apart(k, out);
+}
+
+void MechanismScene::pull_apart(std::size_t k, MechanismDrawList& out) const {
+  // Each body moved away from the centroid by half its centre's distance from it: joined
+  // bodies separate at their joints, each carrying its own forces and half of each pin.
+  const Vec2 c = centroid(k);
+  const std::vector<double>& pose = motion_.samples[k].pose;
+  const auto offset = [&](int body) {
+    if (body < 0) return Vec2(Vec2::Zero());
+    const auto b = 3 * static_cast<std::size_t>(body);
+    return Vec2(kApart * (Vec2(pose[b], pose[b + 1]) - c));
+  };
+  for (MechanismDrawList::Outline& o : out.outlines)
+    for (Vec2& p : o.points) p += offset(static_cast<int>(o.body));
+  for (MechanismDrawList::Line& l : out.lines)
+    for (Vec2& p : l.points) p += offset(l.body);
+  for (MechanismDrawList::Marker& m : out.markers) m.at += offset(m.body);
+  for (MechanismDrawList::Arrow& a : out.arrows) a.tail += offset(a.body);
+  for (MechanismDrawList::Torque& t : out.torques) t.centre += offset(t.body);
+  for (MechanismDrawList::Label& l : out.labels) l.at += offset(l.body);
 }
 
 }  // namespace linkage

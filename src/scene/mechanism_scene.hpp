@@ -103,11 +103,13 @@ struct MechanismDrawList {
     enum class Kind { spin, rail, spring, dashpot, trail } kind = Kind::rail;
     std::vector<Vec2> points;
     std::vector<double> fade{};  // a trail's, per point: 1 now, falling to 0 with age
+    int body = -1;               // the body it moves with in the free-body view (-1: the world)
   };
   struct Marker {
     enum class Kind { ground, pin, guide, com } kind = Kind::pin;
     Vec2 at = Vec2::Zero();
     Vec2 direction = Vec2::UnitX();  // guide: along the rail
+    int body = -1;                   // the body it moves with in the free-body view (-1: the world)
   };
   struct Arrow {
     enum class Kind { joint, applied, gravity, spring, velocity } kind = Kind::joint;
@@ -116,6 +118,7 @@ struct MechanismDrawList {
     bool cut = false;                                 // drawn shorter than the scale says
     std::string label;                                // "B on 3", "F = 0.5 N"
     bool stretched = false;                           // too short to see at the scale: drawn longer
+    int body = -1;                                    // the body it acts on (-1: none)
   };
   /// An applied torque: an arc about the body's centre, counter-clockwise for sweep > 0,
   /// its head at start + sweep.
@@ -123,10 +126,12 @@ struct MechanismDrawList {
     Vec2 centre = Vec2::Zero();
     double radius = 0, start = 0, sweep = 0;  // m, rad
     std::string label;                        // "τ = 0.01 N m"
+    int body = -1;
   };
   struct Label {
     Vec2 at = Vec2::Zero();
     std::string text;
+    int body = -1;
   };
   /// What an arrow's length means: a reference arrow of `metres` stands for `newtons`
   /// (joint forces; applied ones have their own when --arrow-scale sets them apart).
@@ -185,9 +190,11 @@ class MechanismScene {
   /// `arrows`: --arrow-scale (kinds "joint" and "applied"); by default joint and applied
   /// forces share one scale from the clip's typical force, as "common" does.
   /// `shown`: the elements drawn (bodies, joints, each kind of arrow, trail, com, labels).
+  /// `free_body`: each body pulled away from the others (from the centroid, by half its
+  /// distance) with every force on it, a joint's pin drawn on each of its bodies.
   MechanismScene(MechanismGeometry geometry, const MechanismMotion& motion, std::vector<BodyPoint> trails,
                  double trail_seconds = 2.0, const ArrowScaleRequest& arrows = {},
-                 ElementSet shown = ElementSet::defaults());
+                 ElementSet shown = ElementSet::defaults(), bool free_body = false);
 
   /// Force arrows shorter than `metres` (but not zero) are drawn `drawn` long (0: that
   /// long) and marked stretched, their labels giving the value; the legend says whether any is.
@@ -233,6 +240,7 @@ class MechanismScene {
   std::vector<std::vector<double>> torque_;         // per sample, per applied torque: N m
   std::vector<std::vector<double>> load_;           // per sample: load_values' outputs
   ElementSet shown_;
+  bool free_body_ = false;
   double gravity_scale_ = 0, spring_scale_ = 0, velocity_scale_ = 0;
 
   void add_spring(const MechanismGeometry::SpringShape& spring, std::size_t index, const std::vector<double>& pose,
@@ -240,6 +248,7 @@ class MechanismScene {
   void add_loads(std::size_t k, MechanismDrawList& out) const;
   void add_trails(std::size_t k, MechanismDrawList& out) const;
   void add_load_arrows(std::size_t k, MechanismDrawList& out) const;
+  void pull_apart(std::size_t k, MechanismDrawList& out) const;
   [[nodiscard]] MechanismDrawList::Arrow force_arrow(MechanismDrawList::Arrow::Kind kind, const Vec2& at,
                                                      const Vec2& force, std::string label) const;
 };

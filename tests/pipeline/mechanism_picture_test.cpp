@@ -170,5 +170,78 @@ TEST(MechanismPicture, CameraIsFitOrFollowByDefaultAndAsAsked) {
   EXPECT_NEAR(fixed.centre().y(), 0, 1e-12);
 }
 
+// The free-body view: every body pulled away from the others, carrying every force on it
+// (joint forces as equal and opposite pairs, one on each body, gravity at its centre), and
+// each body its half of each pin between bodies.
+TEST(MechanismPicture, FreeBodyViewPullsEachBodyApartWithItsForces) {
+  for (const char* name : {"four-bar", "slider-crank", "triple-pendulum", "two-blocks"}) {
+    SCOPED_TRACE(name);
+    const sym::System system(load_mechanism(name));
+    const MechanismMotion motion = motion_of(system, 0.5, 30);
+    const MechanismGeometry geometry = mechanism_geometry(system);
+    const MechanismScene together(geometry, motion, {});
+    const MechanismScene apart(geometry, motion, {}, 2.0, {}, ElementSet::defaults(), true);
+    MechanismDrawList joined, pulled;
+    const std::size_t k = 9;
+    together.frame(k, joined);
+    apart.frame(k, pulled);
+    ASSERT_EQ(joined.outlines.size(), pulled.outlines.size());
+    ASSERT_EQ(joined.arrows.size(), pulled.arrows.size());
+    const std::vector<double>& pose = motion.samples[k].pose;
+    const Vec2 c = together.centroid(k);
+    std::vector<Vec2> shift;
+    for (std::size_t i = 0; i < geometry.bodies.size(); ++i) {
+      shift.push_back(0.5 * (Vec2(pose[3 * i], pose[3 * i + 1]) - c));
+      // The whole outline moves by its body's shift, unturned.
+      for (std::size_t p = 0; p < joined.outlines[i].points.size(); ++p)
+        EXPECT_NEAR((pulled.outlines[i].points[p] - joined.outlines[i].points[p] - shift[i]).norm(), 0, 1e-12);
+    }
+    // Every arrow moves with the body it acts on, its value and direction unchanged.
+    for (std::size_t a = 0; a < pulled.arrows.size(); ++a) {
+      const MechanismDrawList::Arrow& arrow = pulled.arrows[a];
+      ASSERT_GE(arrow.body, 0) << arrow.label;
+      EXPECT_EQ(arrow.label, joined.arrows[a].label);
+      EXPECT_NEAR((arrow.vector - joined.arrows[a].vector).norm(), 0, 1e-12);
+      EXPECT_NEAR((arrow.tail - joined.arrows[a].tail - shift[static_cast<std::size_t>(arrow.body)]).norm(), 0, 1e-12)
+          << arrow.label;
+    }
+    // A joint between two bodies: its pair of arrows equal and opposite, on different
+    // bodies, now apart; and its pin drawn on each.
+    std::size_t pairs = 0;
+    for (std::size_t a = 0; a + 1 < pulled.arrows.size(); ++a) {
+      const MechanismDrawList::Arrow &one = pulled.arrows[a], &other = pulled.arrows[a + 1];
+      if (one.kind != Kind::joint || other.kind != Kind::joint || one.body == other.body) continue;
+      if (one.label.substr(0, one.label.find(" on ")) != other.label.substr(0, other.label.find(" on "))) continue;
+      ++pairs;
+      EXPECT_NEAR((one.vector + other.vector).norm(), 0, 1e-12) << one.label;
+      EXPECT_GT((one.tail - other.tail).norm(), 1e-3) << one.label;
+      ++a;
+    }
+    std::size_t between = 0;
+    for (const MechanismGeometry::JointShape& joint : geometry.joints)
+      if (joint.points[0].body >= 0 && joint.points[1].body >= 0) ++between;
+    EXPECT_EQ(pairs, between);
+    const auto pins = [](const MechanismDrawList& list) {
+      return std::count_if(list.markers.begin(), list.markers.end(),
+                           [](const auto& m) { return m.kind == MechanismDrawList::Marker::Kind::pin; });
+    };
+    // A pin on every body it joins (the ground's side stays a support), one per joint when joined.
+    std::size_t pin_joints = 0, pin_sides = 0;
+    for (const MechanismGeometry::JointShape& joint : geometry.joints) {
+      if (joint.type != JointType::pin) continue;
+      ++pin_joints;
+      pin_sides += (joint.points[0].body >= 0 ? 1U : 0U) + (joint.points[1].body >= 0 ? 1U : 0U);
+    }
+    EXPECT_EQ(static_cast<std::size_t>(pins(joined)), pin_joints);
+    EXPECT_EQ(static_cast<std::size_t>(pins(pulled)), pin_sides);
+    // The camera's view holds the pulled-apart bodies.
+    for (const MechanismDrawList::Outline& outline : pulled.outlines)
+      for (const Vec2& p : outline.points) {
+        EXPECT_GE(p.x(), apart.view_bounds().min.x() - 1e-12);
+        EXPECT_LE(p.y(), apart.view_bounds().max.y() + 1e-12);
+      }
+  }
+}
+
 }  // namespace
 }  // namespace linkage

@@ -152,8 +152,7 @@ TEST(RenderOptions, AtIsAStillsAndEveryPictureOptionIsAMechanismsToo) {
             "at|applies to a still (--out FILE.png, .svg or .pdf); a clip shows 0 .. --duration");
   EXPECT_EQ(resolve_render_options({{"at", "1.5"}}, flags(false, true)).settings.at, 1.5);
   EXPECT_EQ(error_of({{"trail", "3.B"}}), "trail|applies only with --mechanism");
-  // Issue 23: the camera, a view rectangle, --show and --hide apply to a mechanism too;
-  // only the free-body view is still the homework's.
+  // Issue 23: the camera, a view (a rectangle or fbd), --show and --hide apply to a mechanism too.
   const RenderSettings fit = resolve_render_options({{"camera", "fit"}}, flags(true)).settings;
   EXPECT_EQ(fit.camera, CameraMode::fit);
   EXPECT_TRUE(fit.camera_chosen);
@@ -161,7 +160,7 @@ TEST(RenderOptions, AtIsAStillsAndEveryPictureOptionIsAMechanismsToo) {
   const RenderSettings fixed = resolve_render_options({{"view", "-1,-2,3,4"}}, flags(true)).settings;
   EXPECT_EQ(fixed.camera, CameraMode::fixed);
   EXPECT_EQ(fixed.view.ymax, 4.0);
-  EXPECT_EQ(error_of({{"view", "fbd"}}, flags(true)).rfind("view|fbd applies to the homework only for now", 0), 0U);
+  EXPECT_TRUE(resolve_render_options({{"view", "fbd"}}, flags(true)).settings.free_body);
   const ElementSet shown =
       resolve_render_options({{"show", "velocity,gravity"}, {"hide", "legend,labels,joint-force"}}, flags(true))
           .settings.elements;
