@@ -166,13 +166,20 @@ MechanismGeometry mechanism_geometry(const sym::System& system) {
     g.loads.push_back({load.body, gravity, gravity ? std::string() : load.source});
     for (const GiNaC::ex& e : {load.force.x, load.force.y, load.point.x, load.point.y}) outputs.push_back(numeric(e));
   }
-  std::vector<GiNaC::symbol> inputs;
+  std::vector<GiNaC::symbol>& inputs = g.inputs;
   for (const sym::BodySystem& b : system.bodies())
     for (const sym::CoordinateSymbols* c : {&b.x, &b.y, &b.theta}) inputs.push_back(c->q);
   for (const sym::BodySystem& b : system.bodies())
     for (const sym::CoordinateSymbols* c : {&b.x, &b.y, &b.theta}) inputs.push_back(c->q_dot);
   inputs.push_back(system.time());
   if (!outputs.empty()) g.load_values = eval::compile(outputs, inputs);
+  for (std::size_t i = 0; i < m.bodies.size(); ++i) {
+    g.point_velocities.emplace_back();
+    for (const NamedPoint& p : m.bodies[i].points) {
+      const sym::Vec2 r = system.point_position(static_cast<int>(i), p.name);
+      g.point_velocities.back().push_back({numeric(system.time_derivative(r.x)), numeric(system.time_derivative(r.y))});
+    }
+  }
   return g;
 }
 
@@ -282,6 +289,25 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
   std::vector<double> largest_force(samples, 0), largest_torque(samples, 0), largest_gravity(samples, 0),
       largest_spring(samples, 0), largest_velocity(samples, 0);
   std::vector<double> inputs, scratch(geometry_.load_values.scratch_size());
+  // The traced points' velocities, shown with the centres of mass's.
+  trail_velocity_.assign(samples, {});
+  eval::Program traced;
+  if (shown_.has(Element::velocity)) {
+    std::vector<GiNaC::ex> velocities;
+    for (const BodyPoint& trail : trails_) {
+      if (trail.body < 0) continue;
+      const auto b = static_cast<std::size_t>(trail.body);
+      for (std::size_t p = 0; p < geometry_.bodies[b].points.size() && b < geometry_.point_velocities.size(); ++p)
+        if (geometry_.bodies[b].points[p].second == trail.local) {
+          velocities.push_back(geometry_.point_velocities[b][p][0]);
+          velocities.push_back(geometry_.point_velocities[b][p][1]);
+          traced_.push_back(trail);
+          break;
+        }
+    }
+    if (!velocities.empty()) traced = eval::compile(velocities, geometry_.inputs);
+  }
+  std::vector<double> scratch_traced(traced.scratch_size());
   for (std::size_t k = 0; k < samples; ++k) {
     const eval::MechanismSample& s = motion_.samples[k];
     const Vec2 c = centroid(k);
@@ -327,6 +353,14 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
     }
     for (std::size_t i = 0; i < geometry_.bodies.size() && !s.rates.empty(); ++i)
       largest_velocity[k] = std::max(largest_velocity[k], std::hypot(s.rates[3 * i], s.rates[3 * i + 1]));
+    if (traced.output_count() > 0 && !s.rates.empty()) {
+      load_inputs(s, motion_.times[k], inputs);
+      trail_velocity_[k].resize(traced.output_count());
+      traced.run(inputs.data(), trail_velocity_[k].data(), scratch_traced.data());
+      for (std::size_t i = 0; 2 * i + 1 < trail_velocity_[k].size(); ++i)
+        largest_velocity[k] =
+            std::max(largest_velocity[k], std::hypot(trail_velocity_[k][2 * i], trail_velocity_[k][2 * i + 1]));
+    }
   }
   for (const auto& [name, at] : geometry_.ground) bounds_.include(at);
   // The trails' points too: a point off its body's outline may swing past it.
@@ -512,6 +546,19 @@ void MechanismScene::add_load_arrows(std::size_t k, MechanismDrawList& out) cons
     out.arrows.push_back(force_arrow(Kind::velocity, Vec2(pose[3 * i], pose[3 * i + 1]), v,
                                      tags ? "v of " + geometry_.bodies[i].name : ""));
     out.arrows.back().body = static_cast<int>(i);
+  }
+  const std::vector<double>& traced = trail_velocity_[k];
+  for (std::size_t i = 0; velocity_scale_ > 0 && 2 * i + 1 < traced.size(); ++i) {
+    const Vec2 v(traced[2 * i], traced[2 * i + 1]);
+    if (v.norm() == 0) continue;
+    const BodyPoint& point = traced_[i];
+    const MechanismGeometry::BodyShape& body = geometry_.bodies[static_cast<std::size_t>(point.body)];
+    std::string name;
+    for (const auto& [n, at] : body.points)
+      if (at == point.local) name = n;
+    out.arrows.push_back(force_arrow(Kind::velocity, world_point(motion_.samples[k].pose, point), v,
+                                     tags ? "v of " + body.name + "." + name : ""));
+    out.arrows.back().body = point.body;
   }
 }
 

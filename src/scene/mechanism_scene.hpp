@@ -70,7 +70,11 @@ struct MechanismGeometry {
   /// Per load: force x, y (N) and its point x, y (m), world frame; inputs per body x, y,
   /// theta, then per body their rates, then t (load_inputs).
   eval::Program load_values;
-  GiNaC::ex time;  // the symbol t of the loads' values
+  /// Per body, per named point: its world velocity x, y in load_values' inputs, the time
+  /// derivative of its position as the System states it (compiled for the points traced).
+  std::vector<std::vector<std::array<GiNaC::ex, 2>>> point_velocities;
+  std::vector<GiNaC::symbol> inputs;  // load_values' inputs, in order
+  GiNaC::ex time;                     // the symbol t of the loads' values
 
   /// Whether any joint or spring holds the mechanism to the ground (else it floats).
   [[nodiscard]] bool grounded() const;
@@ -229,16 +233,18 @@ class MechanismScene {
   MechanismGeometry geometry_;
   const MechanismMotion& motion_;
   std::vector<BodyPoint> trails_;
+  std::vector<BodyPoint> traced_;  // the trails' points on bodies, whose velocities are drawn
   double trail_seconds_;
   Bounds bounds_, view_bounds_;
   double reach_ = 0, view_reach_ = 0, force_scale_ = 0, applied_scale_ = 0, arrow_cap_ = 0, torque_scale_ = 0,
          extent_ = 1, shortest_ = 0, stretched_ = 0;
   MechanismDrawList::Legend legend_;
-  std::vector<std::array<double, 2>> rail_span_;    // per joint: slider travel range along the axis
-  std::vector<std::array<double, 2>> spring_span_;  // per spring: shortest and longest length
-  std::vector<std::vector<Vec2>> applied_;          // per sample, per applied force: N
-  std::vector<std::vector<double>> torque_;         // per sample, per applied torque: N m
-  std::vector<std::vector<double>> load_;           // per sample: load_values' outputs
+  std::vector<std::array<double, 2>> rail_span_;     // per joint: slider travel range along the axis
+  std::vector<std::array<double, 2>> spring_span_;   // per spring: shortest and longest length
+  std::vector<std::vector<Vec2>> applied_;           // per sample, per applied force: N
+  std::vector<std::vector<double>> torque_;          // per sample, per applied torque: N m
+  std::vector<std::vector<double>> load_;            // per sample: load_values' outputs
+  std::vector<std::vector<double>> trail_velocity_;  // per sample: each traced point's velocity x, y
   ElementSet shown_;
   bool free_body_ = false;
   double gravity_scale_ = 0, spring_scale_ = 0, velocity_scale_ = 0;

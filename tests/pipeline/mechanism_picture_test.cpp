@@ -170,6 +170,36 @@ TEST(MechanismPicture, CameraIsFitOrFollowByDefaultAndAsAsked) {
   EXPECT_NEAR(fixed.centre().y(), 0, 1e-12);
 }
 
+// A traced point's velocity from the System's derivative of its position, checked here
+// against a central difference of the point's path (h = 1e-4 s: an error of order h^2
+// times the third derivative, far below the tolerance).
+TEST(MechanismPicture, TracedPointsVelocityIsTheDerivativeOfItsPath) {
+  const sym::System system(load_mechanism("four-bar"));
+  const MechanismGeometry geometry = mechanism_geometry(system);
+  const BodyPoint p = geometry.resolve("3.P", "trail");
+  const std::vector<double> times{0.5 - 1e-4, 0.5, 0.5 + 1e-4};
+  SimulationOptions options;
+  options.duration = 0.6;
+  options.rtol = 1e-12;
+  options.atol = 1e-12;
+  ClipResult result;
+  const MechanismMotion motion =
+      sample_mechanism_motion(system, sym::checked_initial_state(system).state, options, times, 1, result);
+  ElementSet shown = ElementSet::defaults();
+  shown.show(Element::velocity);
+  const MechanismScene scene(geometry, motion, {p}, 2.0, {}, shown);
+  MechanismDrawList list;
+  scene.frame(1, list);
+  const auto velocities = arrows_of(list, Kind::velocity);
+  ASSERT_EQ(velocities.size(), 4U);  // three centres of mass, then P
+  EXPECT_EQ(velocities[3].label.rfind("v of 3.P", 0), 0U);
+  const Vec2 expected =
+      (world_point(motion.samples[2].pose, p) - world_point(motion.samples[0].pose, p)) / (times[2] - times[0]);
+  const Vec2 drawn = velocities[3].force * velocities[3].vector.normalized();
+  EXPECT_NEAR((drawn - expected).norm(), 0, 1e-5 * expected.norm());
+  EXPECT_NEAR((velocities[3].tail - world_point(motion.samples[1].pose, p)).norm(), 0, 1e-12);
+}
+
 // The free-body view: every body pulled away from the others, carrying every force on it
 // (joint forces as equal and opposite pairs, one on each body, gravity at its centre), and
 // each body its half of each pin between bodies.
