@@ -11,7 +11,6 @@
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
 #include "core/number_format.hpp"
-#include "encode/png_writer.hpp"
 #include "integrate/mechanism_columns.hpp"
 #include "integrate/mechanism_simulation.hpp"
 #include "model/mechanism_toml.hpp"
@@ -21,7 +20,6 @@
 #include "render/frame_layout.hpp"
 #include "render/mechanism_painter.hpp"
 #include "render/scene_painter.hpp"
-#include "render/vector_still.hpp"
 #include "scene/mechanism_scene.hpp"
 #include "symbolic/loop_closure.hpp"
 
@@ -239,17 +237,9 @@ void produce_still(const sym::System& system, const GiNaC::exmap& initial, const
   MechanismFrames frames(mechanism_geometry(system), motion, clip, layout.scene_settings(), overlays,
                          ensemble_label(system, clip));
   const std::size_t last = times.size() - 1;
-  const OutputKind kind = output_kind(*clip.out, "out");
-  if (kind == OutputKind::png) {
-    Frame frame(s.width, s.height);
-    layout.draw(last, s.at, frame, [&](Frame& scene) { frames.draw(last, scene); });
-    write_png(frame, *clip.out, "out");
-    ++result.stats.png_files_written;
-  } else {
-    write_vector_still(
-        [&](cairo_t* cr) { layout.draw_vector(last, s.at, cr, [&](cairo_t* scene) { frames.paint(last, scene); }); },
-        kind, s.width, s.height, *clip.out, "out");
-  }
+  write_still(
+      layout, last, s.at, s, *clip.out, [&](Frame& scene) { frames.draw(last, scene); },
+      [&](cairo_t* scene) { frames.paint(last, scene); }, result);
   add_drawing(result.stats, frames.stats());
 }
 
