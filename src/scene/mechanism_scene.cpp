@@ -679,7 +679,7 @@ void MechanismScene::frame(std::size_t k, MechanismDrawList& out) const {
   out.shown = shown_;
   const eval::MechanismSample& s = motion_.samples[k];
   const std::vector<double>& pose = s.pose;
-  const bool bodies = shown_.has(Element::blocks), joints = shown_.has(Element::pin);
+  const bool bodies = shown_.has(Element::blocks);
   for (std::size_t i = 0; bodies && i < geometry_.bodies.size(); ++i) {
     const MechanismGeometry::BodyShape& body = geometry_.bodies[i];
     out.outlines.push_back({i, body_outline(body, pose, i), body.shape});
@@ -699,30 +699,23 @@ void MechanismScene::frame(std::size_t k, MechanismDrawList& out) const {
   for (std::size_t i = 0; !free_body_ && i < geometry_.springs.size(); ++i)
     add_spring(geometry_.springs[i], i, pose, out);
 
+  const std::size_t first_marker = out.markers.size(), first_line = out.lines.size();
   for (std::size_t j = 0; j < geometry_.joints.size(); ++j) {
     const MechanismGeometry::JointShape& joint = geometry_.joints[j];
     const Vec2 p0 = world_point(pose, joint.points[0]), p1 = world_point(pose, joint.points[1]);
-    if (joints && joint.type == JointType::slider) {
+    if (joint.type == JointType::slider) {
       const double theta0 = joint.points[0].body < 0 ? 0 : pose[3 * static_cast<std::size_t>(joint.points[0].body) + 2];
       const Vec2 axis = rotated(theta0, joint.axis);
       const double margin = 0.1 * extent_;
       out.lines.push_back({MechanismDrawList::Line::Kind::rail,
-                           {p0 + (rail_span_[j][0] - margin) * axis, p0 + (rail_span_[j][1] + margin) * axis},
-                           {},
-                           joint.points[0].body});
-      out.markers.push_back({MechanismDrawList::Marker::Kind::guide, p1, axis, joint.points[1].body});
-    } else if (joints && !free_body_) {
-      out.markers.push_back({MechanismDrawList::Marker::Kind::pin, p0, Vec2::UnitX(), joint.points[0].body});
-    } else if (joints) {
-      // Pulled apart, each body keeps its half of the pin (the ground's stays with its support).
-      for (std::size_t side = 0; side < 2; ++side)
-        if (joint.points[side].body >= 0)
-          out.markers.push_back(
-              {MechanismDrawList::Marker::Kind::pin, side == 0 ? p0 : p1, Vec2::UnitX(), joint.points[side].body});
+                           {p0 + (rail_span_[j][0] - margin) * axis, p0 + (rail_span_[j][1] + margin) * axis}});
+      out.markers.push_back({MechanismDrawList::Marker::Kind::guide, p1, axis});
+    } else {
+      out.markers.push_back({MechanismDrawList::Marker::Kind::pin, p0});
     }
-    if (force_scale_ <= 0 || !shown_.has(Element::pin_force)) continue;
+    if (force_scale_ <= 0) continue;
     const Vec2 force(s.force[3 * j], s.force[3 * j + 1]);
-    for (std::size_t side = 0; side < 2; ++side) {
+    for (std::size_t side = 0; side < 2 && shown_.has(Element::pin_force); ++side) {
       const int body = joint.points[side].body;
       if (body < 0) continue;  // the ground's reaction is not drawn
       out.arrows.push_back(force_arrow(
@@ -732,10 +725,40 @@ void MechanismScene::frame(std::size_t k, MechanismDrawList& out) const {
       out.arrows.back().body = body;
     }
   }
+  place_joints(pose, first_marker, first_line, out);
   add_loads(k, out);
   add_load_arrows(k, out);
   add_trails(k, out);
   if (free_body_) pull_apart(k, out);
+}
+
+void MechanismScene::place_joints(const std::vector<double>& pose, std::size_t first_marker, std::size_t first_line,
+                                  MechanismDrawList& out) const {
+  // The joints' drawing (one marker per joint, in order, a slider's rail with its guide):
+  // gone with the joints hidden; else each part tied to its body, and pulled apart, a pin
+  // on every body it joins (the ground's side is its support).
+  if (!shown_.has(Element::pin)) {
+    out.markers.erase(out.markers.begin() + static_cast<std::ptrdiff_t>(first_marker), out.markers.end());
+    out.lines.erase(out.lines.begin() + static_cast<std::ptrdiff_t>(first_line), out.lines.end());
+    return;
+  }
+  std::vector<MechanismDrawList::Marker> halves;
+  for (std::size_t j = 0, m = first_marker, l = first_line; j < geometry_.joints.size(); ++j, ++m) {
+    const auto& points = geometry_.joints[j].points;
+    MechanismDrawList::Marker& marker = out.markers[m];
+    const bool guide = marker.kind == MechanismDrawList::Marker::Kind::guide;
+    if (guide) out.lines[l++].body = points[0].body;
+    marker.body = points[guide ? 1 : 0].body;
+    if (!free_body_ || guide) continue;
+    if (points[0].body < 0) {
+      marker.at = world_point(pose, points[1]);
+      marker.body = points[1].body;
+    } else if (points[1].body >= 0) {
+      halves.push_back(
+          {MechanismDrawList::Marker::Kind::pin, world_point(pose, points[1]), Vec2::UnitX(), points[1].body});
+    }
+  }
+  out.markers.insert(out.markers.end(), halves.begin(), halves.end());
 }
 
 void MechanismScene::pull_apart(std::size_t k, MechanismDrawList& out) const {

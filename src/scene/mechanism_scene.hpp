@@ -254,6 +254,8 @@ class MechanismScene {
   void add_loads(std::size_t k, MechanismDrawList& out) const;
   void add_trails(std::size_t k, MechanismDrawList& out) const;
   void add_load_arrows(std::size_t k, MechanismDrawList& out) const;
+  void place_joints(const std::vector<double>& pose, std::size_t first_marker, std::size_t first_line,
+                    MechanismDrawList& out) const;
   void pull_apart(std::size_t k, MechanismDrawList& out) const;
   [[nodiscard]] MechanismDrawList::Arrow force_arrow(MechanismDrawList::Arrow::Kind kind, const Vec2& at,
                                                      const Vec2& force, std::string label) const;
