@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <set>
 
 #include "core/error.hpp"
@@ -156,30 +157,6 @@ TEST(MechanismClip, GifAndWebmClipsMatchTheirDrawnFrames) {
       }
     }
   }
-}
-
-TEST(MechanismClip, EveryShippedMechanismGivesSvgAndPdfStills) {
-  test::TempDir dir;
-  for (const std::string& name : shipped_mechanism_names()) {
-    SCOPED_TRACE(name);
-    const sym::System system(load_mechanism(name));
-    const GiNaC::exmap initial = sym::checked_initial_state(system).state;
-    const auto svg = dir / (name + ".svg"), pdf = dir / (name + ".pdf");
-    EXPECT_EQ(produce_mechanism_clip(system, initial, small_still(svg.string())).stats.frames_drawn, 1);
-    EXPECT_EQ(produce_mechanism_clip(system, initial, small_still(pdf.string())).stats.frames_drawn, 1);
-    const std::string figure = test::read_text(svg);
-    EXPECT_EQ(test::xml_error(figure), "");
-    EXPECT_NE(figure.find("width=\"160px\""), std::string::npos) << figure.substr(0, 300);
-    EXPECT_EQ(figure.find("<image"), std::string::npos) << "a vector figure holds no bitmaps";
-    // A filled outline per body at least, besides the background.
-    std::size_t paths = 0;
-    for (std::size_t at = figure.find("<path"); at != std::string::npos; at = figure.find("<path", at + 1)) ++paths;
-    EXPECT_GT(paths, system.mechanism().bodies.size());
-    const std::string document = test::read_text(pdf);
-    EXPECT_EQ(document.rfind("%PDF-", 0), 0U);
-    EXPECT_NE(document.find("%%EOF", document.size() - 8), std::string::npos);
-  }
-  EXPECT_EQ(test::entries(dir.path()).size(), 2 * shipped_mechanism_names().size());  // no temporary left
 }
 
 TEST(MechanismClip, RejectsUnknownTrailPoints) {
@@ -611,6 +588,77 @@ TEST(MechanismClip, TrailsAreSampledFourTimesAFrame) {
     EXPECT_NEAR(trail.fade.front(), 1.0 - (motion.times[k] - motion.trail_times.front()) / 2.0, 1e-9);
     for (std::size_t j = 1; j < trail.fade.size(); ++j) EXPECT_GT(trail.fade[j], trail.fade[j - 1]);
   }
+}
+
+// Issue 23: every picture option on every shipped mechanism gives a still (SVG and PDF
+// whole and all vector), and the draw list holds what the options say.
+TEST(MechanismClip, EveryPictureOptionOnEveryShippedMechanism) {
+  test::TempDir dir;
+  using Kind = MechanismDrawList::Arrow::Kind;
+  for (const std::string& name : shipped_mechanism_names()) {
+    SCOPED_TRACE(name);
+    const sym::System system(load_mechanism(name));
+    const GiNaC::exmap initial = sym::checked_initial_state(system).state;
+    ElementSet shown = ElementSet::defaults();
+    shown.show(Element::velocity);
+    shown.show(Element::gravity);
+    shown.hide(Element::legend);
+    shown.hide(Element::labels);
+    const MechanismGeometry geometry = mechanism_geometry(system);
+    const MechanismMotion motion = clip_motion(system, 0.5, 30);
+    const MechanismScene scene(geometry, motion, {}, 2.0, {}, shown);
+    MechanismDrawList list;
+    const std::size_t bodies = geometry.bodies.size(), k = 10;
+    scene.frame(k, list);
+    const auto count = [&](Kind kind) {
+      return static_cast<std::size_t>(
+          std::count_if(list.arrows.begin(), list.arrows.end(), [&](const auto& a) { return a.kind == kind; }));
+    };
+    EXPECT_EQ(count(Kind::gravity), bodies);  // every shipped mechanism has gravity
+    std::size_t moving = 0;
+    for (std::size_t i = 0; i < bodies; ++i)
+      if (std::hypot(motion.samples[k].rates[3 * i], motion.samples[k].rates[3 * i + 1]) > 0) ++moving;
+    EXPECT_EQ(count(Kind::velocity), moving);
+    EXPECT_TRUE(list.labels.empty());
+    for (const MechanismDrawList::Arrow& arrow : list.arrows) EXPECT_EQ(arrow.label, "");
+    EXPECT_FALSE(list.shown.has(Element::legend));
+
+    const std::vector<std::pair<std::string, std::function<void(MechanismClip&)>>> options{
+        {"fbd", [](MechanismClip& c) { c.settings.free_body = true; }},
+        {"follow",
+         [](MechanismClip& c) {
+           c.settings.camera_chosen = true;
+           c.settings.camera = CameraMode::follow;
+         }},
+        {"fit",
+         [](MechanismClip& c) {
+           c.settings.camera_chosen = true;
+           c.settings.camera = CameraMode::fit;
+         }},
+        {"shown", [&](MechanismClip& c) { c.settings.elements = shown; }},
+        {"svg", [&](MechanismClip& c) { c.out = dir / (name + ".svg"); }},
+        {"pdf", [&](MechanismClip& c) { c.out = dir / (name + ".pdf"); }},
+    };
+    for (const auto& [option, apply] : options) {
+      SCOPED_TRACE(option);
+      MechanismClip clip = small_still((dir / (name + "-" + option + ".png")).string());
+      apply(clip);
+      EXPECT_EQ(produce_mechanism_clip(system, initial, clip).stats.frames_drawn, 1);
+      EXPECT_TRUE(std::filesystem::exists(*clip.out));
+    }
+    const std::string figure = test::read_text(dir / (name + ".svg"));
+    EXPECT_EQ(test::xml_error(figure), "");
+    EXPECT_NE(figure.find("width=\"160px\""), std::string::npos) << figure.substr(0, 300);
+    EXPECT_EQ(figure.find("<image"), std::string::npos) << "a vector figure holds no bitmaps";
+    // A filled outline per body at least, besides the background.
+    std::size_t paths = 0;
+    for (std::size_t at = figure.find("<path"); at != std::string::npos; at = figure.find("<path", at + 1)) ++paths;
+    EXPECT_GT(paths, bodies);
+    const std::string document = test::read_text(dir / (name + ".pdf"));
+    EXPECT_EQ(document.rfind("%PDF-", 0), 0U);
+    EXPECT_NE(document.find("%%EOF", document.size() - 8), std::string::npos);
+  }
+  EXPECT_EQ(test::entries(dir.path()).size(), 6 * shipped_mechanism_names().size());  // no temporary left
 }
 
 }  // namespace

@@ -4,13 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
-#include <functional>
 
 #include "model/mechanism_toml.hpp"
 #include "pipeline/mechanism_clip.hpp"
 #include "scene/mechanism_scene.hpp"
-#include "support/test_support.hpp"
 #include "symbolic/loop_closure.hpp"
 
 namespace linkage {
@@ -201,66 +198,6 @@ TEST(MechanismPicture, TracedPointsVelocityIsTheDerivativeOfItsPath) {
   const Vec2 drawn = velocities[3].force * velocities[3].vector.normalized();
   EXPECT_NEAR((drawn - expected).norm(), 0, 1e-5 * expected.norm());
   EXPECT_NEAR((velocities[3].tail - world_point(motion.samples[1].pose, p)).norm(), 0, 1e-12);
-}
-
-// The list, for every shipped mechanism: each picture option gives a still, and
-// the draw list holds what the option says.
-TEST(MechanismPicture, EveryOptionOnEveryShippedMechanism) {
-  test::TempDir dir;
-  for (const std::string& name : shipped_mechanism_names()) {
-    SCOPED_TRACE(name);
-    const sym::System system(load_mechanism(name));
-    const GiNaC::exmap initial = sym::checked_initial_state(system).state;
-    const MechanismGeometry geometry = mechanism_geometry(system);
-    const MechanismMotion motion = motion_of(system, 0.5, 30);
-    const std::size_t bodies = geometry.bodies.size(), k = 10;
-    ElementSet shown = ElementSet::defaults();
-    shown.show(Element::velocity);
-    shown.show(Element::gravity);
-    shown.hide(Element::legend);
-    shown.hide(Element::labels);
-    const MechanismScene scene(geometry, motion, {}, 2.0, {}, shown);
-    MechanismDrawList list;
-    scene.frame(k, list);
-    EXPECT_EQ(arrows_of(list, Kind::gravity).size(), bodies);  // every shipped mechanism has gravity
-    std::size_t moving = 0;
-    for (std::size_t i = 0; i < bodies; ++i)
-      if (std::hypot(motion.samples[k].rates[3 * i], motion.samples[k].rates[3 * i + 1]) > 0) ++moving;
-    EXPECT_EQ(arrows_of(list, Kind::velocity).size(), moving);
-    EXPECT_TRUE(list.labels.empty());
-    for (const MechanismDrawList::Arrow& arrow : list.arrows) EXPECT_EQ(arrow.label, "");
-    EXPECT_FALSE(list.shown.has(Element::legend));
-    // Each option through the whole clip: a still that is written.
-    const std::vector<std::pair<std::string, std::function<void(MechanismClip&)>>> options{
-        {"fbd", [](MechanismClip& c) { c.settings.free_body = true; }},
-        {"follow",
-         [](MechanismClip& c) {
-           c.settings.camera_chosen = true;
-           c.settings.camera = CameraMode::follow;
-         }},
-        {"fit",
-         [](MechanismClip& c) {
-           c.settings.camera_chosen = true;
-           c.settings.camera = CameraMode::fit;
-         }},
-        {"shown", [&](MechanismClip& c) { c.settings.elements = shown; }},
-        {"svg", [&](MechanismClip& c) { c.out = dir / (name + ".svg"); }},
-        {"pdf", [&](MechanismClip& c) { c.out = dir / (name + ".pdf"); }},
-    };
-    for (const auto& [option, apply] : options) {
-      SCOPED_TRACE(option);
-      MechanismClip clip;
-      clip.settings.width = 160;
-      clip.settings.height = 90;
-      clip.settings.at = 0.3;
-      clip.simulation.duration = 0.3;
-      clip.theme = load_theme("light", {}, "theme");
-      clip.out = dir / (name + "-" + option + ".png");
-      apply(clip);
-      EXPECT_EQ(produce_mechanism_clip(system, initial, clip).stats.frames_drawn, 1);
-      EXPECT_TRUE(std::filesystem::exists(*clip.out));
-    }
-  }
 }
 
 // The free-body view: every body pulled away from the others, carrying every force on it
