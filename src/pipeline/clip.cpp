@@ -12,12 +12,10 @@
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
 #include "core/number_format.hpp"
-#include "encode/png_writer.hpp"
 #include "model/kinematics.hpp"
 #include "pipeline/encode_frames.hpp"
 #include "pipeline/panel_data.hpp"
 #include "render/frame_layout.hpp"
-#include "render/vector_still.hpp"
 #include "scene/motion.hpp"
 
 namespace linkage {
@@ -164,18 +162,9 @@ void produce_still(const Clip& clip, const ClipProgress& progress, ClipResult& r
   ClipRenderer renderer(clip.inputs.params(), motion, layout.scene_settings(), clip.theme, run_label(clip.simulation),
                         overlay_words(clip, homework_overlays(clip, options, times, result)));
   const std::size_t last = times.size() - 1;
-  if (clip.out_kind() == OutputKind::png) {
-    Frame frame(s.width, s.height);
-    layout.draw(last, s.at, frame, [&](Frame& scene) { renderer.draw(last, scene); });
-    write_png(frame, *clip.out, "out");
-    ++result.stats.png_files_written;
-  } else {
-    write_vector_still(
-        [&](cairo_t* cr) {
-          layout.draw_vector(last, s.at, cr, [&](cairo_t* scene) { renderer.draw_vector(last, scene); });
-        },
-        clip.out_kind(), s.width, s.height, *clip.out, "out");
-  }
+  write_still(
+      layout, last, s.at, s, *clip.out, [&](Frame& scene) { renderer.draw(last, scene); },
+      [&](cairo_t* scene) { renderer.draw_vector(last, scene); }, result);
   add_drawing(result.stats, renderer);
 }
 

@@ -5,6 +5,7 @@
 #include "encode/frame_pipeline.hpp"
 #include "encode/png_writer.hpp"
 #include "encode/video_writer.hpp"
+#include "render/vector_still.hpp"
 
 namespace linkage {
 
@@ -50,6 +51,21 @@ void encode_frames(const std::optional<std::filesystem::path>& video_out,
     result.video_bytes = video->stats().bytes;
     result.encoder = video->encoder_name();
     if (!video->note().empty()) result.notes.push_back(video->note());
+  }
+}
+
+void write_still(FrameLayout& layout, std::size_t index, double t, const RenderSettings& settings,
+                 const std::filesystem::path& out, const std::function<void(Frame&)>& raster,
+                 const std::function<void(cairo_t*)>& vector, ClipResult& result) {
+  const OutputKind kind = output_kind(out, "out");
+  if (kind == OutputKind::png) {
+    Frame frame(settings.width, settings.height);
+    layout.draw(index, t, frame, raster);
+    write_png(frame, out, "out");
+    ++result.stats.png_files_written;
+  } else {
+    write_vector_still([&](cairo_t* cr) { layout.draw_vector(index, t, cr, vector); }, kind, settings.width,
+                       settings.height, out, "out");
   }
 }
 

@@ -9,6 +9,7 @@
 
 #include "core/frame.hpp"
 #include "pipeline/clip.hpp"
+#include "render/frame_layout.hpp"
 
 namespace linkage {
 
@@ -19,5 +20,12 @@ void encode_frames(const std::optional<std::filesystem::path>& video,
                    const std::optional<std::filesystem::path>& frames, const RenderSettings& settings, long count,
                    const std::function<void(std::size_t, Frame&)>& draw, const ClipProgress& progress,
                    ClipResult& result);
+
+/// One still, frame `index` at time `t` of `layout`, into `out`: a PNG, with `raster`
+/// drawing the motion into the scene's buffer, or an SVG or PDF, with `vector` drawing it
+/// onto the vector surface's context; counts a PNG written in `result`.
+void write_still(FrameLayout& layout, std::size_t index, double t, const RenderSettings& settings,
+                 const std::filesystem::path& out, const std::function<void(Frame&)>& raster,
+                 const std::function<void(cairo_t*)>& vector, ClipResult& result);
 
 }  // namespace linkage

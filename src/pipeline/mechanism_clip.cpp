@@ -11,7 +11,6 @@
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
 #include "core/number_format.hpp"
-#include "encode/png_writer.hpp"
 #include "integrate/mechanism_columns.hpp"
 #include "integrate/mechanism_simulation.hpp"
 #include "model/mechanism_toml.hpp"
@@ -102,7 +101,8 @@ class MechanismFrames {
  public:
   MechanismFrames(const MechanismGeometry& geometry, const MechanismMotion& motion, const MechanismClip& clip,
                   const RenderSettings& settings, const std::vector<Overlay>& overlays, std::string ensemble_row)
-      : scene_(geometry, motion, resolve_trails(geometry, clip.trails), kTrailSeconds, clip.settings.arrow_scale),
+      : scene_(geometry, motion, resolve_trails(geometry, clip.trails), kTrailSeconds, clip.settings.arrow_scale,
+               clip.settings.elements, clip.settings.free_body),
         motion_(motion),
         settings_(settings),
         labels_{clip.settings.title, run_label(clip.simulation)},
@@ -115,29 +115,34 @@ class MechanismFrames {
                   centre_compared_ && !scene_.geometry().grounded() ? ", about this run's centroid" : ""});
     style_.theme = &clip.theme;
     style_.u = DrawStyle::unit_for(settings_.width, settings_.height);
-    follow_ = !scene_.geometry().grounded();
-    View view = follow_ ? view_around(scene_.centroid(0), (1 + kMargin) * scene_.view_reach())
-                        : view_of(scene_.view_bounds(), kMargin);
-    // Room at the top for the title and the time, which would hide what is under them.
-    if (!follow_) view.ymax += kTitleBand * (view.ymax - view.ymin);
-    camera_ = Camera(view, settings_.width, settings_.height);
+    const CameraMode mode = mechanism_camera_mode(settings_, scene_.geometry());
+    follow_ = mode == CameraMode::follow;
+    camera_ = mechanism_camera(scene_, settings_, mode);
     scene_.set_shortest_arrow(least_visible_arrow_px(style_) / camera_.scale(),
                               stretched_arrow_px(style_) / camera_.scale());
   }
 
   void draw(std::size_t k, Frame& frame) {
+    const cairo::SurfacePtr surface = cairo::surface_for(frame);
+    const cairo::ContextPtr cr = cairo::context(surface.get());
+    paint(k, cr.get());
+    cairo::check(cr.get(), "drawing a frame");
+    cairo_surface_flush(surface.get());
+  }
+
+  /// Sample k onto any surface's context (a vector still's), at the origin.
+  void paint(std::size_t k, cairo_t* cr) {
     const auto start = std::chrono::steady_clock::now();
     scene_.frame(k, list_);
     add_ghosts(k);
     const Camera camera = follow_ ? camera_.centred_at(scene_.centroid(k)) : camera_;
     // The camera a frame earlier (the samples are a frame apart): the grid streaks from there.
     const Camera earlier = follow_ && k > 0 ? camera_.centred_at(scene_.centroid(k - 1)) : camera;
-    const cairo::SurfacePtr surface = cairo::surface_for(frame);
-    const cairo::ContextPtr cr = cairo::context(surface.get());
-    paint_mechanism_frame(cr.get(), style_, camera, list_, labels_, motion_.times[k], settings_.width, settings_.height,
+    cairo_save(cr);
+    paint_mechanism_frame(cr, style_, camera, list_, labels_, motion_.times[k], settings_.width, settings_.height,
                           &earlier);
-    cairo::check(cr.get(), "drawing a frame");
-    cairo_surface_flush(surface.get());
+    cairo_restore(cr);
+    cairo::check(cr, "drawing a frame");
     ++stats_.frames_drawn;
     stats_.draw_seconds += seconds_since(start);
   }
@@ -232,15 +237,37 @@ void produce_still(const sym::System& system, const GiNaC::exmap& initial, const
   FrameLayout layout(s, clip.theme, std::move(panel));
   MechanismFrames frames(mechanism_geometry(system), motion, clip, layout.scene_settings(), overlays,
                          ensemble_label(system, clip));
-  Frame frame(s.width, s.height);
   const std::size_t last = times.size() - 1;
-  layout.draw(last, s.at, frame, [&](Frame& scene) { frames.draw(last, scene); });
-  write_png(frame, *clip.out, "out");
-  ++result.stats.png_files_written;
+  write_still(
+      layout, last, s.at, s, *clip.out, [&](Frame& scene) { frames.draw(last, scene); },
+      [&](cairo_t* scene) { frames.paint(last, scene); }, result);
   add_drawing(result.stats, frames.stats());
 }
 
 }  // namespace
+
+CameraMode mechanism_camera_mode(const RenderSettings& settings, const MechanismGeometry& geometry) {
+  if (settings.camera_chosen) return settings.camera;
+  return geometry.grounded() ? CameraMode::fit : CameraMode::follow;
+}
+
+Camera mechanism_camera(const MechanismScene& scene, const RenderSettings& settings, CameraMode mode) {
+  View view;
+  switch (mode) {
+    case CameraMode::follow:
+      view = view_around(scene.centroid(0), (1 + kMargin) * scene.view_reach());
+      break;
+    case CameraMode::fixed:
+      view = settings.view;
+      break;
+    case CameraMode::fit:
+      view = view_of(scene.view_bounds(), kMargin);
+      // Room at the top for the title and the time, which would hide what is under them.
+      view.ymax += kTitleBand * (view.ymax - view.ymin);
+      break;
+  }
+  return {view, settings.width, settings.height};
+}
 
 MechanismMotion sample_mechanism_motion(const sym::System& system, const GiNaC::exmap& initial,
                                         const SimulationOptions& options, const std::vector<double>& frame_times,
@@ -420,7 +447,7 @@ std::vector<GiNaC::exmap> ensemble_states(const sym::System& system, const GiNaC
   return states;
 }
 
-bool MechanismClip::is_still() const { return out && output_kind(*out, "out") == OutputKind::png; }
+bool MechanismClip::is_still() const { return out && linkage::is_still(output_kind(*out, "out")); }
 
 void MechanismClip::validate(const sym::System& system) const {
   if (!out && !frames) throw Error::invalid("out", "a clip needs an output file or a frames folder");
@@ -428,10 +455,7 @@ void MechanismClip::validate(const sym::System& system) const {
   if (out) {
     if (fs::is_directory(*out, ec))
       throw Error::invalid("out", "'" + out->string() + "' is a folder, expected a file name");
-    const OutputKind kind = output_kind(*out, "out");
-    if (!is_video(kind) && kind != OutputKind::png)
-      throw Error::invalid("out",
-                           "a mechanism renders to .mp4, .gif, .webm or .png (vector stills are the homework's only)");
+    (void)output_kind(*out, "out");
   }
   settings.validate();
   simulation.validate();

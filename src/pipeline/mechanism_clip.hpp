@@ -1,10 +1,10 @@
 #pragma once
 // Any mechanism's clip: simulate (MechanismSimulation), build each frame's drawing
 // (scene/mechanism_scene), paint it (render/mechanism_painter) and encode it, as
-// produce_clip does for the homework: an MP4, a numbered PNG sequence, or one PNG still
-// at settings.at. Outputs appear whole or not at all. Uses settings' size, fps,
-// duration, speed, at and title; the homework's elements and camera modes do not apply
-// (the camera fits the whole motion, or follows a floating mechanism's centroid).
+// produce_clip does for the homework: an MP4, a numbered PNG sequence, or one still
+// (PNG, SVG or PDF) at settings.at. Outputs appear whole or not at all. Uses settings' size, fps,
+// duration, speed, at, title, shown elements, arrow scales and camera (by default it fits
+// the whole motion of a grounded mechanism and follows a floating one's centroid).
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -54,7 +54,7 @@ struct MechanismClip {
   RenderSettings settings;
   Theme theme;
   std::vector<std::string> trails;              // "BODY.POINT": paths over the last 2 s
-  std::optional<std::filesystem::path> out;     // .mp4 or .png (a still)
+  std::optional<std::filesystem::path> out;     // .mp4, .gif, .webm, or a still: .png, .svg, .pdf
   std::optional<std::filesystem::path> frames;  // a numbered PNG sequence's folder
   int ensemble = 0;                             // 0, or 2..200 runs (the main one among them)
   double spread = 1e-6;                         // the ensemble's largest offset of the first coordinate
@@ -65,6 +65,14 @@ struct MechanismClip {
   /// about "out", "frames", "size", ...; Error::input naming --trail for a bad point.
   void validate(const sym::System& system) const;
 };
+
+/// The camera `settings` ask for (camera_chosen), else fit for a grounded mechanism and
+/// follow for a floating one.
+[[nodiscard]] CameraMode mechanism_camera_mode(const RenderSettings& settings, const MechanismGeometry& geometry);
+/// The camera of the first frame for `mode`: follow, about the centroid at the zoom that
+/// holds the widest reach (each frame re-centres it on scene.centroid(k)); fixed,
+/// settings.view; fit, the whole motion and its arrows with a band on top for the title.
+[[nodiscard]] Camera mechanism_camera(const MechanismScene& scene, const RenderSettings& settings, CameraMode mode);
 
 /// The motion at `frame_times` (increasing) from one run; with `trail_steps` > 1 also the
 /// poses at that many steps per frame interval (trail_times, the frame times among them),

@@ -29,7 +29,7 @@ struct RenderDraft {
 
 namespace {
 
-constexpr std::array<std::string_view, 2> kMechanismArrowKinds{"joint", "applied"};
+constexpr std::array<std::string_view, 5> kMechanismArrowKinds{"joint", "applied", "gravity", "spring", "velocity"};
 
 /// Runs `parse`, whose errors are worded "NAME: ...", and makes them the setting's.
 template <typename Parse>
@@ -41,14 +41,6 @@ auto as_setting(const std::string& name, Parse parse) {
     if (!e.setting().empty() || what.rfind(name + ": ", 0) != 0) throw;
     throw Error::invalid(name, what.substr(name.size() + 2));
   }
-}
-
-/// The homework's picture options have no meaning for a mechanism's: an error, not ignored.
-void homework_only(const RenderDraft& d, std::string_view name) {
-  if (d.target.mechanism)
-    throw Error::invalid(std::string(name),
-                         "applies to the homework only; a mechanism's picture is fixed and its camera fits the whole "
-                         "motion (or follows a floating mechanism)");
 }
 
 void quality(RenderDraft& d, const std::string& text) {
@@ -79,30 +71,15 @@ void at(RenderDraft& d, const std::string& text) {
 }
 
 void camera(RenderDraft& d, const std::string& text) {
-  homework_only(d, "camera");
   (void)parse_camera(text, "camera");
   d.camera = text;
 }
 
-void view(RenderDraft& d, const std::string& text) {
-  homework_only(d, "view");
-  d.view = text;
-}
+void view(RenderDraft& d, const std::string& text) { d.view = text; }
 
-void show(RenderDraft& d, const std::string& text) {
-  if (d.target.mechanism)
-    for (const std::string& item : split_commas(text))
-      if (item != "equations")
-        throw Error::invalid("show", "'" + item +
-                                         "' applies to the homework only; a mechanism's picture shows only equations "
-                                         "besides its own (it is fixed, and its camera fits the whole motion)");
-  d.show.push_back(text);
-}
+void show(RenderDraft& d, const std::string& text) { d.show.push_back(text); }
 
-void hide(RenderDraft& d, const std::string& text) {
-  homework_only(d, "hide");
-  d.hide.push_back(text);
-}
+void hide(RenderDraft& d, const std::string& text) { d.hide.push_back(text); }
 
 void theme(RenderDraft& d, const std::string& text) {
   check_theme_name(text, "theme");
@@ -176,20 +153,20 @@ std::vector<RenderOption> make_options() {
       {"speed", V::number, "number", "X", "1", "Simulated seconds per second of video; below 1 is slow motion", speed},
       {"at", V::number, "number", "S", "0", "The time in s a still shows; a clip shows 0 .. duration", at},
       {"camera", V::string, "string", "MODE", "\"follow\" (\"fixed\" with a view)",
-       "follow (keeps the falling centre of mass in view), fixed (shows the view) or fit (the whole motion); the "
-       "homework's",
+       "follow (keeps the falling centre of mass in view), fixed (shows the view) or fit (the whole motion); a "
+       "mechanism's default: fit when grounded, follow when floating",
        camera},
       {"view", V::string, "string", "X0,Y0,X1,Y1|fbd", "none",
        "World rectangle xmin,ymin,xmax,ymax in metres for the fixed camera (implied by it), or fbd: the free-body "
-       "view (the blocks drawn apart at the pin, each with its forces); the homework's",
+       "view (the bodies drawn apart at their joints, each with every force on it)",
        view},
       {"show", V::list, "list of strings", "LIST", "none",
        "Elements to show (comma-separated): " + element_name_list() +
-           "; equations draws the case's equations under the motion as `linkage solve` prints them (the only "
-           "element a mechanism takes)",
+           "; equations draws the case's equations under the motion as `linkage solve` prints them; a "
+           "mechanism's bodies, joints and joint-force are blocks, pin and pin-force",
        show},
       {"hide", V::list, "list of strings", "LIST", "none",
-       "Elements to hide; the default shows all but velocity, axes and equations; the homework's", hide},
+       "Elements to hide; the default shows all but velocity, axes and equations", hide},
       {"theme", V::string, "string", "NAME", "\"light\"",
        "Colours: " + theme_name_list() + " (palettes in assets/themes)", theme},
       {"title", V::string, "string", "TEXT", "the render default",
@@ -197,7 +174,8 @@ std::vector<RenderOption> make_options() {
       {"arrow_scale", V::string, "string", "SPEC", "each kind its own",
        "Arrow lengths: each kind its own scale (default); common (every force one scale, so the pin force reads "
        "against gravity; common=N_PER_CM sets it); KIND=N_PER_CM,... fixes kinds (pin, gravity, velocity; a "
-       "mechanism's joint, applied). Arrows too short to see are drawn dashed at a least length, labelled with "
+       "mechanism's joint, applied, gravity, spring, velocity). Arrows too short to see are drawn dashed at a least "
+       "length, labelled with "
        "their value",
        arrow_scale},
       {"panel", V::list, "list of strings", "LIST", "none",
@@ -245,6 +223,7 @@ RenderRequest resolve_render_options(const std::vector<std::pair<std::string, st
   s.free_body = d.view == "fbd";
   const std::string rectangle = s.free_body ? "" : d.view.value_or("");
   s.camera = d.camera ? parse_camera(*d.camera, "camera") : rectangle.empty() ? CameraMode::follow : CameraMode::fixed;
+  s.camera_chosen = d.camera.has_value() || !rectangle.empty();
   if (!rectangle.empty()) {
     s.view = parse_view(rectangle, "view");
     if (s.camera != CameraMode::fixed)
@@ -256,8 +235,7 @@ RenderRequest resolve_render_options(const std::vector<std::pair<std::string, st
   apply_show_hide(s.elements, d.show, d.hide);
   s.validate();
   if (d.at && !target.still)
-    throw Error::invalid("at", "applies to a still (" + target.spell("out") +
-                                   (target.mechanism ? " FILE.png" : " FILE.png, .svg or .pdf") +
+    throw Error::invalid("at", "applies to a still (" + target.spell("out") + " FILE.png, .svg or .pdf" +
                                    "); a clip shows 0 .. " + target.spell("duration"));
   return std::move(d.request);
 }

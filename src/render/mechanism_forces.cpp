@@ -15,6 +15,9 @@ using List = MechanismDrawList;
 
 constexpr const char* kJointName = "joint forces";
 constexpr const char* kAppliedName = "applied forces";
+constexpr const char* kGravityName = "gravity";
+constexpr const char* kSpringName = "spring forces";
+constexpr const char* kVelocityName = "velocity";
 constexpr const char* kCutNote = "cut short: its label gives the value";
 constexpr const char* kStretchedNote = "dashed: too short to see at its scale, drawn longer; its label gives the value";
 
@@ -102,8 +105,25 @@ Vec2 legend_rows(cairo_t* cr, const DrawStyle& style, const Camera& camera, cons
   const text::Metrics m = text::metrics(cr, font);
   const double u = style.u, row = 1.7 * font.size;
   double names = 0;
-  if (legend.joint) names = std::max(names, text::width(cr, font, kJointName));
-  if (legend.applied) names = std::max(names, text::width(cr, font, kAppliedName));
+  const auto row_name = [](List::Arrow::Kind kind) {
+    switch (kind) {
+      case List::Arrow::Kind::joint:
+        return kJointName;
+      case List::Arrow::Kind::applied:
+        return kAppliedName;
+      case List::Arrow::Kind::gravity:
+        return kGravityName;
+      case List::Arrow::Kind::spring:
+        return kSpringName;
+      case List::Arrow::Kind::velocity:
+        return kVelocityName;
+    }
+    return kJointName;
+  };
+  const bool forces = legend.metres > 0;
+  if (forces && legend.joint) names = std::max(names, text::width(cr, font, kJointName));
+  if (forces && legend.applied) names = std::max(names, text::width(cr, font, kAppliedName));
+  for (const List::Legend::Row& r : legend.rows) names = std::max(names, text::width(cr, font, row_name(r.kind)));
   double y = at.y(), widest = 0;
   const auto baseline = [&] { return y + 0.5 * row + 0.5 * (m.ascent - m.descent); };
   const auto scale_row = [&](const char* name, const Rgba& colour, double metres, const std::string& value,
@@ -132,16 +152,18 @@ Vec2 legend_rows(cairo_t* cr, const DrawStyle& style, const Camera& camera, cons
     widest = std::max(widest, 46 * u + text::width(cr, font, note));
     y += row;
   };
-  if (legend.joint) scale_row(kJointName, theme.pin_force, legend.metres, legend.value, legend.joint_scale);
-  if (legend.applied)
+  if (forces && legend.joint) scale_row(kJointName, theme.pin_force, legend.metres, legend.value, legend.joint_scale);
+  if (forces && legend.applied)
     scale_row(kAppliedName, theme.velocity, legend.applied_metres, legend.applied_value, legend.applied_scale);
+  for (const List::Legend::Row& r : legend.rows)
+    scale_row(row_name(r.kind), arrow_colour(theme, r.kind), r.metres, r.value, r.scale);
   if (legend.cut) marked_row(kCutNote, true);
   if (legend.stretched) marked_row(kStretchedNote, false);
   return {widest, y - at.y()};
 }
 
 Rect legend_rect(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List::Legend& legend, int height) {
-  if (!(legend.metres > 0) || !(legend.joint || legend.applied)) return {};
+  if ((!(legend.metres > 0) || !(legend.joint || legend.applied)) && legend.rows.empty()) return {};
   const double pad = 8 * style.u;
   const Vec2 content = legend_rows(cr, style, camera, legend, Vec2::Zero(), false);
   const double h = content.y() + 2 * 0.6 * pad;
@@ -169,7 +191,7 @@ void paint_legend(cairo_t* cr, const DrawStyle& style, const Camera& camera, con
 ForceLayout layout_forces(cairo_t* cr, const DrawStyle& style, const Camera& camera, const MechanismDrawList& list,
                           int width, int height, const std::vector<Rect>& occupied) {
   ForceLayout layout;
-  layout.legend = legend_rect(cr, style, camera, list.legend, height);
+  if (list.shown.has(Element::legend)) layout.legend = legend_rect(cr, style, camera, list.legend, height);
   Obstacles obstacles;
   obstacles.boxes = occupied;
   if (!layout.legend.empty()) obstacles.boxes.push_back(layout.legend);
@@ -231,11 +253,13 @@ ForceLayout layout_forces(cairo_t* cr, const DrawStyle& style, const Camera& cam
                                     static_cast<int>(outline.body)});
 
   const text::Font font = label_font(style);
-  const auto add = [&](const std::string& text, const Vec2& head, const Vec2& direction, bool applied) {
+  const auto add = [&](const std::string& text, const Vec2& head, const Vec2& direction, List::Arrow::Kind kind) {
+    if (text.empty()) return;  // labels hidden
     const Rect size = box_around(cr, style, font, text, head);
     const Placement at =
         place_label(size, head, direction, {obstacles.boxes, obstacles.segments}, style, width, height);
-    PlacedLabel placed{at.box, head, text, applied, at.leader};
+    const bool applied = kind == List::Arrow::Kind::applied;
+    PlacedLabel placed{at.box, head, text, applied, at.leader, kind};
     obstacles.boxes.push_back(placed.box);
     layout.labels.push_back(std::move(placed));
   };
@@ -243,19 +267,34 @@ ForceLayout layout_forces(cairo_t* cr, const DrawStyle& style, const Camera& cam
   for (const List::Arrow& arrow : list.arrows) {
     const Vec2 tail = camera.to_pixels(arrow.tail), tip = camera.to_pixels(arrow.tail + arrow.vector);
     // A stub too short to say whose it is goes unlabelled; an applied load never does.
-    if (arrow.kind == List::Arrow::Kind::joint && (tip - tail).norm() < tall) continue;
+    if (arrow.kind != List::Arrow::Kind::applied && (tip - tail).norm() < tall) continue;
     const Vec2 along = tip - tail;
-    add(arrow.label, tip, along.norm() > 0 ? Vec2(along.normalized()) : Vec2(0, -1),
-        arrow.kind == List::Arrow::Kind::applied);
+    add(arrow.label, tip, along.norm() > 0 ? Vec2(along.normalized()) : Vec2(0, -1), arrow.kind);
   }
   for (const List::Torque& torque : list.torques) {
     // Outside the arc's middle, away from the body.
     const double middle = torque.start + 0.5 * torque.sweep;
     const Vec2 out(std::cos(middle), std::sin(middle));
     const Vec2 head = camera.to_pixels(torque.centre + torque.radius * out);
-    add(torque.label, head, Vec2(out.x(), -out.y()), true);
+    add(torque.label, head, Vec2(out.x(), -out.y()), List::Arrow::Kind::applied);
   }
   return layout;
+}
+
+const Rgba& arrow_colour(const Theme& theme, MechanismDrawList::Arrow::Kind kind) {
+  switch (kind) {
+    case List::Arrow::Kind::joint:
+      return theme.pin_force;
+    case List::Arrow::Kind::applied:
+    case List::Arrow::Kind::velocity:  // as the homework's; applied loads and velocities are not shown together by
+                                       // default
+      return theme.velocity;
+    case List::Arrow::Kind::gravity:
+      return theme.gravity;
+    case List::Arrow::Kind::spring:
+      return theme.trail;
+  }
+  return theme.pin_force;
 }
 
 void paint_forces(cairo_t* cr, const DrawStyle& style, const Camera& camera, const MechanismDrawList& list,
@@ -263,7 +302,7 @@ void paint_forces(cairo_t* cr, const DrawStyle& style, const Camera& camera, con
   const Theme& theme = *style.theme;
   for (const List::Torque& torque : list.torques) paint_torque(cr, style, camera, torque);
   for (const List::Arrow& arrow : list.arrows) {
-    const Rgba& colour = arrow.kind == List::Arrow::Kind::applied ? theme.velocity : theme.pin_force;
+    const Rgba& colour = arrow_colour(theme, arrow.kind);
     const Vec2 tail = camera.to_pixels(arrow.tail), tip = camera.to_pixels(arrow.tail + arrow.vector);
     if (arrow.stretched)
       paint_stretched_arrow(cr, style, tail, tip, colour);
@@ -274,7 +313,7 @@ void paint_forces(cairo_t* cr, const DrawStyle& style, const Camera& camera, con
   // Labels after every arrow, so no shaft crosses a label.
   const text::Font font = label_font(style);
   for (const PlacedLabel& label : layout.labels) {
-    const Rgba& colour = label.applied ? theme.velocity : theme.pin_force;
+    const Rgba& colour = arrow_colour(theme, label.kind);
     const Vec2 at = centre_of(label.box);
     if (label.leader) {
       // A thin line from the head to the box's nearest point.

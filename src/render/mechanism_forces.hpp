@@ -21,8 +21,9 @@ struct PlacedLabel {
   Rect box;
   Vec2 head = Vec2::Zero();
   std::string text;
-  bool applied = false;  // an applied load's colour, else a joint force's
+  bool applied = false;  // an applied load's, else a joint force's or another kind's
   bool leader = false;   // moved off its head far enough to need a line to it
+  MechanismDrawList::Arrow::Kind kind = MechanismDrawList::Arrow::Kind::joint;  // its colour
 };
 
 struct ForceLayout {
@@ -39,6 +40,9 @@ struct ForceLayout {
 [[nodiscard]] ForceLayout layout_forces(cairo_t* cr, const DrawStyle& style, const Camera& camera,
                                         const MechanismDrawList& list, int width, int height,
                                         const std::vector<Rect>& occupied);
+
+/// The colour of an arrow of `kind`.
+[[nodiscard]] const Rgba& arrow_colour(const Theme& theme, MechanismDrawList::Arrow::Kind kind);
 
 /// The arrows and torque arcs, then the laid-out labels and the legend.
 void paint_forces(cairo_t* cr, const DrawStyle& style, const Camera& camera, const MechanismDrawList& list,

@@ -206,6 +206,9 @@ void paint_markers(cairo_t* cr, const DrawStyle& style, const Camera& camera, co
       case List::Marker::Kind::guide:
         paint_guide(cr, style, at, marker.direction);
         break;
+      case List::Marker::Kind::com:
+        paint_com_symbol(cr, style, at, style.com_radius());
+        break;
     }
   }
 }
@@ -259,11 +262,14 @@ Rect paint_time(cairo_t* cr, const DrawStyle& style, double t, const MechanismLa
 
 void paint_mechanism_frame(cairo_t* cr, const DrawStyle& style, const Camera& camera, const MechanismDrawList& list,
                            const MechanismLabels& labels, double t, int width, int height, const Camera* earlier) {
+  const ElementSet& shown = list.shown;
   paint_background(cr, style, width, height);
   // Grid lines fixed in the world: a following camera shows the motion against them.
   GridSpec grid;
   grid.spacing = grid_spacing_for(camera, width, height);
-  paint_grid(cr, style, camera, grid, width, height, earlier);  // streaking past a following camera
+  if (shown.has(Element::grid))
+    paint_grid(cr, style, camera, grid, width, height, earlier);  // streaking past a following camera
+  if (shown.has(Element::axes)) paint_axes(cr, style, camera, grid, width, height, {});
   cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
   paint_lines(cr, style, camera, list, List::Line::Kind::trail);
   paint_lines(cr, style, camera, list, List::Line::Kind::rail);
@@ -277,8 +283,10 @@ void paint_mechanism_frame(cairo_t* cr, const DrawStyle& style, const Camera& ca
   paint_markers(cr, style, camera, list, List::Marker::Kind::ground);
   paint_markers(cr, style, camera, list, List::Marker::Kind::guide);
   paint_markers(cr, style, camera, list, List::Marker::Kind::pin);
-  std::vector<Rect> occupied{paint_time(cr, style, t, labels, width)};
-  if (!labels.title.empty()) {
+  paint_markers(cr, style, camera, list, List::Marker::Kind::com);
+  std::vector<Rect> occupied;
+  if (shown.has(Element::hud)) occupied.push_back(paint_time(cr, style, t, labels, width));
+  if (!labels.title.empty() && shown.has(Element::title)) {
     const TitleLayout title = title_layout(cr, style, labels.title, width);
     paint_title(cr, style, labels.title, title);
     occupied.push_back(title.rect);

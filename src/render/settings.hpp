@@ -60,7 +60,8 @@ struct RenderSettings {
   double at = 0;                             // s, the time a still shows
   ElementSet elements = ElementSet::defaults();
   CameraMode camera = CameraMode::follow;
-  View view;  // for CameraMode::fixed
+  bool camera_chosen = false;  // camera (or a view) given: a mechanism's default depends on it
+  View view;                   // for CameraMode::fixed
   std::string theme = "light";
   std::string title = "Two blocks joined by a pin, falling freely";
   std::vector<std::string> panel;     // quantities plotted beside the motion (column names)

@@ -35,6 +35,8 @@ Element parse_element(std::string_view text, const std::string& origin) {
     if (info.name == text) return info.element;
     names.emplace_back(info.name);
   }
+  for (const auto& [alias, element] : kElementAliases)
+    if (alias == text) return element;
   throw Error::invalid(origin, "'" + std::string(text) + "' is not an element" + did_you_mean(text, names) +
                                    "; valid: " + element_name_list());
 }

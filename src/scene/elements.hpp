@@ -6,25 +6,28 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace linkage {
 
 enum class Element : std::uint8_t {
-  blocks,     // the two blocks, true size, semi-transparent so their overlap shows
-  pin,        // the pin P
-  pin_force,  // the pin force on block 1 at P and its opposite on block 2
-  gravity,    // m g at each centre of mass
-  velocity,   // velocity of each centre of mass
-  trail,      // the fading path of P
-  com,        // both centres of mass and the system's
-  grid,       // a metric grid
-  axes,       // coordinate ticks in metres along two frame edges
-  hud,        // time, case, integrator, energy and constraint errors
-  legend,     // what each colour is, arrow scales, the grid spacing
-  labels,     // "1", "2" on the blocks and names on the arrows
-  title,      // the title line
-  equations,  // the case's equations as `linkage solve` prints them, in a band under the motion
+  blocks,        // the two blocks, true size, semi-transparent so their overlap shows
+  pin,           // the pin P
+  pin_force,     // the pin force on block 1 at P and its opposite on block 2
+  gravity,       // m g at each centre of mass
+  velocity,      // velocity of each centre of mass
+  trail,         // the fading path of P
+  com,           // both centres of mass and the system's
+  grid,          // a metric grid
+  axes,          // coordinate ticks in metres along two frame edges
+  hud,           // time, case, integrator, energy and constraint errors
+  legend,        // what each colour is, arrow scales, the grid spacing
+  labels,        // "1", "2" on the blocks and names on the arrows
+  title,         // the title line
+  equations,     // the case's equations as `linkage solve` prints them, in a band under the motion
+  spring_force,  // a mechanism's spring (and damper) force on each body at its end
+  loads,         // a mechanism's applied forces and torques
 };
 
 struct ElementInfo {
@@ -33,7 +36,7 @@ struct ElementInfo {
   bool shown_by_default;
 };
 
-inline constexpr std::array<ElementInfo, 14> kElements{{
+inline constexpr std::array<ElementInfo, 16> kElements{{
     {Element::blocks, "blocks", true},
     {Element::pin, "pin", true},
     {Element::pin_force, "pin-force", true},
@@ -48,6 +51,15 @@ inline constexpr std::array<ElementInfo, 14> kElements{{
     {Element::labels, "labels", true},
     {Element::title, "title", true},
     {Element::equations, "equations", false},
+    {Element::spring_force, "spring-force", true},
+    {Element::loads, "loads", true},
+}};
+
+/// Other spellings a mechanism's picture reads more naturally with.
+inline constexpr std::array<std::pair<std::string_view, Element>, 3> kElementAliases{{
+    {"bodies", Element::blocks},
+    {"joints", Element::pin},
+    {"joint-force", Element::pin_force},
 }};
 
 /// A set of elements (a bit per element).

@@ -13,6 +13,7 @@ namespace {
 constexpr int kDiscSides = 48;
 constexpr int kCapSides = 8;               // per round end of a rod
 constexpr int kSpringTurns = 8;            // fixed, so the coil visibly stretches and compresses
+constexpr double kApart = 0.5;             // the free-body view's spread, of each centre's distance from the centroid
 constexpr double kTypicalShare = 1.0 / 6;  // a typical frame's largest force arrow, of the extent
 constexpr double kCapFactor = 1.5;         // arrows longer than this times the typical are cut
 // "Typical": the upper quartile. The 90th percentile is still a peak for a four-bar
@@ -148,7 +149,44 @@ MechanismGeometry mechanism_geometry(const sym::System& system) {
     g.forces.push_back({point_of(system, f.body, f.point), in_time(f.value.x), in_time(f.value.y)});
   for (const AppliedTorque& t : m.torques) g.torques.push_back({m.body_index(t.body), in_time(t.value)});
   g.time = system.time();
+  // Gravity and springs as the System states them (one source of truth), compiled once.
+  std::vector<GiNaC::ex> outputs;
+  const auto numeric = [&](const GiNaC::ex& e) {
+    return e.subs(system.lengths())
+        .subs(system.lengths())
+        .subs(system.constants())
+        .subs(system.constants())
+        .subs(system.parameter_values());
+  };
+  for (const sym::Load& load : system.loads()) {
+    const bool gravity = load.source == "gravity";
+    const bool spring =
+        std::any_of(m.springs.begin(), m.springs.end(), [&](const Spring& s) { return s.name == load.source; });
+    if (load.body < 0 || !(gravity || spring)) continue;
+    g.loads.push_back({load.body, gravity, gravity ? std::string() : load.source});
+    for (const GiNaC::ex& e : {load.force.x, load.force.y, load.point.x, load.point.y}) outputs.push_back(numeric(e));
+  }
+  std::vector<GiNaC::symbol>& inputs = g.inputs;
+  for (const sym::BodySystem& b : system.bodies())
+    for (const sym::CoordinateSymbols* c : {&b.x, &b.y, &b.theta}) inputs.push_back(c->q);
+  for (const sym::BodySystem& b : system.bodies())
+    for (const sym::CoordinateSymbols* c : {&b.x, &b.y, &b.theta}) inputs.push_back(c->q_dot);
+  inputs.push_back(system.time());
+  if (!outputs.empty()) g.load_values = eval::compile(outputs, inputs);
+  for (std::size_t i = 0; i < m.bodies.size(); ++i) {
+    g.point_velocities.emplace_back();
+    for (const NamedPoint& p : m.bodies[i].points) {
+      const sym::Vec2 r = system.point_position(static_cast<int>(i), p.name);
+      g.point_velocities.back().push_back({numeric(system.time_derivative(r.x)), numeric(system.time_derivative(r.y))});
+    }
+  }
   return g;
+}
+
+void load_inputs(const eval::MechanismSample& sample, double t, std::vector<double>& inputs) {
+  inputs.assign(sample.pose.begin(), sample.pose.end());
+  inputs.insert(inputs.end(), sample.rates.begin(), sample.rates.end());
+  inputs.push_back(t);
 }
 
 Vec2 world_point(const std::vector<double>& pose, const BodyPoint& p) {
@@ -231,15 +269,45 @@ void MechanismDrawList::clear() {
 }
 
 MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion& motion, std::vector<BodyPoint> trails,
-                               double trail_seconds, const ArrowScaleRequest& arrows)
-    : geometry_(std::move(geometry)), motion_(motion), trails_(std::move(trails)), trail_seconds_(trail_seconds) {
+                               double trail_seconds, const ArrowScaleRequest& arrows, ElementSet shown, bool free_body)
+    : geometry_(std::move(geometry)),
+      motion_(motion),
+      trails_(std::move(trails)),
+      trail_seconds_(trail_seconds),
+      shown_(shown),
+      free_body_(free_body) {
+  if (!shown_.has(Element::trail)) trails_.clear();
   const std::size_t joints = geometry_.joints.size(), samples = motion_.samples.size();
   rail_span_.assign(joints, {1e300, -1e300});
   spring_span_.assign(geometry_.springs.size(), {1e300, 0});
   applied_.assign(samples, {});
   torque_.assign(samples, {});
-  // Each sample's largest force (joint or applied) and torque: the scales' statistics.
-  std::vector<double> largest_force(samples, 0), largest_torque(samples, 0);
+  load_.assign(samples, {});
+  const bool joints_shown = shown_.has(Element::pin_force), loads_shown = shown_.has(Element::loads);
+  // Each sample's largest force (joint or applied) and torque: the scales' statistics;
+  // and per other kind its own largest.
+  std::vector<double> largest_force(samples, 0), largest_torque(samples, 0), largest_gravity(samples, 0),
+      largest_spring(samples, 0), largest_velocity(samples, 0);
+  std::vector<double> inputs, scratch(geometry_.load_values.scratch_size());
+  // The traced points' velocities, shown with the centres of mass's.
+  trail_velocity_.assign(samples, {});
+  eval::Program traced;
+  if (shown_.has(Element::velocity)) {
+    std::vector<GiNaC::ex> velocities;
+    for (const BodyPoint& trail : trails_) {
+      if (trail.body < 0) continue;
+      const auto b = static_cast<std::size_t>(trail.body);
+      for (std::size_t p = 0; p < geometry_.bodies[b].points.size() && b < geometry_.point_velocities.size(); ++p)
+        if (geometry_.bodies[b].points[p].second == trail.local) {
+          velocities.push_back(geometry_.point_velocities[b][p][0]);
+          velocities.push_back(geometry_.point_velocities[b][p][1]);
+          traced_.push_back(trail);
+          break;
+        }
+    }
+    if (!velocities.empty()) traced = eval::compile(velocities, geometry_.inputs);
+  }
+  std::vector<double> scratch_traced(traced.scratch_size());
   for (std::size_t k = 0; k < samples; ++k) {
     const eval::MechanismSample& s = motion_.samples[k];
     const Vec2 c = centroid(k);
@@ -250,7 +318,7 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
       }
     for (std::size_t j = 0; j < joints; ++j) {
       const MechanismGeometry::JointShape& joint = geometry_.joints[j];
-      if (joint.points[0].body >= 0 || joint.points[1].body >= 0)
+      if (joints_shown && (joint.points[0].body >= 0 || joint.points[1].body >= 0))
         largest_force[k] = std::max(largest_force[k], std::hypot(s.force[3 * j], s.force[3 * j + 1]));
       if (joint.type != JointType::slider) continue;
       const Vec2 p0 = world_point(s.pose, joint.points[0]), p1 = world_point(s.pose, joint.points[1]);
@@ -267,11 +335,31 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
     const GiNaC::exmap at{{geometry_.time, motion_.times[k]}};
     for (const MechanismGeometry::ForceShape& f : geometry_.forces) {
       applied_[k].emplace_back(sym::evaluate(f.x, at), sym::evaluate(f.y, at));
-      largest_force[k] = std::max(largest_force[k], applied_[k].back().norm());
+      if (loads_shown) largest_force[k] = std::max(largest_force[k], applied_[k].back().norm());
     }
     for (const MechanismGeometry::TorqueShape& t : geometry_.torques) {
       torque_[k].push_back(sym::evaluate(t.value, at));
-      largest_torque[k] = std::max(largest_torque[k], std::fabs(torque_[k].back()));
+      if (loads_shown) largest_torque[k] = std::max(largest_torque[k], std::fabs(torque_[k].back()));
+    }
+    if (!geometry_.loads.empty() && !s.rates.empty()) {
+      load_inputs(s, motion_.times[k], inputs);
+      load_[k].resize(geometry_.load_values.output_count());
+      geometry_.load_values.run(inputs.data(), load_[k].data(), scratch.data());
+      for (std::size_t i = 0; i < geometry_.loads.size(); ++i) {
+        const double size = std::hypot(load_[k][4 * i], load_[k][4 * i + 1]);
+        double& largest = geometry_.loads[i].gravity ? largest_gravity[k] : largest_spring[k];
+        largest = std::max(largest, size);
+      }
+    }
+    for (std::size_t i = 0; i < geometry_.bodies.size() && !s.rates.empty(); ++i)
+      largest_velocity[k] = std::max(largest_velocity[k], std::hypot(s.rates[3 * i], s.rates[3 * i + 1]));
+    if (traced.output_count() > 0 && !s.rates.empty()) {
+      load_inputs(s, motion_.times[k], inputs);
+      trail_velocity_[k].resize(traced.output_count());
+      traced.run(inputs.data(), trail_velocity_[k].data(), scratch_traced.data());
+      for (std::size_t i = 0; 2 * i + 1 < trail_velocity_[k].size(); ++i)
+        largest_velocity[k] =
+            std::max(largest_velocity[k], std::hypot(trail_velocity_[k][2 * i], trail_velocity_[k][2 * i + 1]));
     }
   }
   for (const auto& [name, at] : geometry_.ground) bounds_.include(at);
@@ -284,10 +372,19 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
     extent_ = 2 * reach_;
   if (!(extent_ > 0)) extent_ = 1;
 
+  // "common": every force shown to one scale, from the typical largest of them all.
+  std::vector<double> largest_any(samples, 0);
+  for (std::size_t k = 0; k < samples; ++k)
+    largest_any[k] = std::max({largest_force[k], shown_.has(Element::gravity) ? largest_gravity[k] : 0.0,
+                               shown_.has(Element::spring_force) ? largest_spring[k] : 0.0});
+  double common_scale = 0;
+  if (const double typical = typical_of(largest_any); typical > 0 && std::isfinite(typical))
+    common_scale = kTypicalShare * extent_ / typical;
+  if (arrows.common_units_per_cm > 0) common_scale = arrow_scale_of(arrows.common_units_per_cm).metres_per_unit;
   const double typical_force = typical_of(largest_force);
   if (typical_force > 0 && std::isfinite(typical_force)) {
     force_scale_ = kTypicalShare * extent_ / typical_force;
-    if (arrows.common_units_per_cm > 0) force_scale_ = arrow_scale_of(arrows.common_units_per_cm).metres_per_unit;
+    if (arrows.common) force_scale_ = common_scale;
     applied_scale_ = force_scale_;
     if (const double fixed = arrows.fixed_for("joint"); fixed > 0) force_scale_ = arrow_scale_of(fixed).metres_per_unit;
     if (const double fixed = arrows.fixed_for("applied"); fixed > 0)
@@ -308,17 +405,40 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
     legend_.applied_scale = describe_arrow_scale(arrow_scale_of(0.01 / applied_scale_), "N");
     for (const MechanismGeometry::JointShape& joint : geometry_.joints)
       legend_.joint = legend_.joint || joint.points[0].body >= 0 || joint.points[1].body >= 0;
-    legend_.applied = !geometry_.forces.empty();
+    legend_.joint = legend_.joint && joints_shown;
+    legend_.applied = !geometry_.forces.empty() && loads_shown;
     const double largest = *std::max_element(largest_force.begin(), largest_force.end());
     legend_.cut = largest * std::max(force_scale_, applied_scale_) > arrow_cap_;
   }
+  // Gravity, springs and velocities: each kind its own scale (a typical frame's largest
+  // a sixth of the extent), the forces' common one when asked, or as fixed.
+  using Kind = MechanismDrawList::Arrow::Kind;
+  const auto own_scale = [&](Kind kind, Element element, const std::vector<double>& largest, const char* name,
+                             const char* unit, bool force) {
+    const double typical = typical_of(largest);
+    if (!shown_.has(element) || !(typical > 0) || !std::isfinite(typical)) return 0.0;
+    double scale = kTypicalShare * extent_ / typical;
+    if (force && arrows.common) scale = common_scale;
+    if (const double fixed = arrows.fixed_for(name); fixed > 0) scale = arrow_scale_of(fixed).metres_per_unit;
+    if (arrow_cap_ <= 0) arrow_cap_ = kCapFactor * kTypicalShare * extent_;
+    const double reference = arrows.is_default() ? round_near(typical) : round_near(kTypicalShare * extent_ / scale);
+    legend_.rows.push_back({kind, reference * scale, format_quantity(reference, unit),
+                            describe_arrow_scale(arrow_scale_of(0.01 / scale), unit)});
+    const double most = *std::max_element(largest.begin(), largest.end());
+    legend_.cut = legend_.cut || most * scale > arrow_cap_;
+    return scale;
+  };
+  gravity_scale_ = own_scale(Kind::gravity, Element::gravity, largest_gravity, "gravity", "N", true);
+  spring_scale_ = own_scale(Kind::spring, Element::spring_force, largest_spring, "spring", "N", true);
+  velocity_scale_ = own_scale(Kind::velocity, Element::velocity, largest_velocity, "velocity", "m/s", false);
   const double typical_torque = typical_of(largest_torque);
   if (typical_torque > 0 && std::isfinite(typical_torque)) torque_scale_ = kTypicalSweep / typical_torque;
 
   view_bounds_ = bounds_;
   view_reach_ = reach_;
   MechanismDrawList list;
-  for (std::size_t k = 0; (force_scale_ > 0 || torque_scale_ > 0) && k < samples; ++k) {
+  const bool arrows_drawn = force_scale_ > 0 || torque_scale_ > 0 || !legend_.rows.empty();
+  for (std::size_t k = 0; (arrows_drawn || free_body_) && k < samples; ++k) {
     frame(k, list);
     const Vec2 c = centroid(k);
     const auto include = [&](const Vec2& p) {
@@ -326,6 +446,8 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
       view_reach_ = std::max(view_reach_, (p - c).norm());
     };
     for (const MechanismDrawList::Arrow& arrow : list.arrows) include(arrow.tail + arrow.vector);
+    for (const MechanismDrawList::Outline& outline : list.outlines)
+      for (const Vec2& p : outline.points) include(p);  // pulled apart in the free-body view
     for (const MechanismDrawList::Torque& torque : list.torques) {
       include(torque.centre - Vec2(torque.radius, torque.radius));
       include(torque.centre + Vec2(torque.radius, torque.radius));
@@ -344,12 +466,19 @@ void MechanismScene::set_shortest_arrow(double metres, double drawn) {
     };
     for (std::size_t j = 0; j < geometry_.joints.size(); ++j) {
       const auto& points = geometry_.joints[j].points;
-      if (points[0].body < 0 && points[1].body < 0) continue;
+      if ((points[0].body < 0 && points[1].body < 0) || !shown_.has(Element::pin_force)) continue;
       const std::vector<double>& force = motion_.samples[k].force;
       if (short_at(std::hypot(force[3 * j], force[3 * j + 1]), force_scale_)) legend_.stretched = true;
     }
     for (const Vec2& f : applied_[k])
-      if (short_at(f.norm(), applied_scale_)) legend_.stretched = true;
+      if (shown_.has(Element::loads) && short_at(f.norm(), applied_scale_)) legend_.stretched = true;
+    for (std::size_t i = 0; i < geometry_.loads.size() && !load_[k].empty(); ++i) {
+      const double scale = geometry_.loads[i].gravity ? gravity_scale_ : spring_scale_;
+      if (scale > 0 && short_at(std::hypot(load_[k][4 * i], load_[k][4 * i + 1]), scale)) legend_.stretched = true;
+    }
+    const std::vector<double>& rates = motion_.samples[k].rates;
+    for (std::size_t i = 0; velocity_scale_ > 0 && 3 * i + 1 < rates.size(); ++i)
+      if (short_at(std::hypot(rates[3 * i], rates[3 * i + 1]), velocity_scale_)) legend_.stretched = true;
   }
 }
 
@@ -364,8 +493,7 @@ Vec2 MechanismScene::centroid(std::size_t k) const {
 MechanismDrawList::Arrow MechanismScene::force_arrow(MechanismDrawList::Arrow::Kind kind, const Vec2& at,
                                                      const Vec2& force, std::string label) const {
   const bool applied = kind == MechanismDrawList::Arrow::Kind::applied;
-  MechanismDrawList::Arrow arrow{kind,         at,    (applied ? applied_scale_ : force_scale_) * force,
-                                 force.norm(), false, std::move(label)};
+  MechanismDrawList::Arrow arrow{kind, at, scale_of(kind) * force, force.norm(), false, std::move(label)};
   const double length = arrow.vector.norm();
   if (length > arrow_cap_ || (length > 0 && length < shortest_)) {
     // Cut to the cap, or stretched to be seen; the label then says the value the length
@@ -373,9 +501,65 @@ MechanismDrawList::Arrow MechanismScene::force_arrow(MechanismDrawList::Arrow::K
     arrow.cut = length > arrow_cap_;
     arrow.stretched = !arrow.cut;
     arrow.vector *= (arrow.cut ? arrow_cap_ : stretched_) / length;
-    if (!applied) arrow.label += ": " + format_quantity(arrow.force, "N");
+    if (!applied && !arrow.label.empty())
+      arrow.label +=
+          ": " + format_quantity(arrow.force, kind == MechanismDrawList::Arrow::Kind::velocity ? "m/s" : "N");
   }
   return arrow;
+}
+
+double MechanismScene::scale_of(MechanismDrawList::Arrow::Kind kind) const {
+  using Kind = MechanismDrawList::Arrow::Kind;
+  switch (kind) {
+    case Kind::joint:
+      return force_scale_;
+    case Kind::applied:
+      return applied_scale_;
+    case Kind::gravity:
+      return gravity_scale_;
+    case Kind::spring:
+      return spring_scale_;
+    case Kind::velocity:
+      return velocity_scale_;
+  }
+  return 0;
+}
+
+void MechanismScene::add_load_arrows(std::size_t k, MechanismDrawList& out) const {
+  using Kind = MechanismDrawList::Arrow::Kind;
+  const bool tags = shown_.has(Element::labels);
+  for (std::size_t i = 0; i < geometry_.loads.size() && !load_[k].empty(); ++i) {
+    const MechanismGeometry::LoadShape& load = geometry_.loads[i];
+    const Kind kind = load.gravity ? Kind::gravity : Kind::spring;
+    const Vec2 force(load_[k][4 * i], load_[k][4 * i + 1]), at(load_[k][4 * i + 2], load_[k][4 * i + 3]);
+    if (scale_of(kind) <= 0 || force.norm() == 0) continue;
+    const std::string& body = geometry_.bodies[static_cast<std::size_t>(load.body)].name;
+    out.arrows.push_back(
+        force_arrow(kind, at, force, tags ? (load.gravity ? "m g on " + body : load.name + " on " + body) : ""));
+    out.arrows.back().body = load.body;
+  }
+  const std::vector<double>& rates = motion_.samples[k].rates;
+  for (std::size_t i = 0; velocity_scale_ > 0 && i < geometry_.bodies.size() && !rates.empty(); ++i) {
+    const std::vector<double>& pose = motion_.samples[k].pose;
+    const Vec2 v(rates[3 * i], rates[3 * i + 1]);
+    if (v.norm() == 0) continue;
+    out.arrows.push_back(force_arrow(Kind::velocity, Vec2(pose[3 * i], pose[3 * i + 1]), v,
+                                     tags ? "v of " + geometry_.bodies[i].name : ""));
+    out.arrows.back().body = static_cast<int>(i);
+  }
+  const std::vector<double>& traced = trail_velocity_[k];
+  for (std::size_t i = 0; velocity_scale_ > 0 && 2 * i + 1 < traced.size(); ++i) {
+    const Vec2 v(traced[2 * i], traced[2 * i + 1]);
+    if (v.norm() == 0) continue;
+    const BodyPoint& point = traced_[i];
+    const MechanismGeometry::BodyShape& body = geometry_.bodies[static_cast<std::size_t>(point.body)];
+    std::string name;
+    for (const auto& [n, at] : body.points)
+      if (at == point.local) name = n;
+    out.arrows.push_back(force_arrow(Kind::velocity, world_point(motion_.samples[k].pose, point), v,
+                                     tags ? "v of " + body.name + "." + name : ""));
+    out.arrows.back().body = point.body;
+  }
 }
 
 void MechanismScene::add_spring(const MechanismGeometry::SpringShape& spring, std::size_t index,
@@ -429,15 +613,18 @@ void MechanismScene::add_spring(const MechanismGeometry::SpringShape& spring, st
 void MechanismScene::add_loads(std::size_t k, MechanismDrawList& out) const {
   const std::vector<double>& pose = motion_.samples[k].pose;
   const std::size_t forces = geometry_.forces.size();
-  for (std::size_t i = 0; force_scale_ > 0 && i < forces; ++i) {
+  const bool tags = shown_.has(Element::labels);
+  for (std::size_t i = 0; force_scale_ > 0 && shown_.has(Element::loads) && i < forces; ++i) {
     const Vec2 force = applied_[k][i];
     std::string label = "F";
     if (forces > 1) label.append(std::to_string(i + 1));
     label.append(" = ").append(format_quantity(force.norm(), "N"));
+    if (!tags) label.clear();
     out.arrows.push_back(force_arrow(MechanismDrawList::Arrow::Kind::applied, world_point(pose, geometry_.forces[i].at),
                                      force, std::move(label)));
+    out.arrows.back().body = geometry_.forces[i].at.body;
   }
-  for (std::size_t i = 0; torque_scale_ > 0 && i < geometry_.torques.size(); ++i) {
+  for (std::size_t i = 0; torque_scale_ > 0 && shown_.has(Element::loads) && i < geometry_.torques.size(); ++i) {
     const double torque = torque_[k][i];
     if (torque == 0) continue;
     const auto body = static_cast<std::size_t>(geometry_.torques[i].body);
@@ -451,7 +638,9 @@ void MechanismScene::add_loads(std::size_t k, MechanismDrawList& out) const {
     std::string label = "τ";
     if (geometry_.torques.size() > 1) label.append(std::to_string(i + 1));
     label.append(" = ").append(format_quantity(std::fabs(torque), "N m"));
-    out.torques.push_back({Vec2(pose[3 * body], pose[3 * body + 1]), radius, start, sweep, std::move(label)});
+    if (!tags) label.clear();
+    out.torques.push_back(
+        {Vec2(pose[3 * body], pose[3 * body + 1]), radius, start, sweep, std::move(label), static_cast<int>(body)});
   }
 }
 
@@ -469,6 +658,7 @@ void MechanismScene::add_trails(std::size_t k, MechanismDrawList& out) const {
       line.points.push_back(world_point(fine ? motion_.trail_poses[i] : motion_.samples[i].pose, trail));
       line.fade.push_back(trail_seconds_ > 0 ? std::clamp(1.0 - (now - *it) / trail_seconds_, 0.0, 1.0) : 1.0);
     }
+    line.body = trail.body;
     out.lines.push_back(std::move(line));
     // A traced point off its body's outline (a coupler point) is tied to the body's
     // centre by a thin bar, so the picture shows what carries it.
@@ -479,27 +669,37 @@ void MechanismScene::add_trails(std::size_t k, MechanismDrawList& out) const {
     // Grown by 5 % about the centre: a point on the outline (a rod's end) is the body's own.
     std::vector<Vec2> outline = body_outline(geometry_.bodies[b], pose, b);
     for (Vec2& v : outline) v = centre + 1.05 * (v - centre);
-    if (!inside(outline, at)) out.lines.push_back({MechanismDrawList::Line::Kind::spin, {centre, at}, {}});
+    if (!inside(outline, at)) out.lines.push_back({MechanismDrawList::Line::Kind::spin, {centre, at}, {}, trail.body});
   }
 }
 
 void MechanismScene::frame(std::size_t k, MechanismDrawList& out) const {
   out.clear();
   out.legend = legend_;
+  out.shown = shown_;
   const eval::MechanismSample& s = motion_.samples[k];
   const std::vector<double>& pose = s.pose;
-  for (std::size_t i = 0; i < geometry_.bodies.size(); ++i) {
+  const bool bodies = shown_.has(Element::blocks);
+  for (std::size_t i = 0; bodies && i < geometry_.bodies.size(); ++i) {
     const MechanismGeometry::BodyShape& body = geometry_.bodies[i];
     out.outlines.push_back({i, body_outline(body, pose, i), body.shape});
     const Vec2 centre(pose[3 * i], pose[3 * i + 1]);
     if (body.shape == Shape::disc)  // a radius along body x, so the spin shows
-      out.lines.push_back(
-          {MechanismDrawList::Line::Kind::spin, {centre, centre + rotated(pose[3 * i + 2], {body.radius, 0.0})}});
-    out.labels.push_back({centre, body.name});
+      out.lines.push_back({MechanismDrawList::Line::Kind::spin,
+                           {centre, centre + rotated(pose[3 * i + 2], {body.radius, 0.0})},
+                           {},
+                           static_cast<int>(i)});
+    if (shown_.has(Element::labels)) out.labels.push_back({centre, body.name, static_cast<int>(i)});
   }
+  for (std::size_t i = 0; shown_.has(Element::com) && i < geometry_.bodies.size(); ++i)
+    out.markers.push_back(
+        {MechanismDrawList::Marker::Kind::com, Vec2(pose[3 * i], pose[3 * i + 1]), Vec2::UnitX(), static_cast<int>(i)});
   for (const auto& [name, at] : geometry_.ground) out.markers.push_back({MechanismDrawList::Marker::Kind::ground, at});
-  for (std::size_t i = 0; i < geometry_.springs.size(); ++i) add_spring(geometry_.springs[i], i, pose, out);
+  // In the free-body view a spring is the force it exerts, not a part.
+  for (std::size_t i = 0; !free_body_ && i < geometry_.springs.size(); ++i)
+    add_spring(geometry_.springs[i], i, pose, out);
 
+  const std::size_t first_marker = out.markers.size(), first_line = out.lines.size();
   for (std::size_t j = 0; j < geometry_.joints.size(); ++j) {
     const MechanismGeometry::JointShape& joint = geometry_.joints[j];
     const Vec2 p0 = world_point(pose, joint.points[0]), p1 = world_point(pose, joint.points[1]);
@@ -515,16 +715,70 @@ void MechanismScene::frame(std::size_t k, MechanismDrawList& out) const {
     }
     if (force_scale_ <= 0) continue;
     const Vec2 force(s.force[3 * j], s.force[3 * j + 1]);
-    for (std::size_t side = 0; side < 2; ++side) {
+    for (std::size_t side = 0; side < 2 && shown_.has(Element::pin_force); ++side) {
       const int body = joint.points[side].body;
       if (body < 0) continue;  // the ground's reaction is not drawn
-      out.arrows.push_back(force_arrow(MechanismDrawList::Arrow::Kind::joint, side == 0 ? p0 : p1,
-                                       side == 0 ? force : Vec2(-force),
-                                       joint.name + " on " + geometry_.bodies[static_cast<std::size_t>(body)].name));
+      out.arrows.push_back(force_arrow(
+          MechanismDrawList::Arrow::Kind::joint, side == 0 ? p0 : p1, side == 0 ? force : Vec2(-force),
+          shown_.has(Element::labels) ? joint.name + " on " + geometry_.bodies[static_cast<std::size_t>(body)].name
+                                      : ""));
+      out.arrows.back().body = body;
     }
   }
+  place_joints(pose, first_marker, first_line, out);
   add_loads(k, out);
+  add_load_arrows(k, out);
   add_trails(k, out);
+  if (free_body_) pull_apart(k, out);
+}
+
+void MechanismScene::place_joints(const std::vector<double>& pose, std::size_t first_marker, std::size_t first_line,
+                                  MechanismDrawList& out) const {
+  // The joints' drawing (one marker per joint, in order, a slider's rail with its guide):
+  // gone with the joints hidden; else each part tied to its body, and pulled apart, a pin
+  // on every body it joins (the ground's side is its support).
+  if (!shown_.has(Element::pin)) {
+    out.markers.erase(out.markers.begin() + static_cast<std::ptrdiff_t>(first_marker), out.markers.end());
+    out.lines.erase(out.lines.begin() + static_cast<std::ptrdiff_t>(first_line), out.lines.end());
+    return;
+  }
+  std::vector<MechanismDrawList::Marker> halves;
+  for (std::size_t j = 0, m = first_marker, l = first_line; j < geometry_.joints.size(); ++j, ++m) {
+    const auto& points = geometry_.joints[j].points;
+    MechanismDrawList::Marker& marker = out.markers[m];
+    const bool guide = marker.kind == MechanismDrawList::Marker::Kind::guide;
+    if (guide) out.lines[l++].body = points[0].body;
+    marker.body = points[guide ? 1 : 0].body;
+    if (!free_body_ || guide) continue;
+    if (points[0].body < 0) {
+      marker.at = world_point(pose, points[1]);
+      marker.body = points[1].body;
+    } else if (points[1].body >= 0) {
+      halves.push_back(
+          {MechanismDrawList::Marker::Kind::pin, world_point(pose, points[1]), Vec2::UnitX(), points[1].body});
+    }
+  }
+  out.markers.insert(out.markers.end(), halves.begin(), halves.end());
+}
+
+void MechanismScene::pull_apart(std::size_t k, MechanismDrawList& out) const {
+  // Each body moved away from the centroid by half its centre's distance from it: joined
+  // bodies separate at their joints, each carrying its own forces and half of each pin.
+  const Vec2 c = centroid(k);
+  const std::vector<double>& pose = motion_.samples[k].pose;
+  const auto offset = [&](int body) {
+    if (body < 0) return Vec2(Vec2::Zero());
+    const auto b = 3 * static_cast<std::size_t>(body);
+    return Vec2(kApart * (Vec2(pose[b], pose[b + 1]) - c));
+  };
+  for (MechanismDrawList::Outline& o : out.outlines)
+    for (Vec2& p : o.points) p += offset(static_cast<int>(o.body));
+  for (MechanismDrawList::Line& l : out.lines)
+    for (Vec2& p : l.points) p += offset(l.body);
+  for (MechanismDrawList::Marker& m : out.markers) m.at += offset(m.body);
+  for (MechanismDrawList::Arrow& a : out.arrows) a.tail += offset(a.body);
+  for (MechanismDrawList::Torque& t : out.torques) t.centre += offset(t.body);
+  for (MechanismDrawList::Label& l : out.labels) l.at += offset(l.body);
 }
 
 }  // namespace linkage

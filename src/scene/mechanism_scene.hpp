@@ -10,8 +10,10 @@
 
 #include "core/types.hpp"
 #include "evaluate/mechanism_dynamics.hpp"
+#include "evaluate/program.hpp"
 #include "model/mechanism.hpp"
 #include "scene/arrow_scale.hpp"
+#include "scene/elements.hpp"
 #include "scene/motion.hpp"
 #include "symbolic/system.hpp"
 
@@ -51,13 +53,28 @@ struct MechanismGeometry {
     int body = 0;
     GiNaC::ex value;
   };
+  /// Gravity on a body or a spring's (and its damper's) force on a body at its end: the
+  /// System's own load, evaluated per sample by `load_values`.
+  struct LoadShape {
+    int body = 0;
+    bool gravity = false;  // else a spring
+    std::string name;      // the spring's
+  };
   std::vector<BodyShape> bodies;
   std::vector<std::pair<std::string, Vec2>> ground;  // world
   std::vector<JointShape> joints;
   std::vector<SpringShape> springs;
   std::vector<ForceShape> forces;
   std::vector<TorqueShape> torques;
-  GiNaC::ex time;  // the symbol t of the loads' values
+  std::vector<LoadShape> loads;
+  /// Per load: force x, y (N) and its point x, y (m), world frame; inputs per body x, y,
+  /// theta, then per body their rates, then t (load_inputs).
+  eval::Program load_values;
+  /// Per body, per named point: its world velocity x, y in load_values' inputs, the time
+  /// derivative of its position as the System states it (compiled for the points traced).
+  std::vector<std::vector<std::array<GiNaC::ex, 2>>> point_velocities;
+  std::vector<GiNaC::symbol> inputs;  // load_values' inputs, in order
+  GiNaC::ex time;                     // the symbol t of the loads' values
 
   /// Whether any joint or spring holds the mechanism to the ground (else it floats).
   [[nodiscard]] bool grounded() const;
@@ -68,6 +85,9 @@ struct MechanismGeometry {
 
 /// The drawing's numbers, evaluated at the mechanism's parameters.
 [[nodiscard]] MechanismGeometry mechanism_geometry(const sym::System& system);
+
+/// load_values' inputs for a sample: its poses, rates and time.
+void load_inputs(const eval::MechanismSample& sample, double t, std::vector<double>& inputs);
 
 /// The world position of `p` for per-body poses (x, y, theta each).
 [[nodiscard]] Vec2 world_point(const std::vector<double>& pose, const BodyPoint& p);
@@ -87,19 +107,22 @@ struct MechanismDrawList {
     enum class Kind { spin, rail, spring, dashpot, trail } kind = Kind::rail;
     std::vector<Vec2> points;
     std::vector<double> fade{};  // a trail's, per point: 1 now, falling to 0 with age
+    int body = -1;               // the body it moves with in the free-body view (-1: the world)
   };
   struct Marker {
-    enum class Kind { ground, pin, guide } kind = Kind::pin;
+    enum class Kind { ground, pin, guide, com } kind = Kind::pin;
     Vec2 at = Vec2::Zero();
     Vec2 direction = Vec2::UnitX();  // guide: along the rail
+    int body = -1;                   // the body it moves with in the free-body view (-1: the world)
   };
   struct Arrow {
-    enum class Kind { joint, applied } kind = Kind::joint;
+    enum class Kind { joint, applied, gravity, spring, velocity } kind = Kind::joint;
     Vec2 tail = Vec2::Zero(), vector = Vec2::Zero();  // vector in metres: force x scale, or cut
     double force = 0;                                 // N, the magnitude
     bool cut = false;                                 // drawn shorter than the scale says
     std::string label;                                // "B on 3", "F = 0.5 N"
     bool stretched = false;                           // too short to see at the scale: drawn longer
+    int body = -1;                                    // the body it acts on (-1: none)
   };
   /// An applied torque: an arc about the body's centre, counter-clockwise for sweep > 0,
   /// its head at start + sweep.
@@ -107,10 +130,12 @@ struct MechanismDrawList {
     Vec2 centre = Vec2::Zero();
     double radius = 0, start = 0, sweep = 0;  // m, rad
     std::string label;                        // "τ = 0.01 N m"
+    int body = -1;
   };
   struct Label {
     Vec2 at = Vec2::Zero();
     std::string text;
+    int body = -1;
   };
   /// What an arrow's length means: a reference arrow of `metres` stands for `newtons`
   /// (joint forces; applied ones have their own when --arrow-scale sets them apart).
@@ -123,6 +148,13 @@ struct MechanismDrawList {
     double applied_newtons = 0, applied_metres = 0;  // the applied forces' reference arrow
     std::string applied_value;
     std::string joint_scale, applied_scale;  // "1 cm = 0.5 N"
+    /// A row per other kind shown (gravity, spring, velocity): its reference arrow.
+    struct Row {
+      Arrow::Kind kind = Arrow::Kind::gravity;
+      double metres = 0;
+      std::string value, scale;  // "2 N", "1 cm = 0.5 N"
+    };
+    std::vector<Row> rows;
   };
   std::vector<Outline> outlines;
   std::vector<Line> lines;
@@ -139,6 +171,7 @@ struct MechanismDrawList {
   };
   std::vector<Ghost> ghosts;
   Legend legend;
+  ElementSet shown = ElementSet::defaults();  // also what the painter adds: grid, axes, hud, legend, title
   void clear();
 };
 
@@ -160,8 +193,12 @@ class MechanismScene {
   /// `trails`: points whose path over the last `trail_seconds` each frame draws.
   /// `arrows`: --arrow-scale (kinds "joint" and "applied"); by default joint and applied
   /// forces share one scale from the clip's typical force, as "common" does.
+  /// `shown`: the elements drawn (bodies, joints, each kind of arrow, trail, com, labels).
+  /// `free_body`: each body pulled away from the others (from the centroid, by half its
+  /// distance) with every force on it, a joint's pin drawn on each of its bodies.
   MechanismScene(MechanismGeometry geometry, const MechanismMotion& motion, std::vector<BodyPoint> trails,
-                 double trail_seconds = 2.0, const ArrowScaleRequest& arrows = {});
+                 double trail_seconds = 2.0, const ArrowScaleRequest& arrows = {},
+                 ElementSet shown = ElementSet::defaults(), bool free_body = false);
 
   /// Force arrows shorter than `metres` (but not zero) are drawn `drawn` long (0: that
   /// long) and marked stretched, their labels giving the value; the legend says whether any is.
@@ -182,6 +219,8 @@ class MechanismScene {
   [[nodiscard]] double force_scale() const { return force_scale_; }
   /// Metres per newton of the applied forces' arrows (force_scale() unless set apart).
   [[nodiscard]] double applied_scale() const { return applied_scale_; }
+  /// Metres per unit of an arrow of `kind` (N, or m/s for velocity); 0 when none is drawn.
+  [[nodiscard]] double scale_of(MechanismDrawList::Arrow::Kind kind) const;
   /// The longest arrow drawn, m: a longer one is cut to it (1.5 the typical length).
   [[nodiscard]] double arrow_cap() const { return arrow_cap_; }
   /// The larger side of bounds(), or 2 reach() for a floating mechanism.
@@ -194,20 +233,30 @@ class MechanismScene {
   MechanismGeometry geometry_;
   const MechanismMotion& motion_;
   std::vector<BodyPoint> trails_;
+  std::vector<BodyPoint> traced_;  // the trails' points on bodies, whose velocities are drawn
   double trail_seconds_;
   Bounds bounds_, view_bounds_;
   double reach_ = 0, view_reach_ = 0, force_scale_ = 0, applied_scale_ = 0, arrow_cap_ = 0, torque_scale_ = 0,
          extent_ = 1, shortest_ = 0, stretched_ = 0;
   MechanismDrawList::Legend legend_;
-  std::vector<std::array<double, 2>> rail_span_;    // per joint: slider travel range along the axis
-  std::vector<std::array<double, 2>> spring_span_;  // per spring: shortest and longest length
-  std::vector<std::vector<Vec2>> applied_;          // per sample, per applied force: N
-  std::vector<std::vector<double>> torque_;         // per sample, per applied torque: N m
+  std::vector<std::array<double, 2>> rail_span_;     // per joint: slider travel range along the axis
+  std::vector<std::array<double, 2>> spring_span_;   // per spring: shortest and longest length
+  std::vector<std::vector<Vec2>> applied_;           // per sample, per applied force: N
+  std::vector<std::vector<double>> torque_;          // per sample, per applied torque: N m
+  std::vector<std::vector<double>> load_;            // per sample: load_values' outputs
+  std::vector<std::vector<double>> trail_velocity_;  // per sample: each traced point's velocity x, y
+  ElementSet shown_;
+  bool free_body_ = false;
+  double gravity_scale_ = 0, spring_scale_ = 0, velocity_scale_ = 0;
 
   void add_spring(const MechanismGeometry::SpringShape& spring, std::size_t index, const std::vector<double>& pose,
                   MechanismDrawList& out) const;
   void add_loads(std::size_t k, MechanismDrawList& out) const;
   void add_trails(std::size_t k, MechanismDrawList& out) const;
+  void add_load_arrows(std::size_t k, MechanismDrawList& out) const;
+  void place_joints(const std::vector<double>& pose, std::size_t first_marker, std::size_t first_line,
+                    MechanismDrawList& out) const;
+  void pull_apart(std::size_t k, MechanismDrawList& out) const;
   [[nodiscard]] MechanismDrawList::Arrow force_arrow(MechanismDrawList::Arrow::Kind kind, const Vec2& at,
                                                      const Vec2& force, std::string label) const;
 };

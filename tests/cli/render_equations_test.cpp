@@ -84,10 +84,8 @@ TEST(RenderEquations, BadUseIsOneLineAndNoFile) {
       {{"render", "--show", "equations", "--case", "1", "--size", "480x270", "--out", out},
        "linkage: error: --show: Case 1's equations (8 lines) do not fit a 480x270 frame at a legible size (9 px or "
        "more); use quality low (854x480) or a larger size\n"},
-      {{"render", "--mechanism", "slider-crank", "--show", "equations,trail", "--out", out},
-       "linkage: error: --show: 'trail' applies to the homework only; a mechanism's picture shows only equations"},
-      {{"render", "--mechanism", "slider-crank", "--hide", "equations", "--out", out},
-       "linkage: error: --hide: applies to the homework only"},
+      {{"render", "--mechanism", "slider-crank", "--show", "equations,trails", "--out", out},
+       "linkage: error: --show: 'trails' is not an element (did you mean 'trail'?)"},
       {{"render", "--angles", "grad", "--out", out},
        "linkage: error: --angles: 'grad' is not an angle unit (did you mean 'rad'?); valid: rad, deg\n"},
   };
@@ -120,13 +118,10 @@ TEST(RenderEquations, LessonStepsShowThemHomeworkAndMechanism) {
     fs::remove_all(dir / "out");
   }
   const fs::path file = dir / "bad.toml";
-  write_text(file, render_lesson("mechanism = \"slider-crank\"\nshow = [\"equations\", \"trail\"]"));
+  write_text(file, render_lesson("mechanism = \"slider-crank\"\nshow = [\"equations\", \"trails\"]"));
   const RunResult r = run_linkage({"lesson", file.string(), "--check"});
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find(":7:8: step 1 (render): show: 'trail' applies to the homework only; a mechanism's picture shows "
-                       "only equations"),
-            std::string::npos)
-      << r.err;
+  EXPECT_NE(r.err.find(":7:8: step 1 (render): show: 'trails' is not an element"), std::string::npos) << r.err;
   write_text(file, render_lesson("angles = \"grad\""));
   const RunResult angles = run_linkage({"lesson", file.string(), "--check"});
   EXPECT_EQ(angles.exit_code, 2);

@@ -52,8 +52,8 @@ TEST(LessonMechanism, BadKeysAreOneLineErrorsAtTheirPlace) {
                 .find("lesson.toml:5:9: step 1 (render): trail: applies only with a mechanism: give mechanism = "),
             std::string::npos);
   EXPECT_NE(error_of("title = \"x\"\nmechanism = \"four-bar\"\n[[step]]\nkind = \"render\"\nout = \"a.png\"\n"
-                     "camera = \"fit\"\n")
-                .find("lesson.toml:6:10: step 1 (render): camera: applies to the homework only"),
+                     "camera = \"fixed\"\n")
+                .find("lesson.toml:6:10: step 1 (render): camera: fixed needs view xmin,ymin,xmax,ymax"),
             std::string::npos);
   EXPECT_NE(error_of("title = \"x\"\nmechanism = \"four-bar\"\n[[step]]\nkind = \"render\"\nout = \"a.png\"\n"
                      "trail = [\"3.Q\"]\n")

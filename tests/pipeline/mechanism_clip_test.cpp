@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <set>
 
 #include "core/error.hpp"
@@ -17,6 +18,7 @@
 #include "render/cairo_util.hpp"
 #include "render/mechanism_forces.hpp"
 #include "render/scene_painter.hpp"
+#include "render/xml_check.hpp"
 #include "scene/mechanism_scene.hpp"
 #include "support/test_support.hpp"
 #include "symbolic/loop_closure.hpp"
@@ -157,12 +159,10 @@ TEST(MechanismClip, GifAndWebmClipsMatchTheirDrawnFrames) {
   }
 }
 
-TEST(MechanismClip, RejectsVectorStillsAndUnknownTrailPoints) {
+TEST(MechanismClip, RejectsUnknownTrailPoints) {
   test::TempDir dir;
   const sym::System system(load_mechanism("four-bar"));
-  MechanismClip clip = small_still((dir / "x.svg").string());
-  test::expect_error([&] { clip.validate(system); }, ExitCode::bad_input, ".mp4, .gif, .webm or .png");
-  clip.out = dir / "x.png";
+  MechanismClip clip = small_still((dir / "x.png").string());
   clip.trails = {"3.Q"};
   test::expect_error([&] { clip.validate(system); }, ExitCode::bad_input, "valid: A, B");
   clip.trails = {"9.A"};
@@ -334,7 +334,9 @@ TEST(MechanismScene, TwoBlocksFloatAndLabelForcesByJointAndBody) {
   const sym::System system(load_mechanism("two-blocks"));
   const MechanismMotion motion = sampled(system, 0.2, 0.1);
   const MechanismGeometry geometry = mechanism_geometry(system);
-  const MechanismScene scene(geometry, motion, {geometry.resolve("1.P", "--trail")});
+  ElementSet joints_only = ElementSet::defaults();
+  joints_only.hide(Element::gravity);  // the joint's pair alone
+  const MechanismScene scene(geometry, motion, {geometry.resolve("1.P", "--trail")}, 2.0, {}, joints_only);
   EXPECT_FALSE(scene.geometry().grounded());
   MechanismDrawList list;
   scene.frame(2, list);
@@ -443,7 +445,9 @@ TEST(MechanismScene, ArrowScalesAsAskedAndShortArrowsStretched) {
   const MechanismMotion motion = clip_motion(system, 1.0, 30);
   ArrowScaleRequest request;
   request.fixed = {{"joint", 1000.0}};  // 1 cm = 1 kN: every joint force is a stub
-  MechanismScene scene(mechanism_geometry(system), motion, {}, 2.0, request);
+  ElementSet joints_only = ElementSet::defaults();
+  joints_only.hide(Element::gravity);  // gravity keeps a scale of its own
+  MechanismScene scene(mechanism_geometry(system), motion, {}, 2.0, request, joints_only);
   EXPECT_NEAR(scene.force_scale(), 0.01 / 1000, 1e-18);
   MechanismDrawList list;
   scene.frame(3, list);
@@ -465,7 +469,9 @@ TEST(MechanismScene, LegendScaleIsTheArrowsScaleAndATypicalFrameReads) {
     SCOPED_TRACE(name);
     const sym::System system(load_mechanism(name));
     const MechanismMotion motion = clip_motion(system, 4.0, 30);
-    const MechanismScene scene(mechanism_geometry(system), motion, {});
+    ElementSet joints_only = ElementSet::defaults();
+    joints_only.hide(Element::gravity);  // gravity keeps a scale of its own
+    const MechanismScene scene(mechanism_geometry(system), motion, {}, 2.0, {}, joints_only);
     MechanismDrawList list;
     scene.frame(0, list);
     const MechanismDrawList::Legend& legend = list.legend;
@@ -627,6 +633,77 @@ TEST(MechanismClip, TrailsAreSampledFourTimesAFrame) {
     EXPECT_NEAR(trail.fade.front(), 1.0 - (motion.times[k] - motion.trail_times.front()) / 2.0, 1e-9);
     for (std::size_t j = 1; j < trail.fade.size(); ++j) EXPECT_GT(trail.fade[j], trail.fade[j - 1]);
   }
+}
+
+// Issue 23: every picture option on every shipped mechanism gives a still (SVG and PDF
+// whole and all vector), and the draw list holds what the options say.
+TEST(MechanismClip, EveryPictureOptionOnEveryShippedMechanism) {
+  test::TempDir dir;
+  using Kind = MechanismDrawList::Arrow::Kind;
+  for (const std::string& name : shipped_mechanism_names()) {
+    SCOPED_TRACE(name);
+    const sym::System system(load_mechanism(name));
+    const GiNaC::exmap initial = sym::checked_initial_state(system).state;
+    ElementSet shown = ElementSet::defaults();
+    shown.show(Element::velocity);
+    shown.show(Element::gravity);
+    shown.hide(Element::legend);
+    shown.hide(Element::labels);
+    const MechanismGeometry geometry = mechanism_geometry(system);
+    const MechanismMotion motion = clip_motion(system, 0.5, 30);
+    const MechanismScene scene(geometry, motion, {}, 2.0, {}, shown);
+    MechanismDrawList list;
+    const std::size_t bodies = geometry.bodies.size(), k = 10;
+    scene.frame(k, list);
+    const auto count = [&](Kind kind) {
+      return static_cast<std::size_t>(
+          std::count_if(list.arrows.begin(), list.arrows.end(), [&](const auto& a) { return a.kind == kind; }));
+    };
+    EXPECT_EQ(count(Kind::gravity), bodies);  // every shipped mechanism has gravity
+    std::size_t moving = 0;
+    for (std::size_t i = 0; i < bodies; ++i)
+      if (std::hypot(motion.samples[k].rates[3 * i], motion.samples[k].rates[3 * i + 1]) > 0) ++moving;
+    EXPECT_EQ(count(Kind::velocity), moving);
+    EXPECT_TRUE(list.labels.empty());
+    for (const MechanismDrawList::Arrow& arrow : list.arrows) EXPECT_EQ(arrow.label, "");
+    EXPECT_FALSE(list.shown.has(Element::legend));
+
+    const std::vector<std::pair<std::string, std::function<void(MechanismClip&)>>> options{
+        {"fbd", [](MechanismClip& c) { c.settings.free_body = true; }},
+        {"follow",
+         [](MechanismClip& c) {
+           c.settings.camera_chosen = true;
+           c.settings.camera = CameraMode::follow;
+         }},
+        {"fit",
+         [](MechanismClip& c) {
+           c.settings.camera_chosen = true;
+           c.settings.camera = CameraMode::fit;
+         }},
+        {"shown", [&](MechanismClip& c) { c.settings.elements = shown; }},
+        {"svg", [&](MechanismClip& c) { c.out = dir / (name + ".svg"); }},
+        {"pdf", [&](MechanismClip& c) { c.out = dir / (name + ".pdf"); }},
+    };
+    for (const auto& [option, apply] : options) {
+      SCOPED_TRACE(option);
+      MechanismClip clip = small_still((dir / (name + "-" + option + ".png")).string());
+      apply(clip);
+      EXPECT_EQ(produce_mechanism_clip(system, initial, clip).stats.frames_drawn, 1);
+      EXPECT_TRUE(std::filesystem::exists(*clip.out));
+    }
+    const std::string figure = test::read_text(dir / (name + ".svg"));
+    EXPECT_EQ(test::xml_error(figure), "");
+    EXPECT_NE(figure.find("width=\"160px\""), std::string::npos) << figure.substr(0, 300);
+    EXPECT_EQ(figure.find("<image"), std::string::npos) << "a vector figure holds no bitmaps";
+    // A filled outline per body at least, besides the background.
+    std::size_t paths = 0;
+    for (std::size_t at = figure.find("<path"); at != std::string::npos; at = figure.find("<path", at + 1)) ++paths;
+    EXPECT_GT(paths, bodies);
+    const std::string document = test::read_text(dir / (name + ".pdf"));
+    EXPECT_EQ(document.rfind("%PDF-", 0), 0U);
+    EXPECT_NE(document.find("%%EOF", document.size() - 8), std::string::npos);
+  }
+  EXPECT_EQ(test::entries(dir.path()).size(), 6 * shipped_mechanism_names().size());  // no temporary left
 }
 
 }  // namespace

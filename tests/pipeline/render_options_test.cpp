@@ -147,20 +147,30 @@ TEST(RenderOptions, BadValuesNameTheirOptionAndTheRange) {
   EXPECT_EQ(error_of({{"size", "65x36"}}).rfind("size|size 65x36 must have an even width and height", 0), 0U);
 }
 
-TEST(RenderOptions, AtIsAStillsAndTheHomeworksOptionsAreNotAMechanisms) {
+TEST(RenderOptions, AtIsAStillsAndEveryPictureOptionIsAMechanismsToo) {
   EXPECT_EQ(error_of({{"at", "1"}}),
             "at|applies to a still (--out FILE.png, .svg or .pdf); a clip shows 0 .. --duration");
   EXPECT_EQ(resolve_render_options({{"at", "1.5"}}, flags(false, true)).settings.at, 1.5);
   EXPECT_EQ(error_of({{"trail", "3.B"}}), "trail|applies only with --mechanism");
-  for (const char* homework : {"camera", "view", "hide"})
-    EXPECT_EQ(
-        error_of({{homework, "fit"}}, flags(true)).rfind(std::string(homework) + "|applies to the homework only", 0),
-        0U)
-        << homework;
-  EXPECT_EQ(error_of({{"show", "equations,trail"}}, flags(true)).rfind("show|'trail' applies to the homework only", 0),
-            0U);
+  // Issue 23: the camera, a view (a rectangle or fbd), --show and --hide apply to a mechanism too.
+  const RenderSettings fit = resolve_render_options({{"camera", "fit"}}, flags(true)).settings;
+  EXPECT_EQ(fit.camera, CameraMode::fit);
+  EXPECT_TRUE(fit.camera_chosen);
+  EXPECT_FALSE(resolve_render_options({}, flags(true)).settings.camera_chosen);
+  const RenderSettings fixed = resolve_render_options({{"view", "-1,-2,3,4"}}, flags(true)).settings;
+  EXPECT_EQ(fixed.camera, CameraMode::fixed);
+  EXPECT_EQ(fixed.view.ymax, 4.0);
+  EXPECT_TRUE(resolve_render_options({{"view", "fbd"}}, flags(true)).settings.free_body);
+  const ElementSet shown =
+      resolve_render_options({{"show", "velocity,gravity"}, {"hide", "legend,labels,joint-force"}}, flags(true))
+          .settings.elements;
+  EXPECT_TRUE(shown.has(Element::velocity));
+  EXPECT_TRUE(shown.has(Element::gravity));
+  EXPECT_FALSE(shown.has(Element::legend));
+  EXPECT_FALSE(shown.has(Element::labels));
+  EXPECT_FALSE(shown.has(Element::pin_force));  // "joint-force" is pin-force's other name
   EXPECT_TRUE(resolve_render_options({{"show", "equations"}}, flags(true)).settings.elements.has(Element::equations));
-  // A mechanism's arrows are its joints' and applied loads'.
+  // A mechanism's arrows are its joints', applied loads', gravity's, springs' and velocities'.
   EXPECT_EQ(error_of({{"arrow_scale", "joint=2"}}).substr(0, 12), "arrow_scale|");
   EXPECT_EQ(resolve_render_options({{"arrow_scale", "joint=2"}}, flags(true)).settings.arrow_scale.fixed_for("joint"),
             2.0);

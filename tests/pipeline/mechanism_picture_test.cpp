@@ -1,0 +1,277 @@
+// Issue 23, Deliver 2: every picture feature on every mechanism. The draw list holds what
+// --show/--hide ask for; gravity, springs and velocities are arrows with the values the
+// System gives; the camera is the one asked for (fit and follow by default).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "model/mechanism_toml.hpp"
+#include "pipeline/mechanism_clip.hpp"
+#include "scene/mechanism_scene.hpp"
+#include "symbolic/loop_closure.hpp"
+
+namespace linkage {
+namespace {
+
+using Kind = MechanismDrawList::Arrow::Kind;
+
+MechanismMotion motion_of(const sym::System& system, double duration, double fps) {
+  std::vector<double> times;
+  for (long k = 0; k <= std::lround(duration * fps); ++k) times.push_back(static_cast<double>(k) / fps);
+  SimulationOptions options;
+  options.duration = duration;
+  ClipResult result;
+  return sample_mechanism_motion(system, sym::checked_initial_state(system).state, options, times, 1, result);
+}
+
+std::vector<MechanismDrawList::Arrow> arrows_of(const MechanismDrawList& list, Kind kind) {
+  std::vector<MechanismDrawList::Arrow> out;
+  for (const MechanismDrawList::Arrow& arrow : list.arrows)
+    if (arrow.kind == kind) out.push_back(arrow);
+  return out;
+}
+
+bool has_row(const MechanismDrawList::Legend& legend, Kind kind) {
+  for (const MechanismDrawList::Legend::Row& row : legend.rows)
+    if (row.kind == kind) return true;
+  return false;
+}
+
+// The spring-pendulum's disc (m = 0.2 kg, g = 9.81) on k = 20 N/m, l0 = 0.3 m, c = 0.05 N s/m
+// from O = (0, 0): m g down at the centre, and k (l - l0) + c l' along the spring, pulling
+// the disc towards O, as worked out here by hand from the sample's pose and rates.
+TEST(MechanismPicture, GravityAndSpringArrowsCarryTheLoadsValues) {
+  const sym::System system(load_mechanism("spring-pendulum"));
+  const MechanismMotion motion = motion_of(system, 1.0, 30);
+  ElementSet shown = ElementSet::defaults();
+  shown.show(Element::velocity);
+  const MechanismScene scene(mechanism_geometry(system), motion, {}, 2.0, {}, shown);
+  MechanismDrawList list;
+  for (const std::size_t k : {0UL, 7UL, 30UL}) {
+    SCOPED_TRACE(k);
+    scene.frame(k, list);
+    const eval::MechanismSample& s = motion.samples[k];
+    const Vec2 centre(s.pose[0], s.pose[1]), velocity(s.rates[0], s.rates[1]);
+    const auto gravity = arrows_of(list, Kind::gravity);
+    ASSERT_EQ(gravity.size(), 1U);
+    EXPECT_NEAR(gravity[0].force, 0.2 * 9.81, 1e-12);
+    EXPECT_NEAR((gravity[0].tail - centre).norm(), 0, 1e-12);
+    EXPECT_NEAR(gravity[0].vector.normalized().y(), -1, 1e-12);
+    EXPECT_EQ(gravity[0].label, "m g on 1");
+    const auto spring = arrows_of(list, Kind::spring);
+    ASSERT_EQ(spring.size(), 1U);  // the ground's end is not drawn
+    const double length = centre.norm(), rate = centre.dot(velocity) / length;
+    const double tension = 20 * (length - 0.3) + 0.05 * rate;
+    EXPECT_NEAR(spring[0].force, std::fabs(tension), 1e-9);
+    EXPECT_NEAR((spring[0].vector.normalized() - std::copysign(1.0, tension) * (-centre / length)).norm(), 0, 1e-9);
+    EXPECT_EQ(spring[0].label.rfind("k1 on 1", 0), 0U);
+    const auto velocities = arrows_of(list, Kind::velocity);
+    ASSERT_EQ(velocities.size(), k == 0 ? 0U : 1U);  // it starts at rest
+    if (k > 0) {
+      EXPECT_NEAR(velocities[0].force, velocity.norm(), 1e-12);
+      if (!velocities[0].cut && !velocities[0].stretched) {
+        EXPECT_NEAR((velocities[0].vector - scene.scale_of(Kind::velocity) * velocity).norm(), 0, 1e-12);
+      }
+    }
+    for (const MechanismDrawList::Arrow& arrow : list.arrows) {
+      if (!arrow.cut && !arrow.stretched) {
+        EXPECT_NEAR(arrow.vector.norm(), scene.scale_of(arrow.kind) * arrow.force, 1e-12) << arrow.label;
+      }
+    }
+  }
+  EXPECT_TRUE(has_row(list.legend, Kind::gravity));
+  EXPECT_TRUE(has_row(list.legend, Kind::spring));
+  EXPECT_TRUE(has_row(list.legend, Kind::velocity));
+  // By default each kind its own scale; common gives gravity and the spring one.
+  EXPECT_NE(scene.scale_of(Kind::gravity), scene.scale_of(Kind::spring));
+  ArrowScaleRequest common;
+  common.common = true;
+  const MechanismScene shared(mechanism_geometry(system), motion, {}, 2.0, common, shown);
+  EXPECT_EQ(shared.scale_of(Kind::gravity), shared.scale_of(Kind::spring));
+  EXPECT_NE(shared.scale_of(Kind::velocity), shared.scale_of(Kind::gravity));  // not a force
+  ArrowScaleRequest fixed;
+  fixed.fixed = {{"gravity", 2.0}};  // 1 cm = 2 N
+  const MechanismScene two(mechanism_geometry(system), motion, {}, 2.0, fixed, shown);
+  EXPECT_NEAR(two.scale_of(Kind::gravity), 0.01 / 2, 1e-15);
+}
+
+TEST(MechanismPicture, ShowAndHideDecideTheDrawList) {
+  const sym::System system(load_mechanism("four-bar"));
+  const MechanismMotion motion = motion_of(system, 0.5, 30);
+  const MechanismGeometry geometry = mechanism_geometry(system);
+  const std::vector<BodyPoint> trail{geometry.resolve("3.B", "trail")};
+  MechanismDrawList list;
+  const auto count = [&](MechanismDrawList::Marker::Kind kind) {
+    return std::count_if(list.markers.begin(), list.markers.end(), [&](const auto& m) { return m.kind == kind; });
+  };
+  const MechanismScene shown(geometry, motion, trail);
+  shown.frame(10, list);
+  EXPECT_EQ(list.outlines.size(), 3U);
+  EXPECT_EQ(list.labels.size(), 3U);
+  EXPECT_EQ(count(MechanismDrawList::Marker::Kind::pin), 4);
+  EXPECT_EQ(count(MechanismDrawList::Marker::Kind::com), 3);
+  EXPECT_EQ(arrows_of(list, Kind::joint).size(), 6U);  // two per joint between bodies, one at each ground pin
+  EXPECT_EQ(arrows_of(list, Kind::gravity).size(), 3U);
+  EXPECT_TRUE(arrows_of(list, Kind::velocity).empty());  // off by default
+  EXPECT_TRUE(std::any_of(list.lines.begin(), list.lines.end(),
+                          [](const auto& l) { return l.kind == MechanismDrawList::Line::Kind::trail; }));
+  EXPECT_TRUE(list.shown.has(Element::grid));
+
+  ElementSet few = ElementSet::defaults();
+  for (const Element e : {Element::blocks, Element::pin, Element::pin_force, Element::labels, Element::trail,
+                          Element::com, Element::grid, Element::legend})
+    few.hide(e);
+  const MechanismScene hidden(geometry, motion, trail, 2.0, {}, few);
+  hidden.frame(10, list);
+  EXPECT_TRUE(list.outlines.empty());
+  EXPECT_TRUE(list.labels.empty());
+  EXPECT_EQ(count(MechanismDrawList::Marker::Kind::pin), 0);
+  EXPECT_EQ(count(MechanismDrawList::Marker::Kind::com), 0);
+  EXPECT_EQ(count(MechanismDrawList::Marker::Kind::ground), 2);  // the ground stays
+  EXPECT_TRUE(arrows_of(list, Kind::joint).empty());
+  ASSERT_EQ(arrows_of(list, Kind::gravity).size(), 3U);
+  for (const MechanismDrawList::Arrow& arrow : list.arrows) EXPECT_EQ(arrow.label, "");  // labels hidden
+  EXPECT_FALSE(std::any_of(list.lines.begin(), list.lines.end(),
+                           [](const auto& l) { return l.kind == MechanismDrawList::Line::Kind::trail; }));
+  EXPECT_FALSE(list.shown.has(Element::grid));  // the painter's part
+  EXPECT_FALSE(list.legend.joint);
+  EXPECT_TRUE(has_row(list.legend, Kind::gravity));
+}
+
+TEST(MechanismPicture, CameraIsFitOrFollowByDefaultAndAsAsked) {
+  RenderSettings settings;
+  settings.width = 320;
+  settings.height = 180;
+  const sym::System four_bar(load_mechanism("four-bar")), blocks(load_mechanism("two-blocks"));
+  EXPECT_EQ(mechanism_camera_mode(settings, mechanism_geometry(four_bar)), CameraMode::fit);
+  EXPECT_EQ(mechanism_camera_mode(settings, mechanism_geometry(blocks)), CameraMode::follow);
+  settings.camera_chosen = true;
+  settings.camera = CameraMode::follow;
+  EXPECT_EQ(mechanism_camera_mode(settings, mechanism_geometry(four_bar)), CameraMode::follow);
+
+  const MechanismMotion motion = motion_of(four_bar, 1.0, 30);
+  const MechanismScene scene(mechanism_geometry(four_bar), motion, {});
+  // Fit: every outline point and arrow tip of every frame inside the frame.
+  const Camera fit = mechanism_camera(scene, settings, CameraMode::fit);
+  const View visible = fit.visible();
+  EXPECT_LE(visible.xmin, scene.view_bounds().min.x());
+  EXPECT_GE(visible.xmax, scene.view_bounds().max.x());
+  EXPECT_LE(visible.ymin, scene.view_bounds().min.y());
+  EXPECT_GE(visible.ymax, scene.view_bounds().max.y());
+  // Follow: centred on the centroid, holding the widest reach.
+  const Camera follow = mechanism_camera(scene, settings, CameraMode::follow);
+  EXPECT_NEAR((follow.centre() - scene.centroid(0)).norm(), 0, 1e-12);
+  EXPECT_NEAR(0.5 * settings.height / follow.scale(), 1.1 * scene.view_reach(), 1e-9);
+  // Fixed: exactly the view asked for, widened to the frame's shape.
+  settings.view = {-1, -0.5, 1, 0.5};
+  const Camera fixed = mechanism_camera(scene, settings, CameraMode::fixed);
+  EXPECT_NEAR(fixed.visible().xmin, -1, 1e-12);
+  EXPECT_NEAR(fixed.visible().xmax, 1, 1e-12);
+  EXPECT_NEAR(fixed.centre().y(), 0, 1e-12);
+}
+
+// A traced point's velocity from the System's derivative of its position, checked here
+// against a central difference of the point's path (h = 1e-4 s: an error of order h^2
+// times the third derivative, far below the tolerance).
+TEST(MechanismPicture, TracedPointsVelocityIsTheDerivativeOfItsPath) {
+  const sym::System system(load_mechanism("four-bar"));
+  const MechanismGeometry geometry = mechanism_geometry(system);
+  const BodyPoint p = geometry.resolve("3.P", "trail");
+  const std::vector<double> times{0.5 - 1e-4, 0.5, 0.5 + 1e-4};
+  SimulationOptions options;
+  options.duration = 0.6;
+  options.rtol = 1e-12;
+  options.atol = 1e-12;
+  ClipResult result;
+  const MechanismMotion motion =
+      sample_mechanism_motion(system, sym::checked_initial_state(system).state, options, times, 1, result);
+  ElementSet shown = ElementSet::defaults();
+  shown.show(Element::velocity);
+  const MechanismScene scene(geometry, motion, {p}, 2.0, {}, shown);
+  MechanismDrawList list;
+  scene.frame(1, list);
+  const auto velocities = arrows_of(list, Kind::velocity);
+  ASSERT_EQ(velocities.size(), 4U);  // three centres of mass, then P
+  EXPECT_EQ(velocities[3].label.rfind("v of 3.P", 0), 0U);
+  const Vec2 expected =
+      (world_point(motion.samples[2].pose, p) - world_point(motion.samples[0].pose, p)) / (times[2] - times[0]);
+  const Vec2 drawn = velocities[3].force * velocities[3].vector.normalized();
+  EXPECT_NEAR((drawn - expected).norm(), 0, 1e-5 * expected.norm());
+  EXPECT_NEAR((velocities[3].tail - world_point(motion.samples[1].pose, p)).norm(), 0, 1e-12);
+}
+
+// The free-body view: every body pulled away from the others, carrying every force on it
+// (joint forces as equal and opposite pairs, one on each body, gravity at its centre), and
+// each body its half of each pin between bodies.
+TEST(MechanismPicture, FreeBodyViewPullsEachBodyApartWithItsForces) {
+  for (const char* name : {"four-bar", "slider-crank", "triple-pendulum", "two-blocks"}) {
+    SCOPED_TRACE(name);
+    const sym::System system(load_mechanism(name));
+    const MechanismMotion motion = motion_of(system, 0.5, 30);
+    const MechanismGeometry geometry = mechanism_geometry(system);
+    const MechanismScene together(geometry, motion, {});
+    const MechanismScene apart(geometry, motion, {}, 2.0, {}, ElementSet::defaults(), true);
+    MechanismDrawList joined, pulled;
+    const std::size_t k = 9;
+    together.frame(k, joined);
+    apart.frame(k, pulled);
+    ASSERT_EQ(joined.outlines.size(), pulled.outlines.size());
+    ASSERT_EQ(joined.arrows.size(), pulled.arrows.size());
+    const std::vector<double>& pose = motion.samples[k].pose;
+    const Vec2 c = together.centroid(k);
+    std::vector<Vec2> shift;
+    for (std::size_t i = 0; i < geometry.bodies.size(); ++i) {
+      shift.push_back(0.5 * (Vec2(pose[3 * i], pose[3 * i + 1]) - c));
+      // The whole outline moves by its body's shift, unturned.
+      for (std::size_t p = 0; p < joined.outlines[i].points.size(); ++p)
+        EXPECT_NEAR((pulled.outlines[i].points[p] - joined.outlines[i].points[p] - shift[i]).norm(), 0, 1e-12);
+    }
+    // Every arrow moves with the body it acts on, its value and direction unchanged.
+    for (std::size_t a = 0; a < pulled.arrows.size(); ++a) {
+      const MechanismDrawList::Arrow& arrow = pulled.arrows[a];
+      ASSERT_GE(arrow.body, 0) << arrow.label;
+      EXPECT_EQ(arrow.label, joined.arrows[a].label);
+      EXPECT_NEAR((arrow.vector - joined.arrows[a].vector).norm(), 0, 1e-12);
+      EXPECT_NEAR((arrow.tail - joined.arrows[a].tail - shift[static_cast<std::size_t>(arrow.body)]).norm(), 0, 1e-12)
+          << arrow.label;
+    }
+    // A joint between two bodies: its pair of arrows equal and opposite, on different
+    // bodies, now apart; and its pin drawn on each.
+    std::size_t pairs = 0;
+    for (std::size_t a = 0; a + 1 < pulled.arrows.size(); ++a) {
+      const MechanismDrawList::Arrow &one = pulled.arrows[a], &other = pulled.arrows[a + 1];
+      if (one.kind != Kind::joint || other.kind != Kind::joint || one.body == other.body) continue;
+      if (one.label.substr(0, one.label.find(" on ")) != other.label.substr(0, other.label.find(" on "))) continue;
+      ++pairs;
+      EXPECT_NEAR((one.vector + other.vector).norm(), 0, 1e-12) << one.label;
+      EXPECT_GT((one.tail - other.tail).norm(), 1e-3) << one.label;
+      ++a;
+    }
+    std::size_t between = 0;
+    for (const MechanismGeometry::JointShape& joint : geometry.joints)
+      if (joint.points[0].body >= 0 && joint.points[1].body >= 0) ++between;
+    EXPECT_EQ(pairs, between);
+    const auto pins = [](const MechanismDrawList& list) {
+      return std::count_if(list.markers.begin(), list.markers.end(),
+                           [](const auto& m) { return m.kind == MechanismDrawList::Marker::Kind::pin; });
+    };
+    // A pin on every body it joins (the ground's side stays a support), one per joint when joined.
+    std::size_t pin_joints = 0, pin_sides = 0;
+    for (const MechanismGeometry::JointShape& joint : geometry.joints) {
+      if (joint.type != JointType::pin) continue;
+      ++pin_joints;
+      pin_sides += (joint.points[0].body >= 0 ? 1U : 0U) + (joint.points[1].body >= 0 ? 1U : 0U);
+    }
+    EXPECT_EQ(static_cast<std::size_t>(pins(joined)), pin_joints);
+    EXPECT_EQ(static_cast<std::size_t>(pins(pulled)), pin_sides);
+    // The camera's view holds the pulled-apart bodies.
+    for (const MechanismDrawList::Outline& outline : pulled.outlines)
+      for (const Vec2& p : outline.points) {
+        EXPECT_GE(p.x(), apart.view_bounds().min.x() - 1e-12);
+        EXPECT_LE(p.y(), apart.view_bounds().max.y() + 1e-12);
+      }
+  }
+}
+
+}  // namespace
+}  // namespace linkage
