@@ -164,19 +164,9 @@ void MechanismDynamics::compile_case() const {
     out.push_back(b.rotates ? prepare(b.theta.q_dot) : ex(0));
   }
   for (const sym::JointSystem& j : system.joints()) {
-    const Joint& joint = mechanism.joints[static_cast<std::size_t>(j.index)];
-    ex s = 0;
-    if (joint.type == JointType::slider) {
-      const int a = mechanism.body_index(joint.bodies[0]), b = mechanism.body_index(joint.bodies[1]);
-      const ex angle = a < 0 || !system.bodies()[static_cast<std::size_t>(a)].rotates
-                           ? ex(0)
-                           : ex(system.bodies()[static_cast<std::size_t>(a)].theta.q);
-      const ex ax = system.quantity(joint.axis->x, false), ay = system.quantity(joint.axis->y, false);
-      const ex length = GiNaC::sqrt(ax * ax + ay * ay);
-      const sym::Vec2 u = sym::rotate(angle, {ax / length, ay / length});
-      const sym::Vec2 d = system.point_position(b, joint.points[1]) - system.point_position(a, joint.points[0]);
-      s = u.x * d.x + u.y * d.y;
-    }
+    // The joint's own coordinate (a slider's s; 0 without one).
+    const ex s = sym::joint_stages(mechanism.joints[static_cast<std::size_t>(j.index)].type)
+                     .coordinate(sym::maximal_ends(system, j.index));
     out.push_back(prepare(s));
     out.push_back(prepare_output(j.force.x));
     out.push_back(prepare_output(j.force.y));
