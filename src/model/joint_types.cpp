@@ -1,5 +1,7 @@
 #include "model/joint_types.hpp"
 
+#include <stdexcept>
+
 namespace linkage {
 
 const JointTypeInfo& joint_type_info(JointType type) {
