@@ -21,24 +21,10 @@ Eigen::Index idx(std::size_t i) { return static_cast<Eigen::Index>(i); }
 // A Newton projection that has not met the constraints in this many iterations will not.
 constexpr int kProjectionIterations = 12;
 
-/// A slider's s, the position along its axis in maximal coordinates (0 for a pin).
-ex slider_position(const sym::System& system, const Joint& joint) {
-  switch (joint.type) {
-    case JointType::pin:
-      return 0;
-    case JointType::slider:
-      break;
-  }
-  const Mechanism& mechanism = system.mechanism();
-  const int a = mechanism.body_index(joint.bodies[0]), b = mechanism.body_index(joint.bodies[1]);
-  const ex angle = a < 0 || !system.bodies()[static_cast<std::size_t>(a)].rotates
-                       ? ex(0)
-                       : ex(system.bodies()[static_cast<std::size_t>(a)].theta.q);
-  const ex ax = system.quantity(joint.axis->x, false), ay = system.quantity(joint.axis->y, false);
-  const ex length = GiNaC::sqrt(ax * ax + ay * ay);
-  const sym::Vec2 u = sym::rotate(angle, {ax / length, ay / length});
-  const sym::Vec2 d = system.point_position(b, joint.points[1]) - system.point_position(a, joint.points[0]);
-  return u.x * d.x + u.y * d.y;
+/// The joint's own coordinate in maximal coordinates (a slider's s; 0 without one).
+ex joint_coordinate(const sym::System& system, int joint) {
+  return sym::joint_stages(system.mechanism().joints[static_cast<std::size_t>(joint)].type)
+      .coordinate(sym::maximal_ends(system, joint));
 }
 
 }  // namespace
@@ -191,8 +177,7 @@ void MechanismDynamics::compile_case() const {
     out.push_back(b.rotates ? prepare(b.theta.q_dot) : ex(0));
   }
   for (const sym::JointSystem& j : system.joints()) {
-    const Joint& joint = mechanism.joints[static_cast<std::size_t>(j.index)];
-    out.push_back(prepare(slider_position(system, joint)));
+    out.push_back(prepare(joint_coordinate(system, j.index)));
     out.push_back(prepare_output(j.force.x));
     out.push_back(prepare_output(j.force.y));
     out.push_back(prepare_output(j.moment));
@@ -246,8 +231,7 @@ void MechanismDynamics::compile_kinematics() const {
     out.push_back(b.rotates ? prepare(b.theta.q_ddot) : ex(0));
   }
   for (const sym::JointSystem& j : system.joints())
-    out.push_back(prepare(system.time_derivative(system.time_derivative(
-        slider_position(system, system.mechanism().joints[static_cast<std::size_t>(j.index)])))));
+    out.push_back(prepare(system.time_derivative(system.time_derivative(joint_coordinate(system, j.index)))));
   for (const NamedPoint& p : named_points(system)) {
     const sym::Vec2 position = system.point_position(static_cast<int>(p.body), p.name);
     const sym::Vec2 velocity{system.time_derivative(position.x), system.time_derivative(position.y)};

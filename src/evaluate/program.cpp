@@ -76,9 +76,19 @@ const char* infix(Op op) {
       return " * ";
     case Op::div:
       return " / ";
-    default:
+    case Op::neg:
+    case Op::sqrt:
+    case Op::pow:
+    case Op::sin:
+    case Op::cos:
+    case Op::sincos:
+    case Op::tan:
+    case Op::exp:
+    case Op::log:
+    case Op::abs:
       return nullptr;
   }
+  return nullptr;
 }
 
 const char* name(Op op) {
@@ -103,9 +113,13 @@ const char* name(Op op) {
       return "log";
     case Op::abs:
       return "abs";
-    default:
+    case Op::add:
+    case Op::sub:
+    case Op::mul:
+    case Op::div:
       return "?";
   }
+  return "?";
 }
 
 }  // namespace

@@ -6,6 +6,9 @@
 #include <limits>
 #include <stdexcept>
 
+#include "model/joint_types.hpp"
+#include "symbolic/joints.hpp"
+
 namespace linkage::eval {
 
 namespace {
@@ -15,7 +18,7 @@ using Vec2 = Eigen::Vector2d;
 using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
 
-enum class NodeKind { floating, pin, slider };
+enum class NodeKind { floating, revolute, prismatic };  // model/joint_types.hpp: JointMotion
 
 /// One body of the tree, in the order the tree reached it (parents first).
 struct Node {
@@ -151,13 +154,17 @@ TreeDynamics::TreeDynamics(const sym::System& system) : impl_(std::make_unique<I
       const int parent_body = t.parent;
       n.parent_point = local(parent_body, joint.points[child_is_b ? 0 : 1]);
       n.child_point = local(b, joint.points[child_is_b ? 1 : 0]);
-      if (joint.type == JointType::pin) {
-        n.kind = NodeKind::pin;
-      } else {
-        n.kind = NodeKind::slider;
-        n.axis = Vec2(number(system.quantity(joint.axis->x, false)), number(system.quantity(joint.axis->y, false)))
-                     .normalized();
-        n.sign = child_is_b ? 1.0 : -1.0;
+      switch (joint_type_info(joint.type).motion) {
+        case JointMotion::revolute:
+          n.kind = NodeKind::revolute;
+          break;
+        case JointMotion::prismatic: {
+          const sym::Vec2 axis = sym::joint_axis(system, joint);
+          n.kind = NodeKind::prismatic;
+          n.axis = Vec2(number(axis.x), number(axis.y)).normalized();
+          n.sign = child_is_b ? 1.0 : -1.0;
+          break;
+        }
       }
     }
     node_of[static_cast<std::size_t>(b)] = static_cast<int>(m.nodes.size());
@@ -307,7 +314,7 @@ void TreeDynamics::Impl::kinematics(const Eigen::VectorXd& y) const {
         w.omega = w.q_dot[2];
         break;
       }
-      case NodeKind::pin: {
+      case NodeKind::revolute: {
         w.angle = q(node.coordinate[0]);
         w.omega = q_dot(node.coordinate[0]);
         w.q_dot[0] = w.omega - parent_omega;
@@ -320,7 +327,7 @@ void TreeDynamics::Impl::kinematics(const Eigen::VectorXd& y) const {
         w.c = cross_motion(parent_v, w.S.col(0)) * w.q_dot[0];
         break;
       }
-      case NodeKind::slider: {
+      case NodeKind::prismatic: {
         const Vec2 u = rotate(pc, ps, node.axis);
         w.angle = parent_angle;
         w.cos_angle = pc;
@@ -349,8 +356,16 @@ void TreeDynamics::Impl::recursion(bool loaded, const Eigen::VectorXd& tau_absol
       const Node& node = nodes[k];
       Work& w = work[k];
       double own = 0;
-      if (node.kind == NodeKind::pin) own = tau_absolute[node.coordinate[0]];
-      if (node.kind == NodeKind::floating && node.rotates) own = tau_absolute[node.coordinate[2]];
+      switch (node.kind) {
+        case NodeKind::floating:
+          if (node.rotates) own = tau_absolute[node.coordinate[2]];
+          break;
+        case NodeKind::revolute:
+          own = tau_absolute[node.coordinate[0]];
+          break;
+        case NodeKind::prismatic:
+          break;
+      }
       angle_force[k] += own;
       if (node.parent >= 0 && node.kind != NodeKind::floating)
         angle_force[static_cast<std::size_t>(node.parent)] += angle_force[k];
@@ -361,10 +376,10 @@ void TreeDynamics::Impl::recursion(bool loaded, const Eigen::VectorXd& tau_absol
           w.u[1] = tau_absolute[node.coordinate[1]];
           w.u[2] = angle_force[k];
           break;
-        case NodeKind::pin:
+        case NodeKind::revolute:
           w.u[0] = angle_force[k];
           break;
-        case NodeKind::slider:
+        case NodeKind::prismatic:
           w.u[0] = tau_absolute[node.coordinate[0]];
           break;
       }
@@ -431,11 +446,11 @@ void TreeDynamics::Impl::recursion(bool loaded, const Eigen::VectorXd& tau_absol
         w.alpha = node.rotates ? w.q_ddot[2] : 0.0;
         if (node.rotates) out[node.coordinate[2]] = w.alpha;
         break;
-      case NodeKind::pin:
+      case NodeKind::revolute:
         w.alpha = parent_alpha + w.q_ddot[0];
         out[node.coordinate[0]] = w.alpha;
         break;
-      case NodeKind::slider:
+      case NodeKind::prismatic:
         w.alpha = parent_alpha;
         out[node.coordinate[0]] = w.q_ddot[0];
         break;

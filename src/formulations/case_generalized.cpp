@@ -9,6 +9,7 @@
 
 #include "core/interrupt.hpp"
 #include "formulations/case_system.hpp"
+#include "model/joint_types.hpp"
 #include "symbolic/joints.hpp"
 
 namespace linkage {
@@ -41,21 +42,25 @@ GeneralizedRows generalized_rows(const sym::System& system) {
     for (const GiNaC::ex& r : ne.rows)
       rows.rows.push_back(GiNaC::expand(r.subs(to_q, GiNaC::subs_options::no_pattern)));
     rows.own.assign(rows.rows.size(), -1);
-    // A slider's child: its translation rows along and across the axis.
+    // A prismatic joint's child: its translation rows along and across the axis.
     const TreeBody& node = tree.bodies[b];
-    if (!node.floating && node.joint >= 0 &&
-        system.mechanism().joints[static_cast<std::size_t>(node.joint)].type == JointType::slider) {
-      const Joint& joint = system.mechanism().joints[static_cast<std::size_t>(node.joint)];
-      const GiNaC::ex ax = system.quantity(joint.axis->x, false);
-      const GiNaC::ex ay = system.quantity(joint.axis->y, false);
-      const GiNaC::ex length = GiNaC::sqrt(ax * ax + ay * ay);
-      // The axis turns with bodies[0]; the child keeps that angle.
-      const GiNaC::ex angle =
-          bodies[b].rotates ? GiNaC::ex(bodies[b].theta.q).subs(to_q, GiNaC::subs_options::no_pattern) : GiNaC::ex(0);
-      const sym::Vec2 u = sym::rotate(angle, {ax / length, ay / length});
-      const GiNaC::ex rx = rows.rows[0], ry = rows.rows[1];
-      rows.rows[0] = GiNaC::expand(u.x * rx + u.y * ry);
-      rows.rows[1] = GiNaC::expand(-u.y * rx + u.x * ry);
+    if (node.floating || node.joint < 0) continue;
+    const Joint& joint = system.mechanism().joints[static_cast<std::size_t>(node.joint)];
+    switch (joint_type_info(joint.type).motion) {
+      case JointMotion::revolute:
+        break;
+      case JointMotion::prismatic: {
+        const sym::Vec2 axis = sym::joint_axis(system, joint);
+        const GiNaC::ex length = GiNaC::sqrt(axis.x * axis.x + axis.y * axis.y);
+        // The axis turns with bodies[0]; the child keeps that angle.
+        const GiNaC::ex angle =
+            bodies[b].rotates ? GiNaC::ex(bodies[b].theta.q).subs(to_q, GiNaC::subs_options::no_pattern) : GiNaC::ex(0);
+        const sym::Vec2 u = sym::rotate(angle, {axis.x / length, axis.y / length});
+        const GiNaC::ex rx = rows.rows[0], ry = rows.rows[1];
+        rows.rows[0] = GiNaC::expand(u.x * rx + u.y * ry);
+        rows.rows[1] = GiNaC::expand(-u.y * rx + u.x * ry);
+        break;
+      }
     }
   }
   for (std::size_t c = 0; c < coordinates.size(); ++c) {

@@ -12,6 +12,7 @@
 
 #include "formulations/case_system.hpp"
 #include "symbolic/energy.hpp"
+#include "symbolic/joints.hpp"
 
 namespace linkage {
 
@@ -134,7 +135,8 @@ std::vector<Application> applications(const sym::System& system) {
     const Joint& joint = m.joints[static_cast<std::size_t>(j)];
     const int a = m.body_index(joint.bodies[0]), b = m.body_index(joint.bodies[1]);
     const sym::Vec2 at_b = system.point_position(b, joint.points[1]);
-    const sym::Vec2 at_a = joint.type == JointType::pin ? system.point_position(a, joint.points[0]) : at_b;
+    const sym::Vec2 at_a =
+        sym::joint_stages(joint.type).force_at_point_b ? at_b : system.point_position(a, joint.points[0]);
     out.push_back({a, js.force, at_a, js.moment});
     out.push_back({b, ex(-1) * js.force, at_b, -js.moment});
   }

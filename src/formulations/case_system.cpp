@@ -4,6 +4,7 @@
 #include <map>
 
 #include "core/interrupt.hpp"
+#include "model/joint_types.hpp"
 
 namespace linkage {
 
@@ -74,7 +75,7 @@ CaseSystem derive_case(const sym::System& system, CaseId id) {
 
 std::string force_phrase(const sym::System& system) {
   const auto& joints = system.mechanism().joints;
-  if (joints.size() == 1) return joints[0].type == JointType::pin ? "pin force" : "slider force";
+  if (joints.size() == 1) return std::string(joint_type_name(joints[0].type)) + " force";
   return "joint forces";
 }
 

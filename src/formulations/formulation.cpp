@@ -70,9 +70,13 @@ double solution_value(const CaseSolution& solution, Unknown u, const Params& p) 
       return -get(Unknown::F_x) / p.m;  // (4.1)
     case Unknown::y2_ddot:
       return -p.g - get(Unknown::F_y) / p.m;  // (5.1)
-    default:
-      throw Error::failure("unknown missing from a case's solution");
+    case Unknown::x1_ddot:
+    case Unknown::y1_ddot:
+    case Unknown::theta1_ddot:
+    case Unknown::theta2_ddot:
+      break;  // every case solves for these
   }
+  throw Error::failure("unknown missing from a case's solution");
 }
 
 }  // namespace linkage

@@ -6,6 +6,7 @@
 
 #include "core/error.hpp"
 #include "core/name_match.hpp"
+#include "symbolic/joints.hpp"
 
 namespace linkage {
 
@@ -37,8 +38,9 @@ std::vector<MechanismColumn> mechanism_columns(const sym::System& system) {
                      Q::position, 3 * b + c, true});
   }
   for (std::size_t j = 0; j < m.joints.size(); ++j)
-    if (m.joints[j].type == JointType::slider)
-      out.push_back({m.joints[j].name + ".s", "m", "position along slider " + m.joints[j].name, Q::slider, j, true});
+    if (const sym::OwnCoordinate* own = sym::joint_stages(m.joints[j].type).own)
+      out.push_back(
+          {m.joints[j].name + "." + own->base, own->units[0], own->meanings[0] + m.joints[j].name, Q::slider, j, true});
   for (std::size_t b = 0; b < system.bodies().size(); ++b) {
     const sym::BodySystem& body = system.bodies()[b];
     for (std::size_t c = 0; c < (body.rotates ? 3U : 2U); ++c)
@@ -71,9 +73,10 @@ std::vector<MechanismColumn> mechanism_columns(const sym::System& system) {
                            (joint.bodies[0] == kGround ? std::string("the ground") : "body " + joint.bodies[0]);
     out.push_back({joint.name + ".force_x", "N", on + ", x", Q::force, 3 * j, false});
     out.push_back({joint.name + ".force_y", "N", on + ", y", Q::force, 3 * j + 1, false});
-    if (joint.type == JointType::slider)
+    const sym::JointStages& stages = sym::joint_stages(joint.type);
+    if (stages.moment_column)
       out.push_back({joint.name + ".moment", "N m", "moment of joint " + joint.name, Q::force, 3 * j + 2, false});
-    out.push_back({joint.name + ".constraint_error", joint.type == JointType::slider ? "m, rad" : "m",
+    out.push_back({joint.name + ".constraint_error", stages.constraint_unit,
                    "|C| of joint " + joint.name + "'s position constraint", Q::constraint, j, false});
   }
   out.push_back({"energy", "J", "kinetic plus potential energy", Q::energy, 0, false});

@@ -150,9 +150,10 @@ std::string type_phrase(const toml::node& node) {
       return "a time";
     case toml::node_type::date_time:
       return "a date-time";
-    default:
+    case toml::node_type::none:
       return "nothing";
   }
+  return "nothing";
 }
 
 }  // namespace linkage

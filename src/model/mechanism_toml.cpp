@@ -16,6 +16,7 @@
 #include "core/name_match.hpp"
 #include "core/number_format.hpp"
 #include "model/inputs_toml.hpp"
+#include "model/joint_types.hpp"
 #include "model/toml_table.hpp"
 
 namespace linkage {
@@ -558,10 +559,11 @@ class MechanismReader {
   }
 
   void read_joint_options(const TableReader& r, Joint& joint) const {
-    const bool pin = joint.type == JointType::pin;
+    const JointTypeInfo& info = joint_type_info(joint.type);
+    const std::string takes = std::string("a ") + joint_type_name(joint.type) + " takes: " + info.options;
     for (const std::string_view key : {"stiffness", "damping", "rest_angle"}) {
       if (!r.has(key)) continue;
-      if (!pin) r.fail(key, q(key) + " is for pins only (a torsional spring-damper); a slider takes: axis");
+      if (!info.torsional_spring) r.fail(key, q(key) + " is for pins only (a torsional spring-damper); " + takes);
       const auto read = quantity_at(r, key);
       if (key == "stiffness") {
         require_bound(*read, key, r.context(), false, "N m/rad");
@@ -573,10 +575,11 @@ class MechanismReader {
         joint.rest_angle = read->quantity;
       }
     }
-    if (pin && r.has("axis")) r.fail("axis", "'axis' is for sliders only; a pin takes: stiffness, damping, rest_angle");
-    if (pin) return;
+    if (!info.axis && r.has("axis")) r.fail("axis", "'axis' is for sliders only; " + takes);
+    if (!info.axis) return;
     if (!r.has("axis"))
-      r.fail("axis", "a slider needs 'axis', its direction [x, y] in the frame of " + q(joint.bodies[0]));
+      r.fail("axis", std::string("a ") + joint_type_name(joint.type) +
+                         " needs 'axis', its direction [x, y] in the frame of " + q(joint.bodies[0]));
     joint.axis = vector_of(*r.node("axis"), "'axis'", r.context());
     const auto is_zero = [](const Quantity& c) {
       const auto* end = c.text.data() + c.text.size();
@@ -665,7 +668,7 @@ class MechanismReader {
     std::vector<std::string> entries{"independent"};
     for (const Body& body : m_.bodies) entries.push_back(body.name);
     for (const Joint& joint : m_.joints)
-      if (joint.type == JointType::slider) entries.push_back(joint.name);
+      if (has_own_coordinate(joint_type_info(joint.type).motion)) entries.push_back(joint.name);
     for (const auto& [key, node] : initial.entries()) {
       const std::string name(key->str());
       if (name == "independent") {
@@ -674,10 +677,11 @@ class MechanismReader {
       }
       const Body* body = m_.find_body(name);
       const Joint* joint = m_.find_joint(name);
-      const bool slider = joint != nullptr && joint->type == JointType::slider;
+      const bool slider = joint != nullptr && has_own_coordinate(joint_type_info(joint->type).motion);
       if (body == nullptr && !slider) {
-        const std::string pin_note =
-            joint != nullptr ? " (" + q(name) + " is a pin: the angle of the body it carries is the coordinate)" : "";
+        const std::string pin_note = joint != nullptr ? " (" + q(name) + " is a " + joint_type_name(joint->type) +
+                                                            ": the angle of the body it carries is the coordinate)"
+                                                      : "";
         fail(key->source(), "[initial]: " + q(name) + " is not a body or slider joint" + pin_note +
                                 did_you_mean(name, entries) + "; valid: " + join_names(entries));
       }

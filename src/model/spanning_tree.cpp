@@ -2,6 +2,8 @@
 
 #include <deque>
 
+#include "model/joint_types.hpp"
+
 namespace linkage {
 
 const char* coordinate_kind_name(CoordinateKind kind) {
@@ -73,10 +75,14 @@ SpanningTree spanning_tree(const Mechanism& mechanism) {
       continue;
     }
     const Joint& joint = mechanism.joints[static_cast<std::size_t>(node.joint)];
-    if (joint.type == JointType::pin) {
-      if (rotates) tree.coordinates.push_back({CoordinateKind::theta, index, -1, body.name + ".theta"});
-    } else
-      tree.coordinates.push_back({CoordinateKind::s, index, node.joint, joint.name + ".s"});
+    switch (joint_type_info(joint.type).motion) {
+      case JointMotion::revolute:
+        if (rotates) tree.coordinates.push_back({CoordinateKind::theta, index, -1, body.name + ".theta"});
+        break;
+      case JointMotion::prismatic:
+        tree.coordinates.push_back({CoordinateKind::s, index, node.joint, joint.name + ".s"});
+        break;
+    }
   }
   return tree;
 }

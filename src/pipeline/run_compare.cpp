@@ -66,9 +66,13 @@ std::string figure_text(const RunFigures& f, CompareColumn column) {
       return std::to_string(f.rejected);
     case CompareColumn::rhs_evaluations:
       return std::to_string(f.rhs_evaluations);
-    default:
+    case CompareColumn::final_error:
+    case CompareColumn::energy_error:
+    case CompareColumn::constraint_error:
+    case CompareColumn::run_time:
       return format_significant(figure_value(f, column), 3);
   }
+  return format_significant(figure_value(f, column), 3);
 }
 
 // A compare row from a run's counters (the homework's or a mechanism's) and its final error.

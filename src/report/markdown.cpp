@@ -287,7 +287,15 @@ class TextRenderer final : public Renderer {
       case MD_BLOCK_H:
         heading_ = static_cast<int>(static_cast<MD_BLOCK_H_DETAIL*>(detail)->level);
         break;
-      default:
+      case MD_BLOCK_DOC:
+      case MD_BLOCK_HR:
+      case MD_BLOCK_HTML:
+      case MD_BLOCK_TABLE:
+      case MD_BLOCK_THEAD:
+      case MD_BLOCK_TBODY:
+      case MD_BLOCK_TR:
+      case MD_BLOCK_TH:
+      case MD_BLOCK_TD:
         table_.start(type, detail);
         break;
     }
@@ -339,7 +347,11 @@ class TextRenderer final : public Renderer {
       case MD_BLOCK_HR:
         emit({std::string(std::min<std::size_t>(width_, 20), '-')});
         break;
-      default:
+      case MD_BLOCK_DOC:
+      case MD_BLOCK_HTML:
+      case MD_BLOCK_THEAD:
+      case MD_BLOCK_TBODY:
+      case MD_BLOCK_TR:
         break;
     }
   }
@@ -554,7 +566,17 @@ class LatexRenderer final : public Renderer {
       case MD_BLOCK_H:
         out_ += static_cast<MD_BLOCK_H_DETAIL*>(detail)->level <= 1 ? "\\subsection*{" : "\\subsubsection*{";
         break;
-      default:
+      case MD_BLOCK_DOC:
+      case MD_BLOCK_HR:
+      case MD_BLOCK_CODE:
+      case MD_BLOCK_HTML:
+      case MD_BLOCK_P:
+      case MD_BLOCK_TABLE:
+      case MD_BLOCK_THEAD:
+      case MD_BLOCK_TBODY:
+      case MD_BLOCK_TR:
+      case MD_BLOCK_TH:
+      case MD_BLOCK_TD:
         table_.start(type, detail);
         break;
     }
@@ -608,7 +630,11 @@ class LatexRenderer final : public Renderer {
       case MD_BLOCK_HR:
         out_ += "\\noindent\\rule{\\linewidth}{0.4pt}\n\n";
         break;
-      default:
+      case MD_BLOCK_DOC:
+      case MD_BLOCK_HTML:
+      case MD_BLOCK_THEAD:
+      case MD_BLOCK_TBODY:
+      case MD_BLOCK_TR:
         break;
     }
   }
@@ -630,7 +656,10 @@ class LatexRenderer final : public Renderer {
       case MD_SPAN_LATEXMATH_DISPLAY:
         start_math(type);
         break;
-      default:
+      case MD_SPAN_CODE:
+      case MD_SPAN_DEL:
+      case MD_SPAN_WIKILINK:
+      case MD_SPAN_U:
         break;
     }
   }
@@ -654,7 +683,9 @@ class LatexRenderer final : public Renderer {
       case MD_SPAN_LATEXMATH_DISPLAY:
         inline_ += concat({"\\[\n", math_.trimmed(), "\n\\]"});
         break;
-      default:
+      case MD_SPAN_DEL:
+      case MD_SPAN_WIKILINK:
+      case MD_SPAN_U:
         break;
     }
   }

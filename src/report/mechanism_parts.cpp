@@ -6,6 +6,7 @@
 
 #include "core/number_format.hpp"
 #include "formulations/case_system.hpp"
+#include "model/joint_types.hpp"
 #include "report/expression_print.hpp"
 
 namespace linkage {
@@ -43,7 +44,12 @@ std::vector<PinInertia> pin_inertias(const sym::System& system) {
     if (!b.rotates) continue;
     const sym::SymbolInfo* inertia = system.table().find(GiNaC::ex_to<GiNaC::symbol>(b.inertia));
     for (const Joint& joint : m.joints) {
-      if (joint.type != JointType::pin) continue;
+      switch (joint_type_info(joint.type).motion) {  // the inertia about a revolute joint's point
+        case JointMotion::revolute:
+          break;
+        case JointMotion::prismatic:
+          continue;
+      }
       for (std::size_t end = 0; end < 2; ++end) {
         if (joint.bodies[end] != b.name) continue;
         const std::string& point = joint.points[end];

@@ -10,6 +10,7 @@
 #include "report/mechanism_parts.hpp"
 #include "report/notation.hpp"
 #include "symbolic/energy.hpp"
+#include "symbolic/joints.hpp"
 #include "symbolic/loop_closure.hpp"
 #include "symbolic/validate.hpp"
 
@@ -227,7 +228,8 @@ JointForce joint_force(const MechanismSolution& s, const SolvedCase& c, std::siz
   JointForce f;
   f.fx = value_at(j.force.x, unknowns);
   f.fy = value_at(j.force.y, unknowns);
-  if (s.system->mechanism().joints[joint].type == JointType::slider) f.moment = value_at(j.moment, unknowns);
+  if (sym::joint_stages(s.system->mechanism().joints[joint].type).moment_column)
+    f.moment = value_at(j.moment, unknowns);
   return f;
 }
 

@@ -320,7 +320,12 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
       const MechanismGeometry::JointShape& joint = geometry_.joints[j];
       if (joints_shown && (joint.points[0].body >= 0 || joint.points[1].body >= 0))
         largest_force[k] = std::max(largest_force[k], std::hypot(s.force[3 * j], s.force[3 * j + 1]));
-      if (joint.type != JointType::slider) continue;
+      switch (joint.type) {  // the drawing's extent: a slider's rail spans its travel
+        case JointType::pin:
+          continue;
+        case JointType::slider:
+          break;
+      }
       const Vec2 p0 = world_point(s.pose, joint.points[0]), p1 = world_point(s.pose, joint.points[1]);
       const double theta0 =
           joint.points[0].body < 0 ? 0 : s.pose[3 * static_cast<std::size_t>(joint.points[0].body) + 2];
@@ -703,15 +708,20 @@ void MechanismScene::frame(std::size_t k, MechanismDrawList& out) const {
   for (std::size_t j = 0; j < geometry_.joints.size(); ++j) {
     const MechanismGeometry::JointShape& joint = geometry_.joints[j];
     const Vec2 p0 = world_point(pose, joint.points[0]), p1 = world_point(pose, joint.points[1]);
-    if (joint.type == JointType::slider) {
-      const double theta0 = joint.points[0].body < 0 ? 0 : pose[3 * static_cast<std::size_t>(joint.points[0].body) + 2];
-      const Vec2 axis = rotated(theta0, joint.axis);
-      const double margin = 0.1 * extent_;
-      out.lines.push_back({MechanismDrawList::Line::Kind::rail,
-                           {p0 + (rail_span_[j][0] - margin) * axis, p0 + (rail_span_[j][1] + margin) * axis}});
-      out.markers.push_back({MechanismDrawList::Marker::Kind::guide, p1, axis});
-    } else {
-      out.markers.push_back({MechanismDrawList::Marker::Kind::pin, p0});
+    switch (joint.type) {  // the drawing of each joint type
+      case JointType::pin:
+        out.markers.push_back({MechanismDrawList::Marker::Kind::pin, p0});
+        break;
+      case JointType::slider: {
+        const double theta0 =
+            joint.points[0].body < 0 ? 0 : pose[3 * static_cast<std::size_t>(joint.points[0].body) + 2];
+        const Vec2 axis = rotated(theta0, joint.axis);
+        const double margin = 0.1 * extent_;
+        out.lines.push_back({MechanismDrawList::Line::Kind::rail,
+                             {p0 + (rail_span_[j][0] - margin) * axis, p0 + (rail_span_[j][1] + margin) * axis}});
+        out.markers.push_back({MechanismDrawList::Marker::Kind::guide, p1, axis});
+        break;
+      }
     }
     if (force_scale_ <= 0) continue;
     const Vec2 force(s.force[3 * j], s.force[3 * j + 1]);

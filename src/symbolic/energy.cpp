@@ -1,5 +1,7 @@
 #include "symbolic/energy.hpp"
 
+#include "model/joint_types.hpp"
+
 namespace linkage::sym {
 
 using GiNaC::ex;
@@ -55,7 +57,7 @@ ex potential_energy(const System& system) {
     V += system.quantity(spring.stiffness, false) * GiNaC::pow(stretch, 2) / 2;
   }
   for (const Joint& joint : mechanism.joints) {
-    if (joint.type != JointType::pin || !joint.stiffness) continue;
+    if (!joint_type_info(joint.type).torsional_spring || !joint.stiffness) continue;
     const ex rest = joint.rest_angle ? system.quantity(*joint.rest_angle, false) : ex(0);
     V += system.quantity(*joint.stiffness, false) * GiNaC::pow(relative_angle(system, joint) - rest, 2) / 2;
   }
@@ -72,7 +74,7 @@ std::vector<PowerTerm> nonconservative_power_terms(const System& system) {
     terms.push_back({-damping * rate, rate});
   }
   for (const Joint& joint : mechanism.joints) {
-    if (joint.type != JointType::pin || !joint.damping) continue;
+    if (!joint_type_info(joint.type).torsional_spring || !joint.damping) continue;
     const ex rate = system.time_derivative(relative_angle(system, joint));
     terms.push_back({-system.quantity(*joint.damping, false) * rate, rate});
   }

@@ -1,26 +1,33 @@
-// Pin joint. Position rows: r_a + R(th_a) s_a - (r_b + R(th_b) s_b) = 0 (x and y).
-// Force: F = (Fx, Fy), the force b exerts on a, at the pin; -F on b.
-// Tree: the child keeps its own angle; its centre follows from the pin point.
+// Pin joint: a point of a and a point of b coincide.
+//   rows:   r_a + R(th_a) s_a - (r_b + R(th_b) s_b) = 0 (x and y)
+//   force:  F = (Fx, Fy), the force b exerts on a, at the pin; -F on b; no moment
+//   tree:   revolute: the child keeps its own angle; its centre follows from the pin point
 #include "symbolic/joints.hpp"
 
 namespace linkage::sym {
+namespace {
 
-Vec2 world_point(const Placement& body, const Vec2& local) { return body.position + rotate(body.angle, local); }
-
-std::vector<GiNaC::ex> pin_constraints(const JointEnds& ends) {
+std::vector<GiNaC::ex> rows(const JointEnds& ends) {
   const Vec2 d = world_point(ends.a, ends.point_a) - world_point(ends.b, ends.point_b);
   return {d.x, d.y};
 }
 
-void pin_force(JointSystem& joint, const SymbolTable& table) {
-  const auto& fx = table.find(joint.unknowns.at(0));
-  const auto& fy = table.find(joint.unknowns.at(1));
-  if (fx == nullptr || fy == nullptr) throw std::logic_error("pin force symbols missing");
-  joint.force = {joint.unknowns[0], joint.unknowns[1]};
+std::vector<ForceUnknown> unknowns(const Joint& joint, bool single, const std::string& on) {
+  // The homework's only joint prints as the spec's Fx, Fy.
+  const std::string fx = single ? "Fx" : "Fx_" + joint.name;
+  const std::string fy = single ? "Fy" : "Fy_" + joint.name;
+  const std::string lx = single ? "F_x" : "F_{x," + joint.name + "}";
+  const std::string ly = single ? "F_y" : "F_{y," + joint.name + "}";
+  return {{"force_x", {fx, fx, lx}, "N", "pin force on " + on + ", x"},
+          {"force_y", {fy, fy, ly}, "N", "pin force on " + on + ", y"}};
+}
+
+void force(JointSystem& joint, const JointEnds&) {
+  joint.force = {joint.unknowns.at(0), joint.unknowns.at(1)};
   joint.moment = 0;
 }
 
-Placement pin_place(const JointEnds& ends, bool child_is_b, const GiNaC::ex& child_angle) {
+Placement place(const JointEnds& ends, bool child_is_b, const GiNaC::ex& child_angle) {
   const Placement& parent = child_is_b ? ends.a : ends.b;
   const Vec2& parent_point = child_is_b ? ends.point_a : ends.point_b;
   const Vec2& child_point = child_is_b ? ends.point_b : ends.point_a;
@@ -29,5 +36,11 @@ Placement pin_place(const JointEnds& ends, bool child_is_b, const GiNaC::ex& chi
   child.position = world_point(parent, parent_point) - rotate(child_angle, child_point);
   return child;
 }
+
+GiNaC::ex no_coordinate(const JointEnds&) { return 0; }
+
+}  // namespace
+
+const JointStages kPinJoint{rows, unknowns, force, false, place, nullptr, no_coordinate, false, "m"};
 
 }  // namespace linkage::sym

@@ -1,10 +1,22 @@
 #pragma once
-// The joint types, one file each (joint_pin.cpp, joint_slider.cpp), answering the same
-// questions: the position constraint rows, the force it carries as unknowns, and where
-// it puts the body it reaches in the spanning tree.
+// The joint types, one file each (joint_pin.cpp, joint_slider.cpp), every one filling the
+// same stages (JointStages), registered in joints.cpp by one exhaustive switch:
+//   rows     its position constraint rows Phi = 0 in its bodies' placements; the velocity
+//            and acceleration rows are their time derivatives (System::time_derivative),
+//            never typed by hand;
+//   force    the unknowns naming the force bodies[1] exerts on bodies[0], that force and
+//            its moment in them, and the point of bodies[0] it acts at;
+//   tree     where it puts the body it carries, from that body's angle (revolute) or its
+//            own coordinate (prismatic: the symbol, units and value of that coordinate);
+//   columns  what `simulate` writes for it besides force_x and force_y.
+// The model-level stages (its [[joint]] keys, the coordinate it adds to the tree, which
+// the O(n) recursion reads) are model/joint_types.cpp; its drawing is one switch in
+// scene/mechanism_scene.cpp. docs/joints.md: how to add a joint type.
+#include <array>
 #include <string>
 #include <vector>
 
+#include "symbolic/spelling.hpp"
 #include "symbolic/system.hpp"
 
 namespace linkage::sym {
@@ -26,20 +38,57 @@ struct JointEnds {
 /// The world position of a point of a placed body.
 [[nodiscard]] Vec2 world_point(const Placement& body, const Vec2& local);
 
-// --- pin: the two points coincide -------------------------------------------------
-[[nodiscard]] std::vector<GiNaC::ex> pin_constraints(const JointEnds& ends);
-/// The force b exerts on a: (Fx, Fy), two unknowns.
-void pin_force(JointSystem& joint, const SymbolTable& table);
-/// The child's placement; `child_angle` is its own theta (its generalized coordinate).
-[[nodiscard]] Placement pin_place(const JointEnds& ends, bool child_is_b, const GiNaC::ex& child_angle);
+/// A force unknown: its key after "JOINT." ("force_x"), spelling, unit and meaning.
+struct ForceUnknown {
+  std::string key;
+  Spelling spelling;
+  std::string unit;
+  std::string meaning;
+};
 
-// --- slider: equal angles, b's point on the line through a's point along the axis -----
-[[nodiscard]] std::vector<GiNaC::ex> slider_constraints(const JointEnds& ends);
-/// The force b exerts on a: N across the axis and a moment M, two unknowns.
-void slider_force(JointSystem& joint, const JointEnds& ends, const SymbolTable& table);
-/// The child's placement, `s` the slider coordinate along the unit axis.
-[[nodiscard]] Placement slider_place(const JointEnds& ends, bool child_is_b, const GiNaC::ex& s);
-/// The unit axis in the world.
-[[nodiscard]] Vec2 slider_axis(const JointEnds& ends);
+/// A joint's own generalized coordinate (a slider's s): its base letter and, for q, q'
+/// and q'', the unit and the meaning (followed by the joint's name).
+struct OwnCoordinate {
+  const char* base = "s";
+  std::array<const char*, 3> units{};
+  std::array<const char*, 3> meanings{};
+};
+
+struct JointStages {
+  /// rows: Phi(ends) = 0.
+  std::vector<GiNaC::ex> (*rows)(const JointEnds& ends);
+  /// force: its unknowns, in the order of JointSystem::unknowns; `single` when it is the
+  /// mechanism's only joint (the homework's Fx, Fy), `on` names bodies[0].
+  std::vector<ForceUnknown> (*unknowns)(const Joint& joint, bool single, const std::string& on);
+  /// force: JointSystem::force and moment from its unknowns.
+  void (*force)(JointSystem& joint, const JointEnds& ends);
+  /// force: whether the force on bodies[0] acts at bodies[1]'s point (else at its own).
+  bool force_at_point_b;
+  /// tree: the placement of the child (bodies[1] when `child_is_b`) from its parent's and
+  /// `coordinate`: the child's own angle (revolute) or the joint's coordinate (prismatic).
+  Placement (*place)(const JointEnds& ends, bool child_is_b, const GiNaC::ex& coordinate);
+  /// tree: the joint's own coordinate, null when it adds none
+  /// (model/joint_types.hpp: has_own_coordinate).
+  const OwnCoordinate* own;
+  /// tree: the value of that coordinate in the ends' placements (0 without one).
+  GiNaC::ex (*coordinate)(const JointEnds& ends);
+  /// columns: whether `JOINT.moment` is written; the unit of `JOINT.constraint_error`.
+  bool moment_column;
+  const char* constraint_unit;
+};
+
+/// The registration: every joint type's stages, one exhaustive switch.
+[[nodiscard]] const JointStages& joint_stages(JointType type);
+
+/// The joint's ends in maximal coordinates (the ground's placement is zero), its axis
+/// checked: one that is zero whatever the parameters is an input error.
+[[nodiscard]] JointEnds maximal_ends(const System& system, int joint);
+
+/// The joint's axis in the frame of bodies[0] as parsed (zero when its type takes none).
+[[nodiscard]] Vec2 joint_axis(const System& system, const Joint& joint);
+
+// Each type's stages, registered by joint_stages.
+extern const JointStages kPinJoint;
+extern const JointStages kSliderJoint;
 
 }  // namespace linkage::sym

@@ -10,6 +10,7 @@
 
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
+#include "model/joint_types.hpp"
 #include "symbolic/expression_reader.hpp"
 #include "symbolic/joints.hpp"
 #include "symbolic/spelling.hpp"
@@ -157,16 +158,6 @@ int body_index(const Mechanism& m, const std::string& name) {
   for (std::size_t i = 0; i < m.bodies.size(); ++i)
     if (m.bodies[i].name == name) return static_cast<int>(i);
   return -1;
-}
-
-// A slider's axis; one that is zero whatever the parameters ("r-r") is refused here, before
-// its unit vector divides by zero (validate.cpp refuses one that is zero at the values).
-Vec2 slider_axis_of(const Joint& joint, Vec2 axis) {
-  if ((axis.x * axis.x + axis.y * axis.y).is_zero())
-    throw Error::input(where(joint.axis->x.pos) + "the axis of slider " + joint.name + " (\"" + joint.axis->x.text +
-                       "\", \"" + joint.axis->y.text +
-                       "\") is zero for any parameter values; valid: a direction of non-zero length");
-  return axis;
 }
 
 }  // namespace
@@ -334,53 +325,18 @@ void System::add_joints() {
     js.index = static_cast<int>(j);
     for (int t : tree_.tree_joints) js.in_tree = js.in_tree || t == js.index;
     const int a = body_index(mechanism_, joint.bodies[0]);
-    const int b = body_index(mechanism_, joint.bodies[1]);
-    JointEnds ends;
-    auto place = [&](int body, const std::string& point, Placement& placement, Vec2& local) {
-      if (body < 0) {
-        placement = {};
-        local = point_position(-1, point);
-        return;
-      }
-      const BodySystem& bs = bodies_[static_cast<std::size_t>(body)];
-      placement = {{bs.x.q, bs.y.q}, bs.rotates ? ex(bs.theta.q) : ex(0)};
-      local = bs.points.at(point);
-    };
-    place(a, joint.points[0], ends.a, ends.point_a);
-    place(b, joint.points[1], ends.b, ends.point_b);
+    const JointEnds ends = maximal_ends(*this, js.index);
     const std::string stem = joint.name + ".";
     const std::string on =
         a < 0 ? std::string("the ground") : body_phrase(mechanism_.bodies[static_cast<std::size_t>(a)]);
-    if (joint.type == JointType::pin) {
-      const std::string fx = single ? "Fx" : "Fx_" + joint.name;
-      const std::string fy = single ? "Fy" : "Fy_" + joint.name;
-      const std::string lx = single ? "F_x" : "F_{x," + joint.name + "}";
-      const std::string ly = single ? "F_y" : "F_{y," + joint.name + "}";
+    const JointStages& stages = joint_stages(joint.type);
+    for (const ForceUnknown& u : stages.unknowns(joint, single, on))
       js.unknowns.push_back(table_
-                                .add({symbol(stem + "force_x"), Role::force, stem + "force_x", fx, fx, lx, "N",
-                                      "pin force on " + on + ", x"})
+                                .add({symbol(stem + u.key), Role::force, stem + u.key, u.spelling.unicode,
+                                      u.spelling.ascii, u.spelling.latex, u.unit, u.meaning})
                                 .symbol);
-      js.unknowns.push_back(table_
-                                .add({symbol(stem + "force_y"), Role::force, stem + "force_y", fy, fy, ly, "N",
-                                      "pin force on " + on + ", y"})
-                                .symbol);
-      js.constraints = pin_constraints(ends);
-      pin_force(js, table_);
-    } else {
-      ends.axis = slider_axis_of(joint, {quantity(joint.axis->x, false), quantity(joint.axis->y, false)});
-      const Spelling n = spell_indexed("N", 0, joint.name);
-      const Spelling m = spell_indexed("M", 0, joint.name);
-      js.unknowns.push_back(table_
-                                .add({symbol(stem + "normal"), Role::force, stem + "normal", n.unicode, n.ascii,
-                                      n.latex, "N", "slider force across the axis on " + on})
-                                .symbol);
-      js.unknowns.push_back(table_
-                                .add({symbol(stem + "moment"), Role::force, stem + "moment", m.unicode, m.ascii,
-                                      m.latex, "N m", "slider moment on " + on})
-                                .symbol);
-      js.constraints = slider_constraints(ends);
-      slider_force(js, ends, table_);
-    }
+    js.constraints = stages.rows(ends);
+    stages.force(js, ends);
     joints_.push_back(std::move(js));
   }
 }
@@ -417,7 +373,7 @@ void System::add_loads() {
     if (a >= 0) loads_.push_back({a, ex(-1) * on_b, pa, 0, spring.name});
   }
   for (const Joint& joint : mechanism_.joints) {
-    if (joint.type != JointType::pin || (!joint.stiffness && !joint.damping)) continue;
+    if (!joint_type_info(joint.type).torsional_spring || (!joint.stiffness && !joint.damping)) continue;
     const int a = body_index(mechanism_, joint.bodies[0]);
     const int b = body_index(mechanism_, joint.bodies[1]);
     auto angle = [&](int i) {
@@ -485,32 +441,30 @@ void System::add_generalized() {
     ends.point_a = local(a, joint.points[0]);
     ends.point_b = local(body_index(mechanism_, joint.bodies[1]), joint.points[1]);
     (child_is_b ? ends.a : ends.b) = parent;
-    if (joint.type == JointType::pin) {
-      placed[i] = pin_place(ends, child_is_b, bs.rotates ? ex(bs.theta.q) : ex(0));
-    } else {
-      ends.axis = slider_axis_of(joint, {quantity(joint.axis->x, false), quantity(joint.axis->y, false)});
-      const Spelling s0 = spell_indexed("s", 0, joint.name);
-      const Spelling s1 = spell_indexed("s", 1, joint.name);
-      const Spelling s2 = spell_indexed("s", 2, joint.name);
-      const std::string stem = joint.name + ".s";
+    ends.axis = joint_axis(*this, joint);
+    const JointStages& stages = joint_stages(joint.type);
+    ex coordinate = bs.rotates ? ex(bs.theta.q) : ex(0);
+    if (stages.own != nullptr) {  // the joint's own coordinate: s
+      const OwnCoordinate& own = *stages.own;
+      const std::string stem = joint.name + "." + own.base;
       CoordinateSymbols c;
-      c.q = table_
-                .add({symbol(stem), Role::coordinate, stem, s0.unicode, s0.ascii, s0.latex, "m",
-                      "position along slider " + joint.name})
-                .symbol;
-      c.q_dot = table_
-                    .add({symbol(stem + "_dot"), Role::rate, stem + "_dot", s1.unicode, s1.ascii, s1.latex, "m/s",
-                          "velocity along slider " + joint.name})
-                    .symbol;
-      c.q_ddot = table_
-                     .add({symbol(stem + "_ddot"), Role::acceleration, stem + "_ddot", s2.unicode, s2.ascii, s2.latex,
-                           "m/s^2", "acceleration along slider " + joint.name})
-                     .symbol;
+      const Role roles[] = {Role::coordinate, Role::rate, Role::acceleration};
+      const char* suffixes[] = {"", "_dot", "_ddot"};
+      symbol* symbols[] = {&c.q, &c.q_dot, &c.q_ddot};
+      for (int k = 0; k < 3; ++k) {
+        const Spelling sp = spell_indexed(own.base, k, joint.name);
+        const std::string key = stem + suffixes[k];
+        *symbols[k] = table_
+                          .add({symbol(key), roles[k], key, sp.unicode, sp.ascii, sp.latex, own.units[k],
+                                own.meanings[k] + joint.name})
+                          .symbol;
+      }
       derivative_[c.q] = c.q_dot;
       derivative_[c.q_dot] = c.q_ddot;
       slider_symbols_[node.joint] = c;
-      placed[i] = slider_place(ends, child_is_b, c.q);
+      coordinate = c.q;
     }
+    placed[i] = stages.place(ends, child_is_b, coordinate);
   }
 
   for (const Coordinate& c : tree_.coordinates) {
@@ -566,8 +520,8 @@ void System::add_newton_euler() {
     const Joint& joint = mechanism_.joints[static_cast<std::size_t>(js.index)];
     const int a = body_index(mechanism_, joint.bodies[0]);
     const int b = body_index(mechanism_, joint.bodies[1]);
-    const Vec2 at_a =
-        joint.type == JointType::pin ? point_position(a, joint.points[0]) : point_position(b, joint.points[1]);
+    const Vec2 at_a = joint_stages(joint.type).force_at_point_b ? point_position(b, joint.points[1])
+                                                                : point_position(a, joint.points[0]);
     const Vec2 at_b = point_position(b, joint.points[1]);
     apply(a, js.force, at_a, js.moment);
     apply(b, ex(-1) * js.force, at_b, -js.moment);

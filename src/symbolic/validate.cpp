@@ -7,6 +7,7 @@
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
 #include "core/number_format.hpp"
+#include "model/joint_types.hpp"
 #include "model/mechanism_toml.hpp"
 
 namespace linkage::sym {
@@ -81,19 +82,22 @@ void validate_quantities(const System& system) {
                              " acts on the point mass '" + body +
                              "', which has no angle; valid: a pin between bodies with a shape or an inertia");
       }
-    if (j.type == JointType::slider) {
+    const JointTypeInfo& info = joint_type_info(j.type);
+    const std::string type = joint_type_name(j.type);
+    if (info.axis) {
       const double ax = checked_value(system, j.axis->x, false, "axis x of joint " + j.name);
       const double ay = checked_value(system, j.axis->y, false, "axis y of joint " + j.name);
       if (ax == 0 && ay == 0)
-        throw Error::input(where(j.axis->x.pos) + "the axis of slider " + j.name +
+        throw Error::input(where(j.axis->x.pos) + "the axis of " + type + " " + j.name +
                            " is zero at the parameters; valid: a direction of non-zero length");
+    }
+    if (info.keeps_angle)
       for (const std::string& body : j.bodies) {
         const Body* b = m.find_body(body);
         if (b != nullptr && !body_rotates(*b))
-          throw Error::input(where(j.pos) + "slider " + j.name + " joins the point mass '" + body +
+          throw Error::input(where(j.pos) + type + " " + j.name + " joins the point mass '" + body +
                              "', which has no angle to keep; valid: bodies with a shape or an inertia");
       }
-    }
   }
   for (const Spring& s : m.springs) {
     require_non_negative(system, s.stiffness, "stiffness of spring " + s.name);

@@ -95,9 +95,13 @@ double unknown_scale(Unknown u, const Params& p, const State& s) {
     case Unknown::F_x:
     case Unknown::F_y:
       return p.m * a;
-    default:
+    case Unknown::x1_ddot:
+    case Unknown::y1_ddot:
+    case Unknown::x2_ddot:
+    case Unknown::y2_ddot:
       return a;
   }
+  return a;
 }
 
 TEST(Cases, AgreeToRoundOffAtRandomStatesIncludingFastSpinsAndExtremeMasses) {

@@ -1,0 +1,52 @@
+#include "symbolic/joints.hpp"
+
+#include "core/error.hpp"
+#include "model/joint_types.hpp"
+
+namespace linkage::sym {
+
+Vec2 world_point(const Placement& body, const Vec2& local) { return body.position + rotate(body.angle, local); }
+
+const JointStages& joint_stages(JointType type) {
+  switch (type) {
+    case JointType::pin:
+      return kPinJoint;
+    case JointType::slider:
+      return kSliderJoint;
+  }
+  throw std::logic_error("joint type out of range");
+}
+
+// An axis that is zero whatever the parameters ("r-r") is refused here, before its unit
+// vector divides by zero (validate.cpp refuses one that is zero at the values).
+Vec2 joint_axis(const System& system, const Joint& joint) {
+  if (!joint_type_info(joint.type).axis) return {};
+  const Vec2 axis{system.quantity(joint.axis->x, false), system.quantity(joint.axis->y, false)};
+  if ((axis.x * axis.x + axis.y * axis.y).is_zero())
+    throw Error::input(where(joint.axis->x.pos) + "the axis of " + joint_type_name(joint.type) + " " + joint.name +
+                       " (\"" + joint.axis->x.text + "\", \"" + joint.axis->y.text +
+                       "\") is zero for any parameter values; valid: a direction of non-zero length");
+  return axis;
+}
+
+JointEnds maximal_ends(const System& system, int joint) {
+  const Joint& j = system.mechanism().joints.at(static_cast<std::size_t>(joint));
+  auto place = [&](const std::string& name, const std::string& point, Placement& placement, Vec2& local) {
+    const int body = system.mechanism().body_index(name);
+    if (body < 0) {
+      placement = {};
+      local = system.point_position(-1, point);
+      return;
+    }
+    const BodySystem& b = system.bodies()[static_cast<std::size_t>(body)];
+    placement = {{b.x.q, b.y.q}, b.rotates ? GiNaC::ex(b.theta.q) : GiNaC::ex(0)};
+    local = b.points.at(point);
+  };
+  JointEnds ends;
+  place(j.bodies[0], j.points[0], ends.a, ends.point_a);
+  place(j.bodies[1], j.points[1], ends.b, ends.point_b);
+  ends.axis = joint_axis(system, j);
+  return ends;
+}
+
+}  // namespace linkage::sym

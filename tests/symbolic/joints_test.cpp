@@ -1,0 +1,276 @@
+// The joint types' stages (symbolic/joint_<type>.cpp): each type's against the others
+// (the tree placement satisfies the rows, the coordinate inverts the placement, the
+// force does no work on the motion the joint allows, the velocity and acceleration rows
+// are the rows' time derivatives), then each file's own numbers.
+#include "symbolic/joints.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <random>
+
+#include "model/joint_types.hpp"
+#include "support/mechanisms_in_code.hpp"
+
+namespace linkage::sym {
+namespace {
+
+using GiNaC::ex;
+using GiNaC::symbol;
+
+// Exact arithmetic gives 0 up to the round-off of a few operations on numbers of order 1.
+constexpr double kExact = 1e-12;
+
+std::vector<JointType> all_types() {
+  std::vector<JointType> out;
+  for (std::size_t i = 0; i < kJointTypeNames.size(); ++i) out.push_back(static_cast<JointType>(i));
+  return out;
+}
+
+Joint joint_of(JointType type) {
+  Joint joint;
+  joint.name = "J";
+  joint.type = type;
+  joint.bodies = {"1", "2"};
+  joint.points = {"A", "B"};
+  return joint;
+}
+
+// Its ends with the points and axis every test uses: not at the centres, not on an axis.
+JointEnds ends_of(JointType type, const Placement& a, const Placement& b) {
+  JointEnds ends;
+  ends.a = a;
+  ends.b = b;
+  ends.point_a = {ex(0.3), ex(-0.1)};
+  ends.point_b = {ex(-0.2), ex(0.15)};
+  if (joint_type_info(type).axis) ends.axis = {ex(2), ex(1)};
+  return ends;
+}
+
+// `child_is_b`: b placed by the joint from a and `coordinate`, else a from b.
+JointEnds placed(JointType type, const Placement& parent, bool child_is_b, const ex& coordinate) {
+  JointEnds ends = ends_of(type, parent, parent);
+  const Placement child = joint_stages(type).place(ends, child_is_b, coordinate);
+  (child_is_b ? ends.b : ends.a) = child;
+  return ends;
+}
+
+// Every mechanism of mechanisms_in_code.hpp, built once.
+const std::vector<std::pair<std::string, std::unique_ptr<System>>>& built_systems() {
+  static const auto systems = [] {
+    std::vector<std::pair<std::string, std::unique_ptr<System>>> out;
+    for (const built::Named& named : built::all_mechanisms())
+      out.emplace_back(named.name, std::make_unique<System>(named.make()));
+    return out;
+  }();
+  return systems;
+}
+
+class JointStagesTest : public ::testing::TestWithParam<JointType> {};
+
+TEST_P(JointStagesTest, RegisteredConsistently) {
+  const JointStages& stages = joint_stages(GetParam());
+  EXPECT_EQ(stages.own != nullptr, has_own_coordinate(joint_type_info(GetParam()).motion));
+  const JointEnds ends = ends_of(GetParam(), {}, {});
+  // One multiplier per row: the unknowns are the force's components along the rows.
+  EXPECT_EQ(stages.unknowns(joint_of(GetParam()), false, "body 1").size(), stages.rows(ends).size());
+}
+
+TEST_P(JointStagesTest, TreePlacementSatisfiesTheRows) {
+  const symbol x("x"), y("y"), theta("theta"), c("c");
+  const Placement parent{{x, y}, theta};
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> draw(-2, 2);
+  for (const bool child_is_b : {true, false}) {
+    const std::vector<ex> rows = joint_stages(GetParam()).rows(placed(GetParam(), parent, child_is_b, c));
+    ASSERT_FALSE(rows.empty());
+    for (int k = 0; k < 5; ++k) {
+      const GiNaC::exmap at{{x, draw(rng)}, {y, draw(rng)}, {theta, draw(rng)}, {c, draw(rng)}};
+      for (const ex& row : rows) EXPECT_NEAR(evaluate(row, at), 0, kExact) << row << " child_is_b " << child_is_b;
+    }
+  }
+}
+
+TEST_P(JointStagesTest, CoordinateInvertsThePlacement) {
+  const JointStages& stages = joint_stages(GetParam());
+  const symbol x("x"), y("y"), theta("theta"), c("c");
+  const Placement parent{{x, y}, theta};
+  const GiNaC::exmap at{{x, 0.4}, {y, -0.7}, {theta, 0.9}, {c, 0.35}};
+  for (const bool child_is_b : {true, false}) {
+    const JointEnds ends = placed(GetParam(), parent, child_is_b, c);
+    const Placement& child = child_is_b ? ends.b : ends.a;
+    if (stages.own != nullptr) {
+      EXPECT_NEAR(evaluate(stages.coordinate(ends), at), 0.35, kExact) << "child_is_b " << child_is_b;
+    } else {  // revolute: the coordinate is the child's own angle
+      EXPECT_TRUE(stages.coordinate(ends).is_zero());
+      EXPECT_NEAR(evaluate(child.angle, at), 0.35, kExact);
+    }
+  }
+}
+
+// Power of the joint's force and moment on both bodies, for a motion the joint allows
+// (the child placed by the tree stage, everything moving with t): zero, as for any
+// ideal joint.
+TEST_P(JointStagesTest, ForceDoesNoWorkOnTheMotionItAllows) {
+  const JointStages& stages = joint_stages(GetParam());
+  const symbol t("t"), f0("f0"), f1("f1");
+  const Placement parent{{0.3 + 0.2 * GiNaC::sin(1.3 * t), -0.4 + 0.1 * GiNaC::cos(0.7 * t)},
+                         0.2 + 0.5 * GiNaC::sin(0.9 * t)};
+  const ex coordinate = 0.25 + 0.3 * GiNaC::sin(1.1 * t);
+  for (const bool child_is_b : {true, false}) {
+    const JointEnds ends = placed(GetParam(), parent, child_is_b, coordinate);
+    JointSystem js;
+    js.unknowns = {f0, f1};
+    stages.force(js, ends);
+    // The velocity of body p's material point at world point r.
+    auto velocity = [&](const Placement& p, const Vec2& r) {
+      const ex omega = GiNaC::diff(p.angle, t);
+      return Vec2{GiNaC::diff(p.position.x, t) - omega * (r.y - p.position.y),
+                  GiNaC::diff(p.position.y, t) + omega * (r.x - p.position.x)};
+    };
+    const Vec2 at_b = world_point(ends.b, ends.point_b);
+    const Vec2 on_a = stages.force_at_point_b ? at_b : world_point(ends.a, ends.point_a);
+    const Vec2 va = velocity(ends.a, on_a), vb = velocity(ends.b, at_b);
+    const ex power = js.force.x * (va.x - vb.x) + js.force.y * (va.y - vb.y) +
+                     js.moment * (GiNaC::diff(ends.a.angle, t) - GiNaC::diff(ends.b.angle, t));
+    for (const double time : {0.1, 0.7, 1.9})
+      EXPECT_NEAR(evaluate(power, {{t, time}, {f0, 1.7}, {f1, -0.6}}), 0, kExact)
+          << "t " << time << " child_is_b " << child_is_b;
+  }
+}
+
+// The velocity and acceleration rows (System::time_derivative of the joint's rows, as
+// Case 1 and the projections use them) against central differences of the rows along
+// q(tau) = q0 + q0' tau + q0'' tau^2 / 2, in every built mechanism with this joint type.
+TEST_P(JointStagesTest, VelocityAndAccelerationRowsAreTheRowsDerivatives) {
+  int checked = 0;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> draw(-1.5, 1.5);
+  for (const auto& [name, built_system] : built_systems()) {
+    const System& system = *built_system;
+    GiNaC::exmap values = system.parameter_values();
+    for (const auto& [constant, value] : system.constants()) values[constant] = value;
+    std::vector<std::array<symbol, 3>> maximal;
+    for (const BodySystem& b : system.bodies()) {
+      maximal.push_back({b.x.q, b.x.q_dot, b.x.q_ddot});
+      maximal.push_back({b.y.q, b.y.q_dot, b.y.q_ddot});
+      if (b.rotates) maximal.push_back({b.theta.q, b.theta.q_dot, b.theta.q_ddot});
+    }
+    for (const auto& m : maximal)
+      for (const symbol& s : m) values[s] = draw(rng);
+    // The rows at tau, the rates and accelerations kept.
+    auto at_tau = [&](double tau) {
+      GiNaC::exmap v = values;
+      for (const auto& m : maximal) {
+        const double q = GiNaC::ex_to<GiNaC::numeric>(values[m[0]]).to_double();
+        const double rate = GiNaC::ex_to<GiNaC::numeric>(values[m[1]]).to_double();
+        const double acceleration = GiNaC::ex_to<GiNaC::numeric>(values[m[2]]).to_double();
+        v[m[0]] = q + rate * tau + acceleration * tau * tau / 2;
+      }
+      return v;
+    };
+    for (const JointSystem& js : system.joints()) {
+      if (system.mechanism().joints[static_cast<std::size_t>(js.index)].type != GetParam()) continue;
+      ++checked;
+      for (const ex& row : js.constraints) {
+        const ex velocity = system.time_derivative(row);
+        const ex acceleration = system.time_derivative(velocity);
+        const double h1 = 1e-4, h2 = 1e-3;
+        const double dv = (evaluate(row, at_tau(h1)) - evaluate(row, at_tau(-h1))) / (2 * h1);
+        const double da =
+            (evaluate(row, at_tau(h2)) - 2 * evaluate(row, at_tau(0)) + evaluate(row, at_tau(-h2))) / (h2 * h2);
+        // Truncation h^2 |Phi'''| / 6 and h^2 |Phi''''| / 12 with derivatives of order 10-100 here.
+        EXPECT_NEAR(evaluate(velocity, values), dv, 1e-5) << name << ": " << row;
+        EXPECT_NEAR(evaluate(acceleration, values), da, 1e-3) << name << ": " << row;
+      }
+    }
+  }
+  EXPECT_GT(checked, 0) << "no built mechanism has a " << joint_type_name(GetParam())
+                        << " joint: add one to tests/support/mechanisms_in_code.hpp";
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryType, JointStagesTest, ::testing::ValuesIn(all_types()),
+                         [](const ::testing::TestParamInfo<JointType>& type) {
+                           return std::string(joint_type_name(type.param));
+                         });
+
+// --- joint_pin.cpp ------------------------------------------------------------------
+
+TEST(JointPin, RowsAreTheGapBetweenItsPoints) {
+  // a at (1, 2) turned a quarter: its point (0.3, -0.1) is at (1.1, 2.3) in the world.
+  const JointEnds ends = ends_of(JointType::pin, {{1, 2}, GiNaC::Pi / 2}, {{ex(1.1 + 0.2), ex(2.3 - 0.15 + 0.5)}, 0});
+  const std::vector<ex> rows = joint_stages(JointType::pin).rows(ends);
+  ASSERT_EQ(rows.size(), 2U);
+  EXPECT_NEAR(evaluate(rows[0], {}), 0, kExact);
+  EXPECT_NEAR(evaluate(rows[1], {}), -0.5, kExact);
+}
+
+TEST(JointPin, ForceIsItsTwoUnknownsAndNoMoment) {
+  const JointStages& pin = joint_stages(JointType::pin);
+  const std::vector<ForceUnknown> only = pin.unknowns(joint_of(JointType::pin), true, "block 1");
+  ASSERT_EQ(only.size(), 2U);
+  EXPECT_EQ(only[0].key, "force_x");
+  EXPECT_EQ(only[0].spelling.ascii, "Fx");  // the homework's only joint: the spec's name
+  EXPECT_EQ(only[1].meaning, "pin force on block 1, y");
+  EXPECT_EQ(pin.unknowns(joint_of(JointType::pin), false, "block 1")[1].spelling.latex, "F_{y,J}");
+  const symbol fx("fx"), fy("fy");
+  JointSystem js;
+  js.unknowns = {fx, fy};
+  pin.force(js, ends_of(JointType::pin, {}, {}));
+  EXPECT_TRUE((js.force.x - fx).is_zero());
+  EXPECT_TRUE((js.force.y - fy).is_zero());
+  EXPECT_TRUE(js.moment.is_zero());
+  EXPECT_FALSE(pin.force_at_point_b);
+  EXPECT_FALSE(pin.moment_column);
+  EXPECT_STREQ(pin.constraint_unit, "m");
+}
+
+// --- joint_slider.cpp ---------------------------------------------------------------
+
+TEST(JointSlider, TravelAndRowsAlongTheTurnedAxis) {
+  // a turned a quarter: the axis (2, 1) of its frame is u = (-1, 2)/sqrt(5) in the world,
+  // the normal k x u = (-2, -1)/sqrt(5).
+  const Placement a{{0, 0}, GiNaC::Pi / 2};
+  const double k = 1 / std::sqrt(5.0);
+  // a's point (0.3, -0.1) is at (0.1, 0.3) in the world; b's point (-0.2, 0.15) on b
+  // turned a quarter is (-0.15, -0.2) from b's centre.
+  const double travel = 0.7;
+  const Placement b{{ex(0.1 - travel * k + 0.15), ex(0.3 + 2 * travel * k + 0.2)}, GiNaC::Pi / 2};
+  const JointStages& slider = joint_stages(JointType::slider);
+  const JointEnds ends = ends_of(JointType::slider, a, b);
+  EXPECT_NEAR(evaluate(slider.coordinate(ends), {}), travel, kExact);
+  const std::vector<ex> rows = slider.rows(ends);
+  ASSERT_EQ(rows.size(), 2U);
+  EXPECT_NEAR(evaluate(rows[0], {}), 0, kExact);
+  EXPECT_NEAR(evaluate(rows[1], {}), 0, kExact);
+  // Off the line by 0.1 along the normal; turned by 0.2 from a.
+  const Placement off{{b.position.x - 0.2 * k, b.position.y - 0.1 * k}, b.angle};
+  EXPECT_NEAR(evaluate(slider.rows(ends_of(JointType::slider, a, off))[0], {}), 0.1, kExact);
+  const Placement turned{b.position, b.angle + 0.2};
+  EXPECT_NEAR(evaluate(slider.rows(ends_of(JointType::slider, a, turned))[1], {}), 0.2, kExact);
+}
+
+TEST(JointSlider, ForceAcrossTheAxisAndAMoment) {
+  const JointStages& slider = joint_stages(JointType::slider);
+  const std::vector<ForceUnknown> unknowns = slider.unknowns(joint_of(JointType::slider), true, "the ground");
+  ASSERT_EQ(unknowns.size(), 2U);
+  EXPECT_EQ(unknowns[0].key, "normal");
+  EXPECT_EQ(unknowns[1].key, "moment");
+  EXPECT_EQ(unknowns[1].unit, "N m");
+  const symbol n("n"), m("m");
+  JointSystem js;
+  js.unknowns = {n, m};
+  slider.force(js, ends_of(JointType::slider, {}, {}));  // a unturned: normal (-1, 2)/sqrt(5)
+  const double k = 1 / std::sqrt(5.0);
+  EXPECT_NEAR(evaluate(js.force.x, {{n, 3.0}}), -3 * k, kExact);
+  EXPECT_NEAR(evaluate(js.force.y, {{n, 3.0}}), 6 * k, kExact);
+  EXPECT_TRUE((js.moment - m).is_zero());
+  EXPECT_TRUE(slider.force_at_point_b);
+  EXPECT_TRUE(slider.moment_column);
+  ASSERT_NE(slider.own, nullptr);
+  EXPECT_STREQ(slider.own->base, "s");
+}
+
+}  // namespace
+}  // namespace linkage::sym
