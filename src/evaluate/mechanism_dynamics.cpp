@@ -152,6 +152,16 @@ void MechanismDynamics::compile_case() const {
   auto prepare_output = [&](const ex& e) { return prepare(e.subs(recovered, GiNaC::subs_options::no_pattern)); };
   std::vector<GiNaC::symbol> output_inputs = input_symbols_;
   output_inputs.insert(output_inputs.end(), c.unknowns.begin(), c.unknowns.end());
+  // Cases 2 and 3 solve for the generalized accelerations: the bodies' are expressions in them.
+  GiNaC::exmap to_unknowns;
+  if (id_ != CaseId::maximal)
+    for (const auto& [symbol, expression] : system.to_generalized()) {
+      const sym::SymbolInfo* info = system.table().find(GiNaC::ex_to<GiNaC::symbol>(symbol));
+      if (info != nullptr && info->role == sym::Role::acceleration) to_unknowns[symbol] = expression;
+    }
+  auto acceleration = [&](const GiNaC::symbol& a) {
+    return prepare(ex(a).subs(to_unknowns, GiNaC::subs_options::no_pattern));
+  };
   std::vector<ex> out;
   for (const sym::BodySystem& b : system.bodies()) {
     out.push_back(prepare(b.x.q));
@@ -163,6 +173,20 @@ void MechanismDynamics::compile_case() const {
     out.push_back(prepare(b.y.q_dot));
     out.push_back(b.rotates ? prepare(b.theta.q_dot) : ex(0));
   }
+  for (const sym::BodySystem& b : system.bodies()) {
+    out.push_back(acceleration(b.x.q_ddot));
+    out.push_back(acceleration(b.y.q_ddot));
+    out.push_back(b.rotates ? acceleration(b.theta.q_ddot) : ex(0));
+  }
+  // C' = dC/dq q' + dC/dt in the bodies' own coordinates, before they become the state's.
+  auto rate_of = [&](const ex& phi) {
+    ex rate = phi.diff(system.time());
+    for (const sym::BodySystem& b : system.bodies()) {
+      rate += phi.diff(b.x.q) * b.x.q_dot + phi.diff(b.y.q) * b.y.q_dot;
+      if (b.rotates) rate += phi.diff(b.theta.q) * b.theta.q_dot;
+    }
+    return prepare(rate);
+  };
   for (const sym::JointSystem& j : system.joints()) {
     const Joint& joint = mechanism.joints[static_cast<std::size_t>(j.index)];
     ex s = 0;
@@ -183,6 +207,7 @@ void MechanismDynamics::compile_case() const {
     out.push_back(prepare_output(j.moment));
     // Each row on its own: |C| of an expanded C^2 would cancel to sqrt(round-off).
     for (std::size_t r = 0; r < 2; ++r) out.push_back(r < j.constraints.size() ? prepare(j.constraints[r]) : ex(0));
+    for (std::size_t r = 0; r < 2; ++r) out.push_back(r < j.constraints.size() ? rate_of(j.constraints[r]) : ex(0));
   }
   // The kinetic energy and the angular momentum are sums over the bodies of products of
   // their rates, each a sum over the body's ancestors: expanded, a chain of n links has
@@ -355,14 +380,19 @@ void MechanismDynamics::sample(double t, const Eigen::VectorXd& y, MechanismSamp
   out.rates.assign(values.begin() + static_cast<std::ptrdiff_t>(k),
                    values.begin() + static_cast<std::ptrdiff_t>(k + 3 * bodies_));
   k += 3 * bodies_;
+  out.accelerations.assign(values.begin() + static_cast<std::ptrdiff_t>(k),
+                           values.begin() + static_cast<std::ptrdiff_t>(k + 3 * bodies_));
+  k += 3 * bodies_;
   out.slider.assign(joints_, 0.0);
   out.force.assign(3 * joints_, 0.0);
   out.constraint.assign(joints_, 0.0);
+  out.constraint_rate.assign(joints_, 0.0);
   for (std::size_t j = 0; j < joints_; ++j) {
     out.slider[j] = values[k++];
     for (std::size_t c = 0; c < 3; ++c) out.force[3 * j + c] = values[k++];
     out.constraint[j] = std::hypot(values[k], values[k + 1]);
-    k += 2;
+    out.constraint_rate[j] = std::hypot(values[k + 2], values[k + 3]);
+    k += 4;
   }
   out.kinetic = values[k++];
   out.potential = values[k++];

@@ -45,6 +45,12 @@ std::vector<MechanismColumn> mechanism_columns(const sym::System& system) {
       out.push_back({body.name + "." + axes[c] + "_dot", c == 2 ? "rad/s" : "m/s",
                      "rate of " + body.name + "." + axes[c], Q::rate, 3 * b + c, false});
   }
+  for (std::size_t b = 0; b < system.bodies().size(); ++b) {
+    const sym::BodySystem& body = system.bodies()[b];
+    for (std::size_t c = 0; c < (body.rotates ? 3U : 2U); ++c)
+      out.push_back({body.name + "." + axes[c] + "_ddot", c == 2 ? "rad/s^2" : "m/s^2",
+                     "acceleration of " + body.name + "." + axes[c], Q::acceleration, 3 * b + c, false});
+  }
   for (std::size_t j = 0; j < m.joints.size(); ++j) {
     const Joint& joint = m.joints[j];
     const std::string on = "force of joint " + joint.name + " on " +
@@ -55,6 +61,8 @@ std::vector<MechanismColumn> mechanism_columns(const sym::System& system) {
       out.push_back({joint.name + ".moment", "N m", "moment of joint " + joint.name, Q::force, 3 * j + 2, false});
     out.push_back({joint.name + ".constraint_error", joint.type == JointType::slider ? "m, rad" : "m",
                    "|C| of joint " + joint.name + "'s position constraint", Q::constraint, j, false});
+    out.push_back({joint.name + ".constraint_velocity_error", joint.type == JointType::slider ? "m/s, rad/s" : "m/s",
+                   "|C'| of joint " + joint.name + "'s position constraint", Q::constraint_rate, j, false});
   }
   out.push_back({"energy", "J", "kinetic plus potential energy", Q::energy, 0, false});
   out.push_back({"work", "J", "work done by dampers and applied loads since t = 0", Q::work, 0, false});
@@ -128,12 +136,16 @@ double column_value(const MechanismColumn& c, double t, const Eigen::VectorXd& y
       return s.pose[c.index];
     case MechanismQuantity::rate:
       return s.rates[c.index];
+    case MechanismQuantity::acceleration:
+      return s.accelerations[c.index];
     case MechanismQuantity::slider:
       return s.slider[c.index];
     case MechanismQuantity::force:
       return s.force[c.index];
     case MechanismQuantity::constraint:
       return s.constraint[c.index];
+    case MechanismQuantity::constraint_rate:
+      return s.constraint_rate[c.index];
     case MechanismQuantity::energy:
       return s.kinetic + s.potential;
     case MechanismQuantity::energy_error:
@@ -154,6 +166,8 @@ std::string column_words(const MechanismColumn& c) {
   const std::string owner = c.name.substr(0, c.name.rfind('.'));
   static const char* const position[] = {"x of body ", "y of body ", "angle θ of body "};
   static const char* const rate[] = {"velocity ẋ of body ", "velocity ẏ of body ", "angular velocity θ̇ of body "};
+  static const char* const acceleration[] = {"acceleration ẍ of body ", "acceleration ÿ of body ",
+                                             "angular acceleration θ̈ of body "};
   using Q = MechanismQuantity;
   switch (c.quantity) {
     case Q::time:
@@ -162,6 +176,8 @@ std::string column_words(const MechanismColumn& c) {
       return position[c.index % 3] + owner;
     case Q::rate:
       return rate[c.index % 3] + owner;
+    case Q::acceleration:
+      return acceleration[c.index % 3] + owner;
     case Q::energy:
       return "energy E = T + V";
     case Q::work:
@@ -177,6 +193,7 @@ std::string column_words(const MechanismColumn& c) {
     case Q::slider:
     case Q::force:
     case Q::constraint:
+    case Q::constraint_rate:
       break;
   }
   return c.meaning;

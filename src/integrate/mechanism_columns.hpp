@@ -2,8 +2,8 @@
 // The columns of a mechanism's trajectory table (`linkage simulate --mechanism`), named
 // as the mechanism file's contract says: t; for every body <body>.x, <body>.y,
 // <body>.theta (no theta for a point mass); <joint>.s for sliders (the default); on
-// request the rates, each joint's force and constraint error, the energy and its
-// balance, and the momenta when nothing holds the mechanism to the ground.
+// request the rates and accelerations, each joint's force and constraint errors, the
+// energy and its balance, and the momenta when nothing holds the mechanism to the ground.
 #include <functional>
 #include <string>
 #include <vector>
@@ -15,11 +15,13 @@ namespace linkage {
 
 enum class MechanismQuantity {
   time,
-  position,    // index: 3 body + component (x, y, theta)
-  rate,        // the same, of the rates
-  slider,      // index: joint
-  force,       // index: 3 joint + component (x, y, moment)
-  constraint,  // index: joint
+  position,         // index: 3 body + component (x, y, theta)
+  rate,             // the same, of the rates
+  acceleration,     // the same, of the accelerations
+  slider,           // index: joint
+  force,            // index: 3 joint + component (x, y, moment)
+  constraint,       // index: joint
+  constraint_rate,  // index: joint
   energy,
   energy_error,  // E - E0 - W: the balance, 0 up to the integration error
   work,          // W, of dampers and applied loads since t = 0
