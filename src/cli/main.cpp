@@ -121,8 +121,11 @@ void check_command_words(const CLI::App& app, int argc, char** argv) {
 int main(int argc, char** argv) {
   using namespace linkage;
   CLI::App app{
-      "linkage: two identical blocks joined by a frictionless pin, free in the vertical plane.\n"
-      "Worked solutions of the equations of motion, simulation, and lecture animations."};
+      "linkage: planar multibody dynamics for teaching. For any planar mechanism of rigid bodies, pins,\n"
+      "sliders, springs and loads (a shipped one, see 'linkage mechanisms', or your own .toml): worked\n"
+      "solutions of its equations of motion in three formulations, simulation, lecture animations and\n"
+      "lessons. The first example and the default: the homework, two identical blocks joined by a\n"
+      "frictionless pin, free in the vertical plane (mechanisms/two-blocks.toml)."};
   app.set_version_flag("--version", std::string("linkage ") + kVersion);
   app.require_subcommand(1);
   app.fallthrough(false);

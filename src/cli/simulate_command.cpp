@@ -329,7 +329,9 @@ void register_simulate(CLI::App& app) {
   auto o = std::make_shared<SimulateOptions>();
   const SimulationOptions d;
   auto fmt = [](double v) { return format_roundtrip(v); };
-  CLI::App* sub = app.add_subcommand("simulate", "Integrate the motion over time and write it as a CSV or JSON table");
+  CLI::App* sub = app.add_subcommand("simulate",
+                                     "Integrate a mechanism's motion over time (default: the homework's two blocks) "
+                                     "and write it as a CSV or JSON table");
   add_simulation_flags(sub, o->simulation);
   sub->add_option("--duration", o->duration, "Simulated time, s, at most 1e6 (default " + fmt(d.duration) + ")")
       ->type_name("S");
@@ -348,8 +350,8 @@ void register_simulate(CLI::App& app) {
                       "Comma-separated columns to compute and write, or all (default all): " + column_names +
                           ". With --mechanism: default (t, every body's x, y, theta, every "
                           "slider's s), all, or names such as 2.theta_dot, 2.theta_ddot, "
-                          "S.s_ddot, B.force_x, energy_error, and a named point's 3.P.x, .y, "
-                          ".vx, .vy, .ax, .ay (world frame; m, m/s, m/s^2)")
+                          "S.s_ddot, B.force_x, B.constraint_velocity_error, energy_error, and a named "
+                          "point's 3.P.x, .y, .vx, .vy, .ax, .ay (world frame; m, m/s, m/s^2)")
           ->type_name("LIST");
   add_angle_option(sub, o->angles, "angle columns (theta, rates, accelerations) in the table");
   sub->add_flag("--quiet", o->quiet, "No progress or notes on stderr (the summary and warnings stay)");

@@ -41,7 +41,7 @@ void add_simulation_flags(CLI::App* sub, SimulationFlags& o) {
                       ->group(group);
   sub->add_option("--stabilize", o.stabilize,
                   "Constraint stabilization of Case 1: none, baumgarte (C'' + 2 alpha C' + beta^2 C = 0) or "
-                  "projection (back onto the pin constraint after every step) (default " +
+                  "projection (back onto the joints' constraints after every step) (default " +
                       o.stabilize + ")")
       ->type_name("KIND")
       ->group(group);

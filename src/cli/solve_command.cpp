@@ -100,12 +100,13 @@ void register_solve(CLI::App& app) {
   auto options = std::make_shared<SolveOptions>();
   CLI::App* sub = app.add_subcommand(
       "solve",
-      "Print the worked solution: inputs, inertia, the pin constraint, energy and momentum, then the "
-      "symbolic and numeric A q = B of each selected case with its solution");
+      "Print the worked solution of a mechanism (default: the homework's two blocks): inputs, inertia, the "
+      "joints' constraints, energy and momentum, then the symbolic and numeric A q = B of each selected case "
+      "with its solution");
   sub->add_option("--case", options->which,
-                  "Which formulation: 1 (eight DAEs, maximal coordinates), 2 (six, generalized coordinates with "
-                  "the pin force), 3 (four, pin force eliminated), or all, which adds a table of how closely "
-                  "they agree (default all)")
+                  "Which formulation: 1 (maximal coordinates with every joint force; the homework's eight "
+                  "DAEs), 2 (generalized coordinates with the joint forces; its six), 3 (joint forces "
+                  "eliminated; its four), or all, which adds a table of how closely they agree (default all)")
       ->type_name("1|2|3|all");
   sub->add_option("--format", options->format,
                   "Output: text (aligned, 80 columns), latex (amsmath fragment: bmatrix, align*), markdown "

@@ -176,6 +176,15 @@ void MechanismDynamics::compile_case() const {
     out.push_back(prepare(b.y.q_dot));
     out.push_back(b.rotates ? prepare(b.theta.q_dot) : ex(0));
   }
+  // C' = dC/dq q' + dC/dt in the bodies' own coordinates, before they become the state's.
+  auto rate_of = [&](const ex& phi) {
+    ex rate = phi.diff(system.time());
+    for (const sym::BodySystem& b : system.bodies()) {
+      rate += phi.diff(b.x.q) * b.x.q_dot + phi.diff(b.y.q) * b.y.q_dot;
+      if (b.rotates) rate += phi.diff(b.theta.q) * b.theta.q_dot;
+    }
+    return prepare(rate);
+  };
   for (const sym::JointSystem& j : system.joints()) {
     out.push_back(prepare(joint_coordinate(system, j.index)));
     out.push_back(prepare_output(j.force.x));
@@ -183,6 +192,7 @@ void MechanismDynamics::compile_case() const {
     out.push_back(prepare_output(j.moment));
     // Each row on its own: |C| of an expanded C^2 would cancel to sqrt(round-off).
     for (std::size_t r = 0; r < 2; ++r) out.push_back(r < j.constraints.size() ? prepare(j.constraints[r]) : ex(0));
+    for (std::size_t r = 0; r < 2; ++r) out.push_back(r < j.constraints.size() ? rate_of(j.constraints[r]) : ex(0));
   }
   // The kinetic energy and the angular momentum are sums over the bodies of products of
   // their rates, each a sum over the body's ancestors: expanded, a chain of n links has
@@ -392,11 +402,13 @@ void MechanismDynamics::sample(double t, const Eigen::VectorXd& y, MechanismSamp
   out.slider.assign(joints_, 0.0);
   out.force.assign(3 * joints_, 0.0);
   out.constraint.assign(joints_, 0.0);
+  out.constraint_rate.assign(joints_, 0.0);
   for (std::size_t j = 0; j < joints_; ++j) {
     out.slider[j] = values[k++];
     for (std::size_t c = 0; c < 3; ++c) out.force[3 * j + c] = values[k++];
     out.constraint[j] = std::hypot(values[k], values[k + 1]);
-    k += 2;
+    out.constraint_rate[j] = std::hypot(values[k + 2], values[k + 3]);
+    k += 4;
   }
   out.kinetic = values[k++];
   out.potential = values[k++];

@@ -54,8 +54,8 @@ std::vector<MechanismColumn> mechanism_columns(const sym::System& system) {
                      "acceleration of " + body.name + "." + axes[c], Q::acceleration, 3 * b + c, false});
   }
   for (std::size_t j = 0; j < m.joints.size(); ++j)
-    if (m.joints[j].type == JointType::slider)
-      out.push_back({m.joints[j].name + ".s_ddot", "m/s^2", "acceleration along slider " + m.joints[j].name,
+    if (const sym::OwnCoordinate* own = sym::joint_stages(m.joints[j].type).own)
+      out.push_back({m.joints[j].name + "." + own->base + "_ddot", own->units[2], own->meanings[2] + m.joints[j].name,
                      Q::slider_acceleration, j, false});
   const std::vector<eval::NamedPoint> points = eval::named_points(system);
   for (std::size_t p = 0; p < points.size(); ++p) {
@@ -78,6 +78,8 @@ std::vector<MechanismColumn> mechanism_columns(const sym::System& system) {
       out.push_back({joint.name + ".moment", "N m", "moment of joint " + joint.name, Q::force, 3 * j + 2, false});
     out.push_back({joint.name + ".constraint_error", stages.constraint_unit,
                    "|C| of joint " + joint.name + "'s position constraint", Q::constraint, j, false});
+    out.push_back({joint.name + ".constraint_velocity_error", stages.constraint_rate_unit,
+                   "|C'| of joint " + joint.name + "'s position constraint", Q::constraint_rate, j, false});
   }
   out.push_back({"energy", "J", "kinetic plus potential energy", Q::energy, 0, false});
   out.push_back({"work", "J", "work done by dampers and applied loads since t = 0", Q::work, 0, false});
@@ -186,6 +188,8 @@ double column_value(const MechanismColumn& c, double t, const Eigen::VectorXd& y
       return s.force[c.index];
     case MechanismQuantity::constraint:
       return s.constraint[c.index];
+    case MechanismQuantity::constraint_rate:
+      return s.constraint_rate[c.index];
     case MechanismQuantity::energy:
       return s.kinetic + s.potential;
     case MechanismQuantity::energy_error:
@@ -242,6 +246,7 @@ std::string column_words(const MechanismColumn& c) {
     case Q::slider_acceleration:
     case Q::force:
     case Q::constraint:
+    case Q::constraint_rate:
       break;
   }
   return c.meaning;

@@ -4,7 +4,7 @@
 // <body>.theta (no theta for a point mass); <joint>.s for sliders (the default); on
 // request the rates and accelerations, each named point's position, velocity and
 // acceleration (<body>.<point>.x, .y, .vx, .vy, .ax, .ay), each joint's force and
-// constraint error, the energy and its balance, and the momenta when nothing holds the
+// constraint errors, the energy and its balance, and the momenta when nothing holds the
 // mechanism to the ground.
 #include <functional>
 #include <string>
@@ -25,6 +25,7 @@ enum class MechanismQuantity {
   point,                // index: 6 named point + component (x, y, vx, vy, ax, ay)
   force,                // index: 3 joint + component (x, y, moment)
   constraint,           // index: joint
+  constraint_rate,      // index: joint
   energy,
   energy_error,  // E - E0 - W: the balance, 0 up to the integration error
   work,          // W, of dampers and applied loads since t = 0

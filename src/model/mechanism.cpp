@@ -8,6 +8,12 @@ const Body* Mechanism::find_body(const std::string& body_name) const {
   return nullptr;
 }
 
+const std::string& Mechanism::aliased(const std::string& key) const {
+  for (const Alias& a : aliases)
+    if (a.key == key) return a.name;
+  return key;
+}
+
 int Mechanism::body_index(const std::string& body_name) const {
   for (std::size_t i = 0; i < bodies.size(); ++i)
     if (bodies[i].name == body_name) return static_cast<int>(i);

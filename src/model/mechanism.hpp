@@ -151,6 +151,8 @@ struct Mechanism {
   /// Index into `bodies`, -1 for the ground or a name that is not a body.
   [[nodiscard]] int body_index(const std::string& body_name) const;
   [[nodiscard]] const Joint* find_joint(const std::string& joint_name) const;
+  /// `key`'s alias, or `key` when it has none.
+  [[nodiscard]] const std::string& aliased(const std::string& key) const;
 };
 
 /// "file:line:column: " or "" for a position built in code.

@@ -167,11 +167,8 @@ void check_aliases(const MechanismSolution& s) {
 }
 
 // `object` with each key that has an alias renamed to it, in the same order.
-nlohmann::ordered_json renamed(const nlohmann::ordered_json& object, const std::map<std::string, std::string>& names) {
-  auto name = [&](const std::string& key) {
-    const auto it = names.find(key);
-    return it == names.end() ? key : it->second;
-  };
+nlohmann::ordered_json renamed(const nlohmann::ordered_json& object, const Mechanism& m) {
+  auto name = [&](const std::string& key) { return m.aliased(key); };
   if (object.is_array()) {
     nlohmann::ordered_json out = nlohmann::ordered_json::array();
     for (const auto& key : object) out.push_back(name(key.get<std::string>()));
@@ -185,12 +182,10 @@ nlohmann::ordered_json renamed(const nlohmann::ordered_json& object, const std::
 // The file's aliases in place of the quantity keys they rename (bodies and joints keep
 // their names).
 void apply_aliases(nlohmann::ordered_json& doc, const Mechanism& m) {
-  std::map<std::string, std::string> names;
-  for (const Alias& a : m.aliases) names[a.key] = a.name;
   for (const char* section : {"parameters", "state", "derived", "solution", "units", "agreement"})
-    if (doc.contains(section)) doc[section] = renamed(doc[section], names);
+    if (doc.contains(section)) doc[section] = renamed(doc[section], m);
   for (auto& one : doc["cases"])
-    for (const char* section : {"unknowns", "solution", "recovered"}) one[section] = renamed(one[section], names);
+    for (const char* section : {"unknowns", "solution", "recovered"}) one[section] = renamed(one[section], m);
 }
 
 }  // namespace

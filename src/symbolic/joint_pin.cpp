@@ -41,6 +41,6 @@ GiNaC::ex no_coordinate(const JointEnds&) { return 0; }
 
 }  // namespace
 
-const JointStages kPinJoint{rows, unknowns, force, false, place, nullptr, no_coordinate, false, "m"};
+const JointStages kPinJoint{rows, unknowns, force, false, place, nullptr, no_coordinate, false, "m", "m/s"};
 
 }  // namespace linkage::sym

@@ -63,6 +63,6 @@ const OwnCoordinate kTravel{
 
 }  // namespace
 
-const JointStages kSliderJoint{rows, unknowns, force, true, place, &kTravel, coordinate, true, "m, rad"};
+const JointStages kSliderJoint{rows, unknowns, force, true, place, &kTravel, coordinate, true, "m, rad", "m/s, rad/s"};
 
 }  // namespace linkage::sym

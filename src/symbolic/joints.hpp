@@ -72,9 +72,11 @@ struct JointStages {
   const OwnCoordinate* own;
   /// tree: the value of that coordinate in the ends' placements (0 without one).
   GiNaC::ex (*coordinate)(const JointEnds& ends);
-  /// columns: whether `JOINT.moment` is written; the unit of `JOINT.constraint_error`.
+  /// columns: whether `JOINT.moment` is written; the units of `JOINT.constraint_error` and
+  /// of `JOINT.constraint_velocity_error`.
   bool moment_column;
   const char* constraint_unit;
+  const char* constraint_rate_unit;
 };
 
 /// The registration: every joint type's stages, one exhaustive switch.

@@ -142,6 +142,48 @@ TEST(SimulateCli, DefaultColumnsAreAllOfThemInOrder) {
   EXPECT_NEAR(table.rows[0][table.index("theta2_ddot")], number(solution["theta2_ddot"]), 1e-14);
 }
 
+// Issue 23: a mechanism's table has the homework table's accelerations and constraint
+// rate too. two-blocks' at t = 0 are the worked solution's (example.json) in every case,
+// and a drifting Case 1 has the homework's |C'|.
+TEST(SimulateCli, MechanismAccelerationsAndConstraintRateAreTheHomeworks) {
+  const nlohmann::json& solution = spec_example()["solution"];
+  const std::vector<std::pair<std::string, std::string>> accelerations{
+      {"1.x_ddot", "x1_ddot"}, {"1.y_ddot", "y1_ddot"}, {"1.theta_ddot", "theta1_ddot"},
+      {"2.x_ddot", "x2_ddot"}, {"2.y_ddot", "y2_ddot"}, {"2.theta_ddot", "theta2_ddot"},
+      {"P.force_x", "F_x"},    {"P.force_y", "F_y"}};
+  for (const char* case_id : {"1", "2", "3"}) {
+    std::string columns = "t,P.constraint_velocity_error";
+    for (const auto& [column, key] : accelerations) columns += "," + column;
+    const RunResult r = run_linkage({"simulate", "--mechanism", "two-blocks", "--case", case_id, "--duration", "0.1",
+                                     "--every", "0.1", "--columns", columns});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const Table table = parse_csv(r.out);
+    ASSERT_EQ(table.rows.size(), 2U);
+    // A 4x4 to 8x8 solve at the spec's state: round-off of order 1e-15 of the largest, 9.8.
+    for (const auto& [column, key] : accelerations)
+      EXPECT_NEAR(table.rows[0][table.index(column)], number(solution[key]), 1e-13) << "Case " << case_id << column;
+    EXPECT_LT(table.rows[0][table.index("P.constraint_velocity_error")], 1e-15) << "on the pin at the start";
+  }
+  // Case 1 drifts without stabilization: |C'| grows, and is the homework's.
+  const std::vector<std::string> run{"simulate", "--case",     "1", "--integrator", "rk4", "--dt",
+                                     "0.01",     "--duration", "1", "--every",      "0.5"};
+  std::vector<std::string> homework = run, mechanism = run;
+  homework.insert(homework.end(),
+                  {"--theta1-dot", "5", "--theta2-dot", "-8", "--columns", "t,constraint_velocity_error"});
+  mechanism.insert(mechanism.end(), {"--mechanism", "two-blocks", "--set", "1.theta_dot=5", "--set", "2.theta_dot=-8",
+                                     "--columns", "t,P.constraint_velocity_error"});
+  const RunResult h = run_linkage(homework), m = run_linkage(mechanism);
+  ASSERT_EQ(h.exit_code, 0) << h.err;
+  ASSERT_EQ(m.exit_code, 0) << m.err;
+  const Table ht = parse_csv(h.out), mt = parse_csv(m.out);
+  ASSERT_EQ(ht.rows.size(), 3U);
+  ASSERT_EQ(mt.rows.size(), 3U);
+  const double drift = ht.rows[2][1];
+  EXPECT_GT(drift, 1e-9) << "Case 1 drifts";
+  // The same RK4 steps on two compilations of the same equations: they part by round-off.
+  EXPECT_NEAR(mt.rows[2][1], drift, 1e-7 * drift);
+}
+
 TEST(SimulateCli, JsonFromTheExtensionWithOptionsAndSummary) {
   TempDir dir;
   const RunResult r = run_linkage({"simulate", "--duration", "2", "--every", "0.5", "--columns", "t,x1,energy", "--out",
