@@ -144,7 +144,6 @@ GiNaC::ex MechanismDynamics::prepare(const GiNaC::ex& e) const {
 void MechanismDynamics::compile_case() const {
   if (compiled_) return;
   const sym::System& system = *system_;
-  const Mechanism& mechanism = system.mechanism();
   const CaseSystem c = derive_case(system, id_);
   auto prepare = [&](const ex& e) { return this->prepare(e); };
   rows_ = c.A.size();
