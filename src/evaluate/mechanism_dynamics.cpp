@@ -23,7 +23,9 @@ constexpr int kProjectionIterations = 12;
 
 }  // namespace
 
-MechanismDynamics::MechanismDynamics(const sym::System& system, CaseId id) : id_(id), system_(&system) {
+MechanismDynamics::MechanismDynamics(const sym::System& system, CaseId id, std::optional<CaseSystem> derived)
+    : id_(id), system_(&system), derived_(std::move(derived)) {
+  if (derived_ && derived_->id != id) throw std::logic_error("a derived case given for another case");
   const bool maximal = id == CaseId::maximal;
   bodies_ = system.bodies().size();
   joints_ = system.joints().size();
@@ -132,7 +134,7 @@ void MechanismDynamics::compile_case() const {
   if (compiled_) return;
   const sym::System& system = *system_;
   const Mechanism& mechanism = system.mechanism();
-  const CaseSystem c = derive_case(system, id_);
+  const CaseSystem c = derived_ ? *derived_ : derive_case(system, id_);
   auto prepare = [&](const ex& e) { return this->prepare(e); };
   rows_ = c.A.size();
   cols_ = c.unknowns.size();
@@ -159,11 +161,13 @@ void MechanismDynamics::compile_case() const {
     out.push_back(b.rotates ? prepare(b.theta.q) : ex(0));
   }
   for (const sym::BodySystem& b : system.bodies()) {
+    throw_if_interrupted();
     out.push_back(prepare(b.x.q_dot));
     out.push_back(prepare(b.y.q_dot));
     out.push_back(b.rotates ? prepare(b.theta.q_dot) : ex(0));
   }
   for (const sym::JointSystem& j : system.joints()) {
+    throw_if_interrupted();  // a long chain's recovered forces take seconds to expand
     const Joint& joint = mechanism.joints[static_cast<std::size_t>(j.index)];
     ex s = 0;
     if (joint.type == JointType::slider) {
