@@ -126,6 +126,8 @@ class Builder {
 
   Index value(const GiNaC::ex& e) {
     if (const auto it = cache_.find(e); it != cache_.end()) return it->second;
+    // One output can take seconds (a long chain's kinetic energy, sums nested per link).
+    throw_if_interrupted();
     const Index node = compute(e);
     cache_.emplace(e, node);
     return node;

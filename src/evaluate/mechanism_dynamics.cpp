@@ -145,7 +145,10 @@ void MechanismDynamics::compile_case() const {
     throw_if_interrupted();
     for (const ex& e : row) rhs.push_back(prepare(e));
   }
-  for (const ex& e : c.B) rhs.push_back(prepare(e));
+  for (const ex& e : c.B) {
+    throw_if_interrupted();
+    rhs.push_back(prepare(e));
+  }
   rhs_ = compile(rhs, input_symbols_);
 
   // The sample: with the unknowns as inputs, and the eliminated forces recovered from them.
