@@ -139,7 +139,8 @@ ClipResult render_mechanism(const RenderFlags& f, const ClipProgress& progress) 
   const MechanismSolution checked =
       work_out_mechanism(chosen_mechanism(f.mechanism, f.inputs), {static_cast<CaseId>(simulation.case_id)});
   const sym::System& system = *checked.system;
-  const CheckedMechanismClip made = mechanism_clip(request, system, checked.state, simulation, plan);
+  CheckedMechanismClip made = mechanism_clip(request, system, checked.state, simulation, plan);
+  made.clip.derived = checked.cases.front().system;
   const MechanismClip& clip = made.clip;
   note_duration(f, clip.is_still(), clip.frames.has_value());
   if (!f.quiet) {

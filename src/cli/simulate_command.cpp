@@ -236,7 +236,7 @@ void run_simulate_mechanism(const SimulateOptions& o, const SimulationOptions& s
   const bool asked = o.columns_option != nullptr && o.columns_option->count() > 0;
   const std::vector<MechanismColumn> columns =
       select_mechanism_columns(all, asked ? o.columns : "default", "--columns");
-  MechanismSimulation simulation(system, checked.state, s);
+  MechanismSimulation simulation(system, checked.state, s, checked.cases.front().system);
   deriving.finish();
   if (!o.quiet) {
     note_ignored_simulation_flags(o.simulation, s, simulation.dynamics().constraint_rows());

@@ -14,6 +14,7 @@
 #include <stdexcept>
 #include <string>
 #include <tuple>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -125,6 +126,8 @@ class Builder {
 
   Index value(const GiNaC::ex& e) {
     if (const auto it = cache_.find(e); it != cache_.end()) return it->second;
+    // One output can take seconds (a long chain's kinetic energy, sums nested per link).
+    throw_if_interrupted();
     const Index node = compute(e);
     cache_.emplace(e, node);
     return node;
@@ -351,7 +354,14 @@ class Builder {
   std::map<GiNaC::ex, Index, GiNaC::ex_is_less> inputs_;
   GiNaC::exhashmap<Index> cache_;
   GiNaC::exhashmap<std::uint64_t> stable_;
-  std::map<std::tuple<Op, Index, Index>, Index> numbering_;
+  // Looked up once per operation emitted: hashed, as a long chain's case emits 10^5 of them.
+  struct KeyHash {
+    std::size_t operator()(const std::tuple<Op, Index, Index>& k) const noexcept {
+      const std::uint64_t ab = (std::uint64_t{std::get<1>(k)} << 32) | std::get<2>(k);
+      return std::hash<std::uint64_t>{}(ab * 0x9e3779b97f4a7c15ULL ^ static_cast<std::uint64_t>(std::get<0>(k)));
+    }
+  };
+  std::unordered_map<std::tuple<Op, Index, Index>, Index, KeyHash> numbering_;
   std::map<std::uint64_t, Index> constants_;
   std::size_t output_ = 0;
 };

@@ -36,7 +36,9 @@ std::vector<NamedPoint> named_points(const sym::System& system) {
   return out;
 }
 
-MechanismDynamics::MechanismDynamics(const sym::System& system, CaseId id) : id_(id), system_(&system) {
+MechanismDynamics::MechanismDynamics(const sym::System& system, CaseId id, std::optional<CaseSystem> derived)
+    : id_(id), system_(&system), derived_(std::move(derived)) {
+  if (derived_ && derived_->id != id) throw std::logic_error("a derived case given for another case");
   const bool maximal = id == CaseId::maximal;
   bodies_ = system.bodies().size();
   joints_ = system.joints().size();
@@ -144,7 +146,7 @@ GiNaC::ex MechanismDynamics::prepare(const GiNaC::ex& e) const {
 void MechanismDynamics::compile_case() const {
   if (compiled_) return;
   const sym::System& system = *system_;
-  const CaseSystem c = derive_case(system, id_);
+  const CaseSystem c = derived_ ? *derived_ : derive_case(system, id_);
   auto prepare = [&](const ex& e) { return this->prepare(e); };
   rows_ = c.A.size();
   cols_ = c.unknowns.size();
@@ -155,7 +157,10 @@ void MechanismDynamics::compile_case() const {
     throw_if_interrupted();
     for (const ex& e : row) rhs.push_back(prepare(e));
   }
-  for (const ex& e : c.B) rhs.push_back(prepare(e));
+  for (const ex& e : c.B) {
+    throw_if_interrupted();
+    rhs.push_back(prepare(e));
+  }
   rhs_ = compile(rhs, input_symbols_);
 
   // The sample: with the unknowns as inputs, and the eliminated forces recovered from them.
@@ -171,6 +176,7 @@ void MechanismDynamics::compile_case() const {
     out.push_back(b.rotates ? prepare(b.theta.q) : ex(0));
   }
   for (const sym::BodySystem& b : system.bodies()) {
+    throw_if_interrupted();
     out.push_back(prepare(b.x.q_dot));
     out.push_back(prepare(b.y.q_dot));
     out.push_back(b.rotates ? prepare(b.theta.q_dot) : ex(0));
@@ -185,6 +191,7 @@ void MechanismDynamics::compile_case() const {
     return prepare(rate);
   };
   for (const sym::JointSystem& j : system.joints()) {
+    throw_if_interrupted();  // a long chain's recovered forces take seconds to expand
     out.push_back(prepare(joint_coordinate(system, j.index)));
     out.push_back(prepare_output(j.force.x));
     out.push_back(prepare_output(j.force.y));

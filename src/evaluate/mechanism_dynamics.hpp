@@ -15,6 +15,7 @@
 #include <Eigen/Core>
 #include <Eigen/LU>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,8 +54,10 @@ struct NamedPoint {
 
 class MechanismDynamics {
  public:
-  /// `system` must outlive this.
-  MechanismDynamics(const sym::System& system, CaseId id);
+  /// `system` must outlive this. `derived`: the case as derive_case(system, id) gives it,
+  /// when the caller has it already (solve's check of the initial state), so that a long
+  /// chain is not derived twice.
+  MechanismDynamics(const sym::System& system, CaseId id, std::optional<CaseSystem> derived = {});
   ~MechanismDynamics();
   MechanismDynamics(MechanismDynamics&&) noexcept;
   MechanismDynamics& operator=(MechanismDynamics&&) noexcept;
@@ -108,7 +111,8 @@ class MechanismDynamics {
   std::size_t parameters_ = 0, n_ = 0, bodies_ = 0, joints_ = 0;
   mutable std::size_t rows_ = 0, cols_ = 0;
   mutable bool compiled_ = false;
-  GiNaC::exmap to_state_;  // maximal coordinates and rates in the state's (none for Case 1)
+  std::optional<CaseSystem> derived_;  // the case, when given; derived on first need otherwise
+  GiNaC::exmap to_state_;              // maximal coordinates and rates in the state's (none for Case 1)
   std::vector<GiNaC::symbol> input_symbols_;
   Program power_;  // P, of dampers and applied loads
   bool power_zero_ = false;

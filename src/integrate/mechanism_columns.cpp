@@ -155,6 +155,7 @@ bool needs_kinematics(const std::vector<MechanismColumn>& columns) {
       case MechanismQuantity::slider:
       case MechanismQuantity::force:
       case MechanismQuantity::constraint:
+      case MechanismQuantity::constraint_rate:
       case MechanismQuantity::energy:
       case MechanismQuantity::energy_error:
       case MechanismQuantity::work:

@@ -47,8 +47,9 @@ std::string case_text(const SimulationOptions& o) {
 }  // namespace
 
 struct MechanismSimulation::Impl {
-  Impl(const sym::System& system, const GiNaC::exmap& initial, const SimulationOptions& o)
-      : options(o), dynamics(system, static_cast<CaseId>(o.case_id)), rhs{&dynamics, std::nan("")} {
+  Impl(const sym::System& system, const GiNaC::exmap& initial, const SimulationOptions& o,
+       std::optional<CaseSystem> derived)
+      : options(o), dynamics(system, static_cast<CaseId>(o.case_id), std::move(derived)), rhs{&dynamics, std::nan("")} {
     if (o.stabilization == Stabilization::baumgarte) dynamics.set_baumgarte(o.baumgarte_alpha, o.baumgarte_beta);
     project = o.stabilization == Stabilization::projection && dynamics.constraint_rows() > 0;
     y = dynamics.initial_state(initial);
@@ -233,9 +234,9 @@ void MechanismSimulation::Impl::advance(double t) {
 }
 
 MechanismSimulation::MechanismSimulation(const sym::System& system, const GiNaC::exmap& initial,
-                                         const SimulationOptions& options) {
+                                         const SimulationOptions& options, std::optional<CaseSystem> derived) {
   options.validate();
-  impl_ = std::make_unique<Impl>(system, initial, options);
+  impl_ = std::make_unique<Impl>(system, initial, options, std::move(derived));
 }
 
 MechanismSimulation::~MechanismSimulation() = default;

@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "evaluate/mechanism_dynamics.hpp"
@@ -27,8 +28,10 @@ class MechanismSimulation {
  public:
   /// `initial`: the generalized coordinates and rates with every loop closed
   /// (sym::close_loops). Validates the options; throws Error::input when the case's matrix
-  /// is singular at the start, naming the case and its condition estimate.
-  MechanismSimulation(const sym::System& system, const GiNaC::exmap& initial, const SimulationOptions& options);
+  /// is singular at the start, naming the case and its condition estimate. `derived`: the
+  /// case already derived (eval::MechanismDynamics).
+  MechanismSimulation(const sym::System& system, const GiNaC::exmap& initial, const SimulationOptions& options,
+                      std::optional<CaseSystem> derived = {});
   ~MechanismSimulation();
   MechanismSimulation(MechanismSimulation&&) noexcept;
   MechanismSimulation& operator=(MechanismSimulation&&) noexcept;

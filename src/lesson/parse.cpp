@@ -6,6 +6,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <set>
 #include <span>
 #include <sstream>
 
@@ -465,6 +466,11 @@ class Parser {
       const auto with_set = std::find_if(readers.begin(), readers.end(), [](auto* r) { return r->has("set"); });
       const std::string origin = (with_set != readers.end() ? *with_set : *readers.begin())->where("set");
       run.built = at_keys(readers, [&] { return build(run.mechanism, run.settings, origin); });
+      // The initial state worked out as solve does (as `simulate --mechanism` does), so a
+      // value that breaks it is named with its likely causes; once per mechanism and case.
+      if (checked_.emplace(run.built.get(), run.options.case_id).second)
+        at_keys(readers,
+                [&] { (void)work_out_mechanism(run.built->system, {static_cast<CaseId>(run.options.case_id)}); });
     }
     const TableReader& innermost = **readers.begin();
     run.label = innermost.string("label").value_or(default_label(run, inputs));
@@ -785,6 +791,7 @@ class Parser {
   std::vector<std::string> step_settings_;
   MechanismNames step_names_;  // names of the step's mechanism for {{...}} and answers
   mutable std::map<std::string, std::shared_ptr<const BuiltMechanism>> built_;
+  mutable std::set<std::pair<const BuiltMechanism*, int>> checked_;  // runs' states worked out
   std::map<const BuiltMechanism*, MechanismNames> names_cache_;
   [[nodiscard]] const MechanismNames* names() const { return step_spec_.empty() ? nullptr : &step_names_; }
   fs::path dir_;

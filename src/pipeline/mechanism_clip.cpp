@@ -203,7 +203,7 @@ void produce_motion(const sym::System& system, const GiNaC::exmap& initial, cons
   PanelData panel;
   const MechanismMotion motion =
       sample_mechanism_motion(system, initial, clip.simulation, times, clip.trails.empty() ? 1 : kTrailSteps, result,
-                              progress, s.panel, &panel);
+                              progress, s.panel, &panel, clip.derived);
   panel.t_end = s.duration;
   const std::vector<Overlay> overlays = sample_overlays(system, initial, clip, clip.simulation, times, result);
   FrameLayout layout(s, clip.theme, std::move(panel));
@@ -230,8 +230,9 @@ void produce_still(const sym::System& system, const GiNaC::exmap& initial, const
   options.duration = std::max(s.at, options.dt);
   options.validate();
   PanelData panel;
-  const MechanismMotion motion = sample_mechanism_motion(
-      system, initial, options, times, clip.trails.empty() ? 1 : kTrailSteps, result, progress, s.panel, &panel);
+  const MechanismMotion motion =
+      sample_mechanism_motion(system, initial, options, times, clip.trails.empty() ? 1 : kTrailSteps, result, progress,
+                              s.panel, &panel, clip.derived);
   panel.t_end = s.at;
   const std::vector<Overlay> overlays = sample_overlays(system, initial, clip, options, times, result);
   FrameLayout layout(s, clip.theme, std::move(panel));
@@ -272,9 +273,11 @@ Camera mechanism_camera(const MechanismScene& scene, const RenderSettings& setti
 MechanismMotion sample_mechanism_motion(const sym::System& system, const GiNaC::exmap& initial,
                                         const SimulationOptions& options, const std::vector<double>& frame_times,
                                         int trail_steps, ClipResult& result, const ClipProgress& progress,
-                                        const std::vector<std::string>& panel_names, PanelData* panel) {
+                                        const std::vector<std::string>& panel_names, PanelData* panel,
+                                        const std::optional<CaseSystem>& derived) {
   const auto start = std::chrono::steady_clock::now();
-  MechanismSimulation simulation(system, initial, options);
+  const bool same_case = derived && derived->id == static_cast<CaseId>(options.case_id);
+  MechanismSimulation simulation(system, initial, options, same_case ? derived : std::nullopt);
   std::vector<MechanismColumn> columns;
   if (panel != nullptr && !panel_names.empty()) {
     columns = mechanism_panel_columns(mechanism_columns(system), panel_names);
@@ -341,7 +344,8 @@ std::vector<MechanismMotion> overlay_motions(const sym::System& system, const Gi
   if (clip.ensemble >= 2)
     for (const GiNaC::exmap& state : ensemble_states(system, initial, clip.ensemble, clip.spread)) {
       throw_if_interrupted();
-      motions.push_back(sample_mechanism_motion(system, state, options, times, 1, scratch));
+      motions.push_back(
+          sample_mechanism_motion(system, state, options, times, 1, scratch, {}, {}, nullptr, clip.derived));
     }
   if (clip.compare && clip.compare->table) {
     const sym::System& other = clip.compare->system != nullptr ? *clip.compare->system : system;

@@ -59,6 +59,9 @@ struct MechanismClip {
   int ensemble = 0;                             // 0, or 2..200 runs (the main one among them)
   double spread = 1e-6;                         // the ensemble's largest offset of the first coordinate
   std::optional<MechanismRun> compare;
+  /// The system's case as derive_case gives it, when the caller derived it already (to
+  /// check the initial state): the runs of that case reuse it rather than derive again.
+  std::optional<CaseSystem> derived;
 
   [[nodiscard]] bool is_still() const;
   /// Checks the outputs, settings, simulation and trails before any work: Error::invalid
@@ -79,11 +82,13 @@ struct MechanismClip {
 /// so a trail stays smooth however fast a point moves between frames. Adds the run's
 /// samples, seconds and warning to `result`. With `panel`, also the panel's columns at
 /// every frame time and between them, at least 4000 samples over the clip (settings.panel,
-/// checked by validate()).
+/// checked by validate()). `derived`: the system's case, used when it is the one `options`
+/// runs (MechanismClip::derived).
 MechanismMotion sample_mechanism_motion(const sym::System& system, const GiNaC::exmap& initial,
                                         const SimulationOptions& options, const std::vector<double>& frame_times,
                                         int trail_steps, ClipResult& result, const ClipProgress& progress = {},
-                                        const std::vector<std::string>& panel_names = {}, PanelData* panel = nullptr);
+                                        const std::vector<std::string>& panel_names = {}, PanelData* panel = nullptr,
+                                        const std::optional<CaseSystem>& derived = {});
 
 /// The ensemble's other runs: `initial` with the first generalized coordinate moved by
 /// spread k / (n - 1), k = 1 .. n - 1 (evenly spaced, no randomness), loops closed again.

@@ -191,9 +191,15 @@ void apply_aliases(nlohmann::ordered_json& doc, const Mechanism& m) {
 }  // namespace
 
 MechanismSolution work_out_mechanism(const Mechanism& mechanism, const std::vector<CaseId>& cases, CaseForm form) {
+  return work_out_mechanism(std::make_shared<const sym::System>(mechanism), cases, form);
+}
+
+MechanismSolution work_out_mechanism(std::shared_ptr<const sym::System> derived, const std::vector<CaseId>& cases,
+                                     CaseForm form) {
   MechanismSolution out;
-  out.system = std::make_shared<const sym::System>(mechanism);
+  out.system = std::move(derived);
   const sym::System& system = *out.system;
+  const Mechanism& mechanism = system.mechanism();
   const sym::ClosedState closed = sym::checked_initial_state(system);
   out.state = closed.state;
   out.closure_note = closed.note;

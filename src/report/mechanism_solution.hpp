@@ -46,6 +46,10 @@ struct MechanismSolution {
 enum class CaseForm { newton_euler, lagrange };
 [[nodiscard]] MechanismSolution work_out_mechanism(const Mechanism& mechanism, const std::vector<CaseId>& cases,
                                                    CaseForm form = CaseForm::newton_euler);
+/// The same for a system derived already.
+[[nodiscard]] MechanismSolution work_out_mechanism(std::shared_ptr<const sym::System> system,
+                                                   const std::vector<CaseId>& cases,
+                                                   CaseForm form = CaseForm::newton_euler);
 
 /// A body's centre-of-mass acceleration and angular acceleration in a solved case.
 struct BodyMotion {

@@ -1,5 +1,6 @@
 #include "symbolic/energy.hpp"
 
+#include "core/interrupt.hpp"
 #include "model/joint_types.hpp"
 
 namespace linkage::sym {
@@ -117,16 +118,20 @@ ex angular_momentum_about_centre(const System& system) {
   const std::vector<BodySystem>& bodies = system.bodies();
   ex M = 0;
   for (const BodySystem& b : bodies) M += b.mass;
-  ex H = 0;
-  for (std::size_t i = 0; i < bodies.size(); ++i)
+  // n^2 terms, summed once: adding them one by one copied the growing sum each time (n^4,
+  // seconds for a long chain, with no chance to stop at a signal).
+  GiNaC::exvector terms;
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    throw_if_interrupted();
     for (std::size_t j = i + 1; j < bodies.size(); ++j) {
       const BodySystem &a = bodies[i], &b = bodies[j];
-      H +=
-          a.mass * b.mass / M * ((a.x.q - b.x.q) * (a.y.q_dot - b.y.q_dot) - (a.y.q - b.y.q) * (a.x.q_dot - b.x.q_dot));
+      terms.push_back(a.mass * b.mass / M *
+                      ((a.x.q - b.x.q) * (a.y.q_dot - b.y.q_dot) - (a.y.q - b.y.q) * (a.x.q_dot - b.x.q_dot)));
     }
+  }
   for (const BodySystem& b : bodies)
-    if (b.rotates) H += b.inertia * b.theta.q_dot;
-  return H;
+    if (b.rotates) terms.push_back(b.inertia * b.theta.q_dot);
+  return GiNaC::add(terms);
 }
 
 }  // namespace linkage::sym

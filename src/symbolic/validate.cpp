@@ -123,8 +123,14 @@ void validate_constraints(const System& system, const GiNaC::exmap& state) {
   for (const auto& [symbol, expression] : system.constants())
     values[symbol] = GiNaC::evalf(expression.subs(system.parameter_values()));
   for (const auto& [symbol, value] : state) values[symbol] = value;
-  for (const auto& [symbol, expression] : system.to_generalized())
-    if (!expression.has(system.time())) values[symbol] = GiNaC::evalf(expression.subs(values));
+  // Only the coordinates the rows hold: the rates' and accelerations' expressions grow
+  // with the depth in the tree, and evaluating them cost a long chain most of this check.
+  for (const GiNaC::symbol& q : coordinates) {
+    throw_if_interrupted();
+    if (const auto it = system.to_generalized().find(q);
+        it != system.to_generalized().end() && !it->second.has(system.time()))
+      values[q] = GiNaC::evalf(it->second.subs(values));
+  }
   const Mechanism& m = system.mechanism();
   // Every joint's rows; a row's derivative by a coordinate it does not hold is 0.
   std::vector<Eigen::MatrixXd> jacobians;

@@ -149,5 +149,42 @@ TEST(LongChain, SigtermEndsTheDerivationOfTwoHundredLinksAtOnce) {
   EXPECT_EQ(dir.entries(), std::vector<std::string>{"chain200.toml"});
 }
 
+// Every stage of the derivation polls for the signal (building the system, closing and
+// checking the initial state, deriving the case, solving it at the start, compiling it):
+// a signal at any moment of it ends the run within a second. The moments are fractions of
+// the time `solve` takes to derive the same chain here, measured first, so that they fall
+// early, in the middle and late in the derivation on any machine; `simulate` derives at
+// least as much as `solve` before its first step.
+TEST(LongChain, ASignalAtAnyMomentOfTheDerivationEndsTheRunWithinASecond) {
+  const TempDir dir;
+  const std::string chain = write(dir, "chain100.toml", chain_toml(leaning_rods(100))).string();
+  const auto begun = std::chrono::steady_clock::now();
+  const RunResult solved = run_linkage({"solve", "--mechanism", chain, "--case", "3", "--format", "json"});
+  ASSERT_EQ(solved.exit_code, 0) << solved.err;
+  const double derivation = std::chrono::duration<double>(std::chrono::steady_clock::now() - begun).count();
+  struct Moment {
+    double fraction;
+    int signal;
+  };
+  for (const Moment m : {Moment{0.05, SIGTERM}, Moment{0.3, SIGINT}, Moment{0.6, SIGTERM}, Moment{0.9, SIGTERM}}) {
+    SCOPED_TRACE("signal " + std::to_string(m.signal) + " at " + std::to_string(m.fraction) + " of " +
+                 std::to_string(derivation) + " s");
+    RunOptions options;
+    options.args = {"simulate", "--mechanism", chain, "--duration", "1", "--out", (dir / "run.csv").string()};
+    options.signal = m.signal;
+    options.timeout_seconds = 10 * derivation + 30;
+    const auto start = std::chrono::steady_clock::now();
+    options.ready = [&](const std::string&, const std::string&) {
+      return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > m.fraction * derivation;
+    };
+    const RunResult r = run_linkage(options);
+    ASSERT_TRUE(r.signal_sent) << "it ended before the signal: " << r.err;
+    EXPECT_FALSE(r.timed_out);
+    EXPECT_EQ(r.exit_code, 128 + m.signal) << r.err;
+    EXPECT_LT(r.seconds_after_signal, 1.0);
+    EXPECT_EQ(dir.entries(), std::vector<std::string>{"chain100.toml"});
+  }
+}
+
 }  // namespace
 }  // namespace linkage::test
