@@ -19,7 +19,9 @@ constexpr const char* kGravityName = "gravity";
 constexpr const char* kSpringName = "spring forces";
 constexpr const char* kVelocityName = "velocity";
 constexpr const char* kCutNote = "cut short: its label gives the value";
-constexpr const char* kStretchedNote = "dashed: too short to see at its scale, drawn longer; its label gives the value";
+// On two lines, so the legend stays narrow enough to fit beside a body.
+constexpr const char* kStretchedNote = "dashed: too short to see at its scale,";
+constexpr const char* kStretchedNote2 = "drawn longer; its label gives the value";
 
 text::Font label_font(const DrawStyle& style) { return {style.small_size(), false}; }
 text::Font body_font(const DrawStyle& style) { return {style.small_size(), true}; }
@@ -138,7 +140,7 @@ Vec2 legend_rows(cairo_t* cr, const DrawStyle& style, const Camera& camera, cons
     widest = std::max(widest, names + 8 * u + arrow + 6 * u + text::width(cr, font, note.c_str()));
     y += row;
   };
-  const auto marked_row = [&](const char* note, bool cut) {
+  const auto marked_row = [&](const char* note, const char* more, bool cut) {
     const Vec2 tail(at.x(), y + 0.5 * row), tip(at.x() + 40 * u, y + 0.5 * row);
     if (paint) {
       if (cut) {
@@ -151,24 +153,94 @@ Vec2 legend_rows(cairo_t* cr, const DrawStyle& style, const Camera& camera, cons
     }
     widest = std::max(widest, 46 * u + text::width(cr, font, note));
     y += row;
+    if (more == nullptr) return;
+    y -= 0.35 * row;  // a continued line, closer than a new row
+    if (paint) text::draw(cr, font, tip.x() + 6 * u, baseline(), more, theme.text_muted);
+    widest = std::max(widest, 46 * u + text::width(cr, font, more));
+    y += row;
   };
   if (forces && legend.joint) scale_row(kJointName, theme.pin_force, legend.metres, legend.value, legend.joint_scale);
   if (forces && legend.applied)
     scale_row(kAppliedName, theme.velocity, legend.applied_metres, legend.applied_value, legend.applied_scale);
   for (const List::Legend::Row& r : legend.rows)
     scale_row(row_name(r.kind), arrow_colour(theme, r.kind), r.metres, r.value, r.scale);
-  if (legend.cut) marked_row(kCutNote, true);
-  if (legend.stretched) marked_row(kStretchedNote, false);
+  if (legend.cut) marked_row(kCutNote, nullptr, true);
+  if (legend.stretched) marked_row(kStretchedNote, kStretchedNote2, false);
   return {widest, y - at.y()};
 }
 
-Rect legend_rect(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List::Legend& legend, int height) {
+// The area of a and b's intersection (zero when apart).
+double overlap_area(const Rect& a, const Rect& b) {
+  const double w = std::min(a.x + a.width, b.x + b.width) - std::max(a.x, b.x);
+  const double h = std::min(a.y + a.height, b.y + b.height) - std::max(a.y, b.y);
+  return w > 0 && h > 0 ? w * h : 0;
+}
+
+// What the legend must not cover, in pixels: each body's, arrow's, joint's and torque's box.
+std::vector<Rect> drawn_boxes(const DrawStyle& style, const Camera& camera, const List& list) {
+  std::vector<Rect> boxes;
+  const auto around = [&](const std::vector<Vec2>& points, double grow) {
+    Bounds b;
+    for (const Vec2& p : points) b.include(camera.to_pixels(p));
+    boxes.push_back(
+        {b.min.x() - grow, b.min.y() - grow, b.max.x() - b.min.x() + 2 * grow, b.max.y() - b.min.y() + 2 * grow});
+  };
+  for (const List::Outline& outline : list.outlines)
+    around(outline.points, outline.shape == Shape::point ? 1.6 * style.com_radius() : style.edge_width());
+  for (const List::Arrow& arrow : list.arrows)
+    around({arrow.tail, arrow.tail + arrow.vector}, style.arrow_head_length());
+  for (const List::Marker& marker : list.markers) around({marker.at}, 10 * style.u);
+  for (const List::Line& line : list.lines)
+    if (line.kind != List::Line::Kind::trail && !line.points.empty()) around(line.points, style.edge_width());
+  for (const List::Torque& torque : list.torques)
+    around({torque.centre - Vec2::Constant(torque.radius), torque.centre + Vec2::Constant(torque.radius)},
+           style.arrow_head_length());
+  return boxes;
+}
+
+// The legend's box where it covers least of what is drawn: bottom left when clear, else
+// another corner or a place along the frame's edge, below the title and the time.
+Rect legend_rect(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List& list, int width, int height,
+                 const std::vector<Rect>& occupied) {
+  const List::Legend& legend = list.legend;
   if ((!(legend.metres > 0) || !(legend.joint || legend.applied)) && legend.rows.empty()) return {};
   const double pad = 8 * style.u;
   const Vec2 content = legend_rows(cr, style, camera, legend, Vec2::Zero(), false);
-  const double h = content.y() + 2 * 0.6 * pad;
-  return {std::floor(style.padding()), std::floor(height - style.padding() - h), std::ceil(content.x() + 2 * pad),
-          std::ceil(h)};
+  const double w = std::ceil(content.x() + 2 * pad), h = std::ceil(content.y() + 2 * 0.6 * pad);
+  const double left = std::floor(style.padding()), right = std::floor(width - style.padding() - w);
+  const double bottom = std::floor(height - style.padding() - h);
+  const auto below_occupied = [&](double x) {
+    double top = style.padding();
+    for (const Rect& r : occupied)
+      if (overlap_area({x, 0, w, static_cast<double>(height)}, r) > 0) top = std::max(top, r.y + r.height + pad);
+    return std::ceil(top);
+  };
+  // The corners first, then along the edges: a wide swing can fill every corner in turn.
+  std::vector<Rect> places{Rect{left, bottom, w, h}, Rect{right, bottom, w, h}, Rect{left, below_occupied(left), w, h},
+                           Rect{right, below_occupied(right), w, h}};
+  constexpr int kSteps = 16;
+  for (int k = 1; k < kSteps; ++k) {
+    const double x = std::floor(left + (right - left) * k / kSteps);
+    places.push_back({x, bottom, w, h});
+    places.push_back({x, below_occupied(x), w, h});
+  }
+  for (const double x : {left, right}) {
+    const double top = below_occupied(x);
+    for (int k = 1; k < kSteps; ++k) places.push_back({x, std::floor(top + (bottom - top) * k / kSteps), w, h});
+  }
+  const std::vector<Rect> drawn = drawn_boxes(style, camera, list);
+  Rect best = places.front();
+  double least = -1;
+  for (const Rect& corner : places) {
+    double covered = 0;
+    for (const Rect& box : drawn) covered += overlap_area(corner, box);
+    if (least < 0 || covered < least) {
+      least = covered;
+      best = corner;
+    }
+    if (covered == 0) break;
+  }
+  return best;
 }
 
 void paint_legend(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List::Legend& legend,
@@ -191,7 +263,7 @@ void paint_legend(cairo_t* cr, const DrawStyle& style, const Camera& camera, con
 ForceLayout layout_forces(cairo_t* cr, const DrawStyle& style, const Camera& camera, const MechanismDrawList& list,
                           int width, int height, const std::vector<Rect>& occupied) {
   ForceLayout layout;
-  if (list.shown.has(Element::legend)) layout.legend = legend_rect(cr, style, camera, list.legend, height);
+  if (list.shown.has(Element::legend)) layout.legend = legend_rect(cr, style, camera, list, width, height, occupied);
   Obstacles obstacles;
   obstacles.boxes = occupied;
   if (!layout.legend.empty()) obstacles.boxes.push_back(layout.legend);

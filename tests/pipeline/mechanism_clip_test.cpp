@@ -372,6 +372,49 @@ Camera frame_camera(const MechanismScene& scene, std::size_t k, int width, int h
   return camera.centred_at(scene.centroid(k));
 }
 
+// Issue 23 D1: the legend over the triple pendulum's disc and the four-bar's "A on 2".
+TEST(MechanismForces, TheLegendCoversNoBodyArrowOrJointAt720pAndAtQualityLow) {
+  const Theme theme = load_theme("light", {}, "theme");
+  for (const auto& [width, height] : {std::pair{1280, 720}, std::pair{854, 480}}) {
+    DrawStyle style;
+    style.theme = &theme;
+    style.u = DrawStyle::unit_for(width, height);
+    const cairo::SurfacePtr surface = cairo::image_surface(width, height);
+    const cairo::ContextPtr cr = cairo::context(surface.get());
+    for (const std::string& name : shipped_mechanism_names()) {
+      const sym::System system(load_mechanism(name));
+      const MechanismMotion motion = clip_motion(system, 4.0, 30);
+      MechanismScene scene(mechanism_geometry(system), motion, {}, 2.0, {});
+      const double scale = frame_camera(scene, 0, width, height).scale();
+      scene.set_shortest_arrow(least_visible_arrow_px(style) / scale, stretched_arrow_px(style) / scale);
+      const Rect title{0, 0, 0.6 * width, 0.07 * height};
+      MechanismDrawList list;
+      std::size_t legends = 0;
+      for (std::size_t k = 0; k < motion.samples.size(); k += 3) {
+        SCOPED_TRACE(name + " at " + std::to_string(width) + " frame " + std::to_string(k));
+        scene.frame(k, list);
+        const Camera camera = frame_camera(scene, k, width, height);
+        const Rect legend = layout_forces(cr.get(), style, camera, list, width, height, {title}).legend;
+        if (legend.empty()) continue;
+        ++legends;
+        EXPECT_FALSE(overlaps(legend, title));
+        const auto box = [&](const std::vector<Vec2>& world) {
+          Bounds b;
+          for (const Vec2& p : world) b.include(camera.to_pixels(p));
+          return Rect{b.min.x(), b.min.y(), b.max.x() - b.min.x(), b.max.y() - b.min.y()};
+        };
+        for (const MechanismDrawList::Outline& outline : list.outlines)
+          EXPECT_FALSE(overlaps(legend, box(outline.points))) << "body " << outline.body;
+        for (const MechanismDrawList::Arrow& arrow : list.arrows)
+          EXPECT_FALSE(overlaps(legend, box({arrow.tail, arrow.tail + arrow.vector}))) << arrow.label;
+        for (const MechanismDrawList::Marker& marker : list.markers)
+          EXPECT_FALSE(overlaps(legend, box({marker.at}))) << "a joint";
+      }
+      EXPECT_GT(legends, 0U) << name;
+    }
+  }
+}
+
 TEST(MechanismForces, LabelsKeepClearOfEachOtherArrowsAndBodiesAndOnlyStubsGoUnlabelled) {
   constexpr int kWidth = 854, kHeight = 480;
   const Theme theme = load_theme("light", {}, "theme");
