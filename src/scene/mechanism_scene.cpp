@@ -673,6 +673,25 @@ void MechanismScene::add_trails(std::size_t k, MechanismDrawList& out) const {
   }
 }
 
+namespace {
+
+// The clip's legend cut down to what this frame draws: a row per arrow kind present, and
+// the cut and dashed notes only when such an arrow is in the frame.
+void legend_for_frame(MechanismDrawList& out) {
+  using Kind = MechanismDrawList::Arrow::Kind;
+  MechanismDrawList::Legend& legend = out.legend;
+  const auto present = [&](Kind kind) {
+    return std::any_of(out.arrows.begin(), out.arrows.end(), [&](const auto& a) { return a.kind == kind; });
+  };
+  legend.joint = legend.joint && present(Kind::joint);
+  legend.applied = legend.applied && (present(Kind::applied) || !out.torques.empty());
+  std::erase_if(legend.rows, [&](const MechanismDrawList::Legend::Row& row) { return !present(row.kind); });
+  legend.cut = std::any_of(out.arrows.begin(), out.arrows.end(), [](const auto& a) { return a.cut; });
+  legend.stretched = std::any_of(out.arrows.begin(), out.arrows.end(), [](const auto& a) { return a.stretched; });
+}
+
+}  // namespace
+
 void MechanismScene::frame(std::size_t k, MechanismDrawList& out) const {
   out.clear();
   out.legend = legend_;
@@ -730,6 +749,7 @@ void MechanismScene::frame(std::size_t k, MechanismDrawList& out) const {
   add_load_arrows(k, out);
   add_trails(k, out);
   if (free_body_) pull_apart(k, out);
+  legend_for_frame(out);
 }
 
 void MechanismScene::place_joints(const std::vector<double>& pose, std::size_t first_marker, std::size_t first_line,

@@ -415,6 +415,47 @@ TEST(MechanismForces, TheLegendCoversNoBodyArrowOrJointAt720pAndAtQualityLow) {
   }
 }
 
+// Issue 23 D4: "cut short" and "dashed" listed with no such arrow in the frame.
+TEST(MechanismForces, TheLegendListsOnlyTheArrowKindsTheFrameDraws) {
+  constexpr int kWidth = 1280, kHeight = 720;
+  const Theme theme = load_theme("light", {}, "theme");
+  DrawStyle style;
+  style.theme = &theme;
+  style.u = DrawStyle::unit_for(kWidth, kHeight);
+  ArrowScaleRequest apart;
+  apart.fixed = {{"joint", 50.0}, {"applied", 0.01}};  // joint forces short, applied ones long
+  std::size_t without_cut = 0, without_dashed = 0, with_both = 0;
+  for (const std::string& name : shipped_mechanism_names()) {
+    const sym::System system(load_mechanism(name));
+    const MechanismMotion motion = clip_motion(system, 4.0, 30);
+    for (const ArrowScaleRequest& request : {ArrowScaleRequest{}, apart}) {
+      MechanismScene scene(mechanism_geometry(system), motion, {}, 2.0, request);
+      const double scale = frame_camera(scene, 0, kWidth, kHeight).scale();
+      scene.set_shortest_arrow(least_visible_arrow_px(style) / scale, stretched_arrow_px(style) / scale);
+      MechanismDrawList list;
+      for (std::size_t k = 0; k < motion.samples.size(); ++k) {
+        SCOPED_TRACE(name + " frame " + std::to_string(k));
+        scene.frame(k, list);
+        const auto any = [&](const auto& test) { return std::any_of(list.arrows.begin(), list.arrows.end(), test); };
+        const bool cut = any([](const auto& a) { return a.cut; });
+        const bool dashed = any([](const auto& a) { return a.stretched; });
+        EXPECT_EQ(list.legend.cut, cut);
+        EXPECT_EQ(list.legend.stretched, dashed);
+        const bool joints = any([](const auto& a) { return a.kind == MechanismDrawList::Arrow::Kind::joint; });
+        EXPECT_TRUE(!list.legend.joint || joints);
+        for (const MechanismDrawList::Legend::Row& row : list.legend.rows)
+          EXPECT_TRUE(any([&](const auto& a) { return a.kind == row.kind; })) << static_cast<int>(row.kind);
+        without_cut += cut ? 0 : 1;
+        without_dashed += dashed ? 0 : 1;
+        with_both += cut && dashed ? 1 : 0;
+      }
+    }
+  }
+  EXPECT_GT(without_cut, 0U);
+  EXPECT_GT(without_dashed, 0U);
+  EXPECT_GT(with_both, 0U);  // both rows are still listed when both kinds are drawn
+}
+
 TEST(MechanismForces, LabelsKeepClearOfEachOtherArrowsAndBodiesAndOnlyStubsGoUnlabelled) {
   constexpr int kWidth = 854, kHeight = 480;
   const Theme theme = load_theme("light", {}, "theme");
@@ -525,9 +566,10 @@ TEST(MechanismScene, LegendScaleIsTheArrowsScaleAndATypicalFrameReads) {
     EXPECT_NEAR(ratio, scene.force_scale(), 1e-12 * ratio);
     EXPECT_EQ(legend.value, format_quantity(legend.newtons, "N"));
     std::vector<double> largest;
-    bool any_cut = false;
+    bool any_cut = false, legend_cut = false;
     for (std::size_t k = 0; k < motion.samples.size(); ++k) {
       scene.frame(k, list);
+      legend_cut = legend_cut || list.legend.cut;  // the frame's legend: its own arrows
       double frame_largest = 0;
       for (const MechanismDrawList::Arrow& arrow : list.arrows) {
         const double length = arrow.vector.norm();
@@ -543,7 +585,7 @@ TEST(MechanismScene, LegendScaleIsTheArrowsScaleAndATypicalFrameReads) {
       }
       largest.push_back(frame_largest);
     }
-    EXPECT_EQ(any_cut, legend.cut);
+    EXPECT_EQ(any_cut, legend_cut);
     // The median frame's longest arrow is a readable share of the mechanism (the four-bar's
     // was a hundredth with one scale for the peak).
     std::nth_element(largest.begin(), largest.begin() + static_cast<std::ptrdiff_t>(largest.size() / 2), largest.end());
