@@ -7,6 +7,7 @@
 
 #include "render/scene_painter.hpp"
 #include "render/text.hpp"
+#include "scene/arrow_scale.hpp"
 
 namespace linkage {
 namespace {
@@ -198,15 +199,11 @@ std::vector<Rect> drawn_boxes(const DrawStyle& style, const Camera& camera, cons
   return boxes;
 }
 
-// The legend's box where it covers least of what is drawn: bottom left when clear, else
-// another corner or a place along the frame's edge, below the title and the time.
-Rect legend_rect(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List& list, int width, int height,
-                 const std::vector<Rect>& occupied) {
-  const List::Legend& legend = list.legend;
-  if ((!(legend.metres > 0) || !(legend.joint || legend.applied)) && legend.rows.empty()) return {};
+// A w x h box where it covers least of `drawn` (and none of `taken`): bottom left when
+// clear, else another corner or a place along the frame's edge, below the title and time.
+Rect clear_place(const DrawStyle& style, double w, double h, int width, int height, const std::vector<Rect>& occupied,
+                 const std::vector<Rect>& drawn, const std::vector<Rect>& taken) {
   const double pad = 8 * style.u;
-  const Vec2 content = legend_rows(cr, style, camera, legend, Vec2::Zero(), false);
-  const double w = std::ceil(content.x() + 2 * pad), h = std::ceil(content.y() + 2 * 0.6 * pad);
   const double left = std::floor(style.padding()), right = std::floor(width - style.padding() - w);
   const double bottom = std::floor(height - style.padding() - h);
   const auto below_occupied = [&](double x) {
@@ -228,19 +225,38 @@ Rect legend_rect(cairo_t* cr, const DrawStyle& style, const Camera& camera, cons
     const double top = below_occupied(x);
     for (int k = 1; k < kSteps; ++k) places.push_back({x, std::floor(top + (bottom - top) * k / kSteps), w, h});
   }
-  const std::vector<Rect> drawn = drawn_boxes(style, camera, list);
   Rect best = places.front();
   double least = -1;
-  for (const Rect& corner : places) {
+  for (const Rect& place : places) {
+    const Rect grown{place.x - pad, place.y - pad, place.width + 2 * pad, place.height + 2 * pad};
+    if (std::any_of(taken.begin(), taken.end(), [&](const Rect& t) { return overlap_area(grown, t) > 0; })) continue;
     double covered = 0;
-    for (const Rect& box : drawn) covered += overlap_area(corner, box);
+    for (const Rect& box : drawn) covered += overlap_area(place, box);
     if (least < 0 || covered < least) {
       least = covered;
-      best = corner;
+      best = place;
     }
     if (covered == 0) break;
   }
   return best;
+}
+
+// The legend, and a scale bar to read its "1 cm" off (the grid's spacing, as the
+// homework's), each where it covers nothing drawn.
+void place_legend(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List& list, int width, int height,
+                  const std::vector<Rect>& occupied, ForceLayout& layout) {
+  const List::Legend& legend = list.legend;
+  if ((!(legend.metres > 0) || !(legend.joint || legend.applied)) && legend.rows.empty()) return;
+  const double pad = 8 * style.u;
+  const Vec2 content = legend_rows(cr, style, camera, legend, Vec2::Zero(), false);
+  const double w = std::ceil(content.x() + 2 * pad), h = std::ceil(content.y() + 2 * 0.6 * pad);
+  const std::vector<Rect> drawn = drawn_boxes(style, camera, list);
+  layout.legend = clear_place(style, w, h, width, height, occupied, drawn, {});
+  const RoundLength spacing = grid_spacing_for(camera, width, height);
+  layout.scale_label = describe_length(spacing.mantissa, spacing.exponent);
+  layout.scale_px = spacing.metres() * camera.scale();
+  const Rect bar = scale_bar_rect(cr, style, layout.scale_label, layout.scale_px, width, height);
+  layout.scale_bar = clear_place(style, bar.width, bar.height, width, height, occupied, drawn, {layout.legend});
 }
 
 void paint_legend(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List::Legend& legend,
@@ -263,10 +279,11 @@ void paint_legend(cairo_t* cr, const DrawStyle& style, const Camera& camera, con
 ForceLayout layout_forces(cairo_t* cr, const DrawStyle& style, const Camera& camera, const MechanismDrawList& list,
                           int width, int height, const std::vector<Rect>& occupied) {
   ForceLayout layout;
-  if (list.shown.has(Element::legend)) layout.legend = legend_rect(cr, style, camera, list, width, height, occupied);
+  if (list.shown.has(Element::legend)) place_legend(cr, style, camera, list, width, height, occupied, layout);
   Obstacles obstacles;
   obstacles.boxes = occupied;
   if (!layout.legend.empty()) obstacles.boxes.push_back(layout.legend);
+  if (!layout.scale_bar.empty()) obstacles.boxes.push_back(layout.scale_bar);
   for (const List::Marker& marker : list.markers) {
     const double r = (marker.kind == List::Marker::Kind::guide ? 9.0 : 5.0) * style.u;
     const Vec2 at = camera.to_pixels(marker.at);
@@ -400,6 +417,7 @@ void paint_forces(cairo_t* cr, const DrawStyle& style, const Camera& camera, con
     text::draw_centred_with_halo(cr, font, at.x(), at.y(), label.text.c_str(), colour, theme.background, 2.5 * style.u);
   }
   paint_legend(cr, style, camera, list.legend, layout.legend);
+  if (!layout.scale_bar.empty()) paint_scale_bar(cr, style, layout.scale_label, layout.scale_px, layout.scale_bar);
 }
 
 }  // namespace linkage

@@ -27,7 +27,10 @@ struct PlacedLabel {
 };
 
 struct ForceLayout {
-  Rect legend;                      // bottom left; empty without force arrows
+  Rect legend;              // where it covers nothing drawn; empty without force arrows
+  Rect scale_bar;           // beside the legend: what its "1 cm" measures against
+  std::string scale_label;  // the bar's length, "10 cm"
+  double scale_px = 0;
   std::vector<Rect> body_labels;    // the body names' boxes, fixed at the centres
   std::vector<PlacedLabel> labels;  // one per arrow long enough to carry one, and per torque
 };

@@ -19,6 +19,7 @@
 #include "render/mechanism_forces.hpp"
 #include "render/scene_painter.hpp"
 #include "render/xml_check.hpp"
+#include "scene/arrow_scale.hpp"
 #include "scene/mechanism_scene.hpp"
 #include "support/test_support.hpp"
 #include "symbolic/loop_closure.hpp"
@@ -372,8 +373,9 @@ Camera frame_camera(const MechanismScene& scene, std::size_t k, int width, int h
   return camera.centred_at(scene.centroid(k));
 }
 
-// Issue 23 D1: the legend over the triple pendulum's disc and the four-bar's "A on 2".
-TEST(MechanismForces, TheLegendCoversNoBodyArrowOrJointAt720pAndAtQualityLow) {
+// Issue 23 D1: the legend over the triple pendulum's disc and the four-bar's "A on 2";
+// D5: a legend stating "1 cm = ..." with no scale bar.
+TEST(MechanismForces, TheLegendAndItsScaleBarCoverNoBodyArrowOrJointAt720pAndAtQualityLow) {
   const Theme theme = load_theme("light", {}, "theme");
   for (const auto& [width, height] : {std::pair{1280, 720}, std::pair{854, 480}}) {
     DrawStyle style;
@@ -394,21 +396,31 @@ TEST(MechanismForces, TheLegendCoversNoBodyArrowOrJointAt720pAndAtQualityLow) {
         SCOPED_TRACE(name + " at " + std::to_string(width) + " frame " + std::to_string(k));
         scene.frame(k, list);
         const Camera camera = frame_camera(scene, k, width, height);
-        const Rect legend = layout_forces(cr.get(), style, camera, list, width, height, {title}).legend;
-        if (legend.empty()) continue;
+        const ForceLayout layout = layout_forces(cr.get(), style, camera, list, width, height, {title});
+        if (layout.legend.empty()) continue;
         ++legends;
-        EXPECT_FALSE(overlaps(legend, title));
+        // D5: the legend's "1 cm = ..." has a scale bar to measure with: the grid's spacing.
+        ASSERT_FALSE(layout.scale_bar.empty());
+        const RoundLength spacing = grid_spacing_for(camera, width, height);
+        EXPECT_NEAR(layout.scale_px, spacing.metres() * camera.scale(), 1e-9);
+        EXPECT_EQ(layout.scale_label, describe_length(spacing.mantissa, spacing.exponent));
+        EXPECT_FALSE(overlaps(layout.legend, layout.scale_bar));
         const auto box = [&](const std::vector<Vec2>& world) {
           Bounds b;
           for (const Vec2& p : world) b.include(camera.to_pixels(p));
           return Rect{b.min.x(), b.min.y(), b.max.x() - b.min.x(), b.max.y() - b.min.y()};
         };
-        for (const MechanismDrawList::Outline& outline : list.outlines)
-          EXPECT_FALSE(overlaps(legend, box(outline.points))) << "body " << outline.body;
-        for (const MechanismDrawList::Arrow& arrow : list.arrows)
-          EXPECT_FALSE(overlaps(legend, box({arrow.tail, arrow.tail + arrow.vector}))) << arrow.label;
-        for (const MechanismDrawList::Marker& marker : list.markers)
-          EXPECT_FALSE(overlaps(legend, box({marker.at}))) << "a joint";
+        for (const Rect& legend : {layout.legend, layout.scale_bar}) {
+          EXPECT_FALSE(overlaps(legend, title));
+          EXPECT_GE(legend.x, 0);
+          EXPECT_LE(legend.x + legend.width, width);
+          for (const MechanismDrawList::Outline& outline : list.outlines)
+            EXPECT_FALSE(overlaps(legend, box(outline.points))) << "body " << outline.body;
+          for (const MechanismDrawList::Arrow& arrow : list.arrows)
+            EXPECT_FALSE(overlaps(legend, box({arrow.tail, arrow.tail + arrow.vector}))) << arrow.label;
+          for (const MechanismDrawList::Marker& marker : list.markers)
+            EXPECT_FALSE(overlaps(legend, box({marker.at}))) << "a joint";
+        }
       }
       EXPECT_GT(legends, 0U) << name;
     }
