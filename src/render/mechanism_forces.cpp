@@ -24,8 +24,11 @@ constexpr const char* kCutNote = "cut short: its label gives the value";
 constexpr const char* kStretchedNote = "dashed: too short to see at its scale,";
 constexpr const char* kStretchedNote2 = "drawn longer; its label gives the value";
 
-text::Font label_font(const DrawStyle& style) { return {style.small_size(), false}; }
-text::Font body_font(const DrawStyle& style) { return {style.small_size(), true}; }
+// At the homework clip's sizes (its arrow tags, block names and legend), readable from
+// the back of a lecture hall.
+text::Font label_font(const DrawStyle& style) { return {style.text_size(), true}; }
+text::Font body_font(const DrawStyle& style) { return {style.block_label_size(), true}; }
+text::Font legend_font(const DrawStyle& style) { return {style.text_size(), false}; }
 
 // A text's box centred on `at`, with room for its halo.
 Rect box_around(cairo_t* cr, const DrawStyle& style, const text::Font& font, const std::string& s, const Vec2& at) {
@@ -104,7 +107,7 @@ void paint_torque(cairo_t* cr, const DrawStyle& style, const Camera& camera, con
 Vec2 legend_rows(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List::Legend& legend, const Vec2& at,
                  bool paint) {
   const Theme& theme = *style.theme;
-  const text::Font font = label_font(style);
+  const text::Font font = legend_font(style);
   const text::Metrics m = text::metrics(cr, font);
   const double u = style.u, row = 1.7 * font.size;
   double names = 0;

@@ -215,7 +215,7 @@ void paint_markers(cairo_t* cr, const DrawStyle& style, const Camera& camera, co
 
 // The body names where the layout put them (at the centres, or beside a joint there).
 void paint_body_labels(cairo_t* cr, const DrawStyle& style, const List& list, const ForceLayout& layout) {
-  const text::Font font{style.small_size(), true};
+  const text::Font font{style.block_label_size(), true};  // as mechanism_forces' layout sized them
   for (std::size_t i = 0; i < list.labels.size() && i < layout.body_labels.size(); ++i) {
     const Rect& box = layout.body_labels[i];
     text::draw_centred_with_halo(cr, font, box.x + 0.5 * box.width, box.y + 0.5 * box.height,

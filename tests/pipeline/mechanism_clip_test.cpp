@@ -18,6 +18,7 @@
 #include "render/cairo_util.hpp"
 #include "render/mechanism_forces.hpp"
 #include "render/scene_painter.hpp"
+#include "render/text.hpp"
 #include "render/xml_check.hpp"
 #include "scene/arrow_scale.hpp"
 #include "scene/mechanism_scene.hpp"
@@ -466,6 +467,35 @@ TEST(MechanismForces, TheLegendListsOnlyTheArrowKindsTheFrameDraws) {
   EXPECT_GT(without_cut, 0U);
   EXPECT_GT(without_dashed, 0U);
   EXPECT_GT(with_both, 0U);  // both rows are still listed when both kinds are drawn
+}
+
+// Issue 23: the four-bar's labels about half the homework clip's, unreadable from the
+// back of a lecture hall. The homework draws arrow tags at 12 u and block names at 15 u, bold.
+TEST(MechanismForces, LabelsAreAtTheHomeworkClipsSize) {
+  const Theme theme = load_theme("light", {}, "theme");
+  for (const auto& [width, height] : {std::pair{1280, 720}, std::pair{854, 480}}) {
+    DrawStyle style;
+    style.theme = &theme;
+    style.u = DrawStyle::unit_for(width, height);
+    const cairo::SurfacePtr surface = cairo::image_surface(width, height);
+    const cairo::ContextPtr cr = cairo::context(surface.get());
+    const auto tall = [&](double size) {
+      const text::Metrics m = text::metrics(cr.get(), {size, true});
+      return m.ascent + m.descent + 3 * style.u;  // the box's padding for the halo
+    };
+    const sym::System system(load_mechanism("four-bar"));
+    const MechanismMotion motion = clip_motion(system, 2.0, 30);
+    MechanismScene scene(mechanism_geometry(system), motion, {}, 2.0, {});
+    MechanismDrawList list;
+    scene.frame(30, list);
+    const Camera camera = frame_camera(scene, 30, width, height);
+    const ForceLayout layout = layout_forces(cr.get(), style, camera, list, width, height, {});
+    ASSERT_GE(layout.labels.size(), 5U);
+    ASSERT_EQ(layout.body_labels.size(), 3U);
+    for (const PlacedLabel& label : layout.labels)
+      EXPECT_NEAR(label.box.height, tall(12 * style.u), 1e-9) << label.text;
+    for (const Rect& body : layout.body_labels) EXPECT_NEAR(body.height, tall(15 * style.u), 1e-9);
+  }
 }
 
 TEST(MechanismForces, LabelsKeepClearOfEachOtherArrowsAndBodiesAndOnlyStubsGoUnlabelled) {
