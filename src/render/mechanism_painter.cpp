@@ -108,13 +108,16 @@ void paint_bodies(cairo_t* cr, const DrawStyle& style, const Camera& camera, con
     return (b.max - b.min).squaredNorm();
   };
   std::stable_sort(order.begin(), order.end(), [&](const auto* a, const auto* b) { return size(a) > size(b); });
+  // Every fill, then every outline: a body under another (a crank along its coupler)
+  // keeps its edge in sight over the fill of the one above it.
   for (const List::Outline* drawn : order) {
-    const List::Outline& outline = *drawn;
-    const std::size_t colour = outline.body % 2;
-    outline_path(cr, style, camera, outline);
-    set_colour(cr, theme.block_fill[colour]);
-    cairo_fill_preserve(cr);
-    set_colour(cr, theme.block_edge[colour]);
+    outline_path(cr, style, camera, *drawn);
+    set_colour(cr, theme.block_fill[drawn->body % 2]);
+    cairo_fill(cr);
+  }
+  for (const List::Outline* drawn : order) {
+    outline_path(cr, style, camera, *drawn);
+    set_colour(cr, theme.block_edge[drawn->body % 2]);
     cairo_stroke(cr);
   }
 }

@@ -17,6 +17,7 @@
 #include "model/mechanism_toml.hpp"
 #include "render/cairo_util.hpp"
 #include "render/mechanism_forces.hpp"
+#include "render/mechanism_painter.hpp"
 #include "render/scene_painter.hpp"
 #include "render/text.hpp"
 #include "render/xml_check.hpp"
@@ -496,6 +497,44 @@ TEST(MechanismForces, LabelsAreAtTheHomeworkClipsSize) {
       EXPECT_NEAR(label.box.height, tall(12 * style.u), 1e-9) << label.text;
     for (const Rect& body : layout.body_labels) EXPECT_NEAR(body.height, tall(15 * style.u), 1e-9);
   }
+}
+
+// Issue 23 D2: the four-bar's crank 2 hidden under coupler 3. Two bodies drawn one over
+// the other: the lower one's edge must show through the upper one (and the upper's too).
+TEST(MechanismPainter, ABodyUnderAnotherKeepsItsOutlineInSight) {
+  constexpr int kWidth = 400, kHeight = 300;
+  const Theme theme = load_theme("light", {}, "theme");
+  DrawStyle style;
+  style.theme = &theme;
+  style.u = 2;
+  MechanismDrawList list;
+  list.shown = ElementSet::defaults();
+  list.shown.hide(Element::grid);
+  list.shown.hide(Element::axes);
+  list.shown.hide(Element::hud);
+  list.shown.hide(Element::title);
+  const auto box = [](double x0, double y0, double x1, double y1) {
+    return std::vector<Vec2>{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+  };
+  // A long rod (body 1, drawn first: larger) with a short one (body 0) across its lower edge.
+  list.outlines.push_back({0, box(-0.5, -0.4, 0.5, 0.1), Shape::rectangle});
+  list.outlines.push_back({1, box(-1.5, 0.0, 1.5, 0.5), Shape::rectangle});
+  const Camera camera(View{-2, -1.5, 2, 1.5}, kWidth, kHeight);  // 100 px per metre
+  const cairo::SurfacePtr surface = cairo::image_surface(kWidth, kHeight);
+  const cairo::ContextPtr cr = cairo::context(surface.get());
+  paint_mechanism_frame(cr.get(), style, camera, list, {}, 0, kWidth, kHeight);
+  cairo_surface_flush(surface.get());
+  const unsigned char* data = cairo_image_surface_get_data(surface.get());
+  const int stride = cairo_image_surface_get_stride(surface.get());
+  const auto distance_to = [&](const Vec2& world, const Rgba& colour) {
+    const Vec2 p = camera.to_pixels(world);
+    const unsigned char* px = data + static_cast<int>(p.y()) * stride + 4 * static_cast<int>(p.x());  // BGRA
+    return std::abs(px[2] / 255.0 - colour.r) + std::abs(px[1] / 255.0 - colour.g) + std::abs(px[0] / 255.0 - colour.b);
+  };
+  // Body 1's lower edge (y = 0) inside body 0: drawn in body 1's edge colour.
+  EXPECT_LT(distance_to({0.2, 0.0}, theme.block_edge[1]), 0.15);
+  // Body 0's upper edge (y = 0.1) inside body 1: drawn in body 0's edge colour.
+  EXPECT_LT(distance_to({0.2, 0.1}, theme.block_edge[0]), 0.15);
 }
 
 TEST(MechanismForces, LabelsKeepClearOfEachOtherArrowsAndBodiesAndOnlyStubsGoUnlabelled) {
