@@ -29,6 +29,7 @@ constexpr const char* kStretchedNote2 = "drawn longer; its label gives the value
 text::Font label_font(const DrawStyle& style) { return {style.text_size(), true}; }
 text::Font body_font(const DrawStyle& style) { return {style.block_label_size(), true}; }
 text::Font legend_font(const DrawStyle& style) { return {style.text_size(), false}; }
+constexpr double kLineHeight = 1.1;  // a label's height per font size, a little under any hinted one
 
 // A text's box centred on `at`, with room for its halo.
 Rect box_around(cairo_t* cr, const DrawStyle& style, const text::Font& font, const std::string& s, const Vec2& at) {
@@ -355,7 +356,9 @@ ForceLayout layout_forces(cairo_t* cr, const DrawStyle& style, const Camera& cam
     obstacles.boxes.push_back(placed.box);
     layout.labels.push_back(std::move(placed));
   };
-  const double tall = text::metrics(cr, font).ascent + text::metrics(cr, font).descent + 3 * style.u;
+  // From the nominal size, not the hinted metrics (not proportional at small sizes), so
+  // every quality preset leaves out the same labels.
+  const double tall = kLineHeight * font.size + 3 * style.u;
   for (const List::Arrow& arrow : list.arrows) {
     const Vec2 tail = camera.to_pixels(arrow.tail), tip = camera.to_pixels(arrow.tail + arrow.vector);
     // A stub too short to say whose it is goes unlabelled; an applied load never does.

@@ -537,6 +537,48 @@ TEST(MechanismPainter, ABodyUnderAnotherKeepsItsOutlineInSight) {
   EXPECT_LT(distance_to({0.2, 0.1}, theme.block_edge[0]), 0.15);
 }
 
+// Issue 23 D12: the cart-pendulum's "P on rod" labels, there at 720p, gone at --quality
+// low. Every frame labels the same arrows at 854x480 as at 1280x720, none on one another.
+TEST(MechanismForces, EveryQualityLabelsTheSameArrows) {
+  const Theme theme = load_theme("light", {}, "theme");
+  std::vector<std::string> names = shipped_mechanism_names();
+  names.push_back(std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/cart-pendulum.toml");
+  std::size_t p_labels = 0, frames = 0;
+  for (const std::string& name : names) {
+    const sym::System system(load_mechanism(name));
+    const MechanismMotion motion = clip_motion(system, 4.0, 30);
+    std::vector<std::vector<std::string>> labelled[2];
+    for (const int q : {0, 1}) {
+      const int width = q == 0 ? 1280 : 854, height = q == 0 ? 720 : 480;
+      DrawStyle style;
+      style.theme = &theme;
+      style.u = DrawStyle::unit_for(width, height);
+      const cairo::SurfacePtr surface = cairo::image_surface(width, height);
+      const cairo::ContextPtr cr = cairo::context(surface.get());
+      MechanismScene scene(mechanism_geometry(system), motion, {}, 2.0, {});
+      const double scale = frame_camera(scene, 0, width, height).scale();
+      scene.set_shortest_arrow(least_visible_arrow_px(style) / scale, stretched_arrow_px(style) / scale);
+      MechanismDrawList list;
+      for (std::size_t k = 0; k < motion.samples.size(); ++k) {
+        scene.frame(k, list);
+        const Camera camera = frame_camera(scene, k, width, height);
+        const ForceLayout layout = layout_forces(cr.get(), style, camera, list, width, height, {});
+        std::vector<std::string> texts;
+        for (const PlacedLabel& label : layout.labels) {
+          texts.push_back(label.text);
+          if (name.ends_with("cart-pendulum.toml")) p_labels += label.text.starts_with("P on rod") ? 1 : 0;
+        }
+        std::sort(texts.begin(), texts.end());
+        labelled[q].push_back(texts);
+      }
+    }
+    for (std::size_t k = 0; k < labelled[0].size(); ++k)
+      EXPECT_EQ(labelled[0][k], labelled[1][k]) << name << " frame " << k;
+    if (name.ends_with("cart-pendulum.toml")) frames = labelled[0].size();
+  }
+  EXPECT_GT(p_labels, frames);  // "P on rod" in most of the cart-pendulum's frames, at both sizes
+}
+
 TEST(MechanismForces, LabelsKeepClearOfEachOtherArrowsAndBodiesAndOnlyStubsGoUnlabelled) {
   constexpr int kWidth = 854, kHeight = 480;
   const Theme theme = load_theme("light", {}, "theme");
