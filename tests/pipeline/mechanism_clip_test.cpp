@@ -579,6 +579,47 @@ TEST(MechanismForces, EveryQualityLabelsTheSameArrows) {
   EXPECT_GT(p_labels, frames);  // "P on rod" in most of the cart-pendulum's frames, at both sizes
 }
 
+// Issue 23 D14: a slider's rail drawn only over the travel, through the body's centre,
+// and the ground's hatch inside the moving cart. The rail runs along the guided body's
+// underside past both its ends in every frame; a ground support no other joint uses sits
+// at the rail's start, outside the body.
+TEST(MechanismScene, ASlidersRailRunsUnderTheGuidedBodyOverItsWholeTravel) {
+  for (const std::string& name :
+       {std::string("slider-crank"), std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/cart-pendulum.toml"}) {
+    SCOPED_TRACE(name);
+    const sym::System system(load_mechanism(name));
+    const MechanismMotion motion = clip_motion(system, 4.0, 30);
+    const MechanismGeometry geometry = mechanism_geometry(system);
+    const MechanismScene scene(geometry, motion, {}, 2.0, {});
+    const bool cart = name.ends_with("cart-pendulum.toml");
+    const std::size_t guided = cart ? 0 : 2;  // the cart, the piston
+    MechanismDrawList list;
+    for (std::size_t k = 0; k < motion.samples.size(); ++k) {
+      scene.frame(k, list);
+      const auto rail = std::find_if(list.lines.begin(), list.lines.end(),
+                                     [](const auto& l) { return l.kind == MechanismDrawList::Line::Kind::rail; });
+      ASSERT_NE(rail, list.lines.end());
+      ASSERT_EQ(rail->points.size(), 2U);
+      const Vec2 a = rail->points[0], b = rail->points[1];
+      const Vec2 along = (b - a).normalized(), across(-along.y(), along.x());
+      const MechanismDrawList::Outline& body = list.outlines[guided];
+      ASSERT_EQ(body.body, guided);
+      double lowest = 1e300;
+      for (const Vec2& p : body.points) {
+        EXPECT_GE((p - a).dot(across), -1e-9) << "frame " << k << ": the body reaches below its rail";
+        EXPECT_GE((p - a).dot(along), -1e-9) << "frame " << k << ": the body runs off the rail's start";
+        EXPECT_LE((p - b).dot(along), 1e-9) << "frame " << k << ": the body runs off the rail's end";
+        lowest = std::min(lowest, (p - a).dot(across));
+      }
+      EXPECT_NEAR(lowest, 0, 1e-9) << "frame " << k << ": the body rests on its rail";
+      for (const MechanismDrawList::Marker& m : list.markers) {
+        if (!cart || m.kind != MechanismDrawList::Marker::Kind::ground) continue;
+        EXPECT_LT((m.at - a).norm(), 1e-12) << "frame " << k << ": the cart's ground support at the rail's start";
+      }
+    }
+  }
+}
+
 TEST(MechanismForces, LabelsKeepClearOfEachOtherArrowsAndBodiesAndOnlyStubsGoUnlabelled) {
   constexpr int kWidth = 854, kHeight = 480;
   const Theme theme = load_theme("light", {}, "theme");
