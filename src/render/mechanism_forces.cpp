@@ -356,9 +356,7 @@ ForceLayout layout_forces(cairo_t* cr, const DrawStyle& style, const Camera& cam
     obstacles.boxes.push_back(placed.box);
     layout.labels.push_back(std::move(placed));
   };
-  // From the nominal size, not the hinted metrics (not proportional at small sizes), so
-  // every quality preset leaves out the same labels.
-  const double tall = kLineHeight * font.size + 3 * style.u;
+  const double tall = shortest_labelled_arrow_px(style);
   for (const List::Arrow& arrow : list.arrows) {
     const Vec2 tail = camera.to_pixels(arrow.tail), tip = camera.to_pixels(arrow.tail + arrow.vector);
     // A stub too short to say whose it is goes unlabelled; an applied load never does.
@@ -374,6 +372,12 @@ ForceLayout layout_forces(cairo_t* cr, const DrawStyle& style, const Camera& cam
     add(torque.label, head, Vec2(out.x(), -out.y()), List::Arrow::Kind::applied);
   }
   return layout;
+}
+
+double shortest_labelled_arrow_px(const DrawStyle& style) {
+  // From the nominal size, not the hinted metrics (not proportional at small sizes), so
+  // every quality preset labels the same arrows.
+  return kLineHeight * label_font(style).size + 3 * style.u;
 }
 
 const Rgba& arrow_colour(const Theme& theme, MechanismDrawList::Arrow::Kind kind) {

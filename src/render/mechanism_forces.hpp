@@ -44,6 +44,10 @@ struct ForceLayout {
                                         const MechanismDrawList& list, int width, int height,
                                         const std::vector<Rect>& occupied);
 
+/// The shortest arrow that carries its label (pixels): the scene draws a shorter joint
+/// force stretched (dashed) to stretched_arrow_px, its label giving the value.
+[[nodiscard]] double shortest_labelled_arrow_px(const DrawStyle& style);
+
 /// The colour of an arrow of `kind`.
 [[nodiscard]] const Rgba& arrow_colour(const Theme& theme, MechanismDrawList::Arrow::Kind kind);
 

@@ -620,6 +620,48 @@ TEST(MechanismScene, ASlidersRailRunsUnderTheGuidedBodyOverItsWholeTravel) {
   }
 }
 
+// Issue 23 D3: joint A's two short arrows at `--trail 3.P --at 3` solid, under the pin
+// circle and unlabelled, though the legend promises a dashed arrow with its value. With
+// the clip's threshold every arrow drawn carries its label, and one too short for it is
+// dashed and reaches past the pin.
+TEST(MechanismForces, EveryArrowCarriesItsLabelAndAShortOneIsDashedPastThePin) {
+  const Theme theme = load_theme("light", {}, "theme");
+  for (const auto& [width, height] : {std::pair{1280, 720}, std::pair{854, 480}}) {
+    DrawStyle style;
+    style.theme = &theme;
+    style.u = DrawStyle::unit_for(width, height);
+    const cairo::SurfacePtr surface = cairo::image_surface(width, height);
+    const cairo::ContextPtr cr = cairo::context(surface.get());
+    std::size_t dashed = 0;
+    for (const std::string& name : shipped_mechanism_names()) {
+      const sym::System system(load_mechanism(name));
+      const MechanismMotion motion = clip_motion(system, 4.0, 30);
+      MechanismScene scene(mechanism_geometry(system), motion, {}, 2.0, {});
+      const double scale = frame_camera(scene, 0, width, height).scale();
+      scene.set_shortest_arrow(shortest_labelled_arrow_px(style) / scale, stretched_arrow_px(style) / scale);
+      MechanismDrawList list;
+      for (std::size_t k = 0; k < motion.samples.size(); k += 2) {
+        SCOPED_TRACE(name + " frame " + std::to_string(k) + " at " + std::to_string(width));
+        scene.frame(k, list);
+        const Camera camera = frame_camera(scene, k, width, height);
+        const ForceLayout layout = layout_forces(cr.get(), style, camera, list, width, height, {});
+        EXPECT_EQ(layout.labels.size(), list.arrows.size() + list.torques.size());
+        for (const MechanismDrawList::Arrow& arrow : list.arrows) {
+          const double px = arrow.vector.norm() * camera.scale();
+          if (px == 0) continue;
+          EXPECT_GE(px, shortest_labelled_arrow_px(style) * (1 - 1e-9)) << arrow.label;
+          EXPECT_GT(px, 2 * style.pin_radius()) << arrow.label;  // out from under the pin circle
+          if (arrow.stretched) {
+            ++dashed;
+            EXPECT_NE(arrow.label.find(" N"), std::string::npos) << arrow.label;  // its value
+          }
+        }
+      }
+    }
+    EXPECT_GT(dashed, 0U);
+  }
+}
+
 TEST(MechanismForces, LabelsKeepClearOfEachOtherArrowsAndBodiesAndOnlyStubsGoUnlabelled) {
   constexpr int kWidth = 854, kHeight = 480;
   const Theme theme = load_theme("light", {}, "theme");
