@@ -385,7 +385,9 @@ TEST(MechanismForces, TheLegendAndItsScaleBarCoverNoBodyArrowOrJointAt720pAndAtQ
     style.u = DrawStyle::unit_for(width, height);
     const cairo::SurfacePtr surface = cairo::image_surface(width, height);
     const cairo::ContextPtr cr = cairo::context(surface.get());
-    for (const std::string& name : shipped_mechanism_names()) {
+    std::vector<std::string> names = shipped_mechanism_names();
+    names.push_back(std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/ladder.toml");  // down a wall
+    for (const std::string& name : names) {
       const sym::System system(load_mechanism(name));
       const MechanismMotion motion = clip_motion(system, 4.0, 30);
       MechanismScene scene(mechanism_geometry(system), motion, {}, 2.0, {});
