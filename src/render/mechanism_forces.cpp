@@ -203,6 +203,39 @@ std::vector<Rect> drawn_boxes(const DrawStyle& style, const Camera& camera, cons
   return boxes;
 }
 
+// Whether q's shaft runs along p's line (parallel, within `gap` of it, overlapping or
+// less than `apart` from it end to end): the two read as one arrow. A joint's pair, equal
+// and opposite from one point, is the convention, not a clash.
+bool along_one_line(const Segment& p, const Segment& q, double gap, double apart) {
+  const Vec2 dp = p.b - p.a, dq = q.b - q.a;
+  if (dp.norm() < 1 || dq.norm() < 1 || (p.a - q.a).norm() < 1) return false;
+  const Vec2 d = dp.normalized(), n(-d.y(), d.x());
+  if (std::fabs(d.x() * dq.normalized().y() - d.y() * dq.normalized().x()) > 0.1) return false;
+  if (std::fabs((q.a - p.a).dot(n)) >= gap || std::fabs((q.b - p.a).dot(n)) >= gap) return false;
+  const double q0 = (q.a - p.a).dot(d), q1 = (q.b - p.a).dot(d);
+  return std::min(dp.norm(), std::max(q0, q1)) - std::max(0.0, std::min(q0, q1)) > -apart;
+}
+
+// The arrows in pixels as drawn: one along another's line (a crank's force along its
+// coupler's) moved aside, so each can be told from the other.
+std::vector<Segment> arrows_apart(const DrawStyle& style, const Camera& camera, const List& list) {
+  std::vector<Segment> arrows;
+  for (const List::Arrow& arrow : list.arrows)
+    arrows.push_back({camera.to_pixels(arrow.tail), camera.to_pixels(arrow.tail + arrow.vector)});
+  const double gap = 2 * style.arrow_width();
+  for (std::size_t j = 0; j < arrows.size(); ++j) {
+    for (std::size_t i = 0; i < j; ++i) {
+      if (!along_one_line(arrows[i], arrows[j], gap, style.arrow_head_length())) continue;
+      const Vec2 d = (arrows[i].b - arrows[i].a).normalized(), n(-d.y(), d.x());
+      const double off = (0.5 * (arrows[j].a + arrows[j].b) - arrows[i].a).dot(n);
+      const Vec2 shift = ((off >= 0 ? 1.0 : -1.0) * gap - off) * n;
+      arrows[j].a += shift;
+      arrows[j].b += shift;
+    }
+  }
+  return arrows;
+}
+
 // A w x h box where it covers least of `drawn` (and none of `taken`): bottom left when
 // clear, else another corner or a place along the frame's edge, below the title and time.
 Rect clear_place(const DrawStyle& style, double w, double h, int width, int height, const std::vector<Rect>& occupied,
@@ -294,8 +327,8 @@ ForceLayout layout_forces(cairo_t* cr, const DrawStyle& style, const Camera& cam
     obstacles.boxes.push_back({at.x() - r, at.y() - r, 2 * r, 2 * r});
   }
   const std::size_t markers = obstacles.boxes.size();
-  for (const List::Arrow& arrow : list.arrows)
-    obstacles.segments.push_back({camera.to_pixels(arrow.tail), camera.to_pixels(arrow.tail + arrow.vector)});
+  layout.arrows = arrows_apart(style, camera, list);
+  for (const Segment& arrow : layout.arrows) obstacles.segments.push_back(arrow);
   for (std::size_t i = 0; i < list.labels.size(); ++i) {
     const List::Label& label = list.labels[i];
     const auto on_a_joint = [&](const Rect& b) {
@@ -357,8 +390,9 @@ ForceLayout layout_forces(cairo_t* cr, const DrawStyle& style, const Camera& cam
     layout.labels.push_back(std::move(placed));
   };
   const double tall = shortest_labelled_arrow_px(style);
-  for (const List::Arrow& arrow : list.arrows) {
-    const Vec2 tail = camera.to_pixels(arrow.tail), tip = camera.to_pixels(arrow.tail + arrow.vector);
+  for (std::size_t i = 0; i < list.arrows.size(); ++i) {
+    const List::Arrow& arrow = list.arrows[i];
+    const Vec2 tail = layout.arrows[i].a, tip = layout.arrows[i].b;
     // A stub too short to say whose it is goes unlabelled; an applied load never does.
     if (arrow.kind != List::Arrow::Kind::applied && (tip - tail).norm() < tall) continue;
     const Vec2 along = tip - tail;
@@ -400,9 +434,12 @@ void paint_forces(cairo_t* cr, const DrawStyle& style, const Camera& camera, con
                   const ForceLayout& layout) {
   const Theme& theme = *style.theme;
   for (const List::Torque& torque : list.torques) paint_torque(cr, style, camera, torque);
-  for (const List::Arrow& arrow : list.arrows) {
+  for (std::size_t i = 0; i < list.arrows.size(); ++i) {
+    const List::Arrow& arrow = list.arrows[i];
     const Rgba& colour = arrow_colour(theme, arrow.kind);
-    const Vec2 tail = camera.to_pixels(arrow.tail), tip = camera.to_pixels(arrow.tail + arrow.vector);
+    const bool laid_out = layout.arrows.size() == list.arrows.size();
+    const Vec2 tail = laid_out ? layout.arrows[i].a : camera.to_pixels(arrow.tail);
+    const Vec2 tip = laid_out ? layout.arrows[i].b : camera.to_pixels(arrow.tail + arrow.vector);
     if (arrow.stretched)
       paint_stretched_arrow(cr, style, tail, tip, colour);
     else

@@ -33,6 +33,7 @@ struct ForceLayout {
   double scale_px = 0;
   std::vector<Rect> body_labels;    // the body names' boxes, fixed at the centres
   std::vector<PlacedLabel> labels;  // one per arrow long enough to carry one, and per torque
+  std::vector<Segment> arrows;      // each arrow's tail and tip in pixels as drawn (one along another's moved aside)
 };
 
 /// Where the legend and the labels go. Each label sits just past its arrow's head, or

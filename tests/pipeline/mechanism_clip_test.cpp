@@ -664,6 +664,53 @@ TEST(MechanismForces, EveryArrowCarriesItsLabelAndAShortOneIsDashedPastThePin) {
   }
 }
 
+// Issue 23 D2: with crank 2 along coupler 3, "O2 on 2" and "A on 3" on one line, end to
+// end, read as one arrow. As drawn, no arrow runs along another's line within two shaft
+// widths, overlapping or nearer than a head's length end to end (a joint's equal and
+// opposite pair from one point excepted).
+TEST(MechanismForces, NoTwoArrowsAreDrawnOnOneLine) {
+  const Theme theme = load_theme("light", {}, "theme");
+  std::size_t moved = 0;
+  for (const auto& [width, height] : {std::pair{1280, 720}, std::pair{854, 480}}) {
+    DrawStyle style;
+    style.theme = &theme;
+    style.u = DrawStyle::unit_for(width, height);
+    const cairo::SurfacePtr surface = cairo::image_surface(width, height);
+    const cairo::ContextPtr cr = cairo::context(surface.get());
+    const double gap = 1.9 * style.arrow_width(), apart = style.arrow_head_length();
+    for (const std::string& name : shipped_mechanism_names()) {
+      const sym::System system(load_mechanism(name));
+      const MechanismMotion motion = clip_motion(system, 4.0, 30);
+      MechanismScene scene(mechanism_geometry(system), motion, {}, 2.0, {});
+      const double scale = frame_camera(scene, 0, width, height).scale();
+      scene.set_shortest_arrow(shortest_labelled_arrow_px(style) / scale, stretched_arrow_px(style) / scale);
+      MechanismDrawList list;
+      for (std::size_t k = 0; k < motion.samples.size(); ++k) {
+        scene.frame(k, list);
+        const Camera camera = frame_camera(scene, k, width, height);
+        const ForceLayout layout = layout_forces(cr.get(), style, camera, list, width, height, {});
+        ASSERT_EQ(layout.arrows.size(), list.arrows.size());
+        for (std::size_t i = 0; i < list.arrows.size(); ++i) {
+          moved += (layout.arrows[i].a - camera.to_pixels(list.arrows[i].tail)).norm() > 1 ? 1 : 0;
+          for (std::size_t j = 0; j < i; ++j) {
+            const Segment &p = layout.arrows[j], &q = layout.arrows[i];
+            const Vec2 dp = p.b - p.a, dq = q.b - q.a;
+            if (dp.norm() < 1 || dq.norm() < 1 || (p.a - q.a).norm() < 1) continue;
+            const Vec2 d = dp.normalized(), n(-d.y(), d.x());
+            const bool parallel = std::fabs(d.x() * dq.normalized().y() - d.y() * dq.normalized().x()) < 0.1;
+            const bool near = std::fabs((q.a - p.a).dot(n)) < gap && std::fabs((q.b - p.a).dot(n)) < gap;
+            const double q0 = (q.a - p.a).dot(d), q1 = (q.b - p.a).dot(d);
+            const double shared = std::min(dp.norm(), std::max(q0, q1)) - std::max(0.0, std::min(q0, q1));
+            EXPECT_FALSE(parallel && near && shared > -apart) << name << " at " << width << " frame " << k << ": "
+                                                              << list.arrows[j].label << " / " << list.arrows[i].label;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(moved, 0U);  // the four-bar's crank lies along its coupler in some frames
+}
+
 TEST(MechanismForces, LabelsKeepClearOfEachOtherArrowsAndBodiesAndOnlyStubsGoUnlabelled) {
   constexpr int kWidth = 854, kHeight = 480;
   const Theme theme = load_theme("light", {}, "theme");
@@ -694,9 +741,8 @@ TEST(MechanismForces, LabelsKeepClearOfEachOtherArrowsAndBodiesAndOnlyStubsGoUnl
         const ForceLayout layout = layout_forces(cr.get(), style, camera, list, kWidth, kHeight, {title});
         const auto& labels = layout.labels;
         most = std::max(most, labels.size());
-        std::vector<Segment> arrows, bodies;
-        for (const MechanismDrawList::Arrow& arrow : list.arrows)
-          arrows.push_back({camera.to_pixels(arrow.tail), camera.to_pixels(arrow.tail + arrow.vector)});
+        ASSERT_EQ(layout.arrows.size(), list.arrows.size());
+        std::vector<Segment> arrows = layout.arrows, bodies;  // as drawn
         for (const MechanismDrawList::Outline& outline : list.outlines)
           for (std::size_t i = 0; outline.points.size() > 2 && i < outline.points.size(); ++i)
             bodies.push_back({camera.to_pixels(outline.points[i]),
@@ -714,9 +760,10 @@ TEST(MechanismForces, LabelsKeepClearOfEachOtherArrowsAndBodiesAndOnlyStubsGoUnl
         }
         // A label is left out only when its arrow is shorter than the label is high.
         std::size_t unlabelled = 0;
-        for (const MechanismDrawList::Arrow& arrow : list.arrows) {
+        for (std::size_t a = 0; a < list.arrows.size(); ++a) {
+          const MechanismDrawList::Arrow& arrow = list.arrows[a];
           const bool labelled = std::any_of(labels.begin(), labels.end(), [&](const PlacedLabel& l) {
-            return l.text == arrow.label && (l.head - camera.to_pixels(arrow.tail + arrow.vector)).norm() < 1e-9;
+            return l.text == arrow.label && (l.head - layout.arrows[a].b).norm() < 1e-9;
           });
           if (!labelled) {
             ++unlabelled;
