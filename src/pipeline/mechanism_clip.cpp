@@ -18,6 +18,7 @@
 #include "pipeline/panel_data.hpp"
 #include "render/cairo_util.hpp"
 #include "render/frame_layout.hpp"
+#include "render/mechanism_forces.hpp"
 #include "render/mechanism_painter.hpp"
 #include "render/scene_painter.hpp"
 #include "scene/mechanism_scene.hpp"
@@ -118,7 +119,8 @@ class MechanismFrames {
     const CameraMode mode = mechanism_camera_mode(settings_, scene_.geometry());
     follow_ = mode == CameraMode::follow;
     camera_ = mechanism_camera(scene_, settings_, mode);
-    scene_.set_shortest_arrow(least_visible_arrow_px(style_) / camera_.scale(),
+    // An arrow too short to carry its label is drawn dashed with its value, as the legend says.
+    scene_.set_shortest_arrow(shortest_labelled_arrow_px(style_) / camera_.scale(),
                               stretched_arrow_px(style_) / camera_.scale());
   }
 

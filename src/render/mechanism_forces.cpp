@@ -7,6 +7,7 @@
 
 #include "render/scene_painter.hpp"
 #include "render/text.hpp"
+#include "scene/arrow_scale.hpp"
 
 namespace linkage {
 namespace {
@@ -19,10 +20,16 @@ constexpr const char* kGravityName = "gravity";
 constexpr const char* kSpringName = "spring forces";
 constexpr const char* kVelocityName = "velocity";
 constexpr const char* kCutNote = "cut short: its label gives the value";
-constexpr const char* kStretchedNote = "dashed: too short to see at its scale, drawn longer; its label gives the value";
+// On two lines, so the legend stays narrow enough to fit beside a body.
+constexpr const char* kStretchedNote = "dashed: too short to see at its scale,";
+constexpr const char* kStretchedNote2 = "drawn longer; its label gives the value";
 
-text::Font label_font(const DrawStyle& style) { return {style.small_size(), false}; }
-text::Font body_font(const DrawStyle& style) { return {style.small_size(), true}; }
+// At the homework clip's sizes (its arrow tags, block names and legend), readable from
+// the back of a lecture hall.
+text::Font label_font(const DrawStyle& style) { return {style.text_size(), true}; }
+text::Font body_font(const DrawStyle& style) { return {style.block_label_size(), true}; }
+text::Font legend_font(const DrawStyle& style) { return {style.text_size(), false}; }
+constexpr double kLineHeight = 1.1;  // a label's height per font size, a little under any hinted one
 
 // A text's box centred on `at`, with room for its halo.
 Rect box_around(cairo_t* cr, const DrawStyle& style, const text::Font& font, const std::string& s, const Vec2& at) {
@@ -101,7 +108,7 @@ void paint_torque(cairo_t* cr, const DrawStyle& style, const Camera& camera, con
 Vec2 legend_rows(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List::Legend& legend, const Vec2& at,
                  bool paint) {
   const Theme& theme = *style.theme;
-  const text::Font font = label_font(style);
+  const text::Font font = legend_font(style);
   const text::Metrics m = text::metrics(cr, font);
   const double u = style.u, row = 1.7 * font.size;
   double names = 0;
@@ -138,7 +145,7 @@ Vec2 legend_rows(cairo_t* cr, const DrawStyle& style, const Camera& camera, cons
     widest = std::max(widest, names + 8 * u + arrow + 6 * u + text::width(cr, font, note.c_str()));
     y += row;
   };
-  const auto marked_row = [&](const char* note, bool cut) {
+  const auto marked_row = [&](const char* note, const char* more, bool cut) {
     const Vec2 tail(at.x(), y + 0.5 * row), tip(at.x() + 40 * u, y + 0.5 * row);
     if (paint) {
       if (cut) {
@@ -151,24 +158,142 @@ Vec2 legend_rows(cairo_t* cr, const DrawStyle& style, const Camera& camera, cons
     }
     widest = std::max(widest, 46 * u + text::width(cr, font, note));
     y += row;
+    if (more == nullptr) return;
+    y -= 0.35 * row;  // a continued line, closer than a new row
+    if (paint) text::draw(cr, font, tip.x() + 6 * u, baseline(), more, theme.text_muted);
+    widest = std::max(widest, 46 * u + text::width(cr, font, more));
+    y += row;
   };
   if (forces && legend.joint) scale_row(kJointName, theme.pin_force, legend.metres, legend.value, legend.joint_scale);
   if (forces && legend.applied)
     scale_row(kAppliedName, theme.velocity, legend.applied_metres, legend.applied_value, legend.applied_scale);
   for (const List::Legend::Row& r : legend.rows)
     scale_row(row_name(r.kind), arrow_colour(theme, r.kind), r.metres, r.value, r.scale);
-  if (legend.cut) marked_row(kCutNote, true);
-  if (legend.stretched) marked_row(kStretchedNote, false);
+  if (legend.cut) marked_row(kCutNote, nullptr, true);
+  if (legend.stretched) marked_row(kStretchedNote, kStretchedNote2, false);
   return {widest, y - at.y()};
 }
 
-Rect legend_rect(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List::Legend& legend, int height) {
-  if ((!(legend.metres > 0) || !(legend.joint || legend.applied)) && legend.rows.empty()) return {};
+// The area of a and b's intersection (zero when apart).
+double overlap_area(const Rect& a, const Rect& b) {
+  const double w = std::min(a.x + a.width, b.x + b.width) - std::max(a.x, b.x);
+  const double h = std::min(a.y + a.height, b.y + b.height) - std::max(a.y, b.y);
+  return w > 0 && h > 0 ? w * h : 0;
+}
+
+// What the legend must not cover, in pixels: each body's, arrow's, joint's and torque's box.
+std::vector<Rect> drawn_boxes(const DrawStyle& style, const Camera& camera, const List& list) {
+  std::vector<Rect> boxes;
+  const auto around = [&](const std::vector<Vec2>& points, double grow) {
+    Bounds b;
+    for (const Vec2& p : points) b.include(camera.to_pixels(p));
+    boxes.push_back(
+        {b.min.x() - grow, b.min.y() - grow, b.max.x() - b.min.x() + 2 * grow, b.max.y() - b.min.y() + 2 * grow});
+  };
+  for (const List::Outline& outline : list.outlines)
+    around(outline.points, outline.shape == Shape::point ? 1.6 * style.com_radius() : style.edge_width());
+  for (const List::Arrow& arrow : list.arrows)
+    around({arrow.tail, arrow.tail + arrow.vector}, style.arrow_head_length());
+  for (const List::Marker& marker : list.markers) around({marker.at}, 10 * style.u);
+  for (const List::Line& line : list.lines)
+    if (line.kind != List::Line::Kind::trail && !line.points.empty()) around(line.points, style.edge_width());
+  for (const List::Torque& torque : list.torques)
+    around({torque.centre - Vec2::Constant(torque.radius), torque.centre + Vec2::Constant(torque.radius)},
+           style.arrow_head_length());
+  return boxes;
+}
+
+// Whether q's shaft runs along p's line (parallel, within `gap` of it, overlapping or
+// less than `apart` from it end to end): the two read as one arrow. A joint's pair, equal
+// and opposite from one point, is the convention, not a clash.
+bool along_one_line(const Segment& p, const Segment& q, double gap, double apart) {
+  const Vec2 dp = p.b - p.a, dq = q.b - q.a;
+  if (dp.norm() < 1 || dq.norm() < 1 || (p.a - q.a).norm() < 1) return false;
+  const Vec2 d = dp.normalized(), n(-d.y(), d.x());
+  if (std::fabs(d.x() * dq.normalized().y() - d.y() * dq.normalized().x()) > 0.1) return false;
+  if (std::fabs((q.a - p.a).dot(n)) >= gap || std::fabs((q.b - p.a).dot(n)) >= gap) return false;
+  const double q0 = (q.a - p.a).dot(d), q1 = (q.b - p.a).dot(d);
+  return std::min(dp.norm(), std::max(q0, q1)) - std::max(0.0, std::min(q0, q1)) > -apart;
+}
+
+// The arrows in pixels as drawn: one along another's line (a crank's force along its
+// coupler's) moved aside, so each can be told from the other.
+std::vector<Segment> arrows_apart(const DrawStyle& style, const Camera& camera, const List& list) {
+  std::vector<Segment> arrows;
+  for (const List::Arrow& arrow : list.arrows)
+    arrows.push_back({camera.to_pixels(arrow.tail), camera.to_pixels(arrow.tail + arrow.vector)});
+  const double gap = 2 * style.arrow_width();
+  for (std::size_t j = 0; j < arrows.size(); ++j) {
+    for (std::size_t i = 0; i < j; ++i) {
+      if (!along_one_line(arrows[i], arrows[j], gap, style.arrow_head_length())) continue;
+      const Vec2 d = (arrows[i].b - arrows[i].a).normalized(), n(-d.y(), d.x());
+      const double off = (0.5 * (arrows[j].a + arrows[j].b) - arrows[i].a).dot(n);
+      const Vec2 shift = ((off >= 0 ? 1.0 : -1.0) * gap - off) * n;
+      arrows[j].a += shift;
+      arrows[j].b += shift;
+    }
+  }
+  return arrows;
+}
+
+// A w x h box where it covers least of `drawn` (and none of `taken`): bottom left when
+// clear, else another corner or a place along the frame's edge, below the title and time.
+Rect clear_place(const DrawStyle& style, double w, double h, int width, int height, const std::vector<Rect>& occupied,
+                 const std::vector<Rect>& drawn, const std::vector<Rect>& taken) {
+  const double pad = 8 * style.u;
+  const double left = std::floor(style.padding()), right = std::floor(width - style.padding() - w);
+  const double bottom = std::floor(height - style.padding() - h);
+  const auto below_occupied = [&](double x) {
+    double top = style.padding();
+    for (const Rect& r : occupied)
+      if (overlap_area({x, 0, w, static_cast<double>(height)}, r) > 0) top = std::max(top, r.y + r.height + pad);
+    return std::ceil(top);
+  };
+  // The corners first, then along the edges: a wide swing can fill every corner in turn.
+  std::vector<Rect> places{Rect{left, bottom, w, h}, Rect{right, bottom, w, h}, Rect{left, below_occupied(left), w, h},
+                           Rect{right, below_occupied(right), w, h}};
+  constexpr int kSteps = 16;
+  for (int k = 1; k < kSteps; ++k) {
+    const double x = std::floor(left + (right - left) * k / kSteps);
+    places.push_back({x, bottom, w, h});
+    places.push_back({x, below_occupied(x), w, h});
+  }
+  for (const double x : {left, right}) {
+    const double top = below_occupied(x);
+    for (int k = 1; k < kSteps; ++k) places.push_back({x, std::floor(top + (bottom - top) * k / kSteps), w, h});
+  }
+  Rect best = places.front();
+  double least = -1;
+  for (const Rect& place : places) {
+    const Rect grown{place.x - pad, place.y - pad, place.width + 2 * pad, place.height + 2 * pad};
+    if (std::any_of(taken.begin(), taken.end(), [&](const Rect& t) { return overlap_area(grown, t) > 0; })) continue;
+    double covered = 0;
+    for (const Rect& box : drawn) covered += overlap_area(place, box);
+    if (least < 0 || covered < least) {
+      least = covered;
+      best = place;
+    }
+    if (covered == 0) break;
+  }
+  return best;
+}
+
+// The legend, and a scale bar to read its "1 cm" off (the grid's spacing, as the
+// homework's), each where it covers nothing drawn.
+void place_legend(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List& list, int width, int height,
+                  const std::vector<Rect>& occupied, ForceLayout& layout) {
+  const List::Legend& legend = list.legend;
+  if ((!(legend.metres > 0) || !(legend.joint || legend.applied)) && legend.rows.empty()) return;
   const double pad = 8 * style.u;
   const Vec2 content = legend_rows(cr, style, camera, legend, Vec2::Zero(), false);
-  const double h = content.y() + 2 * 0.6 * pad;
-  return {std::floor(style.padding()), std::floor(height - style.padding() - h), std::ceil(content.x() + 2 * pad),
-          std::ceil(h)};
+  const double w = std::ceil(content.x() + 2 * pad), h = std::ceil(content.y() + 2 * 0.6 * pad);
+  const std::vector<Rect> drawn = drawn_boxes(style, camera, list);
+  layout.legend = clear_place(style, w, h, width, height, occupied, drawn, {});
+  const RoundLength spacing = grid_spacing_for(camera, width, height);
+  layout.scale_label = describe_length(spacing.mantissa, spacing.exponent);
+  layout.scale_px = spacing.metres() * camera.scale();
+  const Rect bar = scale_bar_rect(cr, style, layout.scale_label, layout.scale_px, width, height);
+  layout.scale_bar = clear_place(style, bar.width, bar.height, width, height, occupied, drawn, {layout.legend});
 }
 
 void paint_legend(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List::Legend& legend,
@@ -191,18 +316,19 @@ void paint_legend(cairo_t* cr, const DrawStyle& style, const Camera& camera, con
 ForceLayout layout_forces(cairo_t* cr, const DrawStyle& style, const Camera& camera, const MechanismDrawList& list,
                           int width, int height, const std::vector<Rect>& occupied) {
   ForceLayout layout;
-  if (list.shown.has(Element::legend)) layout.legend = legend_rect(cr, style, camera, list.legend, height);
+  if (list.shown.has(Element::legend)) place_legend(cr, style, camera, list, width, height, occupied, layout);
   Obstacles obstacles;
   obstacles.boxes = occupied;
   if (!layout.legend.empty()) obstacles.boxes.push_back(layout.legend);
+  if (!layout.scale_bar.empty()) obstacles.boxes.push_back(layout.scale_bar);
   for (const List::Marker& marker : list.markers) {
     const double r = (marker.kind == List::Marker::Kind::guide ? 9.0 : 5.0) * style.u;
     const Vec2 at = camera.to_pixels(marker.at);
     obstacles.boxes.push_back({at.x() - r, at.y() - r, 2 * r, 2 * r});
   }
   const std::size_t markers = obstacles.boxes.size();
-  for (const List::Arrow& arrow : list.arrows)
-    obstacles.segments.push_back({camera.to_pixels(arrow.tail), camera.to_pixels(arrow.tail + arrow.vector)});
+  layout.arrows = arrows_apart(style, camera, list);
+  for (const Segment& arrow : layout.arrows) obstacles.segments.push_back(arrow);
   for (std::size_t i = 0; i < list.labels.size(); ++i) {
     const List::Label& label = list.labels[i];
     const auto on_a_joint = [&](const Rect& b) {
@@ -263,9 +389,10 @@ ForceLayout layout_forces(cairo_t* cr, const DrawStyle& style, const Camera& cam
     obstacles.boxes.push_back(placed.box);
     layout.labels.push_back(std::move(placed));
   };
-  const double tall = text::metrics(cr, font).ascent + text::metrics(cr, font).descent + 3 * style.u;
-  for (const List::Arrow& arrow : list.arrows) {
-    const Vec2 tail = camera.to_pixels(arrow.tail), tip = camera.to_pixels(arrow.tail + arrow.vector);
+  const double tall = shortest_labelled_arrow_px(style);
+  for (std::size_t i = 0; i < list.arrows.size(); ++i) {
+    const List::Arrow& arrow = list.arrows[i];
+    const Vec2 tail = layout.arrows[i].a, tip = layout.arrows[i].b;
     // A stub too short to say whose it is goes unlabelled; an applied load never does.
     if (arrow.kind != List::Arrow::Kind::applied && (tip - tail).norm() < tall) continue;
     const Vec2 along = tip - tail;
@@ -279,6 +406,12 @@ ForceLayout layout_forces(cairo_t* cr, const DrawStyle& style, const Camera& cam
     add(torque.label, head, Vec2(out.x(), -out.y()), List::Arrow::Kind::applied);
   }
   return layout;
+}
+
+double shortest_labelled_arrow_px(const DrawStyle& style) {
+  // From the nominal size, not the hinted metrics (not proportional at small sizes), so
+  // every quality preset labels the same arrows.
+  return kLineHeight * label_font(style).size + 3 * style.u;
 }
 
 const Rgba& arrow_colour(const Theme& theme, MechanismDrawList::Arrow::Kind kind) {
@@ -301,9 +434,12 @@ void paint_forces(cairo_t* cr, const DrawStyle& style, const Camera& camera, con
                   const ForceLayout& layout) {
   const Theme& theme = *style.theme;
   for (const List::Torque& torque : list.torques) paint_torque(cr, style, camera, torque);
-  for (const List::Arrow& arrow : list.arrows) {
+  for (std::size_t i = 0; i < list.arrows.size(); ++i) {
+    const List::Arrow& arrow = list.arrows[i];
     const Rgba& colour = arrow_colour(theme, arrow.kind);
-    const Vec2 tail = camera.to_pixels(arrow.tail), tip = camera.to_pixels(arrow.tail + arrow.vector);
+    const bool laid_out = layout.arrows.size() == list.arrows.size();
+    const Vec2 tail = laid_out ? layout.arrows[i].a : camera.to_pixels(arrow.tail);
+    const Vec2 tip = laid_out ? layout.arrows[i].b : camera.to_pixels(arrow.tail + arrow.vector);
     if (arrow.stretched)
       paint_stretched_arrow(cr, style, tail, tip, colour);
     else
@@ -328,6 +464,7 @@ void paint_forces(cairo_t* cr, const DrawStyle& style, const Camera& camera, con
     text::draw_centred_with_halo(cr, font, at.x(), at.y(), label.text.c_str(), colour, theme.background, 2.5 * style.u);
   }
   paint_legend(cr, style, camera, list.legend, layout.legend);
+  if (!layout.scale_bar.empty()) paint_scale_bar(cr, style, layout.scale_label, layout.scale_px, layout.scale_bar);
 }
 
 }  // namespace linkage

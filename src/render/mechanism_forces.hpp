@@ -27,9 +27,13 @@ struct PlacedLabel {
 };
 
 struct ForceLayout {
-  Rect legend;                      // bottom left; empty without force arrows
+  Rect legend;              // where it covers nothing drawn; empty without force arrows
+  Rect scale_bar;           // beside the legend: what its "1 cm" measures against
+  std::string scale_label;  // the bar's length, "10 cm"
+  double scale_px = 0;
   std::vector<Rect> body_labels;    // the body names' boxes, fixed at the centres
   std::vector<PlacedLabel> labels;  // one per arrow long enough to carry one, and per torque
+  std::vector<Segment> arrows;      // each arrow's tail and tip in pixels as drawn (one along another's moved aside)
 };
 
 /// Where the legend and the labels go. Each label sits just past its arrow's head, or
@@ -40,6 +44,10 @@ struct ForceLayout {
 [[nodiscard]] ForceLayout layout_forces(cairo_t* cr, const DrawStyle& style, const Camera& camera,
                                         const MechanismDrawList& list, int width, int height,
                                         const std::vector<Rect>& occupied);
+
+/// The shortest arrow that carries its label (pixels): the scene draws a shorter joint
+/// force stretched (dashed) to stretched_arrow_px, its label giving the value.
+[[nodiscard]] double shortest_labelled_arrow_px(const DrawStyle& style);
 
 /// The colour of an arrow of `kind`.
 [[nodiscard]] const Rgba& arrow_colour(const Theme& theme, MechanismDrawList::Arrow::Kind kind);

@@ -108,13 +108,16 @@ void paint_bodies(cairo_t* cr, const DrawStyle& style, const Camera& camera, con
     return (b.max - b.min).squaredNorm();
   };
   std::stable_sort(order.begin(), order.end(), [&](const auto* a, const auto* b) { return size(a) > size(b); });
+  // Every fill, then every outline: a body under another (a crank along its coupler)
+  // keeps its edge in sight over the fill of the one above it.
   for (const List::Outline* drawn : order) {
-    const List::Outline& outline = *drawn;
-    const std::size_t colour = outline.body % 2;
-    outline_path(cr, style, camera, outline);
-    set_colour(cr, theme.block_fill[colour]);
-    cairo_fill_preserve(cr);
-    set_colour(cr, theme.block_edge[colour]);
+    outline_path(cr, style, camera, *drawn);
+    set_colour(cr, theme.block_fill[drawn->body % 2]);
+    cairo_fill(cr);
+  }
+  for (const List::Outline* drawn : order) {
+    outline_path(cr, style, camera, *drawn);
+    set_colour(cr, theme.block_edge[drawn->body % 2]);
     cairo_stroke(cr);
   }
 }
@@ -215,7 +218,7 @@ void paint_markers(cairo_t* cr, const DrawStyle& style, const Camera& camera, co
 
 // The body names where the layout put them (at the centres, or beside a joint there).
 void paint_body_labels(cairo_t* cr, const DrawStyle& style, const List& list, const ForceLayout& layout) {
-  const text::Font font{style.small_size(), true};
+  const text::Font font{style.block_label_size(), true};  // as mechanism_forces' layout sized them
   for (std::size_t i = 0; i < list.labels.size() && i < layout.body_labels.size(); ++i) {
     const Rect& box = layout.body_labels[i];
     text::draw_centred_with_halo(cr, font, box.x + 0.5 * box.width, box.y + 0.5 * box.height,

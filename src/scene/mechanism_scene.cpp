@@ -678,6 +678,25 @@ void MechanismScene::add_trails(std::size_t k, MechanismDrawList& out) const {
   }
 }
 
+namespace {
+
+// The clip's legend cut down to what this frame draws: a row per arrow kind present, and
+// the cut and dashed notes only when such an arrow is in the frame.
+void legend_for_frame(MechanismDrawList& out) {
+  using Kind = MechanismDrawList::Arrow::Kind;
+  MechanismDrawList::Legend& legend = out.legend;
+  const auto present = [&](Kind kind) {
+    return std::any_of(out.arrows.begin(), out.arrows.end(), [&](const auto& a) { return a.kind == kind; });
+  };
+  legend.joint = legend.joint && present(Kind::joint);
+  legend.applied = legend.applied && (present(Kind::applied) || !out.torques.empty());
+  std::erase_if(legend.rows, [&](const MechanismDrawList::Legend::Row& row) { return !present(row.kind); });
+  legend.cut = std::any_of(out.arrows.begin(), out.arrows.end(), [](const auto& a) { return a.cut; });
+  legend.stretched = std::any_of(out.arrows.begin(), out.arrows.end(), [](const auto& a) { return a.stretched; });
+}
+
+}  // namespace
+
 void MechanismScene::frame(std::size_t k, MechanismDrawList& out) const {
   out.clear();
   out.legend = legend_;
@@ -740,7 +759,43 @@ void MechanismScene::frame(std::size_t k, MechanismDrawList& out) const {
   add_load_arrows(k, out);
   add_trails(k, out);
   if (free_body_) pull_apart(k, out);
+  legend_for_frame(out);
 }
+
+namespace {
+
+// A slider's rail fixed to the body carrying it, as a drawing shows one: along the
+// guided body's underside (not through its centre) and past its ends over the whole
+// travel (not just its centre's), the guide where the body meets it; the ground's
+// support at the rail's end when the slider is its only joint there (not inside the cart).
+void rail_under_body(const std::vector<MechanismGeometry::JointShape>& joints, std::size_t j,
+                     MechanismDrawList::Line& rail, MechanismDrawList::Marker& guide, MechanismDrawList& out) {
+  const MechanismGeometry::JointShape& joint = joints[j];
+  const auto body = std::find_if(out.outlines.begin(), out.outlines.end(),
+                                 [&](const auto& o) { return static_cast<int>(o.body) == joint.points[1].body; });
+  if (body == out.outlines.end() || rail.points.size() != 2) return;
+  const Vec2 start = rail.points[0], end = rail.points[1];
+  if ((end - start).norm() <= 0) return;
+  const Vec2 along = (end - start).normalized(), across(-along.y(), along.x());
+  double first = 0, last = 0, under = 0;
+  for (const Vec2& p : body->points) {
+    first = std::min(first, (p - guide.at).dot(along));
+    last = std::max(last, (p - guide.at).dot(along));
+    under = std::min(under, (p - guide.at).dot(across));
+  }
+  rail.points = {start + first * along + under * across, end + last * along + under * across};
+  guide.at += under * across;
+  if (joint.points[0].body >= 0) return;
+  // The ground's support moves to the rail's start unless another joint also uses that point.
+  const Vec2 anchor = joint.points[0].local;
+  for (std::size_t other = 0; other < joints.size(); ++other)
+    for (const BodyPoint& p : joints[other].points)
+      if (other != j && p.body < 0 && (p.local - anchor).norm() < 1e-12) return;
+  for (MechanismDrawList::Marker& m : out.markers)
+    if (m.kind == MechanismDrawList::Marker::Kind::ground && (m.at - anchor).norm() < 1e-12) m.at = rail.points[0];
+}
+
+}  // namespace
 
 void MechanismScene::place_joints(const std::vector<double>& pose, std::size_t first_marker, std::size_t first_line,
                                   MechanismDrawList& out) const {
@@ -757,7 +812,10 @@ void MechanismScene::place_joints(const std::vector<double>& pose, std::size_t f
     const auto& points = geometry_.joints[j].points;
     MechanismDrawList::Marker& marker = out.markers[m];
     const bool guide = marker.kind == MechanismDrawList::Marker::Kind::guide;
-    if (guide) out.lines[l++].body = points[0].body;
+    if (guide) {
+      out.lines[l].body = points[0].body;
+      rail_under_body(geometry_.joints, j, out.lines[l++], marker, out);
+    }
     marker.body = points[guide ? 1 : 0].body;
     if (!free_body_ || guide) continue;
     if (points[0].body < 0) {
