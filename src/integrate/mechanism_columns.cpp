@@ -94,6 +94,10 @@ std::vector<MechanismColumn> mechanism_columns(const sym::System& system) {
   return out;
 }
 
+// Past this many characters the list of valid columns is shortened (a long chain has
+// thousands); an error stays one readable line.
+constexpr std::size_t kLongestValidList = 400;
+
 MechanismColumn find_mechanism_column(const std::vector<MechanismColumn>& all, const std::string& name,
                                       const std::string& origin, bool groups) {
   std::vector<std::string> names;
@@ -110,8 +114,21 @@ MechanismColumn find_mechanism_column(const std::vector<MechanismColumn>& all, c
       nearest = c.name;
     }
   }
-  throw Error::input(origin + ": unknown column '" + name + "'; nearest '" + nearest +
-                     "'; valid: " + join_names(names));
+  std::string valid = join_names(names);
+  if (valid.size() > kLongestValidList) {
+    // A large mechanism has hundreds of columns: the nearest one's body, point or joint
+    // and the columns of none, and how to see the rest, keep the error to one short line.
+    const std::string near_owner = nearest.substr(0, nearest.rfind('.') + 1);
+    std::vector<std::string> some;
+    if (groups) some = {"default", "all"};
+    for (const MechanismColumn& c : all)
+      if (c.name.find('.') == std::string::npos || (!near_owner.empty() && c.name.rfind(near_owner, 0) == 0 &&
+                                                    c.name.find('.', near_owner.size()) == std::string::npos))
+        some.push_back(c.name);
+    valid = join_names(some) + " and " + std::to_string(all.size() + (groups ? 2 : 0) - some.size()) +
+            " more (the columns of every body, point and joint; 'all' selects every one)";
+  }
+  throw Error::input(origin + ": unknown column '" + name + "'; nearest '" + nearest + "'; valid: " + valid);
 }
 
 std::vector<MechanismColumn> select_mechanism_columns(const std::vector<MechanismColumn>& all,
