@@ -119,12 +119,17 @@ class Builder {
   [[nodiscard]] Parts finish(const std::vector<Index>& outputs) const;
 
  private:
-  struct Signed {
-    Index node;
-    bool negative;
-  };
-
+  // Every node is the value of an expression's canonical orientation (shape()): e itself,
+  // or -e when its shape says negated; callers apply the sign.
   Index value(const GiNaC::ex& e) {
+    const Index node = magnitude(e);
+    if (!shape(e).negated) return node;
+    // -2 x y: x y times the constant -2, not a negation after the product.
+    if (GiNaC::is_a<GiNaC::mul>(e) && sym::in_double_range(e).is_equal(e)) return product(e, true);
+    return emit(Op::neg, node);
+  }
+
+  Index magnitude(const GiNaC::ex& e) {
     if (const auto it = cache_.find(e); it != cache_.end()) return it->second;
     // One output can take seconds (a long chain's kinetic energy, sums nested per link).
     throw_if_interrupted();
@@ -141,7 +146,10 @@ class Builder {
                                     " is not among the inputs (" + input_list() + ")");
       return it->second;
     }
-    if (GiNaC::is_a<GiNaC::numeric>(e)) return number(GiNaC::ex_to<GiNaC::numeric>(e), e);
+    if (GiNaC::is_a<GiNaC::numeric>(e)) {
+      const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(e);
+      return number(n.is_real() ? GiNaC::abs(n) : n, e);
+    }
     if (GiNaC::is_a<GiNaC::constant>(e)) {
       const GiNaC::ex v = e.evalf();
       if (!GiNaC::is_a<GiNaC::numeric>(v)) fail(e, "a constant without a numeric value");
@@ -150,7 +158,9 @@ class Builder {
     if (GiNaC::is_a<GiNaC::add>(e)) return sum(e);
     if (GiNaC::is_a<GiNaC::mul>(e)) {
       const GiNaC::ex distributed = sym::in_double_range(e);
-      return distributed.is_equal(e) ? product(e) : value(distributed);
+      if (distributed.is_equal(e)) return product(e);
+      const Index node = magnitude(distributed);
+      return shape(distributed).negated == shape(e).negated ? node : emit(Op::neg, node);
     }
     if (GiNaC::is_a<GiNaC::power>(e)) return power(e.op(0), e.op(1));
     if (GiNaC::is_a<GiNaC::function>(e)) return function(e);
@@ -200,68 +210,106 @@ class Builder {
   // as soon as it is computed, so few temporaries are live at once.
   Index accumulate(Op op, std::optional<Index> acc, Index operand) { return acc ? emit(op, *acc, operand) : operand; }
 
-  // A term of a sum as its magnitude and sign, so the sum subtracts instead of negating.
-  Signed signed_value(const GiNaC::ex& e) {
-    if (GiNaC::is_a<GiNaC::numeric>(e) && GiNaC::ex_to<GiNaC::numeric>(e).is_negative()) return {value(-e), true};
-    if (GiNaC::is_a<GiNaC::mul>(e) && has_negative_coefficient(e)) return {value(-e), true};
-    return {value(e), false};
-  }
-
-  static bool has_negative_coefficient(const GiNaC::ex& product) {
-    for (std::size_t k = 0; k < product.nops(); ++k)
-      if (GiNaC::is_a<GiNaC::numeric>(product.op(k)) && GiNaC::ex_to<GiNaC::numeric>(product.op(k)).is_negative())
-        return true;
-    return false;
-  }
-
   // GiNaC orders the terms of sums and products by hash values that change from run to
-  // run (they involve addresses), so operands are walked in an order of their own
-  // structure: the same inputs then give the same program and the same bits every run.
-  std::uint64_t stable_hash(const GiNaC::ex& e) {
-    if (const auto it = stable_.find(e); it != stable_.end()) return it->second;
-    const auto mix = [](std::uint64_t h, std::uint64_t v) {
-      h ^= v + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
-      return h * 0x100000001b3ULL;
-    };
-    const auto text = [&](std::uint64_t h, const std::string& t) {
-      for (const char c : t) h = mix(h, static_cast<unsigned char>(c));
-      return h;
-    };
-    std::uint64_t h = 0xcbf29ce484222325ULL;
-    if (GiNaC::is_a<GiNaC::symbol>(e)) {
-      h = text(mix(h, 1), GiNaC::ex_to<GiNaC::symbol>(e).get_name());
-    } else if (GiNaC::is_a<GiNaC::numeric>(e) || e.nops() == 0) {
-      h = text(mix(h, 2), printed(e));
-    } else if (GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e)) {
-      std::vector<std::uint64_t> parts;
-      for (std::size_t k = 0; k < e.nops(); ++k) parts.push_back(stable_hash(e.op(k)));
-      std::sort(parts.begin(), parts.end());  // a sum is a set of terms: order-free
-      h = mix(h, GiNaC::is_a<GiNaC::add>(e) ? 3 : 4);
-      for (const std::uint64_t part : parts) h = mix(h, part);
-    } else {
-      h = GiNaC::is_a<GiNaC::function>(e) ? text(mix(h, 5), GiNaC::ex_to<GiNaC::function>(e).get_name()) : mix(h, 6);
-      for (std::size_t k = 0; k < e.nops(); ++k) h = mix(h, stable_hash(e.op(k)));
-    }
-    stable_.emplace(e, h);
+  // run (they involve addresses), and it makes the first term of a sum positive where the
+  // sum is a factor or a base ((a - b)^2 may come as (b - a)^2): so operands are walked in
+  // an order of their own structure, and each sum is computed in an orientation of its
+  // own. The same inputs then give the same program and the same bits every run.
+  struct Shape {
+    std::uint64_t hash = 0;  // of the canonical orientation
+    bool negated = false;    // the expression is minus its canonical orientation
+  };
+
+  static std::uint64_t mix(std::uint64_t h, std::uint64_t v) {
+    h ^= v + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+    return h * 0x100000001b3ULL;
+  }
+  static std::uint64_t mix_text(std::uint64_t h, const std::string& t) {
+    for (const char c : t) h = mix(h, static_cast<unsigned char>(c));
     return h;
   }
 
-  std::vector<GiNaC::ex> ordered_operands(const GiNaC::ex& e) {
-    // Ties keep GiNaC's order through the index: std::sort, as std::stable_sort's temporary
-    // buffer trips AddressSanitizer's alloc-dealloc check with GCC 12's libstdc++.
-    std::vector<std::pair<std::uint64_t, std::size_t>> keyed;
-    for (std::size_t k = 0; k < e.nops(); ++k) keyed.emplace_back(stable_hash(e.op(k)), k);
-    std::sort(keyed.begin(), keyed.end());
-    std::vector<GiNaC::ex> out;
-    for (const auto& [key, k] : keyed) out.push_back(e.op(k));
+  Shape shape(const GiNaC::ex& e) {
+    if (const auto it = shapes_.find(e); it != shapes_.end()) return it->second;
+    constexpr std::uint64_t seed = 0xcbf29ce484222325ULL;
+    Shape out;
+    if (GiNaC::is_a<GiNaC::symbol>(e)) {
+      out.hash = mix_text(mix(seed, 1), GiNaC::ex_to<GiNaC::symbol>(e).get_name());
+    } else if (GiNaC::is_a<GiNaC::numeric>(e)) {
+      const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(e);
+      out = {mix_text(mix(seed, 2), printed(GiNaC::abs(n))), n.is_real() && n.is_negative()};
+    } else if (e.nops() == 0) {
+      out.hash = mix_text(mix(seed, 2), printed(e));
+    } else if (GiNaC::is_a<GiNaC::add>(e)) {
+      // A sum is a set of signed terms; of it and its negation, the smaller set is canonical.
+      std::vector<std::pair<std::uint64_t, bool>> as_is, flipped;
+      for (std::size_t k = 0; k < e.nops(); ++k) {
+        const Shape t = shape(e.op(k));
+        as_is.emplace_back(t.hash, t.negated);
+        flipped.emplace_back(t.hash, !t.negated);
+      }
+      std::sort(as_is.begin(), as_is.end());
+      std::sort(flipped.begin(), flipped.end());
+      out.negated = flipped < as_is;
+      out.hash = mix(seed, 3);
+      for (const auto& [h, negative] : out.negated ? flipped : as_is) out.hash = mix(mix(out.hash, h), negative);
+    } else if (GiNaC::is_a<GiNaC::mul>(e)) {
+      std::vector<std::uint64_t> parts;
+      for (std::size_t k = 0; k < e.nops(); ++k) {
+        const Shape f = shape(e.op(k));
+        out.negated = out.negated != f.negated;
+        // -x is x times the coefficient -1: a coefficient of magnitude 1 is only a sign.
+        const bool unit =
+            GiNaC::is_a<GiNaC::numeric>(e.op(k)) && GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(e.op(k))) == 1;
+        if (!unit) parts.push_back(f.hash);
+      }
+      std::sort(parts.begin(), parts.end());  // a product is a set of factors: order-free
+      out.hash = mix(seed, 4);
+      for (const std::uint64_t part : parts) out.hash = mix(out.hash, part);
+      if (parts.size() == 1) out.hash = parts.front();  // -x has x's shape
+    } else if (GiNaC::is_a<GiNaC::power>(e)) {
+      const Shape base = shape(e.op(0)), exponent = shape(e.op(1));
+      if (is_integer(e.op(1))) {  // (-b)^k = (-1)^k b^k
+        out.negated = base.negated && !GiNaC::ex_to<GiNaC::numeric>(e.op(1)).is_even();
+        out.hash = mix(mix(mix(seed, 6), base.hash), mix(exponent.hash, exponent.negated));
+      } else {
+        out.hash = mix(mix(mix(mix(seed, 7), base.hash), base.negated), mix(exponent.hash, exponent.negated));
+      }
+    } else {
+      out.hash = GiNaC::is_a<GiNaC::function>(e) ? mix_text(mix(seed, 5), GiNaC::ex_to<GiNaC::function>(e).get_name())
+                                                 : mix(seed, 8);
+      for (std::size_t k = 0; k < e.nops(); ++k) {
+        const Shape a = shape(e.op(k));
+        out.hash = mix(mix(out.hash, a.hash), a.negated);
+      }
+    }
+    shapes_.emplace(e, out);
     return out;
   }
 
+  static bool is_integer(const GiNaC::ex& e) {
+    return GiNaC::is_a<GiNaC::numeric>(e) && GiNaC::ex_to<GiNaC::numeric>(e).is_integer();
+  }
+
+  struct Signed {
+    Index node;
+    bool negative;
+  };
+
+  // The canonical orientation of a sum: its terms by their shapes, each as a magnitude
+  // and a sign, so the sum subtracts instead of negating.
   Index sum(const GiNaC::ex& e) {
+    const bool flip = shape(e).negated;
+    std::vector<std::tuple<std::uint64_t, bool, std::size_t>> keyed;
+    for (std::size_t k = 0; k < e.nops(); ++k) {
+      const Shape t = shape(e.op(k));
+      keyed.emplace_back(t.hash, t.negated != flip, k);
+    }
+    std::sort(keyed.begin(), keyed.end());
     std::optional<Index> acc;
     std::vector<Index> leading_negatives;  // subtracted once a positive term starts the sum
-    for (const GiNaC::ex& operand : ordered_operands(e)) {
-      const Signed term = signed_value(operand);
+    for (const auto& [hash, negative, k] : keyed) {
+      const Signed term{magnitude(e.op(k)), negative};
       if (acc)
         acc = emit(term.negative ? Op::sub : Op::add, *acc, term.node);
       else if (term.negative)
@@ -270,9 +318,9 @@ class Builder {
         acc = term.node;
     }
     if (!acc) {
-      std::optional<Index> magnitude;
-      for (const Index t : leading_negatives) magnitude = accumulate(Op::add, magnitude, t);
-      return emit(Op::neg, *magnitude);
+      std::optional<Index> total;
+      for (const Index t : leading_negatives) total = accumulate(Op::add, total, t);
+      return emit(Op::neg, *total);
     }
     for (const Index t : leading_negatives) acc = emit(Op::sub, *acc, t);
     return *acc;
@@ -282,17 +330,23 @@ class Builder {
   // order they were first computed, so products of the same early factors (parameters,
   // m D) share their prefix; the coefficient comes last, so 2 m D and -m D share m D, and
   // a negative one is a negative constant, not a negation.
-  Index product(const GiNaC::ex& e) {
+  Index product(const GiNaC::ex& e, bool negative = false) {
+    // The canonical orientation: the coefficient's magnitude times each factor's own.
+    std::vector<std::pair<std::uint64_t, std::size_t>> keyed;
+    for (std::size_t k = 0; k < e.nops(); ++k) keyed.emplace_back(shape(e.op(k)).hash, k);
+    std::sort(keyed.begin(), keyed.end());
     GiNaC::numeric coefficient = 1;
     std::vector<Index> numerator, denominator;
-    for (const GiNaC::ex& f : ordered_operands(e)) {
+    for (const auto& [hash, k] : keyed) {
+      const GiNaC::ex f = e.op(k);
       if (GiNaC::is_a<GiNaC::numeric>(f)) {
-        coefficient *= GiNaC::ex_to<GiNaC::numeric>(f);
+        const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(f);
+        coefficient *= n.is_real() ? GiNaC::abs(n) : n;
       } else if (GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<GiNaC::numeric>(f.op(1)) &&
                  GiNaC::ex_to<GiNaC::numeric>(f.op(1)).is_negative()) {
         denominator.push_back(power(f.op(0), -f.op(1)));
       } else {
-        numerator.push_back(value(f));
+        numerator.push_back(magnitude(f));
       }
     }
     const auto chain = [this](std::vector<Index>& factors) {
@@ -301,6 +355,7 @@ class Builder {
       for (const Index f : factors) acc = accumulate(Op::mul, acc, f);
       return *acc;
     };
+    if (negative) coefficient = -coefficient;
     if (numerator.empty()) return emit(Op::div, number(coefficient, e), chain(denominator));
     Index result = chain(numerator);
     if (!denominator.empty()) result = emit(Op::div, result, chain(denominator));
@@ -309,19 +364,23 @@ class Builder {
     return emit(Op::mul, result, number(coefficient, e));
   }
 
+  // The canonical orientation of base^exponent: an integer power of the base's own (the
+  // sign is shape()'s), any other power of the base's value.
   Index power(const GiNaC::ex& base, const GiNaC::ex& exponent) {
     if (GiNaC::is_a<GiNaC::numeric>(exponent)) {
       const GiNaC::numeric& k = GiNaC::ex_to<GiNaC::numeric>(exponent);
       const bool negative = k.is_negative();
-      const GiNaC::numeric magnitude = GiNaC::abs(k);
+      const GiNaC::numeric size = GiNaC::abs(k);
       std::optional<Index> positive;
-      if (k.is_integer() && magnitude <= kMaxMultipliedPower) {
-        positive = integer_power(value(base), magnitude.to_long());
-      } else if (k.is_rational() && k.denom() == 2 && magnitude <= kMaxMultipliedPower) {
+      if (k.is_integer() && size <= kMaxMultipliedPower) {
+        positive = integer_power(magnitude(base), size.to_long());
+      } else if (k.is_integer()) {
+        positive = emit(Op::pow, magnitude(base), constant(sym::to_double(size)));
+      } else if (k.is_rational() && k.denom() == 2 && size <= kMaxMultipliedPower) {
         // x^(p/2) = x^((p-1)/2) sqrt(x)
         const Index b = value(base);
         const Index root = emit(Op::sqrt, b);
-        const long whole = (magnitude.numer().to_long() - 1) / 2;
+        const long whole = (size.numer().to_long() - 1) / 2;
         positive = whole == 0 ? root : emit(Op::mul, integer_power(b, whole), root);
       }
       if (positive) return negative ? emit(Op::div, constant(1.0), *positive) : *positive;
@@ -353,7 +412,7 @@ class Builder {
   std::vector<std::string> names_;
   std::map<GiNaC::ex, Index, GiNaC::ex_is_less> inputs_;
   GiNaC::exhashmap<Index> cache_;
-  GiNaC::exhashmap<std::uint64_t> stable_;
+  GiNaC::exhashmap<Shape> shapes_;
   // Looked up once per operation emitted: hashed, as a long chain's case emits 10^5 of them.
   struct KeyHash {
     std::size_t operator()(const std::tuple<Op, Index, Index>& k) const noexcept {
