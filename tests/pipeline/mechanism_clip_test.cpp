@@ -387,15 +387,21 @@ struct LaidOutFrame {
   const ForceLayout& layout;
 };
 
+// The drawing style of a frame `width` x `height` in `theme`.
+DrawStyle style_at(const Theme& theme, int width, int height) {
+  DrawStyle style;
+  style.theme = &theme;
+  style.u = DrawStyle::unit_for(width, height);
+  return style;
+}
+
 // Every `stride`th frame of each mechanism in `names`, at 1280x720 and at --quality
 // low's 854x480, laid out under a title box.
 void for_each_laid_out_frame(const std::vector<std::string>& names, std::size_t stride,
                              const std::function<void(const LaidOutFrame&)>& check) {
   const Theme theme = load_theme("light", {}, "theme");
   for (const auto& [width, height] : {std::pair{1280, 720}, std::pair{854, 480}}) {
-    DrawStyle style;
-    style.theme = &theme;
-    style.u = DrawStyle::unit_for(width, height);
+    const DrawStyle style = style_at(theme, width, height);
     const cairo::SurfacePtr surface = cairo::image_surface(width, height);
     const cairo::ContextPtr cr = cairo::context(surface.get());
     const Rect title{0, 0, 0.6 * width, 0.07 * height};
@@ -535,9 +541,7 @@ TEST(MechanismForces, NoTwoArrowsAreDrawnOnOneLine) {
 TEST(MechanismForces, TheLegendListsOnlyTheArrowKindsTheFrameDraws) {
   constexpr int kWidth = 1280, kHeight = 720;
   const Theme theme = load_theme("light", {}, "theme");
-  DrawStyle style;
-  style.theme = &theme;
-  style.u = DrawStyle::unit_for(kWidth, kHeight);
+  const DrawStyle style = style_at(theme, kWidth, kHeight);
   ArrowScaleRequest apart;
   apart.fixed = {{"joint", 50.0}, {"applied", 0.01}};  // joint forces short, applied ones long
   std::size_t without_cut = 0, without_dashed = 0, with_both = 0;
@@ -673,9 +677,7 @@ TEST(MechanismScene, ASlidersRailRunsUnderTheGuidedBodyOverItsWholeTravel) {
 TEST(MechanismForces, LabelsKeepClearOfEachOtherArrowsAndBodiesAndOnlyStubsGoUnlabelled) {
   constexpr int kWidth = 854, kHeight = 480;
   const Theme theme = load_theme("light", {}, "theme");
-  DrawStyle style;
-  style.theme = &theme;
-  style.u = DrawStyle::unit_for(kWidth, kHeight);
+  const DrawStyle style = style_at(theme, kWidth, kHeight);
   const cairo::SurfacePtr surface = cairo::image_surface(kWidth, kHeight);
   const cairo::ContextPtr cr = cairo::context(surface.get());
   ArrowScaleRequest own, common, apart;
