@@ -14,6 +14,12 @@ const std::string& Mechanism::aliased(const std::string& key) const {
   return key;
 }
 
+const std::string& Mechanism::unaliased(const std::string& alias) const {
+  for (const Alias& a : aliases)
+    if (a.name == alias) return a.key;
+  return alias;
+}
+
 int Mechanism::body_index(const std::string& body_name) const {
   for (std::size_t i = 0; i < bodies.size(); ++i)
     if (bodies[i].name == body_name) return static_cast<int>(i);

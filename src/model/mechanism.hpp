@@ -127,6 +127,13 @@ struct Alias {
   SourcePos pos;     // of the key
 };
 
+/// How the file's picture looks by default ([picture]): `linkage render` flags override it.
+struct Picture {
+  std::string title;                // the picture's title line; empty: the file's title
+  std::vector<std::string> trails;  // "BODY.POINT" whose path is drawn (--trail)
+  std::string ensemble;             // the coordinate --ensemble spreads ("1.theta"); empty: the first
+};
+
 struct Mechanism {
   std::string name;                 // file stem, e.g. "two-blocks"
   std::string title;                // one line
@@ -146,6 +153,7 @@ struct Mechanism {
   std::vector<std::string> independent;  // loop closure keeps these coordinates
   SourcePos independent_pos;
   std::vector<Alias> aliases;  // [aliases], in file order
+  Picture picture;
 
   [[nodiscard]] const Body* find_body(const std::string& body_name) const;
   /// Index into `bodies`, -1 for the ground or a name that is not a body.
@@ -153,6 +161,8 @@ struct Mechanism {
   [[nodiscard]] const Joint* find_joint(const std::string& joint_name) const;
   /// `key`'s alias, or `key` when it has none.
   [[nodiscard]] const std::string& aliased(const std::string& key) const;
+  /// The key whose alias is `alias`, or `alias` when it is none ("theta1" -> "1.theta").
+  [[nodiscard]] const std::string& unaliased(const std::string& alias) const;
 };
 
 /// "file:line:column: " or "" for a position built in code.

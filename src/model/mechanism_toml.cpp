@@ -43,6 +43,12 @@ constexpr MechanismKey kKeys[] = {
     {"top level", "initial", "table", "(required)", "the generalized coordinates and rates at t = 0"},
     {"top level", "aliases", "table of strings", "none",
      "other names for keys of the worked solution's JSON, printed by an interface built on the file"},
+    {"top level", "picture", "table", "none", "how `linkage render` draws the mechanism by default"},
+    {"[picture]", "title", "string", "the title", "the picture's title line"},
+    {"[picture]", "trail", "list of strings", "none",
+     "points whose path the picture draws, \"BODY.POINT\" (\"1.P\"), as --trail gives them"},
+    {"[picture]", "ensemble", "string", "the first coordinate",
+     "the coordinate of [initial] an ensemble's runs start apart in (\"1.theta\")"},
     {"[ground]", "points", "table of [x, y]", "none", "named points of the fixed frame, world coordinates, m"},
     {"[[body]]", "name", "string", "(required)", "the body's name: letters, digits, '_' or '-' (e.g. \"1\")"},
     {"[[body]]", "shape", "string", "(required)", "rectangle, rod, disc or point"},
@@ -173,6 +179,7 @@ class MechanismReader {
     read_loads();
     read_initial();
     read_aliases();
+    read_picture();
     return std::move(m_);
   }
 
@@ -737,6 +744,52 @@ class MechanismReader {
                      std::to_string(seen->second) + "); aliases must be unique");
       lines[name->get()] = at.line;
       m_.aliases.push_back({std::string(key->str()), name->get(), pos(key->source())});
+    }
+  }
+
+  // [picture]: a one-line title and trail points that name a body's (or the ground's) point.
+  void read_picture() {
+    const toml::table* table = root_.subtable("picture");
+    if (table == nullptr) return;
+    const TableReader r = checked(*table, "[picture]", "[picture]");
+    if (auto title = string_at(r, "title", false)) {
+      if (title->first.find_first_of("\r\n") != std::string::npos)
+        fail(title->second, "[picture]: the title must be one line");
+      m_.picture.title = title->first;
+    }
+    if (auto ensemble = string_at(r, "ensemble", false)) {
+      std::vector<std::string> coordinates;
+      for (const InitialValue& v : m_.initial)
+        if (!v.key.ends_with("_dot")) coordinates.push_back(v.key);
+      if (std::find(coordinates.begin(), coordinates.end(), ensemble->first) == coordinates.end())
+        fail(ensemble->second, "[picture]: ensemble " + q(ensemble->first) + " is not a coordinate of [initial]" +
+                                   did_you_mean(ensemble->first, coordinates) + "; valid: " + join_names(coordinates));
+      m_.picture.ensemble = ensemble->first;
+    }
+    const toml::node* trail = r.node("trail");
+    if (trail == nullptr) return;
+    if (!trail->is_array())
+      r.fail("trail", "'trail' must be a list of points such as [\"1.P\"], got " + type_phrase(*trail));
+    const std::vector<std::string> points = *r.strings("trail");  // every entry a string
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const SourcePos at = pos(trail->as_array()->get(i)->source());
+      const std::string& point = points[i];
+      const auto dot = point.find('.');
+      const std::string body = point.substr(0, dot), name = dot == std::string::npos ? "" : point.substr(dot + 1);
+      const std::vector<NamedPoint>* named = nullptr;
+      if (body == kGround) named = &m_.ground_points;
+      for (const Body& b : m_.bodies)
+        if (b.name == body) named = &b.points;
+      std::vector<std::string> valid;
+      for (const Body& b : m_.bodies)
+        for (const NamedPoint& p : b.points) valid.push_back(b.name + "." + p.name);
+      for (const NamedPoint& p : m_.ground_points) valid.push_back(std::string(kGround) + "." + p.name);
+      const bool found = named != nullptr &&
+                         std::any_of(named->begin(), named->end(), [&](const NamedPoint& p) { return p.name == name; });
+      if (!found)
+        fail(at, "[picture]: trail " + q(point) + " is not a named point" + did_you_mean(point, valid) +
+                     "; valid: " + join_names(valid, "none (the file names no points)"));
+      m_.picture.trails.push_back(point);
     }
   }
 

@@ -207,6 +207,30 @@ double initial(const Mechanism& m, const std::string& key) {
 }
 
 // The homework exactly as the spec's example (assets/spec/example.json).
+// [picture]: the render's defaults a file states; the homework's are its clip's look.
+TEST(MechanismToml, PictureGivesTheTitleTrailAndEnsembleCoordinate) {
+  const Mechanism m = load_mechanism("two-blocks");
+  EXPECT_EQ(m.picture.title, "Two blocks joined by a pin, falling freely");
+  EXPECT_EQ(m.picture.trails, (std::vector<std::string>{"1.P"}));
+  EXPECT_EQ(m.picture.ensemble, "1.theta");
+  EXPECT_EQ(m.unaliased("theta1"), "1.theta");
+  EXPECT_EQ(m.unaliased("L"), "L");
+  const Mechanism plain = load_mechanism("four-bar");
+  EXPECT_TRUE(plain.picture.title.empty());
+  EXPECT_TRUE(plain.picture.trails.empty());
+  const std::string point_mass =
+      "[[body]]\nname = \"1\"\nshape = \"point\"\nmass = 1\npoints = { P = [0, 0] }\n[initial]\n\"1\" = { x = 0, y = "
+      "0 }\n[picture]\n";
+  EXPECT_EQ(read_mechanism(point_mass + "trail = [\"1.P\", \"1.P\"]\n", "m.toml").picture.trails.size(), 2U);
+  try {
+    (void)read_mechanism(point_mass + "trail = [\"1.P\", \"2.P\"]\n", "m.toml");
+    ADD_FAILURE() << "a trail of no point read";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("m.toml:9:17: [picture]: trail '2.P' is not a named point", 0), 0U)
+        << e.what();
+  }
+}
+
 TEST(MechanismToml, TwoBlocksIsTheSpecExample) {
   const Mechanism m = load_mechanism("two-blocks");
   const auto& example = test::spec_example();
