@@ -19,7 +19,6 @@
 #include "cli/simulation_flags.hpp"
 #include "core/error.hpp"
 #include "core/progress.hpp"
-#include "pipeline/clip.hpp"
 #include "pipeline/clip_request.hpp"
 #include "pipeline/mechanism_clip.hpp"
 #include "pipeline/render_options.hpp"
@@ -27,7 +26,6 @@
 #include "render/theme.hpp"
 #include "report/mechanism_solution.hpp"
 #include "report/mechanism_text.hpp"
-#include "scene/scene_builder.hpp"
 
 namespace linkage::cli {
 namespace {
@@ -68,7 +66,7 @@ RenderRequest resolve_request(const RenderFlags& f) {
   if (!f.caption.empty()) base.captions = {{0.0, f.caption}};
   const std::optional<fs::path> out = chosen_out(f);
   RenderTarget target;
-  target.mechanism = f.mechanism.chosen();
+  target.mechanism = true;  // the homework too: two-blocks.toml, drawn as any mechanism
   target.still = out.has_value();
   try {
     if (out) target.still = is_still(output_kind(*out, "out"));
@@ -100,17 +98,6 @@ void note_duration(const RenderFlags& f, bool still, bool frames) {
     std::fprintf(stderr, "linkage: note: --duration applies to a clip; a still shows the time --at (default 0)\n");
 }
 
-/// The homework's clip the flags describe, checked before any work.
-Clip resolve_clip(const RenderFlags& f) {
-  const RenderRequest request = resolve_request(f);
-  const ClipPlan plan = plan_of(f);
-  const SimulationOptions simulation = resolve_simulation_flags(f.simulation, request.settings.duration);
-  const Clip clip = homework_clip(request, resolve_inputs(f.inputs), simulation, plan);
-  note_duration(f, clip.is_still(), clip.frames.has_value());
-  if (!f.quiet) note_ignored_simulation_flags(f.simulation, clip.simulation);
-  return clip;
-}
-
 void print_stats(const RenderStats& s) {
   const nlohmann::json json = {
       {"frames_drawn", s.frames_drawn},
@@ -130,7 +117,8 @@ void print_stats(const RenderStats& s) {
   std::printf("%s\n", json.dump(2).c_str());
 }
 
-/// Any mechanism (--mechanism): its own scene and camera, the same outputs and checks.
+/// The mechanism's clip (the homework's flags and --config are settings of two-blocks.toml):
+/// its scene and camera, its outputs, every check before any work.
 ClipResult render_mechanism(const RenderFlags& f, const ClipProgress& progress) {
   const RenderRequest request = resolve_request(f);
   const ClipPlan plan = plan_of(f);
@@ -169,8 +157,7 @@ void run_render(const RenderFlags& flags) {
     }
     progress->update(done);
   };
-  const ClipResult result =
-      flags.mechanism.chosen() ? render_mechanism(flags, report) : produce_clip(resolve_clip(flags), report);
+  const ClipResult result = render_mechanism(flags, report);
   if (progress) progress->finish();
   if (!flags.quiet)
     for (const std::string& note : result.notes) std::fprintf(stderr, "linkage: %s\n", note.c_str());

@@ -126,12 +126,15 @@ CheckedMechanismClip mechanism_clip(const RenderRequest& request, const sym::Sys
   CheckedMechanismClip made;
   MechanismClip& clip = made.clip;
   clip.settings = request.settings;
-  if (!request.titled) clip.settings.title = system.mechanism().title;
+  // The file's [picture] gives the defaults the flags have not set.
+  const Picture& picture = system.mechanism().picture;
+  if (!request.titled) clip.settings.title = picture.title.empty() ? system.mechanism().title : picture.title;
   clip.frames = plan.frames;
   clip.out = plan.out;
   clip.theme = load_theme(clip.settings.theme, plan.assets, "theme");
   clip.simulation = simulation;
-  clip.trails = request.trails;
+  clip.trails = request.trails.empty() ? picture.trails : request.trails;
+  for (std::string& name : clip.settings.panel) name = system.mechanism().unaliased(name);  // theta1: 1.theta
   clip.ensemble = request.ensemble;
   clip.spread = request.spread;
   const std::string& compare = request.compare;
@@ -140,10 +143,23 @@ CheckedMechanismClip mechanism_clip(const RenderRequest& request, const sym::Sys
       case CompareKind::trajectory: {
         MechanismRun run;
         run.label = fs::path(compare).filename().string();
-        run.table = std::make_shared<const TrajectoryTable>(
-            read_trajectory_csv(compare, mechanism_pose_columns(mechanism_geometry(system)),
-                                plan.compare_origin + ", to draw the bodies of " + system.mechanism().name + ",", 0.0,
-                                clip_end(clip.settings, clip.is_still(), clip.frames.has_value())));
+        // By the columns' keys, or by their aliases (the homework's x1, theta1 as simulate writes them).
+        const MechanismGeometry geometry = mechanism_geometry(system);
+        const auto read = [&](const Mechanism* aliases) {
+          return std::make_shared<const TrajectoryTable>(
+              read_trajectory_csv(compare, mechanism_pose_columns(geometry, aliases),
+                                  plan.compare_origin + ", to draw the bodies of " + system.mechanism().name + ",", 0.0,
+                                  clip_end(clip.settings, clip.is_still(), clip.frames.has_value())));
+        };
+        const bool aliased = mechanism_pose_columns(geometry, &system.mechanism()) != mechanism_pose_columns(geometry);
+        try {
+          run.table = read(nullptr);
+        } catch (const Error& e) {
+          // A file without the keys' columns is read by the aliases' names, whose error then stands.
+          if (!aliased || std::string(e.what()).find(": no column '") == std::string::npos) throw;
+          run.table = read(&system.mechanism());
+          run.aliased = true;
+        }
         clip.compare = std::move(run);
         break;
       }

@@ -61,7 +61,7 @@ struct CheckedMechanismClip {
 };
 
 /// The clip of `system` from `initial` (loops closed): the request's settings (the title
-/// the mechanism's unless given), trails and overlays (compare: a --set name, integrator=NAME,
+/// and trails the file's [picture] unless given), trails and overlays (compare: a --set name, integrator=NAME,
 /// case=N; another mechanism, its bodies named as the clip's; FILE.csv, the bodies'
 /// columns covering the clip), the equations, validated; a compared run without a
 /// system of its own starts from `initial`.

@@ -36,11 +36,23 @@ namespace {
   return out;
 }
 
+/// The coordinate an ensemble spreads: the file's [picture] ensemble, else the first.
+const sym::GeneralizedCoordinate& ensemble_coordinate(const sym::System& system) {
+  for (const auto& c : system.coordinates())
+    if (c.coordinate.key == system.mechanism().picture.ensemble) return c;
+  return system.coordinates().front();
+}
+
 constexpr double kTrailSeconds = 2.0;
 constexpr int kTrailSteps = 4;          // trail samples per frame interval
 constexpr double kPanelSamples = 4000;  // a panel's samples over the clip, at least (one per frame when fewer)
 constexpr double kMargin = 0.1;         // of the view's larger side, around the whole motion
 constexpr double kTitleBand = 0.1;      // of the view's height
+
+/// Trail samples per frame interval: only when a trail is drawn.
+int trail_steps(const MechanismClip& clip) {
+  return clip.trails.empty() || !clip.settings.elements.has(Element::trail) ? 1 : kTrailSteps;
+}
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -55,7 +67,7 @@ std::vector<BodyPoint> resolve_trails(const MechanismGeometry& geometry, const s
 /// The ensemble's legend row in words: "ensemble: 20 runs, angle θ of body 1 + 0 .. 1e-06 rad".
 std::string ensemble_label(const sym::System& system, const MechanismClip& clip) {
   if (clip.ensemble < 2 || system.coordinates().empty()) return {};
-  const std::string& key = system.coordinates().front().coordinate.key;
+  const std::string& key = ensemble_coordinate(system).coordinate.key;
   std::string words = key, unit;
   for (const MechanismColumn& column : mechanism_columns(system))
     if (column.name == key) {
@@ -96,6 +108,33 @@ std::vector<Overlay> sample_overlays(const sym::System& system, const GiNaC::exm
   return overlays;
 }
 
+constexpr int kPathSteps = 120;  // the inset's path of the centre of mass
+
+/// The centre of mass's path over 0 .. `duration` of a floating mechanism on which gravity
+/// is the only outside force (no applied forces): a parabola through its place and
+/// velocity at the first sample, exact, so a still needs no motion beyond its own time.
+/// Empty when an applied force moves it (its path is not known ahead).
+std::vector<Vec2> com_path(const MechanismScene& scene, const MechanismMotion& motion, double duration) {
+  const MechanismGeometry& geometry = scene.geometry();
+  if (!geometry.forces.empty() || motion.samples.empty() || motion.samples.front().rates.empty()) return {};
+  const eval::MechanismSample& first = motion.samples.front();
+  Vec2 velocity = Vec2::Zero();
+  double mass = 0;
+  for (std::size_t i = 0; i < geometry.bodies.size(); ++i) {
+    velocity += geometry.bodies[i].mass * Vec2(first.rates[3 * i], first.rates[3 * i + 1]);
+    mass += geometry.bodies[i].mass;
+  }
+  if (!(mass > 0)) return {};
+  velocity /= mass;
+  const Vec2 start = scene.centroid(0);
+  std::vector<Vec2> path;
+  for (int i = 0; i <= kPathSteps; ++i) {
+    const double dt = duration * i / kPathSteps - motion.times.front();
+    path.push_back(start + dt * velocity + Vec2(0.0, -0.5 * geometry.gravity * dt * dt));
+  }
+  return path;
+}
+
 /// Draws the frames of one motion: a fixed camera around the whole motion for a
 /// grounded mechanism, else one following the centroid at a fixed zoom.
 class MechanismFrames {
@@ -119,6 +158,9 @@ class MechanismFrames {
     const CameraMode mode = mechanism_camera_mode(settings_, scene_.geometry());
     follow_ = mode == CameraMode::follow;
     camera_ = mechanism_camera(scene_, settings_, mode);
+    labels_.duration = std::max({clip.settings.duration, clip.settings.at, motion.times.back()});
+    labels_.follows = follow_ && !scene_.geometry().grounded();
+    if (labels_.follows) labels_.com_path = com_path(scene_, motion, labels_.duration);
     // An arrow too short to carry its label is drawn dashed with its value, as the legend says.
     scene_.set_shortest_arrow(shortest_labelled_arrow_px(style_) / camera_.scale(),
                               stretched_arrow_px(style_) / camera_.scale());
@@ -136,6 +178,10 @@ class MechanismFrames {
   void paint(std::size_t k, cairo_t* cr) {
     const auto start = std::chrono::steady_clock::now();
     scene_.frame(k, list_);
+    for (const MechanismDrawList::Line& line : list_.lines)
+      if (line.kind == MechanismDrawList::Line::Kind::trail)
+        stats_.trail_points_drawn += static_cast<std::int64_t>(line.points.size());
+    if (labels_.follows) list_.legend.note = "the view follows the centre of mass; the grid stays put";
     add_ghosts(k);
     const Camera camera = follow_ ? camera_.centred_at(scene_.centroid(k)) : camera_;
     // The camera a frame earlier (the samples are a frame apart): the grid streaks from there.
@@ -193,6 +239,7 @@ class MechanismFrames {
 
 void add_drawing(RenderStats& stats, const RenderStats& drawn) {
   stats.frames_drawn += drawn.frames_drawn;
+  stats.trail_points_drawn += drawn.trail_points_drawn;
   stats.draw_seconds += drawn.draw_seconds;
 }
 
@@ -204,8 +251,8 @@ void produce_motion(const sym::System& system, const GiNaC::exmap& initial, cons
   for (long k = 0; k < count; ++k) times[static_cast<std::size_t>(k)] = s.frame_time(k);
   PanelData panel;
   const MechanismMotion motion =
-      sample_mechanism_motion(system, initial, clip.simulation, times, clip.trails.empty() ? 1 : kTrailSteps, result,
-                              progress, s.panel, &panel, clip.derived);
+      sample_mechanism_motion(system, initial, clip.simulation, times, trail_steps(clip), result, progress, s.panel,
+                              &panel, clip.derived, s.elements.has(Element::acceleration));
   panel.t_end = s.duration;
   const std::vector<Overlay> overlays = sample_overlays(system, initial, clip, clip.simulation, times, result);
   FrameLayout layout(s, clip.theme, std::move(panel));
@@ -233,8 +280,8 @@ void produce_still(const sym::System& system, const GiNaC::exmap& initial, const
   options.validate();
   PanelData panel;
   const MechanismMotion motion =
-      sample_mechanism_motion(system, initial, options, times, clip.trails.empty() ? 1 : kTrailSteps, result, progress,
-                              s.panel, &panel, clip.derived);
+      sample_mechanism_motion(system, initial, options, times, trail_steps(clip), result, progress, s.panel, &panel,
+                              clip.derived, s.elements.has(Element::acceleration));
   panel.t_end = s.at;
   const std::vector<Overlay> overlays = sample_overlays(system, initial, clip, options, times, result);
   FrameLayout layout(s, clip.theme, std::move(panel));
@@ -276,7 +323,7 @@ MechanismMotion sample_mechanism_motion(const sym::System& system, const GiNaC::
                                         const SimulationOptions& options, const std::vector<double>& frame_times,
                                         int trail_steps, ClipResult& result, const ClipProgress& progress,
                                         const std::vector<std::string>& panel_names, PanelData* panel,
-                                        const std::optional<CaseSystem>& derived) {
+                                        const std::optional<CaseSystem>& derived, bool accelerations) {
   const auto start = std::chrono::steady_clock::now();
   const bool same_case = derived && derived->id == static_cast<CaseId>(options.case_id);
   MechanismSimulation simulation(system, initial, options, same_case ? derived : std::nullopt);
@@ -289,7 +336,14 @@ MechanismMotion sample_mechanism_motion(const sym::System& system, const GiNaC::
   motion.times = frame_times;
   motion.samples.resize(frame_times.size());
   const bool fine = trail_steps > 1;
-  const bool kinematics = needs_kinematics(columns);
+  const bool kinematics = accelerations || needs_kinematics(columns);
+  // The HUD's energy balance, as the energy_error column gives it; and whether the case
+  // keeps a constraint whose error is worth showing (Case 1 every joint, else loops).
+  MechanismColumn balance;
+  balance.quantity = MechanismQuantity::energy_error;
+  motion.constraints_kept = false;
+  for (const sym::JointSystem& joint : system.joints())
+    motion.constraints_kept = motion.constraints_kept || options.case_id == 1 || !joint.in_tree;
   // The panel between frames too, at least kPanelSamples over the clip: its peaks are the
   // table's, not the frames' (a force's spike lasts a few ms).
   const double panel_step = (frame_times.back() - frame_times.front()) / kPanelSamples;
@@ -323,6 +377,7 @@ MechanismMotion sample_mechanism_motion(const sym::System& system, const GiNaC::
     }
     const Eigen::VectorXd& y = simulation.state_at(frame_times[i]);
     simulation.sample(frame_times[i], y, motion.samples[i], kinematics);
+    motion.energy_error.push_back(column_value(balance, frame_times[i], y, motion.samples[i], simulation.energy0()));
     if (!columns.empty()) add_panel(frame_times[i], y, motion.samples[i]);
     if (fine) {
       motion.trail_times.push_back(frame_times[i]);
@@ -351,7 +406,8 @@ std::vector<MechanismMotion> overlay_motions(const sym::System& system, const Gi
     }
   if (clip.compare && clip.compare->table) {
     const sym::System& other = clip.compare->system != nullptr ? *clip.compare->system : system;
-    motions.push_back(table_motion(*clip.compare->table, mechanism_geometry(other), times));
+    motions.push_back(table_motion(*clip.compare->table, mechanism_geometry(other), times,
+                                   clip.compare->aliased ? &other.mechanism() : nullptr));
   } else if (clip.compare) {
     const sym::System& other = clip.compare->system != nullptr ? *clip.compare->system : system;
     SimulationOptions compared = clip.compare->simulation;
@@ -385,8 +441,8 @@ MechanismRun mechanism_compared_run(const std::vector<std::string>& items, const
         if (value != "1" && value != "2" && value != "3")
           throw Error::invalid("case", "'" + value + "' is not a case; valid: 1, 2, 3");
         run.simulation.case_id = value[0] - '0';
-      } else {
-        apply_setting(other, item, flag + " " + name);
+      } else {  // by its key or its alias (the homework's theta1 for 1.theta)
+        apply_setting(other, mechanism.unaliased(name) + "=" + value, flag + " " + name);
         own_system = true;
       }
     } catch (const Error& e) {
@@ -402,28 +458,34 @@ MechanismRun mechanism_compared_run(const std::vector<std::string>& items, const
     throw Error::invalid("compare", e.what());
   }
   if (own_system) {
-    system = std::make_unique<sym::System>(std::move(other));
+    try {  // a setting that breaks the mechanism (L=-1) is the compared run's to report
+      system = std::make_unique<sym::System>(std::move(other));
+      run.initial = sym::checked_initial_state(*system).state;
+    } catch (const Error& e) {
+      throw Error::invalid("compare", e.what());
+    }
     run.system = system.get();
-    run.initial = sym::checked_initial_state(*system).state;
   }
   return run;
 }
 
-std::vector<std::string> mechanism_pose_columns(const MechanismGeometry& geometry) {
+std::vector<std::string> mechanism_pose_columns(const MechanismGeometry& geometry, const Mechanism* aliases) {
   std::vector<std::string> names{"t"};
+  const auto named = [&](const std::string& key) { return aliases != nullptr ? aliases->aliased(key) : key; };
   for (const MechanismGeometry::BodyShape& body : geometry.bodies) {
-    names.push_back(body.name + ".x");
-    names.push_back(body.name + ".y");
-    if (body.shape != Shape::point) names.push_back(body.name + ".theta");
+    names.push_back(named(body.name + ".x"));
+    names.push_back(named(body.name + ".y"));
+    if (body.shape != Shape::point) names.push_back(named(body.name + ".theta"));
   }
   return names;
 }
 
 MechanismMotion table_motion(const TrajectoryTable& table, const MechanismGeometry& geometry,
-                             const std::vector<double>& times) {
+                             const std::vector<double>& times, const Mechanism* aliases) {
   std::vector<std::optional<std::size_t>> columns;  // per body: x, y, theta
   for (const MechanismGeometry::BodyShape& body : geometry.bodies)
-    for (const char* part : {".x", ".y", ".theta"}) columns.push_back(table.find(body.name + part));
+    for (const char* part : {".x", ".y", ".theta"})
+      columns.push_back(table.find(aliases != nullptr ? aliases->aliased(body.name + part) : body.name + part));
   MechanismMotion motion;
   motion.times = times;
   motion.samples.resize(times.size());
@@ -440,7 +502,7 @@ std::vector<GiNaC::exmap> ensemble_states(const sym::System& system, const GiNaC
                                           double spread) {
   std::vector<GiNaC::exmap> states;
   if (system.coordinates().empty() || n < 2) return states;
-  const GiNaC::symbol& q = system.coordinates().front().symbols.q;
+  const GiNaC::symbol& q = ensemble_coordinate(system).symbols.q;
   const auto found = initial.find(q);
   const double q0 = found == initial.end() ? 0.0 : GiNaC::ex_to<GiNaC::numeric>(found->second).to_double();
   bool loops = false;

@@ -31,6 +31,7 @@ struct MechanismRun {
   std::string label;                               // the legend row: what differs, "integrator=rk4"
   std::shared_ptr<const TrajectoryTable> table{};  // a trajectory file's run instead of a simulation
   bool centred = false;  // another mechanism: drawn about the main run's centroid when that is followed
+  bool aliased = false;  // the table's columns go by the file's [aliases] (x1 for 1.x)
 };
 
 /// The compared run of NAME=VALUE items (`linkage render --compare`, a lesson's compare):
@@ -43,11 +44,13 @@ struct MechanismRun {
                                                   std::unique_ptr<sym::System>& system);
 
 /// The columns a trajectory file needs to draw the bodies of `geometry`: t, then per body
-/// NAME.x, NAME.y and NAME.theta (no theta for a point mass).
-[[nodiscard]] std::vector<std::string> mechanism_pose_columns(const MechanismGeometry& geometry);
+/// NAME.x, NAME.y and NAME.theta (no theta for a point mass); with `aliases`, by the names
+/// its [aliases] give them (two-blocks: x1, y1, theta1, ...).
+[[nodiscard]] std::vector<std::string> mechanism_pose_columns(const MechanismGeometry& geometry,
+                                                              const Mechanism* aliases = nullptr);
 /// The poses of `table` (with mechanism_pose_columns) at `times`, interpolated linearly.
 [[nodiscard]] MechanismMotion table_motion(const TrajectoryTable& table, const MechanismGeometry& geometry,
-                                           const std::vector<double>& times);
+                                           const std::vector<double>& times, const Mechanism* aliases = nullptr);
 
 struct MechanismClip {
   SimulationOptions simulation;
@@ -83,12 +86,13 @@ struct MechanismClip {
 /// samples, seconds and warning to `result`. With `panel`, also the panel's columns at
 /// every frame time and between them, at least 4000 samples over the clip (settings.panel,
 /// checked by validate()). `derived`: the system's case, used when it is the one `options`
-/// runs (MechanismClip::derived).
+/// runs (MechanismClip::derived). `accelerations`: every sample with its kinematics
+/// (the acceleration arrows'). Records each frame's energy balance (MechanismMotion).
 MechanismMotion sample_mechanism_motion(const sym::System& system, const GiNaC::exmap& initial,
                                         const SimulationOptions& options, const std::vector<double>& frame_times,
                                         int trail_steps, ClipResult& result, const ClipProgress& progress = {},
                                         const std::vector<std::string>& panel_names = {}, PanelData* panel = nullptr,
-                                        const std::optional<CaseSystem>& derived = {});
+                                        const std::optional<CaseSystem>& derived = {}, bool accelerations = false);
 
 /// The ensemble's other runs: `initial` with the first generalized coordinate moved by
 /// spread k / (n - 1), k = 1 .. n - 1 (evenly spaced, no randomness), loops closed again.

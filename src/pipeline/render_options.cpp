@@ -29,7 +29,9 @@ struct RenderDraft {
 
 namespace {
 
-constexpr std::array<std::string_view, 5> kMechanismArrowKinds{"joint", "applied", "gravity", "spring", "velocity"};
+// "pin" is the joint kind's other name, as --show's pin-force is joint-force's.
+constexpr std::array<std::string_view, 7> kMechanismArrowKinds{"joint",  "pin",      "applied",     "gravity",
+                                                               "spring", "velocity", "acceleration"};
 
 /// Runs `parse`, whose errors are worded "NAME: ...", and makes them the setting's.
 template <typename Parse>
@@ -97,6 +99,9 @@ void arrow_scale(RenderDraft& d, const std::string& text) {
                                                       : std::span<const std::string_view>(kArrowKindNames);
   d.request.settings.arrow_scale =
       as_setting("arrow_scale", [&] { return parse_arrow_scale_request(text, "arrow_scale", kinds); });
+  if (d.target.mechanism)
+    for (auto& [kind, units] : d.request.settings.arrow_scale.fixed)
+      if (kind == "pin") kind = "joint";
 }
 
 void panel(RenderDraft& d, const std::string& text) {
@@ -174,7 +179,8 @@ std::vector<RenderOption> make_options() {
       {"arrow_scale", V::string, "string", "SPEC", "each kind its own",
        "Arrow lengths: each kind its own scale (default); common (every force one scale, so the pin force reads "
        "against gravity; common=N_PER_CM sets it); KIND=N_PER_CM,... fixes kinds (pin, gravity, velocity; a "
-       "mechanism's joint, applied, gravity, spring, velocity). Arrows too short to see are drawn dashed at a least "
+       "mechanism's joint (or pin), applied, gravity, spring, velocity, acceleration). Arrows too short to see are "
+       "drawn dashed at a least "
        "length, labelled with "
        "their value",
        arrow_scale},

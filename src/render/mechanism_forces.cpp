@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "render/scene_painter.hpp"
@@ -19,6 +20,8 @@ constexpr const char* kAppliedName = "applied forces";
 constexpr const char* kGravityName = "gravity";
 constexpr const char* kSpringName = "spring forces";
 constexpr const char* kVelocityName = "velocity";
+constexpr const char* kAccelerationName = "acceleration";
+constexpr const char* kComName = "centres of mass";
 constexpr const char* kCutNote = "cut short: its label gives the value";
 // On two lines, so the legend stays narrow enough to fit beside a body.
 constexpr const char* kStretchedNote = "dashed: too short to see at its scale,";
@@ -124,6 +127,8 @@ Vec2 legend_rows(cairo_t* cr, const DrawStyle& style, const Camera& camera, cons
         return kSpringName;
       case List::Arrow::Kind::velocity:
         return kVelocityName;
+      case List::Arrow::Kind::acceleration:
+        return kAccelerationName;
     }
     return kJointName;
   };
@@ -131,6 +136,8 @@ Vec2 legend_rows(cairo_t* cr, const DrawStyle& style, const Camera& camera, cons
   if (forces && legend.joint) names = std::max(names, text::width(cr, font, kJointName));
   if (forces && legend.applied) names = std::max(names, text::width(cr, font, kAppliedName));
   for (const List::Legend::Row& r : legend.rows) names = std::max(names, text::width(cr, font, row_name(r.kind)));
+  for (const std::string& trail : legend.trails) names = std::max(names, text::width(cr, font, trail.c_str()));
+  if (legend.com) names = std::max(names, text::width(cr, font, kComName));
   double y = at.y(), widest = 0;
   const auto baseline = [&] { return y + 0.5 * row + 0.5 * (m.ascent - m.descent); };
   const auto scale_row = [&](const char* name, const Rgba& colour, double metres, const std::string& value,
@@ -171,6 +178,36 @@ Vec2 legend_rows(cairo_t* cr, const DrawStyle& style, const Camera& camera, cons
     scale_row(row_name(r.kind), arrow_colour(theme, r.kind), r.metres, r.value, r.scale);
   if (legend.cut) marked_row(kCutNote, nullptr, true);
   if (legend.stretched) marked_row(kStretchedNote, kStretchedNote2, false);
+  // What is not an arrow: each trail (a line), the centres of mass (their symbol), a note.
+  const double glyph = 40 * u, x = at.x() + names + 8 * u;
+  char seconds[32];
+  std::snprintf(seconds, sizeof seconds, "last %g s", legend.trail_seconds);
+  for (const std::string& trail : legend.trails) {
+    if (paint) {
+      text::draw(cr, font, at.x(), baseline(), trail.c_str(), theme.text);
+      set_colour(cr, theme.trail);
+      cairo_set_line_width(cr, style.trail_width());
+      cairo_move_to(cr, x, y + 0.5 * row);
+      cairo_line_to(cr, x + glyph, y + 0.5 * row);
+      cairo_stroke(cr);
+      text::draw(cr, font, x + glyph + 6 * u, baseline(), seconds, theme.text_muted);
+    }
+    widest = std::max(widest, names + 8 * u + glyph + 6 * u + text::width(cr, font, seconds));
+    y += row;
+  }
+  if (legend.com) {
+    if (paint) {
+      text::draw(cr, font, at.x(), baseline(), kComName, theme.text);
+      paint_com_symbol(cr, style, {x + 0.5 * glyph, y + 0.5 * row}, style.com_radius());
+    }
+    widest = std::max(widest, names + 8 * u + glyph);
+    y += row;
+  }
+  if (!legend.note.empty()) {
+    if (paint) text::draw(cr, font, at.x(), baseline(), legend.note.c_str(), theme.text_muted);
+    widest = std::max(widest, text::width(cr, font, legend.note.c_str()));
+    y += row;
+  }
   return {widest, y - at.y()};
 }
 
@@ -283,7 +320,9 @@ Rect clear_place(const DrawStyle& style, double w, double h, int width, int heig
 void place_legend(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List& list, int width, int height,
                   const std::vector<Rect>& occupied, ForceLayout& layout) {
   const List::Legend& legend = list.legend;
-  if ((!(legend.metres > 0) || !(legend.joint || legend.applied)) && legend.rows.empty()) return;
+  if ((!(legend.metres > 0) || !(legend.joint || legend.applied)) && legend.rows.empty() && legend.trails.empty() &&
+      !legend.com && legend.note.empty())
+    return;
   const double pad = 8 * style.u;
   const Vec2 content = legend_rows(cr, style, camera, legend, Vec2::Zero(), false);
   const double w = std::ceil(content.x() + 2 * pad), h = std::ceil(content.y() + 2 * 0.6 * pad);
@@ -426,6 +465,8 @@ const Rgba& arrow_colour(const Theme& theme, MechanismDrawList::Arrow::Kind kind
       return theme.gravity;
     case List::Arrow::Kind::spring:
       return theme.trail;
+    case List::Arrow::Kind::acceleration:
+      return theme.com;
   }
   return theme.pin_force;
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <numbers>
 
 #include "render/mechanism_forces.hpp"
@@ -227,38 +228,57 @@ void paint_body_labels(cairo_t* cr, const DrawStyle& style, const List& list, co
   }
 }
 
-// The time (top right) and the run under it; the box they take.
-Rect paint_time(cairo_t* cr, const DrawStyle& style, double t, const MechanismLabels& labels, int width) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "t = %.2f s", t);
-  const text::Font font{style.text_size(), true}, small{style.small_size(), false};
+// The HUD (top right): the time, the run, the energy balance and, when the case keeps a
+// constraint, its error; under it a row per other run with a swatch of its colour. The
+// box they take.
+Rect paint_time(cairo_t* cr, const DrawStyle& style, double t, const MechanismLabels& labels, const List::Hud& errors,
+                int width) {
+  const auto fill = [&](HudText& hud, double time, double energy, double constraint) {
+    format_hud(hud, time, energy, constraint);
+    std::snprintf(hud.run.data(), hud.run.size(), "%s", labels.run.c_str());
+    const std::size_t end = std::strlen(hud.energy.data());
+    std::snprintf(hud.energy.data() + end, hud.energy.size() - end, " J");
+    if (!errors.constraint) hud.constraint[0] = '\0';
+  };
+  HudText hud, widest;
+  fill(hud, t, errors.energy_error, errors.constraint_error);
+  fill(widest, -std::max(9.99, labels.duration), -8.8e-88, 8.8e-88);  // one box for every frame
+  const Rect box = hud_rect(cr, style, widest, width);
+  paint_hud(cr, style, hud, box);
+  const text::Font small{style.small_size(), false};
   const double x = width - style.padding();
-  const double y = style.padding() + text::metrics(cr, font).ascent;
   const Theme& theme = *style.theme;
   const Rgba ensemble = ensemble_colour(theme, 0.5), compare = compare_colour(theme);
-  text::draw_with_halo(cr, font, x, y, buffer, theme.text, theme.background, 3 * style.u, text::Align::right);
-  double wide = text::width(cr, font, "t = 000.00 s"), bottom = y + text::metrics(cr, font).descent;
-  double under = y;
-  // The run, then a row per other run with a swatch of its colour.
-  const std::pair<const std::string*, const Rgba*> rows[] = {
-      {&labels.run, nullptr}, {&labels.ensemble, &ensemble}, {&labels.compare, &compare}};
+  double wide = box.width, under = box.y + box.height + 0.4 * style.padding(), bottom = box.y + box.height;
+  const std::pair<const std::string*, const Rgba*> rows[] = {{&labels.ensemble, &ensemble},
+                                                             {&labels.compare, &compare}};
   for (const auto& [row, swatch] : rows) {
     if (row->empty()) continue;
     under += 1.4 * style.small_size();
     text::draw_with_halo(cr, small, x, under, row->c_str(), theme.text_muted, theme.background, 3 * style.u,
                          text::Align::right);
-    double row_wide = text::width(cr, small, row->c_str());
-    if (swatch != nullptr) {
-      const double side = 0.8 * style.small_size(), left = x - row_wide - 0.4 * side - side;
-      cairo_rectangle(cr, left, under - side, side, side);
-      set_colour(cr, *swatch);
-      cairo_fill(cr);
-      row_wide += 1.4 * side;
-    }
+    const double side = 0.8 * style.small_size();
+    const double row_wide = text::width(cr, small, row->c_str()) + 1.4 * side;
+    cairo_rectangle(cr, x - row_wide, under - side, side, side);
+    set_colour(cr, *swatch);
+    cairo_fill(cr);
     wide = std::max(wide, row_wide);
     bottom = under + text::metrics(cr, small).descent;
   }
-  return {x - wide, style.padding(), wide, bottom - style.padding()};
+  return {x - wide, box.y, wide, bottom - box.y};
+}
+
+// The inset of the centre of mass's whole path under `top`, the part travelled by `t`
+// drawn strong and the centre of mass now marked on it; the box it takes.
+Rect paint_com_inset(cairo_t* cr, const DrawStyle& style, const MechanismLabels& labels, const Vec2& now, double t,
+                     double top, int width) {
+  char caption[96];
+  std::snprintf(caption, sizeof caption, "path of the centre of mass, 0\u2013%g s", labels.duration);
+  const PathInset inset = path_inset(inset_layout(cr, style, caption, top, width), labels.com_path);
+  const double steps = static_cast<double>(labels.com_path.size() - 1);
+  const auto travelled = static_cast<std::size_t>(std::floor(std::clamp(t / labels.duration, 0.0, 1.0) * steps)) + 1;
+  paint_path_inset(cr, style, inset, now, travelled);
+  return inset.inset.rect;
 }
 
 }  // namespace
@@ -267,12 +287,14 @@ void paint_mechanism_frame(cairo_t* cr, const DrawStyle& style, const Camera& ca
                            const MechanismLabels& labels, double t, int width, int height, const Camera* earlier) {
   const ElementSet& shown = list.shown;
   paint_background(cr, style, width, height);
-  // Grid lines fixed in the world: a following camera shows the motion against them.
+  // Grid lines fixed in the world: a following camera shows the motion against them, a
+  // few lines to the frame each named by its height so the fall can be read.
   GridSpec grid;
-  grid.spacing = grid_spacing_for(camera, width, height);
+  grid.spacing = grid_spacing_for(camera, width, height, labels.follows ? 5 : 10);
+  grid.name_every = labels.follows;
+  grid.x_ticks = !labels.follows || shown.has(Element::axes);
   if (shown.has(Element::grid))
     paint_grid(cr, style, camera, grid, width, height, earlier);  // streaking past a following camera
-  if (shown.has(Element::axes)) paint_axes(cr, style, camera, grid, width, height, {});
   cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
   paint_lines(cr, style, camera, list, List::Line::Kind::trail);
   paint_lines(cr, style, camera, list, List::Line::Kind::rail);
@@ -288,13 +310,26 @@ void paint_mechanism_frame(cairo_t* cr, const DrawStyle& style, const Camera& ca
   paint_markers(cr, style, camera, list, List::Marker::Kind::pin);
   paint_markers(cr, style, camera, list, List::Marker::Kind::com);
   std::vector<Rect> occupied;
-  if (shown.has(Element::hud)) occupied.push_back(paint_time(cr, style, t, labels, width));
+  double inset_top = style.padding();
+  if (shown.has(Element::hud)) {
+    occupied.push_back(paint_time(cr, style, t, labels, list.hud, width));
+    inset_top = occupied.back().y + occupied.back().height + 0.6 * style.padding();
+  }
+  if (labels.follows && labels.com_path.size() >= 2 && labels.duration > 0)
+    occupied.push_back(paint_com_inset(cr, style, labels, list.centre_of_mass, t, inset_top, width));
   if (!labels.title.empty() && shown.has(Element::title)) {
     const TitleLayout title = title_layout(cr, style, labels.title, width);
     paint_title(cr, style, labels.title, title);
     occupied.push_back(title.rect);
   }
   const ForceLayout layout = layout_forces(cr, style, camera, list, width, height, occupied);
+  // The grid's names and the axes' ticks clear of every panel.
+  if (shown.has(Element::axes) || (labels.follows && shown.has(Element::grid))) {
+    std::vector<Rect> avoid = occupied;
+    avoid.push_back(layout.legend);
+    avoid.push_back(layout.scale_bar);
+    paint_axes(cr, style, camera, grid, width, height, avoid);
+  }
   paint_body_labels(cr, style, list, layout);
   paint_forces(cr, style, camera, list, layout);
 }

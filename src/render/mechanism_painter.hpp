@@ -6,6 +6,7 @@
 #include <cairo.h>
 
 #include <string>
+#include <vector>
 
 #include "render/camera.hpp"
 #include "render/style.hpp"
@@ -13,11 +14,16 @@
 
 namespace linkage {
 
-/// The frame's fixed text: the title (top left) and the run (under the time, top right).
+/// The frame's fixed text: the title (top left) and the run (in the HUD, top right); and
+/// what a camera following a floating mechanism adds: the grid's heights named and the
+/// inset of the centre of mass's path.
 struct MechanismLabels {
   std::string title;
   std::string run;                    // "Case 3 · dop853"
   std::string ensemble{}, compare{};  // legend rows for the other runs, empty without them
+  double duration = 0;                // s, the clip's last time (the HUD's widest time)
+  bool follows = false;               // the camera follows a floating mechanism's centre of mass
+  std::vector<Vec2> com_path{};       // its path over 0 .. duration at even times (empty: no inset)
 };
 
 /// Paints the whole frame (it is fully covered) for the mechanism at time `t`.

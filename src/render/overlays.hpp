@@ -111,7 +111,7 @@ struct HudText {
   std::array<char, 32> time{};        // "t = 1.23 s"
   std::array<char, 64> run{};         // "Case 3 · dop853"
   std::array<char, 32> energy{};      // "+1.2e−13"
-  std::array<char, 32> constraint{};  // "3.4e−16 m"
+  std::array<char, 32> constraint{};  // "3.4e−16 m"; empty: no constraint row
 };
 /// Fills the time and error fields.
 void format_hud(HudText& hud, double t, double energy_error, double constraint_error);

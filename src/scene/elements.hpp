@@ -28,6 +28,7 @@ enum class Element : std::uint8_t {
   equations,     // the case's equations as `linkage solve` prints them, in a band under the motion
   spring_force,  // a mechanism's spring (and damper) force on each body at its end
   loads,         // a mechanism's applied forces and torques
+  acceleration,  // acceleration of each centre of mass and traced point (a mechanism's)
 };
 
 struct ElementInfo {
@@ -36,7 +37,7 @@ struct ElementInfo {
   bool shown_by_default;
 };
 
-inline constexpr std::array<ElementInfo, 16> kElements{{
+inline constexpr std::array<ElementInfo, 17> kElements{{
     {Element::blocks, "blocks", true},
     {Element::pin, "pin", true},
     {Element::pin_force, "pin-force", true},
@@ -53,6 +54,7 @@ inline constexpr std::array<ElementInfo, 16> kElements{{
     {Element::equations, "equations", false},
     {Element::spring_force, "spring-force", true},
     {Element::loads, "loads", true},
+    {Element::acceleration, "acceleration", false},
 }};
 
 /// Other spellings a mechanism's picture reads more naturally with.
@@ -71,13 +73,13 @@ class ElementSet {
   [[nodiscard]] static ElementSet all();
 
   [[nodiscard]] bool has(Element e) const { return (bits_ & bit(e)) != 0; }
-  void show(Element e) { bits_ = static_cast<std::uint16_t>(bits_ | bit(e)); }
-  void hide(Element e) { bits_ = static_cast<std::uint16_t>(bits_ & ~bit(e)); }
+  void show(Element e) { bits_ |= bit(e); }
+  void hide(Element e) { bits_ &= ~bit(e); }
   bool operator==(const ElementSet&) const = default;
 
  private:
-  static std::uint16_t bit(Element e) { return static_cast<std::uint16_t>(1u << static_cast<unsigned>(e)); }
-  std::uint16_t bits_ = 0;
+  static std::uint32_t bit(Element e) { return 1u << static_cast<unsigned>(e); }
+  std::uint32_t bits_ = 0;
 };
 
 /// The element named `name` (CLI spelling); throws Error::input naming `origin` and

@@ -118,6 +118,7 @@ MechanismGeometry mechanism_geometry(const sym::System& system) {
     shape.length = number(system, body.length);
     shape.width = number(system, body.width);
     shape.radius = number(system, body.radius);
+    shape.mass = number(system, system.bodies()[i].mass);
     for (const NamedPoint& p : body.points)
       shape.points.emplace_back(p.name, vector_of(system, system.bodies()[i].points.at(p.name)));
     g.bodies.push_back(std::move(shape));
@@ -128,6 +129,10 @@ MechanismGeometry mechanism_geometry(const sym::System& system) {
     MechanismGeometry::JointShape shape;
     shape.name = j.name;
     shape.type = j.type;
+    // P.force_x aliased as F_x names the force F (the homework's "F on 1", "−F on 2").
+    const std::string& alias = m.aliased(j.name + ".force_x");
+    if (alias != j.name + ".force_x" && alias.size() > 2 && alias.ends_with("_x"))
+      shape.force_name = alias.substr(0, alias.size() - 2);
     for (std::size_t k = 0; k < 2; ++k) shape.points[k] = point_of(system, j.bodies[k], j.points[k]);
     if (j.axis) {
       const Vec2 axis{number(system, system.quantity(j.axis->x, false)),
@@ -149,6 +154,7 @@ MechanismGeometry mechanism_geometry(const sym::System& system) {
     g.forces.push_back({point_of(system, f.body, f.point), in_time(f.value.x), in_time(f.value.y)});
   for (const AppliedTorque& t : m.torques) g.torques.push_back({m.body_index(t.body), in_time(t.value)});
   g.time = system.time();
+  if (m.gravity) g.gravity = number(system, system.quantity(*m.gravity, false));
   // Gravity and springs as the System states them (one source of truth), compiled once.
   std::vector<GiNaC::ex> outputs;
   const auto numeric = [&](const GiNaC::ex& e) {
@@ -287,7 +293,7 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
   // Each sample's largest force (joint or applied) and torque: the scales' statistics;
   // and per other kind its own largest.
   std::vector<double> largest_force(samples, 0), largest_torque(samples, 0), largest_gravity(samples, 0),
-      largest_spring(samples, 0), largest_velocity(samples, 0);
+      largest_spring(samples, 0), largest_velocity(samples, 0), largest_acceleration(samples, 0);
   std::vector<double> inputs, scratch(geometry_.load_values.scratch_size());
   // The traced points' velocities, shown with the centres of mass's.
   trail_velocity_.assign(samples, {});
@@ -306,6 +312,18 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
         }
     }
     if (!velocities.empty()) traced = eval::compile(velocities, geometry_.inputs);
+  }
+  // The traced points' places in a sample's named points (bodies in order, each body's
+  // points by name), whose accelerations are drawn with the centres of mass's.
+  for (const BodyPoint& trail : trails_) {
+    if (trail.body < 0 || !shown_.has(Element::acceleration)) continue;
+    std::size_t index = 0;
+    for (std::size_t b = 0; b < static_cast<std::size_t>(trail.body); ++b) index += geometry_.bodies[b].points.size();
+    const auto& points = geometry_.bodies[static_cast<std::size_t>(trail.body)].points;
+    const auto own = std::find_if(points.begin(), points.end(), [&](const auto& p) { return p.second == trail.local; });
+    if (own == points.end()) continue;
+    for (const auto& p : points) index += p.first < own->first ? 1 : 0;
+    traced_points_.push_back(index);
   }
   std::vector<double> scratch_traced(traced.scratch_size());
   for (std::size_t k = 0; k < samples; ++k) {
@@ -358,6 +376,13 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
     }
     for (std::size_t i = 0; i < geometry_.bodies.size() && !s.rates.empty(); ++i)
       largest_velocity[k] = std::max(largest_velocity[k], std::hypot(s.rates[3 * i], s.rates[3 * i + 1]));
+    for (std::size_t i = 0; 3 * i + 1 < s.accelerations.size(); ++i)
+      largest_acceleration[k] =
+          std::max(largest_acceleration[k], std::hypot(s.accelerations[3 * i], s.accelerations[3 * i + 1]));
+    for (const std::size_t p : traced_points_)
+      if (6 * p + 5 < s.points.size())
+        largest_acceleration[k] =
+            std::max(largest_acceleration[k], std::hypot(s.points[6 * p + 4], s.points[6 * p + 5]));
     if (traced.output_count() > 0 && !s.rates.empty()) {
       load_inputs(s, motion_.times[k], inputs);
       trail_velocity_[k].resize(traced.output_count());
@@ -436,6 +461,16 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
   gravity_scale_ = own_scale(Kind::gravity, Element::gravity, largest_gravity, "gravity", "N", true);
   spring_scale_ = own_scale(Kind::spring, Element::spring_force, largest_spring, "spring", "N", true);
   velocity_scale_ = own_scale(Kind::velocity, Element::velocity, largest_velocity, "velocity", "m/s", false);
+  acceleration_scale_ =
+      own_scale(Kind::acceleration, Element::acceleration, largest_acceleration, "acceleration", "m/s²", false);
+  for (const BodyPoint& trail : trails_) {  // "path of P": the point's own name
+    const std::vector<std::pair<std::string, Vec2>>& named =
+        trail.body < 0 ? geometry_.ground : geometry_.bodies[static_cast<std::size_t>(trail.body)].points;
+    for (const auto& [name, at] : named)
+      if (at == trail.local) legend_.trails.push_back("path of " + name);
+  }
+  legend_.trail_seconds = trail_seconds_;
+  legend_.com = shown_.has(Element::com) && !geometry_.bodies.empty();
   const double typical_torque = typical_of(largest_torque);
   if (typical_torque > 0 && std::isfinite(typical_torque)) torque_scale_ = kTypicalSweep / typical_torque;
 
@@ -490,9 +525,12 @@ void MechanismScene::set_shortest_arrow(double metres, double drawn) {
 Vec2 MechanismScene::centroid(std::size_t k) const {
   const std::vector<double>& pose = motion_.samples[k].pose;
   Vec2 sum = Vec2::Zero();
-  const std::size_t n = geometry_.bodies.size();
-  for (std::size_t i = 0; i < n; ++i) sum += Vec2(pose[3 * i], pose[3 * i + 1]);
-  return n == 0 ? sum : sum / static_cast<double>(n);
+  double mass = 0;
+  for (std::size_t i = 0; i < geometry_.bodies.size(); ++i) {
+    sum += geometry_.bodies[i].mass * Vec2(pose[3 * i], pose[3 * i + 1]);
+    mass += geometry_.bodies[i].mass;
+  }
+  return mass > 0 ? Vec2(sum / mass) : sum;
 }
 
 MechanismDrawList::Arrow MechanismScene::force_arrow(MechanismDrawList::Arrow::Kind kind, const Vec2& at,
@@ -507,8 +545,9 @@ MechanismDrawList::Arrow MechanismScene::force_arrow(MechanismDrawList::Arrow::K
     arrow.stretched = !arrow.cut;
     arrow.vector *= (arrow.cut ? arrow_cap_ : stretched_) / length;
     if (!applied && !arrow.label.empty())
-      arrow.label +=
-          ": " + format_quantity(arrow.force, kind == MechanismDrawList::Arrow::Kind::velocity ? "m/s" : "N");
+      arrow.label += ": " + format_quantity(arrow.force, kind == MechanismDrawList::Arrow::Kind::velocity       ? "m/s"
+                                                         : kind == MechanismDrawList::Arrow::Kind::acceleration ? "m/s²"
+                                                                                                                : "N");
   }
   return arrow;
 }
@@ -526,6 +565,8 @@ double MechanismScene::scale_of(MechanismDrawList::Arrow::Kind kind) const {
       return spring_scale_;
     case Kind::velocity:
       return velocity_scale_;
+    case Kind::acceleration:
+      return acceleration_scale_;
   }
   return 0;
 }
@@ -564,6 +605,34 @@ void MechanismScene::add_load_arrows(std::size_t k, MechanismDrawList& out) cons
     out.arrows.push_back(force_arrow(Kind::velocity, world_point(motion_.samples[k].pose, point), v,
                                      tags ? "v of " + body.name + "." + name : ""));
     out.arrows.back().body = point.body;
+  }
+  add_acceleration_arrows(k, out);
+}
+
+void MechanismScene::add_acceleration_arrows(std::size_t k, MechanismDrawList& out) const {
+  const eval::MechanismSample& s = motion_.samples[k];
+  const bool tags = shown_.has(Element::labels);
+  using Kind = MechanismDrawList::Arrow::Kind;
+  for (std::size_t i = 0; acceleration_scale_ > 0 && 3 * i + 1 < s.accelerations.size(); ++i) {
+    const Vec2 a(s.accelerations[3 * i], s.accelerations[3 * i + 1]);
+    if (a.norm() == 0) continue;
+    out.arrows.push_back(force_arrow(Kind::acceleration, Vec2(s.pose[3 * i], s.pose[3 * i + 1]), a,
+                                     tags ? "a of " + geometry_.bodies[i].name : ""));
+    out.arrows.back().body = static_cast<int>(i);
+  }
+  for (std::size_t t = 0, i = 0; acceleration_scale_ > 0 && t < trails_.size(); ++t) {
+    if (trails_[t].body < 0 || i >= traced_points_.size()) continue;
+    const std::size_t p = traced_points_[i++];
+    if (6 * p + 5 >= s.points.size()) continue;
+    const Vec2 a(s.points[6 * p + 4], s.points[6 * p + 5]);
+    if (a.norm() == 0) continue;
+    const MechanismGeometry::BodyShape& body = geometry_.bodies[static_cast<std::size_t>(trails_[t].body)];
+    std::string name;
+    for (const auto& [n, at] : body.points)
+      if (at == trails_[t].local) name = n;
+    out.arrows.push_back(force_arrow(Kind::acceleration, Vec2(s.points[6 * p], s.points[6 * p + 1]), a,
+                                     tags ? "a of " + body.name + "." + name : ""));
+    out.arrows.back().body = trails_[t].body;
   }
 }
 
@@ -693,6 +762,11 @@ void legend_for_frame(MechanismDrawList& out) {
   std::erase_if(legend.rows, [&](const MechanismDrawList::Legend::Row& row) { return !present(row.kind); });
   legend.cut = std::any_of(out.arrows.begin(), out.arrows.end(), [](const auto& a) { return a.cut; });
   legend.stretched = std::any_of(out.arrows.begin(), out.arrows.end(), [](const auto& a) { return a.stretched; });
+  if (std::none_of(out.lines.begin(), out.lines.end(),
+                   [](const auto& l) { return l.kind == MechanismDrawList::Line::Kind::trail; }))
+    legend.trails.clear();
+  legend.com = legend.com && std::any_of(out.markers.begin(), out.markers.end(),
+                                         [](const auto& m) { return m.kind == MechanismDrawList::Marker::Kind::com; });
 }
 
 }  // namespace
@@ -702,6 +776,11 @@ void MechanismScene::frame(std::size_t k, MechanismDrawList& out) const {
   out.legend = legend_;
   out.shown = shown_;
   const eval::MechanismSample& s = motion_.samples[k];
+  out.centre_of_mass = centroid(k);
+  out.hud = {};
+  if (k < motion_.energy_error.size()) out.hud.energy_error = motion_.energy_error[k];
+  out.hud.constraint = motion_.constraints_kept;
+  for (const double c : s.constraint) out.hud.constraint_error = std::max(out.hud.constraint_error, c);
   const std::vector<double>& pose = s.pose;
   const bool bodies = shown_.has(Element::blocks);
   for (std::size_t i = 0; bodies && i < geometry_.bodies.size(); ++i) {
@@ -747,10 +826,11 @@ void MechanismScene::frame(std::size_t k, MechanismDrawList& out) const {
     for (std::size_t side = 0; side < 2 && shown_.has(Element::pin_force); ++side) {
       const int body = joint.points[side].body;
       if (body < 0) continue;  // the ground's reaction is not drawn
+      // Named by its alias when it has one ("F on 1", "−F on 2"), else by its joint.
+      const std::string by = joint.force_name.empty() ? joint.name : (side == 0 ? "" : "\u2212") + joint.force_name;
       out.arrows.push_back(force_arrow(
           MechanismDrawList::Arrow::Kind::joint, side == 0 ? p0 : p1, side == 0 ? force : Vec2(-force),
-          shown_.has(Element::labels) ? joint.name + " on " + geometry_.bodies[static_cast<std::size_t>(body)].name
-                                      : ""));
+          shown_.has(Element::labels) ? by + " on " + geometry_.bodies[static_cast<std::size_t>(body)].name : ""));
       out.arrows.back().body = body;
     }
   }

@@ -30,6 +30,7 @@ struct MechanismGeometry {
     std::string name;
     Shape shape = Shape::point;
     double length = 0, width = 0, radius = 0;          // m; those the shape has, else 0
+    double mass = 0;                                   // kg
     std::vector<std::pair<std::string, Vec2>> points;  // body frame
   };
   struct JointShape {
@@ -37,6 +38,9 @@ struct MechanismGeometry {
     JointType type = JointType::pin;
     std::array<BodyPoint, 2> points;  // the joint's point on bodies[0] and bodies[1]
     Vec2 axis = Vec2::UnitX();        // slider: unit, in the frame of bodies[0]
+    /// The force's own name when the file's [aliases] give `<joint>.force_x` as
+    /// `<name>_x` (two-blocks: P.force_x = F_x, so "F on 1", "−F on 2"); else empty.
+    std::string force_name{};
   };
   struct SpringShape {
     std::string name;
@@ -70,6 +74,7 @@ struct MechanismGeometry {
   /// Per load: force x, y (N) and its point x, y (m), world frame; inputs per body x, y,
   /// theta, then per body their rates, then t (load_inputs).
   eval::Program load_values;
+  double gravity = 0;  // m/s^2, along -y
   /// Per body, per named point: its world velocity x, y in load_values' inputs, the time
   /// derivative of its position as the System states it (compiled for the points traced).
   std::vector<std::vector<std::array<GiNaC::ex, 2>>> point_velocities;
@@ -116,7 +121,7 @@ struct MechanismDrawList {
     int body = -1;                   // the body it moves with in the free-body view (-1: the world)
   };
   struct Arrow {
-    enum class Kind { joint, applied, gravity, spring, velocity } kind = Kind::joint;
+    enum class Kind { joint, applied, gravity, spring, velocity, acceleration } kind = Kind::joint;
     Vec2 tail = Vec2::Zero(), vector = Vec2::Zero();  // vector in metres: force x scale, or cut
     double force = 0;                                 // N, the magnitude
     bool cut = false;                                 // drawn shorter than the scale says
@@ -155,6 +160,10 @@ struct MechanismDrawList {
       std::string value, scale;  // "2 N", "1 cm = 0.5 N"
     };
     std::vector<Row> rows;
+    std::vector<std::string> trails;  // a row per traced point: "path of P"
+    double trail_seconds = 0;         // "last 2 s"
+    bool com = false;                 // the centres-of-mass row
+    std::string note{};               // a closing line: "the view follows the centre of mass; ..."
   };
   std::vector<Outline> outlines;
   std::vector<Line> lines;
@@ -171,6 +180,14 @@ struct MechanismDrawList {
   };
   std::vector<Ghost> ghosts;
   Legend legend;
+  /// The HUD's errors at this sample: the energy balance E − E0 − W (J) and, when the
+  /// case keeps a constraint, the largest joint's constraint error (m).
+  struct Hud {
+    double energy_error = 0, constraint_error = 0;
+    bool constraint = false;
+  };
+  Hud hud;
+  Vec2 centre_of_mass = Vec2::Zero();         // of the whole mechanism, world
   ElementSet shown = ElementSet::defaults();  // also what the painter adds: grid, axes, hud, legend, title
   void clear();
 };
@@ -180,6 +197,8 @@ struct MechanismDrawList {
 struct MechanismMotion {
   std::vector<double> times;
   std::vector<eval::MechanismSample> samples;
+  std::vector<double> energy_error;  // per sample: E − E0 − W, J (empty: not recorded)
+  bool constraints_kept = false;     // the case keeps a joint's constraint (its error is worth showing)
   std::vector<double> trail_times;
   std::vector<std::vector<double>> trail_poses;
 };
@@ -207,7 +226,8 @@ class MechanismScene {
   [[nodiscard]] const MechanismGeometry& geometry() const { return geometry_; }
   /// Every outline point over the motion and the ground points (the fixed camera's view).
   [[nodiscard]] const Bounds& bounds() const { return bounds_; }
-  /// The mean of the bodies' centres at sample k (the floating camera's centre).
+  /// The mechanism's centre of mass at sample k (the floating camera's centre): the
+  /// bodies' centres weighted by their masses.
   [[nodiscard]] Vec2 centroid(std::size_t k) const;
   /// The largest distance of an outline point from the centroid over the motion.
   [[nodiscard]] double reach() const { return reach_; }
@@ -247,13 +267,15 @@ class MechanismScene {
   std::vector<std::vector<double>> trail_velocity_;  // per sample: each traced point's velocity x, y
   ElementSet shown_;
   bool free_body_ = false;
-  double gravity_scale_ = 0, spring_scale_ = 0, velocity_scale_ = 0;
+  double gravity_scale_ = 0, spring_scale_ = 0, velocity_scale_ = 0, acceleration_scale_ = 0;
+  std::vector<std::size_t> traced_points_;  // per traced point on a body: its index in MechanismSample::points
 
   void add_spring(const MechanismGeometry::SpringShape& spring, std::size_t index, const std::vector<double>& pose,
                   MechanismDrawList& out) const;
   void add_loads(std::size_t k, MechanismDrawList& out) const;
   void add_trails(std::size_t k, MechanismDrawList& out) const;
   void add_load_arrows(std::size_t k, MechanismDrawList& out) const;
+  void add_acceleration_arrows(std::size_t k, MechanismDrawList& out) const;
   void place_joints(const std::vector<double>& pose, std::size_t first_marker, std::size_t first_line,
                     MechanismDrawList& out) const;
   void pull_apart(std::size_t k, MechanismDrawList& out) const;

@@ -149,28 +149,31 @@ TEST(RenderCli, OnlyTheWorkThePictureNeeds) {
   TempDir dir;
   const std::string frames = (dir / "f").string();
   std::filesystem::create_directory(frames);
-  // A PNG sequence opens no encoder; static layers are drawn once however many frames.
+  // A PNG sequence opens no encoder. The homework is drawn as any mechanism (two-blocks.toml):
+  // every frame painted whole, the joint force part of every sample (no separate solves).
   const nlohmann::json sequence = stats_of(render({"--duration", "2", "--frames", frames, "--stats"}));
   EXPECT_EQ(sequence["encoder_opened"], false);
   EXPECT_EQ(sequence["frames_drawn"], 20);
   EXPECT_EQ(sequence["png_files_written"], 20);
-  EXPECT_EQ(sequence["static_layer_draws"], 4);  // background and grid, title, legend, scale bar
-  EXPECT_EQ(sequence["force_evaluations"], 20);  // one pin-force solve per frame, for its arrows
-  EXPECT_GT(sequence["trail_points_drawn"], 20);
+  EXPECT_GT(sequence["trail_points_drawn"], 20);  // the file's [picture] trail of P
 
-  // No force arrow drawn: the pin force is never solved for. No trail: no trail points.
+  // No trail: no trail points, and no samples between the frames for it.
   const nlohmann::json bare =
       stats_of(render({"--duration", "2", "--frames", frames, "--hide", "pin-force,trail", "--stats"}));
-  EXPECT_EQ(bare["force_evaluations"], 0);
   EXPECT_EQ(bare["trail_points_drawn"], 0);
   EXPECT_EQ(bare["frames_drawn"], 20);
+  EXPECT_EQ(bare["samples"], 20);
+  EXPECT_GT(sequence["samples"], bare["samples"]);
 
-  // A still draws one frame; without a trail it samples the motion once.
+  // A still draws one frame; without a trail it samples only the frames of the 2 s before
+  // it (its arrow scales see what a clip's would), none between them.
   const nlohmann::json still =
       stats_of(render({"--out", (dir / "s.png").string(), "--at", "3", "--hide", "trail", "--stats"}));
+  const nlohmann::json trailed = stats_of(render({"--out", (dir / "t.png").string(), "--at", "3", "--stats"}));
   EXPECT_EQ(still["frames_drawn"], 1);
-  EXPECT_EQ(still["samples"], 1);
-  EXPECT_EQ(still["force_evaluations"], 1);
+  EXPECT_EQ(still["trail_points_drawn"], 0);
+  EXPECT_GT(trailed["trail_points_drawn"], 0);
+  EXPECT_LT(still["samples"], trailed["samples"]);
   EXPECT_EQ(still["encoder_opened"], false);
 
   // A video opens its encoder.
@@ -189,17 +192,18 @@ TEST(RenderCli, VideoAndSequenceTogether) {
   EXPECT_EQ(entries(dir / "f").size(), 3u);
 }
 
-// A clip of a run whose numbers mean nothing (explicit Euler, Case 1, no stabilization,
-// a large step: the pin drifts metres) is made, and ends with one warning, even with
-// --quiet; the spec's example gives none.
-TEST(RenderCli, AMeaninglessRunEndsWithOneWarning) {
+// A run whose numbers mean nothing (explicit Euler, Case 1, no stabilization, a large
+// step: the pin drifts apart) is refused as any mechanism's is: one line naming the joint
+// that came apart, exit 3, no picture, even with --quiet; the spec's example gives none.
+TEST(RenderCli, AMeaninglessRunEndsWithOneError) {
   TempDir dir;
   const RunResult r = render({"--out", (dir / "drift.png").string(), "--at", "10", "--case", "1", "--integrator",
                               "euler", "--dt", "0.05", "--theta1-dot", "20", "--theta2-dot", "-35"});
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(r.err.rfind("linkage: warning: the run's numbers do not describe the motion: ", 0), 0u) << r.err;
+  ASSERT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_EQ(r.err.rfind("linkage: error: the simulation failed at t = ", 0), 0u) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-  EXPECT_NE(r.err.find("the pin came "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("joint P came "), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "drift.png"));
   const RunResult example = render({"--out", (dir / "example.png").string(), "--at", "10"});
   ASSERT_EQ(example.exit_code, 0) << example.err;
   EXPECT_EQ(example.err, "");

@@ -334,7 +334,7 @@ TEST(MechanismScene, FixedViewHoldsEveryCornerOverTheMotion) {
   }
 }
 
-TEST(MechanismScene, TwoBlocksFloatAndLabelForcesByJointAndBody) {
+TEST(MechanismScene, TwoBlocksFloatAndLabelForcesByTheirAliasAndBody) {
   const sym::System system(load_mechanism("two-blocks"));
   const MechanismMotion motion = sampled(system, 0.2, 0.1);
   const MechanismGeometry geometry = mechanism_geometry(system);
@@ -345,8 +345,9 @@ TEST(MechanismScene, TwoBlocksFloatAndLabelForcesByJointAndBody) {
   MechanismDrawList list;
   scene.frame(2, list);
   ASSERT_EQ(list.arrows.size(), 2U);
-  EXPECT_EQ(list.arrows[0].label, "P on 1");
-  EXPECT_EQ(list.arrows[1].label, "P on 2");
+  // Named as the file's [aliases] name the force (P.force_x = F_x): the homework's labels.
+  EXPECT_EQ(list.arrows[0].label, "F on 1");
+  EXPECT_EQ(list.arrows[1].label, "\u2212F on 2");
   EXPECT_NEAR((list.arrows[0].vector + list.arrows[1].vector).norm(), 0, 1e-12);
   ASSERT_FALSE(list.lines.empty());
   EXPECT_EQ(list.lines.back().points.size(), 3U);  // the trail through every sample so far

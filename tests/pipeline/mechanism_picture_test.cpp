@@ -200,6 +200,111 @@ TEST(MechanismPicture, TracedPointsVelocityIsTheDerivativeOfItsPath) {
   EXPECT_NEAR((velocities[3].tail - world_point(motion.samples[1].pose, p)).norm(), 0, 1e-12);
 }
 
+// --show acceleration: each centre of mass's acceleration as the sample gives it, and a
+// traced point's the second difference of its path; its own legend row and scale.
+TEST(MechanismPicture, AccelerationArrowsAreTheSamplesAccelerations) {
+  const sym::System system(load_mechanism("four-bar"));
+  const MechanismGeometry geometry = mechanism_geometry(system);
+  const BodyPoint p = geometry.resolve("3.P", "trail");
+  const double h = 1e-3;
+  const std::vector<double> times{0.5 - h, 0.5, 0.5 + h};
+  SimulationOptions options;
+  options.duration = 0.6;
+  options.rtol = 1e-12;
+  options.atol = 1e-12;
+  ClipResult result;
+  const MechanismMotion motion = sample_mechanism_motion(system, sym::checked_initial_state(system).state, options,
+                                                         times, 1, result, {}, {}, nullptr, {}, true);
+  ElementSet shown = ElementSet::defaults();
+  EXPECT_FALSE(shown.has(Element::acceleration));  // off by default
+  shown.show(Element::acceleration);
+  const MechanismScene scene(geometry, motion, {p}, 2.0, {}, shown);
+  MechanismDrawList list;
+  scene.frame(1, list);
+  const auto accelerations = arrows_of(list, Kind::acceleration);
+  ASSERT_EQ(accelerations.size(), 4U);  // three centres of mass, then P
+  const eval::MechanismSample& s = motion.samples[1];
+  for (std::size_t i = 0; i < 3; ++i) {
+    const Vec2 a(s.accelerations[3 * i], s.accelerations[3 * i + 1]);
+    EXPECT_NEAR(accelerations[i].force, a.norm(), 1e-12);
+    EXPECT_NEAR((accelerations[i].tail - Vec2(s.pose[3 * i], s.pose[3 * i + 1])).norm(), 0, 1e-12);
+    if (!accelerations[i].cut && !accelerations[i].stretched) {
+      EXPECT_NEAR((accelerations[i].vector - scene.scale_of(Kind::acceleration) * a).norm(), 0, 1e-12);
+    }
+  }
+  EXPECT_EQ(accelerations[3].label.rfind("a of 3.P", 0), 0U);
+  const Vec2 expected =
+      (world_point(motion.samples[2].pose, p) - 2 * world_point(s.pose, p) + world_point(motion.samples[0].pose, p)) /
+      (h * h);
+  const Vec2 drawn = accelerations[3].force * accelerations[3].vector.normalized();
+  EXPECT_NEAR((drawn - expected).norm(), 0, 1e-4 * expected.norm());
+  EXPECT_NEAR((accelerations[3].tail - world_point(s.pose, p)).norm(), 0, 1e-12);
+  EXPECT_TRUE(has_row(list.legend, Kind::acceleration));
+  // Hidden (the default): none, and no row.
+  const MechanismScene plain(geometry, motion, {p}, 2.0, {}, ElementSet::defaults());
+  plain.frame(1, list);
+  EXPECT_TRUE(arrows_of(list, Kind::acceleration).empty());
+  EXPECT_FALSE(has_row(list.legend, Kind::acceleration));
+}
+
+// The homework's look as general features: a row per trail ("path of P, last 2 s"), the
+// centres of mass's row, the HUD's energy balance (the energy_error column's value) and,
+// only when the case keeps a constraint, the joints' largest constraint error; the centre
+// of mass the bodies' centres weighted by their masses.
+TEST(MechanismPicture, LegendRowsHudAndCentreOfMassOfTheTwoBlocks) {
+  const sym::System system(load_mechanism("unequal-blocks"));
+  const MechanismGeometry geometry = mechanism_geometry(system);
+  const std::vector<double> times{0, 0.1, 0.2};
+  for (const int case_id : {1, 3}) {
+    SCOPED_TRACE(case_id);
+    SimulationOptions options;
+    options.duration = 0.2;
+    options.case_id = case_id;
+    ClipResult result;
+    const MechanismMotion motion =
+        sample_mechanism_motion(system, sym::checked_initial_state(system).state, options, times, 1, result);
+    ASSERT_EQ(motion.energy_error.size(), 3U);
+    EXPECT_EQ(motion.constraints_kept, case_id == 1);
+    const BodyPoint p = geometry.resolve(
+        system.mechanism().bodies[0].name + "." + system.mechanism().bodies[0].points.front().name, "trail");
+    const MechanismScene scene(geometry, motion, {p}, 2.0, {}, ElementSet::defaults());
+    MechanismDrawList list;
+    scene.frame(2, list);
+    ASSERT_EQ(list.legend.trails.size(), 1U);
+    EXPECT_EQ(list.legend.trails[0], "path of " + system.mechanism().bodies[0].points.front().name);
+    EXPECT_EQ(list.legend.trail_seconds, 2.0);
+    EXPECT_TRUE(list.legend.com);
+    EXPECT_EQ(list.hud.energy_error, motion.energy_error[2]);
+    EXPECT_LT(std::fabs(list.hud.energy_error), 1e-6);
+    EXPECT_EQ(list.hud.constraint, case_id == 1);
+    double largest = 0;
+    for (const double c : motion.samples[2].constraint) largest = std::max(largest, c);
+    EXPECT_EQ(list.hud.constraint_error, largest);
+    const std::vector<double>& pose = motion.samples[2].pose;
+    Vec2 weighted = Vec2::Zero();
+    double mass = 0;
+    for (std::size_t i = 0; i < geometry.bodies.size(); ++i) {
+      weighted += geometry.bodies[i].mass * Vec2(pose[3 * i], pose[3 * i + 1]);
+      mass += geometry.bodies[i].mass;
+    }
+    EXPECT_NEAR((list.centre_of_mass - weighted / mass).norm(), 0, 1e-12);
+    EXPECT_NE(geometry.bodies[0].mass, geometry.bodies[1].mass);  // unequal: not the mean of the centres
+  }
+  ElementSet bare = ElementSet::defaults();
+  bare.hide(Element::trail);
+  bare.hide(Element::com);
+  SimulationOptions options;
+  options.duration = 0.2;
+  ClipResult result;
+  const MechanismMotion motion =
+      sample_mechanism_motion(system, sym::checked_initial_state(system).state, options, times, 1, result);
+  const MechanismScene scene(geometry, motion, {}, 2.0, {}, bare);
+  MechanismDrawList list;
+  scene.frame(1, list);
+  EXPECT_TRUE(list.legend.trails.empty());
+  EXPECT_FALSE(list.legend.com);
+}
+
 // The free-body view: every body pulled away from the others, carrying every force on it
 // (joint forces as equal and opposite pairs, one on each body, gravity at its centre), and
 // each body its half of each pin between bodies.
