@@ -191,11 +191,12 @@ std::vector<RenderOption> make_options() {
       {"angles", V::string, "string", "rad|deg", "\"rad\"",
        "Unit of the panel's angles and angular rates: rad or deg (axis in deg, deg/s)", angles},
       {"trail", V::list, "list of strings", "BODY.POINT", "none",
-       "A mechanism's: draw the path of a body's point over the last 2 s, e.g. 3.B (a four-bar's coupler curve)",
+       "Draw the path of a body's point over the last 2 s, e.g. 3.B (a four-bar's coupler curve); default: the "
+       "file's [picture] trail (the homework's P)",
        trail},
       {"ensemble", V::integer, "integer", "N", "none",
        "Draw N runs (2 .. 200) starting up to spread apart, faint in a colour ramp behind the main run (chaos "
-       "fanning out): the homework's theta1, a mechanism's first coordinate",
+       "fanning out): in the file's [picture] ensemble coordinate (the homework's theta1), else the first",
        ensemble},
       {"spread", V::number, "number", "X", "1e-6",
        "The ensemble's largest initial offset, rad or m; run k starts spread k/(N-1) away", spread},
