@@ -21,7 +21,6 @@ constexpr const char* kGravityName = "gravity";
 constexpr const char* kSpringName = "spring forces";
 constexpr const char* kVelocityName = "velocity";
 constexpr const char* kAccelerationName = "acceleration";
-constexpr const char* kComName = "centres of mass";
 constexpr const char* kCutNote = "cut short: its label gives the value";
 // On two lines, so the legend stays narrow enough to fit beside a body.
 constexpr const char* kStretchedNote = "dashed: too short to see at its scale,";
@@ -137,7 +136,6 @@ Vec2 legend_rows(cairo_t* cr, const DrawStyle& style, const Camera& camera, cons
   if (forces && legend.applied) names = std::max(names, text::width(cr, font, kAppliedName));
   for (const List::Legend::Row& r : legend.rows) names = std::max(names, text::width(cr, font, row_name(r.kind)));
   for (const std::string& trail : legend.trails) names = std::max(names, text::width(cr, font, trail.c_str()));
-  if (legend.com) names = std::max(names, text::width(cr, font, kComName));
   double y = at.y(), widest = 0;
   const auto baseline = [&] { return y + 0.5 * row + 0.5 * (m.ascent - m.descent); };
   const auto scale_row = [&](const char* name, const Rgba& colour, double metres, const std::string& value,
@@ -178,7 +176,7 @@ Vec2 legend_rows(cairo_t* cr, const DrawStyle& style, const Camera& camera, cons
     scale_row(row_name(r.kind), arrow_colour(theme, r.kind), r.metres, r.value, r.scale);
   if (legend.cut) marked_row(kCutNote, nullptr, true);
   if (legend.stretched) marked_row(kStretchedNote, kStretchedNote2, false);
-  // What is not an arrow: each trail (a line), the centres of mass (their symbol), a note.
+  // What is not an arrow: each trail (a line), then a note.
   const double glyph = 40 * u, x = at.x() + names + 8 * u;
   char seconds[32];
   std::snprintf(seconds, sizeof seconds, "last %g s", legend.trail_seconds);
@@ -193,14 +191,6 @@ Vec2 legend_rows(cairo_t* cr, const DrawStyle& style, const Camera& camera, cons
       text::draw(cr, font, x + glyph + 6 * u, baseline(), seconds, theme.text_muted);
     }
     widest = std::max(widest, names + 8 * u + glyph + 6 * u + text::width(cr, font, seconds));
-    y += row;
-  }
-  if (legend.com) {
-    if (paint) {
-      text::draw(cr, font, at.x(), baseline(), kComName, theme.text);
-      paint_com_symbol(cr, style, {x + 0.5 * glyph, y + 0.5 * row}, style.com_radius());
-    }
-    widest = std::max(widest, names + 8 * u + glyph);
     y += row;
   }
   if (!legend.note.empty()) {
@@ -321,7 +311,7 @@ void place_legend(cairo_t* cr, const DrawStyle& style, const Camera& camera, con
                   const std::vector<Rect>& occupied, ForceLayout& layout) {
   const List::Legend& legend = list.legend;
   if ((!(legend.metres > 0) || !(legend.joint || legend.applied)) && legend.rows.empty() && legend.trails.empty() &&
-      !legend.com && legend.note.empty())
+      legend.note.empty())
     return;
   const double pad = 8 * style.u;
   const Vec2 content = legend_rows(cr, style, camera, legend, Vec2::Zero(), false);

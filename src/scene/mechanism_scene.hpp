@@ -162,7 +162,6 @@ struct MechanismDrawList {
     std::vector<Row> rows;
     std::vector<std::string> trails;  // a row per traced point: "path of P"
     double trail_seconds = 0;         // "last 2 s"
-    bool com = false;                 // the centres-of-mass row
     std::string note{};               // a closing line: "the view follows the centre of mass; ..."
   };
   std::vector<Outline> outlines;

@@ -152,10 +152,11 @@ TEST(MechanismClip, GifAndWebmClipsMatchTheirDrawnFrames) {
     };
     for (std::size_t k = 0; k < video.rgb.size(); ++k) {
       // Mostly flat theme colours: within a level or two on average (WebM's limited-range
-      // YUV moves white by a level or two everywhere), and closer to its own drawing
-      // than to the next one (the links move between frames).
+      // YUV moves white by a level or two everywhere; the HUD's panel of text, a fifth of
+      // this small frame, adds about half a level: 3.14 measured), and closer to its own
+      // drawing than to the next one (the links move between frames).
       const double own = error(k, k);
-      EXPECT_LT(own, name.ends_with(".gif") ? 2.0 : 3.0) << name << " frame " << k;
+      EXPECT_LT(own, name.ends_with(".gif") ? 2.0 : 3.5) << name << " frame " << k;
       if (k + 1 < video.rgb.size()) {
         EXPECT_LT(own, error(k, k + 1)) << name << " frame " << k;
       }
