@@ -145,6 +145,30 @@ TEST(RenderCli, HomeworkOverlaysFromSettingsAndATrajectoryFile) {
             still("blocks_plain.png", {"--mechanism", "two-blocks"}));
 }
 
+// Issue 23 (f): the homework is two-blocks.toml drawn as any mechanism: its flags and
+// `--mechanism two-blocks --set` at the same settings give the same picture, byte for byte,
+// a still and a clip's frames alike.
+TEST(RenderCli, TheHomeworkIsTwoBlocksDrawnAsAnyMechanism) {
+  TempDir dir;
+  const auto drawn = [&](const std::string& name, std::vector<std::string> flags) {
+    flags.insert(flags.end(), {"--out", (dir / name).string(), "--at", "1.5", "--show", "velocity,acceleration"});
+    const RunResult r = render(flags);
+    EXPECT_EQ(r.exit_code, 0) << name << ": " << r.err;
+    return file_bytes(dir / name);
+  };
+  const auto homework = drawn("homework.png", {"--L", "0.4", "--theta1", "0.3", "--case", "1"});
+  EXPECT_EQ(homework, drawn("mechanism.png",
+                            {"--mechanism", "two-blocks", "--set", "L=0.4", "--set", "1.theta=0.3", "--case", "1"}));
+  EXPECT_NE(homework, drawn("other.png", {"--mechanism", "two-blocks", "--case", "1"}));
+  for (const std::string flags : {"homework", "mechanism"}) {
+    std::vector<std::string> args{"--duration", "0.2", "--frames", (dir / flags).string()};
+    if (flags == "mechanism") args.insert(args.end(), {"--mechanism", "two-blocks"});
+    ASSERT_EQ(render(args).exit_code, 0);
+  }
+  for (const std::string& frame : entries(dir / "homework"))
+    EXPECT_EQ(file_bytes(dir / "homework" / frame), file_bytes(dir / "mechanism" / frame)) << frame;
+}
+
 TEST(RenderCli, OnlyTheWorkThePictureNeeds) {
   TempDir dir;
   const std::string frames = (dir / "f").string();
