@@ -427,6 +427,12 @@ ForceLayout layout_forces(cairo_t* cr, const DrawStyle& style, const Camera& cam
     const Vec2 along = tip - tail;
     add(arrow.label, tip, along.norm() > 0 ? Vec2(along.normalized()) : Vec2(0, -1), arrow.kind);
   }
+  // Each joint's name beside its point, below and to the right as a drawing puts it.
+  for (const List::Label& joint : list.joint_labels) {
+    const std::size_t before = layout.labels.size();
+    add(joint.text, camera.to_pixels(joint.at), Vec2(1, 1).normalized(), List::Arrow::Kind::joint);
+    if (layout.labels.size() > before) layout.labels.back().joint = true;
+  }
   for (const List::Torque& torque : list.torques) {
     // Outside the arc's middle, away from the body.
     const double middle = torque.start + 0.5 * torque.sweep;
@@ -480,7 +486,7 @@ void paint_forces(cairo_t* cr, const DrawStyle& style, const Camera& camera, con
   // Labels after every arrow, so no shaft crosses a label.
   const text::Font font = label_font(style);
   for (const PlacedLabel& label : layout.labels) {
-    const Rgba& colour = arrow_colour(theme, label.kind);
+    const Rgba& colour = label.joint ? theme.text : arrow_colour(theme, label.kind);
     const Vec2 at = centre_of(label.box);
     if (label.leader) {
       // A thin line from the head to the box's nearest point.

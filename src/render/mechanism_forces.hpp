@@ -24,6 +24,7 @@ struct PlacedLabel {
   bool applied = false;  // an applied load's, else a joint force's or another kind's
   bool leader = false;   // moved off its head far enough to need a line to it
   MechanismDrawList::Arrow::Kind kind = MechanismDrawList::Arrow::Kind::joint;  // its colour
+  bool joint = false;  // a joint's name (in the text colour), else a load's
 };
 
 struct ForceLayout {

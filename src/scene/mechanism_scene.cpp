@@ -271,6 +271,7 @@ void MechanismDrawList::clear() {
   arrows.clear();
   torques.clear();
   labels.clear();
+  joint_labels.clear();
   ghosts.clear();
 }
 
@@ -806,6 +807,7 @@ void MechanismScene::frame(std::size_t k, MechanismDrawList& out) const {
     switch (joint.type) {  // the drawing of each joint type
       case JointType::pin:
         out.markers.push_back({MechanismDrawList::Marker::Kind::pin, p0});
+        if (shown_.has(Element::labels) && !free_body_) out.joint_labels.push_back({p0, joint.name});
         break;
       case JointType::slider: {
         const double theta0 =
@@ -815,6 +817,7 @@ void MechanismScene::frame(std::size_t k, MechanismDrawList& out) const {
         out.lines.push_back({MechanismDrawList::Line::Kind::rail,
                              {p0 + (rail_span_[j][0] - margin) * axis, p0 + (rail_span_[j][1] + margin) * axis}});
         out.markers.push_back({MechanismDrawList::Marker::Kind::guide, p1, axis});
+        if (shown_.has(Element::labels) && !free_body_) out.joint_labels.push_back({p1, joint.name});
         break;
       }
     }

@@ -169,7 +169,8 @@ struct MechanismDrawList {
   std::vector<Marker> markers;
   std::vector<Arrow> arrows;
   std::vector<Torque> torques;
-  std::vector<Label> labels;  // body names at their centres
+  std::vector<Label> labels;        // body names at their centres
+  std::vector<Label> joint_labels;  // joint names at their points (not in the free-body view)
   /// Another run's bodies, drawn over this one: an ensemble member (faint, at `ramp`
   /// 0..1 of the colour ramp) or the compared run.
   struct Ghost {

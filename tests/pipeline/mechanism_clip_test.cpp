@@ -496,7 +496,7 @@ TEST(MechanismForces, EveryQualityLabelsTheSameArrows) {
 TEST(MechanismForces, EveryArrowCarriesItsLabelAndAShortOneIsDashedPastThePin) {
   std::size_t dashed = 0;
   for_each_laid_out_frame(shipped_mechanism_names(), 2, [&](const LaidOutFrame& f) {
-    EXPECT_EQ(f.layout.labels.size(), f.list.arrows.size() + f.list.torques.size());
+    EXPECT_EQ(f.layout.labels.size(), f.list.arrows.size() + f.list.torques.size() + f.list.joint_labels.size());
     for (const MechanismDrawList::Arrow& arrow : f.list.arrows) {
       const double px = arrow.vector.norm() * f.camera.scale();
       if (px == 0) continue;
@@ -735,7 +735,8 @@ TEST(MechanismForces, LabelsKeepClearOfEachOtherArrowsAndBodiesAndOnlyStubsGoUnl
                 << arrow.label;
           }
         }
-        EXPECT_EQ(labels.size() + unlabelled, list.arrows.size() + list.torques.size());
+        // Every joint named too (the homework's P), clear of all the rest as above.
+        EXPECT_EQ(labels.size() + unlabelled, list.arrows.size() + list.torques.size() + list.joint_labels.size());
       }
     }
   }
