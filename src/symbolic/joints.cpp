@@ -7,6 +7,10 @@ namespace linkage::sym {
 
 Vec2 world_point(const Placement& body, const Vec2& local) { return body.position + rotate(body.angle, local); }
 
+// Each type's stages: its file's one definition.
+extern const JointStages kPinJoint;
+extern const JointStages kSliderJoint;
+
 namespace {
 
 // The registration: one case per joint type. -Wswitch-enum fails the build when a type

@@ -1,6 +1,6 @@
 #pragma once
 // The joint types, one file each (joint_pin.cpp, joint_slider.cpp), every one filling the
-// same stages (JointStages), registered in joints.cpp by one line each:
+// same stages (JointStages), registered in joints.cpp (a declaration and a case each):
 //   rows     its position constraint rows Phi = 0 in its bodies' placements; the velocity
 //            and acceleration rows are their time derivatives (System::time_derivative),
 //            never typed by hand;
@@ -97,9 +97,5 @@ struct JointStages {
 
 /// The joint's axis in the frame of bodies[0] as parsed (zero when its type takes none).
 [[nodiscard]] Vec2 joint_axis(const System& system, const Joint& joint);
-
-// Each type's stages, its file's one definition, registered in joints.cpp.
-extern const JointStages kPinJoint;
-extern const JointStages kSliderJoint;
 
 }  // namespace linkage::sym
