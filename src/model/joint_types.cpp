@@ -1,22 +1,19 @@
 #include "model/joint_types.hpp"
 
 #include <stdexcept>
+#include <vector>
 
 namespace linkage {
 
-const JointTypeInfo& joint_type_info(JointType type) {
-  static constexpr JointTypeInfo kPin{JointMotion::revolute, "stiffness, damping, rest_angle", true, false, false};
-  static constexpr JointTypeInfo kSlider{JointMotion::prismatic, "axis", false, true, true};
-  switch (type) {
-    case JointType::pin:
-      return kPin;
-    case JointType::slider:
-      return kSlider;
-  }
-  throw std::logic_error("joint type out of range");
+std::string joint_types_with(bool JointTypeInfo::*takes) {
+  std::vector<std::string> names;
+  for (const JointTypeInfo& info : kJointTypes)
+    if (info.*takes) names.push_back(std::string(info.name) + "s");
+  std::string out;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    out += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+  return out;
 }
-
-const char* joint_type_name(JointType type) { return kJointTypeNames.at(static_cast<std::size_t>(type)); }
 
 bool has_own_coordinate(JointMotion motion) {
   switch (motion) {

@@ -1,11 +1,16 @@
 #pragma once
-// The model-level stages of each joint type, as data the modules above read: the
-// [[joint]] keys it takes and the coordinate it adds to the spanning tree. A joint type's
-// equations, force, columns and drawing data are its file symbolic/joint_<type>.cpp;
-// docs/joints.md lists the steps to add a type.
-#include "model/mechanism.hpp"
+// The joint types: the enum and, beside it, each type's model-level stages as one row of
+// data (kJointTypes) that the modules above read: its TOML `type`, the [[joint]] keys it
+// takes and the coordinate it adds to the spanning tree. The model cannot see GiNaC, so a
+// type's equations, force, columns and drawing are its file symbolic/joint_<type>.cpp,
+// registered in symbolic/joints.cpp. docs/joints.md lists the steps to add a type.
+#include <array>
+#include <cstddef>
+#include <string>
 
 namespace linkage {
+
+enum class JointType { pin, slider };
 
 /// How the body a tree joint carries moves relative to its parent: which coordinate the
 /// joint adds to the spanning tree, and its joint model in the O(n) recursion.
@@ -15,6 +20,8 @@ enum class JointMotion {
 };
 
 struct JointTypeInfo {
+  JointType type = JointType::pin;  // the row's entry: rows are in the enum's order
+  const char* name = "";            // the TOML `type`: "pin"
   JointMotion motion = JointMotion::revolute;
   const char* options = "";       // its own [[joint]] keys, for messages: "axis"
   bool torsional_spring = false;  // takes stiffness, damping, rest_angle
@@ -22,11 +29,38 @@ struct JointTypeInfo {
   bool keeps_angle = false;       // holds both angles equal: neither body may be a point mass
 };
 
-/// The registration of the joint types' model-level data: one exhaustive switch.
-[[nodiscard]] const JointTypeInfo& joint_type_info(JointType type);
+/// One row per JointType, in the enum's order (checked below; symbolic/joints.cpp checks
+/// that no enum entry lacks its row).
+inline constexpr std::array kJointTypes{
+    JointTypeInfo{JointType::pin, "pin", JointMotion::revolute, "stiffness, damping, rest_angle", true, false, false},
+    JointTypeInfo{JointType::slider, "slider", JointMotion::prismatic, "axis", false, true, true},
+};
+
+static_assert(
+    [] {
+      for (std::size_t i = 0; i < kJointTypes.size(); ++i)
+        if (kJointTypes[i].type != static_cast<JointType>(i)) return false;
+      return true;
+    }(),
+    "kJointTypes: one row per JointType, in the enum's order");
+
+/// The TOML `type` of each joint type, in the enum's order.
+inline constexpr std::array<const char*, kJointTypes.size()> kJointTypeNames = [] {
+  std::array<const char*, kJointTypes.size()> names{};
+  for (std::size_t i = 0; i < kJointTypes.size(); ++i) names[i] = kJointTypes[i].name;
+  return names;
+}();
+
+/// A joint type's row.
+[[nodiscard]] constexpr const JointTypeInfo& joint_type_info(JointType type) {
+  return kJointTypes.at(static_cast<std::size_t>(type));
+}
 
 /// "pin", "slider": the TOML `type`.
-[[nodiscard]] const char* joint_type_name(JointType type);
+[[nodiscard]] constexpr const char* joint_type_name(JointType type) { return joint_type_info(type).name; }
+
+/// The types whose row has `takes`, for messages: "pins", "pins and sliders".
+[[nodiscard]] std::string joint_types_with(bool JointTypeInfo::*takes);
 
 /// Whether the motion has a coordinate of the joint's own (keyed "JOINT.s" in [initial]).
 [[nodiscard]] bool has_own_coordinate(JointMotion motion);

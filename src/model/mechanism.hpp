@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "model/joint_types.hpp"
+
 namespace linkage {
 
 /// Where a value came from: "two-blocks.toml", line and column (1-based; 0 when built in code).
@@ -48,9 +50,6 @@ struct Body {
   std::vector<NamedPoint> points;
   SourcePos pos;
 };
-
-enum class JointType { pin, slider };
-inline constexpr std::array<const char*, 2> kJointTypeNames{"pin", "slider"};
 
 /// The name that stands for the fixed frame in `bodies` and in point references.
 inline constexpr const char* kGround = "ground";

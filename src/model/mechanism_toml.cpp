@@ -570,7 +570,9 @@ class MechanismReader {
     const std::string takes = std::string("a ") + joint_type_name(joint.type) + " takes: " + info.options;
     for (const std::string_view key : {"stiffness", "damping", "rest_angle"}) {
       if (!r.has(key)) continue;
-      if (!info.torsional_spring) r.fail(key, q(key) + " is for pins only (a torsional spring-damper); " + takes);
+      if (!info.torsional_spring)
+        r.fail(key, q(key) + " is for " + joint_types_with(&JointTypeInfo::torsional_spring) +
+                        " only (a torsional spring-damper); " + takes);
       const auto read = quantity_at(r, key);
       if (key == "stiffness") {
         require_bound(*read, key, r.context(), false, "N m/rad");
@@ -582,7 +584,8 @@ class MechanismReader {
         joint.rest_angle = read->quantity;
       }
     }
-    if (!info.axis && r.has("axis")) r.fail("axis", "'axis' is for sliders only; " + takes);
+    if (!info.axis && r.has("axis"))
+      r.fail("axis", "'axis' is for " + joint_types_with(&JointTypeInfo::axis) + " only; " + takes);
     if (!info.axis) return;
     if (!r.has("axis"))
       r.fail("axis", std::string("a ") + joint_type_name(joint.type) +

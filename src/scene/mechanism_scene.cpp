@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "core/error.hpp"
+#include "symbolic/joints.hpp"
 
 namespace linkage {
 namespace {
@@ -339,10 +340,10 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
       const MechanismGeometry::JointShape& joint = geometry_.joints[j];
       if (joints_shown && (joint.points[0].body >= 0 || joint.points[1].body >= 0))
         largest_force[k] = std::max(largest_force[k], std::hypot(s.force[3 * j], s.force[3 * j + 1]));
-      switch (joint.type) {  // the drawing's extent: a slider's rail spans its travel
-        case JointType::pin:
+      switch (sym::joint_stages(joint.type).drawing) {  // the drawing's extent: a rail spans the travel
+        case sym::JointDrawing::marker:
           continue;
-        case JointType::slider:
+        case sym::JointDrawing::rail:
           break;
       }
       const Vec2 p0 = world_point(s.pose, joint.points[0]), p1 = world_point(s.pose, joint.points[1]);
@@ -804,12 +805,12 @@ void MechanismScene::frame(std::size_t k, MechanismDrawList& out) const {
   for (std::size_t j = 0; j < geometry_.joints.size(); ++j) {
     const MechanismGeometry::JointShape& joint = geometry_.joints[j];
     const Vec2 p0 = world_point(pose, joint.points[0]), p1 = world_point(pose, joint.points[1]);
-    switch (joint.type) {  // the drawing of each joint type
-      case JointType::pin:
+    switch (sym::joint_stages(joint.type).drawing) {  // the drawing of each joint type
+      case sym::JointDrawing::marker:
         out.markers.push_back({MechanismDrawList::Marker::Kind::pin, p0});
         if (shown_.has(Element::labels) && !free_body_) out.joint_labels.push_back({p0, joint.name});
         break;
-      case JointType::slider: {
+      case sym::JointDrawing::rail: {
         const double theta0 =
             joint.points[0].body < 0 ? 0 : pose[3 * static_cast<std::size_t>(joint.points[0].body) + 2];
         const Vec2 axis = rotated(theta0, joint.axis);

@@ -41,6 +41,7 @@ GiNaC::ex no_coordinate(const JointEnds&) { return 0; }
 
 }  // namespace
 
-const JointStages kPinJoint{rows, unknowns, force, false, place, nullptr, no_coordinate, false, "m", "m/s"};
+extern const JointStages kPinJoint{
+    rows, unknowns, force, false, place, nullptr, no_coordinate, false, "m", "m/s", JointDrawing::marker};
 
 }  // namespace linkage::sym

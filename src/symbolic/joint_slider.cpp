@@ -63,6 +63,7 @@ const OwnCoordinate kTravel{
 
 }  // namespace
 
-const JointStages kSliderJoint{rows, unknowns, force, true, place, &kTravel, coordinate, true, "m, rad", "m/s, rad/s"};
+extern const JointStages kSliderJoint{
+    rows, unknowns, force, true, place, &kTravel, coordinate, true, "m, rad", "m/s, rad/s", JointDrawing::rail};
 
 }  // namespace linkage::sym

@@ -7,14 +7,35 @@ namespace linkage::sym {
 
 Vec2 world_point(const Placement& body, const Vec2& local) { return body.position + rotate(body.angle, local); }
 
-const JointStages& joint_stages(JointType type) {
+// Each type's stages: its file's one definition.
+extern const JointStages kPinJoint;
+extern const JointStages kSliderJoint;
+
+namespace {
+
+// The registration: one case per joint type. -Wswitch-enum fails the build when a type
+// has none; the static_assert below, when a type has no row in kJointTypes.
+constexpr const JointStages* registered(JointType type) {
   switch (type) {
     case JointType::pin:
-      return kPinJoint;
+      return &kPinJoint;
     case JointType::slider:
-      return kSliderJoint;
+      return &kSliderJoint;
   }
-  throw std::logic_error("joint type out of range");
+  return nullptr;
+}
+
+// Enum entries are numbered 0, 1, ...: the first number past kJointTypes' rows is no
+// entry of the enum, unless one lacks its row.
+static_assert(registered(static_cast<JointType>(kJointTypes.size())) == nullptr,
+              "a JointType has no row in kJointTypes (model/joint_types.hpp)");
+
+}  // namespace
+
+const JointStages& joint_stages(JointType type) {
+  const JointStages* stages = registered(type);
+  if (stages == nullptr) throw std::logic_error("joint type out of range");
+  return *stages;
 }
 
 // An axis that is zero whatever the parameters ("r-r") is refused here, before its unit

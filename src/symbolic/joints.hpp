@@ -1,6 +1,6 @@
 #pragma once
 // The joint types, one file each (joint_pin.cpp, joint_slider.cpp), every one filling the
-// same stages (JointStages), registered in joints.cpp by one exhaustive switch:
+// same stages (JointStages), registered in joints.cpp (a declaration and a case each):
 //   rows     its position constraint rows Phi = 0 in its bodies' placements; the velocity
 //            and acceleration rows are their time derivatives (System::time_derivative),
 //            never typed by hand;
@@ -8,10 +8,11 @@
 //            its moment in them, and the point of bodies[0] it acts at;
 //   tree     where it puts the body it carries, from that body's angle (revolute) or its
 //            own coordinate (prismatic: the symbol, units and value of that coordinate);
-//   columns  what `simulate` writes for it besides force_x and force_y.
+//   columns  what `simulate` writes for it besides force_x and force_y;
+//   drawing  how the scene draws it.
 // The model-level stages (its [[joint]] keys, the coordinate it adds to the tree, which
-// the O(n) recursion reads) are model/joint_types.cpp; its drawing is one switch in
-// scene/mechanism_scene.cpp. docs/joints.md: how to add a joint type.
+// the O(n) recursion reads) are its row in model/joint_types.hpp, beside its enum entry.
+// docs/joints.md: how to add a joint type.
 #include <array>
 #include <string>
 #include <vector>
@@ -54,6 +55,12 @@ struct OwnCoordinate {
   std::array<const char*, 3> meanings{};
 };
 
+/// How the scene draws a joint of the type (scene/mechanism_scene.cpp switches on it).
+enum class JointDrawing {
+  marker,  // a pin's circle at its point on bodies[0]
+  rail,    // a rail along the axis through bodies[0]'s point over the travel, a guide at bodies[1]'s
+};
+
 struct JointStages {
   /// rows: Phi(ends) = 0.
   std::vector<GiNaC::ex> (*rows)(const JointEnds& ends);
@@ -77,9 +84,11 @@ struct JointStages {
   bool moment_column;
   const char* constraint_unit;
   const char* constraint_rate_unit;
+  /// drawing: how the scene draws it.
+  JointDrawing drawing;
 };
 
-/// The registration: every joint type's stages, one exhaustive switch.
+/// Every joint type's stages, from the registration in joints.cpp.
 [[nodiscard]] const JointStages& joint_stages(JointType type);
 
 /// The joint's ends in maximal coordinates (the ground's placement is zero), its axis
@@ -88,9 +97,5 @@ struct JointStages {
 
 /// The joint's axis in the frame of bodies[0] as parsed (zero when its type takes none).
 [[nodiscard]] Vec2 joint_axis(const System& system, const Joint& joint);
-
-// Each type's stages, registered by joint_stages.
-extern const JointStages kPinJoint;
-extern const JointStages kSliderJoint;
 
 }  // namespace linkage::sym

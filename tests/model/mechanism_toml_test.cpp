@@ -449,6 +449,30 @@ TEST(MechanismToml, DuplicateNames) {
   expect_error(pendulum() + spring + spring, "28:8", {"spring name 'k' is used twice (first at line 23)"});
 }
 
+// The joint types' rows (model/joint_types.hpp) name the types in the messages about
+// their keys: every type that does not take a key is told which types do.
+TEST(MechanismToml, JointKeyMessagesNameTheTypesThatTakeThem) {
+  EXPECT_EQ(joint_types_with(&JointTypeInfo::torsional_spring), "pins");
+  EXPECT_EQ(joint_types_with(&JointTypeInfo::axis), "sliders");
+  int checked = 0;
+  for (const JointTypeInfo& info : kJointTypes) {
+    const std::string type = std::string("type = \"") + info.name + "\"\naxis = [1, 0]\n";
+    const std::string takes = std::string("; a ") + info.name + " takes: " + info.options;
+    if (!info.torsional_spring) {
+      expect_error(pendulum_with(17, type + "damping = 0.5"), "19:11",
+                   {"'damping' is for " + joint_types_with(&JointTypeInfo::torsional_spring) +
+                    " only (a torsional spring-damper)" + takes});
+      ++checked;
+    }
+    if (!info.axis) {
+      expect_error(pendulum_with(17, type), "18:8",
+                   {"'axis' is for " + joint_types_with(&JointTypeInfo::axis) + " only" + takes});
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 0);
+}
+
 TEST(MechanismToml, Joints) {
   expect_error(pendulum_with(18, "bodies = [\"ground\", \"2\"]"), "18:21",
                {"joint 'O': '2' is not a body; valid: ground, 1"});

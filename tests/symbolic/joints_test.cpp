@@ -72,6 +72,8 @@ class JointStagesTest : public ::testing::TestWithParam<JointType> {};
 TEST_P(JointStagesTest, RegisteredConsistently) {
   const JointStages& stages = joint_stages(GetParam());
   EXPECT_EQ(stages.own != nullptr, has_own_coordinate(joint_type_info(GetParam()).motion));
+  // The scene draws a rail along the joint's axis: only a type that takes one has it.
+  EXPECT_EQ(stages.drawing == JointDrawing::rail, joint_type_info(GetParam()).axis);
   const JointEnds ends = ends_of(GetParam(), {}, {});
   // One multiplier per row: the unknowns are the force's components along the rows.
   EXPECT_EQ(stages.unknowns(joint_of(GetParam()), false, "body 1").size(), stages.rows(ends).size());
@@ -197,6 +199,8 @@ INSTANTIATE_TEST_SUITE_P(EveryType, JointStagesTest, ::testing::ValuesIn(all_typ
 
 // --- joint_pin.cpp ------------------------------------------------------------------
 
+TEST(JointPin, DrawnAsAMarker) { EXPECT_EQ(joint_stages(JointType::pin).drawing, JointDrawing::marker); }
+
 TEST(JointPin, RowsAreTheGapBetweenItsPoints) {
   // a at (1, 2) turned a quarter: its point (0.3, -0.1) is at (1.1, 2.3) in the world.
   const JointEnds ends = ends_of(JointType::pin, {{1, 2}, GiNaC::Pi / 2}, {{ex(1.1 + 0.2), ex(2.3 - 0.15 + 0.5)}, 0});
@@ -227,6 +231,8 @@ TEST(JointPin, ForceIsItsTwoUnknownsAndNoMoment) {
 }
 
 // --- joint_slider.cpp ---------------------------------------------------------------
+
+TEST(JointSlider, DrawnAsARail) { EXPECT_EQ(joint_stages(JointType::slider).drawing, JointDrawing::rail); }
 
 TEST(JointSlider, TravelAndRowsAlongTheTurnedAxis) {
   // a turned a quarter: the axis (2, 1) of its frame is u = (-1, 2)/sqrt(5) in the world,
