@@ -124,35 +124,11 @@ namespace {
                         std::to_string(o.case_id) + "): " + std::string(what) + "; " + hint);
 }
 
-/// What might change the outcome of a failed step, never the case or integrator in use.
-std::string what_to_try(const SimulationOptions& o, ode::StepStatus status, double t, double h) {
-  std::vector<std::string> options;
-  const bool baumgarte = o.case_id == 1 && o.stabilization == Stabilization::baumgarte;
-  if (status == ode::StepStatus::newton_failed) {
-    options = {"a smaller step dt", "an explicit integrator (dop853)"};
-  } else if (!info(o.integrator).adaptive) {
-    options = {"a smaller step dt", "an adaptive integrator (dop853)"};
-    // gains well beyond 1/dt make the stabilization itself the unstable part
-    if (baumgarte && std::max(o.baumgarte_alpha, o.baumgarte_beta) * h > 1)
-      options.emplace_back("smaller Baumgarte gains");
-  } else {
-    // the controller wants ever smaller steps: tolerances at round-off of the state, or
-    // equations that need something other than an explicit method's steps
-    if (o.rtol < 1e-6 || o.atol < 1e-6) options.emplace_back("a looser rtol/atol");
-    if (o.case_id != 3) options.emplace_back("Case 3");
-  }
-  if (o.case_id == 1 && o.stabilization != Stabilization::projection)
-    options.emplace_back("stabilization by projection");
-  if (options.empty())
-    options.push_back(t > 0 ? "a duration under " + format_significant(t, 3) + " s" : "gentler initial conditions");
-  return try_list(options);
-}
-
 [[noreturn]] void fail(const SimulationOptions& o, ode::StepStatus status, double t, double h) {
   std::string what(ode::describe(status));
   if (info(o.integrator).adaptive && status != ode::StepStatus::newton_failed)
     what += "; the equations may be stiff or beyond double precision here";
-  fail(o, what, what_to_try(o, status, t, h), t, h);
+  fail(o, what, failed_step_hint(o, o.case_id == 1, status, t, h), t, h);
 }
 
 /// A run of one case with one integrator; the stepping lives in the two subclasses.

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "integrate/ode.hpp"
 #include "integrate/simulation.hpp"
 
 namespace linkage {
@@ -20,6 +21,12 @@ inline constexpr unsigned kCheckInterval = 4096;
 
 /// "try A, B or C".
 [[nodiscard]] std::string try_list(const std::vector<std::string>& options);
+
+/// What might change the outcome of a step that failed at t with step h, never the case
+/// or integrator in use: "try A, B or C". `kept`: the case keeps constraint rows (they can
+/// be stabilized).
+[[nodiscard]] std::string failed_step_hint(const SimulationOptions& o, bool kept, ode::StepStatus status, double t,
+                                           double h);
 
 /// The floor under adaptive steps, relative to t and the duration: at the mean step of the
 /// last kBudgetIntervals x kCheckInterval steps, the run must reach its end within

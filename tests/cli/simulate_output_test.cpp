@@ -455,8 +455,8 @@ TEST(SimulateCli, MeaninglessResultsEndWithOneWarning) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::vector<std::string> warnings = lines_starting(r.err, "linkage: warning: ");
   ASSERT_EQ(warnings.size(), 1u) << r.err;
-  EXPECT_NE(warnings[0].find("the pin came "), std::string::npos) << warnings[0];
-  EXPECT_NE(warnings[0].find("of the block length L"), std::string::npos) << warnings[0];
+  EXPECT_NE(warnings[0].find("joint P came "), std::string::npos) << warnings[0];
+  EXPECT_NE(warnings[0].find("of body 1's length L)"), std::string::npos) << warnings[0];
   EXPECT_NE(warnings[0].find("stabilization by projection"), std::string::npos) << warnings[0];
   EXPECT_EQ(r.err.substr(r.err.size() - warnings[0].size() - 1), warnings[0] + "\n") << "the last line";
 
