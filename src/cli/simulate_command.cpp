@@ -7,11 +7,11 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
-#include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "cli/angle_option.hpp"
@@ -29,11 +29,18 @@
 #include "integrate/trajectory_rows.hpp"
 #include "pipeline/simulate_rows.hpp"
 #include "report/mechanism_solution.hpp"
+#include "symbolic/joints.hpp"
 
 namespace linkage::cli {
 namespace {
 
 constexpr double kMaxRows = 1e7;
+// The spec's table, written for the homework's flags (no --mechanism): its columns in its
+// order, each named by two-blocks.toml's [aliases].
+constexpr const char* kSpecTable =
+    "t,x1,y1,theta1,theta2,x1_dot,y1_dot,theta1_dot,theta2_dot,x2,y2,x2_dot,y2_dot,x1_ddot,y1_ddot,theta1_ddot,"
+    "theta2_ddot,F_x,F_y,energy,momentum_x,momentum_y,angular_momentum,constraint_position_error,"
+    "constraint_velocity_error";
 
 struct SimulateOptions {
   InputOptions inputs;
@@ -150,17 +157,15 @@ std::string method_text(const SimulationOptions& s) {
                              : std::string(integrator.name) + " (dt " + format_roundtrip(s.dt) + " s)";
 }
 
-/// `name` as the table says it: the homework's (two-blocks.toml's [aliases]) or the file's own.
-using Naming = std::function<std::string(const std::string& name)>;
-
 std::string mechanism_json_header(const sym::System& system, const GiNaC::exmap& initial, const SimulationOptions& s,
                                   double every, const std::vector<MechanismColumn>& columns,
-                                  const WrittenColumns& written, const Naming& named) {
+                                  const WrittenColumns& written) {
+  const Mechanism& m = system.mechanism();
   nlohmann::ordered_json params = nlohmann::ordered_json::object(), state = nlohmann::ordered_json::object();
-  for (const Parameter& p : system.mechanism().parameters) params[named(p.name)] = p.value;
+  for (const Parameter& p : m.parameters) params[m.named(p.name)] = p.value;
   for (const sym::GeneralizedCoordinate& g : system.coordinates()) {
-    state[named(g.coordinate.key)] = sym::to_double(initial.at(g.symbols.q));
-    state[named(g.coordinate.key + "_dot")] = sym::to_double(initial.at(g.symbols.q_dot));
+    state[m.named(g.coordinate.key)] = sym::to_double(initial.at(g.symbols.q));
+    state[m.named(g.coordinate.key + "_dot")] = sym::to_double(initial.at(g.symbols.q_dot));
   }
   nlohmann::ordered_json names = nlohmann::ordered_json::array(), units = nlohmann::ordered_json::object();
   for (std::size_t j = 0; j < columns.size(); ++j) {
@@ -189,17 +194,18 @@ void run_simulate_mechanism(const SimulateOptions& o, const SimulationOptions& s
   // The initial state worked out as solve does, so a value that breaks it is named the same way.
   // A long chain's derivation can take seconds: a line on a terminal says so.
   ElapsedLine deriving("linkage: deriving the equations", o.quiet);
-  const MechanismSolution checked =
-      work_out_mechanism(chosen_mechanism(o.mechanism, o.inputs), {static_cast<CaseId>(s.case_id)});
-  const sym::System& system = *checked.system;
-  // The homework's flags keep its table: every column by default, named as it always was.
+  // The homework's flags keep its table and names: the spec's columns by default, each
+  // quantity named by two-blocks.toml's [aliases] in the table and in messages.
   const bool homework = !o.mechanism.chosen();
-  const Naming named = [&](const std::string& name) { return homework ? system.mechanism().aliased(name) : name; };
+  Mechanism mechanism = chosen_mechanism(o.mechanism, o.inputs);
+  mechanism.speaks_aliases = homework;
+  const MechanismSolution checked = work_out_mechanism(mechanism, {static_cast<CaseId>(s.case_id)});
+  const sym::System& system = *checked.system;
   std::vector<MechanismColumn> all = mechanism_columns(system);
-  for (MechanismColumn& c : all) c.name = named(c.name);
+  for (MechanismColumn& c : all) c.name = system.mechanism().named(c.name);
   const bool asked = o.columns_option != nullptr && o.columns_option->count() > 0;
   const std::vector<MechanismColumn> columns =
-      homework ? named_columns(all, o.columns, "--columns")
+      homework ? named_columns(all, o.columns == "all" ? std::string_view(kSpecTable) : o.columns, "--columns")
                : select_mechanism_columns(all, asked ? o.columns : "default", "--columns");
   MechanismSimulation simulation(system, checked.state, s, checked.cases.front().system);
   deriving.finish();
@@ -212,9 +218,8 @@ void run_simulate_mechanism(const SimulateOptions& o, const SimulationOptions& s
   TableWriter writer(format, stdout, file ? &*file : nullptr);
   const AngleUnit angles = parse_angle_unit(o.angles, "--angles");
   const WrittenColumns written = written_columns(columns, angles);
-  writer.begin(written.names, format == Format::json
-                                  ? mechanism_json_header(system, checked.state, s, every, columns, written, named)
-                                  : "");
+  writer.begin(written.names,
+               format == Format::json ? mechanism_json_header(system, checked.state, s, every, columns, written) : "");
   Progress progress("simulate", s.duration, "s simulated", o.quiet);
   simulation.on_progress([&progress](double t) { progress.update(t); });
   (void)mechanism_trajectory(simulation, s.case_id, samples, columns, angles,
@@ -229,6 +234,10 @@ void run_simulate_mechanism(const SimulateOptions& o, const SimulationOptions& s
   std::fflush(stdout);
   const MechanismStats& st = simulation.stats();
   const std::string method = method_text(s);
+  // The largest constraint error in its joint's unit, naming the joint.
+  std::string constraint = format_significant(st.max_constraint_error, 3);
+  if (const Joint* joint = system.mechanism().find_joint(st.drifted_joint))
+    constraint += std::string(" ") + sym::joint_stages(joint->type).constraint_unit + " (joint " + joint->name + ")";
   std::fprintf(stderr,
                "linkage simulate: %s, Case %d, %s, stabilize %s, 0 to %s s, %ld rows\n"
                "  steps: %lld accepted, %lld rejected; right-hand side evaluations: %lld\n"
@@ -238,8 +247,7 @@ void run_simulate_mechanism(const SimulateOptions& o, const SimulationOptions& s
                format_roundtrip(s.duration).c_str(), samples.count, static_cast<long long>(st.steps_accepted),
                static_cast<long long>(st.steps_rejected), static_cast<long long>(st.rhs_evaluations),
                format_significant(st.max_energy_error, 3).c_str(), format_significant(st.energy_scale, 4).c_str(),
-               format_significant(st.max_constraint_error, 3).c_str(), format_significant(wall, 3).c_str(),
-               format_significant(st.wall_seconds, 3).c_str());
+               constraint.c_str(), format_significant(wall, 3).c_str(), format_significant(st.wall_seconds, 3).c_str());
   const std::string warning = mechanism_result_warning(s, st);
   if (!warning.empty()) std::fprintf(stderr, "linkage: warning: %s\n", warning.c_str());
 }

@@ -14,6 +14,8 @@ const std::string& Mechanism::aliased(const std::string& key) const {
   return key;
 }
 
+const std::string& Mechanism::named(const std::string& key) const { return speaks_aliases ? aliased(key) : key; }
+
 int Mechanism::body_index(const std::string& body_name) const {
   for (std::size_t i = 0; i < bodies.size(); ++i)
     if (bodies[i].name == body_name) return static_cast<int>(i);

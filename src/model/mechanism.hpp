@@ -146,6 +146,9 @@ struct Mechanism {
   std::vector<std::string> independent;  // loop closure keeps these coordinates
   SourcePos independent_pos;
   std::vector<Alias> aliases;  // [aliases], in file order
+  // Tables and messages name quantities by `aliases`: a run from the homework's flags
+  // speaks the spec's names (x1_dot, not 1.x_dot).
+  bool speaks_aliases = false;
 
   [[nodiscard]] const Body* find_body(const std::string& body_name) const;
   /// Index into `bodies`, -1 for the ground or a name that is not a body.
@@ -153,6 +156,8 @@ struct Mechanism {
   [[nodiscard]] const Joint* find_joint(const std::string& joint_name) const;
   /// `key`'s alias, or `key` when it has none.
   [[nodiscard]] const std::string& aliased(const std::string& key) const;
+  /// `key` as tables and messages name it: aliased(key) when speaks_aliases, else `key`.
+  [[nodiscard]] const std::string& named(const std::string& key) const;
 };
 
 /// "file:line:column: " or "" for a position built in code.
