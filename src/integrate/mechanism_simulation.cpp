@@ -27,13 +27,6 @@ constexpr int kDynamic = Eigen::Dynamic;
 // A loop whose constraint error passes this, in metres (or radians), has come apart: the
 // numbers no longer describe the mechanism.
 constexpr double kOpenLoop = 1e-3;
-// Past these a finished run's numbers no longer describe the motion. An energy balance
-// off by the energy scale is every velocity off by a factor, not a digit. A joint a
-// quarter of the longest body apart draws the bodies visibly apart, its force acting at
-// two points that far apart (the homework's drift lesson shows 0.13 of the block length
-// on purpose).
-constexpr double kMeaninglessEnergyError = 1.0;
-constexpr double kMeaninglessDrift = 0.25;  // of the longest body's size
 
 /// f(t, y) for the integrators; remembers where the case's matrix was singular.
 struct Rhs {
@@ -315,34 +308,16 @@ double MechanismSimulation::energy0() const { return impl_->energy0; }
 const SimulationOptions& MechanismSimulation::options() const { return impl_->options; }
 
 std::string mechanism_result_warning(const SimulationOptions& o, const MechanismStats& st) {
-  const bool energy = st.max_energy_error > kMeaninglessEnergyError;
   const double scale = st.size > 0 ? st.size : 1.0;  // m, when no body has a size
-  const bool drift = st.drift_allowed && st.max_constraint_error > kMeaninglessDrift * scale;
-  if (!energy && !drift) return "";
-  std::vector<std::string> what;
-  if (energy)
-    what.push_back("the energy balance is off by " + format_significant(st.max_energy_error, 2) +
-                   " times the energy scale (" + format_significant(st.energy_scale, 3) + " J)");
-  if (drift)
-    what.push_back(
-        "joint " + st.drifted_joint + " came " + format_significant(st.max_constraint_error, 2) + " m apart" +
-        (st.size > 0 ? " (" + format_significant(st.max_constraint_error / st.size, 2) + " of " + st.size_name + ")"
-                     : std::string()));
-  std::vector<std::string> remedies;
-  if (drift) {
-    if (o.stabilization != Stabilization::projection) remedies.emplace_back("stabilization by projection");
-    remedies.emplace_back("Case 3 (it cannot drift)");
-  }
-  if (!info(o.integrator).adaptive) {
-    remedies.emplace_back("a smaller step dt");
-    remedies.emplace_back("an adaptive integrator (dop853)");
-  } else if (o.rtol > 1e-12 || o.atol > 1e-12) {
-    remedies.emplace_back("a tighter rtol/atol");
-  } else {
-    remedies.emplace_back("a shorter duration");
-  }
-  return "the run's numbers do not describe the motion: " + what.front() +
-         (drift && energy ? " and " + what.back() : "") + "; " + try_list(remedies);
+  std::string energy, drift;
+  if (st.max_energy_error > kMeaninglessEnergyError)
+    energy = "the energy balance is off by " + format_significant(st.max_energy_error, 2) +
+             " times the energy scale (" + format_significant(st.energy_scale, 3) + " J)";
+  if (st.drift_allowed && st.max_constraint_error > kMeaninglessDrift * scale)
+    drift = "joint " + st.drifted_joint + " came " + format_significant(st.max_constraint_error, 2) + " m apart" +
+            (st.size > 0 ? " (" + format_significant(st.max_constraint_error / st.size, 2) + " of " + st.size_name + ")"
+                         : std::string());
+  return meaningless_run_warning(o, energy, drift);
 }
 
 }  // namespace linkage

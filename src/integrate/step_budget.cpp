@@ -14,6 +14,25 @@ std::string try_list(const std::vector<std::string>& options) {
   return text;
 }
 
+std::string meaningless_run_warning(const SimulationOptions& o, const std::string& energy, const std::string& drift) {
+  if (energy.empty() && drift.empty()) return "";
+  std::vector<std::string> remedies;
+  if (!drift.empty()) {
+    if (o.stabilization != Stabilization::projection) remedies.emplace_back("stabilization by projection");
+    remedies.emplace_back("Case 3 (it cannot drift)");
+  }
+  if (!info(o.integrator).adaptive) {
+    remedies.emplace_back("a smaller step dt");
+    remedies.emplace_back("an adaptive integrator (dop853)");
+  } else if (o.rtol > 1e-12 || o.atol > 1e-12) {
+    remedies.emplace_back("a tighter rtol/atol");
+  } else {
+    remedies.emplace_back("a shorter duration");
+  }
+  return "the run's numbers do not describe the motion: " + (energy.empty() ? drift : energy) +
+         (!energy.empty() && !drift.empty() ? " and " + drift : "") + "; " + try_list(remedies);
+}
+
 std::string failed_step_hint(const SimulationOptions& o, bool kept, ode::StepStatus status, double t, double h) {
   std::vector<std::string> options;
   if (status == ode::StepStatus::newton_failed) {
