@@ -191,7 +191,7 @@ void MechanismSimulation::Impl::advance(double t) {
     auto run = [&](auto& stepper) {
       while (stepper.t() < t) {
         const ode::StepStatus status = stepper.step(rhs);
-        if (status != ode::StepStatus::ok) fail_step(status, stepper.t(), stepper.last_step());
+        if (status != ode::StepStatus::ok) fail_step(status, stepper.t(), stepper.next_step());  // the failed attempt
         y = stepper.y();
         check_loop(stepper.t());
         if (project) stepper.replace_state(rhs, y);
