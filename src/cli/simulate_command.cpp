@@ -1,5 +1,6 @@
-// `linkage simulate`: the motion over time as a CSV or JSON table, with a summary of
-// the run's cost and accuracy on stderr.
+// `linkage simulate`: a mechanism's motion over time as a CSV or JSON table, with a summary
+// of the run's cost and accuracy on stderr. The homework's flags are settings of
+// two-blocks.toml, its table's names that file's [aliases].
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -10,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "cli/angle_option.hpp"
@@ -22,18 +24,23 @@
 #include "core/error.hpp"
 #include "core/number_format.hpp"
 #include "core/progress.hpp"
-#include "integrate/columns.hpp"
 #include "integrate/mechanism_columns.hpp"
 #include "integrate/mechanism_simulation.hpp"
-#include "integrate/simulation.hpp"
 #include "integrate/trajectory_rows.hpp"
 #include "pipeline/simulate_rows.hpp"
 #include "report/mechanism_solution.hpp"
+#include "symbolic/joints.hpp"
 
 namespace linkage::cli {
 namespace {
 
 constexpr double kMaxRows = 1e7;
+// The spec's table, written for the homework's flags (no --mechanism): its columns in its
+// order, each named by two-blocks.toml's [aliases].
+constexpr const char* kSpecTable =
+    "t,x1,y1,theta1,theta2,x1_dot,y1_dot,theta1_dot,theta2_dot,x2,y2,x2_dot,y2_dot,x1_ddot,y1_ddot,theta1_ddot,"
+    "theta2_ddot,F_x,F_y,energy,momentum_x,momentum_y,angular_momentum,constraint_position_error,"
+    "constraint_velocity_error";
 
 struct SimulateOptions {
   InputOptions inputs;
@@ -142,34 +149,6 @@ nlohmann::ordered_json options_json(const SimulationOptions& s, double every) {
           {"baumgarte_beta", s.baumgarte_beta}};
 }
 
-std::string json_header(const Inputs& inputs, const SimulationOptions& s, double every,
-                        const std::vector<Column>& columns, const WrittenColumns& written) {
-  nlohmann::ordered_json params = nlohmann::ordered_json::object(), state = nlohmann::ordered_json::object();
-  for (const InputKey& key : kInputKeys)
-    (key.param != nullptr ? params : state)[std::string(key.key)] = inputs.value(key);
-  const nlohmann::ordered_json options = options_json(s, every);
-  nlohmann::ordered_json names = nlohmann::ordered_json::array(), units = nlohmann::ordered_json::object();
-  for (std::size_t j = 0; j < columns.size(); ++j) {
-    names.push_back(info(columns[j]).name);
-    units[std::string(info(columns[j]).name)] = written.units[j];
-  }
-  return "{\n" + json_line("parameters", params) + ",\n" + json_line("initial_state", state) + ",\n" +
-         json_line("options", options) + ",\n" + json_line("columns", names) + ",\n" + json_line("units", units) +
-         ",\n";
-}
-
-std::string json_summary(const SimulationStats& st, double wall) {
-  const nlohmann::ordered_json summary = {{"steps_accepted", st.steps_accepted},
-                                          {"steps_rejected", st.steps_rejected},
-                                          {"rhs_evaluations", st.rhs_evaluations},
-                                          {"force_evaluations", st.force_evaluations},
-                                          {"max_energy_error", st.max_energy_error},
-                                          {"energy_scale", st.energy_scale},
-                                          {"max_constraint_error", st.max_constraint_error},
-                                          {"wall_seconds", wall}};
-  return json_line("summary", summary) + "\n}\n";
-}
-
 /// "dop853 (rtol 1e-10, atol 1e-10)" or "rk4 (dt 0.001 s)", for the summaries.
 std::string method_text(const SimulationOptions& s) {
   const IntegratorInfo& integrator = info(s.integrator);
@@ -178,29 +157,15 @@ std::string method_text(const SimulationOptions& s) {
                              : std::string(integrator.name) + " (dt " + format_roundtrip(s.dt) + " s)";
 }
 
-void print_summary(const SimulationOptions& s, long rows, const SimulationStats& st, double wall) {
-  const std::string method = method_text(s);
-  std::fprintf(stderr,
-               "linkage simulate: Case %d, %s, stabilize %s, 0 to %s s, %ld rows\n"
-               "  steps: %lld accepted, %lld rejected; right-hand side evaluations: %lld\n"
-               "  largest energy error: %s of the energy scale %s J; largest constraint error: %s m\n"
-               "  wall time: %s s (integration %s s)\n",
-               s.case_id, method.c_str(), std::string(name(s.stabilization)).c_str(),
-               format_roundtrip(s.duration).c_str(), rows, static_cast<long long>(st.steps_accepted),
-               static_cast<long long>(st.steps_rejected), static_cast<long long>(st.rhs_evaluations),
-               format_significant(st.max_energy_error, 3).c_str(), format_significant(st.energy_scale, 4).c_str(),
-               format_significant(st.max_constraint_error, 3).c_str(), format_significant(wall, 3).c_str(),
-               format_significant(st.wall_seconds, 3).c_str());
-}
-
 std::string mechanism_json_header(const sym::System& system, const GiNaC::exmap& initial, const SimulationOptions& s,
                                   double every, const std::vector<MechanismColumn>& columns,
                                   const WrittenColumns& written) {
+  const Mechanism& m = system.mechanism();
   nlohmann::ordered_json params = nlohmann::ordered_json::object(), state = nlohmann::ordered_json::object();
-  for (const Parameter& p : system.mechanism().parameters) params[p.name] = p.value;
+  for (const Parameter& p : m.parameters) params[m.named(p.name)] = p.value;
   for (const sym::GeneralizedCoordinate& g : system.coordinates()) {
-    state[g.coordinate.key] = sym::to_double(initial.at(g.symbols.q));
-    state[g.coordinate.key + "_dot"] = sym::to_double(initial.at(g.symbols.q_dot));
+    state[m.named(g.coordinate.key)] = sym::to_double(initial.at(g.symbols.q));
+    state[m.named(g.coordinate.key + "_dot")] = sym::to_double(initial.at(g.symbols.q_dot));
   }
   nlohmann::ordered_json names = nlohmann::ordered_json::array(), units = nlohmann::ordered_json::object();
   for (std::size_t j = 0; j < columns.size(); ++j) {
@@ -229,13 +194,19 @@ void run_simulate_mechanism(const SimulateOptions& o, const SimulationOptions& s
   // The initial state worked out as solve does, so a value that breaks it is named the same way.
   // A long chain's derivation can take seconds: a line on a terminal says so.
   ElapsedLine deriving("linkage: deriving the equations", o.quiet);
-  const MechanismSolution checked =
-      work_out_mechanism(chosen_mechanism(o.mechanism, o.inputs), {static_cast<CaseId>(s.case_id)});
+  // The homework's flags keep its table and names: the spec's columns by default, each
+  // quantity named by two-blocks.toml's [aliases] in the table and in messages.
+  const bool homework = !o.mechanism.chosen();
+  Mechanism mechanism = chosen_mechanism(o.mechanism, o.inputs);
+  mechanism.speaks_aliases = homework;
+  const MechanismSolution checked = work_out_mechanism(mechanism, {static_cast<CaseId>(s.case_id)});
   const sym::System& system = *checked.system;
-  const std::vector<MechanismColumn> all = mechanism_columns(system);
+  std::vector<MechanismColumn> all = mechanism_columns(system);
+  for (MechanismColumn& c : all) c.name = system.mechanism().named(c.name);
   const bool asked = o.columns_option != nullptr && o.columns_option->count() > 0;
   const std::vector<MechanismColumn> columns =
-      select_mechanism_columns(all, asked ? o.columns : "default", "--columns");
+      homework ? named_columns(all, o.columns == "all" ? std::string_view(kSpecTable) : o.columns, "--columns")
+               : select_mechanism_columns(all, asked ? o.columns : "default", "--columns");
   MechanismSimulation simulation(system, checked.state, s, checked.cases.front().system);
   deriving.finish();
   if (!o.quiet) {
@@ -263,6 +234,10 @@ void run_simulate_mechanism(const SimulateOptions& o, const SimulationOptions& s
   std::fflush(stdout);
   const MechanismStats& st = simulation.stats();
   const std::string method = method_text(s);
+  // The largest constraint error in its joint's unit, naming the joint.
+  std::string constraint = format_significant(st.max_constraint_error, 3);
+  if (const Joint* joint = system.mechanism().find_joint(st.drifted_joint))
+    constraint += std::string(" ") + sym::joint_stages(joint->type).constraint_unit + " (joint " + joint->name + ")";
   std::fprintf(stderr,
                "linkage simulate: %s, Case %d, %s, stabilize %s, 0 to %s s, %ld rows\n"
                "  steps: %lld accepted, %lld rejected; right-hand side evaluations: %lld\n"
@@ -272,14 +247,12 @@ void run_simulate_mechanism(const SimulateOptions& o, const SimulationOptions& s
                format_roundtrip(s.duration).c_str(), samples.count, static_cast<long long>(st.steps_accepted),
                static_cast<long long>(st.steps_rejected), static_cast<long long>(st.rhs_evaluations),
                format_significant(st.max_energy_error, 3).c_str(), format_significant(st.energy_scale, 4).c_str(),
-               format_significant(st.max_constraint_error, 3).c_str(), format_significant(wall, 3).c_str(),
-               format_significant(st.wall_seconds, 3).c_str());
+               constraint.c_str(), format_significant(wall, 3).c_str(), format_significant(st.wall_seconds, 3).c_str());
   const std::string warning = mechanism_result_warning(s, st);
   if (!warning.empty()) std::fprintf(stderr, "linkage: warning: %s\n", warning.c_str());
 }
 
 void run_simulate(const SimulateOptions& o) {
-  const auto start = std::chrono::steady_clock::now();
   const SimulationOptions defaults;
   const double duration = o.duration.empty() ? defaults.duration : parse_number(o.duration, "--duration", "s");
   const SimulationOptions s = resolve_simulation_flags(o.simulation, duration);
@@ -288,39 +261,7 @@ void run_simulate(const SimulateOptions& o) {
   if (!(every > 0 && every <= s.duration))
     throw Error::input("--every: " + format_roundtrip(every) + " s is out of range; valid: 0 < every <= duration (" +
                        format_roundtrip(s.duration) + " s)");
-  if (o.mechanism.chosen()) {
-    run_simulate_mechanism(o, s, every, choose_format(o));
-    return;
-  }
-  const TrajectoryRows samples = checked_rows(s.duration, every);
-  const std::vector<Column> columns = parse_columns(o.columns, "--columns");
-  const AngleUnit angles = parse_angle_unit(o.angles, "--angles");
-  const Format format = choose_format(o);
-  const Inputs inputs = resolve_inputs(o.inputs);
-  if (!o.quiet) note_ignored_simulation_flags(o.simulation, s);
-
-  Simulation simulation(inputs.params(), inputs.state(), s);
-  std::optional<AtomicFile> file;
-  if (!o.out.empty()) file.emplace(o.out, "out");
-  TableWriter writer(format, stdout, file ? &*file : nullptr);
-  const WrittenColumns written = written_columns(columns, angles);
-  writer.begin(written.names, format == Format::json ? json_header(inputs, s, every, columns, written) : "");
-  // In simulated time, reported from inside long steps too: one row may take minutes.
-  Progress progress("simulate", s.duration, "s simulated", o.quiet);
-  simulation.on_progress([&progress](double t) { progress.update(t); });
-  (void)homework_trajectory(simulation, inputs, samples, columns, angles,
-                            [&](double t, const std::vector<double>& values) {
-                              writer.row(values);
-                              progress.update(t);
-                            });
-  progress.finish();
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  writer.end(json_summary(simulation.stats(), wall));
-  if (file) file->commit();
-  std::fflush(stdout);
-  print_summary(s, samples.count, simulation.stats(), wall);
-  const std::string warning = result_warning(s, inputs.params(), simulation.stats());
-  if (!warning.empty()) std::fprintf(stderr, "linkage: warning: %s\n", warning.c_str());
+  run_simulate_mechanism(o, s, every, choose_format(o));
 }
 
 }  // namespace
@@ -342,16 +283,18 @@ void register_simulate(CLI::App& app) {
   sub->add_option("--out", o->out, "Output file, written atomically (default: stdout)")->type_name("FILE");
   sub->add_option("--format", o->format, "Output format: csv or json (default: from the --out extension, else csv)")
       ->type_name("csv|json");
-  std::string column_names;
-  for (const ColumnInfo& c : kColumns)
-    column_names += (column_names.empty() ? "" : ", ") + std::string(c.name) + " (" + std::string(c.unit) + ")";
   o->columns_option =
       sub->add_option("--columns", o->columns,
-                      "Comma-separated columns to compute and write, or all (default all): " + column_names +
-                          ". With --mechanism: default (t, every body's x, y, theta, every "
-                          "slider's s), all, or names such as 2.theta_dot, 2.theta_ddot, "
-                          "S.s_ddot, B.force_x, B.constraint_velocity_error, energy_error, and a named "
-                          "point's 3.P.x, .y, .vx, .vy, .ax, .ay (world frame; m, m/s, m/s^2)")
+                      "Comma-separated columns to compute and write. A mechanism's: t; every body's x, y, theta "
+                      "and their _dot and _ddot (1.x, 2.theta_dot, 2.theta_ddot); every slider's s and s_ddot; "
+                      "every named point's 3.P.x, .y, .vx, .vy, .ax, .ay (world frame; m, m/s, m/s^2); every "
+                      "joint's force_x, force_y (on its first body; moment for a slider), constraint_error (m) and "
+                      "constraint_velocity_error (m/s); energy (J, kinetic + potential), work and energy_error; "
+                      "momentum_x, momentum_y and angular_momentum when nothing holds it to the ground. With "
+                      "--mechanism: default (t, every body's x, y, theta, every slider's s), all, or names. The "
+                      "homework (no --mechanism) names them as its table always has, e.g. x1, theta2_dot, "
+                      "x1_ddot, F_x (the pin force on block 1, N), constraint_position_error (m), "
+                      "constraint_velocity_error (m/s), x2, y2; all of them by default")
           ->type_name("LIST");
   add_angle_option(sub, o->angles, "angle columns (theta, rates, accelerations) in the table");
   sub->add_flag("--quiet", o->quiet, "No progress or notes on stderr (the summary and warnings stay)");

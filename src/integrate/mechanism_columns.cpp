@@ -1,5 +1,6 @@
 #include "integrate/mechanism_columns.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <limits>
 #include <sstream>
@@ -182,6 +183,29 @@ bool needs_kinematics(const std::vector<MechanismColumn>& columns) {
         break;
     }
   return false;
+}
+
+std::vector<MechanismColumn> named_columns(const std::vector<MechanismColumn>& all, std::string_view list,
+                                           const std::string& origin) {
+  if (list == "all") return all;
+  std::vector<MechanismColumn> out;
+  for (std::size_t start = 0; start <= list.size();) {
+    const std::size_t comma = std::min(list.find(',', start), list.size());
+    const std::string name(list.substr(start, comma - start));
+    const auto named = [&](const MechanismColumn& c) { return c.name == name; };
+    const auto found = std::find_if(all.begin(), all.end(), named);
+    if (found == all.end()) {
+      std::vector<std::string> names{"all"};
+      for (const MechanismColumn& c : all) names.push_back(c.name);
+      throw Error::invalid(
+          origin, "'" + name + "' is not a column" + did_you_mean(name, names) + "; valid: " + join_names(names));
+    }
+    if (std::any_of(out.begin(), out.end(), named))
+      throw Error::invalid(origin, "column '" + name + "' is listed twice");
+    out.push_back(*found);
+    start = comma + 1;
+  }
+  return out;
 }
 
 double column_value(const MechanismColumn& c, double t, const Eigen::VectorXd& y, const eval::MechanismSample& s,

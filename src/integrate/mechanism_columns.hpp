@@ -8,6 +8,7 @@
 // mechanism to the ground.
 #include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "evaluate/mechanism_dynamics.hpp"
@@ -69,6 +70,12 @@ struct MechanismColumn {
 
 /// Whether any of `columns` needs the sample's kinematics (accelerations, points).
 [[nodiscard]] bool needs_kinematics(const std::vector<MechanismColumn>& columns);
+
+/// The columns `list` (comma-separated) names exactly, in its order, or every column for
+/// "all" (the homework's `--columns`, its names two-blocks' [aliases]); else
+/// Error::invalid at `origin` for a name that is no column (with the nearest) or a repeat.
+[[nodiscard]] std::vector<MechanismColumn> named_columns(const std::vector<MechanismColumn>& all, std::string_view list,
+                                                         const std::string& origin);
 
 /// A column's value at a sample; `y` the state (its last entry W), `energy0` E at t = 0.
 [[nodiscard]] double column_value(const MechanismColumn& column, double t, const Eigen::VectorXd& y,

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 #include <type_traits>
+#include <utility>
+#include <vector>
 
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
@@ -39,9 +41,13 @@ std::string case_text(const SimulationOptions& o) {
   return std::string(info(o.integrator).name) + ", Case " + std::to_string(o.case_id);
 }
 
-[[noreturn]] void fail(const SimulationOptions& o, const std::string& what, const std::string& hint, double t) {
-  throw Error::diverged("the simulation failed at t = " + format_significant(t, 6) + " s (" + case_text(o) +
-                        "): " + what + "; " + hint);
+/// Ends a run that cannot go on: one line naming the time, the step (when one failed), the
+/// case and integrator, what happened and what to try.
+[[noreturn]] void fail(const SimulationOptions& o, const std::string& what, const std::string& hint, double t,
+                       double h = std::nan("")) {
+  throw Error::diverged("the simulation failed at t = " + format_significant(t, 6) + " s" +
+                        (std::isnan(h) ? std::string() : " with step " + format_significant(h, 3) + " s") + " (" +
+                        case_text(o) + "): " + what + "; " + hint);
 }
 
 }  // namespace
@@ -49,7 +55,10 @@ std::string case_text(const SimulationOptions& o) {
 struct MechanismSimulation::Impl {
   Impl(const sym::System& system, const GiNaC::exmap& initial, const SimulationOptions& o,
        std::optional<CaseSystem> derived)
-      : options(o), dynamics(system, static_cast<CaseId>(o.case_id), std::move(derived)), rhs{&dynamics, std::nan("")} {
+      : options(o),
+        mechanism(&system.mechanism()),
+        dynamics(system, static_cast<CaseId>(o.case_id), std::move(derived)),
+        rhs{&dynamics, std::nan("")} {
     if (o.stabilization == Stabilization::baumgarte) dynamics.set_baumgarte(o.baumgarte_alpha, o.baumgarte_beta);
     project = o.stabilization == Stabilization::projection && dynamics.constraint_rows() > 0;
     y = dynamics.initial_state(initial);
@@ -70,12 +79,18 @@ struct MechanismSimulation::Impl {
         spread = std::max(spread, std::hypot(s.pose[3 * i] - s.pose[3 * j], s.pose[3 * i + 1] - s.pose[3 * j + 1]));
     double height = 0;
     for (std::size_t i = 0; i < bodies; ++i) height = std::max(height, std::fabs(s.pose[3 * i + 1]));
-    double g = 0;
-    if (system.mechanism().gravity)
-      g = std::fabs(sym::to_double(system.quantity(*system.mechanism().gravity, false)
-                                       .subs(system.constants())
-                                       .subs(system.constants())
-                                       .subs(system.parameter_values())));
+    const auto value = [&](const Quantity& q) {
+      return sym::to_double(
+          system.quantity(q, false).subs(system.constants()).subs(system.constants()).subs(system.parameter_values()));
+    };
+    const double g = system.mechanism().gravity ? std::fabs(value(*system.mechanism().gravity)) : 0;
+    stats.drift_allowed = system.tree().loop_joints.empty();
+    for (const Body& b : system.mechanism().bodies)
+      for (const auto& [size, what] : {std::pair{&b.length, "length"}, std::pair{&b.radius, "radius"}})
+        if (*size && std::fabs(value(**size)) > stats.size) {
+          stats.size = std::fabs(value(**size));
+          stats.size_name = "body " + b.name + "'s " + what + " " + (*size)->text;
+        }
     stats.energy_scale = s.kinetic + std::fabs(s.potential) + total_mass * g * (spread + height);
     if (!(stats.energy_scale > 0)) stats.energy_scale = 1;  // nothing moves and nothing pulls: report in J
     if (project) dynamics.project(0, y);
@@ -92,7 +107,7 @@ struct MechanismSimulation::Impl {
     return true;
   }
   void check_loop(double t) {
-    if (dynamics.constraint_rows() == 0) return;
+    if (dynamics.constraint_rows() == 0 || (stats.drift_allowed && !project)) return;
     const double violation = project ? dynamics.project(t, y) : dynamics.constraint_violation(t, y);
     if (violation > kOpenLoop)
       fail(options,
@@ -100,7 +115,7 @@ struct MechanismSimulation::Impl {
                " m apart (the loop opened)",
            project ? "try a smaller step or tighter rtol/atol" : "try stabilization by projection", t);
   }
-  [[noreturn]] void fail_step(ode::StepStatus status, double t) {
+  [[noreturn]] void fail_step(ode::StepStatus status, double t, double h) {
     if (!std::isnan(rhs.singular_at))
       fail(options,
            "the matrix of Case " + std::to_string(options.case_id) +
@@ -109,13 +124,15 @@ struct MechanismSimulation::Impl {
                "accelerations",
            "try another initial state, more inertia on the driving body, or a duration under " +
                format_significant(rhs.singular_at, 3) + " s",
-           t);
-    std::string hint = info(options.integrator).adaptive ? "try a looser rtol/atol or a shorter duration"
-                                                         : "try a smaller step dt or an adaptive integrator (dop853)";
-    fail(options, std::string(ode::describe(status)), hint, t);
+           t, h);
+    std::string what(ode::describe(status));
+    if (info(options.integrator).adaptive && status != ode::StepStatus::newton_failed)
+      what += "; the equations may be stiff or beyond double precision here";
+    fail(options, what, failed_step_hint(options, dynamics.constraint_rows() > 0, status, t, h), t, h);
   }
 
   SimulationOptions options;
+  const Mechanism* mechanism;
   eval::MechanismDynamics dynamics;
   Rhs rhs;
   bool project = false;
@@ -174,7 +191,7 @@ void MechanismSimulation::Impl::advance(double t) {
     auto run = [&](auto& stepper) {
       while (stepper.t() < t) {
         const ode::StepStatus status = stepper.step(rhs);
-        if (status != ode::StepStatus::ok) fail_step(status, stepper.t());
+        if (status != ode::StepStatus::ok) fail_step(status, stepper.t(), stepper.next_step());  // the failed attempt
         y = stepper.y();
         check_loop(stepper.t());
         if (project) stepper.replace_state(rhs, y);
@@ -202,7 +219,7 @@ void MechanismSimulation::Impl::advance(double t) {
     if (symplectic) status = symplectic->step(rhs, from, h, state);
     if (rk4) status = rk4->step(rhs, from, h, state);
     if (gauss) status = gauss->step(rhs, from, h, state);
-    if (status != ode::StepStatus::ok || !std::isnan(rhs.singular_at)) fail_step(status, from);
+    if (status != ode::StepStatus::ok || !std::isnan(rhs.singular_at)) fail_step(status, from, h);
   };
   const double tolerance = 1e-9 * dt + 8 * std::numeric_limits<double>::epsilon() * t;
   auto n = static_cast<std::int64_t>(std::llround(t / dt));
@@ -223,7 +240,7 @@ void MechanismSimulation::Impl::advance(double t) {
       if (!stepper) return;
       std::remove_cvref_t<decltype(*stepper)> fresh;
       const ode::StepStatus status = fresh.step(rhs, t_grid, t - t_grid, sample_y);
-      if (status != ode::StepStatus::ok || !std::isnan(rhs.singular_at)) fail_step(status, t_grid);
+      if (status != ode::StepStatus::ok || !std::isnan(rhs.singular_at)) fail_step(status, t_grid, t - t_grid);
     };
     partial(euler);
     partial(symplectic);
@@ -277,7 +294,11 @@ void MechanismSimulation::sample(double t, const Eigen::VectorXd& y, eval::Mecha
   const double work = y[y.size() - 1];
   const double balance = std::fabs(out.kinetic + out.potential - run.energy0 - work) / run.stats.energy_scale;
   run.stats.max_energy_error = std::max(run.stats.max_energy_error, balance);
-  for (double c : out.constraint) run.stats.max_constraint_error = std::max(run.stats.max_constraint_error, c);
+  for (std::size_t j = 0; j < out.constraint.size(); ++j)
+    if (out.constraint[j] > run.stats.max_constraint_error) {
+      run.stats.max_constraint_error = out.constraint[j];
+      run.stats.drifted_joint = run.mechanism->joints[j].name;
+    }
 }
 
 void MechanismSimulation::on_progress(std::function<void(double)> report) { impl_->report = std::move(report); }
@@ -287,12 +308,16 @@ double MechanismSimulation::energy0() const { return impl_->energy0; }
 const SimulationOptions& MechanismSimulation::options() const { return impl_->options; }
 
 std::string mechanism_result_warning(const SimulationOptions& o, const MechanismStats& st) {
-  if (!(st.max_energy_error > 1.0)) return "";
-  return "the run's numbers do not describe the motion: the energy balance is off by " +
-         format_significant(st.max_energy_error, 2) + " times the energy scale (" +
-         format_significant(st.energy_scale, 3) + " J); try " +
-         (info(o.integrator).adaptive ? std::string("a tighter rtol/atol")
-                                      : std::string("a smaller step dt or dop853"));
+  const double scale = st.size > 0 ? st.size : 1.0;  // m, when no body has a size
+  std::string energy, drift;
+  if (st.max_energy_error > kMeaninglessEnergyError)
+    energy = "the energy balance is off by " + format_significant(st.max_energy_error, 2) +
+             " times the energy scale (" + format_significant(st.energy_scale, 3) + " J)";
+  if (st.drift_allowed && st.max_constraint_error > kMeaninglessDrift * scale)
+    drift = "joint " + st.drifted_joint + " came " + format_significant(st.max_constraint_error, 2) + " m apart" +
+            (st.size > 0 ? " (" + format_significant(st.max_constraint_error / st.size, 2) + " of " + st.size_name + ")"
+                         : std::string());
+  return meaningless_run_warning(o, energy, drift);
 }
 
 }  // namespace linkage

@@ -21,7 +21,12 @@ struct MechanismStats {
   double energy_scale = 0;          // J: T + |V| at the start plus M g times the bodies' spread
   double max_energy_error = 0;      // |E - E0 - W| / energy_scale over samples (W: work of dampers and loads)
   double max_constraint_error = 0;  // m (rad for a slider's angle), over samples and joints
-  double wall_seconds = 0;          // in state_at()
+  std::string drifted_joint;        // the joint of max_constraint_error ("" while it is 0)
+  // A tree's kept constraints (Case 1) may drift, reported at the end; a loop that opens stops the run.
+  bool drift_allowed = false;
+  double size = 0;          // m: the longest body's length or radius (0 when no body has a size)
+  std::string size_name;    // "body 1's length L", for the warning
+  double wall_seconds = 0;  // in state_at()
 };
 
 class MechanismSimulation {
@@ -57,8 +62,9 @@ class MechanismSimulation {
   std::unique_ptr<Impl> impl_;
 };
 
-/// One line for the user when a finished run's figures say its numbers are meaningless,
-/// empty when they are not (as result_warning does for the homework).
+/// One line for the user when a finished run's figures say its numbers are meaningless
+/// (the energy balance off by more than the energy scale, or a tree's joint drifted a
+/// quarter of the longest body's size apart), empty when they are not.
 [[nodiscard]] std::string mechanism_result_warning(const SimulationOptions& options, const MechanismStats& stats);
 
 }  // namespace linkage

@@ -124,35 +124,11 @@ namespace {
                         std::to_string(o.case_id) + "): " + std::string(what) + "; " + hint);
 }
 
-/// What might change the outcome of a failed step, never the case or integrator in use.
-std::string what_to_try(const SimulationOptions& o, ode::StepStatus status, double t, double h) {
-  std::vector<std::string> options;
-  const bool baumgarte = o.case_id == 1 && o.stabilization == Stabilization::baumgarte;
-  if (status == ode::StepStatus::newton_failed) {
-    options = {"a smaller step dt", "an explicit integrator (dop853)"};
-  } else if (!info(o.integrator).adaptive) {
-    options = {"a smaller step dt", "an adaptive integrator (dop853)"};
-    // gains well beyond 1/dt make the stabilization itself the unstable part
-    if (baumgarte && std::max(o.baumgarte_alpha, o.baumgarte_beta) * h > 1)
-      options.emplace_back("smaller Baumgarte gains");
-  } else {
-    // the controller wants ever smaller steps: tolerances at round-off of the state, or
-    // equations that need something other than an explicit method's steps
-    if (o.rtol < 1e-6 || o.atol < 1e-6) options.emplace_back("a looser rtol/atol");
-    if (o.case_id != 3) options.emplace_back("Case 3");
-  }
-  if (o.case_id == 1 && o.stabilization != Stabilization::projection)
-    options.emplace_back("stabilization by projection");
-  if (options.empty())
-    options.push_back(t > 0 ? "a duration under " + format_significant(t, 3) + " s" : "gentler initial conditions");
-  return try_list(options);
-}
-
 [[noreturn]] void fail(const SimulationOptions& o, ode::StepStatus status, double t, double h) {
   std::string what(ode::describe(status));
   if (info(o.integrator).adaptive && status != ode::StepStatus::newton_failed)
     what += "; the equations may be stiff or beyond double precision here";
-  fail(o, what, what_to_try(o, status, t, h), t, h);
+  fail(o, what, failed_step_hint(o, o.case_id == 1, status, t, h), t, h);
 }
 
 /// A run of one case with one integrator; the stepping lives in the two subclasses.
@@ -484,47 +460,15 @@ const SimulationOptions& Simulation::options() const { return impl_->run->option
 
 // --- results that mean nothing ------------------------------------------------------
 
-namespace {
-
-// Past these a finished run's numbers no longer describe the motion.
-// An energy error of 1 is a run that made or lost as much energy as the energy scale
-// holds (kinetic energy plus m g (|y1| + |y2| + L)): every velocity is off by a factor,
-// not a digit. The shipped lessons' deliberately poor runs (explicit and symplectic
-// Euler) stay below 0.3.
-constexpr double kMeaninglessEnergyError = 1.0;
-// A pin error of a quarter of the block length draws the blocks visibly apart, and
-// the pin force acts at two points that far apart: it is no longer the linkage. The
-// drift lesson shows 0.13 L on purpose.
-constexpr double kMeaninglessPinError = 0.25;  // of L
-
-}  // namespace
-
 std::string result_warning(const SimulationOptions& o, const Params& p, const SimulationStats& st) {
-  const bool energy = st.max_energy_error > kMeaninglessEnergyError;
-  const bool pin = st.max_constraint_error > kMeaninglessPinError * p.L;
-  if (!energy && !pin) return "";
-  std::vector<std::string> what;
-  if (energy)
-    what.push_back("the energy error reached " + format_significant(st.max_energy_error, 2) +
-                   " times the energy scale (" + format_significant(st.energy_scale, 3) + " J)");
-  if (pin)
-    what.push_back("the pin came " + format_significant(st.max_constraint_error, 2) + " m apart (" +
-                   format_significant(st.max_constraint_error / p.L, 2) + " of the block length L)");
-  std::vector<std::string> remedies;
-  if (pin) {
-    if (o.stabilization != Stabilization::projection) remedies.emplace_back("stabilization by projection");
-    remedies.emplace_back("Case 3 (it cannot drift)");
-  }
-  if (!info(o.integrator).adaptive) {
-    remedies.emplace_back("a smaller step dt");
-    remedies.emplace_back("an adaptive integrator (dop853)");
-  } else if (o.rtol > 1e-12 || o.atol > 1e-12) {
-    remedies.emplace_back("a tighter rtol/atol");
-  } else {
-    remedies.emplace_back("a shorter duration");
-  }
-  return "the run's numbers do not describe the motion: " + what.front() +
-         (pin && energy ? " and " + what.back() : "") + "; " + try_list(remedies);
+  std::string energy, pin;
+  if (st.max_energy_error > kMeaninglessEnergyError)
+    energy = "the energy error reached " + format_significant(st.max_energy_error, 2) + " times the energy scale (" +
+             format_significant(st.energy_scale, 3) + " J)";
+  if (st.max_constraint_error > kMeaninglessDrift * p.L)
+    pin = "the pin came " + format_significant(st.max_constraint_error, 2) + " m apart (" +
+          format_significant(st.max_constraint_error / p.L, 2) + " of the block length L)";
+  return meaningless_run_warning(o, energy, pin);
 }
 
 }  // namespace linkage

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "integrate/ode.hpp"
 #include "integrate/simulation.hpp"
 
 namespace linkage {
@@ -20,6 +21,27 @@ inline constexpr unsigned kCheckInterval = 4096;
 
 /// "try A, B or C".
 [[nodiscard]] std::string try_list(const std::vector<std::string>& options);
+
+// Past these a finished run's numbers no longer describe the motion. An energy error of
+// 1 is a run that made or lost as much energy as the energy scale holds: every velocity
+// is off by a factor, not a digit (the shipped lessons' deliberately poor runs stay below
+// 0.3). A joint a quarter of the longest body (the homework's block length L) apart draws
+// the bodies visibly apart, its force acting at two points that far apart: it is no
+// longer the linkage (the drift lesson shows 0.13 L on purpose).
+inline constexpr double kMeaninglessEnergyError = 1.0;
+inline constexpr double kMeaninglessDrift = 0.25;  // of the longest body's size
+
+/// The warning for a finished run whose numbers mean nothing: `energy` and `drift` say
+/// what went wrong ("the energy ... reached 3 times the energy scale (2 J)", "joint P came
+/// 1.2 m apart (...)"), empty when that is within bounds; "" when both are.
+[[nodiscard]] std::string meaningless_run_warning(const SimulationOptions& o, const std::string& energy,
+                                                  const std::string& drift);
+
+/// What might change the outcome of a step that failed at t with step h, never the case
+/// or integrator in use: "try A, B or C". `kept`: the case keeps constraint rows (they can
+/// be stabilized).
+[[nodiscard]] std::string failed_step_hint(const SimulationOptions& o, bool kept, ode::StepStatus status, double t,
+                                           double h);
 
 /// The floor under adaptive steps, relative to t and the duration: at the mean step of the
 /// last kBudgetIntervals x kCheckInterval steps, the run must reach its end within

@@ -19,6 +19,7 @@ const std::string& Mechanism::unaliased(const std::string& alias) const {
     if (a.name == alias) return a.key;
   return alias;
 }
+const std::string& Mechanism::named(const std::string& key) const { return speaks_aliases ? aliased(key) : key; }
 
 int Mechanism::body_index(const std::string& body_name) const {
   for (std::size_t i = 0; i < bodies.size(); ++i)

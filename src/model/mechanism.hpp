@@ -153,6 +153,9 @@ struct Mechanism {
   SourcePos independent_pos;
   std::vector<Alias> aliases;  // [aliases], in file order
   Picture picture;
+  // Tables and messages name quantities by `aliases`: a run from the homework's flags
+  // speaks the spec's names (x1_dot, not 1.x_dot).
+  bool speaks_aliases = false;
 
   [[nodiscard]] const Body* find_body(const std::string& body_name) const;
   /// Index into `bodies`, -1 for the ground or a name that is not a body.
@@ -162,6 +165,8 @@ struct Mechanism {
   [[nodiscard]] const std::string& aliased(const std::string& key) const;
   /// The key whose alias is `alias`, or `alias` when it is none ("theta1" -> "1.theta").
   [[nodiscard]] const std::string& unaliased(const std::string& alias) const;
+  /// `key` as tables and messages name it: aliased(key) when speaks_aliases, else `key`.
+  [[nodiscard]] const std::string& named(const std::string& key) const;
 };
 
 /// "file:line:column: " or "" for a position built in code.

@@ -152,7 +152,7 @@ std::string likely_causes(const Mechanism& mechanism) {
     for (const Given& g : all) {
       if (!keep(g)) continue;
       out += out.empty() ? "" : ", ";
-      out += g.name + " = " + format_roundtrip(g.value) + " (" + where(*g.pos) + ")";
+      out += mechanism.named(g.name) + " = " + format_roundtrip(g.value) + " (" + where(*g.pos) + ")";
     }
     return out;
   };

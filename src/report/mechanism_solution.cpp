@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "evaluate/case_evaluator.hpp"
+#include "integrate/mechanism_columns.hpp"
 #include "model/mechanism_toml.hpp"
 #include "report/json_layout.hpp"
 #include "report/mechanism_parts.hpp"
@@ -141,7 +142,8 @@ nlohmann::ordered_json derived_json(const MechanismSolution& s, nlohmann::ordere
   return derived;
 }
 
-// The [aliases] rename keys the JSON has, each to a name no other key has.
+// The [aliases] rename keys the JSON has or columns `simulate` writes, each to a name no
+// other key has.
 void check_aliases(const MechanismSolution& s) {
   const sym::System& system = *s.system;
   const Mechanism& m = system.mechanism();
@@ -152,6 +154,7 @@ void check_aliases(const MechanismSolution& s) {
   const nlohmann::ordered_json derived = derived_json(s, units);
   for (const auto& [key, value] : derived.items()) keys.insert(key);
   for (const sym::SymbolInfo& info : system.table().all()) keys.insert(info.key);
+  for (const MechanismColumn& c : mechanism_columns(system)) keys.insert(c.name);
   std::set<std::string> renamed;
   for (const Alias& a : m.aliases) renamed.insert(a.key);
   for (const Alias& a : m.aliases) {
@@ -159,7 +162,9 @@ void check_aliases(const MechanismSolution& s) {
       throw Error::input(concat({where(a.pos), "[aliases]: '", a.key,
                                  "' is not a key of the JSON of the worked solution; valid: a key of its parameters, "
                                  "state, derived values or unknowns (linkage solve --mechanism ",
-                                 m.name, " --format json), e.g. 'I', '1.theta_ddot'"}));
+                                 m.name,
+                                 " --format json) or a column of linkage simulate, e.g. 'I', '1.theta_ddot', "
+                                 "'P.constraint_error'"}));
     if (keys.contains(a.name) && !renamed.contains(a.name))
       throw Error::input(concat({where(a.pos), "[aliases]: '", a.key, "' = '", a.name, "' names the key '", a.name,
                                  "' the JSON already has; choose another alias"}));

@@ -117,6 +117,45 @@ TEST(MechanismSimulation, StabilizationHoldsTheLoop) {
   EXPECT_LT(projected, 1e-13);
 }
 
+// A tree's Case 1 keeps its joints' rows, which drift without stabilization: explicit
+// Euler at a coarse step takes the homework's pin far apart, and the run goes on to its
+// end, the drift named by the warning (as the homework always did). A loop that opens
+// still stops the run.
+TEST(MechanismSimulation, ATreeDriftsToItsEndWithAWarningALoopStops) {
+  Mechanism two_blocks = load_mechanism("two-blocks");
+  apply_setting(two_blocks, "1.theta_dot=20", "test");
+  apply_setting(two_blocks, "2.theta_dot=-35", "test");
+  const sym::System tree(two_blocks);
+  SimulationOptions o;
+  o.case_id = 1;
+  o.integrator = IntegratorKind::euler;
+  o.dt = 0.05;
+  o.duration = 10;
+  o.stabilization = Stabilization::none;
+  MechanismSimulation drifting(tree, sym::checked_initial_state(tree).state, o);
+  eval::MechanismSample sample;
+  for (int i = 0; i <= 10; ++i) drifting.sample(i, drifting.state_at(i), sample);
+  EXPECT_GT(drifting.stats().max_constraint_error, 1.0) << "metres";
+  EXPECT_EQ(drifting.stats().drifted_joint, "P");
+  const std::string warning = mechanism_result_warning(o, drifting.stats());
+  EXPECT_EQ(warning.rfind("the run's numbers do not describe the motion: joint P came ", 0), 0U) << warning;
+  EXPECT_NE(warning.find(" m apart ("), std::string::npos) << warning;
+  EXPECT_NE(warning.find(" of body 1's length L); try stabilization by projection, Case 3 (it cannot drift), "),
+            std::string::npos)
+      << warning;
+
+  const sym::System loop(load_mechanism("four-bar"));
+  o.case_id = 2;
+  o.duration = 100;
+  MechanismSimulation opening(loop, sym::checked_initial_state(loop).state, o);
+  try {
+    for (int i = 0; i <= 10; ++i) (void)opening.state_at(10 * i);
+    ADD_FAILURE() << "the loop opened without stopping the run";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("(the loop opened)"), std::string::npos) << e.what();
+  }
+}
+
 // Every integrator runs every shipped mechanism for a second with finite results.
 TEST(MechanismSimulation, EveryIntegratorRuns) {
   for (const IntegratorInfo& i : integrators())
