@@ -67,16 +67,6 @@ SampledRun sample_run(const Run& run, double every, const std::vector<std::size_
   return out;
 }
 
-State reference_final_state(const Run& run) {
-  SimulationOptions o;
-  o.case_id = 3;
-  o.integrator = IntegratorKind::dop853;
-  o.rtol = o.atol = kReferenceTolerance;
-  o.duration = run.options.duration;
-  Simulation sim(run.inputs.params(), run.inputs.state(), o);
-  return sim.state_at(o.duration).generalized();
-}
-
 std::vector<MechanismColumn> mechanism_final_columns(const sym::System& system) {
   std::vector<MechanismColumn> out = select_mechanism_columns(mechanism_columns(system), "default", "columns");
   out.erase(out.begin());  // t
@@ -96,11 +86,6 @@ std::vector<double> mechanism_reference_final(const Run& run) {
   std::vector<double> out;
   for (const auto& column : data.columns) out.push_back(column.back());
   return out;
-}
-
-double final_error(const BodyState& a, const State& r) {
-  return std::max(
-      {std::fabs(a.x1 - r.x1), std::fabs(a.y1 - r.y1), std::fabs(a.theta1 - r.theta1), std::fabs(a.theta2 - r.theta2)});
 }
 
 }  // namespace linkage

@@ -16,9 +16,10 @@ struct SampledRun {
   BodyState final_state;
 };
 
-/// Runs `run`, recording the series `series` (indices into kSeries) every `every` s
-/// (for fixed-step integrators: the nearest whole number of steps, at least one).
-/// Throws Error::diverged (exit 3) when the run fails.
+/// Runs `run` by the homework's own simulation, recording the series `series` (indices
+/// into kSeries) every `every` s (for fixed-step integrators: the nearest whole number of
+/// steps, at least one): a homework plot's centre of mass and invariant errors, which no
+/// mechanism column has yet. Throws Error::diverged (exit 3) when the run fails.
 [[nodiscard]] SampledRun sample_run(const Run& run, double every, const std::vector<std::size_t>& series);
 
 /// The sample times of a run: 0, every, 2 every, ..., duration.
@@ -37,8 +38,7 @@ struct MechanismSampledRun {
                                                        const std::vector<MechanismColumn>& columns);
 
 /// The reference for final errors: DOP853 at rtol = atol = kReferenceTolerance on Case 3
-/// (which cannot drift), for the run's inputs and duration.
-[[nodiscard]] State reference_final_state(const Run& run);
+/// (which cannot drift).
 inline constexpr double kReferenceTolerance = 1e-13;
 
 /// What a mechanism's final error compares: every body's x, y, theta and every slider's
@@ -46,8 +46,5 @@ inline constexpr double kReferenceTolerance = 1e-13;
 [[nodiscard]] std::vector<MechanismColumn> mechanism_final_columns(const sym::System& system);
 /// Those columns at the end of the reference run (DOP853 at kReferenceTolerance on Case 3).
 [[nodiscard]] std::vector<double> mechanism_reference_final(const Run& run);
-
-/// Largest |a - b| over x1, y1, theta1, theta2.
-[[nodiscard]] double final_error(const BodyState& a, const State& reference);
 
 }  // namespace linkage
