@@ -16,7 +16,6 @@
 #include "core/name_match.hpp"
 #include "core/number_format.hpp"
 #include "encode/video_writer.hpp"
-#include "integrate/series.hpp"
 #include "lesson/lesson.hpp"
 #include "lesson/schema.hpp"
 #include "model/inputs_toml.hpp"
@@ -46,7 +45,7 @@ std::vector<KeySpec> concat(std::initializer_list<std::span<const KeySpec>> part
   return out;
 }
 
-/// The names of a table's entries, e.g. spellings(kSeries, &SeriesInfo::name).
+/// The names of a table's entries, e.g. spellings(kInputKeys, &InputKey::key).
 template <class Range, class Member>
 std::vector<std::string_view> spellings(const Range& entries, Member name) {
   std::vector<std::string_view> out;
@@ -700,18 +699,15 @@ class Parser {
     return s;
   }
 
-  /// Whether a figure of `runs` draws the homework's series (integrate/series.hpp): its
-  /// centre of mass, invariants and their errors have no mechanism column yet.
-  static bool homework_series(const std::vector<Run>& runs) { return runs.front().built->aliased; }
+  /// The columns a figure of `runs` may draw: the mechanism's, under the names it goes by
+  /// (the homework's x1, x_com through two-blocks.toml's [aliases]).
+  static std::vector<MechanismColumn> figure_columns(const std::vector<Run>& runs) {
+    return runs.front().built->named_columns();
+  }
 
   Figure figure(const TableReader& r, const std::vector<Run>& runs) const {
     Figure f;
-    if (!homework_series(runs)) {
-      const std::vector<MechanismColumn> all = mechanism_columns(*runs.front().built->system);
-      f.mechanism_x = find_mechanism_column(all, r.string("x").value_or("t"), r.prefix("x") + "x");
-    } else {
-      f.x = *find_series(r.choice("x", spellings(kSeries, &SeriesInfo::name)).value_or("t"));
-    }
+    f.x = find_mechanism_column(figure_columns(runs), r.string("x").value_or("t"), r.prefix("x") + "x");
     f.log_x = r.boolean("log_x").value_or(false);
     f.log_y = r.boolean("log_y").value_or(false);
     f.title = r.string("title").value_or("");
@@ -744,22 +740,14 @@ class Parser {
     s.figure.difference = r.boolean("difference").value_or(false);
     if (auto a = r.choice("angles", {"rad", "deg"})) s.figure.angles = parse_angle_unit(*a, r.where("angles"));
     if (s.figure.difference) check_difference(r, s);
-    if (!homework_series(s.runs)) {
-      const std::vector<MechanismColumn> all = mechanism_columns(*s.runs.front().built->system);
-      const auto names = *r.strings("y");
-      for (std::size_t i = 0; i < names.size(); ++i)
-        s.figure.mechanism_y.push_back(find_mechanism_column(all, names[i], entry_origin(r, "y", i)));
-      if (s.figure.mechanism_y.empty()) r.fail("y", "'y' is empty; name at least one column");
-      std::vector<std::string> units;
-      for (const MechanismColumn& c : s.figure.mechanism_y) units.push_back(c.unit);
-      check_equal_axes(r, s, s.figure.mechanism_x->unit, units);
-      return s;
-    }
-    s.figure.y = r.choice_list("y", spellings(kSeries, &SeriesInfo::name));
-    if (s.figure.y.empty()) r.fail("y", "'y' is empty; name at least one series");
+    const std::vector<MechanismColumn> all = figure_columns(s.runs);
+    const auto names = *r.strings("y");
+    for (std::size_t i = 0; i < names.size(); ++i)
+      s.figure.y.push_back(find_mechanism_column(all, names[i], entry_origin(r, "y", i)));
+    if (s.figure.y.empty()) r.fail("y", "'y' is empty; name at least one column");
     std::vector<std::string> units;
-    for (std::size_t i : s.figure.y) units.emplace_back(kSeries[i].unit);
-    check_equal_axes(r, s, std::string(kSeries[s.figure.x].unit), units);
+    for (const MechanismColumn& c : s.figure.y) units.push_back(c.unit);
+    check_equal_axes(r, s, s.figure.x.unit, units);
     return s;
   }
 
@@ -790,13 +778,8 @@ class Parser {
     s.title = f.title;
     s.width = f.width;
     s.height = f.height;
-    const bool on_mechanism = !homework_series(s.runs);
-    if (auto y = on_mechanism ? r.string("plot") : r.choice("plot", spellings(kSeries, &SeriesInfo::name))) {
-      if (on_mechanism)
-        f.mechanism_y = {
-            find_mechanism_column(mechanism_columns(*s.runs.front().built->system), *y, r.prefix("plot") + "plot")};
-      else
-        f.y = {*find_series(*y)};
+    if (auto y = r.string("plot")) {
+      f.y = {find_mechanism_column(figure_columns(s.runs), *y, r.prefix("plot") + "plot")};
       f.log_y = r.boolean("log_y").value_or(true);
       s.plot = f;
     } else if (r.has("log_y")) {

@@ -63,11 +63,9 @@ struct Run {
 
 /// A time-series figure: quantities against time (or another quantity) for some runs.
 struct Figure {
-  std::vector<std::size_t> y;  // series indices
-  std::size_t x = 0;           // series index ("t")
-  // On a mechanism: its trajectory columns instead of the series.
-  std::vector<MechanismColumn> mechanism_y;
-  std::optional<MechanismColumn> mechanism_x;
+  // The mechanism's trajectory columns, under the names the run's mechanism goes by.
+  std::vector<MechanismColumn> y;
+  MechanismColumn x;  // t unless given
   bool log_x = false, log_y = false;
   bool equal_axes = false;            // plot steps: x and y at one scale (a path keeps its shape)
   bool difference = false;            // plot steps: each run after the first as abs(run - first run)

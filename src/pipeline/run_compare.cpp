@@ -88,7 +88,7 @@ RunFigures run_figures(double error, const MechanismStats& stats) {
   return f;
 }
 
-/// A mechanism run's figures: its final body positions against the reference run's,
+/// A mechanism run's figures: its final generalized coordinates against the reference run's,
 /// its energy-balance and constraint errors over the samples, its cost.
 RunFigures mechanism_figures(const Run& run, double every, std::map<std::string, std::vector<double>>& references,
                              std::vector<std::string>& warnings) {
@@ -161,8 +161,8 @@ plot::Plot cost_plot(const std::vector<Run>& runs, const std::vector<RunFigures>
 }
 
 std::string final_error_note() {
-  return "Final error: largest difference of every body's x, y, θ and every slider's travel at the end from Case 3 "
-         "by DOP853 at rtol = atol = " +
+  return "Final error: largest difference of the generalized coordinates (a floating body's x, y, θ, a pin's "
+         "angle, a slider's travel) at the end from Case 3 by DOP853 at rtol = atol = " +
          format_significant(kReferenceTolerance, 1) +
          "; energy error: the energy balance E − E(0) − W relative to the energy scale.";
 }

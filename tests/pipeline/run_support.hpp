@@ -44,4 +44,11 @@ inline MechanismColumn mechanism_column(const Run& run, const std::string& name)
   throw std::invalid_argument("no column " + name);
 }
 
+/// One column under the names the run's mechanism goes by ("theta1" on the homework).
+inline MechanismColumn named_column(const Run& run, const std::string& name) {
+  for (const MechanismColumn& c : run.built->named_columns())
+    if (c.name == name) return c;
+  throw std::invalid_argument("no column " + name);
+}
+
 }  // namespace linkage::test
