@@ -216,6 +216,8 @@ void MechanismDynamics::compile_case() const {
   out.push_back(prepare(p.x));
   out.push_back(prepare(p.y));
   out.push_back(substituted(sym::angular_momentum_about_centre(system)));
+  const sym::Vec2 com = sym::centre_of_mass(system), com_velocity = sym::centre_of_mass_velocity(system);
+  for (const ex& e : {com.x, com.y, com_velocity.x, com_velocity.y}) out.push_back(prepare(e));
   outputs_ = compile(out, output_inputs);
   output_symbols_ = output_inputs;
 
@@ -422,6 +424,7 @@ void MechanismDynamics::sample(double t, const Eigen::VectorXd& y, MechanismSamp
   out.momentum_x = values[k++];
   out.momentum_y = values[k++];
   out.angular_momentum = values[k++];
+  for (double& v : out.com) v = values[k++];
   if (!kinematics) return;
   values.resize(kinematics_.output_count());
   scratch.resize(kinematics_.scratch_size());

@@ -14,6 +14,7 @@
 // M = d^2 T / dq'^2 (mass-weighted, so free mechanisms keep their momentum).
 #include <Eigen/Core>
 #include <Eigen/LU>
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
@@ -38,6 +39,7 @@ struct MechanismSample {
   double power = 0;  // of dampers and applied loads, W
   double momentum_x = 0, momentum_y = 0;
   double angular_momentum = 0;  // about the centre of mass
+  std::array<double, 4> com{};  // the centre of mass: x, y, x', y'
   // Only when sample() is asked for the kinematics (a column needs them), else empty:
   std::vector<double> accelerations;         // per body: x'', y'', theta'' (0 for a point mass)
   std::vector<double> slider_accelerations;  // per joint: s'' for a slider, 0 for a pin

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <limits>
 #include <sstream>
 
@@ -82,16 +83,44 @@ std::vector<MechanismColumn> mechanism_columns(const sym::System& system) {
     out.push_back({joint.name + ".constraint_velocity_error", stages.constraint_rate_unit,
                    "|C'| of joint " + joint.name + "'s position constraint", Q::constraint_rate, j, false});
   }
+  if (!m.joints.empty()) {
+    out.push_back({"constraint_position_error", "m", "|C| of every joint's position constraints together",
+                   Q::constraints, 0, false});
+    out.push_back({"constraint_velocity_error", "m/s", "|C'| of every joint's position constraints together",
+                   Q::constraints_rate, 0, false});
+  }
+  static const char* const com_suffix[] = {"x", "y", "x_dot", "y_dot"};
+  static const char* const com_what[] = {"x", "y", "velocity, x", "velocity, y"};
+  for (std::size_t c = 0; c < 4; ++c)
+    out.push_back({std::string("com.") + com_suffix[c], c < 2 ? "m" : "m/s",
+                   std::string(com_what[c]) + " of the mechanism's centre of mass G", Q::com, c, false});
+  for (std::size_t b = 0; b < system.bodies().size(); ++b)
+    for (std::size_t c = 0; c < 2; ++c)
+      out.push_back({system.bodies()[b].name + "." + axes[c] + "_from_com", "m",
+                     std::string(axes[c]) + " of body " + system.bodies()[b].name + "'s centre of mass less G's",
+                     Q::from_com, 2 * b + c, false});
   out.push_back({"energy", "J", "kinetic plus potential energy", Q::energy, 0, false});
   out.push_back({"work", "J", "work done by dampers and applied loads since t = 0", Q::work, 0, false});
   out.push_back({"energy_error", "J", "energy balance E - E(0) - work: 0 up to the integration error", Q::energy_error,
                  0, false});
+  out.push_back({"energy_error_relative", "", "|E - E(0) - work| / the energy scale (simulate's energy_scale)",
+                 Q::energy_error_relative, 0, false});
   if (!grounded(m)) {
     out.push_back({"momentum_x", "kg m/s", "linear momentum, x", Q::momentum_x, 0, false});
     out.push_back({"momentum_y", "kg m/s", "linear momentum, y", Q::momentum_y, 0, false});
     out.push_back(
         {"angular_momentum", "kg m^2/s", "angular momentum about the centre of mass", Q::angular_momentum, 0, false});
+    out.push_back(
+        {"momentum_x_error", "kg m/s", "|p_x - p_x(0)|: 0 up to the integration error", Q::momentum_x_error, 0, false});
+    out.push_back({"momentum_y_error", "kg m/s", "|p_y - p_y(0) + M g t|: 0 up to the integration error",
+                   Q::momentum_y_error, 0, false});
+    out.push_back({"angular_momentum_error", "kg m^2/s", "|H_G - H_G(0)|: 0 up to the integration error",
+                   Q::angular_momentum_error, 0, false});
+    out.push_back({"com_parabola_error", "m", "distance of G from its free-fall parabola G(0) + G'(0) t - g t^2/2",
+                   Q::com_parabola_error, 0, false});
   }
+  for (MechanismColumn& c : out)
+    if (const std::size_t dot = c.name.rfind('.'); dot != std::string::npos) c.owner = c.name.substr(0, dot);
   return out;
 }
 
@@ -180,6 +209,15 @@ bool needs_kinematics(const std::vector<MechanismColumn>& columns) {
       case MechanismQuantity::momentum_x:
       case MechanismQuantity::momentum_y:
       case MechanismQuantity::angular_momentum:
+      case MechanismQuantity::com:
+      case MechanismQuantity::from_com:
+      case MechanismQuantity::constraints:
+      case MechanismQuantity::constraints_rate:
+      case MechanismQuantity::energy_error_relative:
+      case MechanismQuantity::momentum_x_error:
+      case MechanismQuantity::momentum_y_error:
+      case MechanismQuantity::angular_momentum_error:
+      case MechanismQuantity::com_parabola_error:
         break;
     }
   return false;
@@ -208,9 +246,21 @@ std::vector<MechanismColumn> named_columns(const std::vector<MechanismColumn>& a
   return out;
 }
 
+namespace {
+
+/// The norm of per-joint norms: |C| of all the rows together.
+double norm_of(const std::vector<double>& parts) {
+  double sum = 0;
+  for (const double p : parts) sum += p * p;
+  return std::sqrt(sum);
+}
+
+}  // namespace
+
 double column_value(const MechanismColumn& c, double t, const Eigen::VectorXd& y, const eval::MechanismSample& s,
-                    double energy0) {
+                    const ColumnOrigin& o) {
   const double work = y[y.size() - 1];
+  const double energy0 = o.energy0;
   switch (c.quantity) {
     case MechanismQuantity::time:
       return t;
@@ -244,12 +294,31 @@ double column_value(const MechanismColumn& c, double t, const Eigen::VectorXd& y
       return s.momentum_y;
     case MechanismQuantity::angular_momentum:
       return s.angular_momentum;
+    case MechanismQuantity::com:
+      return s.com[c.index];
+    case MechanismQuantity::from_com:
+      return s.pose[3 * (c.index / 2) + c.index % 2] - s.com[c.index % 2];
+    case MechanismQuantity::constraints:
+      return norm_of(s.constraint);
+    case MechanismQuantity::constraints_rate:
+      return norm_of(s.constraint_rate);
+    case MechanismQuantity::energy_error_relative:
+      return std::fabs(s.kinetic + s.potential - energy0 - work) / o.energy_scale;
+    case MechanismQuantity::momentum_x_error:
+      return std::fabs(s.momentum_x - o.momentum_x0);
+    case MechanismQuantity::momentum_y_error:
+      return std::fabs(s.momentum_y - (o.momentum_y0 - o.weight * t));
+    case MechanismQuantity::angular_momentum_error:
+      return std::fabs(s.angular_momentum - o.angular_momentum0);
+    case MechanismQuantity::com_parabola_error:
+      return std::hypot(s.com[0] - (o.com0[0] + o.com0[2] * t),
+                        s.com[1] - (o.com0[1] + o.com0[3] * t - 0.5 * o.g * t * t));
   }
   return 0;
 }
 
 std::string column_words(const MechanismColumn& c) {
-  const std::string owner = c.name.substr(0, c.name.rfind('.'));
+  const std::string& owner = c.owner;
   static const char* const position[] = {"x of body ", "y of body ", "angle θ of body "};
   static const char* const rate[] = {"velocity ẋ of body ", "velocity ẏ of body ", "angular velocity θ̇ of body "};
   static const char* const acceleration[] = {"acceleration ẍ of body ", "acceleration ÿ of body ",
@@ -284,6 +353,27 @@ std::string column_words(const MechanismColumn& c) {
       return "momentum p_{y}";
     case Q::angular_momentum:
       return "angular momentum H_{G}";
+    case Q::com: {
+      static const char* const com[] = {"centre of mass x_{G}", "centre of mass y_{G}", "centre of mass velocity ẋ_{G}",
+                                        "centre of mass velocity ẏ_{G}"};
+      return com[c.index];
+    }
+    case Q::from_com:
+      return (c.index % 2 == 0 ? "x − x_{G} of body " : "y − y_{G} of body ") + owner;
+    case Q::constraints:
+      return "constraint error |C|";
+    case Q::constraints_rate:
+      return "constraint rate error |Ċ|";
+    case Q::energy_error_relative:
+      return "relative energy error |E − E_{0} − W| / E_{scale}";
+    case Q::momentum_x_error:
+      return "momentum error |p_{x} − p_{x0}|";
+    case Q::momentum_y_error:
+      return "momentum error |p_{y} − p_{y0} + M g t|";
+    case Q::angular_momentum_error:
+      return "angular momentum error |H_{G} − H_{G0}|";
+    case Q::com_parabola_error:
+      return "distance of G from the parabola G_{0} + v_{0} t − g t^{2}/2";
     case Q::slider:
     case Q::slider_acceleration:
     case Q::force:

@@ -3,9 +3,12 @@
 // as the mechanism file's contract says: t; for every body <body>.x, <body>.y,
 // <body>.theta (no theta for a point mass); <joint>.s for sliders (the default); on
 // request the rates and accelerations, each named point's position, velocity and
-// acceleration (<body>.<point>.x, .y, .vx, .vy, .ax, .ay), each joint's force and
-// constraint errors, the energy and its balance, and the momenta when nothing holds the
+// acceleration (<body>.<point>.x, .y, .vx, .vy, .ax, .ay), the centre of mass (com.x,
+// com.y, com.x_dot, com.y_dot) and each body's place from it, each joint's force and
+// constraint errors and all joints' together, the energy and its balance (in J and
+// relative to the energy scale), and the momenta and their errors when nothing holds the
 // mechanism to the ground.
+#include <array>
 #include <functional>
 #include <string>
 #include <string_view>
@@ -33,6 +36,25 @@ enum class MechanismQuantity {
   momentum_x,
   momentum_y,
   angular_momentum,
+  com,                     // index: x, y, x', y'
+  from_com,                // index: 2 body + component (x, y): the body's centre less G
+  constraints,             // |C| of every joint's rows together
+  constraints_rate,        // |C'| of the same
+  energy_error_relative,   // |E - E0 - W| / energy scale
+  momentum_x_error,        // |p_x - p_x0|
+  momentum_y_error,        // |p_y - p_y0 + M g t|
+  angular_momentum_error,  // |H_G - H_G0|
+  com_parabola_error,      // |G - (G0 + G0' t - g t^2 / 2 y)|
+};
+
+/// What the error columns measure a sample against: the run's state at t = 0.
+struct ColumnOrigin {
+  double energy0 = 0;       // E at t = 0, J
+  double energy_scale = 1;  // J: what a relative energy error divides by (MechanismStats)
+  double momentum_x0 = 0, momentum_y0 = 0, angular_momentum0 = 0;
+  std::array<double, 4> com0{};  // the centre of mass and its velocity at t = 0
+  double weight = 0;             // M g, N (along -y)
+  double g = 0;                  // m/s^2
 };
 
 struct MechanismColumn {
@@ -42,6 +64,7 @@ struct MechanismColumn {
   MechanismQuantity quantity = MechanismQuantity::time;
   std::size_t index = 0;
   bool by_default = false;
+  std::string owner{};  // the body, point or joint it belongs to ("2", "3.P"), kept when the name is aliased
 };
 
 /// A column in words for a plot axis or legend, in plot markup and without its unit:
@@ -77,8 +100,8 @@ struct MechanismColumn {
 [[nodiscard]] std::vector<MechanismColumn> named_columns(const std::vector<MechanismColumn>& all, std::string_view list,
                                                          const std::string& origin);
 
-/// A column's value at a sample; `y` the state (its last entry W), `energy0` E at t = 0.
+/// A column's value at a sample; `y` the state (its last entry W), `origin` the run's t = 0.
 [[nodiscard]] double column_value(const MechanismColumn& column, double t, const Eigen::VectorXd& y,
-                                  const eval::MechanismSample& sample, double energy0);
+                                  const eval::MechanismSample& sample, const ColumnOrigin& origin);
 
 }  // namespace linkage

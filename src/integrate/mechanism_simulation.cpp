@@ -70,29 +70,45 @@ struct MechanismSimulation::Impl {
     eval::MechanismSample s;
     dynamics.sample(0, y, s);
     energy0 = s.kinetic + s.potential;
-    double total_mass = 0, spread = 0;
-    for (const sym::BodySystem& b : system.bodies())
-      total_mass += sym::to_double(b.mass.subs(system.constants()).subs(system.parameter_values()));
-    const std::size_t bodies = s.pose.size() / 3;
-    for (std::size_t i = 0; i < bodies; ++i)
-      for (std::size_t j = 0; j < bodies; ++j)
-        spread = std::max(spread, std::hypot(s.pose[3 * i] - s.pose[3 * j], s.pose[3 * i + 1] - s.pose[3 * j + 1]));
-    double height = 0;
-    for (std::size_t i = 0; i < bodies; ++i) height = std::max(height, std::fabs(s.pose[3 * i + 1]));
-    const auto value = [&](const Quantity& q) {
-      return sym::to_double(
-          system.quantity(q, false).subs(system.constants()).subs(system.constants()).subs(system.parameter_values()));
+    // The energy scale: T + |V - V_gravity| + sum_i m_i |g| (|y_i| + h_i), h_i the body's
+    // half-length (rectangle, rod: length/2; disc: radius; point: 0), so that a body's
+    // weight counts over the height it could fall; on two-blocks the homework's
+    // T + m g (|y1| + |y2| + L).
+    const auto number = [&](const GiNaC::ex& e) {
+      return sym::to_double(e.subs(system.constants()).subs(system.constants()).subs(system.parameter_values()));
     };
-    const double g = system.mechanism().gravity ? std::fabs(value(*system.mechanism().gravity)) : 0;
+    double g = 0;
+    if (system.mechanism().gravity) g = number(system.quantity(*system.mechanism().gravity, false));
+    double total_mass = 0, gravity_potential = 0, fall = 0;
+    for (std::size_t i = 0; i < system.bodies().size(); ++i) {
+      const double m = number(system.bodies()[i].mass), y_i = s.pose[3 * i + 1];
+      const Body& body = system.mechanism().bodies[i];
+      double half = 0;
+      switch (body.shape) {
+        case Shape::rectangle:
+        case Shape::rod:
+          if (body.length) half = number(system.quantity(*body.length, false)) / 2;
+          break;
+        case Shape::disc:
+          if (body.radius) half = number(system.quantity(*body.radius, false));
+          break;
+        case Shape::point:
+          break;
+      }
+      total_mass += m;
+      gravity_potential += m * g * y_i;
+      fall += m * std::fabs(g) * (std::fabs(y_i) + std::fabs(half));
+    }
+    stats.energy_scale = s.kinetic + std::fabs(s.potential - gravity_potential) + fall;
     stats.drift_allowed = system.tree().loop_joints.empty();
     for (const Body& b : system.mechanism().bodies)
       for (const auto& [size, what] : {std::pair{&b.length, "length"}, std::pair{&b.radius, "radius"}})
-        if (*size && std::fabs(value(**size)) > stats.size) {
-          stats.size = std::fabs(value(**size));
+        if (*size && std::fabs(number(system.quantity(**size, false))) > stats.size) {
+          stats.size = std::fabs(number(system.quantity(**size, false)));
           stats.size_name = "body " + b.name + "'s " + what + " " + (*size)->text;
         }
-    stats.energy_scale = s.kinetic + std::fabs(s.potential) + total_mass * g * (spread + height);
     if (!(stats.energy_scale > 0)) stats.energy_scale = 1;  // nothing moves and nothing pulls: report in J
+    origin = {energy0, stats.energy_scale, s.momentum_x, s.momentum_y, s.angular_momentum, s.com, total_mass * g, g};
     if (project) dynamics.project(0, y);
     start_stepper();
   }
@@ -138,6 +154,7 @@ struct MechanismSimulation::Impl {
   bool project = false;
   Vector y, sample_y;
   double energy0 = 0, last_t = 0;
+  ColumnOrigin origin;  // the error columns' t = 0
   MechanismStats stats;
   std::function<void(double)> report;
   unsigned steps = 0;
@@ -305,6 +322,7 @@ void MechanismSimulation::on_progress(std::function<void(double)> report) { impl
 const eval::MechanismDynamics& MechanismSimulation::dynamics() const { return impl_->dynamics; }
 const MechanismStats& MechanismSimulation::stats() const { return impl_->stats; }
 double MechanismSimulation::energy0() const { return impl_->energy0; }
+const ColumnOrigin& MechanismSimulation::origin() const { return impl_->origin; }
 const SimulationOptions& MechanismSimulation::options() const { return impl_->options; }
 
 std::string mechanism_result_warning(const SimulationOptions& o, const MechanismStats& st) {

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "evaluate/mechanism_dynamics.hpp"
+#include "integrate/mechanism_columns.hpp"
 #include "integrate/simulation.hpp"
 #include "symbolic/system.hpp"
 
@@ -18,7 +19,7 @@ struct MechanismStats {
   std::int64_t steps_accepted = 0;
   std::int64_t steps_rejected = 0;
   std::int64_t rhs_evaluations = 0;
-  double energy_scale = 0;          // J: T + |V| at the start plus M g times the bodies' spread
+  double energy_scale = 0;          // J: T + |V - V_gravity| + sum m_i g (|y_i| + half-length_i), at t = 0
   double max_energy_error = 0;      // |E - E0 - W| / energy_scale over samples (W: work of dampers and loads)
   double max_constraint_error = 0;  // m (rad for a slider's angle), over samples and joints
   std::string drifted_joint;        // the joint of max_constraint_error ("" while it is 0)
@@ -55,6 +56,8 @@ class MechanismSimulation {
   [[nodiscard]] const MechanismStats& stats() const;
   /// Kinetic plus potential energy at t = 0, J.
   [[nodiscard]] double energy0() const;
+  /// What the error columns measure against: E, the scale, the momenta and G at t = 0.
+  [[nodiscard]] const ColumnOrigin& origin() const;
   [[nodiscard]] const SimulationOptions& options() const;
 
  private:

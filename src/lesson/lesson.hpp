@@ -11,7 +11,6 @@
 #include <variant>
 #include <vector>
 
-#include "integrate/columns.hpp"
 #include "integrate/mechanism_columns.hpp"
 #include "integrate/simulation.hpp"
 #include "lesson/expression.hpp"
@@ -64,15 +63,15 @@ struct SolveStep {
 };
 struct SimulateStep {
   Run run;
-  double every = 0;                                // s between trajectory rows
-  std::string trajectory;                          // file in the output folder, empty for none
-  std::vector<Column> columns;                     // as `linkage simulate --columns`
-  std::vector<MechanismColumn> mechanism_columns;  // on a mechanism, as `--mechanism M --columns`
+  double every = 0;        // s between trajectory rows
+  std::string trajectory;  // file in the output folder, empty for none
+  // As `linkage simulate --columns`, named as run.built names them (x1 on the homework).
+  std::vector<MechanismColumn> mechanism_columns;
 };
 struct RenderStep {
   std::string out;  // file in the output folder
   std::string caption;
-  Run run;  // on the homework, or on run.built's mechanism
+  Run run;  // on run.built's mechanism (the homework's: two-blocks.toml)
   OutputKind kind = OutputKind::mp4;
   // The picture as render_options read it (the settings with the mechanism's title and the
   // equations shown, trails, ensemble, compare); --quality draft shrinks size and fps.

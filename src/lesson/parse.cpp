@@ -16,7 +16,6 @@
 #include "core/name_match.hpp"
 #include "core/number_format.hpp"
 #include "encode/video_writer.hpp"
-#include "integrate/series.hpp"
 #include "lesson/lesson.hpp"
 #include "lesson/schema.hpp"
 #include "model/inputs_toml.hpp"
@@ -31,7 +30,6 @@
 #include "report/markdown.hpp"
 #include "report/mechanism_solution.hpp"
 #include "report/mechanism_text.hpp"
-#include "scene/scene_builder.hpp"
 #include "symbolic/loop_closure.hpp"
 #include "symbolic/system.hpp"
 
@@ -47,7 +45,7 @@ std::vector<KeySpec> concat(std::initializer_list<std::span<const KeySpec>> part
   return out;
 }
 
-/// The names of a table's entries, e.g. spellings(kSeries, &SeriesInfo::name).
+/// The names of a table's entries, e.g. spellings(kInputKeys, &InputKey::key).
 template <class Range, class Member>
 std::vector<std::string_view> spellings(const Range& entries, Member name) {
   std::vector<std::string_view> out;
@@ -166,22 +164,14 @@ class Parser {
     return is_mechanism_file(name) ? referenced_file(r, key, name).string() : name;
   }
 
-  /// The mechanism `spec` with `settings` applied (errors name `origin`), loops closed;
-  /// built once per distinct spec and settings.
+  /// The mechanism `spec` with `settings` applied (errors name `origin`), loops closed,
+  /// `aliased` for the homework's names; built once per distinct spec and settings.
   std::shared_ptr<const BuiltMechanism> build(const std::string& spec, const std::vector<std::string>& settings,
-                                              const std::string& origin) const {
-    std::string key = spec;
+                                              const std::string& origin, bool aliased = false) const {
+    std::string key = spec + (aliased ? "\naliased" : "");
     for (const std::string& setting : settings) key += "\n" + setting;
     if (const auto it = built_.find(key); it != built_.end()) return it->second;
-    Mechanism mechanism = load_mechanism(spec);
-    for (const std::string& setting : settings) apply_setting(mechanism, setting, origin);
-    auto made = std::make_shared<BuiltMechanism>();
-    made->spec = spec;
-    made->settings = settings;
-    made->system = std::make_shared<const sym::System>(mechanism);
-    made->initial = sym::checked_initial_state(*made->system).state;
-    built_[key] = made;
-    return made;
+    return built_[key] = build_mechanism(spec, settings, origin, aliased);
   }
 
   /// The step's mechanism (its own `mechanism`, else the lesson's) and the settings it
@@ -462,16 +452,19 @@ class Parser {
   /// the innermost of `readers` (a `runs` entry, then its step) that has the key.
   Run finish_run(Run run, std::initializer_list<const TableReader*> readers, const Inputs& inputs) const {
     at_keys(readers, [&] { run.options.validate(); });
-    if (!run.mechanism.empty()) {
-      const auto with_set = std::find_if(readers.begin(), readers.end(), [](auto* r) { return r->has("set"); });
-      const std::string origin = (with_set != readers.end() ? *with_set : *readers.begin())->where("set");
-      run.built = at_keys(readers, [&] { return build(run.mechanism, run.settings, origin); });
-      // The initial state worked out as solve does (as `simulate --mechanism` does), so a
-      // value that breaks it is named with its likely causes; once per mechanism and case.
-      if (checked_.emplace(run.built.get(), run.options.case_id).second)
-        at_keys(readers,
-                [&] { (void)work_out_mechanism(run.built->system, {static_cast<CaseId>(run.options.case_id)}); });
-    }
+    const auto with_set = std::find_if(readers.begin(), readers.end(), [](auto* r) { return r->has("set"); });
+    const std::string origin = (with_set != readers.end() ? *with_set : *readers.begin())->where("set");
+    // The homework is two-blocks.toml with the run's inputs as its settings (as the
+    // homework's flags are), named by its [aliases] as the homework's inputs are.
+    run.built = at_keys(readers, [&] {
+      return run.mechanism.empty() ? build(kHomeworkMechanism, homework_settings(run.inputs), origin, true)
+                                   : build(run.mechanism, run.settings, origin);
+    });
+    // The initial state worked out as solve does (as `simulate --mechanism` does), so a
+    // value that breaks it is named with its likely causes; once per mechanism and case.
+    if (checked_.emplace(run.built.get(), run.options.case_id).second)
+      at_keys(readers,
+              [&] { (void)work_out_mechanism(run.built->system, {static_cast<CaseId>(run.options.case_id)}); });
     const TableReader& innermost = **readers.begin();
     run.label = innermost.string("label").value_or(default_label(run, inputs));
     run.series = innermost.string("series").value_or(std::string(info(run.options.integrator).name));
@@ -565,20 +558,11 @@ class Parser {
     s.run = step_run(r, inputs);
     s.every = sample_interval(r, s.run.options.duration, 100);
     if (r.has("trajectory")) s.trajectory = strip_extension(artifact_name(r, "trajectory"), {".csv"}) + ".csv";
-    if (s.run.built) {  // as `linkage simulate --mechanism --columns`: t first, "default" without the key
-      const auto names = r.strings("columns").value_or(std::vector<std::string>{"default"});
-      if (names.empty()) r.fail("columns", "'columns' is empty; name at least one column, \"default\" or \"all\"");
-      s.mechanism_columns = select_mechanism_columns(mechanism_columns(*s.run.built->system), names,
-                                                     [&](std::size_t i) { return entry_origin(r, "columns", i); });
-      return s;
-    }
-    const auto columns = r.strings("columns");  // as `linkage simulate --columns A,B`
-    std::string list = columns ? "" : "all";
-    for (const std::string& c : columns.value_or(std::vector<std::string>{})) {
-      list += list.empty() ? "" : ",";
-      list += c;
-    }
-    s.columns = parse_columns(list, columns ? r.prefix("columns") + "columns" : "columns");
+    // As `linkage simulate --columns`: t first, "default" without the key.
+    const auto names = r.strings("columns").value_or(std::vector<std::string>{"default"});
+    if (names.empty()) r.fail("columns", "'columns' is empty; name at least one column, \"default\" or \"all\"");
+    s.mechanism_columns = select_mechanism_columns(s.run.built->named_columns(), names,
+                                                   [&](std::size_t i) { return entry_origin(r, "columns", i); });
     return s;
   }
 
@@ -615,6 +599,46 @@ class Parser {
     return out;
   }
 
+  /// A render step's `panel` names as the mechanism's keys: the homework's spelling
+  /// (theta1) becomes the file's (1.theta); an unknown name is refused as a mechanism's
+  /// panel refuses it, listing the names in the spelling the lesson uses.
+  static std::vector<std::string> panel_keys(const BuiltMechanism& built, const std::vector<std::string>& names) {
+    if (!built.aliased || names.empty()) return names;
+    const std::vector<MechanismColumn> named = built.named_columns();
+    const std::vector<MechanismColumn> all = mechanism_columns(*built.system);
+    std::vector<std::string> out;
+    for (const MechanismColumn& c : mechanism_panel_columns(named, names)) {
+      const auto at = std::find_if(named.begin(), named.end(), [&](const auto& n) { return n.name == c.name; });
+      out.push_back(all[static_cast<std::size_t>(at - named.begin())].name);
+    }
+    return out;
+  }
+
+  /// A render step's `compare` items on the homework: its inputs (theta1=...) as the
+  /// settings of two-blocks.toml they are (1.theta=...); integrator and case as given.
+  static std::string compare_settings(const TableReader& r, const BuiltMechanism& built, const std::string& compare) {
+    if (!built.aliased) return compare;
+    std::string out;
+    std::stringstream in(compare);
+    for (std::string item; std::getline(in, item, ',');) {
+      const auto equals = item.find('=');
+      std::string name = item.substr(0, equals);
+      std::replace(name.begin(), name.end(), '-', '_');  // theta1-dot as the flag spells it
+      if (equals != std::string::npos && name != "integrator" && name != "case") {
+        const InputKey* key = find_input_key(name);
+        if (key == nullptr) {
+          const auto near = closest_input_key(name);
+          throw Error::input(r.where("compare") + ": " + r.context() + ": compare: '" + name + "' is not an input" +
+                             (near ? " (did you mean '" + std::string(*near) + "'?)" : std::string()) +
+                             "; valid: " + input_key_list() + ", integrator, case");
+        }
+        item = std::string(key->mechanism_key) + item.substr(equals);
+      }
+      out += (out.empty() ? "" : ",") + item;
+    }
+    return out;
+  }
+
   RenderStep parse_render(const TableReader& r, const Inputs& inputs) const {
     RenderStep s;
     s.out = artifact_name(r, "out");
@@ -644,15 +668,15 @@ class Parser {
       base.duration = s.run.options.duration;
       base.captions = captions(r, s.kind, base.duration);
       RenderTarget target;
-      target.mechanism = s.run.built != nullptr;
+      target.mechanism = true;
       target.still = is_still(s.kind);
       target.spell = [](std::string_view key) { return std::string(key); };
       target.with_mechanism = "a mechanism: give mechanism = \"NAME\" here or at the top";
       RenderRequest& request = s.request = resolve_render_options(given, target, base);
       if (is_still(s.kind) && r.has("duration"))
         r.fail("duration", "'duration' applies to a clip; a still (" + s.out + ") shows the time 'at'");
-      if (s.run.built && (s.kind == OutputKind::svg || s.kind == OutputKind::pdf))
-        r.fail("out", "a mechanism's still is a .png (or a clip .mp4, .gif or .webm)");
+      request.settings.panel = panel_keys(*s.run.built, request.settings.panel);
+      request.compare = compare_settings(r, *s.run.built, request.compare);
       // The whole clip checked now, so a bad lesson fails before any step runs; the settings
       // keep the mechanism's title and the equations shown. Its output is checked by name:
       // the folder is the runner's, known when the step runs (not the current one).
@@ -662,14 +686,9 @@ class Parser {
       plan.out = no_temp ? fs::path(s.out) : temp / s.out;
       plan.equations = case_equations_as<EquationsText>;
       plan.compare_files = false;
-      if (s.run.built) {
-        plan.compare_origin = "compare";
-        request.settings =
-            mechanism_clip(request, *s.run.built->system, s.run.built->initial, s.run.options, plan).clip.settings;
-      } else {
-        plan.compare_origin = r.where("compare") + ": " + r.context() + ": compare";
-        request.settings = homework_clip(request, s.run.inputs, s.run.options, plan).settings;
-      }
+      plan.compare_origin = "compare";
+      request.settings =
+          mechanism_clip(request, *s.run.built->system, s.run.built->initial, s.run.options, plan).clip.settings;
       if (is_video(s.kind)) VideoWriter::validate(clip_video_options(request.settings, s.kind));
     } catch (const Error& e) {
       if (e.code() != ExitCode::bad_input) throw;
@@ -680,14 +699,15 @@ class Parser {
     return s;
   }
 
+  /// The columns a figure of `runs` may draw: the mechanism's, under the names it goes by
+  /// (the homework's x1, x_com through two-blocks.toml's [aliases]).
+  static std::vector<MechanismColumn> figure_columns(const std::vector<Run>& runs) {
+    return runs.front().built->named_columns();
+  }
+
   Figure figure(const TableReader& r, const std::vector<Run>& runs) const {
     Figure f;
-    if (runs.front().built) {
-      const std::vector<MechanismColumn> all = mechanism_columns(*runs.front().built->system);
-      f.mechanism_x = find_mechanism_column(all, r.string("x").value_or("t"), r.prefix("x") + "x");
-    } else {
-      f.x = *find_series(r.choice("x", spellings(kSeries, &SeriesInfo::name)).value_or("t"));
-    }
+    f.x = find_mechanism_column(figure_columns(runs), r.string("x").value_or("t"), r.prefix("x") + "x");
     f.log_x = r.boolean("log_x").value_or(false);
     f.log_y = r.boolean("log_y").value_or(false);
     f.title = r.string("title").value_or("");
@@ -720,22 +740,14 @@ class Parser {
     s.figure.difference = r.boolean("difference").value_or(false);
     if (auto a = r.choice("angles", {"rad", "deg"})) s.figure.angles = parse_angle_unit(*a, r.where("angles"));
     if (s.figure.difference) check_difference(r, s);
-    if (s.runs.front().built) {
-      const std::vector<MechanismColumn> all = mechanism_columns(*s.runs.front().built->system);
-      const auto names = *r.strings("y");
-      for (std::size_t i = 0; i < names.size(); ++i)
-        s.figure.mechanism_y.push_back(find_mechanism_column(all, names[i], entry_origin(r, "y", i)));
-      if (s.figure.mechanism_y.empty()) r.fail("y", "'y' is empty; name at least one column");
-      std::vector<std::string> units;
-      for (const MechanismColumn& c : s.figure.mechanism_y) units.push_back(c.unit);
-      check_equal_axes(r, s, s.figure.mechanism_x->unit, units);
-      return s;
-    }
-    s.figure.y = r.choice_list("y", spellings(kSeries, &SeriesInfo::name));
-    if (s.figure.y.empty()) r.fail("y", "'y' is empty; name at least one series");
+    const std::vector<MechanismColumn> all = figure_columns(s.runs);
+    const auto names = *r.strings("y");
+    for (std::size_t i = 0; i < names.size(); ++i)
+      s.figure.y.push_back(find_mechanism_column(all, names[i], entry_origin(r, "y", i)));
+    if (s.figure.y.empty()) r.fail("y", "'y' is empty; name at least one column");
     std::vector<std::string> units;
-    for (std::size_t i : s.figure.y) units.emplace_back(kSeries[i].unit);
-    check_equal_axes(r, s, std::string(kSeries[s.figure.x].unit), units);
+    for (const MechanismColumn& c : s.figure.y) units.push_back(c.unit);
+    check_equal_axes(r, s, s.figure.x.unit, units);
     return s;
   }
 
@@ -766,13 +778,8 @@ class Parser {
     s.title = f.title;
     s.width = f.width;
     s.height = f.height;
-    const bool on_mechanism = s.runs.front().built != nullptr;
-    if (auto y = on_mechanism ? r.string("plot") : r.choice("plot", spellings(kSeries, &SeriesInfo::name))) {
-      if (on_mechanism)
-        f.mechanism_y = {
-            find_mechanism_column(mechanism_columns(*s.runs.front().built->system), *y, r.prefix("plot") + "plot")};
-      else
-        f.y = {*find_series(*y)};
+    if (auto y = r.string("plot")) {
+      f.y = {find_mechanism_column(figure_columns(s.runs), *y, r.prefix("plot") + "plot")};
       f.log_y = r.boolean("log_y").value_or(true);
       s.plot = f;
     } else if (r.has("log_y")) {

@@ -10,7 +10,7 @@
 
 #include "formulations/expr.hpp"
 #include "lesson/lesson.hpp"
-#include "pipeline/clip.hpp"
+#include "pipeline/clip_request.hpp"
 #include "report/document_writer.hpp"
 
 namespace linkage::lesson {
@@ -53,7 +53,8 @@ RunSummary run_lesson(const Lesson& lesson, const RunnerOptions& options, std::i
 
 /// The clip a render step makes at `quality` into `out_dir`: the step's inputs, run and
 /// picture; at draft quality 480x270 and at most 15 fps.
-[[nodiscard]] Clip render_clip(const RenderStep& render, Quality quality, const std::filesystem::path& out_dir,
-                               const std::filesystem::path& assets = {});
+[[nodiscard]] CheckedMechanismClip render_clip(const RenderStep& render, Quality quality,
+                                               const std::filesystem::path& out_dir,
+                                               const std::filesystem::path& assets = {});
 
 }  // namespace linkage::lesson

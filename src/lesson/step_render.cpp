@@ -36,10 +36,11 @@ ClipPlan step_plan(const std::filesystem::path& out, const std::filesystem::path
 
 }  // namespace
 
-Clip render_clip(const RenderStep& render, Quality quality, const std::filesystem::path& out_dir,
-                 const std::filesystem::path& assets) {
-  return homework_clip(step_request(render, quality), render.run.inputs, render.run.options,
-                       step_plan(out_dir / render.out, assets, quality));
+CheckedMechanismClip render_clip(const RenderStep& render, Quality quality, const std::filesystem::path& out_dir,
+                                 const std::filesystem::path& assets) {
+  const BuiltMechanism& built = *render.run.built;
+  return mechanism_clip(step_request(render, quality), *built.system, built.initial, render.run.options,
+                        step_plan(out_dir / render.out, assets, quality));
 }
 
 void run_render(RunContext& c, const Step& step, const RenderStep& s) {
@@ -50,16 +51,8 @@ void run_render(RunContext& c, const Step& step, const RenderStep& s) {
       if (!progress) progress.emplace("render " + s.out, total, "frames");
       progress->update(done);
     };
-    ClipResult made;
-    if (!s.run.built) {
-      made = produce_clip(render_clip(s, c.options.quality, c.options.out_dir, c.options.assets), report);
-    } else {
-      const BuiltMechanism& built = *s.run.built;
-      const CheckedMechanismClip clip =
-          mechanism_clip(step_request(s, c.options.quality), *built.system, built.initial, s.run.options,
-                         step_plan(c.options.out_dir / s.out, c.options.assets, c.options.quality));
-      made = produce_mechanism_clip(*built.system, built.initial, clip.clip, report);
-    }
+    const CheckedMechanismClip clip = render_clip(s, c.options.quality, c.options.out_dir, c.options.assets);
+    const ClipResult made = produce_mechanism_clip(*s.run.built->system, s.run.built->initial, clip.clip, report);
     nlohmann::json made_results = nlohmann::json::object();
     if (!made.warnings.empty()) made_results["warnings"] = made.warnings;
     return made_results;

@@ -20,24 +20,13 @@ nlohmann::json simulate(const RunContext& c, const SimulateStep& s) {
   std::string csv;
   const auto add_row = [&csv](double, const std::vector<double>& values) { csv += joined_values(values, ",") + "\n"; };
   nlohmann::json results;
-  if (run.built) {
-    MechanismSimulation sim(*run.built->system, run.built->initial, run.options);
-    csv = joined_names(written_columns(s.mechanism_columns, AngleUnit::rad).names) + "\n";
-    const Eigen::VectorXd end =
-        mechanism_trajectory(sim, run.options.case_id, rows, s.mechanism_columns, AngleUnit::rad, add_row);
-    results["table"] = to_json(mechanism_summary(run, sim.stats(), end));
-    const std::string warning = mechanism_result_warning(run.options, sim.stats());
-    if (!warning.empty()) results["warnings"] = {warning};
-  } else {
-    Simulation sim(run.inputs.params(), run.inputs.state(), run.options);
-    // Without a trajectory file the run only steps to each row's time.
-    const std::vector<Column> columns = s.trajectory.empty() ? std::vector<Column>{} : s.columns;
-    csv = joined_names(written_columns(columns, AngleUnit::rad).names) + "\n";
-    const BodyState end = homework_trajectory(sim, run.inputs, rows, columns, AngleUnit::rad, add_row);
-    results["table"] = to_json(simulate_summary(run, sim.stats(), end));
-    const std::string warning = result_warning(run.options, run.inputs.params(), sim.stats());
-    if (!warning.empty()) results["warnings"] = {warning};
-  }
+  MechanismSimulation sim(*run.built->system, run.built->initial, run.options);
+  csv = joined_names(written_columns(s.mechanism_columns, AngleUnit::rad).names) + "\n";
+  const Eigen::VectorXd end =
+      mechanism_trajectory(sim, run.options.case_id, rows, s.mechanism_columns, AngleUnit::rad, add_row);
+  results["table"] = to_json(mechanism_summary(run, sim.stats(), end));
+  const std::string warning = mechanism_result_warning(run.options, sim.stats());
+  if (!warning.empty()) results["warnings"] = {warning};
   if (!s.trajectory.empty()) write_file_atomically(c.options.out_dir / s.trajectory, csv, "out");
   return results;
 }
@@ -91,7 +80,7 @@ void run_compare(RunContext& c, const Step& step, const CompareStep& s) {
   const nlohmann::json results = c.cached(step, [&] { return compare(c, step, s); });
   c.warn(step, results);
   const ResultTable table = table_from_json(results.at("table"));
-  const std::string note = final_error_note(s.runs.front().built != nullptr);
+  const std::string note = final_error_note();
   c.both([&](Writer& w) { w.table(table, s.caption.empty() ? note : s.caption + " " + note); });
   if (s.plot) c.both([&](Writer& w) { w.figure(c.figure(s.out + ".png", FigureRef::Kind::image, "")); });
   if (s.cost_plot) c.both([&](Writer& w) { w.figure(c.figure(s.out + "-cost.png", FigureRef::Kind::image, "")); });

@@ -351,7 +351,7 @@ MechanismMotion sample_mechanism_motion(const sym::System& system, const GiNaC::
   auto add_panel = [&](double t, const Eigen::VectorXd& y, const eval::MechanismSample& sample) {
     panel->t.push_back(t);
     for (std::size_t c = 0; c < columns.size(); ++c)
-      panel->curves[c].values.push_back(column_value(columns[c], t, y, sample, simulation.energy0()));
+      panel->curves[c].values.push_back(column_value(columns[c], t, y, sample, simulation.origin()));
   };
   const long total = static_cast<long>(frame_times.size());
   // One pass in time order: state_at only goes forward.

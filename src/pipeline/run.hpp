@@ -25,7 +25,27 @@ struct BuiltMechanism {
   std::vector<std::string> settings;
   std::shared_ptr<const sym::System> system;
   GiNaC::exmap initial;  // generalized coordinates and rates, loops closed
+  // Named as the homework's interface names it (its inputs, flags and CSV columns): by
+  // the file's [aliases], x1 for 1.x, F_x for P.force_x; else by the file's own keys.
+  bool aliased = false;
+
+  /// `key` (a column's or a coordinate's) under the names this mechanism goes by.
+  [[nodiscard]] const std::string& named(const std::string& key) const {
+    return aliased ? system->mechanism().aliased(key) : key;
+  }
+  /// Its trajectory columns (mechanism_columns), each under `named` for lookups and headers.
+  [[nodiscard]] std::vector<MechanismColumn> named_columns() const;
 };
+
+/// The mechanism `spec` (a shipped name or a file) with `settings` (NAME=VALUE) applied in
+/// order, errors naming `origin`, its loops closed; `aliased`: named by its [aliases].
+[[nodiscard]] std::shared_ptr<const BuiltMechanism> build_mechanism(const std::string& spec,
+                                                                    const std::vector<std::string>& settings,
+                                                                    const std::string& origin, bool aliased = false);
+/// The mechanism the homework's inputs are settings of, and those settings ("L=0.3",
+/// "1.x=1", ... every input given, so a run does not depend on the file's defaults).
+inline constexpr const char* kHomeworkMechanism = "two-blocks";
+[[nodiscard]] std::vector<std::string> homework_settings(const Inputs& inputs);
 
 /// One simulation: the inputs it starts from and how it integrates.
 struct Run {
@@ -33,8 +53,9 @@ struct Run {
   std::string series;  // runs with the same series form one curve in a cost plot
   Inputs inputs;
   SimulationOptions options;
-  // On a mechanism (null: the homework): its spec, the settings in effect (earlier set
-  // steps', the step's `set`, the entry's `set`) and the system built from them.
+  // On a mechanism (empty: the homework, whose inputs are settings of two-blocks.toml):
+  // its spec and the settings in effect (earlier set steps', the step's `set`, the
+  // entry's `set`); the system built from them (always set).
   std::string mechanism;
   std::vector<std::string> settings;
   std::shared_ptr<const BuiltMechanism> built;
@@ -42,11 +63,9 @@ struct Run {
 
 /// A time-series figure: quantities against time (or another quantity) for some runs.
 struct Figure {
-  std::vector<std::size_t> y;  // series indices
-  std::size_t x = 0;           // series index ("t")
-  // On a mechanism: its trajectory columns instead of the series.
-  std::vector<MechanismColumn> mechanism_y;
-  std::optional<MechanismColumn> mechanism_x;
+  // The mechanism's trajectory columns, under the names the run's mechanism goes by.
+  std::vector<MechanismColumn> y;
+  MechanismColumn x;  // t unless given
   bool log_x = false, log_y = false;
   bool equal_axes = false;            // plot steps: x and y at one scale (a path keeps its shape)
   bool difference = false;            // plot steps: each run after the first as abs(run - first run)

@@ -75,9 +75,8 @@ std::string figure_text(const RunFigures& f, CompareColumn column) {
   return format_significant(figure_value(f, column), 3);
 }
 
-// A compare row from a run's counters (the homework's or a mechanism's) and its final error.
-template <class Stats>
-RunFigures run_figures(double error, const Stats& stats) {
+// A compare row from a run's counters and its final error.
+RunFigures run_figures(double error, const MechanismStats& stats) {
   RunFigures f;
   f.final_error = error;
   f.energy_error = stats.max_energy_error;
@@ -89,7 +88,7 @@ RunFigures run_figures(double error, const Stats& stats) {
   return f;
 }
 
-/// A mechanism run's figures: its final body positions against the reference run's,
+/// A mechanism run's figures: its final generalized coordinates against the reference run's,
 /// its energy-balance and constraint errors over the samples, its cost.
 RunFigures mechanism_figures(const Run& run, double every, std::map<std::string, std::vector<double>>& references,
                              std::vector<std::string>& warnings) {
@@ -97,8 +96,8 @@ RunFigures mechanism_figures(const Run& run, double every, std::map<std::string,
   const MechanismSampledRun data = sample_mechanism_run(run, run_sample_times(run.options, every), columns);
   const std::string warning = mechanism_result_warning(run.options, data.stats);
   if (!warning.empty()) warnings.push_back("run '" + run.label + "': " + warning);
-  std::string key = run.mechanism + ";" + format_roundtrip(run.options.duration);
-  for (const std::string& setting : run.settings) key += ";" + setting;
+  std::string key = run.built->spec + ";" + format_roundtrip(run.options.duration);
+  for (const std::string& setting : run.built->settings) key += ";" + setting;
   if (!references.count(key)) references[key] = mechanism_reference_final(run);
   double final = 0;
   for (std::size_t j = 0; j < columns.size(); ++j)
@@ -110,21 +109,8 @@ RunFigures mechanism_figures(const Run& run, double every, std::map<std::string,
 
 Comparison compare_runs(const std::vector<Run>& runs, const std::vector<CompareColumn>& columns, double every) {
   Comparison out;
-  std::map<std::vector<double>, State> references;  // by inputs and duration
-  std::map<std::string, std::vector<double>> mechanism_references;
-  for (const Run& run : runs) {
-    if (run.built) {
-      out.figures.push_back(mechanism_figures(run, every, mechanism_references, out.warnings));
-      continue;
-    }
-    const SampledRun data = sample_run(run, every, {});
-    const std::string warning = result_warning(run.options, run.inputs.params(), data.stats);
-    if (!warning.empty()) out.warnings.push_back("run '" + run.label + "': " + warning);
-    std::vector<double> key{run.options.duration};
-    for (const InputKey& input : kInputKeys) key.push_back(run.inputs.value(input));
-    if (!references.count(key)) references[key] = reference_final_state(run);
-    out.figures.push_back(run_figures(final_error(data.final_state, references[key]), data.stats));
-  }
+  std::map<std::string, std::vector<double>> references;  // by mechanism, settings and duration
+  for (const Run& run : runs) out.figures.push_back(mechanism_figures(run, every, references, out.warnings));
   out.table.headers = {"run"};
   out.csv = "run";
   for (CompareColumn column : columns) {
@@ -151,8 +137,7 @@ plot::Plot cost_plot(const std::vector<Run>& runs, const std::vector<RunFigures>
   plot::Plot p;
   p.title = title.empty() ? "Accuracy against cost" : title + ": accuracy against cost";
   p.x.label = "right-hand-side evaluations";
-  p.y.label = runs.front().built ? "final error (largest difference of a body's x, y, θ or a slider's travel)"
-                                 : "final error (largest of |Δx_{1}|, |Δy_{1}|, |Δθ_{1}|, |Δθ_{2}|)";
+  p.y.label = "final error (largest difference of a body's x, y, θ or a slider's travel)";
   p.x.scale = plot::Scale::log;
   p.y.scale = plot::Scale::log;
   std::vector<std::string> order;
@@ -175,14 +160,11 @@ plot::Plot cost_plot(const std::vector<Run>& runs, const std::vector<RunFigures>
   return p;
 }
 
-std::string final_error_note(bool mechanism) {
-  const std::string tolerance = format_significant(kReferenceTolerance, 1);
-  if (mechanism)
-    return "Final error: largest difference of every body's x, y, θ and every slider's travel at the end from Case 3 "
-           "by DOP853 at rtol = atol = " +
-           tolerance + "; energy error: the energy balance E − E(0) − W relative to the energy scale.";
-  return "Final error: largest difference of x1, y1, θ1, θ2 at the end from DOP853 at rtol = atol = " + tolerance +
-         "; energy error relative to the energy scale.";
+std::string final_error_note() {
+  return "Final error: largest difference of the generalized coordinates (a floating body's x, y, θ, a pin's "
+         "angle, a slider's travel) at the end from Case 3 by DOP853 at rtol = atol = " +
+         format_significant(kReferenceTolerance, 1) +
+         "; energy error: the energy balance E − E(0) − W relative to the energy scale.";
 }
 
 }  // namespace linkage

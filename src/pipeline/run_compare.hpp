@@ -13,9 +13,9 @@ namespace linkage {
 
 /// The figures of one run in a compare table.
 struct RunFigures {
-  double final_error = 0;       // largest |error| of x1, y1, theta1, theta2 at the end (m or rad)
-  double energy_error = 0;      // largest relative energy error over the samples
-  double constraint_error = 0;  // largest |C| over the samples, m
+  double final_error = 0;       // largest |error| of a body's x, y, theta or a slider's travel at the end
+  double energy_error = 0;      // largest energy-balance error over the samples, of the energy scale
+  double constraint_error = 0;  // largest |C| over the samples, m (rad for a slider's angle)
   std::int64_t steps = 0, rejected = 0, rhs_evaluations = 0;
   double run_time = 0;  // s
 };
@@ -40,6 +40,6 @@ struct Comparison {
                                    const std::string& title);
 
 /// What the final and energy errors measure, for the table's caption.
-[[nodiscard]] std::string final_error_note(bool mechanism);
+[[nodiscard]] std::string final_error_note();
 
 }  // namespace linkage

@@ -10,7 +10,7 @@
 
 namespace linkage {
 
-/// The figure's series (or a mechanism's columns) for every run, sampled: runs by
+/// The figure's columns for every run, sampled (as simulate computes them): runs by
 /// colour, series by dash, axes and legends in words and units; angles and angular
 /// rates in `f.angles` (values and units, on both axes).
 [[nodiscard]] plot::Plot figure_plot(const Figure& f, const std::vector<Run>& runs);

@@ -43,43 +43,11 @@ MechanismSampledRun sample_mechanism_run(const Run& run, const std::vector<doubl
   return out;
 }
 
-SampledRun sample_run(const Run& run, double every, const std::vector<std::size_t>& series) {
-  const SimulationOptions& o = run.options;
-  const std::vector<double> times = run_sample_times(o, every);
-  Simulation sim(run.inputs.params(), run.inputs.state(), o);
-  const bool dynamics =
-      std::any_of(series.begin(), series.end(), [](std::size_t i) { return kSeries[i].needs_dynamics; });
-  SampledRun out;
-  out.columns.assign(series.size(), {});
-  for (auto& column : out.columns) column.reserve(times.size());
-  SeriesOrigin origin;
-  for (std::size_t k = 0; k < times.size(); ++k) {
-    throw_if_interrupted();
-    const BodyState s = sim.state_at(times[k]);
-    if (k == 0) origin = SeriesOrigin::at(run.inputs.params(), s);
-    Dynamics d;
-    if (dynamics) d = sim.dynamics(s);
-    for (std::size_t c = 0; c < series.size(); ++c)
-      out.columns[c].push_back(series_value(series[c], origin, times[k], s, dynamics ? &d : nullptr));
-    if (k + 1 == times.size()) out.final_state = s;
-  }
-  out.stats = sim.stats();
-  return out;
-}
-
-State reference_final_state(const Run& run) {
-  SimulationOptions o;
-  o.case_id = 3;
-  o.integrator = IntegratorKind::dop853;
-  o.rtol = o.atol = kReferenceTolerance;
-  o.duration = run.options.duration;
-  Simulation sim(run.inputs.params(), run.inputs.state(), o);
-  return sim.state_at(o.duration).generalized();
-}
-
 std::vector<MechanismColumn> mechanism_final_columns(const sym::System& system) {
-  std::vector<MechanismColumn> out = select_mechanism_columns(mechanism_columns(system), "default", "columns");
-  out.erase(out.begin());  // t
+  const std::vector<MechanismColumn> all = mechanism_columns(system);
+  std::vector<MechanismColumn> out;
+  for (const sym::GeneralizedCoordinate& g : system.coordinates())
+    out.push_back(find_mechanism_column(all, g.coordinate.key, "generalized coordinate"));
   return out;
 }
 
@@ -96,11 +64,6 @@ std::vector<double> mechanism_reference_final(const Run& run) {
   std::vector<double> out;
   for (const auto& column : data.columns) out.push_back(column.back());
   return out;
-}
-
-double final_error(const BodyState& a, const State& r) {
-  return std::max(
-      {std::fabs(a.x1 - r.x1), std::fabs(a.y1 - r.y1), std::fabs(a.theta1 - r.theta1), std::fabs(a.theta2 - r.theta2)});
 }
 
 }  // namespace linkage

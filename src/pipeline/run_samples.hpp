@@ -1,25 +1,12 @@
 #pragma once
-// Running the simulations of plot and compare steps: sampling series along a run, and
+// Running the simulations of plot and compare steps: sampling columns along a run, and
 // the reference a compare table measures final errors against.
 #include <vector>
 
 #include "integrate/mechanism_simulation.hpp"
-#include "integrate/series.hpp"
 #include "pipeline/run.hpp"
 
 namespace linkage {
-
-/// One run sampled at t = 0, every, 2 every, ... and exactly at its duration.
-struct SampledRun {
-  std::vector<std::vector<double>> columns;  // one per requested series, each one value per sample
-  SimulationStats stats;
-  BodyState final_state;
-};
-
-/// Runs `run`, recording the series `series` (indices into kSeries) every `every` s
-/// (for fixed-step integrators: the nearest whole number of steps, at least one).
-/// Throws Error::diverged (exit 3) when the run fails.
-[[nodiscard]] SampledRun sample_run(const Run& run, double every, const std::vector<std::size_t>& series);
 
 /// The sample times of a run: 0, every, 2 every, ..., duration.
 [[nodiscard]] std::vector<double> sample_times(double duration, double every);
@@ -37,17 +24,13 @@ struct MechanismSampledRun {
                                                        const std::vector<MechanismColumn>& columns);
 
 /// The reference for final errors: DOP853 at rtol = atol = kReferenceTolerance on Case 3
-/// (which cannot drift), for the run's inputs and duration.
-[[nodiscard]] State reference_final_state(const Run& run);
+/// (which cannot drift).
 inline constexpr double kReferenceTolerance = 1e-13;
 
-/// What a mechanism's final error compares: every body's x, y, theta and every slider's
-/// travel (the default trajectory columns without t), the same in every case.
+/// What a mechanism's final error compares: its generalized coordinates (System::coordinates:
+/// two-blocks' x1, y1, theta1, theta2; a slider's travel s), the same in every case.
 [[nodiscard]] std::vector<MechanismColumn> mechanism_final_columns(const sym::System& system);
 /// Those columns at the end of the reference run (DOP853 at kReferenceTolerance on Case 3).
 [[nodiscard]] std::vector<double> mechanism_reference_final(const Run& run);
-
-/// Largest |a - b| over x1, y1, theta1, theta2.
-[[nodiscard]] double final_error(const BodyState& a, const State& reference);
 
 }  // namespace linkage

@@ -7,8 +7,7 @@ namespace linkage {
 namespace {
 
 // The rows every run's summary opens with: case, method, simulated time, steps, right-hand sides.
-template <class Stats>
-ResultTable run_summary(const SimulationOptions& o, const Stats& st) {
+ResultTable run_summary(const SimulationOptions& o, const MechanismStats& st) {
   ResultTable t;
   t.headers = {"quantity", "value"};
   t.rows = {
@@ -21,17 +20,19 @@ ResultTable run_summary(const SimulationOptions& o, const Stats& st) {
   return t;
 }
 
-/// "angle of body 2 (2.theta)" for a generalized coordinate, from its column's meaning.
-std::string coordinate_words(const std::vector<MechanismColumn>& all, const std::string& key, std::string& unit) {
+/// "angle of body 2 (2.theta)" for a generalized coordinate, from its column's meaning,
+/// the key as `built` names it ("(theta2)" on the homework).
+std::string coordinate_words(const BuiltMechanism& built, const std::vector<MechanismColumn>& all,
+                             const std::string& key, std::string& unit) {
   for (const MechanismColumn& c : all)
     if (c.name == key) {
       unit = c.unit;
       std::string words = c.meaning;  // without a closing remark such as "(not wrapped)"
       if (!words.empty() && words.back() == ')') words.erase(words.rfind(" ("));
-      return words + " (" + key + ")";
+      return words + " (" + built.named(key) + ")";
     }
   unit.clear();
-  return key;
+  return built.named(key);
 }
 
 }  // namespace
@@ -43,21 +44,6 @@ std::string method_text(const SimulationOptions& o) {
                                                        : " (dt " + format_significant(o.dt, 3) + " s)");
   if (o.case_id == 1) text += ", stabilization " + std::string(name(o.stabilization));
   return text;
-}
-
-ResultTable simulate_summary(const Run& run, const SimulationStats& st, const BodyState& end) {
-  const SimulationOptions& o = run.options;
-  ResultTable t = run_summary(o, st);
-  t.rows.insert(t.rows.end(),
-                {
-                    {"largest energy error", format_significant(st.max_energy_error, 3) + " of the energy scale"},
-                    {"largest constraint error", format_significant(st.max_constraint_error, 3) + " m"},
-                    {"final x1, y1", format_significant(end.x1, 6) + " m, " + format_significant(end.y1, 6) + " m"},
-                    {"final theta1, theta2",
-                     format_significant(end.theta1, 6) + " rad, " + format_significant(end.theta2, 6) + " rad"},
-                    {"run time", format_significant(st.wall_seconds * 1e3, 3) + " ms"},
-                });
-  return t;
 }
 
 ResultTable mechanism_summary(const Run& run, const MechanismStats& st, const Eigen::VectorXd& end) {
@@ -75,7 +61,7 @@ ResultTable mechanism_summary(const Run& run, const MechanismStats& st, const Ei
   const auto& coordinates = system.coordinates();
   for (std::size_t i = 0; i < coordinates.size() && static_cast<Eigen::Index>(i) < end.size(); ++i) {
     std::string unit;
-    const std::string words = coordinate_words(all, coordinates[i].coordinate.key, unit);
+    const std::string words = coordinate_words(*run.built, all, coordinates[i].coordinate.key, unit);
     t.rows.push_back({"final " + words,
                       format_significant(end[static_cast<Eigen::Index>(i)], 6) + (unit.empty() ? "" : " " + unit)});
   }

@@ -14,11 +14,9 @@ namespace linkage {
 /// Case 1's stabilization.
 [[nodiscard]] std::string method_text(const SimulationOptions& options);
 
-/// The homework run's summary: case, method, cost, errors, final x1, y1, theta1, theta2
-/// (`end`), run time.
-[[nodiscard]] ResultTable simulate_summary(const Run& run, const SimulationStats& stats, const BodyState& end);
-/// A mechanism run's (run.built) summary: the mechanism, case, method, cost, errors,
-/// every generalized coordinate at the end (y = `end`) in words and units, run time.
+/// A run's summary: the mechanism, case, method, cost, errors, every generalized
+/// coordinate at the end (y = `end`) in words and units (named as run.built names
+/// them), run time.
 [[nodiscard]] ResultTable mechanism_summary(const Run& run, const MechanismStats& stats, const Eigen::VectorXd& end);
 
 }  // namespace linkage

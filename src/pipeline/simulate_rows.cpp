@@ -47,7 +47,7 @@ void mechanism_row(MechanismSimulation& simulation, int case_id, double t, const
   simulation.sample(t, y, sample, needs_kinematics(columns));
   values.resize(columns.size());
   for (std::size_t j = 0; j < columns.size(); ++j) {
-    values[j] = column_value(columns[j], t, y, sample, simulation.energy0());
+    values[j] = column_value(columns[j], t, y, sample, simulation.origin());
     if (!std::isfinite(values[j]))
       throw Error::diverged(columns[j].name + " at t = " + format_roundtrip(t) +
                             " s is not a finite number; the run stopped (Case " + std::to_string(case_id) + ")");

@@ -154,17 +154,16 @@ void check_aliases(const MechanismSolution& s) {
   const nlohmann::ordered_json derived = derived_json(s, units);
   for (const auto& [key, value] : derived.items()) keys.insert(key);
   for (const sym::SymbolInfo& info : system.table().all()) keys.insert(info.key);
-  for (const MechanismColumn& c : mechanism_columns(system)) keys.insert(c.name);
+  for (const MechanismColumn& c : mechanism_columns(system)) keys.insert(c.name);  // simulate's, lessons' plots
   std::set<std::string> renamed;
   for (const Alias& a : m.aliases) renamed.insert(a.key);
   for (const Alias& a : m.aliases) {
     if (!keys.contains(a.key))
       throw Error::input(concat({where(a.pos), "[aliases]: '", a.key,
-                                 "' is not a key of the JSON of the worked solution; valid: a key of its parameters, "
-                                 "state, derived values or unknowns (linkage solve --mechanism ",
-                                 m.name,
-                                 " --format json) or a column of linkage simulate, e.g. 'I', '1.theta_ddot', "
-                                 "'P.constraint_error'"}));
+                                 "' is not a key of the JSON of the worked solution nor a trajectory column; valid: a "
+                                 "key of its parameters, state, derived values or unknowns (linkage solve --mechanism ",
+                                 m.name, " --format json) or a column (linkage simulate --mechanism ", m.name,
+                                 " --columns all), e.g. 'I', '1.theta_ddot', 'com.x'"}));
     if (keys.contains(a.name) && !renamed.contains(a.name))
       throw Error::input(concat({where(a.pos), "[aliases]: '", a.key, "' = '", a.name, "' names the key '", a.name,
                                  "' the JSON already has; choose another alias"}));

@@ -102,6 +102,25 @@ Vec2 linear_momentum(const System& system) {
   return p;
 }
 
+ex total_mass(const System& system) {
+  ex M = 0;
+  for (const BodySystem& b : system.bodies()) M += b.mass;
+  return M;
+}
+
+Vec2 centre_of_mass(const System& system) {
+  Vec2 moment;
+  for (const BodySystem& b : system.bodies()) moment = moment + b.mass * Vec2{b.x.q, b.y.q};
+  const ex M = total_mass(system);
+  return {moment.x / M, moment.y / M};
+}
+
+Vec2 centre_of_mass_velocity(const System& system) {
+  const Vec2 p = linear_momentum(system);
+  const ex M = total_mass(system);
+  return {p.x / M, p.y / M};
+}
+
 ex angular_momentum(const System& system) {
   ex H = 0;
   for (const BodySystem& b : system.bodies()) {
@@ -116,8 +135,7 @@ ex angular_momentum_about_centre(const System& system) {
   // the same as sum m (r - r_c) x (r' - r_c'), written in relative positions that read
   // well (the homework's m (x1 - x2) (y1' - y2') / 2 - ...).
   const std::vector<BodySystem>& bodies = system.bodies();
-  ex M = 0;
-  for (const BodySystem& b : bodies) M += b.mass;
+  const ex M = total_mass(system);
   // n^2 terms, summed once: adding them one by one copied the growing sum each time (n^4,
   // seconds for a long chain, with no chance to stop at a signal).
   GiNaC::exvector terms;

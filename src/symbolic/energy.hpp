@@ -41,6 +41,15 @@ struct PowerTerm {
 /// p = sum_b m_b (x_b', y_b').
 [[nodiscard]] Vec2 linear_momentum(const System& system);
 
+/// M = sum_b m_b.
+[[nodiscard]] GiNaC::ex total_mass(const System& system);
+
+/// r_G = sum_b m_b (x_b, y_b) / M, the mechanism's centre of mass.
+[[nodiscard]] Vec2 centre_of_mass(const System& system);
+
+/// r_G' = p / M, its velocity.
+[[nodiscard]] Vec2 centre_of_mass_velocity(const System& system);
+
 /// H_O = sum_b m_b (x_b y_b' - y_b x_b') + I_b theta_b', about the world origin.
 [[nodiscard]] GiNaC::ex angular_momentum(const System& system);
 

@@ -187,8 +187,9 @@ TEST(MechanismSimulation, ColumnsFollowTheContract) {
     // Too many columns to list: the nearest one's joint's, those of none, and a count.
     EXPECT_EQ(std::string(e.what()),
               "--columns: unknown column 'B.forcex'; nearest 'B.force_x'; valid: default, all, t, B.force_x, "
-              "B.force_y, B.constraint_error, B.constraint_velocity_error, energy, work, energy_error and " +
-                  std::to_string(all.size() + 2 - 10) +
+              "B.force_y, B.constraint_error, B.constraint_velocity_error, constraint_position_error, "
+              "constraint_velocity_error, energy, work, energy_error, energy_error_relative and " +
+                  std::to_string(all.size() + 2 - 13) +
                   " more (the columns of every body, point and joint; 'all' selects every one)");
   }
   // A list of names (a lesson's): groups anywhere, t once and first; errors at each entry.
@@ -237,7 +238,7 @@ std::vector<std::vector<double>> column_values(const std::string& mechanism, int
     const Eigen::VectorXd y = simulation.state_at(t);
     simulation.sample(t, y, sample, needs_kinematics(columns));
     out.emplace_back();
-    for (const MechanismColumn& c : columns) out.back().push_back(column_value(c, t, y, sample, 0));
+    for (const MechanismColumn& c : columns) out.back().push_back(column_value(c, t, y, sample, simulation.origin()));
   }
   return out;
 }

@@ -128,13 +128,13 @@ title = "A still"
   EXPECT_FALSE(r.request.settings.elements.has(Element::hud));
   EXPECT_TRUE(r.request.settings.elements.has(Element::blocks));
   // The clip the step makes is the render command's, at the step's settings.
-  const Clip clip = render_clip(r, Quality::final, dir.path());
+  const MechanismClip clip = render_clip(r, Quality::final, dir.path()).clip;
   EXPECT_EQ(clip.settings.width, 640);
   EXPECT_EQ(clip.settings.theme, "dark");
   ASSERT_TRUE(clip.out.has_value());
   EXPECT_EQ(*clip.out, dir.path() / "still.svg");
   EXPECT_TRUE(clip.is_still());
-  const Clip draft = render_clip(r, Quality::draft, dir.path());
+  const MechanismClip draft = render_clip(r, Quality::draft, dir.path()).clip;
   EXPECT_EQ(draft.settings.width, kDraftWidth);
   EXPECT_EQ(draft.settings.height, kDraftHeight);
 }
@@ -150,12 +150,13 @@ panel = ["theta1", "theta2"]
 captions = [{at = 0, text = "The blocks start at rest."}, {at = 2.5, text = "Now watch the pin."}]
 )");
   const auto& r = std::get<RenderStep>(lesson.steps[0].body);
-  EXPECT_EQ(r.request.settings.panel, (std::vector<std::string>{"theta1", "theta2"}));
+  // The homework's names are two-blocks.toml's keys for the clip (its [aliases]).
+  EXPECT_EQ(r.request.settings.panel, (std::vector<std::string>{"1.theta", "2.theta"}));
   ASSERT_EQ(r.request.settings.captions.size(), 2u);
   EXPECT_EQ(r.request.settings.captions[1].at, 2.5);
   EXPECT_EQ(r.request.settings.captions[1].text, "Now watch the pin.");
   // The step's clip carries them to the pipeline, at any quality.
-  const Clip draft = render_clip(r, Quality::draft, dir.path());
+  const MechanismClip draft = render_clip(r, Quality::draft, dir.path()).clip;
   EXPECT_EQ(draft.settings.captions.size(), 2u);
   EXPECT_EQ(draft.settings.panel.size(), 2u);
 }

@@ -69,7 +69,7 @@ TEST(PlotStepParse, EqualAxesNeedsLinearAxesInOneUnit) {
   const Lesson lesson = parse_lesson(dir / "ok.toml");
   const auto& plot_step = std::get<PlotStep>(lesson.steps.at(0).body);
   EXPECT_TRUE(plot_step.figure.equal_axes);
-  EXPECT_EQ(plot_step.figure.mechanism_x->name, "3.P.x");
+  EXPECT_EQ(plot_step.figure.x.name, "3.P.x");
   const std::string units = error_of(head + "x = \"3.P.x\"\ny = \"2.theta\"\n");
   EXPECT_NE(units.find(":7:"), std::string::npos) << units;  // the line of equal_axes
   EXPECT_NE(units.find("'equal_axes' needs x and y in one unit; x is in 'm', y in 'rad'"), std::string::npos) << units;

@@ -1,6 +1,7 @@
 // A lesson's render steps on any mechanism: `mechanism` at the top or per step, `set` and
 // `trail` as the render command's --set and --trail, `ensemble`, `spread` and `compare` as its
-// --ensemble, --spread and --compare; the homework's picture keys refused.
+// --ensemble, --spread and --compare, on the homework too (two-blocks.toml); bad keys
+// refused at their place.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -48,9 +49,10 @@ mechanism = "pendulum.toml"
 }
 
 TEST(LessonMechanism, BadKeysAreOneLineErrorsAtTheirPlace) {
-  EXPECT_NE(error_of("title = \"x\"\n[[step]]\nkind = \"render\"\nout = \"a.png\"\ntrail = [\"3.B\"]\n")
-                .find("lesson.toml:5:9: step 1 (render): trail: applies only with a mechanism: give mechanism = "),
-            std::string::npos);
+  EXPECT_NE(
+      error_of("title = \"x\"\n[[step]]\nkind = \"render\"\nout = \"a.png\"\ntrail = [\"3.B\"]\n")
+          .find("lesson.toml:5:9: step 1 (render): trail: '3' is not a body of the mechanism; valid: ground, 1, 2"),
+      std::string::npos);
   EXPECT_NE(error_of("title = \"x\"\nmechanism = \"four-bar\"\n[[step]]\nkind = \"render\"\nout = \"a.png\"\n"
                      "camera = \"fixed\"\n")
                 .find("lesson.toml:6:10: step 1 (render): camera: fixed needs view xmin,ymin,xmax,ymax"),
@@ -126,11 +128,17 @@ spread = 0.1
 compare = ["theta1=0.1000001", "integrator=rk4"]
 )");
   const auto& fan = std::get<RenderStep>(lesson.steps[0].body);
-  const Clip clip = render_clip(fan, Quality::draft, dir.path(), {});
+  const CheckedMechanismClip checked = render_clip(fan, Quality::draft, dir.path(), {});
+  const MechanismClip& clip = checked.clip;
   EXPECT_EQ(clip.ensemble, 4);
   EXPECT_DOUBLE_EQ(clip.spread, 0.1);
   ASSERT_TRUE(clip.compare.has_value());
-  EXPECT_EQ(clip.compare->inputs.state().theta1, 0.1000001);
+  // theta1 is two-blocks.toml's 1.theta: the compared run's own system starts there.
+  ASSERT_NE(clip.compare->system, nullptr);
+  const sym::System& compared = *clip.compare->system;
+  EXPECT_EQ(sym::to_double(
+                compared.table().find("1.theta")->symbol.subs(clip.compare->initial).subs(compared.parameter_values())),
+            0.1000001);
   EXPECT_EQ(clip.compare->simulation.integrator, IntegratorKind::rk4);
   EXPECT_NE(error_of("title = \"x\"\n[[step]]\nkind = \"render\"\nout = \"a.png\"\ncompare = [\"thta1=1\"]\n")
                 .find("lesson.toml:5:11: step 1 (render): compare: 'thta1' is not an input (did you mean 'theta1'?)"),

@@ -246,8 +246,8 @@ TEST(MechanismClip, PanelPeaksAreTheTablesPeaks) {
     const Eigen::VectorXd y = table.state_at(t);
     table.sample(t, y, sample, true);
     for (std::size_t c = 0; c < 2; ++c) {
-      high[c] = std::max(high[c], column_value(columns[c], t, y, sample, 0));
-      low[c] = std::min(low[c], column_value(columns[c], t, y, sample, 0));
+      high[c] = std::max(high[c], column_value(columns[c], t, y, sample, table.origin()));
+      low[c] = std::min(low[c], column_value(columns[c], t, y, sample, table.origin()));
     }
   }
   EXPECT_NEAR(high[0], 5.63, 0.01);

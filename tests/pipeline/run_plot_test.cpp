@@ -9,7 +9,6 @@
 #include <numbers>
 
 #include "core/error.hpp"
-#include "integrate/series.hpp"
 #include "pipeline/run_support.hpp"
 
 namespace linkage {
@@ -23,18 +22,19 @@ Run crank() { return test::mechanism_run("crank", "slider-crank", {"2.theta=0", 
 plot::Plot crank_plot(const std::vector<std::string>& y, AngleUnit angles) {
   const linkage::Run run = crank();
   Figure f;
-  f.mechanism_x = test::mechanism_column(run, "2.theta");
-  for (const std::string& name : y) f.mechanism_y.push_back(test::mechanism_column(run, name));
+  f.x = test::mechanism_column(run, "2.theta");
+  for (const std::string& name : y) f.y.push_back(test::mechanism_column(run, name));
   f.every = 0.05;
   f.angles = angles;
   return figure_plot(f, {run});
 }
 
-/// The homework for 0.5 s: `y` (series names) against time.
+/// The homework for 0.5 s: `y` (its columns' names, x1 for 1.x) against time.
 Figure homework_figure(const std::vector<std::string>& y, AngleUnit angles) {
+  const linkage::Run run = test::homework_run("", 0.5);
   Figure f;
-  f.x = *find_series("t");
-  for (const std::string& name : y) f.y.push_back(*find_series(name));
+  f.x = test::named_column(run, "t");
+  for (const std::string& name : y) f.y.push_back(test::named_column(run, name));
   f.every = 0.01;
   f.angles = angles;
   return f;
@@ -84,8 +84,8 @@ TEST(RunPlot, HomeworkAnglesInDegrees) {
   const std::vector<linkage::Run> runs{test::homework_run("a", 0.5)};
   const plot::Plot rad = figure_plot(homework_figure({"theta1", "theta2"}, AngleUnit::rad), runs);
   const plot::Plot deg = figure_plot(homework_figure({"theta1", "theta2"}, AngleUnit::deg), runs);
-  EXPECT_EQ(rad.y.label, "θ_{1}, θ_{2} (rad)");
-  EXPECT_EQ(deg.y.label, "θ_{1}, θ_{2} (deg)");
+  EXPECT_EQ(rad.y.label, "angle θ of body (rad)");
+  EXPECT_EQ(deg.y.label, "angle θ of body (deg)");
   EXPECT_TRUE(deg.y.degrees);
   EXPECT_FALSE(deg.x.degrees);
   EXPECT_EQ(deg.x.label, "time t (s)");
@@ -99,15 +99,15 @@ TEST(RunPlot, HomeworkAnglesInDegrees) {
   // The default start: theta1 = 0.1 rad at t = 0.
   EXPECT_DOUBLE_EQ(rad.series[0].points[0].y, 0.1);
   const plot::Plot rate = figure_plot(homework_figure({"theta1_dot"}, AngleUnit::deg), runs);
-  EXPECT_EQ(rate.y.label, "angular velocity θ̇_{1} (deg/s)");
+  EXPECT_EQ(rate.y.label, "angular velocity θ̇ of body 1 (deg/s)");
 }
 
 TEST(RunPlot, RunsByColourAndNamedByLabelAndQuantity) {
   const std::vector<linkage::Run> runs{test::homework_run("a", 0.5), test::homework_run("b", 0.5)};
   const plot::Plot p = figure_plot(homework_figure({"theta1", "theta2"}, AngleUnit::rad), runs);
   ASSERT_EQ(p.series.size(), 4u);
-  EXPECT_EQ(p.series[0].name, "a: θ_{1}");
-  EXPECT_EQ(p.series[3].name, "b: θ_{2}");
+  EXPECT_EQ(p.series[0].name, "a: angle θ of body 1");
+  EXPECT_EQ(p.series[3].name, "b: angle θ of body 2");
   EXPECT_EQ(p.series[0].color, p.series[1].color);
   EXPECT_NE(p.series[0].color, p.series[2].color);
   EXPECT_NE(p.series[0].dash, p.series[1].dash);
@@ -166,7 +166,7 @@ TEST(PlotDifference, IdenticalRunsPartNowhere) {
   f.difference = true;
   const plot::Plot d = runs_plot(f, {test::homework_run("a", 0.5), test::homework_run("b", 0.5)});
   ASSERT_EQ(d.series.size(), 2u);
-  EXPECT_EQ(d.y.label, "difference in θ_{1}, θ_{2} (rad)");
+  EXPECT_EQ(d.y.label, "difference in angle θ of body (rad)");
   for (const plot::Series& s : d.series) {
     ASSERT_EQ(s.points.size(), 51u);
     for (const plot::Point& p : s.points) EXPECT_EQ(p.y, 0) << s.name << " at t = " << p.x;
@@ -178,8 +178,8 @@ TEST(PlotDifference, NudgedRunsPartAndTheGapGrows) {
   const linkage::Run a = test::mechanism_run("a", "double-pendulum", {}, 1);
   const linkage::Run b = test::mechanism_run("b", "double-pendulum", {"1.theta=-0.799999"}, 1);
   Figure f;
-  f.mechanism_x = test::mechanism_column(a, "t");
-  f.mechanism_y = {test::mechanism_column(a, "1.theta")};
+  f.x = test::mechanism_column(a, "t");
+  f.y = {test::mechanism_column(a, "1.theta")};
   f.every = 0.1;
   f.difference = true;
   const plot::Plot d = runs_plot(f, {a, b});

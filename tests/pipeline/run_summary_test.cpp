@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/number_format.hpp"
 #include "pipeline/run_support.hpp"
 
 namespace linkage {
@@ -17,17 +18,21 @@ TEST(RunSummary, MethodInWords) {
   EXPECT_EQ(method_text(o).rfind("rk4 (dt 0.001 s), stabilization ", 0), 0u) << method_text(o);
 }
 
-TEST(RunSummary, TheHomeworksEndAndCost) {
+TEST(RunSummary, TheHomeworksEndAndCostUnderItsOwnNames) {
   const linkage::Run run = test::homework_run("a", 1);
-  Simulation sim(run.inputs.params(), run.inputs.state(), run.options);
-  const BodyState end = sim.state_at(1);
-  const ResultTable t = simulate_summary(run, sim.stats(), end);
+  MechanismSimulation sim(*run.built->system, run.built->initial, run.options);
+  const Eigen::VectorXd end = sim.state_at(1);
+  const ResultTable t = mechanism_summary(run, sim.stats(), end);
   EXPECT_EQ(t.headers, (std::vector<std::string>{"quantity", "value"}));
-  ASSERT_GE(t.rows.size(), 9u);
-  EXPECT_EQ(t.rows[0], (std::vector<std::string>{"case", "3"}));
-  EXPECT_EQ(t.rows[2], (std::vector<std::string>{"simulated time", "1 s"}));
-  EXPECT_EQ(t.rows[4][1], std::to_string(sim.stats().rhs_evaluations));
-  EXPECT_EQ(t.rows[7][0], "final x1, y1");
+  ASSERT_GE(t.rows.size(), 12u);
+  EXPECT_EQ(t.rows[0], (std::vector<std::string>{"mechanism", "two-blocks"}));
+  EXPECT_EQ(t.rows[1], (std::vector<std::string>{"case", "3"}));
+  EXPECT_EQ(t.rows[3], (std::vector<std::string>{"simulated time", "1 s"}));
+  EXPECT_EQ(t.rows[5][1], std::to_string(sim.stats().rhs_evaluations));
+  // The coordinates as the homework names them (two-blocks.toml's [aliases]), at the end.
+  EXPECT_EQ(t.rows[8], (std::vector<std::string>{"final x of body 1's centre of mass (x1)",
+                                                 format_significant(end[0], 6) + " m"}));
+  EXPECT_EQ(t.rows[11][0], "final angle of body 2 (theta2)");
   EXPECT_EQ(t.rows.back()[0], "run time");
 }
 
