@@ -377,7 +377,7 @@ MechanismMotion sample_mechanism_motion(const sym::System& system, const GiNaC::
     }
     const Eigen::VectorXd& y = simulation.state_at(frame_times[i]);
     simulation.sample(frame_times[i], y, motion.samples[i], kinematics);
-    motion.energy_error.push_back(column_value(balance, frame_times[i], y, motion.samples[i], simulation.energy0()));
+    motion.energy_error.push_back(column_value(balance, frame_times[i], y, motion.samples[i], simulation.origin()));
     if (!columns.empty()) add_panel(frame_times[i], y, motion.samples[i]);
     if (fine) {
       motion.trail_times.push_back(frame_times[i]);
