@@ -118,8 +118,9 @@ y = ["2.theta", "S.x"]
   const RunResult r = run_linkage({"lesson", (dir / "bad.toml").string(), "--out", (dir / "out").string()});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("bad.toml:6:17: step 1 (plot): y: unknown column 'S.x'; nearest 'S.s'; valid: t, S.s, S.s_ddot, "
-                       "S.force_x, S.force_y, S.moment, S.constraint_error, S.constraint_velocity_error, energy, "
-                       "work, energy_error and 69 more (the columns of every body, point and joint; 'all' "
+                       "S.force_x, S.force_y, S.moment, S.constraint_error, S.constraint_velocity_error, "
+                       "constraint_position_error, constraint_velocity_error, energy, work, energy_error, "
+                       "energy_error_relative and 79 more (the columns of every body, point and joint; 'all' "
                        "selects every one)\n"),
             std::string::npos)
       << r.err;

@@ -216,18 +216,18 @@ TEST(RenderCli, VideoAndSequenceTogether) {
   EXPECT_EQ(entries(dir / "f").size(), 3u);
 }
 
-// A run whose numbers mean nothing (explicit Euler, Case 1, no stabilization, a large
-// step: the pin drifts apart) is refused as any mechanism's is: one line naming the joint
-// that came apart, exit 3, no picture, even with --quiet; the spec's example gives none.
-TEST(RenderCli, AMeaninglessRunEndsWithOneError) {
+// A clip of a run whose numbers mean nothing (explicit Euler, Case 1, no stabilization,
+// a large step: the pin of a mechanism without loops drifts metres) is made, and ends
+// with one warning naming the joint, even with --quiet; the spec's example gives none.
+TEST(RenderCli, AMeaninglessRunEndsWithOneWarning) {
   TempDir dir;
   const RunResult r = render({"--out", (dir / "drift.png").string(), "--at", "10", "--case", "1", "--integrator",
                               "euler", "--dt", "0.05", "--theta1-dot", "20", "--theta2-dot", "-35"});
-  ASSERT_EQ(r.exit_code, 3) << r.err;
-  EXPECT_EQ(r.err.rfind("linkage: error: the simulation failed at t = ", 0), 0u) << r.err;
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err.rfind("linkage: warning: the run's numbers do not describe the motion: ", 0), 0u) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_NE(r.err.find("joint P came "), std::string::npos) << r.err;
-  EXPECT_FALSE(std::filesystem::exists(dir / "drift.png"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "drift.png"));
   const RunResult example = render({"--out", (dir / "example.png").string(), "--at", "10"});
   ASSERT_EQ(example.exit_code, 0) << example.err;
   EXPECT_EQ(example.err, "");

@@ -138,7 +138,9 @@ TEST(MechanismSimulation, ATreeDriftsToItsEndWithAWarningALoopStops) {
   EXPECT_GT(drifting.stats().max_constraint_error, 1.0) << "metres";
   EXPECT_EQ(drifting.stats().drifted_joint, "P");
   const std::string warning = mechanism_result_warning(o, drifting.stats());
-  EXPECT_EQ(warning.rfind("the run's numbers do not describe the motion: joint P came ", 0), 0U) << warning;
+  // The energy balance is off too (by 1.6 energy scales on the homework's scale).
+  EXPECT_EQ(warning.rfind("the run's numbers do not describe the motion: ", 0), 0U) << warning;
+  EXPECT_NE(warning.find("joint P came "), std::string::npos) << warning;
   EXPECT_NE(warning.find(" m apart ("), std::string::npos) << warning;
   EXPECT_NE(warning.find(" of body 1's length L); try stabilization by projection, Case 3 (it cannot drift), "),
             std::string::npos)
