@@ -231,6 +231,7 @@ class Builder {
 
   Shape shape(const GiNaC::ex& e) {
     if (const auto it = shapes_.find(e); it != shapes_.end()) return it->second;
+    throw_if_interrupted();  // walking a long chain's unexpanded angular momentum takes seconds
     constexpr std::uint64_t seed = 0xcbf29ce484222325ULL;
     Shape out;
     if (GiNaC::is_a<GiNaC::symbol>(e)) {

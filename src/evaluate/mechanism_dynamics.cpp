@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/interrupt.hpp"
+#include "evaluate/substitute.hpp"
 #include "evaluate/tree_dynamics.hpp"
 #include "symbolic/energy.hpp"
 #include "symbolic/joints.hpp"
@@ -137,10 +138,7 @@ MechanismDynamics::MechanismDynamics(const sym::System& system, CaseId id, std::
 
 GiNaC::ex MechanismDynamics::prepare(const GiNaC::ex& e) const {
   // Expanded, as CaseEvaluator does: one form whatever GiNaC's term order.
-  return GiNaC::expand(e.subs(system_->lengths(), GiNaC::subs_options::no_pattern)
-                           .subs(to_state_, GiNaC::subs_options::no_pattern)
-                           .subs(system_->constants(), GiNaC::subs_options::no_pattern)
-                           .subs(system_->constants(), GiNaC::subs_options::no_pattern));
+  return substitute_in_turn(e, {&system_->lengths(), &to_state_, &system_->constants(), &system_->constants()}, true);
 }
 
 void MechanismDynamics::compile_case() const {
@@ -204,10 +202,7 @@ void MechanismDynamics::compile_case() const {
   // their rates, each a sum over the body's ancestors: expanded, a chain of n links has
   // n^3 terms, so these two are compiled as they stand (n^2 operations).
   auto substituted = [&](const ex& e) {
-    return e.subs(system.lengths(), GiNaC::subs_options::no_pattern)
-        .subs(to_state_, GiNaC::subs_options::no_pattern)
-        .subs(system.constants(), GiNaC::subs_options::no_pattern)
-        .subs(system.constants(), GiNaC::subs_options::no_pattern);
+    return substitute_in_turn(e, {&system.lengths(), &to_state_, &system.constants(), &system.constants()}, false);
   };
   out.push_back(substituted(sym::kinetic_energy(system)));
   out.push_back(prepare(sym::potential_energy(system)));
