@@ -34,6 +34,7 @@ CaseEvaluator::CaseEvaluator(const sym::System& system, const CaseSystem& c)
   for (const GiNaC::ex& e : c.B) outputs.push_back(prepare(e));
   program_ = compile(outputs, inputs_);
   outputs_.resize(outputs.size());
+  free_checking(outputs);
   scratch_.resize(program_.scratch_size());
 }
 

@@ -160,6 +160,7 @@ void MechanismDynamics::compile_case() const {
     rhs.push_back(prepare(e));
   }
   rhs_ = compile(rhs, input_symbols_);
+  free_checking(rhs);
 
   // The sample: with the unknowns as inputs, and the eliminated forces recovered from them.
   GiNaC::exmap recovered;
@@ -212,6 +213,7 @@ void MechanismDynamics::compile_case() const {
   out.push_back(prepare(p.y));
   out.push_back(substituted(sym::angular_momentum_about_centre(system)));
   outputs_ = compile(out, output_inputs);
+  free_checking(out);
   output_symbols_ = output_inputs;
 
   output_inputs_.assign(output_inputs.size(), 0.0);

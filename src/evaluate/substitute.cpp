@@ -20,4 +20,11 @@ GiNaC::ex substitute_in_turn(const GiNaC::ex& e, std::initializer_list<const GiN
   return GiNaC::add(terms);
 }
 
+void free_checking(std::vector<GiNaC::ex>& expressions) {
+  while (!expressions.empty()) {
+    throw_if_interrupted();
+    expressions.pop_back();
+  }
+}
+
 }  // namespace linkage::eval

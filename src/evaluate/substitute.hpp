@@ -5,6 +5,7 @@
 #include <ginac/ginac.h>
 
 #include <initializer_list>
+#include <vector>
 
 namespace linkage::eval {
 
@@ -14,5 +15,9 @@ namespace linkage::eval {
 /// the terms' results the same expression as the result of the whole.
 [[nodiscard]] GiNaC::ex substitute_in_turn(const GiNaC::ex& e, std::initializer_list<const GiNaC::exmap*> maps,
                                            bool expanded);
+
+/// Empties `expressions` last first with a signal check between them (a vector's
+/// destructor cannot check): a long chain's compiled outputs take seconds to free.
+void free_checking(std::vector<GiNaC::ex>& expressions);
 
 }  // namespace linkage::eval
