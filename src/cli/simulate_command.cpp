@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli/angle_option.hpp"
@@ -20,6 +21,7 @@
 #include "core/angle_unit.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "core/number_format.hpp"
 #include "core/progress.hpp"
 #include "integrate/columns.hpp"
@@ -229,6 +231,11 @@ void run_simulate_mechanism(const SimulateOptions& o, const SimulationOptions& s
   // The initial state worked out as solve does, so a value that breaks it is named the same way.
   // A long chain's derivation can take seconds: a line on a terminal says so.
   ElapsedLine deriving("linkage: deriving the equations", o.quiet);
+  // No file is begun until the equations are: a signal meanwhile ends the run at once.
+  std::optional<EndAtOnceOnSignal> end_at_once(std::in_place, [&deriving] {
+    deriving.finish();
+    std::fprintf(stderr, "linkage: error: %s\n", describe(interrupted_error()).c_str());
+  });
   const MechanismSolution checked =
       work_out_mechanism(chosen_mechanism(o.mechanism, o.inputs), {static_cast<CaseId>(s.case_id)});
   const sym::System& system = *checked.system;
@@ -237,6 +244,7 @@ void run_simulate_mechanism(const SimulateOptions& o, const SimulationOptions& s
   const std::vector<MechanismColumn> columns =
       select_mechanism_columns(all, asked ? o.columns : "default", "--columns");
   MechanismSimulation simulation(system, checked.state, s, checked.cases.front().system);
+  end_at_once.reset();
   deriving.finish();
   if (!o.quiet) {
     note_ignored_simulation_flags(o.simulation, s, simulation.dynamics().constraint_rows());
