@@ -119,7 +119,7 @@ class Builder {
   [[nodiscard]] Parts finish(const std::vector<Index>& outputs) const;
 
   /// Frees the walk's maps with a signal check between batches (their destructors cannot
-  /// check): a long chain's hold millions of entries, seconds to free.
+  /// check): a long chain's take seconds to free.
   void release() {
     clear_checking(cache_);
     clear_checking(shapes_);
