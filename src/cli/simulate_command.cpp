@@ -12,6 +12,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "cli/angle_option.hpp"
@@ -22,6 +23,7 @@
 #include "core/angle_unit.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "core/number_format.hpp"
 #include "core/progress.hpp"
 #include "integrate/mechanism_columns.hpp"
@@ -194,6 +196,11 @@ void run_simulate_mechanism(const SimulateOptions& o, const SimulationOptions& s
   // The initial state worked out as solve does, so a value that breaks it is named the same way.
   // A long chain's derivation can take seconds: a line on a terminal says so.
   ElapsedLine deriving("linkage: deriving the equations", o.quiet);
+  // No file is begun until the equations are: a signal meanwhile ends the run at once.
+  std::optional<EndAtOnceOnSignal> end_at_once(std::in_place, [&deriving] {
+    deriving.finish();
+    std::fprintf(stderr, "linkage: error: %s\n", describe(interrupted_error()).c_str());
+  });
   // The homework's flags keep its table and names: the spec's columns by default, each
   // quantity named by two-blocks.toml's [aliases] in the table and in messages.
   const bool homework = !o.mechanism.chosen();
@@ -208,6 +215,7 @@ void run_simulate_mechanism(const SimulateOptions& o, const SimulationOptions& s
       homework ? named_columns(all, o.columns == "all" ? std::string_view(kSpecTable) : o.columns, "--columns")
                : select_mechanism_columns(all, asked ? o.columns : "default", "--columns");
   MechanismSimulation simulation(system, checked.state, s, checked.cases.front().system);
+  end_at_once.reset();
   deriving.finish();
   if (!o.quiet) {
     note_ignored_simulation_flags(o.simulation, s, simulation.dynamics().constraint_rows());

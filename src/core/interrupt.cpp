@@ -5,7 +5,9 @@
 
 #include <atomic>
 #include <csignal>
+#include <cstdlib>
 #include <cstring>
+#include <utility>
 
 #include "core/error.hpp"
 
@@ -18,6 +20,8 @@ std::atomic<int> g_signal{0};
 static_assert(std::atomic<int>::is_always_lock_free);
 
 int g_null_input = -1;  // /dev/null, opened before any handler runs
+
+std::atomic<EndAtOnceOnSignal*> g_end_at_once{nullptr};
 
 extern "C" void on_signal(int signal) {
   int none = 0;
@@ -50,7 +54,22 @@ int interrupt_signal() noexcept { return g_signal.load(std::memory_order_relaxed
 Error interrupted_error() { return Error::interrupted(interrupt_signal() != 0 ? interrupt_signal() : SIGINT); }
 
 void throw_if_interrupted() {
-  if (interrupt_requested()) throw interrupted_error();
+  if (!interrupt_requested()) return;
+  // The first thread here ends the process; none unwinds meanwhile.
+  if (EndAtOnceOnSignal* end = g_end_at_once.exchange(nullptr)) {
+    end->last_words_();
+    std::_Exit(interrupted_error().exit_status());
+  }
+  throw interrupted_error();
+}
+
+EndAtOnceOnSignal::EndAtOnceOnSignal(std::function<void()> last_words) : last_words_(std::move(last_words)) {
+  g_end_at_once.store(this);
+}
+
+EndAtOnceOnSignal::~EndAtOnceOnSignal() {
+  EndAtOnceOnSignal* self = this;
+  g_end_at_once.compare_exchange_strong(self, nullptr);
 }
 
 std::string Error::signal_name(int signal) {

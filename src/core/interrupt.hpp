@@ -3,6 +3,7 @@
 // records the signal; loops poll it and throw interrupted_error(), so destructors remove
 // temporary files before the process exits with 128 + the signal number. A second
 // signal ends the process at once (the next run removes what it left behind).
+#include <functional>
 
 namespace linkage {
 
@@ -16,7 +17,24 @@ void install_interrupt_handler();
 [[nodiscard]] int interrupt_signal() noexcept;
 /// The error for the signal received (exit 128 + signal).
 [[nodiscard]] class Error interrupted_error();
-/// Throws interrupted_error() if a terminating signal has been received.
+/// Throws interrupted_error() if a terminating signal has been received (or ends the
+/// process, while an EndAtOnceOnSignal lives).
 void throw_if_interrupted();
+
+/// While one lives, a signal ends the process at the next throw_if_interrupted(): it runs
+/// `last_words` (erase a progress line, print the message) and calls std::_Exit with
+/// 128 + the signal, freeing nothing. For work that has begun no file and no output (a long
+/// chain's derivation): unwinding it frees its expressions one by one, seconds for 200 links.
+class EndAtOnceOnSignal {
+ public:
+  explicit EndAtOnceOnSignal(std::function<void()> last_words);
+  EndAtOnceOnSignal(const EndAtOnceOnSignal&) = delete;
+  EndAtOnceOnSignal& operator=(const EndAtOnceOnSignal&) = delete;
+  ~EndAtOnceOnSignal();
+
+ private:
+  friend void throw_if_interrupted();
+  std::function<void()> last_words_;
+};
 
 }  // namespace linkage

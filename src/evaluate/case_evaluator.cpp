@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "evaluate/substitute.hpp"
+
 namespace linkage::eval {
 
 CaseEvaluator::CaseEvaluator(const sym::System& system, const CaseSystem& c)
@@ -25,16 +27,14 @@ CaseEvaluator::CaseEvaluator(const sym::System& system, const CaseSystem& c)
   // Expanded: GiNaC may build equal entries in differently nested forms from run to run
   // (its term order follows address-dependent hashes); the expanded form is one.
   auto prepare = [&](const GiNaC::ex& e) {
-    return GiNaC::expand(e.subs(system.lengths(), GiNaC::subs_options::no_pattern)
-                             .subs(maximal, GiNaC::subs_options::no_pattern)
-                             .subs(system.constants(), GiNaC::subs_options::no_pattern)
-                             .subs(system.constants(), GiNaC::subs_options::no_pattern));
+    return substitute_in_turn(e, {&system.lengths(), &maximal, &system.constants(), &system.constants()}, true);
   };
   for (const auto& row : c.A)
     for (const GiNaC::ex& e : row) outputs.push_back(prepare(e));
   for (const GiNaC::ex& e : c.B) outputs.push_back(prepare(e));
   program_ = compile(outputs, inputs_);
   outputs_.resize(outputs.size());
+  free_checking(outputs);
   scratch_.resize(program_.scratch_size());
 }
 

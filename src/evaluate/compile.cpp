@@ -118,6 +118,14 @@ class Builder {
 
   [[nodiscard]] Parts finish(const std::vector<Index>& outputs) const;
 
+  /// Frees the walk's maps with a signal check between batches (their destructors cannot
+  /// check): a long chain's take seconds to free.
+  void release() {
+    clear_checking(cache_);
+    clear_checking(shapes_);
+    clear_checking(numbering_);
+  }
+
  private:
   // Every node is the value of an expression's canonical orientation (shape()): e itself,
   // or -e when its shape says negated; callers apply the sign.
@@ -231,6 +239,7 @@ class Builder {
 
   Shape shape(const GiNaC::ex& e) {
     if (const auto it = shapes_.find(e); it != shapes_.end()) return it->second;
+    throw_if_interrupted();  // walking a long chain's unexpanded angular momentum takes seconds
     constexpr std::uint64_t seed = 0xcbf29ce484222325ULL;
     Shape out;
     if (GiNaC::is_a<GiNaC::symbol>(e)) {
@@ -285,6 +294,16 @@ class Builder {
     }
     shapes_.emplace(e, out);
     return out;
+  }
+
+  template <class Map>
+  static void clear_checking(Map& map) {
+    constexpr std::size_t kBatch = 4096;
+    std::size_t k = 0;
+    for (auto it = map.begin(); it != map.end(); ++k) {
+      if (k % kBatch == 0) throw_if_interrupted();
+      it = map.erase(it);
+    }
   }
 
   static bool is_integer(const GiNaC::ex& e) {
@@ -512,6 +531,7 @@ Program compile(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::
     nodes.push_back(builder.output(outputs[k], k));
   }
   Parts parts = builder.finish(nodes);
+  builder.release();
   return Program(std::move(parts.input_names), std::move(parts.constants), std::move(parts.code),
                  std::move(parts.output_registers), parts.register_count);
 }

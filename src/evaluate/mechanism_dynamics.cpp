@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/interrupt.hpp"
+#include "evaluate/substitute.hpp"
 #include "evaluate/tree_dynamics.hpp"
 #include "symbolic/energy.hpp"
 #include "symbolic/joints.hpp"
@@ -137,10 +138,7 @@ MechanismDynamics::MechanismDynamics(const sym::System& system, CaseId id, std::
 
 GiNaC::ex MechanismDynamics::prepare(const GiNaC::ex& e) const {
   // Expanded, as CaseEvaluator does: one form whatever GiNaC's term order.
-  return GiNaC::expand(e.subs(system_->lengths(), GiNaC::subs_options::no_pattern)
-                           .subs(to_state_, GiNaC::subs_options::no_pattern)
-                           .subs(system_->constants(), GiNaC::subs_options::no_pattern)
-                           .subs(system_->constants(), GiNaC::subs_options::no_pattern));
+  return substitute_in_turn(e, {&system_->lengths(), &to_state_, &system_->constants(), &system_->constants()}, true);
 }
 
 void MechanismDynamics::compile_case() const {
@@ -162,6 +160,7 @@ void MechanismDynamics::compile_case() const {
     rhs.push_back(prepare(e));
   }
   rhs_ = compile(rhs, input_symbols_);
+  free_checking(rhs);
 
   // The sample: with the unknowns as inputs, and the eliminated forces recovered from them.
   GiNaC::exmap recovered;
@@ -204,10 +203,7 @@ void MechanismDynamics::compile_case() const {
   // their rates, each a sum over the body's ancestors: expanded, a chain of n links has
   // n^3 terms, so these two are compiled as they stand (n^2 operations).
   auto substituted = [&](const ex& e) {
-    return e.subs(system.lengths(), GiNaC::subs_options::no_pattern)
-        .subs(to_state_, GiNaC::subs_options::no_pattern)
-        .subs(system.constants(), GiNaC::subs_options::no_pattern)
-        .subs(system.constants(), GiNaC::subs_options::no_pattern);
+    return substitute_in_turn(e, {&system.lengths(), &to_state_, &system.constants(), &system.constants()}, false);
   };
   out.push_back(substituted(sym::kinetic_energy(system)));
   out.push_back(prepare(sym::potential_energy(system)));
@@ -219,6 +215,7 @@ void MechanismDynamics::compile_case() const {
   const sym::Vec2 com = sym::centre_of_mass(system), com_velocity = sym::centre_of_mass_velocity(system);
   for (const ex& e : {com.x, com.y, com_velocity.x, com_velocity.y}) out.push_back(prepare(e));
   outputs_ = compile(out, output_inputs);
+  free_checking(out);
   output_symbols_ = output_inputs;
 
   output_inputs_.assign(output_inputs.size(), 0.0);

@@ -3,7 +3,7 @@
 # the derivation's old growth with the number of bodies (minutes at 50 links) fails here.
 if(COMMAND set_tests_properties)
   set_tests_properties(LongChain.HundredLinksDeriveAndSimulateKeepingTheEnergy PROPERTIES TIMEOUT 120)
-  # One derivation of the 100-link chain, then four runs signalled within about another.
+  # One simulate run of the 100-link chain, then six runs signalled within about another.
   # The second is the program's own time to stop; under the sanitizers every stage runs
   # several times slower (1.5 s at 0.9 of the derivation), so this bound is kept to the
   # Release pass. The other long-chain signal tests run under the sanitizers too.
