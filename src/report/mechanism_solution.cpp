@@ -170,6 +170,14 @@ void check_aliases(const MechanismSolution& s) {
   }
 }
 
+// [table]'s columns, each one of the mechanism's, at its entry's position in the file.
+void check_table(const sym::System& system) {
+  const Mechanism& m = system.mechanism();
+  if (m.table.empty()) return;
+  const std::vector<MechanismColumn> all = mechanism_columns(system);
+  for (const TableColumn& c : m.table) (void)find_mechanism_column(all, c.name, where(c.pos) + "[table]: columns");
+}
+
 // `object` with each key that has an alias renamed to it, in the same order.
 nlohmann::ordered_json renamed(const nlohmann::ordered_json& object, const Mechanism& m) {
   auto name = [&](const std::string& key) { return m.aliased(key); };
@@ -214,6 +222,7 @@ MechanismSolution work_out_mechanism(std::shared_ptr<const sym::System> derived,
     throw causes.empty() ? e : e.rephrased(concat({e.what(), "; likely causes: ", causes}));
   }
   check_aliases(out);
+  check_table(system);
   return out;
 }
 
