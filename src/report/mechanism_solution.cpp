@@ -335,28 +335,4 @@ std::string mechanism_json(const MechanismSolution& s, JsonKeys keys) {
   return json_layout(doc);
 }
 
-std::map<std::string, GiNaC::ex> quotable_values(const sym::System& system) {
-  std::map<std::string, GiNaC::ex> out;
-  for (const sym::SymbolInfo& info : system.table().all()) {
-    if (info.role == sym::Role::parameter)
-      out[info.symbol.get_name()] = system.parameter_values().at(info.symbol);
-    else if (info.role == sym::Role::definition || info.role == sym::Role::inertia)
-      out[info.symbol.get_name()] = system.constants().at(info.symbol).subs(system.parameter_values());
-  }
-  // The initial coordinates and rates (loops closed) and the Case 3 unknowns at the start
-  // with what it recovers, by the names and values of `linkage solve --mechanism --format json`.
-  const nlohmann::json solved =
-      nlohmann::json::parse(mechanism_json(work_out_mechanism(system.mechanism(), case_ids({3}))));
-  auto add = [&](const nlohmann::json& values) {
-    for (const auto& [name, value] : values.items())
-      if (value.is_number()) out[name] = GiNaC::numeric(value.get<double>());
-  };
-  add(solved.at("state"));
-  for (const nlohmann::json& c : solved.at("cases")) {
-    add(c.at("solution"));
-    if (c.contains("recovered")) add(c.at("recovered"));
-  }
-  return out;
-}
-
 }  // namespace linkage
