@@ -37,13 +37,6 @@ namespace linkage::cli {
 namespace {
 
 constexpr double kMaxRows = 1e7;
-// The spec's table, written for the homework's flags (no --mechanism): its columns in its
-// order, each named by two-blocks.toml's [aliases].
-constexpr const char* kSpecTable =
-    "t,x1,y1,theta1,theta2,x1_dot,y1_dot,theta1_dot,theta2_dot,x2,y2,x2_dot,y2_dot,x1_ddot,y1_ddot,theta1_ddot,"
-    "theta2_ddot,F_x,F_y,energy,momentum_x,momentum_y,angular_momentum,constraint_position_error,"
-    "constraint_velocity_error";
-
 struct SimulateOptions {
   InputOptions inputs;
   SimulationFlags simulation;
@@ -190,6 +183,15 @@ std::string mechanism_json_summary(const MechanismStats& st, double wall) {
   return json_line("summary", summary) + "\n}\n";
 }
 
+/// The file's [table] (every column when it has none), comma-separated, by the names the
+/// run prints.
+std::string table_columns(const Mechanism& m) {
+  if (m.table.empty()) return "all";
+  std::string list;
+  for (const TableColumn& c : m.table) list += (list.empty() ? "" : ",") + m.named(c.name);
+  return list;
+}
+
 void run_simulate_mechanism(const SimulateOptions& o, const SimulationOptions& s, double every, Format format) {
   const auto start = std::chrono::steady_clock::now();
   const TrajectoryRows samples = checked_rows(s.duration, every);
@@ -201,8 +203,8 @@ void run_simulate_mechanism(const SimulateOptions& o, const SimulationOptions& s
     deriving.finish();
     std::fprintf(stderr, "linkage: error: %s\n", describe(interrupted_error()).c_str());
   });
-  // The homework's flags keep its table and names: the spec's columns by default, each
-  // quantity named by two-blocks.toml's [aliases] in the table and in messages.
+  // The homework's flags are two-blocks.toml's interface: its [table] by default, each
+  // quantity named by its [aliases] in the table and in messages.
   const bool homework = !o.mechanism.chosen();
   Mechanism mechanism = chosen_mechanism(o.mechanism, o.inputs);
   mechanism.speaks_aliases = homework;
@@ -212,7 +214,7 @@ void run_simulate_mechanism(const SimulateOptions& o, const SimulationOptions& s
   for (MechanismColumn& c : all) c.name = system.mechanism().named(c.name);
   const bool asked = o.columns_option != nullptr && o.columns_option->count() > 0;
   const std::vector<MechanismColumn> columns =
-      homework ? named_columns(all, o.columns == "all" ? std::string_view(kSpecTable) : o.columns, "--columns")
+      homework ? named_columns(all, o.columns == "all" ? table_columns(system.mechanism()) : o.columns, "--columns")
                : select_mechanism_columns(all, asked ? o.columns : "default", "--columns");
   MechanismSimulation simulation(system, checked.state, s, checked.cases.front().system);
   end_at_once.reset();

@@ -2,59 +2,50 @@
 
 #include <ginac/ginac.h>
 
+#include <stdexcept>
+
+#include "core/error.hpp"
+#include "report/quotable_values.hpp"
 #include "symbolic/expression_reader.hpp"
 #include "symbolic/system.hpp"
 
 namespace linkage::lesson {
-namespace {
 
-// One GiNaC symbol per quantity, in table order; pi is GiNaC's constant.
-struct QuantitySymbols {
-  std::vector<GiNaC::ex> symbols;
-  GiNaC::symtab names;
-  QuantitySymbols() {
-    for (const QuantityInfo& q : kQuantities) {
-      const std::string name(q.name);
-      symbols.push_back(name == "pi" ? GiNaC::ex(GiNaC::Pi) : GiNaC::ex(GiNaC::symbol(name)));
-      names[name] = symbols.back();
-    }
-  }
+struct Expression::Value {
+  GiNaC::ex expression;
+  GiNaC::exmap at;
 };
 
-const QuantitySymbols& quantity_symbols() {
-  static const QuantitySymbols table;
-  return table;
-}
-
-}  // namespace
-
-Expression Expression::parse(std::string_view text, const std::string& origin, const MechanismNames* mechanism) {
+Expression Expression::parse(std::string_view text, const std::string& origin, const QuotableValues* names) {
   Expression e;
   e.text_ = std::string(text);
-  if (mechanism == nullptr) {
-    e.value_ = std::make_shared<const GiNaC::ex>(sym::read_expression(text, origin, {quantity_symbols().names}));
-  } else {
-    GiNaC::symtab names = quantity_symbols().names;
-    for (const auto& [name, value] : *mechanism) names[name] = value;
-    e.value_ = std::make_shared<const GiNaC::ex>(sym::read_expression(text, origin, {names}));
+  // Every name a symbol while reading; then each one the text uses is its value (so a
+  // case is worked out only when the text quotes it).
+  GiNaC::symtab table;
+  if (names != nullptr)
+    for (const std::string& name : names->names()) table[name] = GiNaC::symbol(name);
+  if (!table.contains("pi")) table["pi"] = GiNaC::Pi;
+  const GiNaC::ex read = sym::read_expression(text, origin, {table});
+  if (GiNaC::is_a<GiNaC::symbol>(read)) e.single_name_ = GiNaC::ex_to<GiNaC::symbol>(read).get_name();
+  GiNaC::exmap at;
+  try {  // a case worked out now may be singular at these values
+    for (auto it = read.preorder_begin(); it != read.preorder_end(); ++it)
+      if (GiNaC::is_a<GiNaC::symbol>(*it) && names != nullptr)
+        at[*it] = names->value(GiNaC::ex_to<GiNaC::symbol>(*it).get_name());
+  } catch (const Error& error) {
+    throw error.rephrased(origin + ": " + error.what());
   }
+  // The values substituted, so a mechanism's exact parameters stay exact; where that meets
+  // a pole (1/(x1 - 1) at x1 = 1), evaluated in doubles to inf, which the text refuses.
+  GiNaC::ex value = read;
+  try {
+    value = read.subs(at);
+  } catch (const std::exception&) {  // GiNaC's pole_error
+  }
+  e.value_ = std::make_shared<const Value>(Value{value, at});
   return e;
 }
 
-double Expression::evaluate(const QuantityValues& values) const {
-  const QuantitySymbols& table = quantity_symbols();
-  GiNaC::exmap at;
-  for (std::size_t i = 0; i < kQuantities.size(); ++i)
-    if (GiNaC::is_a<GiNaC::symbol>(table.symbols[i]) && value_->has(table.symbols[i]))
-      at[table.symbols[i]] = GiNaC::numeric(values[i]);
-  return sym::evaluate(*value_, at);
-}
-
-const QuantityInfo* Expression::single_quantity() const {
-  const QuantitySymbols& table = quantity_symbols();
-  for (std::size_t i = 0; i < kQuantities.size(); ++i)
-    if (GiNaC::is_a<GiNaC::symbol>(table.symbols[i]) && value_->is_equal(table.symbols[i])) return &kQuantities[i];
-  return nullptr;
-}
+double Expression::evaluate() const { return sym::evaluate(value_->expression, value_->at); }
 
 }  // namespace linkage::lesson

@@ -30,6 +30,7 @@
 #include "report/markdown.hpp"
 #include "report/mechanism_solution.hpp"
 #include "report/mechanism_text.hpp"
+#include "report/quotable_values.hpp"
 #include "symbolic/loop_closure.hpp"
 #include "symbolic/system.hpp"
 
@@ -97,12 +98,14 @@ std::string strip_extension(std::string name, std::initializer_list<std::string_
   return name;
 }
 
-/// Lesson text with {{...}} placeholders, each a finite number at `inputs` (where the
-/// text is shown), so a lesson that would print inf or nan fails when it is read.
-TextTemplate text_template(std::string_view text, const std::string& origin, const Inputs& inputs,
-                           const MechanismNames* mechanism) {
-  TextTemplate t = TextTemplate::parse(text, origin, mechanism);
-  if (text.find("{{") != std::string_view::npos) t.require_finite(evaluate_quantities(inputs), origin);
+/// Lesson text with {{...}} placeholders over `names()` (where the text is shown, worked
+/// out only for a text that has one), each a finite number, so a lesson that would print
+/// inf or nan fails when it is read.
+TextTemplate text_template(std::string_view text, const std::string& origin,
+                           const std::function<const QuotableValues*()>& names) {
+  if (text.find("{{") == std::string_view::npos) return TextTemplate::parse(text, origin);
+  TextTemplate t = TextTemplate::parse(text, origin, names());
+  t.require_finite(origin);
   return t;
 }
 
@@ -141,14 +144,15 @@ class Parser {
     if (!lesson_mechanism_.empty())
       at_keys({&top}, [&] {
         const auto built = build(lesson_mechanism_, {}, top.where("mechanism"));
-        if (top.has("description")) step_names_ = names_of(*built);
+        if (top.has("description")) step_names_ = &names_of(*built);
         step_spec_ = lesson_mechanism_;
         for (const Parameter& p : built->system->mechanism().parameters) settable_names_.push_back(p.name);
         for (const sym::GeneralizedCoordinate& g : built->system->coordinates())
           settable_names_.insert(settable_names_.end(), {g.coordinate.key, g.coordinate.key + "_dot"});
       });
     if (auto d = top.string("description"))
-      lesson.description = text_template(*d, top.prefix("description") + "description", inputs, names());
+      lesson.description = text_template(*d, top.prefix("description") + "description",
+                                         [&] { return names(inputs, top.where("description")); });
 
     top.require("step");
     const auto steps = top.tables("step");
@@ -193,10 +197,23 @@ class Parser {
   }
 
   /// The names {{...}} and answers may use on `built`, worked out once per mechanism and settings.
-  const MechanismNames& names_of(const BuiltMechanism& built) {
+  const QuotableValues& names_of(const BuiltMechanism& built) const {
     auto [it, fresh] = names_cache_.try_emplace(&built);
-    if (fresh) it->second = quotable_values(*built.system);
-    return it->second;
+    if (fresh) it->second = std::make_unique<const QuotableValues>(built.system);
+    return *it->second;
+  }
+
+  /// The names of the step's mechanism; on the homework, two-blocks.toml's at `inputs` (its
+  /// settings, as the homework's flags are), named by its [aliases] as the homework's
+  /// quantities are. A value that breaks the worked solution is named at `origin`.
+  const QuotableValues* names(const Inputs& inputs, const std::string& origin) const {
+    if (!step_spec_.empty()) return step_names_;
+    const auto built = build(kHomeworkMechanism, homework_settings(inputs), origin, true);
+    try {
+      return &names_of(*built);
+    } catch (const Error& e) {
+      throw e.rephrased(origin + ": " + e.what());
+    }
   }
 
   fs::path referenced_file(const TableReader& r, std::string_view key, const std::string& name) const {
@@ -251,7 +268,7 @@ class Parser {
     choose_step_mechanism(r, step.kind);
     if (!step_spec_.empty() && step.kind != StepKind::set) {
       step.mechanism = at_keys({&r}, [&] { return build(step_spec_, step_settings_, r.where("mechanism")); });
-      if (step.kind == StepKind::say || step.kind == StepKind::exercise) step_names_ = names_of(*step.mechanism);
+      if (step.kind == StepKind::say || step.kind == StepKind::exercise) step_names_ = &names_of(*step.mechanism);
     }
 
     const std::array<std::function<StepBody()>, kStepKindNames.size()> read{{
@@ -259,7 +276,7 @@ class Parser {
         [&] { return StepBody(parse_say(r, inputs)); },
         [&] { return StepBody(parse_set(r, inputs)); },
         [&] { return StepBody(PauseStep{r.string("prompt").value_or("Press Enter to continue")}); },
-        [&] { return StepBody(parse_exercise(r, inputs, step)); },
+        [&] { return StepBody(parse_exercise(r, inputs)); },
         [&] { return StepBody(parse_solve(r, inputs, step)); },
         [&] { return StepBody(parse_simulate(r, inputs)); },
         [&] { return StepBody(parse_render(r, inputs)); },
@@ -291,11 +308,11 @@ class Parser {
     const auto file = r.string("file");
     if (text && file) r.fail("file", "give either 'text' or 'file', not both");
     if (!text && !file) r.require("text");
-    if (text) return {text_template(*text, r.prefix("text") + "text", inputs, names())};
+    if (text) return {text_template(*text, r.prefix("text") + "text", [&] { return names(inputs, r.where("text")); })};
     const fs::path path = referenced_file(r, "file", *file);
     const auto content = read_file_text(path);
     if (!content) r.fail("file", "cannot read '" + path.string() + "'");
-    return {text_template(*content, r.prefix("file") + path.string(), inputs, names())};
+    return {text_template(*content, r.prefix("file") + path.string(), [&] { return names(inputs, r.where("file")); })};
   }
 
   SetStep parse_set(const TableReader& r, Inputs& inputs) {
@@ -348,17 +365,17 @@ class Parser {
 
   /// The text of `key`, a {{...}} template checked at `inputs`.
   TextTemplate text_at(const TableReader& r, std::string_view key, const Inputs& inputs) const {
-    return text_template(*r.string(key), r.prefix(key) + std::string(key), inputs, names());
+    return text_template(*r.string(key), r.prefix(key) + std::string(key), [&] { return names(inputs, r.where(key)); });
   }
 
-  ExerciseStep parse_exercise(const TableReader& r, const Inputs& inputs, const Step& step) const {
+  ExerciseStep parse_exercise(const TableReader& r, const Inputs& inputs) const {
     ExerciseStep e;
     r.require("question");
     r.require("answer");
     e.question = text_at(r, "question", inputs);
     const toml::node& answer = *r.node("answer");
     if (const auto* s = answer.as_string()) {
-      e.answer = Expression::parse(s->get(), r.prefix("answer") + "answer", names());
+      e.answer = Expression::parse(s->get(), r.prefix("answer") + "answer", names(inputs, r.where("answer")));
     } else if (answer.is_number()) {
       e.answer =
           Expression::parse(format_roundtrip(*r.number("answer", -kInf, kInf, "")), r.prefix("answer") + "answer");
@@ -366,15 +383,12 @@ class Parser {
       r.fail("answer",
              "'answer' must be an expression string (e.g. \"I_zz_P\") or a number, got " + type_phrase(answer));
     }
-    if (!std::isfinite(e.answer.evaluate(evaluate_quantities(inputs))))
+    if (!std::isfinite(e.answer.evaluate()))
       r.fail("answer", "'" + e.answer.text() + "' is not a finite number at this step's inputs");
     if (auto unit = r.string("unit"))
       e.unit = *unit;
-    else if (const QuantityInfo* q = e.answer.single_quantity())
-      e.unit = q->unit;
-    else if (const sym::SymbolInfo* name =
-                 step.mechanism ? step.mechanism->system->table().find(e.answer.text()) : nullptr)
-      e.unit = name->unit;  // a parameter, coordinate, rate, acceleration, joint force ...
+    else if (const auto& name = e.answer.single_name())
+      e.unit = names(inputs, r.where("answer"))->unit(*name);  // a parameter, coordinate, derived value ...
     e.tolerance = r.number("tolerance", 0, kInf, "valid: tolerance >= 0");
     e.relative_tolerance = r.number("relative_tolerance", 0, 1, "valid: 0 to 1").value_or(e.tolerance ? 0.0 : 0.01);
     e.attempts = static_cast<int>(r.integer("attempts", 1, 10).value_or(3));
@@ -796,11 +810,10 @@ class Parser {
   std::vector<std::string> settable_names_;   // its parameters, coordinates and rates
   std::string step_spec_;                     // the step being read: its mechanism and settings
   std::vector<std::string> step_settings_;
-  MechanismNames step_names_;  // names of the step's mechanism for {{...}} and answers
+  const QuotableValues* step_names_ = nullptr;  // names of the step's mechanism for {{...}} and answers
   mutable std::map<std::string, std::shared_ptr<const BuiltMechanism>> built_;
   mutable std::set<std::pair<const BuiltMechanism*, int>> checked_;  // runs' states worked out
-  std::map<const BuiltMechanism*, MechanismNames> names_cache_;
-  [[nodiscard]] const MechanismNames* names() const { return step_spec_.empty() ? nullptr : &step_names_; }
+  mutable std::map<const BuiltMechanism*, std::unique_ptr<const QuotableValues>> names_cache_;
   fs::path dir_;
   std::map<std::string, std::string> artifacts_;  // file name -> the step that writes it
 };

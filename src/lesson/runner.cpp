@@ -131,12 +131,11 @@ std::optional<double> parse_answer(std::string text) {
   return value;
 }
 
-void run_exercise(RunContext& c, const Step& step, const ExerciseStep& e) {
-  const QuantityValues values = evaluate_quantities(step.inputs);
-  const double answer = e.answer.evaluate(values);
+void run_exercise(RunContext& c, const ExerciseStep& e) {
+  const double answer = e.answer.evaluate();
   const std::string answer_text = with_unit(answer, e.digits, e.unit);
-  const std::string question = e.question.render(values);
-  const std::string explanation = e.explanation.render(values);
+  const std::string question = e.question.render();
+  const std::string explanation = e.explanation.render();
   c.document->exercise(question, answer_text, explanation);
   if (!c.options.interactive) {
     c.terminal->exercise(question, answer_text, explanation);
@@ -175,7 +174,7 @@ void run_exercise(RunContext& c, const Step& step, const ExerciseStep& e) {
       break;
     }
     --tries_left;
-    const std::string hint = e.hint.render(values);
+    const std::string hint = e.hint.render();
     if (tries_left == 0) {
       reveal("Not quite. ");
       break;
@@ -202,14 +201,14 @@ void run_step(RunContext& c, const Step& step) {
       [&](const auto& body) {
         using T = std::decay_t<decltype(body)>;
         if constexpr (std::is_same_v<T, SayStep>) {
-          const std::string text = body.text.render(evaluate_quantities(step.inputs));
+          const std::string text = body.text.render();
           c.both([&](Writer& w) { w.markdown(text); });
         } else if constexpr (std::is_same_v<T, SetStep>) {
           run_set(c, step, body);
         } else if constexpr (std::is_same_v<T, PauseStep>) {
           if (c.options.interactive) wait_for_enter(c, body.prompt);
         } else if constexpr (std::is_same_v<T, ExerciseStep>) {
-          run_exercise(c, step, body);
+          run_exercise(c, body);
         } else if constexpr (std::is_same_v<T, SolveStep>) {
           run_solve(c, step, body);
         } else if constexpr (std::is_same_v<T, SimulateStep>) {
@@ -240,7 +239,7 @@ RunSummary run_lesson(const Lesson& lesson, const RunnerOptions& options, std::i
                make_latex_writer(true),
                ArtifactCache(options.out_dir, options.force, status),
                {}};
-  const std::string description = lesson.description.render(evaluate_quantities(lesson.inputs));
+  const std::string description = lesson.description.render();
   c.both([&](Writer& w) { w.title(lesson.title, description); });
   c.flush();
   for (const Step& step : lesson.steps) {

@@ -5,7 +5,6 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
-#include "formulations/homework_quantities.hpp"
 #include "lesson/cache.hpp"
 #include "lesson/runner.hpp"
 #include "report/document_writer.hpp"

@@ -11,7 +11,7 @@
 
 namespace linkage::lesson {
 
-TextTemplate TextTemplate::parse(std::string_view text, const std::string& origin, const MechanismNames* mechanism) {
+TextTemplate TextTemplate::parse(std::string_view text, const std::string& origin, const QuotableValues* names) {
   TextTemplate t;
   std::size_t pos = 0;
   while (pos < text.size()) {
@@ -39,7 +39,7 @@ TextTemplate TextTemplate::parse(std::string_view text, const std::string& origi
                            "}}': the digits after ':' must be a whole number from 1 to 17");
       inside = inside.substr(0, colon);
     }
-    part.value.push_back(Expression::parse(inside, origin + ": {{" + excerpt(inside) + "}}", mechanism));
+    part.value.push_back(Expression::parse(inside, origin + ": {{" + excerpt(inside) + "}}", names));
     part.where = text_position(text, text.data() + open);
     t.parts_.push_back(std::move(part));
     pos = close + 2;
@@ -55,20 +55,20 @@ TextTemplate TextTemplate::parse(std::string_view text, const std::string& origi
   return t;
 }
 
-void TextTemplate::require_finite(const QuantityValues& values, const std::string& origin) const {
+void TextTemplate::require_finite(const std::string& origin) const {
   for (const Part& part : parts_)
     for (const Expression& e : part.value)
-      if (const double value = e.evaluate(values); !std::isfinite(value))
+      if (const double value = e.evaluate(); !std::isfinite(value))
         throw Error::input(origin + ": " + part.where + ": {{" + excerpt(e.text()) + "}} is " +
                            (std::isnan(value) ? std::string("nan") : format_roundtrip(value)) +
                            " at these inputs; text can show only finite numbers");
 }
 
-std::string TextTemplate::render(const QuantityValues& values) const {
+std::string TextTemplate::render() const {
   std::string out;
   for (const Part& part : parts_) {
     out += part.literal;
-    for (const Expression& e : part.value) out += format_significant(e.evaluate(values), part.digits);
+    for (const Expression& e : part.value) out += format_significant(e.evaluate(), part.digits);
   }
   return out;
 }

@@ -1,6 +1,6 @@
 #pragma once
 // Lesson text with computed values: "{{I_zz_P}}" or "{{1000 * I_zz_P : 4}}" is replaced
-// by the expression's value at the step's inputs, to 6 (or the given number of)
+// by the expression's value at the step's mechanism and settings, to 6 (or the given number of)
 // significant digits. Lesson Markdown has no other use for "{{", so there is no escape;
 // an unclosed "{{" is an error.
 #include <string>
@@ -15,15 +15,14 @@ class TextTemplate {
  public:
   TextTemplate() = default;
   /// Parses the placeholders of `text`; throws Error::input starting with `origin`.
-  /// `mechanism`: the names of the lesson's mechanism, if it names one.
-  static TextTemplate parse(std::string_view text, const std::string& origin,
-                            const MechanismNames* mechanism = nullptr);
-  /// The text with every placeholder replaced by its value at `values`.
-  [[nodiscard]] std::string render(const QuantityValues& values) const;
+  /// `names`: the quotable values of the step's mechanism.
+  static TextTemplate parse(std::string_view text, const std::string& origin, const QuotableValues* names = nullptr);
+  /// The text with every placeholder replaced by its value.
+  [[nodiscard]] std::string render() const;
   /// Throws Error::input, starting with `origin` and naming the placeholder's line and
-  /// column in the text, when a placeholder is not a finite number at `values` ({{1/0}},
+  /// column in the text, when a placeholder is not a finite number ({{1/0}},
   /// {{sqrt(-1)}}): the text must never show inf or nan.
-  void require_finite(const QuantityValues& values, const std::string& origin) const;
+  void require_finite(const std::string& origin) const;
   [[nodiscard]] bool empty() const { return parts_.empty(); }
 
  private:

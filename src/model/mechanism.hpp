@@ -133,6 +133,12 @@ struct Picture {
   std::string ensemble;             // the coordinate --ensemble spreads ("1.theta"); empty: the first
 };
 
+/// A column of the table the file's interface writes by default ([table] columns).
+struct TableColumn {
+  std::string name;  // a column of `linkage simulate --mechanism FILE --columns all` ("1.x", "energy")
+  SourcePos pos;     // of the list entry
+};
+
 struct Mechanism {
   std::string name;                 // file stem, e.g. "two-blocks"
   std::string title;                // one line
@@ -153,6 +159,9 @@ struct Mechanism {
   SourcePos independent_pos;
   std::vector<Alias> aliases;  // [aliases], in file order
   Picture picture;
+  // The table an interface built on the file (its [aliases]) writes by default, in order;
+  // empty: every column.
+  std::vector<TableColumn> table;
   // Tables and messages name quantities by `aliases`: a run from the homework's flags
   // speaks the spec's names (x1_dot, not 1.x_dot).
   bool speaks_aliases = false;

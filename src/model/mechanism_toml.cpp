@@ -49,6 +49,10 @@ constexpr MechanismKey kKeys[] = {
      "points whose path the picture draws, \"BODY.POINT\" (\"1.P\"), as --trail gives them"},
     {"[picture]", "ensemble", "string", "the first coordinate",
      "the coordinate of [initial] an ensemble's runs start apart in (\"1.theta\")"},
+    {"top level", "table", "table", "none", "the table an interface built on the file writes by default"},
+    {"[table]", "columns", "list of strings", "every column",
+     "the columns, in order, by the names `linkage simulate --mechanism FILE --columns all` prints (\"1.x\", "
+     "\"energy\")"},
     {"[ground]", "points", "table of [x, y]", "none", "named points of the fixed frame, world coordinates, m"},
     {"[[body]]", "name", "string", "(required)", "the body's name: letters, digits, '_' or '-' (e.g. \"1\")"},
     {"[[body]]", "shape", "string", "(required)", "rectangle, rod, disc or point"},
@@ -180,6 +184,7 @@ class MechanismReader {
     read_initial();
     read_aliases();
     read_picture();
+    read_table();
     return std::move(m_);
   }
 
@@ -793,6 +798,29 @@ class MechanismReader {
         fail(at, "[picture]: trail " + q(point) + " is not a named point" + did_you_mean(point, valid) +
                      "; valid: " + join_names(valid, "none (the file names no points)"));
       m_.picture.trails.push_back(point);
+    }
+  }
+
+  // [table]: the default columns of an interface built on the file; that they are columns
+  // is checked with the derived system (report's work_out_mechanism).
+  void read_table() {
+    const toml::table* table = root_.subtable("table");
+    if (table == nullptr) return;
+    const TableReader r = checked(*table, "[table]", "[table]");
+    const toml::node* columns = r.node("columns");
+    if (columns == nullptr) return;
+    if (!columns->is_array())
+      r.fail("columns",
+             "'columns' must be a list of column names such as [\"t\", \"1.x\"], got " + type_phrase(*columns));
+    if (columns->as_array()->empty()) r.fail("columns", "'columns' is empty; list at least one column");
+    const std::vector<std::string> names = *r.strings("columns");  // every entry a string
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      const SourcePos at = pos(columns->as_array()->get(i)->source());
+      for (const TableColumn& c : m_.table)
+        if (c.name == names[i])
+          fail(at, "[table]: column " + q(names[i]) + " is listed twice (first at line " + std::to_string(c.pos.line) +
+                       ", column " + std::to_string(c.pos.column) + ")");
+      m_.table.push_back({names[i], at});
     }
   }
 

@@ -170,6 +170,14 @@ void check_aliases(const MechanismSolution& s) {
   }
 }
 
+// [table]'s columns, each one of the mechanism's, at its entry's position in the file.
+void check_table(const sym::System& system) {
+  const Mechanism& m = system.mechanism();
+  if (m.table.empty()) return;
+  const std::vector<MechanismColumn> all = mechanism_columns(system);
+  for (const TableColumn& c : m.table) (void)find_mechanism_column(all, c.name, where(c.pos) + "[table]: columns");
+}
+
 // `object` with each key that has an alias renamed to it, in the same order.
 nlohmann::ordered_json renamed(const nlohmann::ordered_json& object, const Mechanism& m) {
   auto name = [&](const std::string& key) { return m.aliased(key); };
@@ -214,6 +222,7 @@ MechanismSolution work_out_mechanism(std::shared_ptr<const sym::System> derived,
     throw causes.empty() ? e : e.rephrased(concat({e.what(), "; likely causes: ", causes}));
   }
   check_aliases(out);
+  check_table(system);
   return out;
 }
 
@@ -324,30 +333,6 @@ std::string mechanism_json(const MechanismSolution& s, JsonKeys keys) {
   }
   if (keys == JsonKeys::aliases) apply_aliases(doc, m);
   return json_layout(doc);
-}
-
-std::map<std::string, GiNaC::ex> quotable_values(const sym::System& system) {
-  std::map<std::string, GiNaC::ex> out;
-  for (const sym::SymbolInfo& info : system.table().all()) {
-    if (info.role == sym::Role::parameter)
-      out[info.symbol.get_name()] = system.parameter_values().at(info.symbol);
-    else if (info.role == sym::Role::definition || info.role == sym::Role::inertia)
-      out[info.symbol.get_name()] = system.constants().at(info.symbol).subs(system.parameter_values());
-  }
-  // The initial coordinates and rates (loops closed) and the Case 3 unknowns at the start
-  // with what it recovers, by the names and values of `linkage solve --mechanism --format json`.
-  const nlohmann::json solved =
-      nlohmann::json::parse(mechanism_json(work_out_mechanism(system.mechanism(), case_ids({3}))));
-  auto add = [&](const nlohmann::json& values) {
-    for (const auto& [name, value] : values.items())
-      if (value.is_number()) out[name] = GiNaC::numeric(value.get<double>());
-  };
-  add(solved.at("state"));
-  for (const nlohmann::json& c : solved.at("cases")) {
-    add(c.at("solution"));
-    if (c.contains("recovered")) add(c.at("recovered"));
-  }
-  return out;
 }
 
 }  // namespace linkage

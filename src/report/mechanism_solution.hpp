@@ -71,10 +71,4 @@ enum class JsonKeys { mechanism, aliases };
 /// `linkage solve --format json`.
 [[nodiscard]] std::string mechanism_json(const MechanismSolution& s, JsonKeys keys = JsonKeys::mechanism);
 
-/// The values a text may quote, by the names of mechanism_json: the parameters,
-/// definitions and body inertias (I, I_1) at the parameter values; the initial coordinates
-/// and rates with the loops closed ("2.theta", "S.s_dot"); Case 3's unknowns at the start
-/// and what that case recovers ("2.theta_ddot", "B.force_x", "S.normal").
-[[nodiscard]] std::map<std::string, GiNaC::ex> quotable_values(const sym::System& system);
-
 }  // namespace linkage

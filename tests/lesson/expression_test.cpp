@@ -1,4 +1,5 @@
-// Answer expressions and {{...}} placeholders over the named quantities.
+// Answer expressions and {{...}} placeholders over a mechanism's quotable values (the
+// homework's: two-blocks.toml's by its [aliases]).
 #include "lesson/expression.hpp"
 
 #include <ginac/ginac.h>
@@ -9,19 +10,20 @@
 
 #include "core/error.hpp"
 #include "core/name_match.hpp"
+#include "lesson/homework_names.hpp"
 #include "lesson/text_template.hpp"
 #include "support/test_support.hpp"
 
 namespace linkage::lesson {
 namespace {
 
-double eval(const std::string& text, const Inputs& inputs = Inputs{}) {
-  return Expression::parse(text, "test").evaluate(evaluate_quantities(inputs));
+double eval(const std::string& text, const QuotableValues& names = homework_names()) {
+  return Expression::parse(text, "test", &names).evaluate();
 }
 
 std::string error_of(const std::string& text) {
   try {
-    (void)Expression::parse(text, "f.toml:3:10: answer");
+    (void)Expression::parse(text, "f.toml:3:10: answer", &homework_names());
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ExitCode::bad_input);
     return e.what();
@@ -58,30 +60,33 @@ TEST(Expression, QuantitiesMatchTheSpecExample) {
   EXPECT_NEAR(eval("x_com"), (1.0 + test::number(derived["x2"])) / 2, tol);
 }
 
-TEST(Expression, QuantitiesFollowTheInputs) {
-  Inputs inputs;
-  inputs.set(*find_input_key("m"), 0.2, "test");
-  EXPECT_NEAR(eval("I_zz_C", inputs), 0.2 * (0.01 + 0.09) / 12, 1e-15);
+TEST(Expression, QuantitiesFollowTheSettings) {
+  Mechanism m = load_mechanism("two-blocks");
+  for (Parameter& p : m.parameters)
+    if (p.name == "m") p.value = 0.2;
+  EXPECT_NEAR(eval("I_zz_C", QuotableValues(std::make_shared<const sym::System>(m))), 0.2 * (0.01 + 0.09) / 12, 1e-15);
 }
 
-TEST(Expression, SingleQuantity) {
-  ASSERT_NE(Expression::parse("I_zz_P", "t").single_quantity(), nullptr);
-  EXPECT_EQ(Expression::parse(" I_zz_P ", "t").single_quantity()->unit, "kg m^2");
-  EXPECT_EQ(Expression::parse("2 * I_zz_P", "t").single_quantity(), nullptr);
+// Numbers and pi need no mechanism; a name does.
+TEST(Expression, WithoutNamesReadsNumbersAndPi) {
+  EXPECT_DOUBLE_EQ(Expression::parse("2 * pi", "t").evaluate(), 2 * std::acos(-1.0));
+  EXPECT_THROW((void)Expression::parse("m", "t"), Error);
+}
+
+TEST(Expression, SingleName) {
+  EXPECT_EQ(Expression::parse(" I_zz_P ", "t", &homework_names()).single_name(), "I_zz_P");
+  EXPECT_EQ(homework_names().unit("I_zz_P"), "kg m^2");
+  EXPECT_FALSE(Expression::parse("2 * I_zz_P", "t", &homework_names()).single_name());
 }
 
 TEST(Expression, ErrorsNameThePlaceAndSuggest) {
-  EXPECT_EQ(
-      error_of("I_zzP"),
-      "f.toml:3:10: answer: unknown name 'I_zzP' at character 1 of 'I_zzP' (did you mean 'I_zz_P'?); "
-      "valid: " +
-          [] {
-            std::vector<std::string> names;  // alphabetical, pi (a constant) left out
-            for (const auto& q : kQuantities)
-              if (q.name != "pi") names.emplace_back(q.name);
-            std::sort(names.begin(), names.end());
-            return join_names(names);
-          }());
+  const std::string unknown = error_of("I_zzP");
+  EXPECT_EQ(unknown.rfind("f.toml:3:10: answer: unknown name 'I_zzP' at character 1 of 'I_zzP' (did you mean "
+                          "'I_zz_P'?); valid: ",
+                          0),
+            0U)
+      << unknown;
+  EXPECT_NE(unknown.find("I_zz_C"), std::string::npos) << unknown;
   EXPECT_NE(error_of("sinn(1)").find("unknown function 'sinn' at character 1 of 'sinn(1)' (did you mean 'sin'?)"),
             std::string::npos);
   EXPECT_NE(error_of("1 / (m - m)").find("division by zero at character 3 of '1 / (m - m)'"), std::string::npos);
@@ -96,27 +101,26 @@ TEST(Expression, ErrorsNameThePlaceAndSuggest) {
 }
 
 TEST(TextTemplate, ReplacesPlaceholdersWithValues) {
-  const QuantityValues v = evaluate_quantities(Inputs{});
-  EXPECT_EQ(TextTemplate::parse("D = {{D}} m", "t").render(v), "D = 0.11 m");
-  EXPECT_EQ(TextTemplate::parse("I = {{ I_zz_P : 5 }} kg m^2", "t").render(v), "I = 0.0020433 kg m^2");
-  EXPECT_EQ(TextTemplate::parse("{{1000*I_zz_C:3}} and {{m}}", "t").render(v), "0.833 and 0.1");
-  EXPECT_EQ(TextTemplate::parse("no placeholders", "t").render(v), "no placeholders");
+  const QuotableValues* v = &homework_names();
+  EXPECT_EQ(TextTemplate::parse("D = {{D}} m", "t", v).render(), "D = 0.11 m");
+  EXPECT_EQ(TextTemplate::parse("I = {{ I_zz_P : 5 }} kg m^2", "t", v).render(), "I = 0.0020433 kg m^2");
+  EXPECT_EQ(TextTemplate::parse("{{1000*I_zz_C:3}} and {{m}}", "t", v).render(), "0.833 and 0.1");
+  EXPECT_EQ(TextTemplate::parse("no placeholders", "t", v).render(), "no placeholders");
 }
 
 TEST(TextTemplate, RejectsUnclosedAndBadDigits) {
-  EXPECT_THROW((void)TextTemplate::parse("a {{D", "t"), Error);
-  EXPECT_THROW((void)TextTemplate::parse("a {{D:0}}", "t"), Error);
-  EXPECT_THROW((void)TextTemplate::parse("a {{D:x}}", "t"), Error);
-  EXPECT_THROW((void)TextTemplate::parse("a {{Dx}}", "t"), Error);
+  EXPECT_THROW((void)TextTemplate::parse("a {{D", "t", &homework_names()), Error);
+  EXPECT_THROW((void)TextTemplate::parse("a {{D:0}}", "t", &homework_names()), Error);
+  EXPECT_THROW((void)TextTemplate::parse("a {{D:x}}", "t", &homework_names()), Error);
+  EXPECT_THROW((void)TextTemplate::parse("a {{Dx}}", "t", &homework_names()), Error);
 }
 
 // A placeholder that is inf or nan where the text is shown is an error naming it, its line
 // and its column (in characters): the text never shows inf or nan.
 TEST(TextTemplate, RefusesValuesThatAreNotFinite) {
-  const QuantityValues v = evaluate_quantities(Inputs{});
   const auto error = [&](const std::string& text) {
     try {
-      TextTemplate::parse(text, "f:3:8: text").require_finite(v, "f:3:8: text");
+      TextTemplate::parse(text, "f:3:8: text", &homework_names()).require_finite("f:3:8: text");
     } catch (const Error& e) {
       EXPECT_EQ(e.code(), ExitCode::bad_input);
       return std::string(e.what());
@@ -136,17 +140,12 @@ TEST(TextTemplate, RefusesValuesThatAreNotFinite) {
 // Dotted names, with a numeric body too: "2.theta" is a name when known, "2.5" and
 // "2.e5" stay numbers, and an unknown one names the nearest known name.
 TEST(Expression, ReadsDottedMechanismNames) {
-  MechanismNames names;
-  names["2.theta"] = GiNaC::numeric(1, 2);
-  names["2.theta_ddot"] = GiNaC::numeric(-3);
-  names["B.force_x"] = GiNaC::numeric(4);
-  names["e"] = GiNaC::numeric(10);
-  auto value = [&](const std::string& text) {
-    return Expression::parse(text, "t", &names).evaluate(evaluate_quantities(Inputs{}));
-  };
-  EXPECT_DOUBLE_EQ(value("2.theta"), 0.5);
-  EXPECT_DOUBLE_EQ(value("2*2.theta_ddot + B.force_x"), -2.0);
-  EXPECT_DOUBLE_EQ(value("2.5 + 2.theta"), 3.0);
+  const QuotableValues& names = homework_names();
+  auto value = [&](const std::string& text) { return Expression::parse(text, "t", &names).evaluate(); };
+  const double theta2_ddot = eval("theta2_ddot"), force_x = eval("F_x");
+  EXPECT_DOUBLE_EQ(value("2.theta"), 0.2);
+  EXPECT_DOUBLE_EQ(value("2*2.theta_ddot + P.force_x"), 2 * theta2_ddot + force_x);
+  EXPECT_DOUBLE_EQ(value("2.5 + 2.theta"), 2.7);
   EXPECT_DOUBLE_EQ(value("2.e2"), 200.0);
   EXPECT_DOUBLE_EQ(value("2.5e1"), 25.0);
   std::string message;
@@ -158,12 +157,12 @@ TEST(Expression, ReadsDottedMechanismNames) {
   EXPECT_NE(message.find("f.toml:3:10: answer: unknown name '2.thet' at character 5"), std::string::npos) << message;
   EXPECT_NE(message.find("did you mean '2.theta'?"), std::string::npos) << message;
   try {
-    (void)Expression::parse("B.forcex", "f.toml:3:10: answer", &names);
+    (void)Expression::parse("P.forcex", "f.toml:3:10: answer", &names);
   } catch (const Error& e) {
     message = e.what();
   }
-  EXPECT_NE(message.find("unknown name 'B.forcex'"), std::string::npos) << message;
-  EXPECT_NE(message.find("did you mean 'B.force_x'?"), std::string::npos) << message;
+  EXPECT_NE(message.find("unknown name 'P.forcex'"), std::string::npos) << message;
+  EXPECT_NE(message.find("did you mean 'P.force_x'?"), std::string::npos) << message;
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "core/limits.hpp"
 #include "lesson/expression.hpp"
+#include "lesson/homework_names.hpp"
 #include "lesson/text_template.hpp"
 #include "support/test_support.hpp"
 
@@ -21,7 +22,7 @@ std::string error_of(const std::function<void()>& action) { return test::input_e
 
 const std::string kTooDeep = "nested more than " + std::to_string(kMaxNesting) + " levels deep";
 
-double eval(const std::string& text) { return Expression::parse(text, "t").evaluate(evaluate_quantities(Inputs{})); }
+double eval(const std::string& text) { return Expression::parse(text, "t").evaluate(); }
 
 std::string expression_error(const std::string& text) {
   return error_of([&] { (void)Expression::parse(text, "f.toml:5:10: step 1 (exercise): answer"); });
@@ -77,11 +78,11 @@ TEST(TemplateNesting, TextIsCheckedWhenParsedAndPlaceholdersKeepColumns) {
   const std::string text = "{{m}} kg and $" + repeat("{ ", 70) + "$";
   EXPECT_EQ(
       error_of([&] {
-        (void)TextTemplate::parse(text, origin);
+        (void)TextTemplate::parse(text, origin, &homework_names());
       }).rfind(origin + ": line 1, column " + std::to_string(15 + 2 * kMaxNesting) + ": the math is " + kTooDeep, 0),
       0u);
-  EXPECT_EQ(TextTemplate::parse("{{m}} kg and $" + repeat("{ ", kMaxNesting) + "$", origin)
-                .render(evaluate_quantities(Inputs{}))
+  EXPECT_EQ(TextTemplate::parse("{{m}} kg and $" + repeat("{ ", kMaxNesting) + "$", origin, &homework_names())
+                .render()
                 .substr(0, 12),
             "0.1 kg and $");
   const std::string deep_placeholder = "v = {{" + repeat("(", 100000) + "1}}";

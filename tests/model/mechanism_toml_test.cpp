@@ -231,6 +231,26 @@ TEST(MechanismToml, PictureGivesTheTitleTrailAndEnsembleCoordinate) {
   }
 }
 
+// [table]: the default table of an interface built on the file; two-blocks' is the
+// spec's (the homework's CSV columns through its [aliases]), in its order.
+TEST(MechanismToml, TableGivesTheInterfacesColumnsInOrder) {
+  const Mechanism m = load_mechanism("two-blocks");
+  std::string names;
+  for (const TableColumn& c : m.table) names += (names.empty() ? "" : ",") + m.aliased(c.name);
+  EXPECT_EQ(names,
+            "t,x1,y1,theta1,theta2,x1_dot,y1_dot,theta1_dot,theta2_dot,x2,y2,x2_dot,y2_dot,x1_ddot,y1_ddot,"
+            "theta1_ddot,theta2_ddot,F_x,F_y,energy,momentum_x,momentum_y,angular_momentum,"
+            "constraint_position_error,constraint_velocity_error");
+  EXPECT_TRUE(load_mechanism("four-bar").table.empty());
+  const std::string point_mass =
+      "[[body]]\nname = \"1\"\nshape = \"point\"\nmass = 1\n[initial]\n\"1\" = { x = 0, y = 0 }\n[table]\n";
+  const Mechanism two = read_mechanism(point_mass + "columns = [\"t\", \"1.x\"]\n", "m.toml");
+  ASSERT_EQ(two.table.size(), 2U);
+  EXPECT_EQ(two.table[1].name, "1.x");
+  EXPECT_EQ(two.table[1].pos.line, 8);
+  EXPECT_EQ(two.table[1].pos.column, 17);
+}
+
 TEST(MechanismToml, TwoBlocksIsTheSpecExample) {
   const Mechanism m = load_mechanism("two-blocks");
   const auto& example = test::spec_example();

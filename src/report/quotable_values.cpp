@@ -1,0 +1,78 @@
+#include "report/quotable_values.hpp"
+
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+#include "report/mechanism_solution.hpp"
+#include "symbolic/energy.hpp"
+
+namespace linkage {
+
+QuotableValues::QuotableValues(std::shared_ptr<const sym::System> system) : system_(std::move(system)) {
+  const sym::System& s = *system_;
+  for (const sym::SymbolInfo& info : s.table().all()) {
+    if (info.role == sym::Role::parameter)
+      add(info.symbol.get_name(), s.parameter_values().at(info.symbol), info.unit);
+    else if (info.role == sym::Role::definition || info.role == sym::Role::inertia)
+      add(info.symbol.get_name(), s.constants().at(info.symbol).subs(s.parameter_values()), info.unit);
+  }
+  // The rest by the names and values of `linkage solve --mechanism --format json`.
+  const MechanismSolution solved = work_out_mechanism(system_, case_ids({3}));
+  const nlohmann::json json = nlohmann::json::parse(mechanism_json(solved));
+  const nlohmann::json& units = json.at("units");
+  auto add_all = [&](const nlohmann::json& values) {
+    for (const auto& [key, value] : values.items())
+      if (value.is_number() && !entries_.contains(key))
+        add(key, GiNaC::numeric(value.get<double>()), units.contains(key) ? units.at(key).get<std::string>() : "");
+  };
+  add_all(json.at("state"));
+  add_all(json.at("derived"));
+  const nlohmann::json& case3 = json.at("cases").at(0);
+  add_all(case3.at("solution"));
+  add_all(case3.at("recovered"));
+  // The centre of mass at the start, as simulate's com columns.
+  const sym::Vec2 com = sym::centre_of_mass(s), com_dot = sym::centre_of_mass_velocity(s);
+  const std::pair<const char*, GiNaC::ex> centre[] = {
+      {"com.x", com.x}, {"com.y", com.y}, {"com.x_dot", com_dot.x}, {"com.y_dot", com_dot.y}};
+  for (const auto& [key, e] : centre)
+    add(key, GiNaC::numeric(sym::evaluate(e, solved.values)), std::string(key).ends_with("_dot") ? "m/s" : "m");
+  cases_[3] = {case3.at("condition_number").get<double>(), case3.at("residual").get<double>()};
+  for (int c = 1; c <= 3; ++c) {
+    add("cond" + std::to_string(c), c == 3 ? GiNaC::ex(cases_[3].first) : GiNaC::ex(0), "", c == 3 ? 0 : c);
+    add("residual" + std::to_string(c), c == 3 ? GiNaC::ex(cases_[3].second) : GiNaC::ex(0), "", c == 3 ? 0 : c);
+  }
+  const Mechanism& m = s.mechanism();
+  for (const auto& [key, entry] : entries_) {
+    keys_[key] = key;
+    keys_[m.aliased(key)] = key;
+  }
+  for (const auto& [name, key] : keys_) names_.push_back(name);
+}
+
+void QuotableValues::add(const std::string& key, const GiNaC::ex& value, const std::string& unit, int case_number) {
+  entries_.try_emplace(key, Entry{value, unit, case_number});  // the first of a name wins
+}
+
+bool QuotableValues::has(const std::string& name) const { return keys_.contains(name); }
+
+const QuotableValues::Entry& QuotableValues::entry(const std::string& name) const {
+  const auto key = keys_.find(name);
+  if (key == keys_.end()) throw std::logic_error("no quotable value '" + name + "'");
+  return entries_.at(key->second);
+}
+
+GiNaC::ex QuotableValues::value(const std::string& name) const {
+  const Entry& e = entry(name);
+  if (e.case_number == 0) return e.value;
+  auto [it, fresh] = cases_.try_emplace(e.case_number);
+  if (fresh) {
+    const MechanismSolution solved = work_out_mechanism(system_, {static_cast<CaseId>(e.case_number)});
+    const CaseNumbers& n = solved.cases.front().numbers;
+    it->second = {n.condition, n.residual};
+  }
+  return GiNaC::numeric(keys_.at(name).starts_with("cond") ? it->second.first : it->second.second);
+}
+
+std::string QuotableValues::unit(const std::string& name) const { return entry(name).unit; }
+
+}  // namespace linkage
