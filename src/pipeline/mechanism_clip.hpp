@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "integrate/simulation.hpp"
-#include "pipeline/clip.hpp"
+#include "pipeline/clip_result.hpp"
 #include "pipeline/trajectory_csv.hpp"
 #include "render/panel.hpp"
 #include "render/settings.hpp"
