@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-#include "integrate/simulation.hpp"
+#include "integrate/simulation_options.hpp"
 #include "pipeline/mechanism_clip.hpp"
 #include "pipeline/render_options.hpp"
 #include "render/settings.hpp"

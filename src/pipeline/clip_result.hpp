@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "encode/video_writer.hpp"
-#include "integrate/simulation.hpp"
+#include "integrate/simulation_options.hpp"
 #include "render/render_stats.hpp"
 #include "render/settings.hpp"
 

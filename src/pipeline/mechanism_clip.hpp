@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "integrate/simulation.hpp"
+#include "integrate/simulation_options.hpp"
 #include "pipeline/clip_result.hpp"
 #include "pipeline/trajectory_csv.hpp"
 #include "render/panel.hpp"
