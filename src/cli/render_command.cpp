@@ -66,14 +66,12 @@ RenderRequest resolve_request(const RenderFlags& f) {
   if (!f.caption.empty()) base.captions = {{0.0, f.caption}};
   const std::optional<fs::path> out = chosen_out(f);
   RenderTarget target;
-  target.mechanism = true;  // the homework too: two-blocks.toml, drawn as any mechanism
   target.still = out.has_value();
   try {
     if (out) target.still = is_still(output_kind(*out, "out"));
   } catch (const Error&) {  // a bad --out is the clip's checks' to report
   }
   target.spell = [](std::string_view name) { return flag_name(name); };
-  target.with_mechanism = "--mechanism";
   try {
     return resolve_render_options(given, target, base);
   } catch (const Error& e) {

@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-#include "integrate/simulation.hpp"
+#include "integrate/simulation_options.hpp"
 
 namespace linkage::cli {
 

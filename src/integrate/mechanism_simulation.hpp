@@ -10,7 +10,7 @@
 
 #include "evaluate/mechanism_dynamics.hpp"
 #include "integrate/mechanism_columns.hpp"
-#include "integrate/simulation.hpp"
+#include "integrate/simulation_options.hpp"
 #include "symbolic/system.hpp"
 
 namespace linkage {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "integrate/ode.hpp"
-#include "integrate/simulation.hpp"
+#include "integrate/simulation_options.hpp"
 
 namespace linkage {
 

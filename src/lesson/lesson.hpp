@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "integrate/mechanism_columns.hpp"
-#include "integrate/simulation.hpp"
+#include "integrate/simulation_options.hpp"
 #include "lesson/expression.hpp"
 #include "lesson/text_template.hpp"
 #include "model/inputs.hpp"

@@ -21,8 +21,8 @@
 #include "model/inputs_toml.hpp"
 #include "model/mechanism_toml.hpp"
 #include "model/toml_table.hpp"
-#include "pipeline/clip.hpp"
 #include "pipeline/clip_request.hpp"
+#include "pipeline/clip_result.hpp"
 #include "pipeline/panel_data.hpp"
 #include "pipeline/render_options.hpp"
 #include "pipeline/run_samples.hpp"
@@ -682,10 +682,8 @@ class Parser {
       base.duration = s.run.options.duration;
       base.captions = captions(r, s.kind, base.duration);
       RenderTarget target;
-      target.mechanism = true;
       target.still = is_still(s.kind);
       target.spell = [](std::string_view key) { return std::string(key); };
-      target.with_mechanism = "a mechanism: give mechanism = \"NAME\" here or at the top";
       RenderRequest& request = s.request = resolve_render_options(given, target, base);
       if (is_still(s.kind) && r.has("duration"))
         r.fail("duration", "'duration' applies to a clip; a still (" + s.out + ") shows the time 'at'");

@@ -15,6 +15,7 @@
 #include "encode/video_writer.hpp"
 #include "integrate/simulation.hpp"
 #include "model/inputs.hpp"
+#include "pipeline/clip_result.hpp"
 #include "pipeline/trajectory_csv.hpp"
 #include "render/clip_renderer.hpp"
 #include "render/settings.hpp"
@@ -47,10 +48,6 @@ struct HomeworkRun {
 [[nodiscard]] HomeworkRun homework_compared_run(const std::vector<std::string>& items, const Inputs& inputs,
                                                 const SimulationOptions& simulation, const std::string& origin);
 
-/// The largest ensemble spread, rad or m: far past any spread that shows chaos, and
-/// far below where the states would leave double precision (1e308 overflowed).
-inline constexpr double kMaxSpread = 1e3;
-
 /// The ensemble's other initial states: theta1 moved by spread k / (n - 1), k = 1 .. n - 1.
 [[nodiscard]] std::vector<State> homework_ensemble_states(const State& state, int n, double spread);
 
@@ -75,28 +72,6 @@ struct Clip {
   /// Checks that the parts fit together, before any work. Errors are typed, about the
   /// setting at fault ("out", "frames", "at", "size", ...), for the caller to phrase.
   void validate() const;
-};
-
-/// The encoder settings of a clip's video of `kind` (.mp4, .gif or .webm).
-[[nodiscard]] VideoOptions clip_video_options(const RenderSettings& settings, OutputKind kind = OutputKind::mp4);
-
-/// The HUD's second line, e.g. "Case 3 · dop853".
-[[nodiscard]] std::string run_label(const SimulationOptions& options);
-
-enum class ClipStage { simulate, draw };
-[[nodiscard]] std::string_view name(ClipStage stage);
-
-/// Called as work advances: `done` of `total` units of `stage` (samples, frames).
-using ClipProgress = std::function<void(ClipStage stage, long done, long total)>;
-
-struct ClipResult {
-  RenderStats stats;
-  double draw_waited_seconds = 0;     // the drawing thread waited for a free buffer
-  double encoder_idle_seconds = 0;    // the encoder thread waited for a drawn frame
-  std::int64_t video_bytes = 0;       // size of the MP4
-  std::string encoder;                // e.g. "libx264"
-  std::vector<std::string> notes;     // for the user (e.g. the encoder chosen instead)
-  std::vector<std::string> warnings;  // the simulation's numbers are meaningless (result_warning)
 };
 
 /// The other runs' block states at `times` (the ensemble's, then the compared run's),

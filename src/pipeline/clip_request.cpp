@@ -84,42 +84,6 @@ CompareKind compare_kind(const std::string& compare) {
   return CompareKind::settings;
 }
 
-Clip homework_clip(const RenderRequest& request, const Inputs& inputs, const SimulationOptions& simulation,
-                   const ClipPlan& plan) {
-  Clip clip;
-  clip.frames = plan.frames;
-  clip.out = plan.out;
-  clip.theme = load_theme(request.settings.theme, plan.assets, "theme");
-  clip.simulation = simulation;
-  clip.inputs = inputs;
-  clip.settings = shown_settings(
-      request.settings, [&] { return plan.equations(sym::System(homework_mechanism(inputs)), simulation.case_id); },
-      plan);
-  clip.ensemble = request.ensemble;
-  clip.spread = request.spread;
-  const std::string& compare = request.compare;
-  if (!compare.empty()) {
-    switch (kind_of(compare, plan)) {
-      case CompareKind::trajectory: {
-        HomeworkRun run{clip.inputs, clip.simulation, fs::path(compare).filename().string(), nullptr};
-        run.table = std::make_shared<const TrajectoryTable>(read_homework_trajectory(
-            compare, plan.compare_origin, clip_end(clip.settings, clip.is_still(), clip.frames.has_value())));
-        clip.compare = std::move(run);
-        break;
-      }
-      case CompareKind::mechanism:
-        throw Error::input(plan.compare_origin + " " + compare +
-                           ": another mechanism applies with --mechanism; the homework compares settings "
-                           "(theta1=0.1000001, L=0.4, integrator=rk4, case=1) or a trajectory FILE.csv");
-      case CompareKind::settings:
-        clip.compare = homework_compared_run(split_commas(compare), clip.inputs, clip.simulation, plan.compare_origin);
-        break;
-    }
-  }
-  clip.validate();
-  return clip;
-}
-
 CheckedMechanismClip mechanism_clip(const RenderRequest& request, const sym::System& system,
                                     const GiNaC::exmap& initial, const SimulationOptions& simulation,
                                     const ClipPlan& plan) {

@@ -1,8 +1,8 @@
 #pragma once
-// A picture's request (render_options) made into the checked clip, the homework's or a
-// mechanism's: the overlays (--ensemble, --spread, --compare), the trails, the equations
-// shown, the mechanism's title as the default, then every check before any work. One
-// assembly for `linkage render` and a lesson's render step.
+// A picture's request (render_options) made into a mechanism's checked clip: the overlays
+// (--ensemble, --spread, --compare), the trails, the equations shown, the mechanism's title
+// as the default, then every check before any work. One assembly for `linkage render` and
+// a lesson's render step.
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -10,9 +10,7 @@
 #include <string>
 #include <string_view>
 
-#include "integrate/simulation.hpp"
-#include "model/inputs.hpp"
-#include "pipeline/clip.hpp"
+#include "integrate/simulation_options.hpp"
 #include "pipeline/mechanism_clip.hpp"
 #include "pipeline/render_options.hpp"
 #include "render/settings.hpp"
@@ -45,13 +43,6 @@ struct ClipPlan {
 /// shipped name), or NAME=VALUE settings.
 enum class CompareKind { settings, trajectory, mechanism };
 [[nodiscard]] CompareKind compare_kind(const std::string& compare);
-
-/// The homework's clip of `inputs` simulated with `simulation`: the request's settings and
-/// overlays (compare: its input names theta1=0.1000001, L=0.4, integrator=NAME, case=N;
-/// FILE.csv needs t, x1, y1, theta1, theta2), the equations, validated. Error::input
-/// naming plan.compare_origin, or Error::invalid about the setting at fault.
-[[nodiscard]] Clip homework_clip(const RenderRequest& request, const Inputs& inputs,
-                                 const SimulationOptions& simulation, const ClipPlan& plan);
 
 /// A mechanism's clip and the compared run's own system, when compare gives it one (another
 /// mechanism, or settings of a parameter or coordinate); the clip points into it.

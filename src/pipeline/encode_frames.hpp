@@ -8,7 +8,7 @@
 #include <optional>
 
 #include "core/frame.hpp"
-#include "pipeline/clip.hpp"
+#include "pipeline/clip_result.hpp"
 #include "render/frame_layout.hpp"
 
 namespace linkage {

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "integrate/simulation.hpp"
-#include "pipeline/clip.hpp"
+#include "integrate/simulation_options.hpp"
+#include "pipeline/clip_result.hpp"
 #include "pipeline/trajectory_csv.hpp"
 #include "render/panel.hpp"
 #include "render/settings.hpp"

@@ -10,12 +10,10 @@
 #include "core/error.hpp"
 #include "core/number_format.hpp"
 #include "core/parse_text.hpp"
-#include "pipeline/clip.hpp"
-#include "pipeline/panel_data.hpp"
+#include "pipeline/clip_result.hpp"
 #include "render/theme.hpp"
 #include "scene/arrow_scale.hpp"
 #include "scene/elements.hpp"
-#include "scene/scene_builder.hpp"
 
 namespace linkage {
 
@@ -94,20 +92,16 @@ void title(RenderDraft& d, const std::string& text) {
 }
 
 void arrow_scale(RenderDraft& d, const std::string& text) {
-  const std::span<const std::string_view> kinds = d.target.mechanism
-                                                      ? std::span<const std::string_view>(kMechanismArrowKinds)
-                                                      : std::span<const std::string_view>(kArrowKindNames);
   d.request.settings.arrow_scale =
-      as_setting("arrow_scale", [&] { return parse_arrow_scale_request(text, "arrow_scale", kinds); });
-  if (d.target.mechanism)
-    for (auto& [kind, units] : d.request.settings.arrow_scale.fixed)
-      if (kind == "pin") kind = "joint";
+      as_setting("arrow_scale", [&] { return parse_arrow_scale_request(text, "arrow_scale", kMechanismArrowKinds); });
+  for (auto& [kind, units] : d.request.settings.arrow_scale.fixed)
+    if (kind == "pin") kind = "joint";
 }
 
 void panel(RenderDraft& d, const std::string& text) {
   d.request.settings.panel = split_commas(text);
   if (d.request.settings.panel.empty()) throw Error::invalid("panel", "the list is empty; give at least one quantity");
-  if (!d.target.mechanism) validate_homework_panel(d.request.settings.panel);  // a mechanism's: with its system
+  // Each name is checked against the mechanism's columns when the clip is (mechanism_clip).
 }
 
 void angles(RenderDraft& d, const std::string& text) {
@@ -115,7 +109,6 @@ void angles(RenderDraft& d, const std::string& text) {
 }
 
 void trail(RenderDraft& d, const std::string& text) {
-  if (!d.target.mechanism) throw Error::invalid("trail", "applies only with " + d.target.with_mechanism);
   for (std::string& item : split_commas(text)) d.request.trails.push_back(std::move(item));
 }
 

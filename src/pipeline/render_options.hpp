@@ -39,12 +39,9 @@ struct RenderOption {
 
 /// The picture the options are for, and how its reader spells things in messages.
 struct RenderTarget {
-  bool mechanism = false;  // a mechanism's picture; else the homework's
-  bool still = false;      // the output is one still
+  bool still = false;  // the output is one still
   /// How the reader names an option when a message points to another: "--view" or "view".
   std::function<std::string(std::string_view name)> spell;
-  /// How the reader asks for a mechanism: "--mechanism", "mechanism = \"NAME\" ...".
-  std::string with_mechanism;
 };
 
 /// The options resolved: the picture's settings and the overlays asked for.

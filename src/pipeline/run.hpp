@@ -11,7 +11,7 @@
 
 #include "core/angle_unit.hpp"
 #include "integrate/mechanism_columns.hpp"
-#include "integrate/simulation.hpp"
+#include "integrate/simulation_options.hpp"
 #include "model/inputs.hpp"
 #include "symbolic/system.hpp"
 

@@ -5,7 +5,7 @@
 
 #include "core/result_table.hpp"
 #include "integrate/mechanism_simulation.hpp"
-#include "integrate/simulation.hpp"
+#include "integrate/simulation_options.hpp"
 #include "pipeline/run.hpp"
 
 namespace linkage {

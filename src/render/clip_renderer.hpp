@@ -16,6 +16,7 @@
 #include "render/cairo_util.hpp"
 #include "render/camera.hpp"
 #include "render/overlays.hpp"
+#include "render/render_stats.hpp"
 #include "render/scene_painter.hpp"
 #include "render/settings.hpp"
 #include "render/style.hpp"
@@ -25,23 +26,6 @@
 #include "scene/scene_builder.hpp"
 
 namespace linkage {
-
-/// Counters and timings of a render, per stage. The renderer fills the drawing fields;
-/// whoever runs the simulation and the encoder fills the others.
-struct RenderStats {
-  std::int64_t frames_drawn = 0;
-  std::int64_t static_layer_draws = 0;  // background+grid+axes, title, legend, scale bar: once each per run
-  std::int64_t trail_points_drawn = 0;  // 0 when the trail is hidden
-  std::int64_t force_evaluations = 0;   // pin-force solves (Simulation::stats)
-  std::int64_t samples = 0;             // states taken from the simulation
-  bool encoder_opened = false;          // an MP4 encoder was opened
-  std::int64_t png_files_written = 0;
-  double simulate_seconds = 0;  // sampling the motion (integration, pin forces)
-  double draw_seconds = 0;      // Cairo drawing into frames
-  double convert_seconds = 0;   // colour conversion for the encoder (libswscale)
-  double encode_seconds = 0;    // video encoding and muxing
-  double png_seconds = 0;       // PNG compression and writing
-};
 
 /// Another run drawn as outlines over the main one: its block states at the motion's
 /// samples, its parameters, and its place (an ensemble member at `ramp`, or the compared run).

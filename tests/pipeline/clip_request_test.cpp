@@ -39,8 +39,15 @@ std::string error_of(const std::function<void()>& f) {
   return "";
 }
 
+/// The homework, as every command runs it: two-blocks.toml from its initial state.
+struct TwoBlocks {
+  sym::System system{load_mechanism("two-blocks")};
+  GiNaC::exmap initial = sym::checked_initial_state(system).state;
+};
+
 TEST(ClipRequest, HomeworkOverlaysAndEquations) {
   test::TempDir dir;
+  const TwoBlocks homework;
   RenderRequest request;
   request.settings.at = 2;
   request.settings.elements.show(Element::equations);
@@ -49,45 +56,58 @@ TEST(ClipRequest, HomeworkOverlaysAndEquations) {
   request.compare = "theta1=0.1000001,integrator=rk4";
   SimulationOptions simulation;
   simulation.case_id = 2;
-  const Clip clip = homework_clip(request, Inputs{}, simulation, plan_into(dir, "fan.png"));
+  const CheckedMechanismClip made =
+      mechanism_clip(request, homework.system, homework.initial, simulation, plan_into(dir, "fan.png"));
+  const MechanismClip& clip = made.clip;
   EXPECT_EQ(clip.ensemble, 4);
   EXPECT_DOUBLE_EQ(clip.spread, 0.1);
   ASSERT_TRUE(clip.compare.has_value());
   EXPECT_EQ(clip.compare->label, "theta1=0.1000001, integrator=rk4");
-  EXPECT_EQ(clip.compare->inputs.state().theta1, 0.1000001);
   EXPECT_EQ(clip.compare->simulation.integrator, IntegratorKind::rk4);
   EXPECT_EQ(clip.settings.equations.heading, "Case 2");
   EXPECT_TRUE(clip.is_still());
+  // theta1 (the alias of 1.theta) is the one initial value that differs, in the run's own system.
+  ASSERT_NE(made.compared, nullptr);
+  std::vector<double> differing;
+  for (const auto& [symbol, value] : clip.compare->initial) {
+    const std::string name = GiNaC::ex_to<GiNaC::symbol>(symbol).get_name();
+    for (const auto& [own, own_value] : homework.initial)
+      if (GiNaC::ex_to<GiNaC::symbol>(own).get_name() == name && !(own_value - value).evalf().is_zero())
+        differing.push_back(GiNaC::ex_to<GiNaC::numeric>(value.evalf()).to_double());
+  }
+  EXPECT_EQ(differing, std::vector<double>{0.1000001});
 }
 
 TEST(ClipRequest, ADraftLeavesOutEquationsThatDoNotFit) {
   test::TempDir dir;
+  const TwoBlocks homework;
   RenderRequest request;
   request.settings.width = 320;
   request.settings.height = 180;
   request.settings.elements.show(Element::equations);
   ClipPlan plan = plan_into(dir, "a.png");
-  EXPECT_NE(error_of([&] { (void)homework_clip(request, Inputs{}, SimulationOptions{}, plan); }), "");
+  EXPECT_NE(error_of([&] { (void)mechanism_clip(request, homework.system, homework.initial, {}, plan); }), "");
   plan.draft = true;
-  const Clip draft = homework_clip(request, Inputs{}, SimulationOptions{}, plan);
-  EXPECT_FALSE(draft.settings.elements.has(Element::equations));
+  const CheckedMechanismClip draft = mechanism_clip(request, homework.system, homework.initial, {}, plan);
+  EXPECT_FALSE(draft.clip.settings.elements.has(Element::equations));
 }
 
 TEST(ClipRequest, CompareNamesFilesOnlyWhereThePlanAllows) {
   test::TempDir dir;
+  const TwoBlocks homework;
   RenderRequest request;
   request.compare = "four-bar";
   ClipPlan plan = plan_into(dir, "a.png");
   EXPECT_NE(error_of([&] {
-              (void)homework_clip(request, Inputs{}, SimulationOptions{}, plan);
-            }).find("--compare four-bar: another mechanism applies with --mechanism"),
+              (void)mechanism_clip(request, homework.system, homework.initial, {}, plan);
+            }).find("a compared mechanism's bodies must be named as the clip's"),
             std::string::npos);
   plan.compare_files = false;
   plan.compare_origin = "compare";
-  EXPECT_NE(error_of([&] {
-              (void)homework_clip(request, Inputs{}, SimulationOptions{}, plan);
-            }).find("compare: 'four-bar' is not NAME=VALUE"),
-            std::string::npos);
+  const std::string as_settings =
+      error_of([&] { (void)mechanism_clip(request, homework.system, homework.initial, {}, plan); });
+  EXPECT_NE(as_settings.find("'four-bar'"), std::string::npos) << as_settings;
+  EXPECT_EQ(as_settings.find("bodies"), std::string::npos) << as_settings;
   EXPECT_EQ(compare_kind("run.csv"), CompareKind::trajectory);
   EXPECT_EQ(compare_kind("other.toml"), CompareKind::mechanism);
   EXPECT_EQ(compare_kind("L=0.4"), CompareKind::settings);
