@@ -131,7 +131,8 @@ MechanismGeometry mechanism_geometry(const sym::System& system) {
     shape.name = j.name;
     shape.type = j.type;
     // P.force_x aliased as F_x names the force F (the homework's "F on 1", "−F on 2").
-    const std::string& alias = m.aliased(j.name + ".force_x");
+    // A copy: aliased() returns its argument, here a temporary, when there is no alias.
+    const std::string alias = m.aliased(j.name + ".force_x");
     if (alias != j.name + ".force_x" && alias.size() > 2 && alias.ends_with("_x"))
       shape.force_name = alias.substr(0, alias.size() - 2);
     for (std::size_t k = 0; k < 2; ++k) shape.points[k] = point_of(system, j.bodies[k], j.points[k]);
