@@ -2,6 +2,7 @@
 
 #include <ginac/ginac.h>
 
+#include <cmath>
 #include <stdexcept>
 
 #include "core/error.hpp"
@@ -37,11 +38,17 @@ Expression Expression::parse(std::string_view text, const std::string& origin, c
   }
   // The values substituted, so a mechanism's exact parameters stay exact; where that meets
   // a pole (1/(x1 - 1) at x1 = 1), evaluated in doubles to inf, which the text refuses.
+  // Checked in doubles first: GiNaC's subs leaks what it built when it throws pole_error.
   GiNaC::ex value = read;
+  bool pole = false;
   try {
-    value = read.subs(at);
-  } catch (const std::exception&) {  // GiNaC's pole_error
+    pole = !std::isfinite(sym::evaluate(read, at));
+  } catch (const std::logic_error&) {  // a name without a value: subs leaves it
   }
+  if (!pole) try {
+      value = read.subs(at);
+    } catch (const std::exception&) {  // a pole that rounding hid from the doubles
+    }
   e.value_ = std::make_shared<const Value>(Value{value, at});
   return e;
 }
