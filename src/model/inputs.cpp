@@ -69,25 +69,6 @@ void Inputs::set(const InputKey& key, double value, std::string origin) {
   origins_[index_of(key)] = std::move(origin);
 }
 
-std::string likely_causes(const Inputs& inputs) {
-  std::string list;
-  for (const InputKey& key : kInputKeys) {
-    const double v = std::fabs(inputs.value(key));
-    if (v >= 1e50 || (v > 0 && v <= 1e-50)) {
-      list += list.empty() ? "" : ", ";
-      list += std::string(key.key) + " = " + format_roundtrip(inputs.value(key)) + " (" + inputs.origin(key) + ")";
-    }
-  }
-  if (!list.empty()) return list;
-  // Nothing extreme on its own: the combination overflowed; name what was given.
-  for (const InputKey& key : kInputKeys) {
-    if (inputs.origin(key) == "default") continue;
-    list += list.empty() ? "" : ", ";
-    list += std::string(key.key) + " = " + format_roundtrip(inputs.value(key)) + " (" + inputs.origin(key) + ")";
-  }
-  return list;
-}
-
 void Inputs::validate() const {
   auto fail = [&](const char* key, const std::string& rule) {
     const InputKey& k = *find_input_key(key);

@@ -45,11 +45,6 @@ inline constexpr std::array<InputKey, 13> kInputKeys{{
 /// The valid key closest to a misspelt one (edit distance), if any is close.
 [[nodiscard]] std::optional<std::string_view> closest_input_key(std::string_view key);
 
-class Inputs;
-/// For a value that overflowed: the inputs far outside physical sizes (|v| >= 1e50 or
-/// <= 1e-50), else every input given, each with its origin ("x1_dot = 1e+200 (--x1-dot)").
-[[nodiscard]] std::string likely_causes(const Inputs& inputs);
-
 /// Parameters and state together with where each value came from ("default", a flag,
 /// "run.toml:3:5"), so errors can name the source.
 class Inputs {
