@@ -1,7 +1,5 @@
 // The closed-form Case 3 accelerations against the one definition (case3.hpp solved by
 // the block solver), the spec's example, and its own long double evaluation.
-#include "formulations/case3_fast.hpp"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,6 +7,7 @@
 #include <random>
 
 #include "formulations/case3.hpp"
+#include "formulations/case3_fast.hpp"
 #include "formulations/linear_solve.hpp"
 #include "support/test_support.hpp"
 
