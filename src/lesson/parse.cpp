@@ -20,7 +20,6 @@
 #include "lesson/schema.hpp"
 #include "model/inputs_toml.hpp"
 #include "model/mechanism_toml.hpp"
-#include "model/toml_table.hpp"
 #include "pipeline/clip_request.hpp"
 #include "pipeline/clip_result.hpp"
 #include "pipeline/panel_data.hpp"
@@ -33,6 +32,7 @@
 #include "report/quotable_values.hpp"
 #include "symbolic/loop_closure.hpp"
 #include "symbolic/system.hpp"
+#include "toml/toml_table.hpp"
 
 namespace linkage::lesson {
 namespace {

@@ -38,10 +38,6 @@ std::optional<std::string_view> closest_input_key(std::string_view key) {
   return find_input_key(*close)->key;
 }
 
-std::string source_position(const std::string& file, long line, long column) {
-  return file + ":" + std::to_string(line) + ":" + std::to_string(column);
-}
-
 std::string canonical_text(const Inputs& inputs) {
   std::string out;
   for (const InputKey& key : kInputKeys) {

@@ -70,9 +70,6 @@ class Inputs {
   std::array<std::string, kInputKeys.size()> origins_;
 };
 
-/// "file:line:column" for a source position.
-[[nodiscard]] std::string source_position(const std::string& file, long line, long column);
-
 /// "L=0.3;w=0.1;...;theta2_dot=0.45" in round-trip form (for content hashes).
 [[nodiscard]] std::string canonical_text(const Inputs& inputs);
 

@@ -1,11 +1,11 @@
 #pragma once
 // What a --panel plots, by name: the homework's quantities (integrate/series.hpp, the
 // names a lesson's plot step takes) and any mechanism's trajectory columns
-// (integrate/mechanism_columns.hpp), each with its words and unit for the axes.
+// (columns/mechanism_columns.hpp), each with its words and unit for the axes.
 #include <string>
 #include <vector>
 
-#include "integrate/mechanism_columns.hpp"
+#include "columns/mechanism_columns.hpp"
 #include "integrate/simulation.hpp"
 #include "render/panel.hpp"
 #include "scene/motion.hpp"

@@ -6,10 +6,10 @@
 #include <string_view>
 #include <vector>
 
+#include "columns/mechanism_columns.hpp"
+#include "columns/trajectory_rows.hpp"
 #include "core/angle_unit.hpp"
-#include "integrate/mechanism_columns.hpp"
 #include "integrate/mechanism_simulation.hpp"
-#include "integrate/trajectory_rows.hpp"
 
 namespace linkage {
 

@@ -3,9 +3,9 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "columns/mechanism_columns.hpp"
 #include "core/error.hpp"
 #include "evaluate/case_evaluator.hpp"
-#include "integrate/mechanism_columns.hpp"
 #include "model/mechanism_toml.hpp"
 #include "report/json_layout.hpp"
 #include "report/mechanism_parts.hpp"
