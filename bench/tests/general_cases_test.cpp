@@ -20,19 +20,15 @@ namespace {
 
 using built::homework;
 
+/// built::homework()'s initial state in the closed form's coordinates: x1, y1, theta1,
+/// theta2 and their rates.
+State homework_initial_state() { return {1, 2, 0.1, 0.2, 0.15, 0.25, 0.35, 0.45}; }
+
 TEST(GeneralCases, HomeworkMatchesTheClosedForm) {
   const sym::System system(homework());
   const GiNaC::exmap values = state_values(system, system.initial_state(), 0);
-  Params p;
-  State s;
-  s.theta1 = 0.1;
-  s.theta2 = 0.2;
-  s.x1 = 1;
-  s.y1 = 2;
-  s.x1_dot = 0.15;
-  s.y1_dot = 0.25;
-  s.theta1_dot = 0.35;
-  s.theta2_dot = 0.45;
+  const Params p;
+  const State s = homework_initial_state();
   for (CaseId id : kAllCases) {
     const CaseSystem c = derive_case(system, id);
     const CaseNumbers n = solve_numbers(c, values);
@@ -76,15 +72,7 @@ TEST(MechanismDynamics, HomeworkMatchesTheClosedFormAtRandomStates) {
 TEST(Energy, HomeworkMatchesTheClosedForm) {
   const sym::System system(built::homework());
   const GiNaC::exmap values = state_values(system, system.initial_state(), 0);
-  State s;
-  s.x1 = 1;
-  s.y1 = 2;
-  s.theta1 = 0.1;
-  s.theta2 = 0.2;
-  s.x1_dot = 0.15;
-  s.y1_dot = 0.25;
-  s.theta1_dot = 0.35;
-  s.theta2_dot = 0.45;
+  const State s = homework_initial_state();
   const Params params;
   const BodyState bodies = body_state(params, s);
   const Invariants expected = invariants(params, bodies);
