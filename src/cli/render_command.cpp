@@ -142,8 +142,6 @@ ClipResult render_mechanism(const RenderFlags& f, const ClipProgress& progress) 
 }
 
 void run_render(const RenderFlags& flags) {
-  if (!flags.mechanism.chosen() && !flags.mechanism.settings.empty())
-    throw Error::input("--set: applies only with --mechanism; the homework takes its own flags");
   std::optional<Progress> progress;
   ClipStage shown = ClipStage::simulate;
   const ClipProgress report = [&](ClipStage stage, long done, long total) {

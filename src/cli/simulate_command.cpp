@@ -203,19 +203,20 @@ void run_simulate_mechanism(const SimulateOptions& o, const SimulationOptions& s
     deriving.finish();
     std::fprintf(stderr, "linkage: error: %s\n", describe(interrupted_error()).c_str());
   });
-  // The homework's flags are two-blocks.toml's interface: its [table] by default, each
-  // quantity named by its [aliases] in the table and in messages.
-  const bool homework = !o.mechanism.chosen();
+  // The default mechanism speaks its interface (the homework's): its [table] by default,
+  // each quantity named by its [aliases] in the table and in messages.
+  const bool default_interface = !o.mechanism.chosen();
   Mechanism mechanism = chosen_mechanism(o.mechanism, o.inputs);
-  mechanism.speaks_aliases = homework;
+  mechanism.speaks_aliases = default_interface;
   const MechanismSolution checked = work_out_mechanism(mechanism, {static_cast<CaseId>(s.case_id)});
   const sym::System& system = *checked.system;
   std::vector<MechanismColumn> all = mechanism_columns(system);
   for (MechanismColumn& c : all) c.name = system.mechanism().named(c.name);
   const bool asked = o.columns_option != nullptr && o.columns_option->count() > 0;
   const std::vector<MechanismColumn> columns =
-      homework ? named_columns(all, o.columns == "all" ? table_columns(system.mechanism()) : o.columns, "--columns")
-               : select_mechanism_columns(all, asked ? o.columns : "default", "--columns");
+      default_interface
+          ? named_columns(all, o.columns == "all" ? table_columns(system.mechanism()) : o.columns, "--columns")
+          : select_mechanism_columns(all, asked ? o.columns : "default", "--columns");
   MechanismSimulation simulation(system, checked.state, s, checked.cases.front().system);
   end_at_once.reset();
   deriving.finish();

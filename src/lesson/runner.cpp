@@ -186,7 +186,7 @@ void run_exercise(RunContext& c, const ExerciseStep& e) {
 
 void run_solve(RunContext& c, const Step& step, const SolveStep& s) {
   const MechanismSolution worked = work_out_mechanism(
-      step.mechanism ? step.mechanism->system->mechanism() : homework_mechanism(step.inputs), case_ids(s.cases));
+      step.mechanism ? step.mechanism->system->mechanism() : default_mechanism(step.inputs), case_ids(s.cases));
   ReportOptions options;
   options.width = c.options.width;
   options.text_style = c.options.style;

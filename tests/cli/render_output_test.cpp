@@ -160,6 +160,8 @@ TEST(RenderCli, TheHomeworkIsTwoBlocksDrawnAsAnyMechanism) {
   EXPECT_EQ(homework, drawn("mechanism.png",
                             {"--mechanism", "two-blocks", "--set", "L=0.4", "--set", "1.theta=0.3", "--case", "1"}));
   EXPECT_NE(homework, drawn("other.png", {"--mechanism", "two-blocks", "--case", "1"}));
+  // --set is a setting of the default mechanism as of any (simulate and solve take it too).
+  EXPECT_EQ(homework, drawn("set.png", {"--set", "L=0.4", "--theta1", "0.3", "--case", "1"}));
   for (const std::string flags : {"homework", "mechanism"}) {
     std::vector<std::string> args{"--duration", "0.2", "--frames", (dir / flags).string()};
     if (flags == "mechanism") args.insert(args.end(), {"--mechanism", "two-blocks"});
