@@ -1,12 +1,14 @@
 #include "scene/mechanism_scene.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
 
 #include "core/error.hpp"
 #include "symbolic/joints.hpp"
+#include "symbolic/spelling.hpp"
 
 namespace linkage {
 namespace {
@@ -65,6 +67,21 @@ double round_near(double value) {
   for (const double m : {2.0, 5.0, 10.0})
     if (std::fabs(std::log(m * decade / value)) < std::fabs(std::log(best / value))) best = m * decade;
   return best;
+}
+
+bool plain_name(const std::string& s) {
+  if (s.empty() || std::isalpha(static_cast<unsigned char>(s[0])) == 0) return false;
+  return std::all_of(s.begin(), s.end(),
+                     [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; });
+}
+
+// A weight as a lecturer writes it: the mass's and gravity's names side by side, "mg",
+// "m₁g" (digits lowered), "mc g" (a space after a longer name, so it does not read as
+// m c g); "weight of 1" when either is a number or an expression.
+std::string weight_name(const std::string& mass, const std::string& gravity, const std::string& body) {
+  if (!plain_name(mass) || !plain_name(gravity)) return "weight of " + body;
+  const bool one_letter = mass.size() == 1 || std::isalpha(static_cast<unsigned char>(mass[1])) == 0;
+  return sym::spell_name(mass).unicode + (one_letter ? "" : " ") + sym::spell_name(gravity).unicode;
 }
 
 std::string names_of(const std::vector<std::pair<std::string, Vec2>>& points) {
@@ -171,7 +188,9 @@ MechanismGeometry mechanism_geometry(const sym::System& system) {
     const bool spring =
         std::any_of(m.springs.begin(), m.springs.end(), [&](const Spring& s) { return s.name == load.source; });
     if (load.body < 0 || !(gravity || spring)) continue;
-    g.loads.push_back({load.body, gravity, gravity ? std::string() : load.source});
+    const Body& body = m.bodies[static_cast<std::size_t>(load.body)];
+    g.loads.push_back(
+        {load.body, gravity, gravity ? weight_name(body.mass.text, m.gravity->text, body.name) : load.source});
     for (const GiNaC::ex& e : {load.force.x, load.force.y, load.point.x, load.point.y}) outputs.push_back(numeric(e));
   }
   std::vector<GiNaC::symbol>& inputs = g.inputs;
@@ -583,7 +602,7 @@ void MechanismScene::add_load_arrows(std::size_t k, MechanismDrawList& out) cons
     if (scale_of(kind) <= 0 || force.norm() == 0) continue;
     const std::string& body = geometry_.bodies[static_cast<std::size_t>(load.body)].name;
     out.arrows.push_back(
-        force_arrow(kind, at, force, tags ? (load.gravity ? "m g on " + body : load.name + " on " + body) : ""));
+        force_arrow(kind, at, force, tags ? (load.gravity ? load.name : load.name + " on " + body) : ""));
     out.arrows.back().body = load.body;
   }
   const std::vector<double>& rates = motion_.samples[k].rates;

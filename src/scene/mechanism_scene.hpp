@@ -62,7 +62,7 @@ struct MechanismGeometry {
   struct LoadShape {
     int body = 0;
     bool gravity = false;  // else a spring
-    std::string name;      // the spring's
+    std::string name;      // the spring's, or the weight's label: "mg", "m₁g" (weight_name)
   };
   std::vector<BodyShape> bodies;
   std::vector<std::pair<std::string, Vec2>> ground;  // world

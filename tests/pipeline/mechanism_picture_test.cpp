@@ -57,7 +57,7 @@ TEST(MechanismPicture, GravityAndSpringArrowsCarryTheLoadsValues) {
     EXPECT_NEAR(gravity[0].force, 0.2 * 9.81, 1e-12);
     EXPECT_NEAR((gravity[0].tail - centre).norm(), 0, 1e-12);
     EXPECT_NEAR(gravity[0].vector.normalized().y(), -1, 1e-12);
-    EXPECT_EQ(gravity[0].label, "m g on 1");
+    EXPECT_EQ(gravity[0].label, "mg");
     const auto spring = arrows_of(list, Kind::spring);
     ASSERT_EQ(spring.size(), 1U);  // the ground's end is not drawn
     const double length = centre.norm(), rate = centre.dot(velocity) / length;
@@ -93,6 +93,25 @@ TEST(MechanismPicture, GravityAndSpringArrowsCarryTheLoadsValues) {
   fixed.fixed = {{"gravity", 2.0}};  // 1 cm = 2 N
   const MechanismScene two(mechanism_geometry(system), motion, {}, 2.0, fixed, shown);
   EXPECT_NEAR(two.scale_of(Kind::gravity), 0.01 / 2, 1e-15);
+}
+
+// Gravity's label as a lecturer writes the weight: the mass's and g's names side by side
+// ("mg" on each of the homework's blocks, as its clip wrote them), a mass's digits lowered
+// ("m₁g"), a longer name set apart ("ma g"), one arrow per body.
+TEST(MechanismPicture, GravityIsLabelledAsTheWeightIsWritten) {
+  const std::vector<std::pair<std::string, std::vector<std::string>>> expected{
+      {"two-blocks", {"mg", "mg"}}, {"double-pendulum", {"m₁g", "m₂g"}}, {"four-bar", {"ma g", "mb g", "mc g"}}};
+  for (const auto& [name, labels] : expected) {
+    SCOPED_TRACE(name);
+    const sym::System system(load_mechanism(name));
+    const MechanismMotion motion = motion_of(system, 0.2, 10);
+    const MechanismScene scene(mechanism_geometry(system), motion, {}, 2.0, {}, ElementSet::defaults());
+    MechanismDrawList list;
+    scene.frame(1, list);
+    std::vector<std::string> drawn;
+    for (const MechanismDrawList::Arrow& arrow : arrows_of(list, Kind::gravity)) drawn.push_back(arrow.label);
+    EXPECT_EQ(drawn, labels);
+  }
 }
 
 TEST(MechanismPicture, ShowAndHideDecideTheDrawList) {
