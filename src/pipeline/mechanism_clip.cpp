@@ -142,7 +142,8 @@ class MechanismFrames {
   MechanismFrames(const MechanismGeometry& geometry, const MechanismMotion& motion, const MechanismClip& clip,
                   const RenderSettings& settings, const std::vector<Overlay>& overlays, std::string ensemble_row)
       : scene_(geometry, motion, resolve_trails(geometry, clip.trails), kTrailSeconds, clip.settings.arrow_scale,
-               clip.settings.elements, clip.settings.free_body),
+               clip.settings.elements, clip.settings.free_body,
+               mechanism_camera_mode(settings, geometry) == CameraMode::follow),
         motion_(motion),
         settings_(settings),
         labels_{clip.settings.title, run_label(clip.simulation)},
@@ -181,7 +182,9 @@ class MechanismFrames {
     for (const MechanismDrawList::Line& line : list_.lines)
       if (line.kind == MechanismDrawList::Line::Kind::trail)
         stats_.trail_points_drawn += static_cast<std::int64_t>(line.points.size());
-    if (labels_.follows) list_.legend.note = "the view follows the centre of mass; the grid stays put";
+    if (labels_.follows || list_.legend.relative_velocity)  // naming G when the velocities are relative to it
+      list_.legend.note = list_.legend.relative_velocity ? "the view follows the centre of mass G; the grid stays put"
+                                                         : "the view follows the centre of mass; the grid stays put";
     add_ghosts(k);
     const Camera camera = follow_ ? camera_.centred_at(scene_.centroid(k)) : camera_;
     // The camera a frame earlier (the samples are a frame apart): the grid streaks from there.

@@ -20,6 +20,7 @@ constexpr const char* kAppliedName = "applied forces";
 constexpr const char* kGravityName = "gravity";
 constexpr const char* kSpringName = "spring forces";
 constexpr const char* kVelocityName = "velocity";
+constexpr const char* kRelativeVelocityName = "velocity relative to G";
 constexpr const char* kAccelerationName = "acceleration";
 constexpr const char* kCutNote = "cut short: its label gives the value";
 // On two lines, so the legend stays narrow enough to fit beside a body.
@@ -114,7 +115,7 @@ Vec2 legend_rows(cairo_t* cr, const DrawStyle& style, const Camera& camera, cons
   const text::Metrics m = text::metrics(cr, font);
   const double u = style.u, row = 1.7 * font.size;
   double names = 0;
-  const auto row_name = [](List::Arrow::Kind kind) {
+  const auto row_name = [&legend](List::Arrow::Kind kind) {
     switch (kind) {
       case List::Arrow::Kind::joint:
         return kJointName;
@@ -125,7 +126,7 @@ Vec2 legend_rows(cairo_t* cr, const DrawStyle& style, const Camera& camera, cons
       case List::Arrow::Kind::spring:
         return kSpringName;
       case List::Arrow::Kind::velocity:
-        return kVelocityName;
+        return legend.relative_velocity ? kRelativeVelocityName : kVelocityName;
       case List::Arrow::Kind::acceleration:
         return kAccelerationName;
     }

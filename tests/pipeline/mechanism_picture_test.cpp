@@ -114,6 +114,39 @@ TEST(MechanismPicture, GravityIsLabelledAsTheWeightIsWritten) {
   }
 }
 
+// Under a camera following the centre of mass G, velocities are drawn relative to G (the
+// homework's clip did so): each block's is its own minus G's, so the mass-weighted sum of
+// the arrows' velocities is zero, and the legend says "relative to G"; otherwise absolute.
+TEST(MechanismPicture, VelocitiesAreRelativeToTheFollowedCentreOfMass) {
+  const sym::System system(load_mechanism("unequal-blocks"));
+  const MechanismMotion motion = motion_of(system, 1.0, 10);
+  const MechanismGeometry geometry = mechanism_geometry(system);
+  ElementSet shown = ElementSet::defaults();
+  shown.show(Element::velocity);
+  for (const bool relative : {false, true}) {
+    SCOPED_TRACE(relative);
+    const MechanismScene scene(geometry, motion, {}, 2.0, {}, shown, false, relative);
+    MechanismDrawList list;
+    scene.frame(10, list);
+    const eval::MechanismSample& s = motion.samples[10];
+    const auto velocities = arrows_of(list, Kind::velocity);
+    ASSERT_EQ(velocities.size(), 2U);
+    const Vec2 com(s.com[2], s.com[3]);
+    ASSERT_GT(com.norm(), 5.0);  // falling for a second: G's velocity dwarfs the turning
+    Vec2 momentum = Vec2::Zero();
+    for (std::size_t i = 0; i < 2; ++i) {
+      const Vec2 v = Vec2(s.rates[3 * i], s.rates[3 * i + 1]) - (relative ? com : Vec2::Zero());
+      const Vec2 drawn = velocities[i].force * velocities[i].vector.normalized();
+      EXPECT_NEAR((drawn - v).norm(), 0, 1e-9 * (1 + v.norm()));
+      momentum += geometry.bodies[i].mass * drawn;
+    }
+    if (relative) {
+      EXPECT_NEAR(momentum.norm(), 0, 1e-9);
+    }
+    EXPECT_EQ(list.legend.relative_velocity, relative);
+  }
+}
+
 TEST(MechanismPicture, ShowAndHideDecideTheDrawList) {
   const sym::System system(load_mechanism("four-bar"));
   const MechanismMotion motion = motion_of(system, 0.5, 30);
