@@ -147,6 +147,30 @@ TEST(MechanismPicture, VelocitiesAreRelativeToTheFollowedCentreOfMass) {
   }
 }
 
+// A trajectory file with only the generalized coordinates (the homework's t, x1, y1,
+// theta1, theta2): every body's pose follows from them as the System states it, so block
+// 2's centre is the simulation's own, to round-off.
+TEST(MechanismPicture, ATrajectoryOfTheCoordinatesGivesEveryPose) {
+  const sym::System system(load_mechanism("two-blocks"));
+  const MechanismGeometry geometry = mechanism_geometry(system);
+  const MechanismMotion motion = motion_of(system, 1.0, 10);
+  TrajectoryTable table;
+  table.names = mechanism_coordinate_columns(system, &system.mechanism());
+  EXPECT_EQ(table.names, (std::vector<std::string>{"t", "x1", "y1", "theta1", "theta2"}));
+  table.values.assign(5, {});
+  for (std::size_t k = 0; k < motion.times.size(); ++k) {
+    const std::vector<double>& pose = motion.samples[k].pose;
+    const double row[] = {motion.times[k], pose[0], pose[1], pose[2], pose[5]};
+    for (std::size_t c = 0; c < 5; ++c) table.values[c].push_back(row[c]);
+  }
+  table.t = table.values[0];
+  const MechanismMotion read = table_motion(table, geometry, motion.times, &system.mechanism(), &system);
+  for (std::size_t k = 0; k < motion.times.size(); ++k)
+    for (std::size_t i = 0; i < 6; ++i)
+      EXPECT_NEAR(read.samples[k].pose[i], motion.samples[k].pose[i], 1e-12) << "sample " << k << ", " << i;
+  EXPECT_GT(std::fabs(motion.samples[10].pose[3] - motion.samples[10].pose[0]), 0.1);  // block 2 is elsewhere
+}
+
 TEST(MechanismPicture, ShowAndHideDecideTheDrawList) {
   const sym::System system(load_mechanism("four-bar"));
   const MechanismMotion motion = motion_of(system, 0.5, 30);
