@@ -244,8 +244,17 @@ bool along_one_line(const Segment& p, const Segment& q, double gap, double apart
   return std::min(dp.norm(), std::max(q0, q1)) - std::max(0.0, std::min(q0, q1)) > -apart;
 }
 
+// Whether q leaves p's tail in about p's direction (within 20 degrees): drawn there, one
+// would hide the other (a falling body's acceleration over its weight, both from G).
+bool from_one_tail(const Segment& p, const Segment& q) {
+  const Vec2 dp = p.b - p.a, dq = q.b - q.a;
+  if (dp.norm() < 1 || dq.norm() < 1 || (p.a - q.a).norm() >= 1) return false;
+  return dp.normalized().dot(dq.normalized()) > std::cos(20 * std::numbers::pi / 180);
+}
+
 // The arrows in pixels as drawn: one along another's line (a crank's force along its
-// coupler's) moved aside, so each can be told from the other.
+// coupler's) moved aside, so each can be told from the other; one from another's tail
+// the same way moved aside by a head's width and a shaft's, the two heads side by side.
 std::vector<Segment> arrows_apart(const DrawStyle& style, const Camera& camera, const List& list) {
   std::vector<Segment> arrows;
   for (const List::Arrow& arrow : list.arrows)
@@ -253,6 +262,15 @@ std::vector<Segment> arrows_apart(const DrawStyle& style, const Camera& camera, 
   const double gap = 2 * style.arrow_width();
   for (std::size_t j = 0; j < arrows.size(); ++j) {
     for (std::size_t i = 0; i < j; ++i) {
+      if (from_one_tail(arrows[i], arrows[j])) {
+        // To the side q's head leans to, so the heads are at least that far apart.
+        const Vec2 d = (arrows[i].b - arrows[i].a).normalized(), n(-d.y(), d.x());
+        const double side = (arrows[j].b - arrows[i].a).dot(n) >= 0 ? 1.0 : -1.0;
+        const Vec2 shift = side * (2 * style.arrow_head_half_width() + style.arrow_width()) * n;
+        arrows[j].a += shift;
+        arrows[j].b += shift;
+        continue;
+      }
       if (!along_one_line(arrows[i], arrows[j], gap, style.arrow_head_length())) continue;
       const Vec2 d = (arrows[i].b - arrows[i].a).normalized(), n(-d.y(), d.x());
       const double off = (0.5 * (arrows[j].a + arrows[j].b) - arrows[i].a).dot(n);

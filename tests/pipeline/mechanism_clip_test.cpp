@@ -430,6 +430,56 @@ std::string test_mechanism(const std::string& file) {
   return std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/" + file;
 }
 
+// --show acceleration in free fall: a ≈ g, so each block's acceleration arrow leaves its
+// centre of mass along its weight's. Laid out, the weight stays at G and the acceleration
+// sits beside it, the two heads apart (a head's width and a shaft's), each labelled.
+TEST(MechanismForces, AnAccelerationAlongTheWeightIsDrawnBesideIt) {
+  const Theme theme = load_theme("light", {}, "theme");
+  const sym::System system(load_mechanism("two-blocks"));
+  std::vector<double> times;
+  for (int k = 0; k <= 30; ++k) times.push_back(k / 30.0);
+  SimulationOptions options;
+  options.duration = 1;
+  ClipResult result;
+  const MechanismMotion motion = sample_mechanism_motion(system, sym::checked_initial_state(system).state, options,
+                                                         times, 1, result, {}, {}, nullptr, {}, true);
+  ElementSet shown = ElementSet::defaults();
+  shown.show(Element::acceleration);
+  const MechanismScene scene(mechanism_geometry(system), motion, {}, 2.0, {}, shown);
+  for (const auto& [width, height] : {std::pair{1280, 720}, std::pair{854, 480}}) {
+    const DrawStyle style = style_at(theme, width, height);
+    const cairo::SurfacePtr surface = cairo::image_surface(width, height);
+    const cairo::ContextPtr cr = cairo::context(surface.get());
+    MechanismDrawList list;
+    scene.frame(30, list);
+    const Camera camera = frame_camera(scene, 30, width, height);
+    const ForceLayout layout = layout_forces(cr.get(), style, camera, list, width, height, {});
+    std::size_t pairs = 0;
+    for (std::size_t g = 0; g < list.arrows.size(); ++g) {
+      if (list.arrows[g].kind != MechanismDrawList::Arrow::Kind::gravity) continue;
+      for (std::size_t a = 0; a < list.arrows.size(); ++a) {
+        const MechanismDrawList::Arrow& acceleration = list.arrows[a];
+        if (acceleration.kind != MechanismDrawList::Arrow::Kind::acceleration ||
+            acceleration.body != list.arrows[g].body || acceleration.label.find('.') != std::string::npos)
+          continue;
+        SCOPED_TRACE(acceleration.label);
+        ++pairs;
+        EXPECT_NEAR((acceleration.tail - list.arrows[g].tail).norm(), 0, 1e-12);  // both from G
+        EXPECT_NEAR((layout.arrows[g].a - camera.to_pixels(list.arrows[g].tail)).norm(), 0, 1e-9);
+        const double apart = 2 * style.arrow_head_half_width() + style.arrow_width() - 1e-9;
+        EXPECT_GE((layout.arrows[a].a - layout.arrows[g].a).norm(), apart);
+        EXPECT_GE((layout.arrows[a].b - layout.arrows[g].b).norm(), apart);
+        for (const std::size_t i : {g, a}) {
+          const auto labelled = std::find_if(layout.labels.begin(), layout.labels.end(),
+                                             [&](const PlacedLabel& l) { return l.text == list.arrows[i].label; });
+          EXPECT_NE(labelled, layout.labels.end()) << list.arrows[i].label;
+        }
+      }
+    }
+    EXPECT_EQ(pairs, 2U);
+  }
+}
+
 // Issue 23 D1: the legend over the triple pendulum's disc, a ladder sliding down a wall
 // and the four-bar's "A on 2"; D5: a legend stating "1 cm = ..." with no scale bar.
 TEST(MechanismForces, TheLegendAndItsScaleBarCoverNoBodyArrowOrJointAt720pAndAtQualityLow) {
