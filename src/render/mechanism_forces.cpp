@@ -22,6 +22,7 @@ constexpr const char* kSpringName = "spring forces";
 constexpr const char* kVelocityName = "velocity";
 constexpr const char* kRelativeVelocityName = "velocity relative to G";
 constexpr const char* kAccelerationName = "acceleration";
+constexpr const char* kComName = "centres of mass";
 constexpr const char* kCutNote = "cut short: its label gives the value";
 // On two lines, so the legend stays narrow enough to fit beside a body.
 constexpr const char* kStretchedNote = "dashed: too short to see at its scale,";
@@ -107,9 +108,11 @@ void paint_torque(cairo_t* cr, const DrawStyle& style, const Camera& camera, con
 
 // The legend's rows: per kind a reference arrow at the kind's scale, its value and the
 // scale per centimetre; then what a cut and a stretched arrow mean. Measures the
-// content's width and height; paints too when `paint`.
+// content's width and height; paints too when `paint`. Given the content's `width`, the
+// centres of mass's symbol goes at the right end of the first row with room for it (a
+// row of its own would leave a floating pair's legend no place clear of the bodies).
 Vec2 legend_rows(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List::Legend& legend, const Vec2& at,
-                 bool paint) {
+                 bool paint, double width = 0) {
   const Theme& theme = *style.theme;
   const text::Font font = legend_font(style);
   const text::Metrics m = text::metrics(cr, font);
@@ -139,6 +142,16 @@ Vec2 legend_rows(cairo_t* cr, const DrawStyle& style, const Camera& camera, cons
   for (const std::string& trail : legend.trails) names = std::max(names, text::width(cr, font, trail.c_str()));
   double y = at.y(), widest = 0;
   const auto baseline = [&] { return y + 0.5 * row + 0.5 * (m.ascent - m.descent); };
+  const double com_entry = 2 * style.com_radius() + 6 * u + text::width(cr, font, kComName);
+  bool com_placed = !legend.com || !(width > 0);
+  const auto com_beside = [&](double used) {
+    if (com_placed || used + 16 * u + com_entry > width) return;
+    com_placed = true;
+    const double x = at.x() + width - com_entry;
+    if (!paint) return;
+    paint_com_symbol(cr, style, {x + style.com_radius(), y + 0.5 * row}, style.com_radius());
+    text::draw(cr, font, x + 2 * style.com_radius() + 6 * u, baseline(), kComName, theme.text);
+  };
   const auto scale_row = [&](const char* name, const Rgba& colour, double metres, const std::string& value,
                              const std::string& scale) {
     const double arrow = metres * camera.scale(), x = at.x() + names + 8 * u;
@@ -148,7 +161,9 @@ Vec2 legend_rows(cairo_t* cr, const DrawStyle& style, const Camera& camera, cons
       paint_arrow(cr, style, {x, y + 0.5 * row}, {x + arrow, y + 0.5 * row}, colour);
       text::draw(cr, font, x + arrow + 6 * u, baseline(), note.c_str(), theme.text);
     }
-    widest = std::max(widest, names + 8 * u + arrow + 6 * u + text::width(cr, font, note.c_str()));
+    const double used = names + 8 * u + arrow + 6 * u + text::width(cr, font, note.c_str());
+    widest = std::max(widest, used);
+    com_beside(used);
     y += row;
   };
   const auto marked_row = [&](const char* note, const char* more, bool cut) {
@@ -191,7 +206,9 @@ Vec2 legend_rows(cairo_t* cr, const DrawStyle& style, const Camera& camera, cons
       cairo_stroke(cr);
       text::draw(cr, font, x + glyph + 6 * u, baseline(), seconds, theme.text_muted);
     }
-    widest = std::max(widest, names + 8 * u + glyph + 6 * u + text::width(cr, font, seconds));
+    const double used = names + 8 * u + glyph + 6 * u + text::width(cr, font, seconds);
+    widest = std::max(widest, used);
+    com_beside(used);
     y += row;
   }
   if (!legend.note.empty()) {
@@ -356,7 +373,7 @@ void paint_legend(cairo_t* cr, const DrawStyle& style, const Camera& camera, con
   set_colour(cr, theme.panel_edge);
   cairo_set_line_width(cr, std::max(1.0, std::round(0.6 * style.u)));
   cairo_stroke(cr);
-  legend_rows(cr, style, camera, legend, {rect.x + pad, rect.y + 0.6 * pad}, true);
+  legend_rows(cr, style, camera, legend, {rect.x + pad, rect.y + 0.6 * pad}, true, rect.width - 2 * pad);
 }
 
 }  // namespace

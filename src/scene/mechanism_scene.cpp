@@ -500,6 +500,7 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
       if (at == trail.local) legend_.trails.push_back("path of " + name);
   }
   legend_.trail_seconds = trail_seconds_;
+  legend_.com = shown_.has(Element::com) && !geometry_.bodies.empty();
   const double typical_torque = typical_of(largest_torque);
   if (typical_torque > 0 && std::isfinite(typical_torque)) torque_scale_ = kTypicalSweep / typical_torque;
 
@@ -809,6 +810,8 @@ void legend_for_frame(MechanismDrawList& out) {
   if (std::none_of(out.lines.begin(), out.lines.end(),
                    [](const auto& l) { return l.kind == MechanismDrawList::Line::Kind::trail; }))
     legend.trails.clear();
+  legend.com = legend.com && std::any_of(out.markers.begin(), out.markers.end(),
+                                         [](const auto& m) { return m.kind == MechanismDrawList::Marker::Kind::com; });
 }
 
 }  // namespace

@@ -161,6 +161,7 @@ struct MechanismDrawList {
     };
     std::vector<Row> rows;
     bool relative_velocity = false;   // the velocity row: relative to the centre of mass G
+    bool com = false;                 // the centres of mass's symbol, beside a row with room for it
     std::vector<std::string> trails;  // a row per traced point: "path of P"
     double trail_seconds = 0;         // "last 2 s"
     std::string note{};               // a closing line: "the view follows the centre of mass; ..."

@@ -480,6 +480,55 @@ TEST(MechanismForces, AnAccelerationAlongTheWeightIsDrawnBesideIt) {
   }
 }
 
+// The centres of mass's symbol in the legend (the homework clip's row): at the end of a
+// row with room for it, so the legend is no larger (a row of its own left the floating
+// pairs' legend no place clear of the bodies in the test below); painted inside the
+// legend in the homework's frames, and only when the symbols are drawn.
+TEST(MechanismForces, TheCentresOfMassSymbolSitsInTheLegendAtNoCostOfRoom) {
+  const Theme theme = load_theme("light", {}, "theme");
+  const sym::System system(load_mechanism("two-blocks"));
+  const MechanismMotion motion = clip_motion(system, 1.0, 30);
+  const MechanismGeometry geometry = mechanism_geometry(system);
+  const MechanismScene scene(geometry, motion, {geometry.resolve("1.P", "trail")}, 2.0, {});
+  const DrawStyle style = style_at(theme, 1280, 720);
+  MechanismDrawList list;
+  scene.frame(30, list);
+  EXPECT_TRUE(list.legend.com);
+  list.legend.note = "the view follows the centre of mass; the grid stays put";
+  const Camera camera = frame_camera(scene, 30, 1280, 720);
+  const auto legend_pixels = [&](bool com, Rect& legend) {
+    MechanismDrawList drawn = list;
+    drawn.legend.com = com;
+    const cairo::SurfacePtr surface = cairo::image_surface(1280, 720);
+    const cairo::ContextPtr cr = cairo::context(surface.get());
+    const ForceLayout layout = layout_forces(cr.get(), style, camera, drawn, 1280, 720, {});
+    paint_forces(cr.get(), style, camera, drawn, layout);
+    cairo_surface_flush(surface.get());
+    legend = layout.legend;
+    const unsigned char* data = cairo_image_surface_get_data(surface.get());
+    const int stride = cairo_image_surface_get_stride(surface.get());
+    std::vector<unsigned char> inside;
+    for (auto y = static_cast<int>(legend.y); y < static_cast<int>(legend.y + legend.height); ++y)
+      inside.insert(inside.end(), data + y * stride + 4 * static_cast<int>(legend.x),
+                    data + y * stride + 4 * static_cast<int>(legend.x + legend.width));
+    return inside;
+  };
+  Rect with, without;
+  const std::vector<unsigned char> shown = legend_pixels(true, with), hidden = legend_pixels(false, without);
+  ASSERT_FALSE(with.empty());
+  EXPECT_EQ(with.x, without.x);
+  EXPECT_EQ(with.y, without.y);
+  EXPECT_EQ(with.width, without.width);
+  EXPECT_EQ(with.height, without.height);
+  EXPECT_NE(shown, hidden);
+  // Hidden centres of mass: no symbol, no entry.
+  ElementSet bare = ElementSet::defaults();
+  bare.hide(Element::com);
+  const MechanismScene plain(geometry, motion, {}, 2.0, {}, bare);
+  plain.frame(30, list);
+  EXPECT_FALSE(list.legend.com);
+}
+
 // Issue 23 D1: the legend over the triple pendulum's disc, a ladder sliding down a wall
 // and the four-bar's "A on 2"; D5: a legend stating "1 cm = ..." with no scale bar.
 TEST(MechanismForces, TheLegendAndItsScaleBarCoverNoBodyArrowOrJointAt720pAndAtQualityLow) {
