@@ -142,7 +142,8 @@ class MechanismFrames {
   MechanismFrames(const MechanismGeometry& geometry, const MechanismMotion& motion, const MechanismClip& clip,
                   const RenderSettings& settings, const std::vector<Overlay>& overlays, std::string ensemble_row)
       : scene_(geometry, motion, resolve_trails(geometry, clip.trails), kTrailSeconds, clip.settings.arrow_scale,
-               clip.settings.elements, clip.settings.free_body),
+               clip.settings.elements, clip.settings.free_body,
+               mechanism_camera_mode(settings, geometry) == CameraMode::follow),
         motion_(motion),
         settings_(settings),
         labels_{clip.settings.title, run_label(clip.simulation)},
@@ -181,7 +182,9 @@ class MechanismFrames {
     for (const MechanismDrawList::Line& line : list_.lines)
       if (line.kind == MechanismDrawList::Line::Kind::trail)
         stats_.trail_points_drawn += static_cast<std::int64_t>(line.points.size());
-    if (labels_.follows) list_.legend.note = "the view follows the centre of mass; the grid stays put";
+    if (labels_.follows || list_.legend.relative_velocity)  // naming G when the velocities are relative to it
+      list_.legend.note = list_.legend.relative_velocity ? "the view follows the centre of mass G; the grid stays put"
+                                                         : "the view follows the centre of mass; the grid stays put";
     add_ghosts(k);
     const Camera camera = follow_ ? camera_.centred_at(scene_.centroid(k)) : camera_;
     // The camera a frame earlier (the samples are a frame apart): the grid streaks from there.
@@ -407,7 +410,7 @@ std::vector<MechanismMotion> overlay_motions(const sym::System& system, const Gi
   if (clip.compare && clip.compare->table) {
     const sym::System& other = clip.compare->system != nullptr ? *clip.compare->system : system;
     motions.push_back(table_motion(*clip.compare->table, mechanism_geometry(other), times,
-                                   clip.compare->aliased ? &other.mechanism() : nullptr));
+                                   clip.compare->aliased ? &other.mechanism() : nullptr, &other));
   } else if (clip.compare) {
     const sym::System& other = clip.compare->system != nullptr ? *clip.compare->system : system;
     SimulationOptions compared = clip.compare->simulation;
@@ -480,20 +483,55 @@ std::vector<std::string> mechanism_pose_columns(const MechanismGeometry& geometr
   return names;
 }
 
+std::vector<std::string> mechanism_coordinate_columns(const sym::System& system, const Mechanism* aliases) {
+  std::vector<std::string> names{"t"};
+  for (const sym::GeneralizedCoordinate& c : system.coordinates())
+    names.push_back(aliases != nullptr ? aliases->aliased(c.coordinate.key) : c.coordinate.key);
+  return names;
+}
+
 MechanismMotion table_motion(const TrajectoryTable& table, const MechanismGeometry& geometry,
-                             const std::vector<double>& times, const Mechanism* aliases) {
+                             const std::vector<double>& times, const Mechanism* aliases, const sym::System* system) {
+  const auto named = [&](const std::string& key) { return aliases != nullptr ? aliases->aliased(key) : key; };
   std::vector<std::optional<std::size_t>> columns;  // per body: x, y, theta
   for (const MechanismGeometry::BodyShape& body : geometry.bodies)
-    for (const char* part : {".x", ".y", ".theta"})
-      columns.push_back(table.find(aliases != nullptr ? aliases->aliased(body.name + part) : body.name + part));
+    for (const char* part : {".x", ".y", ".theta"}) columns.push_back(table.find(named(body.name + part)));
+  // A body's pose the file lacks follows from the generalized coordinates, as the System
+  // states it (the homework's x2, y2 from x1, y1, theta1, theta2 through the pin).
+  std::vector<std::pair<std::optional<std::size_t>, GiNaC::symbol>> coordinates;
+  std::vector<GiNaC::ex> computed(columns.size());
+  if (system != nullptr) {
+    for (const sym::GeneralizedCoordinate& c : system->coordinates())
+      coordinates.emplace_back(table.find(named(c.coordinate.key)), c.symbols.q);
+    for (std::size_t b = 0; b < system->bodies().size() && 3 * b + 2 < columns.size(); ++b) {
+      const sym::BodySystem& body = system->bodies()[b];
+      const sym::CoordinateSymbols* parts[] = {&body.x, &body.y, &body.theta};
+      for (std::size_t i = 0; i < 3; ++i)
+        computed[3 * b + i] = i == 2 && !body.rotates ? GiNaC::ex(0)
+                                                      : GiNaC::ex(parts[i]->q)
+                                                            .subs(system->to_generalized())
+                                                            .subs(system->constants())
+                                                            .subs(system->constants())
+                                                            .subs(system->parameter_values());
+    }
+  }
+  const bool from_coordinates =
+      system != nullptr && std::all_of(coordinates.begin(), coordinates.end(), [](const auto& c) { return c.first; });
   MechanismMotion motion;
   motion.times = times;
   motion.samples.resize(times.size());
+  GiNaC::exmap values;
   for (std::size_t k = 0; k < times.size(); ++k) {
     std::vector<double>& pose = motion.samples[k].pose;
     pose.assign(columns.size(), 0.0);
-    for (std::size_t i = 0; i < columns.size(); ++i)
-      if (columns[i]) pose[i] = table.at(*columns[i], times[k]);
+    for (const auto& [column, q] : coordinates)
+      if (column) values[q] = table.at(*column, times[k]);
+    for (std::size_t i = 0; i < columns.size(); ++i) {
+      if (columns[i])
+        pose[i] = table.at(*columns[i], times[k]);
+      else if (from_coordinates)
+        pose[i] = sym::evaluate(computed[i], values);
+    }
   }
   return motion;
 }

@@ -48,9 +48,15 @@ struct MechanismRun {
 /// its [aliases] give them (two-blocks: x1, y1, theta1, ...).
 [[nodiscard]] std::vector<std::string> mechanism_pose_columns(const MechanismGeometry& geometry,
                                                               const Mechanism* aliases = nullptr);
-/// The poses of `table` (with mechanism_pose_columns) at `times`, interpolated linearly.
+/// The columns from which a trajectory file's poses follow when it lacks some body's: t and
+/// the generalized coordinates of `system` (two-blocks: t, x1, y1, theta1, theta2 by its aliases).
+[[nodiscard]] std::vector<std::string> mechanism_coordinate_columns(const sym::System& system,
+                                                                    const Mechanism* aliases = nullptr);
+/// The poses of `table` at `times`, interpolated linearly: each body's from its own columns
+/// (mechanism_pose_columns), else, with `system`, from the generalized coordinates'.
 [[nodiscard]] MechanismMotion table_motion(const TrajectoryTable& table, const MechanismGeometry& geometry,
-                                           const std::vector<double>& times, const Mechanism* aliases = nullptr);
+                                           const std::vector<double>& times, const Mechanism* aliases = nullptr,
+                                           const sym::System* system = nullptr);
 
 struct MechanismClip {
   SimulationOptions simulation;
