@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "core/frame.hpp"
 #include "integrate/simulation_options.hpp"
 #include "pipeline/clip_result.hpp"
 #include "pipeline/trajectory_csv.hpp"
@@ -104,6 +105,31 @@ std::vector<GiNaC::exmap> ensemble_states(const sym::System& system, const GiNaC
 std::vector<MechanismMotion> overlay_motions(const sym::System& system, const GiNaC::exmap& initial,
                                              const MechanismClip& clip, const SimulationOptions& options,
                                              const std::vector<double>& times, ClipResult& result);
+
+/// A clip's motion drawn frame by frame as produce_mechanism_clip draws it (the motion and
+/// overlays sampled, each frame's MechanismScene painted by the mechanism painter inside
+/// the frame's layout), without encoding: produce_mechanism_clip encodes these frames,
+/// `linkage bench render` times them. Samples the motion when made (adding its figures to
+/// `result`); polls for Ctrl-C.
+class MechanismClipFrames {
+ public:
+  MechanismClipFrames(const sym::System& system, const GiNaC::exmap& initial, const MechanismClip& clip,
+                      ClipResult& result, const ClipProgress& progress = {});
+  ~MechanismClipFrames();
+  MechanismClipFrames(const MechanismClipFrames&) = delete;
+  MechanismClipFrames& operator=(const MechanismClipFrames&) = delete;
+
+  /// The clip's frame count (settings.frame_count()).
+  [[nodiscard]] long count() const;
+  /// Frame k (0 .. count() - 1) into `frame`, of the settings' size.
+  void draw(std::size_t k, Frame& frame);
+  /// The drawing's figures so far (frames, trail points, seconds).
+  [[nodiscard]] const RenderStats& stats() const;
+
+ private:
+  struct Drawn;
+  std::unique_ptr<Drawn> drawn_;
+};
 
 /// Produces every output of `clip` for `system` from `initial` (generalized coordinates
 /// and rates with every loop closed, sym::checked_initial_state). Polls for Ctrl-C.
