@@ -183,9 +183,9 @@ class MechanismFrames {
         stats_.trail_points_drawn += static_cast<std::int64_t>(line.points.size());
     if (labels_.follows) list_.legend.note = "the view follows the centre of mass; the grid stays put";
     add_ghosts(k);
-    const Camera camera = follow_ ? camera_.centred_at(scene_.centroid(k)) : camera_;
+    const Camera camera = camera_at(k);
     // The camera a frame earlier (the samples are a frame apart): the grid streaks from there.
-    const Camera earlier = follow_ && k > 0 ? camera_.centred_at(scene_.centroid(k - 1)) : camera;
+    const Camera earlier = k > 0 ? camera_at(k - 1) : camera;
     cairo_save(cr);
     paint_mechanism_frame(cr, style_, camera, list_, labels_, motion_.times[k], settings_.width, settings_.height,
                           &earlier);
@@ -197,6 +197,9 @@ class MechanismFrames {
 
   [[nodiscard]] const RenderStats& stats() const { return stats_; }
   [[nodiscard]] const MechanismDrawList& list() const { return list_; }
+  [[nodiscard]] Camera camera_at(std::size_t k) const {
+    return follow_ ? camera_.centred_at(scene_.centroid(k)) : camera_;
+  }
 
  private:
   void add_ghosts(std::size_t k) {
@@ -521,7 +524,9 @@ void MechanismClip::validate(const sym::System& system) const {
 struct MechanismClipFrames::Drawn {
   Drawn(const sym::System& system, const GiNaC::exmap& initial, const MechanismClip& clip, ClipResult& result,
         const ClipProgress& progress)
-      : times(frame_times(clip.settings)),
+      : width(clip.settings.width),
+        height(clip.settings.height),
+        times(frame_times(clip.settings)),
         motion(sample_mechanism_motion(system, initial, clip.simulation, times, trail_steps(clip), result, progress,
                                        clip.settings.panel, &panel, clip.derived,
                                        clip.settings.elements.has(Element::acceleration))),
@@ -540,6 +545,7 @@ struct MechanismClipFrames::Drawn {
     return panel;
   }
 
+  int width, height;
   std::vector<double> times;
   PanelData panel;  // filled by the sampling, then the layout's
   MechanismMotion motion;
@@ -557,10 +563,19 @@ MechanismClipFrames::~MechanismClipFrames() = default;
 long MechanismClipFrames::count() const { return static_cast<long>(drawn_->times.size()); }
 
 void MechanismClipFrames::draw(std::size_t k, Frame& frame) {
+  if (k >= drawn_->times.size())
+    throw Error::failure("frame " + std::to_string(k) + " of a clip of " + std::to_string(drawn_->times.size()));
+  if (frame.width != drawn_->width || frame.height != drawn_->height)
+    throw Error::failure("frame is " + std::to_string(frame.width) + "x" + std::to_string(frame.height) +
+                         ", expected " + std::to_string(drawn_->width) + "x" + std::to_string(drawn_->height));
   drawn_->layout.draw(k, drawn_->times[k], frame, [&](Frame& scene) { drawn_->frames.draw(k, scene); });
 }
 
 const RenderStats& MechanismClipFrames::stats() const { return drawn_->frames.stats(); }
+
+Camera MechanismClipFrames::camera(std::size_t k) const { return drawn_->frames.camera_at(k); }
+
+const MechanismDrawList& MechanismClipFrames::list() const { return drawn_->frames.list(); }
 
 ClipResult produce_mechanism_clip(const sym::System& system, const GiNaC::exmap& initial, const MechanismClip& clip,
                                   const ClipProgress& progress) {

@@ -1,7 +1,7 @@
 #pragma once
-// Any mechanism's clip: simulate (MechanismSimulation), build each frame's drawing
-// (scene/mechanism_scene), paint it (render/mechanism_painter) and encode it, as
-// produce_clip does for the homework: an MP4, a numbered PNG sequence, or one still
+// Any mechanism's clip, the homework's among them (two-blocks.toml): simulate
+// (MechanismSimulation), build each frame's drawing (scene/mechanism_scene), paint it
+// (render/mechanism_painter) and encode it: an MP4, a numbered PNG sequence, or one still
 // (PNG, SVG or PDF) at settings.at. Outputs appear whole or not at all. Uses settings' size, fps,
 // duration, speed, at, title, shown elements, arrow scales and camera (by default it fits
 // the whole motion of a grounded mechanism and follows a floating one's centroid).
@@ -125,6 +125,10 @@ class MechanismClipFrames {
   void draw(std::size_t k, Frame& frame);
   /// The drawing's figures so far (frames, trail points, seconds).
   [[nodiscard]] const RenderStats& stats() const;
+  /// The camera of frame k (a following one is centred on the centroid at k; the grid
+  /// streaks from where frame k - 1's put it), and the draw list of the frame drawn last.
+  [[nodiscard]] Camera camera(std::size_t k) const;
+  [[nodiscard]] const MechanismDrawList& list() const;
 
  private:
   struct Drawn;
