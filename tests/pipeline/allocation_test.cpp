@@ -6,29 +6,10 @@
 // labels and legend rows are built as strings and vectors). Enable once they reuse them.
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
-
 #include "model/mechanism_toml.hpp"
 #include "pipeline/mechanism_clip.hpp"
+#include "support/allocation_counter.hpp"
 #include "symbolic/loop_closure.hpp"
-
-namespace {
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-// GCC pairs the inlined replacement delete with the library's new and warns; the pair
-// here is matched (malloc/free), so the warning is a false positive in this file only.
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-
-[[gnu::noinline]] void* operator new(std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-[[gnu::noinline]] void operator delete(void* p) noexcept { std::free(p); }
-[[gnu::noinline]] void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace linkage {
 namespace {
@@ -52,9 +33,9 @@ TEST(Allocation, DISABLED_FramesAfterTheFirstAllocateNothing) {
   // Warm up: every buffer once, and the longest trail (the last frame) once.
   for (std::size_t k = 0; k < 3; ++k) frames.draw(k, buffers[k]);
   frames.draw(39, buffers[0]);
-  const long before = g_allocations.load();
+  const long before = test::allocations();
   for (std::size_t k = 3; k < 39; ++k) frames.draw(k, buffers[k % 3]);
-  EXPECT_EQ(g_allocations.load() - before, 0) << "over 36 frames";
+  EXPECT_EQ(test::allocations() - before, 0) << "over 36 frames";
 }
 
 }  // namespace
