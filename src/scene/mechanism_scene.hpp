@@ -2,8 +2,7 @@
 // What a frame of any mechanism shows, in world units (metres, y up): the numbers of the
 // mechanism's drawing (shapes, points, joints, springs, loads) taken once from the System,
 // and a sampled motion turned frame by frame into outlines, markers, coils, dashpots,
-// force and torque arrows and trails. The homework's own scene (scene_builder) is
-// separate and unchanged.
+// force and torque arrows and trails.
 #include <array>
 #include <string>
 #include <vector>
@@ -13,8 +12,8 @@
 #include "evaluate/program.hpp"
 #include "model/mechanism.hpp"
 #include "scene/arrow_scale.hpp"
+#include "scene/bounds.hpp"
 #include "scene/elements.hpp"
-#include "scene/motion.hpp"
 #include "symbolic/system.hpp"
 
 namespace linkage {
