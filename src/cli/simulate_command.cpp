@@ -22,8 +22,8 @@
 #include "cli/simulation_flags.hpp"
 #include "core/angle_unit.hpp"
 #include "core/atomic_file.hpp"
+#include "core/deriving.hpp"
 #include "core/error.hpp"
-#include "core/interrupt.hpp"
 #include "core/number_format.hpp"
 #include "core/progress.hpp"
 #include "integrate/mechanism_columns.hpp"
@@ -196,13 +196,7 @@ void run_simulate_mechanism(const SimulateOptions& o, const SimulationOptions& s
   const auto start = std::chrono::steady_clock::now();
   const TrajectoryRows samples = checked_rows(s.duration, every);
   // The initial state worked out as solve does, so a value that breaks it is named the same way.
-  // A long chain's derivation can take seconds: a line on a terminal says so.
-  ElapsedLine deriving("linkage: deriving the equations", o.quiet);
-  // No file is begun until the equations are: a signal meanwhile ends the run at once.
-  std::optional<EndAtOnceOnSignal> end_at_once(std::in_place, [&deriving] {
-    deriving.finish();
-    std::fprintf(stderr, "linkage: error: %s\n", describe(interrupted_error()).c_str());
-  });
+  Deriving deriving(o.quiet);
   // The default mechanism speaks its interface (the homework's): its [table] by default,
   // each quantity named by its [aliases] in the table and in messages.
   const bool default_interface = !o.mechanism.chosen();
@@ -218,8 +212,7 @@ void run_simulate_mechanism(const SimulateOptions& o, const SimulationOptions& s
           ? named_columns(all, o.columns == "all" ? table_columns(system.mechanism()) : o.columns, "--columns")
           : select_mechanism_columns(all, asked ? o.columns : "default", "--columns");
   MechanismSimulation simulation(system, checked.state, s, checked.cases.front().system);
-  end_at_once.reset();
-  deriving.finish();
+  deriving.done();
   if (!o.quiet) {
     note_ignored_simulation_flags(o.simulation, s, simulation.dynamics().constraint_rows());
     if (!checked.closure_note.empty()) std::fprintf(stderr, "linkage: note: %s\n", checked.closure_note.c_str());
