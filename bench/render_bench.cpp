@@ -15,7 +15,6 @@
 
 #include "bench/accuracy_report.hpp"
 #include "bench/frame_store.hpp"
-#include "bench/scenarios.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
@@ -23,8 +22,11 @@
 #include "encode/frame_pipeline.hpp"
 #include "encode/png_writer.hpp"
 #include "encode/video_writer.hpp"
+#include "model/mechanism_toml.hpp"
+#include "pipeline/clip_request.hpp"
 #include "render/cairo_util.hpp"
-#include "render/clip_renderer.hpp"
+#include "report/mechanism_solution.hpp"
+#include "report/mechanism_text.hpp"
 
 namespace linkage::bench {
 namespace fs = std::filesystem;
@@ -95,14 +97,16 @@ struct Tally {
 };
 
 /// One run of the render pipeline into `target`, timed wall to wall.
-MovieRow run_pipeline(Clip clip, const fs::path& target, Tally& tally) {
+MovieRow run_pipeline(const BenchClip& bench, const fs::path& target, Tally& tally) {
+  MechanismClip clip = bench.clip;
   clip.out = target;
   MovieRow row;
   const double cpu_start = process_cpu_seconds();
   const auto start = Clock::now();
-  const ClipResult result = produce_clip(clip, [&](ClipStage stage, long /*done*/, long /*total*/) {
-    if (stage == ClipStage::draw) tally.frame();
-  });
+  const ClipResult result =
+      produce_mechanism_clip(*bench.system, bench.initial, clip, [&](ClipStage stage, long /*done*/, long /*total*/) {
+        if (stage == ClipStage::draw) tally.frame();
+      });
   row.wall_seconds = seconds_since(start);
   row.cpu_seconds = process_cpu_seconds() - cpu_start;
   row.frames = result.stats.frames_drawn;
@@ -122,7 +126,7 @@ struct AloneRun {
 };
 
 /// The stored frames through the same pipeline and encoder settings.
-AloneRun run_encode_alone(const Clip& clip, const FrameStore& store, const fs::path& target, Tally& tally) {
+AloneRun run_encode_alone(const MechanismClip& clip, const FrameStore& store, const fs::path& target, Tally& tally) {
   AloneRun run;
   const double cpu_start = process_cpu_seconds();
   const auto start = Clock::now();
@@ -143,32 +147,35 @@ AloneRun run_encode_alone(const Clip& clip, const FrameStore& store, const fs::p
   return run;
 }
 
-/// Draws every frame of the clip once and keeps them.
-FrameStore predraw(const Clip& clip, Tally& tally) {
-  const Motion motion = simulate_clip(clip);
-  ClipRenderer renderer(clip.inputs.params(), motion, clip.settings, clip.theme, run_label(clip.simulation));
+/// Draws every frame of the clip once, as the pipeline draws them, and keeps them.
+FrameStore predraw(const BenchClip& bench, Tally& tally) {
+  const MechanismClip& clip = bench.clip;
+  ClipResult unused;
+  MechanismClipFrames frames(*bench.system, bench.initial, clip, unused);
   FrameStore store(clip.settings.width, clip.settings.height);
   Frame frame(clip.settings.width, clip.settings.height);
-  for (long k = 0; k < clip.settings.frame_count(); ++k) {
-    renderer.draw(static_cast<std::size_t>(k), frame);
+  for (long k = 0; k < frames.count(); ++k) {
+    frames.draw(static_cast<std::size_t>(k), frame);
     store.add(frame);
     tally.frame();
   }
   return store;
 }
 
-MovieRow measure_movie(const Clip& clip, const FrameStore& store, const ScratchFolder& scratch, int repeats,
+MovieRow measure_movie(const BenchClip& bench, const FrameStore& store, const ScratchFolder& scratch, int repeats,
                        Tally& tally) {
-  const std::string name = size_name(clip.settings.width, clip.settings.height);
+  const MechanismClip& clip = bench.clip;
+  const std::string name = bench.name + "_" + size_name(clip.settings.width, clip.settings.height);
   const fs::path piped = scratch / ("pipeline_" + name + ".mp4"), alone = scratch / ("alone_" + name + ".mp4");
   MovieRow best;
   AloneRun best_alone;
   for (int r = 0; r < repeats; ++r) {
-    const MovieRow row = run_pipeline(clip, piped, tally);
+    const MovieRow row = run_pipeline(bench, piped, tally);
     if (r == 0 || row.wall_seconds < best.wall_seconds) best = row;
     const AloneRun run = run_encode_alone(clip, store, alone, tally);
     if (r == 0 || run.wall_seconds < best_alone.wall_seconds) best_alone = run;
   }
+  best.clip = bench.name;
   best.width = clip.settings.width;
   best.height = clip.settings.height;
   best.fps = clip.settings.fps;
@@ -190,15 +197,16 @@ std::vector<std::size_t> spread(std::size_t available, std::size_t wanted) {
   return picks;
 }
 
-PngRow measure_png(const FrameStore& store, int width, int height, std::size_t frames, const ScratchFolder& scratch,
-                   Tally& tally) {
+PngRow measure_png(const FrameStore& store, const std::string& clip, int width, int height, std::size_t frames,
+                   const ScratchFolder& scratch, Tally& tally) {
   PngRow row;
+  row.clip = clip;
   row.width = width;
   row.height = height;
   const std::vector<std::size_t> picks = spread(store.size(), frames);
   row.frames = static_cast<long>(picks.size());
   Frame frame(width, height);
-  const std::string name = size_name(width, height);
+  const std::string name = clip + "_" + size_name(width, height);
 
   const fs::path ours_folder = scratch / ("ours_" + name);
   fs::create_directory(ours_folder);
@@ -250,28 +258,33 @@ PngRow measure_png(const FrameStore& store, int width, int height, std::size_t f
 
 }  // namespace
 
-Clip example_clip(int width, int height, int fps, double duration, const fs::path& assets) {
-  const Scenario& example = find_scenario("example", "scenario");
-  Clip clip;
-  for (const InputKey& key : kInputKeys)
-    clip.inputs.set(key, key.param != nullptr ? example.params.*key.param : example.initial.*key.state, "scenario");
-  clip.theme = load_theme("light", assets, "theme");
-  clip.settings.width = width;
-  clip.settings.height = height;
-  clip.settings.fps = fps;
-  clip.settings.duration = duration;
-  clip.simulation.duration = duration;
-  clip.settings.validate();
-  clip.simulation.validate();
-  return clip;
-}
-
-Motion simulate_clip(const Clip& clip) {
-  const long count = clip.settings.frame_count();
-  std::vector<double> times(static_cast<std::size_t>(count));
-  for (long k = 0; k < count; ++k) times[static_cast<std::size_t>(k)] = clip.settings.frame_time(k);
-  Simulation simulation(clip.inputs.params(), clip.inputs.state(), clip.simulation);
-  return sample_motion(simulation, times, clip.settings.elements.has(Element::pin_force));
+BenchClip default_clip(const std::string& mechanism, int width, int height, int fps, double duration,
+                       const fs::path& assets) {
+  BenchClip made;
+  made.name = mechanism;
+  RenderSettings base;
+  base.duration = duration;
+  RenderTarget target;
+  target.still = false;
+  const RenderRequest request = resolve_render_options(
+      {{"size", std::to_string(width) + "x" + std::to_string(height)}, {"fps", std::to_string(fps)}}, target, base);
+  SimulationOptions simulation;
+  simulation.duration = request.settings.duration;
+  simulation.validate();
+  // As the render command: the initial state worked out as solve does, the case derived once.
+  const MechanismSolution checked =
+      work_out_mechanism(load_mechanism(mechanism), {static_cast<CaseId>(simulation.case_id)});
+  made.system = checked.system;
+  made.initial = checked.state;
+  ClipPlan plan;
+  plan.out = "clip.mp4";  // checked as an MP4; each run sets its own
+  plan.assets = assets;
+  plan.equations = case_equations_as<EquationsText>;
+  CheckedMechanismClip clip = mechanism_clip(request, *made.system, made.initial, simulation, plan);
+  made.clip = std::move(clip.clip);
+  made.clip.out.reset();
+  made.clip.derived = checked.cases.front().system;
+  return made;
 }
 
 RenderBenchResult run_render_bench(const RenderBenchOptions& options) {
@@ -286,21 +299,23 @@ RenderBenchResult run_render_bench(const RenderBenchOptions& options) {
   result.repeats = options.quick ? 1 : 3;
   const std::size_t png_frames = options.quick ? 10 : 60;
 
-  std::vector<Clip> clips;
+  std::vector<BenchClip> clips;
   long total = 0;
-  for (const Size& s : sizes) {
-    clips.push_back(example_clip(s.width, s.height, fps, duration, options.assets));
-    const long count = clips.back().settings.frame_count();
-    total += count * (1 + 2 * result.repeats) + 2 * std::min<long>(count, static_cast<long>(png_frames));
-  }
+  for (const Size& s : sizes)
+    for (const char* name : kRenderClips) {
+      clips.push_back(default_clip(name, s.width, s.height, fps, duration, options.assets));
+      const long count = clips.back().clip.settings.frame_count();
+      total += count * (1 + 2 * result.repeats) + 2 * std::min<long>(count, static_cast<long>(png_frames));
+    }
   Progress progress("bench render", total, "frames", options.quiet);
   Tally tally{progress};
   {
     const ScratchFolder scratch(options.out);
-    for (const Clip& clip : clips) {
+    for (const BenchClip& clip : clips) {
       const FrameStore store = predraw(clip, tally);
       result.movies.push_back(measure_movie(clip, store, scratch, result.repeats, tally));
-      result.pngs.push_back(measure_png(store, clip.settings.width, clip.settings.height, png_frames, scratch, tally));
+      const RenderSettings& s = clip.clip.settings;
+      result.pngs.push_back(measure_png(store, clip.name, s.width, s.height, png_frames, scratch, tally));
     }
   }
   progress.finish();
@@ -313,15 +328,15 @@ double judged_ratio(const MovieRow& row, const RenderBenchResult& result) {
   return result.busy() ? row.cpu_ratio() : row.ratio();
 }
 
-const MovieRow* target_movie(const RenderBenchResult& result) {
+const MovieRow* target_movie(const RenderBenchResult& result, const std::string& clip) {
   for (const MovieRow& row : result.movies)
-    if (row.width == kTargetWidth && row.height == kTargetHeight) return &row;
+    if (row.clip == clip && row.width == kTargetWidth && row.height == kTargetHeight) return &row;
   return nullptr;
 }
 
-const PngRow* target_png(const RenderBenchResult& result) {
+const PngRow* target_png(const RenderBenchResult& result, const std::string& clip) {
   for (const PngRow& row : result.pngs)
-    if (row.width == kTargetWidth && row.height == kTargetHeight) return &row;
+    if (row.clip == clip && row.width == kTargetWidth && row.height == kTargetHeight) return &row;
   return nullptr;
 }
 

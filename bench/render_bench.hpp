@@ -1,41 +1,53 @@
 #pragma once
-// `linkage bench render`: rendering throughput, measured the way `linkage render` works.
+// `linkage bench render`: rendering throughput, measured the way `linkage render` works,
+// on the homework's default clip (what `linkage render --out clip.mp4` draws without
+// --mechanism: two-blocks.toml as shipped) and the four-bar's (`--mechanism four-bar`),
+// both through the one path (pipeline/mechanism_clip).
 //
-//   MP4, per size (854x480, 1280x720, 1920x1080; 10 s of motion at 30 fps):
-//     pipeline      produce_clip() (src/pipeline), the very call `linkage render --out
+//   MP4, per clip and size (854x480, 1280x720, 1920x1080; 10 s of motion at 30 fps):
+//     pipeline      produce_mechanism_clip(), the very call `linkage render --out
 //                   clip.mp4` makes: simulate, draw on this thread while the encoder
 //                   thread converts (libswscale) and encodes (libavcodec) through
 //                   FramePipeline; timed wall to wall, with the time of each stage;
-//     encode alone  the same frames, drawn beforehand and kept in memory (FrameStore),
-//                   fed through the same FramePipeline to the same encoder settings: the
-//                   encoder's own speed. The two MP4s must be byte-identical, which proves
-//                   the frames are the same.
-//     Target: pipeline / encode alone <= 1.2 at 1280x720.
-//   PNG sequence, per size, on evenly spaced frames of the same clip: our
+//     encode alone  the same frames, drawn beforehand (MechanismClipFrames, the pipeline's
+//                   own drawing) and kept in memory (FrameStore), fed through the same
+//                   FramePipeline to the same encoder settings: the encoder's own speed.
+//                   The two MP4s must be byte-identical, which proves the frames are the same.
+//     Target: pipeline / encode alone <= 1.2 at 1280x720, for each clip.
+//   PNG sequence, per clip and size, on evenly spaced frames of the same clip: our
 //     PngSequenceWriter (libspng, zlib level 1, two workers) against Cairo's
 //     cairo_surface_write_to_png, both writing 8-bit RGB. Target: ours >= 3x Cairo's
 //     frames per second at 1280x720.
 // The two modes of each comparison run alternately, `repeats` times; the fastest run of
 // each counts (another process can only slow a run down).
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "pipeline/clip.hpp"
-#include "scene/motion.hpp"
+#include "pipeline/mechanism_clip.hpp"
 
 namespace linkage::bench {
 
-/// The clip the render command makes by default (the spec's example, Case 3, DOP853, the
-/// default elements, camera and light theme) at a given size, rate and duration, with no
-/// output set. `assets` as for load_theme (empty: the palettes built into the binary).
-[[nodiscard]] Clip example_clip(int width, int height, int fps, double duration,
-                                const std::filesystem::path& assets = {});
-/// The clip's motion at every frame time, as the pipeline samples it.
-[[nodiscard]] Motion simulate_clip(const Clip& clip);
+/// The clips measured: the homework's (`linkage render` without --mechanism) and the four-bar's.
+inline constexpr std::array<const char*, 2> kRenderClips{"two-blocks", "four-bar"};
+
+/// A shipped mechanism's clip as `linkage render --mechanism NAME --out clip.mp4 --size
+/// WxH --fps N --duration S` makes it (the file's title and trails, the default elements
+/// and camera, the light theme; Case 3, DOP853), with no output set. `assets` as for
+/// load_theme (empty: the palettes built into the binary).
+struct BenchClip {
+  std::string name;
+  std::shared_ptr<const sym::System> system;
+  GiNaC::exmap initial;  // loops closed
+  MechanismClip clip;
+};
+[[nodiscard]] BenchClip default_clip(const std::string& mechanism, int width, int height, int fps, double duration,
+                                     const std::filesystem::path& assets = {});
 
 struct RenderBenchOptions {
   std::filesystem::path out{"bench-render"};
@@ -44,8 +56,9 @@ struct RenderBenchOptions {
   bool quiet = false;
 };
 
-/// One size of MP4: the pipeline's fastest run and encoding alone's fastest run.
+/// One clip and size of MP4: the pipeline's fastest run and encoding alone's fastest run.
 struct MovieRow {
+  std::string clip;  // the mechanism: "two-blocks", "four-bar"
   int width = 0, height = 0, fps = 0;
   long frames = 0;
   double wall_seconds = 0;      // the whole pipeline, simulation to finished file
@@ -70,8 +83,9 @@ struct MovieRow {
   [[nodiscard]] double cpu_ratio() const { return cpu_seconds / alone_cpu_seconds; }
 };
 
-/// One size of PNG sequence: ours against Cairo's writer on the same frames.
+/// One clip and size of PNG sequence: ours against Cairo's writer on the same frames.
 struct PngRow {
+  std::string clip;
   int width = 0, height = 0;
   long frames = 0;
   double ours_seconds = 0;           // wall, including unpacking the stored frames
@@ -112,9 +126,9 @@ void write_render_report(const RenderBenchOptions& options, RenderBenchResult& r
 /// about the CPU ratio; a busy machine's wall times mostly measure the other processes.
 [[nodiscard]] double judged_ratio(const MovieRow& row, const RenderBenchResult& result);
 
-/// The row measured at 1280x720, if any (--quick has none).
-[[nodiscard]] const MovieRow* target_movie(const RenderBenchResult& result);
-[[nodiscard]] const PngRow* target_png(const RenderBenchResult& result);
+/// The clip's row measured at 1280x720, if any (--quick has none).
+[[nodiscard]] const MovieRow* target_movie(const RenderBenchResult& result, const std::string& clip);
+[[nodiscard]] const PngRow* target_png(const RenderBenchResult& result, const std::string& clip);
 
 /// One-line findings for the terminal.
 [[nodiscard]] std::vector<std::string> render_bench_lines(const RenderBenchResult& result);

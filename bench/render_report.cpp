@@ -19,8 +19,8 @@ struct Verdict {
   std::string measured, met;
 };
 
-Verdict pipeline_verdict(const RenderBenchResult& result) {
-  const MovieRow* row = target_movie(result);
+Verdict pipeline_verdict(const RenderBenchResult& result, const std::string& clip) {
+  const MovieRow* row = target_movie(result, clip);
   if (row == nullptr) return {"not measured (--quick)", ""};
   const double ratio = judged_ratio(*row, result);
   const std::string measured =
@@ -28,33 +28,34 @@ Verdict pipeline_verdict(const RenderBenchResult& result) {
   return {measured, ratio <= kMaxPipelineRatio ? "met" : "MISSED"};
 }
 
-Verdict png_verdict(const RenderBenchResult& result) {
-  const PngRow* row = target_png(result);
+Verdict png_verdict(const RenderBenchResult& result, const std::string& clip) {
+  const PngRow* row = target_png(result, clip);
   if (row == nullptr) return {"not measured (--quick)", ""};
   return {sig(row->ratio()) + "x", row->ratio() >= kMinPngRatio ? "met" : "MISSED"};
 }
 
 std::string render_csv(const RenderBenchResult& result) {
   std::ostringstream out;
-  out << "format,width,height,fps,frames,wall_s,frames_per_s,simulate_s,draw_s,convert_s,encode_s,draw_waited_s,"
+  out << "format,clip,width,height,fps,frames,wall_s,frames_per_s,simulate_s,draw_s,convert_s,encode_s,draw_waited_s,"
          "encoder_idle_s,baseline,baseline_wall_s,baseline_frames_per_s,ratio,cpu_s,baseline_cpu_s,cpu_ratio,unpack_s,"
          "bytes_per_frame,baseline_bytes_per_frame,same_output,stored_bytes,repeats\n";
   for (const MovieRow& m : result.movies) {
     const double per_frame = static_cast<double>(m.bytes) / static_cast<double>(m.frames);
-    out << "mp4," << m.width << ',' << m.height << ',' << m.fps << ',' << m.frames << ',' << csv_number(m.wall_seconds)
-        << ',' << csv_number(m.fps_achieved()) << ',' << csv_number(m.simulate_seconds) << ','
-        << csv_number(m.draw_seconds) << ',' << csv_number(m.convert_seconds) << ',' << csv_number(m.encode_seconds)
-        << ',' << csv_number(m.draw_waited_seconds) << ',' << csv_number(m.encoder_idle_seconds) << ",encode alone,"
-        << csv_number(m.alone_wall_seconds) << ',' << csv_number(m.alone_fps()) << ',' << csv_number(m.ratio()) << ','
-        << csv_number(m.cpu_seconds) << ',' << csv_number(m.alone_cpu_seconds) << ',' << csv_number(m.cpu_ratio())
-        << ',' << csv_number(m.alone_unpack_seconds) << ',' << csv_number(per_frame) << ',' << csv_number(per_frame)
-        << ',' << (m.same_output ? "yes" : "no") << ',' << m.stored_bytes << ',' << result.repeats << '\n';
+    out << "mp4," << m.clip << ',' << m.width << ',' << m.height << ',' << m.fps << ',' << m.frames << ','
+        << csv_number(m.wall_seconds) << ',' << csv_number(m.fps_achieved()) << ',' << csv_number(m.simulate_seconds)
+        << ',' << csv_number(m.draw_seconds) << ',' << csv_number(m.convert_seconds) << ','
+        << csv_number(m.encode_seconds) << ',' << csv_number(m.draw_waited_seconds) << ','
+        << csv_number(m.encoder_idle_seconds) << ",encode alone," << csv_number(m.alone_wall_seconds) << ','
+        << csv_number(m.alone_fps()) << ',' << csv_number(m.ratio()) << ',' << csv_number(m.cpu_seconds) << ','
+        << csv_number(m.alone_cpu_seconds) << ',' << csv_number(m.cpu_ratio()) << ','
+        << csv_number(m.alone_unpack_seconds) << ',' << csv_number(per_frame) << ',' << csv_number(per_frame) << ','
+        << (m.same_output ? "yes" : "no") << ',' << m.stored_bytes << ',' << result.repeats << '\n';
   }
   for (const PngRow& p : result.pngs) {
     const auto frames = static_cast<double>(p.frames);
-    out << "png," << p.width << ',' << p.height << ",," << p.frames << ',' << csv_number(p.ours_seconds) << ','
-        << csv_number(p.ours_fps()) << ",,," << csv_number(p.ours_convert_seconds) << ','
-        << csv_number(p.ours_compress_seconds) << ",,,cairo," << csv_number(p.cairo_seconds) << ','
+    out << "png," << p.clip << ',' << p.width << ',' << p.height << ",," << p.frames << ','
+        << csv_number(p.ours_seconds) << ',' << csv_number(p.ours_fps()) << ",,," << csv_number(p.ours_convert_seconds)
+        << ',' << csv_number(p.ours_compress_seconds) << ",,,cairo," << csv_number(p.cairo_seconds) << ','
         << csv_number(p.cairo_fps()) << ',' << csv_number(p.ratio()) << ",,,," << csv_number(p.unpack_seconds) << ','
         << csv_number(static_cast<double>(p.ours_bytes) / frames) << ','
         << csv_number(static_cast<double>(p.cairo_bytes) / frames) << ",,,1\n";
@@ -63,7 +64,6 @@ std::string render_csv(const RenderBenchResult& result) {
 }
 
 std::string render_markdown(const RenderBenchOptions& options, const RenderBenchResult& result) {
-  const Verdict piped = pipeline_verdict(result), png = png_verdict(result);
   const MovieRow& first = result.movies.front();
   std::ostringstream md;
   md << "# Rendering throughput\n\n"
@@ -75,17 +75,27 @@ std::string render_markdown(const RenderBenchOptions& options, const RenderBench
                        : "")
      << ". Each comparison ran its two sides alternately " << result.repeats
      << (result.repeats == 1 ? " time" : " times") << "; the fastest run of each side counts.\n\n"
-     << "The clip is what `linkage render` makes by default: the spec's example, Case 3, DOP853 at rtol = atol = "
-        "1e-10, every default element, the follow camera and the light theme, "
+     << "The clips are what `linkage render` makes by default, through the one path every mechanism takes "
+        "(MechanismScene, the mechanism painter): *two-blocks* is the homework (`linkage render` without "
+        "--mechanism), *four-bar* is `--mechanism four-bar`; each with its file's title and trails, Case 3, DOP853 at "
+        "rtol = atol = 1e-10, every default element, the default camera and the light theme, "
      << sig(static_cast<double>(first.frames) / first.fps) << " s at " << first.fps << " fps. MP4: " << first.encoder
      << ", preset medium, tune animation, CRF 20, 2 encoder threads, yuv420p (the settings of `linkage render`).\n\n"
-     << "## Targets\n\n| target | measured | goal | |\n| --- | --- | --- | --- |\n"
-     << "| MP4 " << size_text(kTargetWidth, kTargetHeight)
-     << ": the whole pipeline's time / encoding the same frames alone | " << piped.measured
-     << " | <= " << sig(kMaxPipelineRatio) << "x | " << piped.met << " |\n"
-     << "| PNG sequence " << size_text(kTargetWidth, kTargetHeight) << ": our frames per second / Cairo's writer's | "
-     << png.measured << " | >= " << sig(kMinPngRatio) << "x | " << png.met << " |\n\n";
-  if (const MovieRow* row = target_movie(result); row != nullptr && result.busy())
+     << "## Targets\n\n| clip | target | measured | goal | |\n| --- | --- | --- | --- | --- |\n";
+  for (const char* clip : kRenderClips) {
+    const Verdict piped = pipeline_verdict(result, clip);
+    md << "| " << clip << " | MP4 " << size_text(kTargetWidth, kTargetHeight)
+       << ": the whole pipeline's time / encoding the same frames alone | " << piped.measured
+       << " | <= " << sig(kMaxPipelineRatio) << "x | " << piped.met << " |\n";
+  }
+  for (const char* clip : kRenderClips) {
+    const Verdict png = png_verdict(result, clip);
+    md << "| " << clip << " | PNG sequence " << size_text(kTargetWidth, kTargetHeight)
+       << ": our frames per second / Cairo's writer's | " << png.measured << " | >= " << sig(kMinPngRatio) << "x | "
+       << png.met << " |\n";
+  }
+  md << "\n";
+  if (const MovieRow* row = target_movie(result, kRenderClips.front()); row != nullptr && result.busy())
     md << "The machine was busy, so wall times measured the other processes as much as ours and the MP4 target is "
           "judged by the CPU ratio: the encoder waited for a drawing only "
        << sig(row->encoder_idle_seconds, 2) << " s of the pipeline's " << sig(row->wall_seconds)
@@ -103,21 +113,22 @@ std::string render_markdown(const RenderBenchOptions& options, const RenderBench
         "*same file* says the two MP4s are byte-identical. *CPU ratio* is the process CPU time (all threads) of the "
         "pipeline over that of encoding alone: the work drawing adds, which another process's load hardly "
         "changes, while the wall-time ratio moves with it.\n\n"
-     << "| size | frames | simulate (s) | draw (ms/frame) | convert (ms/frame) | encode (ms/frame) | drawing waited "
+     << "| clip | size | frames | simulate (s) | draw (ms/frame) | convert (ms/frame) | encode (ms/frame) | drawing "
+        "waited "
         "(s) "
         "| encoder idle (s) | pipeline (s) | pipeline fps | encode alone (s) | encode alone fps | ratio | CPU ratio | "
         "kB/frame | same file | stored MB |\n"
-     << "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- "
-        "| ---: |\n";
+     << "| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: "
+        "| --- | ---: |\n";
   for (const MovieRow& m : result.movies)
-    md << "| " << size_text(m.width, m.height) << " | " << m.frames << " | " << sig(m.simulate_seconds, 2) << " | "
-       << ms_per_frame(m.draw_seconds, m.frames) << " | " << ms_per_frame(m.convert_seconds, m.frames) << " | "
-       << ms_per_frame(m.encode_seconds, m.frames) << " | " << sig(m.draw_waited_seconds, 2) << " | "
-       << sig(m.encoder_idle_seconds, 2) << " | " << sig(m.wall_seconds) << " | " << sig(m.fps_achieved()) << " | "
-       << sig(m.alone_wall_seconds) << " | " << sig(m.alone_fps()) << " | " << sig(m.ratio()) << "x | "
-       << sig(m.cpu_ratio()) << "x | " << sig(static_cast<double>(m.bytes) / static_cast<double>(m.frames) / 1e3, 2)
-       << " | " << (m.same_output ? "yes" : "NO") << " | " << sig(static_cast<double>(m.stored_bytes) / 1e6, 2)
-       << " |\n";
+    md << "| " << m.clip << " | " << size_text(m.width, m.height) << " | " << m.frames << " | "
+       << sig(m.simulate_seconds, 2) << " | " << ms_per_frame(m.draw_seconds, m.frames) << " | "
+       << ms_per_frame(m.convert_seconds, m.frames) << " | " << ms_per_frame(m.encode_seconds, m.frames) << " | "
+       << sig(m.draw_waited_seconds, 2) << " | " << sig(m.encoder_idle_seconds, 2) << " | " << sig(m.wall_seconds)
+       << " | " << sig(m.fps_achieved()) << " | " << sig(m.alone_wall_seconds) << " | " << sig(m.alone_fps()) << " | "
+       << sig(m.ratio()) << "x | " << sig(m.cpu_ratio()) << "x | "
+       << sig(static_cast<double>(m.bytes) / static_cast<double>(m.frames) / 1e3, 2) << " | "
+       << (m.same_output ? "yes" : "NO") << " | " << sig(static_cast<double>(m.stored_bytes) / 1e6, 2) << " |\n";
 
   md << "\n## PNG sequence\n\n"
      << "Frames spread evenly over the same clip. Ours is `linkage render --frames`' writer: libspng at zlib level 1 "
@@ -125,13 +136,14 @@ std::string render_markdown(const RenderBenchOptions& options, const RenderBench
         "Cairo's is `cairo_surface_write_to_png` on an RGB24 surface of the same pixels, so both write 8-bit RGB. "
         "Both write each file under a temporary name and rename it. Both wall times include unpacking the stored "
         "frames (the last column), which makes the ratio a little smaller than the writers' own.\n\n"
-     << "| size | frames | ours (s) | ours fps | ours kB/frame | Cairo (s) | Cairo fps | Cairo kB/frame | ratio | "
+     << "| clip | size | frames | ours (s) | ours fps | ours kB/frame | Cairo (s) | Cairo fps | Cairo kB/frame | ratio "
+        "| "
         "unpacking (ms/frame) |\n"
-     << "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+     << "| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
   for (const PngRow& p : result.pngs) {
     const auto frames = static_cast<double>(p.frames);
-    md << "| " << size_text(p.width, p.height) << " | " << p.frames << " | " << sig(p.ours_seconds) << " | "
-       << sig(p.ours_fps()) << " | " << sig(static_cast<double>(p.ours_bytes) / frames / 1e3) << " | "
+    md << "| " << p.clip << " | " << size_text(p.width, p.height) << " | " << p.frames << " | " << sig(p.ours_seconds)
+       << " | " << sig(p.ours_fps()) << " | " << sig(static_cast<double>(p.ours_bytes) / frames / 1e3) << " | "
        << sig(p.cairo_seconds) << " | " << sig(p.cairo_fps()) << " | "
        << sig(static_cast<double>(p.cairo_bytes) / frames / 1e3) << " | " << sig(p.ratio()) << "x | "
        << ms_per_frame(p.unpack_seconds, p.frames) << " |\n";
@@ -151,20 +163,27 @@ void write_render_report(const RenderBenchOptions& options, RenderBenchResult& r
 std::vector<std::string> render_bench_lines(const RenderBenchResult& result) {
   std::vector<std::string> lines;
   for (const MovieRow& m : result.movies)
-    lines.push_back("MP4 " + size_text(m.width, m.height) + ": " + std::to_string(m.frames) + " frames, pipeline " +
-                    sig(m.fps_achieved()) + " fps (draw " + ms_per_frame(m.draw_seconds, m.frames) + ", convert " +
-                    ms_per_frame(m.convert_seconds, m.frames) + ", encode " + ms_per_frame(m.encode_seconds, m.frames) +
-                    " ms/frame), encode alone " + sig(m.alone_fps()) + " fps: ratio " + sig(m.ratio()) + " (CPU " +
-                    sig(m.cpu_ratio()) + ")" + (m.same_output ? "" : " (the two files differ!)"));
+    lines.push_back("MP4 " + m.clip + " " + size_text(m.width, m.height) + ": " + std::to_string(m.frames) +
+                    " frames, pipeline " + sig(m.fps_achieved()) + " fps (draw " +
+                    ms_per_frame(m.draw_seconds, m.frames) + ", convert " + ms_per_frame(m.convert_seconds, m.frames) +
+                    ", encode " + ms_per_frame(m.encode_seconds, m.frames) + " ms/frame), encode alone " +
+                    sig(m.alone_fps()) + " fps: ratio " + sig(m.ratio()) + " (CPU " + sig(m.cpu_ratio()) + ")" +
+                    (m.same_output ? "" : " (the two files differ!)"));
   for (const PngRow& p : result.pngs)
-    lines.push_back("PNG " + size_text(p.width, p.height) + ": ours " + sig(p.ours_fps()) + " fps, Cairo's " +
-                    sig(p.cairo_fps()) + " fps: " + sig(p.ratio()) + "x");
-  const Verdict piped = pipeline_verdict(result), png = png_verdict(result);
-  lines.push_back("target: MP4 " + size_text(kTargetWidth, kTargetHeight) + " pipeline / encode alone " +
-                  piped.measured + " (goal <= " + sig(kMaxPipelineRatio) + "x)" +
-                  (piped.met.empty() ? "" : " " + piped.met));
-  lines.push_back("target: PNG " + size_text(kTargetWidth, kTargetHeight) + " ours / Cairo " + png.measured +
-                  " (goal >= " + sig(kMinPngRatio) + "x)" + (png.met.empty() ? "" : " " + png.met));
+    lines.push_back("PNG " + p.clip + " " + size_text(p.width, p.height) + ": ours " + sig(p.ours_fps()) +
+                    " fps, Cairo's " + sig(p.cairo_fps()) + " fps: " + sig(p.ratio()) + "x");
+  for (const char* clip : kRenderClips) {
+    const Verdict piped = pipeline_verdict(result, clip);
+    lines.push_back("target: MP4 " + std::string(clip) + " " + size_text(kTargetWidth, kTargetHeight) +
+                    " pipeline / encode alone " + piped.measured + " (goal <= " + sig(kMaxPipelineRatio) + "x)" +
+                    (piped.met.empty() ? "" : " " + piped.met));
+  }
+  for (const char* clip : kRenderClips) {
+    const Verdict png = png_verdict(result, clip);
+    lines.push_back("target: PNG " + std::string(clip) + " " + size_text(kTargetWidth, kTargetHeight) +
+                    " ours / Cairo " + png.measured + " (goal >= " + sig(kMinPngRatio) + "x)" +
+                    (png.met.empty() ? "" : " " + png.met));
+  }
   return lines;
 }
 

@@ -1,4 +1,5 @@
-// One frame drawn: ClipRenderer on the clip `linkage render` makes by default, 1280x720,
+// One frame drawn: the pipeline's own drawing (MechanismClipFrames) of the clip `linkage
+// render` makes by default for the homework (two-blocks) and for the four-bar, 1280x720,
 // cycling through its 300 frames. One frame encoded: H.264 (the tool's MP4 settings)
 // and PNG (the tool's fast setting), 1280x720, on a synthetic frame that changes every
 // iteration (a moving gradient with an edge), so the encoder does real work.
@@ -12,7 +13,6 @@
 #include "core/frame.hpp"
 #include "encode/png_writer.hpp"
 #include "encode/video_writer.hpp"
-#include "render/clip_renderer.hpp"
 
 namespace linkage::bench {
 namespace {
@@ -34,19 +34,24 @@ std::filesystem::path scratch(const std::string& name) {
   return std::filesystem::temp_directory_path() / ("linkage-micro-" + std::to_string(::getpid()) + "-" + name);
 }
 
-void BM_DrawFrame(benchmark::State& state) {
-  const Clip clip = example_clip(1280, 720, 30, 10.0);
-  const Motion motion = simulate_clip(clip);
-  ClipRenderer renderer(clip.inputs.params(), motion, clip.settings, clip.theme, run_label(clip.simulation));
-  Frame frame(clip.settings.width, clip.settings.height);
+void BM_DrawFrame(benchmark::State& state, const char* mechanism) {
+  const BenchClip clip = default_clip(mechanism, 1280, 720, 30, 10.0);
+  ClipResult unused;
+  MechanismClipFrames frames(*clip.system, clip.initial, clip.clip, unused);
+  Frame frame(clip.clip.settings.width, clip.clip.settings.height);
   std::size_t k = 0;
   for (auto _ : state) {
-    renderer.draw(k, frame);
+    frames.draw(k, frame);
     benchmark::DoNotOptimize(frame.pixels.data());
-    k = (k + 1) % motion.samples.size();
+    k = (k + 1) % static_cast<std::size_t>(frames.count());
   }
 }
-BENCHMARK(BM_DrawFrame)->Name("render/frame_1280x720")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_DrawFrame, two_blocks, "two-blocks")
+    ->Name("render/frame_1280x720/two-blocks")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_DrawFrame, four_bar, "four-bar")
+    ->Name("render/frame_1280x720/four-bar")
+    ->Unit(benchmark::kMillisecond);
 
 void BM_EncodeH264Frame(benchmark::State& state) {
   VideoOptions options;  // 1280x720, 30 fps, the tool's defaults

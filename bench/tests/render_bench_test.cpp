@@ -1,5 +1,6 @@
-// `linkage bench render --quick`: the report is produced and its numbers hang together
-// (not the timings themselves); the frame store gives back the frames it was given; bad
+// `linkage bench render --quick`: the report is produced for the homework's clip and the
+// four-bar's, both drawn through the one path, and its numbers hang together (not the
+// timings themselves); the frame store gives back the frames it was given; bad
 // flags are one-line errors, exit 2.
 #include "bench/render_bench.hpp"
 
@@ -51,10 +52,13 @@ TEST(BenchRender, QuickRunWritesASaneReportAndCleansUp) {
   EXPECT_EQ(entries, (std::vector<std::string>{"render.csv", "render.md"}));  // no scratch files left
 
   const auto rows = read_csv(out / "render.csv");
-  ASSERT_EQ(rows.size(), 4u);
+  ASSERT_EQ(rows.size(), 8u);
   std::vector<std::string> kinds;
-  for (const auto& row : rows) kinds.push_back(row.at("format") + " " + row.at("width") + "x" + row.at("height"));
-  EXPECT_EQ(kinds, (std::vector<std::string>{"mp4 320x180", "mp4 640x360", "png 320x180", "png 640x360"}));
+  for (const auto& row : rows)
+    kinds.push_back(row.at("format") + " " + row.at("clip") + " " + row.at("width") + "x" + row.at("height"));
+  EXPECT_EQ(kinds, (std::vector<std::string>{"mp4 two-blocks 320x180", "mp4 four-bar 320x180", "mp4 two-blocks 640x360",
+                                             "mp4 four-bar 640x360", "png two-blocks 320x180", "png four-bar 320x180",
+                                             "png two-blocks 640x360", "png four-bar 640x360"}));
   for (const auto& row : rows) {
     const bool mp4 = row.at("format") == "mp4";
     EXPECT_EQ(row.at("frames"), mp4 ? "60" : "10");  // 2 s at 30 fps; 10 of those frames as PNG
@@ -82,17 +86,20 @@ TEST(BenchRender, QuickRunWritesASaneReportAndCleansUp) {
     }
   }
   // The report's structure, never its speed: times are only checked to be there and
-  // consistent with the ratios computed from them. A bigger frame makes bigger files
-  // (sizes are deterministic).
-  EXPECT_GT(number(rows[1], "bytes_per_frame"), number(rows[0], "bytes_per_frame"));
-  EXPECT_GT(number(rows[3], "bytes_per_frame"), number(rows[2], "bytes_per_frame"));
+  // consistent with the ratios computed from them. A bigger frame of the same clip makes
+  // bigger files, and the two clips' files differ (sizes are deterministic).
+  for (const std::size_t first : {0u, 1u, 4u, 5u})
+    EXPECT_GT(number(rows[first + 2], "bytes_per_frame"), number(rows[first], "bytes_per_frame")) << first;
+  EXPECT_NE(number(rows[0], "bytes_per_frame"), number(rows[1], "bytes_per_frame"));
   EXPECT_EQ(test::read_text(out / "render.csv").find("nan"), std::string::npos);
 
   const std::string md = test::read_text(out / "render.md");
-  for (const char* text : {"## Targets", "## MP4", "## PNG sequence", "| 640x360 | 60 |", "not measured (--quick)",
-                           "linkage bench render --out"})
+  for (const char* text : {"## Targets", "## MP4", "## PNG sequence", "| two-blocks | 640x360 | 60 |",
+                           "| four-bar | 640x360 | 60 |", "not measured (--quick)", "linkage bench render --out"})
     EXPECT_NE(md.find(text), std::string::npos) << text;
-  for (const char* text : {"MP4 320x180: 60 frames", "PNG 640x360: ours", "target: MP4 1280x720", "wrote "})
+  for (const char* text :
+       {"MP4 two-blocks 320x180: 60 frames", "MP4 four-bar 320x180: 60 frames", "PNG four-bar 640x360: ours",
+        "target: MP4 two-blocks 1280x720", "target: MP4 four-bar 1280x720", "wrote "})
     EXPECT_NE(r.out.find(text), std::string::npos) << text << "\n" << r.out;
 }
 

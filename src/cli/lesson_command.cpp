@@ -12,6 +12,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/step_range.hpp"
+#include "core/deriving.hpp"
 #include "core/error.hpp"
 #include "core/name_match.hpp"
 #include "core/program_path.hpp"
@@ -67,7 +68,10 @@ void run_lesson_command(const LessonOptions& o) {
   else
     throw Error::input("--format: '" + o.format + "' is not a format; valid: text, markdown, latex");
 
+  // Reading a lesson derives its mechanisms' equations.
+  Deriving deriving;
   const lesson::Lesson lesson = lesson::parse_lesson(o.file);
+  deriving.done();
   if (!o.only.empty()) options.selected = parse_step_range(o.only, lesson.steps.size());
   if (o.check) {
     std::cout << o.file << ": valid; " << lesson.steps.size() << " steps";

@@ -136,6 +136,13 @@ int main(int argc, char** argv) {
     check_command_words(app, argc, argv);
     app.parse(argc, argv);
     cli::run_selected(app);
+    // A signal while the run ended (freeing a long chain's expressions takes a while after
+    // its output is whole) still ends it with 128 + the signal.
+    if (interrupt_requested()) {
+      const int written = finish_standard_output();
+      print_error(interrupted_error().what());
+      return written != 0 ? written : interrupted_error().exit_status();
+    }
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) {
       const int code = app.exit(e);  // --help, --version

@@ -41,7 +41,7 @@ void add_mechanism_options(CLI::App* sub, MechanismOptions& options) {
 
 Mechanism chosen_mechanism(const MechanismOptions& options, const InputOptions& inputs) {
   if (!options.chosen()) {
-    Mechanism mechanism = homework_mechanism(resolve_inputs(inputs));
+    Mechanism mechanism = default_mechanism(resolve_inputs(inputs));
     apply_settings(mechanism, options.settings);
     return mechanism;
   }

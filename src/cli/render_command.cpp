@@ -17,7 +17,9 @@
 #include "cli/input_options.hpp"
 #include "cli/mechanism_options.hpp"
 #include "cli/simulation_flags.hpp"
+#include "core/deriving.hpp"
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "core/progress.hpp"
 #include "pipeline/clip_request.hpp"
 #include "pipeline/mechanism_clip.hpp"
@@ -121,6 +123,7 @@ ClipResult render_mechanism(const RenderFlags& f, const ClipProgress& progress) 
   const RenderRequest request = resolve_request(f);
   const ClipPlan plan = plan_of(f);
   const SimulationOptions simulation = resolve_simulation_flags(f.simulation, request.settings.duration);
+  Deriving deriving(f.quiet);
   // The initial state worked out as solve does, so a value that breaks it is named the same way.
   const MechanismSolution checked =
       work_out_mechanism(chosen_mechanism(f.mechanism, f.inputs), {static_cast<CaseId>(simulation.case_id)});
@@ -128,6 +131,7 @@ ClipResult render_mechanism(const RenderFlags& f, const ClipProgress& progress) 
   CheckedMechanismClip made = mechanism_clip(request, system, checked.state, simulation, plan);
   made.clip.derived = checked.cases.front().system;
   const MechanismClip& clip = made.clip;
+  deriving.done();
   note_duration(f, clip.is_still(), clip.frames.has_value());
   if (!f.quiet) {
     // Only whether the case keeps any constraint matters to the notes: Case 1 keeps every
@@ -138,12 +142,13 @@ ClipResult render_mechanism(const RenderFlags& f, const ClipProgress& progress) 
     note_ignored_simulation_flags(f.simulation, clip.simulation, kept);
     if (!checked.closure_note.empty()) std::fprintf(stderr, "linkage: note: %s\n", checked.closure_note.c_str());
   }
+  // Sampling the motion compiles more of a long chain's expressions: until the output is
+  // begun (file_begun), a signal still ends the run at once.
+  const EndAtOnceOnSignal until_a_file_is_begun;
   return produce_mechanism_clip(system, checked.state, clip, progress);
 }
 
 void run_render(const RenderFlags& flags) {
-  if (!flags.mechanism.chosen() && !flags.mechanism.settings.empty())
-    throw Error::input("--set: applies only with --mechanism; the homework takes its own flags");
   std::optional<Progress> progress;
   ClipStage shown = ClipStage::simulate;
   const ClipProgress report = [&](ClipStage stage, long done, long total) {

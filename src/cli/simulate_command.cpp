@@ -24,8 +24,8 @@
 #include "columns/trajectory_rows.hpp"
 #include "core/angle_unit.hpp"
 #include "core/atomic_file.hpp"
+#include "core/deriving.hpp"
 #include "core/error.hpp"
-#include "core/interrupt.hpp"
 #include "core/number_format.hpp"
 #include "core/progress.hpp"
 #include "integrate/mechanism_simulation.hpp"
@@ -196,29 +196,23 @@ void run_simulate_mechanism(const SimulateOptions& o, const SimulationOptions& s
   const auto start = std::chrono::steady_clock::now();
   const TrajectoryRows samples = checked_rows(s.duration, every);
   // The initial state worked out as solve does, so a value that breaks it is named the same way.
-  // A long chain's derivation can take seconds: a line on a terminal says so.
-  ElapsedLine deriving("linkage: deriving the equations", o.quiet);
-  // No file is begun until the equations are: a signal meanwhile ends the run at once.
-  std::optional<EndAtOnceOnSignal> end_at_once(std::in_place, [&deriving] {
-    deriving.finish();
-    std::fprintf(stderr, "linkage: error: %s\n", describe(interrupted_error()).c_str());
-  });
-  // The homework's flags are two-blocks.toml's interface: its [table] by default, each
-  // quantity named by its [aliases] in the table and in messages.
-  const bool homework = !o.mechanism.chosen();
+  Deriving deriving(o.quiet);
+  // The default mechanism speaks its interface (the homework's): its [table] by default,
+  // each quantity named by its [aliases] in the table and in messages.
+  const bool default_interface = !o.mechanism.chosen();
   Mechanism mechanism = chosen_mechanism(o.mechanism, o.inputs);
-  mechanism.speaks_aliases = homework;
+  mechanism.speaks_aliases = default_interface;
   const MechanismSolution checked = work_out_mechanism(mechanism, {static_cast<CaseId>(s.case_id)});
   const sym::System& system = *checked.system;
   std::vector<MechanismColumn> all = mechanism_columns(system);
   for (MechanismColumn& c : all) c.name = system.mechanism().named(c.name);
   const bool asked = o.columns_option != nullptr && o.columns_option->count() > 0;
   const std::vector<MechanismColumn> columns =
-      homework ? named_columns(all, o.columns == "all" ? table_columns(system.mechanism()) : o.columns, "--columns")
-               : select_mechanism_columns(all, asked ? o.columns : "default", "--columns");
+      default_interface
+          ? named_columns(all, o.columns == "all" ? table_columns(system.mechanism()) : o.columns, "--columns")
+          : select_mechanism_columns(all, asked ? o.columns : "default", "--columns");
   MechanismSimulation simulation(system, checked.state, s, checked.cases.front().system);
-  end_at_once.reset();
-  deriving.finish();
+  deriving.done();
   if (!o.quiet) {
     note_ignored_simulation_flags(o.simulation, s, simulation.dynamics().constraint_rows());
     if (!checked.closure_note.empty()) std::fprintf(stderr, "linkage: note: %s\n", checked.closure_note.c_str());

@@ -7,8 +7,9 @@
 #include "cli/commands.hpp"
 #include "cli/input_options.hpp"
 #include "cli/mechanism_options.hpp"
+#include "core/deriving.hpp"
 #include "core/error.hpp"
-#include "core/progress.hpp"
+#include "core/interrupt.hpp"
 #include "report/code_export.hpp"
 #include "report/mechanism_latex.hpp"
 #include "report/mechanism_solution.hpp"
@@ -32,9 +33,15 @@ struct SolveOptions {
   MechanismOptions mechanism;
 };
 
+/// In pieces, with a signal check between them: a long chain's solution is megabytes.
 void write_stdout(const std::string& text) {
-  if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0)
-    throw Error::failure("cannot write the worked solution to standard output");
+  constexpr std::size_t kPiece = 1 << 16;
+  for (std::size_t at = 0; at < text.size(); at += kPiece) {
+    throw_if_interrupted();
+    const std::size_t n = std::min(kPiece, text.size() - at);
+    if (std::fwrite(text.data() + at, 1, n, stdout) != n || std::fflush(stdout) != 0)
+      throw Error::failure("cannot write the worked solution to standard output");
+  }
 }
 
 std::vector<int> parse_case_selection(const std::string& which) {
@@ -76,22 +83,25 @@ void run_solve(const SolveOptions& options) {
     throw Error::input("--angles: deg applies to the text format; " + format + " keeps radians");
   report.text_style = options.ascii ? Style::ascii : options.unicode ? Style::unicode : text_style_from_locale();
   const CaseForm form = parse_form(options.form, cases);
-  ElapsedLine deriving("linkage: deriving the equations");  // a long chain's take seconds
+  // The printed forms too: a long chain's take seconds, and nothing is written before them.
+  Deriving deriving;
   const MechanismSolution solution =
       work_out_mechanism(chosen_mechanism(options.mechanism, options.inputs), case_ids(cases), form);
-  deriving.finish();
+  std::string text;
   if (format == "json")  // the homework's interface keeps the spec's names (two-blocks.toml's [aliases])
-    write_stdout(mechanism_json(solution, options.mechanism.chosen() ? JsonKeys::mechanism : JsonKeys::aliases));
+    text = mechanism_json(solution, options.mechanism.chosen() ? JsonKeys::mechanism : JsonKeys::aliases);
   else if (format == "latex")
-    write_stdout(mechanism_latex(solution, report));
+    text = mechanism_latex(solution, report);
   else if (format == "markdown")
-    write_stdout(mechanism_markdown(solution, report));
+    text = mechanism_markdown(solution, report);
   else if (format == "matlab")
-    write_stdout(matlab_export(solution));
+    text = matlab_export(solution);
   else if (format == "python")
-    write_stdout(python_export(solution));
+    text = python_export(solution);
   else
-    write_stdout(mechanism_text(solution, report));
+    text = mechanism_text(solution, report);
+  deriving.done();
+  write_stdout(text);
 }
 
 }  // namespace

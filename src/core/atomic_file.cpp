@@ -12,6 +12,7 @@
 #include <system_error>
 
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 
 namespace linkage {
 namespace fs = std::filesystem;
@@ -41,6 +42,7 @@ std::string quoted(const fs::path& p) {
 }
 
 std::string temporary_suffix() {
+  file_begun();  // a temporary is about to be made
   static std::atomic<unsigned> counter{0};
   return ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
 }
@@ -59,6 +61,7 @@ void require_writable_directory(const fs::path& dir, const std::string& setting)
 }
 
 void ensure_directory(const fs::path& dir, const std::string& setting) {
+  file_begun();
   std::error_code ec;
   for (fs::path part = dir; !part.empty() && part != part.root_path(); part = part.parent_path()) {
     const fs::file_status status = fs::status(part, ec);

@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <utility>
@@ -57,11 +58,16 @@ void throw_if_interrupted() {
   if (!interrupt_requested()) return;
   // The first thread here ends the process; none unwinds meanwhile.
   if (EndAtOnceOnSignal* end = g_end_at_once.exchange(nullptr)) {
-    end->last_words_();
-    std::_Exit(interrupted_error().exit_status());
+    if (end->last_words_) end->last_words_();
+    const Error error = interrupted_error();
+    std::fprintf(stderr, "linkage: error: %s\n", error.what());
+    std::fflush(stderr);
+    std::_Exit(error.exit_status());
   }
   throw interrupted_error();
 }
+
+void file_begun() noexcept { g_end_at_once.store(nullptr); }
 
 EndAtOnceOnSignal::EndAtOnceOnSignal(std::function<void()> last_words) : last_words_(std::move(last_words)) {
   g_end_at_once.store(this);

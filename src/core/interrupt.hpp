@@ -22,12 +22,18 @@ void install_interrupt_handler();
 void throw_if_interrupted();
 
 /// While one lives, a signal ends the process at the next throw_if_interrupted(): it runs
-/// `last_words` (erase a progress line, print the message) and calls std::_Exit with
-/// 128 + the signal, freeing nothing. For work that has begun no file and no output (a long
-/// chain's derivation): unwinding it frees its expressions one by one, seconds for 200 links.
+/// `last_words` (erase a progress line), prints the error line main would print
+/// ("linkage: error: interrupted by SIGTERM") and calls std::_Exit with 128 + the signal,
+/// freeing nothing. For work that has begun no file and no output (a long chain's
+/// derivation): unwinding it frees its expressions one by one, seconds for 200 links.
+/// Where a file or folder is begun (a temporary named, an output folder made): a living
+/// EndAtOnceOnSignal stops ending the process at once, so that from now on a signal unwinds
+/// and what was begun is removed.
+void file_begun() noexcept;
+
 class EndAtOnceOnSignal {
  public:
-  explicit EndAtOnceOnSignal(std::function<void()> last_words);
+  explicit EndAtOnceOnSignal(std::function<void()> last_words = {});
   EndAtOnceOnSignal(const EndAtOnceOnSignal&) = delete;
   EndAtOnceOnSignal& operator=(const EndAtOnceOnSignal&) = delete;
   ~EndAtOnceOnSignal();

@@ -18,6 +18,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "encode/slot_queue.hpp"
 
 namespace linkage {
@@ -260,6 +261,7 @@ void PngSequenceWriter::finish() {
   Impl& impl = *impl_;
   if (impl.finished) return;
   impl.queue->finish();
+  throw_if_interrupted();  // a signal before the sequence is whole leaves none of it
   for (std::int64_t index = 0; index < impl.next_index; ++index) {
     const std::string name = impl.name(index);
     std::error_code ec;

@@ -17,6 +17,7 @@ extern "C" {
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "encode/av_support.hpp"
 
 namespace linkage {
@@ -338,6 +339,7 @@ void VideoWriter::Impl::convert(const Frame& frame) {
 void VideoWriter::Impl::encode(const AVFrame* frame) {
   av::check(avcodec_send_frame(encoder.get(), frame), "cannot encode a frame");
   for (;;) {
+    throw_if_interrupted();  // draining a slow encoder's delayed frames takes seconds
     const int status = avcodec_receive_packet(encoder.get(), packet.get());
     if (status == AVERROR(EAGAIN) || status == AVERROR_EOF) return;
     av::check(status, "cannot encode a frame");
@@ -400,6 +402,7 @@ void VideoWriter::finish() {
   av::check(avio_closep(&impl.format->pb), "cannot close the " + kind + " file");
   std::error_code ec;
   impl.stats.bytes = static_cast<std::int64_t>(std::filesystem::file_size(impl.file.temp_path(), ec));
+  throw_if_interrupted();  // a signal before the file is whole leaves no file
   impl.file.commit();
   impl.finished = true;
   impl.stats.finish_seconds += seconds_since(start);

@@ -208,7 +208,7 @@ class Parser {
   /// quantities are. A value that breaks the worked solution is named at `origin`.
   const QuotableValues* names(const Inputs& inputs, const std::string& origin) const {
     if (!step_spec_.empty()) return step_names_;
-    const auto built = build(kHomeworkMechanism, homework_settings(inputs), origin, true);
+    const auto built = build(kDefaultMechanism, default_mechanism_settings(inputs), origin, true);
     try {
       return &names_of(*built);
     } catch (const Error& e) {
@@ -417,7 +417,7 @@ class Parser {
       r.fail("case", "'case' must be 1, 2, 3, a list of them like [1, 3], or \"all\"");
     }
     try {  // inputs that overflow a derived quantity or make a matrix singular: refused now
-      (void)work_out_mechanism(step.mechanism ? step.mechanism->system->mechanism() : homework_mechanism(inputs),
+      (void)work_out_mechanism(step.mechanism ? step.mechanism->system->mechanism() : default_mechanism(inputs),
                                case_ids(s.cases));
     } catch (const Error& e) {
       throw e.rephrased(r.prefix("") + e.what());
@@ -471,7 +471,7 @@ class Parser {
     // The homework is two-blocks.toml with the run's inputs as its settings (as the
     // homework's flags are), named by its [aliases] as the homework's inputs are.
     run.built = at_keys(readers, [&] {
-      return run.mechanism.empty() ? build(kHomeworkMechanism, homework_settings(run.inputs), origin, true)
+      return run.mechanism.empty() ? build(kDefaultMechanism, default_mechanism_settings(run.inputs), origin, true)
                                    : build(run.mechanism, run.settings, origin);
     });
     // The initial state worked out as solve does (as `simulate --mechanism` does), so a

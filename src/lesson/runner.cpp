@@ -15,6 +15,7 @@
 #include "core/atomic_file.hpp"
 #include "core/character_text.hpp"
 #include "core/content_hash.hpp"
+#include "core/deriving.hpp"
 #include "core/error.hpp"
 #include "core/input_file.hpp"
 #include "core/interrupt.hpp"
@@ -185,8 +186,9 @@ void run_exercise(RunContext& c, const ExerciseStep& e) {
 }
 
 void run_solve(RunContext& c, const Step& step, const SolveStep& s) {
+  const Deriving deriving;  // with the printed forms: no file is begun
   const MechanismSolution worked = work_out_mechanism(
-      step.mechanism ? step.mechanism->system->mechanism() : homework_mechanism(step.inputs), case_ids(s.cases));
+      step.mechanism ? step.mechanism->system->mechanism() : default_mechanism(step.inputs), case_ids(s.cases));
   ReportOptions options;
   options.width = c.options.width;
   options.text_style = c.options.style;

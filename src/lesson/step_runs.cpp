@@ -2,6 +2,7 @@
 // against time for several runs) and compare (a table of figures, and plots). What they
 // compute is pipeline's; here: the cache, the files and the writers.
 #include "core/atomic_file.hpp"
+#include "core/deriving.hpp"
 #include "lesson/runner_context.hpp"
 #include "pipeline/run_compare.hpp"
 #include "pipeline/run_plot.hpp"
@@ -20,7 +21,9 @@ nlohmann::json simulate(const RunContext& c, const SimulateStep& s) {
   std::string csv;
   const auto add_row = [&csv](double, const std::vector<double>& values) { csv += joined_values(values, ",") + "\n"; };
   nlohmann::json results;
+  Deriving deriving;
   MechanismSimulation sim(*run.built->system, run.built->initial, run.options);
+  deriving.done();
   csv = joined_names(written_columns(s.mechanism_columns, AngleUnit::rad).names) + "\n";
   const Eigen::VectorXd end =
       mechanism_trajectory(sim, run.options.case_id, rows, s.mechanism_columns, AngleUnit::rad, add_row);

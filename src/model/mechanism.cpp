@@ -8,18 +8,18 @@ const Body* Mechanism::find_body(const std::string& body_name) const {
   return nullptr;
 }
 
-const std::string& Mechanism::aliased(const std::string& key) const {
+std::string Mechanism::aliased(const std::string& key) const {
   for (const Alias& a : aliases)
     if (a.key == key) return a.name;
   return key;
 }
 
-const std::string& Mechanism::unaliased(const std::string& alias) const {
+std::string Mechanism::unaliased(const std::string& alias) const {
   for (const Alias& a : aliases)
     if (a.name == alias) return a.key;
   return alias;
 }
-const std::string& Mechanism::named(const std::string& key) const { return speaks_aliases ? aliased(key) : key; }
+std::string Mechanism::named(const std::string& key) const { return speaks_aliases ? aliased(key) : key; }
 
 int Mechanism::body_index(const std::string& body_name) const {
   for (std::size_t i = 0; i < bodies.size(); ++i)

@@ -171,11 +171,11 @@ struct Mechanism {
   [[nodiscard]] int body_index(const std::string& body_name) const;
   [[nodiscard]] const Joint* find_joint(const std::string& joint_name) const;
   /// `key`'s alias, or `key` when it has none.
-  [[nodiscard]] const std::string& aliased(const std::string& key) const;
+  [[nodiscard]] std::string aliased(const std::string& key) const;
   /// The key whose alias is `alias`, or `alias` when it is none ("theta1" -> "1.theta").
-  [[nodiscard]] const std::string& unaliased(const std::string& alias) const;
+  [[nodiscard]] std::string unaliased(const std::string& alias) const;
   /// `key` as tables and messages name it: aliased(key) when speaks_aliases, else `key`.
-  [[nodiscard]] const std::string& named(const std::string& key) const;
+  [[nodiscard]] std::string named(const std::string& key) const;
 };
 
 /// "file:line:column: " or "" for a position built in code.

@@ -22,8 +22,8 @@ std::vector<std::string> shipped_mechanism_names() {
   return names;
 }
 
-Mechanism homework_mechanism(const Inputs& inputs) {
-  Mechanism mechanism = load_mechanism("two-blocks");
+Mechanism default_mechanism(const Inputs& inputs) {
+  Mechanism mechanism = load_mechanism(kDefaultMechanism);
   for (const InputKey& key : kInputKeys)
     if (inputs.origin(key) != "default")
       set_value(mechanism, std::string(key.mechanism_key), inputs.value(key), inputs.origin(key));

@@ -26,10 +26,12 @@ namespace linkage {
 /// Whether load_mechanism reads `name_or_file` as a file (it has a '/' or ends in .toml)
 /// rather than a shipped mechanism's name.
 [[nodiscard]] bool is_mechanism_file(std::string_view name_or_file);
-/// The homework's inputs (flags, --config) on mechanisms/two-blocks.toml: every value not
-/// at its default is set there with its origin, so the general derivation takes them.
+/// The mechanism a command runs without --mechanism: the homework, two-blocks.toml.
+inline constexpr const char* kDefaultMechanism = "two-blocks";
+/// The default mechanism at its named inputs (the homework's flags, --config): every value
+/// not at its default is set there with its origin, so the general derivation takes them.
 class Inputs;
-[[nodiscard]] Mechanism homework_mechanism(const Inputs& inputs);
+[[nodiscard]] Mechanism default_mechanism(const Inputs& inputs);
 /// The shipped mechanisms' names, sorted.
 [[nodiscard]] std::vector<std::string> shipped_mechanism_names();
 

@@ -72,6 +72,45 @@ MechanismRun compared_mechanism(const std::string& spec, const sym::System& syst
   return run;
 }
 
+// A trajectory file to draw the bodies of `system` from (render --compare FILE.csv): by
+// the columns' keys or by the names the file's [aliases] give them (the homework's x1,
+// theta1 as simulate writes them; then `aliased`), with each body's pose or the
+// generalized coordinates it follows from. Error::input naming the first column missing,
+// and the header's name it may be a misspelling of.
+TrajectoryTable compared_table(const std::string& file, const sym::System& system, const std::string& purpose,
+                               double end, bool& aliased) {
+  TrajectoryTable table = read_trajectory_csv(file, {"t"}, purpose, 0.0, end);
+  const MechanismGeometry geometry = mechanism_geometry(system);
+  const auto missing = [&](const std::vector<std::string>& names) {
+    const auto it = std::find_if(names.begin(), names.end(), [&](const std::string& n) { return !table.find(n); });
+    return it == names.end() ? std::string() : *it;
+  };
+  for (const Mechanism* names : {static_cast<const Mechanism*>(nullptr), &system.mechanism()}) {
+    if (missing(mechanism_pose_columns(geometry, names)).empty() ||
+        missing(mechanism_coordinate_columns(system, names)).empty()) {
+      aliased = names != nullptr;
+      return table;
+    }
+  }
+  // Named as the file names its other columns: by the aliases when it has any of them.
+  const std::vector<std::string> keys = mechanism_coordinate_columns(system);
+  const std::vector<std::string> aliases = mechanism_coordinate_columns(system, &system.mechanism());
+  const bool by_alias = std::any_of(aliases.begin() + 1, aliases.end(), [&](const std::string& n) {
+    return table.find(n) && std::find(keys.begin(), keys.end(), n) == keys.end();
+  });
+  const std::vector<std::string>& needed = by_alias ? aliases : keys;
+  const std::vector<std::string> poses = mechanism_pose_columns(geometry, by_alias ? &system.mechanism() : nullptr);
+  const std::string absent = missing(needed);
+  std::string hint;  // a name of the header that is none of those looked for, but close to the one missing
+  for (const std::string& name : table.names)
+    if (hint.empty() && std::find(needed.begin(), needed.end(), name) == needed.end() &&
+        std::find(poses.begin(), poses.end(), name) == poses.end() && closest_name(name, {absent}))
+      hint = " (the header has '" + name + "': did you mean '" + absent + "'?)";
+  throw Error::input(table.file + ": no column '" + absent + "'" + hint + "; " + purpose + " needs the columns " +
+                     join_names(needed, "") + ", or each body's pose " + join_names(poses, "") +
+                     " (as linkage simulate writes them); the header has " + join_names(table.names, ""));
+}
+
 }  // namespace
 
 CompareKind compare_kind(const std::string& compare) {
@@ -107,23 +146,9 @@ CheckedMechanismClip mechanism_clip(const RenderRequest& request, const sym::Sys
       case CompareKind::trajectory: {
         MechanismRun run;
         run.label = fs::path(compare).filename().string();
-        // By the columns' keys, or by their aliases (the homework's x1, theta1 as simulate writes them).
-        const MechanismGeometry geometry = mechanism_geometry(system);
-        const auto read = [&](const Mechanism* aliases) {
-          return std::make_shared<const TrajectoryTable>(
-              read_trajectory_csv(compare, mechanism_pose_columns(geometry, aliases),
-                                  plan.compare_origin + ", to draw the bodies of " + system.mechanism().name + ",", 0.0,
-                                  clip_end(clip.settings, clip.is_still(), clip.frames.has_value())));
-        };
-        const bool aliased = mechanism_pose_columns(geometry, &system.mechanism()) != mechanism_pose_columns(geometry);
-        try {
-          run.table = read(nullptr);
-        } catch (const Error& e) {
-          // A file without the keys' columns is read by the aliases' names, whose error then stands.
-          if (!aliased || std::string(e.what()).find(": no column '") == std::string::npos) throw;
-          run.table = read(&system.mechanism());
-          run.aliased = true;
-        }
+        run.table = std::make_shared<const TrajectoryTable>(compared_table(
+            compare, system, plan.compare_origin + ", to draw the bodies of " + system.mechanism().name + ",",
+            clip_end(clip.settings, clip.is_still(), clip.frames.has_value()), run.aliased));
         clip.compare = std::move(run);
         break;
       }

@@ -142,7 +142,8 @@ class MechanismFrames {
   MechanismFrames(const MechanismGeometry& geometry, const MechanismMotion& motion, const MechanismClip& clip,
                   const RenderSettings& settings, const std::vector<Overlay>& overlays, std::string ensemble_row)
       : scene_(geometry, motion, resolve_trails(geometry, clip.trails), kTrailSeconds, clip.settings.arrow_scale,
-               clip.settings.elements, clip.settings.free_body),
+               clip.settings.elements, clip.settings.free_body,
+               mechanism_camera_mode(settings, geometry) == CameraMode::follow),
         motion_(motion),
         settings_(settings),
         labels_{clip.settings.title, run_label(clip.simulation)},
@@ -181,11 +182,13 @@ class MechanismFrames {
     for (const MechanismDrawList::Line& line : list_.lines)
       if (line.kind == MechanismDrawList::Line::Kind::trail)
         stats_.trail_points_drawn += static_cast<std::int64_t>(line.points.size());
-    if (labels_.follows) list_.legend.note = "the view follows the centre of mass; the grid stays put";
+    if (labels_.follows || list_.legend.relative_velocity)  // naming G when the velocities are relative to it
+      list_.legend.note = list_.legend.relative_velocity ? "the view follows the centre of mass G; the grid stays put"
+                                                         : "the view follows the centre of mass; the grid stays put";
     add_ghosts(k);
-    const Camera camera = follow_ ? camera_.centred_at(scene_.centroid(k)) : camera_;
+    const Camera camera = camera_at(k);
     // The camera a frame earlier (the samples are a frame apart): the grid streaks from there.
-    const Camera earlier = follow_ && k > 0 ? camera_.centred_at(scene_.centroid(k - 1)) : camera;
+    const Camera earlier = k > 0 ? camera_at(k - 1) : camera;
     cairo_save(cr);
     paint_mechanism_frame(cr, style_, camera, list_, labels_, motion_.times[k], settings_.width, settings_.height,
                           &earlier);
@@ -197,6 +200,9 @@ class MechanismFrames {
 
   [[nodiscard]] const RenderStats& stats() const { return stats_; }
   [[nodiscard]] const MechanismDrawList& list() const { return list_; }
+  [[nodiscard]] Camera camera_at(std::size_t k) const {
+    return follow_ ? camera_.centred_at(scene_.centroid(k)) : camera_;
+  }
 
  private:
   void add_ghosts(std::size_t k) {
@@ -241,32 +247,6 @@ void add_drawing(RenderStats& stats, const RenderStats& drawn) {
   stats.frames_drawn += drawn.frames_drawn;
   stats.trail_points_drawn += drawn.trail_points_drawn;
   stats.draw_seconds += drawn.draw_seconds;
-}
-
-void produce_motion(const sym::System& system, const GiNaC::exmap& initial, const MechanismClip& clip,
-                    const ClipProgress& progress, ClipResult& result) {
-  const RenderSettings& s = clip.settings;
-  const long count = s.frame_count();
-  std::vector<double> times(static_cast<std::size_t>(count));
-  for (long k = 0; k < count; ++k) times[static_cast<std::size_t>(k)] = s.frame_time(k);
-  PanelData panel;
-  const MechanismMotion motion =
-      sample_mechanism_motion(system, initial, clip.simulation, times, trail_steps(clip), result, progress, s.panel,
-                              &panel, clip.derived, s.elements.has(Element::acceleration));
-  panel.t_end = s.duration;
-  const std::vector<Overlay> overlays = sample_overlays(system, initial, clip, clip.simulation, times, result);
-  FrameLayout layout(s, clip.theme, std::move(panel));
-  MechanismFrames frames(mechanism_geometry(system), motion, clip, layout.scene_settings(), overlays,
-                         ensemble_label(system, clip));
-
-  RenderStats& stats = result.stats;
-  encode_frames(
-      clip.out && is_video(output_kind(*clip.out, "out")) ? clip.out : std::nullopt, clip.frames, s, count,
-      [&](std::size_t k, Frame& frame) {
-        layout.draw(k, times[k], frame, [&](Frame& scene) { frames.draw(k, scene); });
-      },
-      progress, result);
-  add_drawing(stats, frames.stats());
 }
 
 /// One frame at `at`, sampled back over the trail's seconds (a panel's: from 0) at the
@@ -407,7 +387,7 @@ std::vector<MechanismMotion> overlay_motions(const sym::System& system, const Gi
   if (clip.compare && clip.compare->table) {
     const sym::System& other = clip.compare->system != nullptr ? *clip.compare->system : system;
     motions.push_back(table_motion(*clip.compare->table, mechanism_geometry(other), times,
-                                   clip.compare->aliased ? &other.mechanism() : nullptr));
+                                   clip.compare->aliased ? &other.mechanism() : nullptr, &other));
   } else if (clip.compare) {
     const sym::System& other = clip.compare->system != nullptr ? *clip.compare->system : system;
     SimulationOptions compared = clip.compare->simulation;
@@ -480,20 +460,55 @@ std::vector<std::string> mechanism_pose_columns(const MechanismGeometry& geometr
   return names;
 }
 
+std::vector<std::string> mechanism_coordinate_columns(const sym::System& system, const Mechanism* aliases) {
+  std::vector<std::string> names{"t"};
+  for (const sym::GeneralizedCoordinate& c : system.coordinates())
+    names.push_back(aliases != nullptr ? aliases->aliased(c.coordinate.key) : c.coordinate.key);
+  return names;
+}
+
 MechanismMotion table_motion(const TrajectoryTable& table, const MechanismGeometry& geometry,
-                             const std::vector<double>& times, const Mechanism* aliases) {
+                             const std::vector<double>& times, const Mechanism* aliases, const sym::System* system) {
+  const auto named = [&](const std::string& key) { return aliases != nullptr ? aliases->aliased(key) : key; };
   std::vector<std::optional<std::size_t>> columns;  // per body: x, y, theta
   for (const MechanismGeometry::BodyShape& body : geometry.bodies)
-    for (const char* part : {".x", ".y", ".theta"})
-      columns.push_back(table.find(aliases != nullptr ? aliases->aliased(body.name + part) : body.name + part));
+    for (const char* part : {".x", ".y", ".theta"}) columns.push_back(table.find(named(body.name + part)));
+  // A body's pose the file lacks follows from the generalized coordinates, as the System
+  // states it (the homework's x2, y2 from x1, y1, theta1, theta2 through the pin).
+  std::vector<std::pair<std::optional<std::size_t>, GiNaC::symbol>> coordinates;
+  std::vector<GiNaC::ex> computed(columns.size());
+  if (system != nullptr) {
+    for (const sym::GeneralizedCoordinate& c : system->coordinates())
+      coordinates.emplace_back(table.find(named(c.coordinate.key)), c.symbols.q);
+    for (std::size_t b = 0; b < system->bodies().size() && 3 * b + 2 < columns.size(); ++b) {
+      const sym::BodySystem& body = system->bodies()[b];
+      const sym::CoordinateSymbols* parts[] = {&body.x, &body.y, &body.theta};
+      for (std::size_t i = 0; i < 3; ++i)
+        computed[3 * b + i] = i == 2 && !body.rotates ? GiNaC::ex(0)
+                                                      : GiNaC::ex(parts[i]->q)
+                                                            .subs(system->to_generalized())
+                                                            .subs(system->constants())
+                                                            .subs(system->constants())
+                                                            .subs(system->parameter_values());
+    }
+  }
+  const bool from_coordinates =
+      system != nullptr && std::all_of(coordinates.begin(), coordinates.end(), [](const auto& c) { return c.first; });
   MechanismMotion motion;
   motion.times = times;
   motion.samples.resize(times.size());
+  GiNaC::exmap values;
   for (std::size_t k = 0; k < times.size(); ++k) {
     std::vector<double>& pose = motion.samples[k].pose;
     pose.assign(columns.size(), 0.0);
-    for (std::size_t i = 0; i < columns.size(); ++i)
-      if (columns[i]) pose[i] = table.at(*columns[i], times[k]);
+    for (const auto& [column, q] : coordinates)
+      if (column) values[q] = table.at(*column, times[k]);
+    for (std::size_t i = 0; i < columns.size(); ++i) {
+      if (columns[i])
+        pose[i] = table.at(*columns[i], times[k]);
+      else if (from_coordinates)
+        pose[i] = sym::evaluate(computed[i], values);
+    }
   }
   return motion;
 }
@@ -543,11 +558,74 @@ void MechanismClip::validate(const sym::System& system) const {
   if (compare && !compare->table) compare->simulation.validate();
 }
 
+/// The motion at every frame time, the overlays, the layout and the frames drawn from them.
+struct MechanismClipFrames::Drawn {
+  Drawn(const sym::System& system, const GiNaC::exmap& initial, const MechanismClip& clip, ClipResult& result,
+        const ClipProgress& progress)
+      : width(clip.settings.width),
+        height(clip.settings.height),
+        times(frame_times(clip.settings)),
+        motion(sample_mechanism_motion(system, initial, clip.simulation, times, trail_steps(clip), result, progress,
+                                       clip.settings.panel, &panel, clip.derived,
+                                       clip.settings.elements.has(Element::acceleration))),
+        overlays(sample_overlays(system, initial, clip, clip.simulation, times, result)),
+        layout(clip.settings, clip.theme, ending(std::move(panel), clip.settings.duration)),
+        frames(mechanism_geometry(system), motion, clip, layout.scene_settings(), overlays,
+               ensemble_label(system, clip)) {}
+
+  static std::vector<double> frame_times(const RenderSettings& s) {
+    std::vector<double> times(static_cast<std::size_t>(s.frame_count()));
+    for (std::size_t k = 0; k < times.size(); ++k) times[k] = s.frame_time(static_cast<long>(k));
+    return times;
+  }
+  static PanelData ending(PanelData panel, double t_end) {
+    panel.t_end = t_end;
+    return panel;
+  }
+
+  int width, height;
+  std::vector<double> times;
+  PanelData panel;  // filled by the sampling, then the layout's
+  MechanismMotion motion;
+  std::vector<Overlay> overlays;
+  FrameLayout layout;
+  MechanismFrames frames;
+};
+
+MechanismClipFrames::MechanismClipFrames(const sym::System& system, const GiNaC::exmap& initial,
+                                         const MechanismClip& clip, ClipResult& result, const ClipProgress& progress)
+    : drawn_(std::make_unique<Drawn>(system, initial, clip, result, progress)) {}
+
+MechanismClipFrames::~MechanismClipFrames() = default;
+
+long MechanismClipFrames::count() const { return static_cast<long>(drawn_->times.size()); }
+
+void MechanismClipFrames::draw(std::size_t k, Frame& frame) {
+  if (k >= drawn_->times.size())
+    throw Error::failure("frame " + std::to_string(k) + " of a clip of " + std::to_string(drawn_->times.size()));
+  if (frame.width != drawn_->width || frame.height != drawn_->height)
+    throw Error::failure("frame is " + std::to_string(frame.width) + "x" + std::to_string(frame.height) +
+                         ", expected " + std::to_string(drawn_->width) + "x" + std::to_string(drawn_->height));
+  drawn_->layout.draw(k, drawn_->times[k], frame, [&](Frame& scene) { drawn_->frames.draw(k, scene); });
+}
+
+const RenderStats& MechanismClipFrames::stats() const { return drawn_->frames.stats(); }
+
+Camera MechanismClipFrames::camera(std::size_t k) const { return drawn_->frames.camera_at(k); }
+
+const MechanismDrawList& MechanismClipFrames::list() const { return drawn_->frames.list(); }
+
 ClipResult produce_mechanism_clip(const sym::System& system, const GiNaC::exmap& initial, const MechanismClip& clip,
                                   const ClipProgress& progress) {
   clip.validate(system);
   ClipResult result;
-  if (clip.frames || (clip.out && !clip.is_still())) produce_motion(system, initial, clip, progress, result);
+  if (clip.frames || (clip.out && !clip.is_still())) {
+    MechanismClipFrames frames(system, initial, clip, result, progress);
+    encode_frames(
+        clip.out && is_video(output_kind(*clip.out, "out")) ? clip.out : std::nullopt, clip.frames, clip.settings,
+        frames.count(), [&](std::size_t k, Frame& frame) { frames.draw(k, frame); }, progress, result);
+    add_drawing(result.stats, frames.stats());
+  }
   if (clip.is_still()) produce_still(system, initial, clip, progress, result);
   return result;
 }

@@ -1,7 +1,7 @@
 #pragma once
-// Any mechanism's clip: simulate (MechanismSimulation), build each frame's drawing
-// (scene/mechanism_scene), paint it (render/mechanism_painter) and encode it, as
-// produce_clip does for the homework: an MP4, a numbered PNG sequence, or one still
+// Any mechanism's clip, the homework's among them (two-blocks.toml): simulate
+// (MechanismSimulation), build each frame's drawing (scene/mechanism_scene), paint it
+// (render/mechanism_painter) and encode it: an MP4, a numbered PNG sequence, or one still
 // (PNG, SVG or PDF) at settings.at. Outputs appear whole or not at all. Uses settings' size, fps,
 // duration, speed, at, title, shown elements, arrow scales and camera (by default it fits
 // the whole motion of a grounded mechanism and follows a floating one's centroid).
@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "core/frame.hpp"
 #include "integrate/simulation_options.hpp"
 #include "pipeline/clip_result.hpp"
 #include "pipeline/trajectory_csv.hpp"
@@ -48,9 +49,15 @@ struct MechanismRun {
 /// its [aliases] give them (two-blocks: x1, y1, theta1, ...).
 [[nodiscard]] std::vector<std::string> mechanism_pose_columns(const MechanismGeometry& geometry,
                                                               const Mechanism* aliases = nullptr);
-/// The poses of `table` (with mechanism_pose_columns) at `times`, interpolated linearly.
+/// The columns from which a trajectory file's poses follow when it lacks some body's: t and
+/// the generalized coordinates of `system` (two-blocks: t, x1, y1, theta1, theta2 by its aliases).
+[[nodiscard]] std::vector<std::string> mechanism_coordinate_columns(const sym::System& system,
+                                                                    const Mechanism* aliases = nullptr);
+/// The poses of `table` at `times`, interpolated linearly: each body's from its own columns
+/// (mechanism_pose_columns), else, with `system`, from the generalized coordinates'.
 [[nodiscard]] MechanismMotion table_motion(const TrajectoryTable& table, const MechanismGeometry& geometry,
-                                           const std::vector<double>& times, const Mechanism* aliases = nullptr);
+                                           const std::vector<double>& times, const Mechanism* aliases = nullptr,
+                                           const sym::System* system = nullptr);
 
 struct MechanismClip {
   SimulationOptions simulation;
@@ -104,6 +111,35 @@ std::vector<GiNaC::exmap> ensemble_states(const sym::System& system, const GiNaC
 std::vector<MechanismMotion> overlay_motions(const sym::System& system, const GiNaC::exmap& initial,
                                              const MechanismClip& clip, const SimulationOptions& options,
                                              const std::vector<double>& times, ClipResult& result);
+
+/// A clip's motion drawn frame by frame as produce_mechanism_clip draws it (the motion and
+/// overlays sampled, each frame's MechanismScene painted by the mechanism painter inside
+/// the frame's layout), without encoding: produce_mechanism_clip encodes these frames,
+/// `linkage bench render` times them. Samples the motion when made (adding its figures to
+/// `result`); polls for Ctrl-C.
+class MechanismClipFrames {
+ public:
+  MechanismClipFrames(const sym::System& system, const GiNaC::exmap& initial, const MechanismClip& clip,
+                      ClipResult& result, const ClipProgress& progress = {});
+  ~MechanismClipFrames();
+  MechanismClipFrames(const MechanismClipFrames&) = delete;
+  MechanismClipFrames& operator=(const MechanismClipFrames&) = delete;
+
+  /// The clip's frame count (settings.frame_count()).
+  [[nodiscard]] long count() const;
+  /// Frame k (0 .. count() - 1) into `frame`, of the settings' size.
+  void draw(std::size_t k, Frame& frame);
+  /// The drawing's figures so far (frames, trail points, seconds).
+  [[nodiscard]] const RenderStats& stats() const;
+  /// The camera of frame k (a following one is centred on the centroid at k; the grid
+  /// streaks from where frame k - 1's put it), and the draw list of the frame drawn last.
+  [[nodiscard]] Camera camera(std::size_t k) const;
+  [[nodiscard]] const MechanismDrawList& list() const;
+
+ private:
+  struct Drawn;
+  std::unique_ptr<Drawn> drawn_;
+};
 
 /// Produces every output of `clip` for `system` from `initial` (generalized coordinates
 /// and rates with every loop closed, sym::checked_initial_state). Polls for Ctrl-C.

@@ -19,7 +19,7 @@ std::shared_ptr<const BuiltMechanism> build_mechanism(const std::string& spec, c
   return made;
 }
 
-std::vector<std::string> homework_settings(const Inputs& inputs) {
+std::vector<std::string> default_mechanism_settings(const Inputs& inputs) {
   std::vector<std::string> out;
   for (const InputKey& key : kInputKeys)
     out.push_back(std::string(key.mechanism_key) + "=" + format_roundtrip(inputs.value(key)));

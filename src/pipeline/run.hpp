@@ -13,6 +13,7 @@
 #include "core/angle_unit.hpp"
 #include "integrate/simulation_options.hpp"
 #include "model/inputs.hpp"
+#include "model/mechanism_toml.hpp"  // kDefaultMechanism, with default_mechanism_settings
 #include "symbolic/system.hpp"
 
 namespace linkage {
@@ -30,7 +31,7 @@ struct BuiltMechanism {
   bool aliased = false;
 
   /// `key` (a column's or a coordinate's) under the names this mechanism goes by.
-  [[nodiscard]] const std::string& named(const std::string& key) const {
+  [[nodiscard]] std::string named(const std::string& key) const {
     return aliased ? system->mechanism().aliased(key) : key;
   }
   /// Its trajectory columns (mechanism_columns), each under `named` for lookups and headers.
@@ -42,10 +43,9 @@ struct BuiltMechanism {
 [[nodiscard]] std::shared_ptr<const BuiltMechanism> build_mechanism(const std::string& spec,
                                                                     const std::vector<std::string>& settings,
                                                                     const std::string& origin, bool aliased = false);
-/// The mechanism the homework's inputs are settings of, and those settings ("L=0.3",
-/// "1.x=1", ... every input given, so a run does not depend on the file's defaults).
-inline constexpr const char* kHomeworkMechanism = "two-blocks";
-[[nodiscard]] std::vector<std::string> homework_settings(const Inputs& inputs);
+/// The default mechanism's named inputs as its settings ("L=0.3", "1.x=1", ... every input
+/// given, so a run does not depend on the file's defaults).
+[[nodiscard]] std::vector<std::string> default_mechanism_settings(const Inputs& inputs);
 
 /// One simulation: the inputs it starts from and how it integrates.
 struct Run {

@@ -8,7 +8,7 @@
 //         one axis to the frame's aspect ratio.
 // fit:    as fixed, for the bounds of the whole motion plus a margin.
 #include "core/types.hpp"
-#include "scene/motion.hpp"
+#include "scene/bounds.hpp"
 
 namespace linkage {
 

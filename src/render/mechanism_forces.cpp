@@ -20,7 +20,9 @@ constexpr const char* kAppliedName = "applied forces";
 constexpr const char* kGravityName = "gravity";
 constexpr const char* kSpringName = "spring forces";
 constexpr const char* kVelocityName = "velocity";
+constexpr const char* kRelativeVelocityName = "velocity relative to G";
 constexpr const char* kAccelerationName = "acceleration";
+constexpr const char* kComName = "centres of mass";
 constexpr const char* kCutNote = "cut short: its label gives the value";
 // On two lines, so the legend stays narrow enough to fit beside a body.
 constexpr const char* kStretchedNote = "dashed: too short to see at its scale,";
@@ -106,15 +108,17 @@ void paint_torque(cairo_t* cr, const DrawStyle& style, const Camera& camera, con
 
 // The legend's rows: per kind a reference arrow at the kind's scale, its value and the
 // scale per centimetre; then what a cut and a stretched arrow mean. Measures the
-// content's width and height; paints too when `paint`.
+// content's width and height; paints too when `paint`. Given the content's `width`, the
+// centres of mass's symbol goes at the right end of the first row with room for it (a
+// row of its own would leave a floating pair's legend no place clear of the bodies).
 Vec2 legend_rows(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List::Legend& legend, const Vec2& at,
-                 bool paint) {
+                 bool paint, double width = 0) {
   const Theme& theme = *style.theme;
   const text::Font font = legend_font(style);
   const text::Metrics m = text::metrics(cr, font);
   const double u = style.u, row = 1.7 * font.size;
   double names = 0;
-  const auto row_name = [](List::Arrow::Kind kind) {
+  const auto row_name = [&legend](List::Arrow::Kind kind) {
     switch (kind) {
       case List::Arrow::Kind::joint:
         return kJointName;
@@ -125,7 +129,7 @@ Vec2 legend_rows(cairo_t* cr, const DrawStyle& style, const Camera& camera, cons
       case List::Arrow::Kind::spring:
         return kSpringName;
       case List::Arrow::Kind::velocity:
-        return kVelocityName;
+        return legend.relative_velocity ? kRelativeVelocityName : kVelocityName;
       case List::Arrow::Kind::acceleration:
         return kAccelerationName;
     }
@@ -138,6 +142,16 @@ Vec2 legend_rows(cairo_t* cr, const DrawStyle& style, const Camera& camera, cons
   for (const std::string& trail : legend.trails) names = std::max(names, text::width(cr, font, trail.c_str()));
   double y = at.y(), widest = 0;
   const auto baseline = [&] { return y + 0.5 * row + 0.5 * (m.ascent - m.descent); };
+  const double com_entry = 2 * style.com_radius() + 6 * u + text::width(cr, font, kComName);
+  bool com_placed = !legend.com || !(width > 0);
+  const auto com_beside = [&](double used) {
+    if (com_placed || used + 16 * u + com_entry > width) return;
+    com_placed = true;
+    const double x = at.x() + width - com_entry;
+    if (!paint) return;
+    paint_com_symbol(cr, style, {x + style.com_radius(), y + 0.5 * row}, style.com_radius());
+    text::draw(cr, font, x + 2 * style.com_radius() + 6 * u, baseline(), kComName, theme.text);
+  };
   const auto scale_row = [&](const char* name, const Rgba& colour, double metres, const std::string& value,
                              const std::string& scale) {
     const double arrow = metres * camera.scale(), x = at.x() + names + 8 * u;
@@ -147,7 +161,9 @@ Vec2 legend_rows(cairo_t* cr, const DrawStyle& style, const Camera& camera, cons
       paint_arrow(cr, style, {x, y + 0.5 * row}, {x + arrow, y + 0.5 * row}, colour);
       text::draw(cr, font, x + arrow + 6 * u, baseline(), note.c_str(), theme.text);
     }
-    widest = std::max(widest, names + 8 * u + arrow + 6 * u + text::width(cr, font, note.c_str()));
+    const double used = names + 8 * u + arrow + 6 * u + text::width(cr, font, note.c_str());
+    widest = std::max(widest, used);
+    com_beside(used);
     y += row;
   };
   const auto marked_row = [&](const char* note, const char* more, bool cut) {
@@ -190,7 +206,9 @@ Vec2 legend_rows(cairo_t* cr, const DrawStyle& style, const Camera& camera, cons
       cairo_stroke(cr);
       text::draw(cr, font, x + glyph + 6 * u, baseline(), seconds, theme.text_muted);
     }
-    widest = std::max(widest, names + 8 * u + glyph + 6 * u + text::width(cr, font, seconds));
+    const double used = names + 8 * u + glyph + 6 * u + text::width(cr, font, seconds);
+    widest = std::max(widest, used);
+    com_beside(used);
     y += row;
   }
   if (!legend.note.empty()) {
@@ -243,8 +261,17 @@ bool along_one_line(const Segment& p, const Segment& q, double gap, double apart
   return std::min(dp.norm(), std::max(q0, q1)) - std::max(0.0, std::min(q0, q1)) > -apart;
 }
 
+// Whether q leaves p's tail in about p's direction (within 20 degrees): drawn there, one
+// would hide the other (a falling body's acceleration over its weight, both from G).
+bool from_one_tail(const Segment& p, const Segment& q) {
+  const Vec2 dp = p.b - p.a, dq = q.b - q.a;
+  if (dp.norm() < 1 || dq.norm() < 1 || (p.a - q.a).norm() >= 1) return false;
+  return dp.normalized().dot(dq.normalized()) > std::cos(20 * std::numbers::pi / 180);
+}
+
 // The arrows in pixels as drawn: one along another's line (a crank's force along its
-// coupler's) moved aside, so each can be told from the other.
+// coupler's) moved aside, so each can be told from the other; one from another's tail
+// the same way moved aside by a head's width and a shaft's, the two heads side by side.
 std::vector<Segment> arrows_apart(const DrawStyle& style, const Camera& camera, const List& list) {
   std::vector<Segment> arrows;
   for (const List::Arrow& arrow : list.arrows)
@@ -252,6 +279,15 @@ std::vector<Segment> arrows_apart(const DrawStyle& style, const Camera& camera, 
   const double gap = 2 * style.arrow_width();
   for (std::size_t j = 0; j < arrows.size(); ++j) {
     for (std::size_t i = 0; i < j; ++i) {
+      if (from_one_tail(arrows[i], arrows[j])) {
+        // To the side q's head leans to, so the heads are at least that far apart.
+        const Vec2 d = (arrows[i].b - arrows[i].a).normalized(), n(-d.y(), d.x());
+        const double side = (arrows[j].b - arrows[i].a).dot(n) >= 0 ? 1.0 : -1.0;
+        const Vec2 shift = side * (2 * style.arrow_head_half_width() + style.arrow_width()) * n;
+        arrows[j].a += shift;
+        arrows[j].b += shift;
+        continue;
+      }
       if (!along_one_line(arrows[i], arrows[j], gap, style.arrow_head_length())) continue;
       const Vec2 d = (arrows[i].b - arrows[i].a).normalized(), n(-d.y(), d.x());
       const double off = (0.5 * (arrows[j].a + arrows[j].b) - arrows[i].a).dot(n);
@@ -337,7 +373,7 @@ void paint_legend(cairo_t* cr, const DrawStyle& style, const Camera& camera, con
   set_colour(cr, theme.panel_edge);
   cairo_set_line_width(cr, std::max(1.0, std::round(0.6 * style.u)));
   cairo_stroke(cr);
-  legend_rows(cr, style, camera, legend, {rect.x + pad, rect.y + 0.6 * pad}, true);
+  legend_rows(cr, style, camera, legend, {rect.x + pad, rect.y + 0.6 * pad}, true, rect.width - 2 * pad);
 }
 
 }  // namespace

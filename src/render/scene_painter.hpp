@@ -1,59 +1,17 @@
 #pragma once
-// Draws a scene's draw list (world units) onto a Cairo context through a camera:
-// trail, blocks, arrows, centre-of-mass symbols, the pin, then labels. Sizes of lines
-// and marks come from the DrawStyle, not from the world scale, so they stay readable at
-// any zoom.
+// The marks every picture draws in pixels: arrows (plain and stretched), the centre-of-mass
+// symbol, the pin, and a trail's fading. Sizes of lines and marks come from the
+// DrawStyle, not from the world scale, so they stay readable at any zoom.
 #include <cairo.h>
 
-#include <array>
-#include <span>
-
-#include "render/camera.hpp"
-#include "render/label_layout.hpp"
+#include "core/types.hpp"
 #include "render/style.hpp"
-#include "scene/draw_list.hpp"
 
 namespace linkage {
-
-/// The colour of another run drawn over the main one: an ensemble member at `ramp` 0..1
-/// (from the trail's colour to the velocity's, apart from the blocks'), or the compared
-/// run (the text colour, dashed).
-[[nodiscard]] Rgba overlay_colour(const Theme& theme, double ramp, bool compare);
-
-/// The colour of an arrow kind in the theme.
-[[nodiscard]] const Rgba& arrow_colour(const Theme& theme, ArrowKind kind);
 
 /// The opacity of a trail's segment whose newer end has `fade` (1 now, 0 at the
 /// trail's age limit): the theme's, times fade squared, so old parts fade quickly.
 [[nodiscard]] double trail_alpha(const Theme& theme, double fade);
-
-/// Where a frame's names go, in pixels: each block's number on its block, the pin's
-/// name and each arrow's name (with its value when stretched) clear of one another, of
-/// the marks, the `occupied` panels, the arrows and the blocks where the frame has room.
-/// Fixed capacity, so a frame allocates nothing; kept for tests to check.
-struct SceneLabels {
-  struct Placed {
-    Rect box;
-    Vec2 head = Vec2::Zero();  // what it names
-    std::array<char, 48> text{};
-    Rgba colour;
-    bool block = false;   // a block's number (drawn on the block)
-    bool leader = false;  // a line to the head
-  };
-  std::array<Placed, 16> labels{};
-  std::size_t count = 0;
-  std::array<Segment, 40> segments{};  // the arrows as drawn, then the blocks' edges (body = index)
-  std::size_t segment_count = 0;
-  std::array<Rect, 40> boxes{};  // occupied panels, marks, then the names
-  std::size_t box_count = 0;
-};
-void layout_scene_labels(cairo_t* cr, const DrawStyle& style, const DrawList& list, const Camera& camera, int width,
-                         int height, std::span<const Rect> occupied, SceneLabels& out);
-
-/// Draws everything in `list` (antialiased) in a width x height frame, names clear of
-/// the `occupied` panels; `labels` receives the names' layout.
-void paint_scene(cairo_t* cr, const DrawStyle& style, const DrawList& list, const Camera& camera, int width, int height,
-                 std::span<const Rect> occupied, SceneLabels& labels);
 
 /// An arrow in pixel coordinates from `tail` to `tip`: a shaft and a filled head. Heads
 /// shrink with very short arrows so they never overshoot the tip.

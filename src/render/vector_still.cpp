@@ -3,8 +3,11 @@
 #include <cairo-pdf.h>
 #include <cairo-svg.h>
 
+#include <fstream>
+
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "render/cairo_util.hpp"
 
 namespace linkage {
 namespace {
@@ -17,11 +20,6 @@ cairo_status_t write_to_stream(void* closure, const unsigned char* data, unsigne
 }
 
 }  // namespace
-
-void write_vector_still(ClipRenderer& renderer, std::size_t index, OutputKind kind, int width, int height,
-                        const std::filesystem::path& target, const std::string& origin) {
-  write_vector_still([&](cairo_t* cr) { renderer.draw_vector(index, cr); }, kind, width, height, target, origin);
-}
 
 void write_vector_still(const std::function<void(cairo_t*)>& paint, OutputKind kind, int width, int height,
                         const std::filesystem::path& target, const std::string& origin) {

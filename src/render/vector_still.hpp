@@ -8,16 +8,13 @@
 #include <functional>
 #include <string>
 
-#include "render/clip_renderer.hpp"
 #include "render/settings.hpp"
 
 namespace linkage {
 
-/// Draws sample `index` of `renderer`'s motion into `target` as `kind` (svg or pdf),
-/// width x height units (SVG pixels, PDF points). `origin` names the flag in errors.
-void write_vector_still(ClipRenderer& renderer, std::size_t index, OutputKind kind, int width, int height,
-                        const std::filesystem::path& target, const std::string& origin);
-/// The same with `paint` drawing the whole figure onto the vector surface's context.
+/// Draws a still into `target` as `kind` (svg or pdf), width x height units (SVG pixels,
+/// PDF points), with `paint` drawing the whole figure onto the vector surface's context.
+/// `origin` names the flag in errors.
 void write_vector_still(const std::function<void(cairo_t*)>& paint, OutputKind kind, int width, int height,
                         const std::filesystem::path& target, const std::string& origin);
 

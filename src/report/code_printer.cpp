@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/interrupt.hpp"
 #include "core/number_format.hpp"
 
 namespace linkage {
@@ -130,6 +131,7 @@ CodePrinter::Text CodePrinter::print_number(const GiNaC::numeric& n) const {
 CodePrinter::Text CodePrinter::print_sum(const GiNaC::ex& e, std::size_t* negatives) const {
   std::vector<std::pair<std::string, bool>> terms;  // |term| and whether it is subtracted
   for (const GiNaC::ex& term : e) {
+    throw_if_interrupted();  // a long chain's entries are sums of thousands of terms
     if (GiNaC::is_exactly_a<GiNaC::numeric>(term)) {
       const auto& n = GiNaC::ex_to<GiNaC::numeric>(term);
       terms.emplace_back(print_number(GiNaC::abs(n)).text, n.is_negative());

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "core/interrupt.hpp"
 #include "report/notation.hpp"
 
 namespace linkage {
@@ -639,6 +640,7 @@ class Printer {
     const std::string mark = style_ != Style::latex ? std::string(1, kBreakMark) : "";
     std::string out;
     for (const Product& item : sum_items(s)) {
+      throw_if_interrupted();  // a long chain's entries are sums of thousands of terms
       const Piece m = magnitude(item, false);
       const std::string text = m.prec == Prec::sum ? paren(m.text) : m.text;
       const bool negative = item.coefficient < 0;
@@ -676,6 +678,7 @@ EquationSides equation_sides(const std::vector<GiNaC::ex>& A_row, const GiNaC::e
   const std::string mark = style == Style::latex ? "" : std::string(1, kBreakMark);
   std::string lhs;
   for (std::size_t c = 0; c < A_row.size(); ++c) {
+    throw_if_interrupted();
     if (A_row[c].is_zero()) continue;
     const auto [negative, body] = printer.term(A_row[c], spelling(*unknowns[c], style));
     if (lhs.empty())

@@ -5,6 +5,7 @@
 
 #include "columns/mechanism_columns.hpp"
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "evaluate/case_evaluator.hpp"
 #include "model/mechanism_toml.hpp"
 #include "report/json_layout.hpp"
@@ -299,6 +300,7 @@ std::string mechanism_json(const MechanismSolution& s, JsonKeys keys) {
     one["equations"] = c.system.labels;
     ordered_json bodies = ordered_json::object();
     for (std::size_t b = 0; b < system.bodies().size(); ++b) {
+      throw_if_interrupted();  // a long chain's bodies and joints take seconds
       const BodyMotion motion = body_motion(s, c, b);
       bodies[system.bodies()[b].name] = {{"acceleration", {motion.ax, motion.ay}},
                                          {"angular_acceleration", motion.alpha}};
@@ -306,6 +308,7 @@ std::string mechanism_json(const MechanismSolution& s, JsonKeys keys) {
     one["bodies"] = bodies;
     ordered_json joints = ordered_json::object();
     for (std::size_t j = 0; j < system.joints().size(); ++j) {
+      throw_if_interrupted();
       const JointForce f = joint_force(s, c, j);
       ordered_json entry = {{"force", {f.fx, f.fy}}};
       if (f.moment) entry["moment"] = *f.moment;

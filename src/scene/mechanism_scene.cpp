@@ -1,12 +1,14 @@
 #include "scene/mechanism_scene.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
 
 #include "core/error.hpp"
 #include "symbolic/joints.hpp"
+#include "symbolic/spelling.hpp"
 
 namespace linkage {
 namespace {
@@ -65,6 +67,21 @@ double round_near(double value) {
   for (const double m : {2.0, 5.0, 10.0})
     if (std::fabs(std::log(m * decade / value)) < std::fabs(std::log(best / value))) best = m * decade;
   return best;
+}
+
+bool plain_name(const std::string& s) {
+  if (s.empty() || std::isalpha(static_cast<unsigned char>(s[0])) == 0) return false;
+  return std::all_of(s.begin(), s.end(),
+                     [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; });
+}
+
+// A weight as a lecturer writes it: the mass's and gravity's names side by side, "mg",
+// "m₁g" (digits lowered), "mc g" (a space after a longer name, so it does not read as
+// m c g); "weight of 1" when either is a number or an expression.
+std::string weight_name(const std::string& mass, const std::string& gravity, const std::string& body) {
+  if (!plain_name(mass) || !plain_name(gravity)) return "weight of " + body;
+  const bool one_letter = mass.size() == 1 || std::isalpha(static_cast<unsigned char>(mass[1])) == 0;
+  return sym::spell_name(mass).unicode + (one_letter ? "" : " ") + sym::spell_name(gravity).unicode;
 }
 
 std::string names_of(const std::vector<std::pair<std::string, Vec2>>& points) {
@@ -171,7 +188,9 @@ MechanismGeometry mechanism_geometry(const sym::System& system) {
     const bool spring =
         std::any_of(m.springs.begin(), m.springs.end(), [&](const Spring& s) { return s.name == load.source; });
     if (load.body < 0 || !(gravity || spring)) continue;
-    g.loads.push_back({load.body, gravity, gravity ? std::string() : load.source});
+    const Body& body = m.bodies[static_cast<std::size_t>(load.body)];
+    g.loads.push_back(
+        {load.body, gravity, gravity ? weight_name(body.mass.text, m.gravity->text, body.name) : load.source});
     for (const GiNaC::ex& e : {load.force.x, load.force.y, load.point.x, load.point.y}) outputs.push_back(numeric(e));
   }
   std::vector<GiNaC::symbol>& inputs = g.inputs;
@@ -278,13 +297,15 @@ void MechanismDrawList::clear() {
 }
 
 MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion& motion, std::vector<BodyPoint> trails,
-                               double trail_seconds, const ArrowScaleRequest& arrows, ElementSet shown, bool free_body)
+                               double trail_seconds, const ArrowScaleRequest& arrows, ElementSet shown, bool free_body,
+                               bool relative_velocities)
     : geometry_(std::move(geometry)),
       motion_(motion),
       trails_(std::move(trails)),
       trail_seconds_(trail_seconds),
       shown_(shown),
-      free_body_(free_body) {
+      free_body_(free_body),
+      relative_velocities_(relative_velocities) {
   if (!shown_.has(Element::trail)) trails_.clear();
   const std::size_t joints = geometry_.joints.size(), samples = motion_.samples.size();
   rail_span_.assign(joints, {1e300, -1e300});
@@ -377,8 +398,10 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
         largest = std::max(largest, size);
       }
     }
+    const Vec2 frame_velocity = relative_velocities_ && !s.rates.empty() ? centroid_velocity(k) : Vec2::Zero();
     for (std::size_t i = 0; i < geometry_.bodies.size() && !s.rates.empty(); ++i)
-      largest_velocity[k] = std::max(largest_velocity[k], std::hypot(s.rates[3 * i], s.rates[3 * i + 1]));
+      largest_velocity[k] =
+          std::max(largest_velocity[k], (Vec2(s.rates[3 * i], s.rates[3 * i + 1]) - frame_velocity).norm());
     for (std::size_t i = 0; 3 * i + 1 < s.accelerations.size(); ++i)
       largest_acceleration[k] =
           std::max(largest_acceleration[k], std::hypot(s.accelerations[3 * i], s.accelerations[3 * i + 1]));
@@ -390,9 +413,12 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
       load_inputs(s, motion_.times[k], inputs);
       trail_velocity_[k].resize(traced.output_count());
       traced.run(inputs.data(), trail_velocity_[k].data(), scratch_traced.data());
-      for (std::size_t i = 0; 2 * i + 1 < trail_velocity_[k].size(); ++i)
+      for (std::size_t i = 0; 2 * i + 1 < trail_velocity_[k].size(); ++i) {
+        trail_velocity_[k][2 * i] -= frame_velocity.x();
+        trail_velocity_[k][2 * i + 1] -= frame_velocity.y();
         largest_velocity[k] =
             std::max(largest_velocity[k], std::hypot(trail_velocity_[k][2 * i], trail_velocity_[k][2 * i + 1]));
+      }
     }
   }
   for (const auto& [name, at] : geometry_.ground) bounds_.include(at);
@@ -464,6 +490,7 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
   gravity_scale_ = own_scale(Kind::gravity, Element::gravity, largest_gravity, "gravity", "N", true);
   spring_scale_ = own_scale(Kind::spring, Element::spring_force, largest_spring, "spring", "N", true);
   velocity_scale_ = own_scale(Kind::velocity, Element::velocity, largest_velocity, "velocity", "m/s", false);
+  legend_.relative_velocity = relative_velocities_ && velocity_scale_ > 0;
   acceleration_scale_ =
       own_scale(Kind::acceleration, Element::acceleration, largest_acceleration, "acceleration", "m/s²", false);
   for (const BodyPoint& trail : trails_) {  // "path of P": the point's own name
@@ -473,6 +500,7 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
       if (at == trail.local) legend_.trails.push_back("path of " + name);
   }
   legend_.trail_seconds = trail_seconds_;
+  legend_.com = shown_.has(Element::com) && !geometry_.bodies.empty();
   const double typical_torque = typical_of(largest_torque);
   if (typical_torque > 0 && std::isfinite(typical_torque)) torque_scale_ = kTypicalSweep / typical_torque;
 
@@ -519,8 +547,10 @@ void MechanismScene::set_shortest_arrow(double metres, double drawn) {
       if (scale > 0 && short_at(std::hypot(load_[k][4 * i], load_[k][4 * i + 1]), scale)) legend_.stretched = true;
     }
     const std::vector<double>& rates = motion_.samples[k].rates;
+    const Vec2 frame_velocity = relative_velocities_ && !rates.empty() ? centroid_velocity(k) : Vec2::Zero();
     for (std::size_t i = 0; velocity_scale_ > 0 && 3 * i + 1 < rates.size(); ++i)
-      if (short_at(std::hypot(rates[3 * i], rates[3 * i + 1]), velocity_scale_)) legend_.stretched = true;
+      if (short_at((Vec2(rates[3 * i], rates[3 * i + 1]) - frame_velocity).norm(), velocity_scale_))
+        legend_.stretched = true;
   }
 }
 
@@ -530,6 +560,17 @@ Vec2 MechanismScene::centroid(std::size_t k) const {
   double mass = 0;
   for (std::size_t i = 0; i < geometry_.bodies.size(); ++i) {
     sum += geometry_.bodies[i].mass * Vec2(pose[3 * i], pose[3 * i + 1]);
+    mass += geometry_.bodies[i].mass;
+  }
+  return mass > 0 ? Vec2(sum / mass) : sum;
+}
+
+Vec2 MechanismScene::centroid_velocity(std::size_t k) const {
+  const std::vector<double>& rates = motion_.samples[k].rates;
+  Vec2 sum = Vec2::Zero();
+  double mass = 0;
+  for (std::size_t i = 0; 3 * i + 1 < rates.size() && i < geometry_.bodies.size(); ++i) {
+    sum += geometry_.bodies[i].mass * Vec2(rates[3 * i], rates[3 * i + 1]);
     mass += geometry_.bodies[i].mass;
   }
   return mass > 0 ? Vec2(sum / mass) : sum;
@@ -583,13 +624,14 @@ void MechanismScene::add_load_arrows(std::size_t k, MechanismDrawList& out) cons
     if (scale_of(kind) <= 0 || force.norm() == 0) continue;
     const std::string& body = geometry_.bodies[static_cast<std::size_t>(load.body)].name;
     out.arrows.push_back(
-        force_arrow(kind, at, force, tags ? (load.gravity ? "m g on " + body : load.name + " on " + body) : ""));
+        force_arrow(kind, at, force, tags ? (load.gravity ? load.name : load.name + " on " + body) : ""));
     out.arrows.back().body = load.body;
   }
   const std::vector<double>& rates = motion_.samples[k].rates;
+  const Vec2 frame_velocity = relative_velocities_ && !rates.empty() ? centroid_velocity(k) : Vec2::Zero();
   for (std::size_t i = 0; velocity_scale_ > 0 && i < geometry_.bodies.size() && !rates.empty(); ++i) {
     const std::vector<double>& pose = motion_.samples[k].pose;
-    const Vec2 v(rates[3 * i], rates[3 * i + 1]);
+    const Vec2 v = Vec2(rates[3 * i], rates[3 * i + 1]) - frame_velocity;
     if (v.norm() == 0) continue;
     out.arrows.push_back(force_arrow(Kind::velocity, Vec2(pose[3 * i], pose[3 * i + 1]), v,
                                      tags ? "v of " + geometry_.bodies[i].name : ""));
@@ -762,11 +804,14 @@ void legend_for_frame(MechanismDrawList& out) {
   legend.joint = legend.joint && present(Kind::joint);
   legend.applied = legend.applied && (present(Kind::applied) || !out.torques.empty());
   std::erase_if(legend.rows, [&](const MechanismDrawList::Legend::Row& row) { return !present(row.kind); });
+  legend.relative_velocity = legend.relative_velocity && present(Kind::velocity);
   legend.cut = std::any_of(out.arrows.begin(), out.arrows.end(), [](const auto& a) { return a.cut; });
   legend.stretched = std::any_of(out.arrows.begin(), out.arrows.end(), [](const auto& a) { return a.stretched; });
   if (std::none_of(out.lines.begin(), out.lines.end(),
                    [](const auto& l) { return l.kind == MechanismDrawList::Line::Kind::trail; }))
     legend.trails.clear();
+  legend.com = legend.com && std::any_of(out.markers.begin(), out.markers.end(),
+                                         [](const auto& m) { return m.kind == MechanismDrawList::Marker::Kind::com; });
 }
 
 }  // namespace

@@ -2,8 +2,7 @@
 // What a frame of any mechanism shows, in world units (metres, y up): the numbers of the
 // mechanism's drawing (shapes, points, joints, springs, loads) taken once from the System,
 // and a sampled motion turned frame by frame into outlines, markers, coils, dashpots,
-// force and torque arrows and trails. The homework's own scene (scene_builder) is
-// separate and unchanged.
+// force and torque arrows and trails.
 #include <array>
 #include <string>
 #include <vector>
@@ -13,8 +12,8 @@
 #include "evaluate/program.hpp"
 #include "model/mechanism.hpp"
 #include "scene/arrow_scale.hpp"
+#include "scene/bounds.hpp"
 #include "scene/elements.hpp"
-#include "scene/motion.hpp"
 #include "symbolic/system.hpp"
 
 namespace linkage {
@@ -62,7 +61,7 @@ struct MechanismGeometry {
   struct LoadShape {
     int body = 0;
     bool gravity = false;  // else a spring
-    std::string name;      // the spring's
+    std::string name;      // the spring's, or the weight's label: "mg", "m₁g" (weight_name)
   };
   std::vector<BodyShape> bodies;
   std::vector<std::pair<std::string, Vec2>> ground;  // world
@@ -160,6 +159,8 @@ struct MechanismDrawList {
       std::string value, scale;  // "2 N", "1 cm = 0.5 N"
     };
     std::vector<Row> rows;
+    bool relative_velocity = false;   // the velocity row: relative to the centre of mass G
+    bool com = false;                 // the centres of mass's symbol, beside a row with room for it
     std::vector<std::string> trails;  // a row per traced point: "path of P"
     double trail_seconds = 0;         // "last 2 s"
     std::string note{};               // a closing line: "the view follows the centre of mass; ..."
@@ -215,9 +216,11 @@ class MechanismScene {
   /// `shown`: the elements drawn (bodies, joints, each kind of arrow, trail, com, labels).
   /// `free_body`: each body pulled away from the others (from the centroid, by half its
   /// distance) with every force on it, a joint's pin drawn on each of its bodies.
+  /// `relative_velocities`: velocities drawn relative to the centre of mass G (what a
+  /// camera following G shows), the legend saying so; else in the world frame.
   MechanismScene(MechanismGeometry geometry, const MechanismMotion& motion, std::vector<BodyPoint> trails,
                  double trail_seconds = 2.0, const ArrowScaleRequest& arrows = {},
-                 ElementSet shown = ElementSet::defaults(), bool free_body = false);
+                 ElementSet shown = ElementSet::defaults(), bool free_body = false, bool relative_velocities = false);
 
   /// Force arrows shorter than `metres` (but not zero) are drawn `drawn` long (0: that
   /// long) and marked stretched, their labels giving the value; the legend says whether any is.
@@ -229,6 +232,8 @@ class MechanismScene {
   /// The mechanism's centre of mass at sample k (the floating camera's centre): the
   /// bodies' centres weighted by their masses.
   [[nodiscard]] Vec2 centroid(std::size_t k) const;
+  /// Its velocity at sample k: the bodies' velocities weighted by their masses.
+  [[nodiscard]] Vec2 centroid_velocity(std::size_t k) const;
   /// The largest distance of an outline point from the centroid over the motion.
   [[nodiscard]] double reach() const { return reach_; }
   /// bounds() and reach() grown to take in the force arrows too (what the camera shows).
@@ -267,6 +272,7 @@ class MechanismScene {
   std::vector<std::vector<double>> trail_velocity_;  // per sample: each traced point's velocity x, y
   ElementSet shown_;
   bool free_body_ = false;
+  bool relative_velocities_ = false;
   double gravity_scale_ = 0, spring_scale_ = 0, velocity_scale_ = 0, acceleration_scale_ = 0;
   std::vector<std::size_t> traced_points_;  // per traced point on a body: its index in MechanismSample::points
 

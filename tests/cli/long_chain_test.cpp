@@ -1,8 +1,9 @@
-// Long chains (issue 22, F01): a pendulum chain of N uniform rods pinned end to end, the
-// first pinned to the ground, written here as a mechanism file. A hundred links derive and
+// Long chains (issue 22, F01; the chain's file from support/long_chain.hpp). A hundred links derive and
 // simulate with the energy kept to the integrator's tolerance (ctest's TIMEOUT for these
 // tests, tests/cli/timeouts.cmake, catches a return to the old growth with N); two links
 // move exactly as the shipped double pendulum; a signal ends a 200-link derivation at once.
+#include "support/long_chain.hpp"
+
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -17,46 +18,6 @@
 
 namespace linkage::test {
 namespace {
-
-struct Rod {
-  double length = 0.1, mass = 0.1, theta = -0.5;
-};
-
-/// The chain's file: rod i has its length and mass, its points A (towards the ground) and
-/// B; joint J1 pins A of rod 1 to the ground's O, joint J<i> pins A of rod i to B of rod i-1.
-/// Identical rods share the parameters l and m (with a mass and a length per rod, Case 3's
-/// mass matrix has n^3 terms: each entry sums the masses beyond its rows' links).
-std::string chain_toml(const std::vector<Rod>& rods) {
-  bool identical = true;
-  for (const Rod& r : rods) identical = identical && r.length == rods[0].length && r.mass == rods[0].mass;
-  std::ostringstream f;
-  f << "title = \"Chain of " << rods.size() << " rods\"\ngravity = \"g\"\n\n[parameters]\ng = 9.81\n";
-  if (identical)
-    f << "l = " << rods[0].length << "\nm = " << rods[0].mass << "\n";
-  else
-    for (std::size_t i = 1; i <= rods.size(); ++i)
-      f << "l" << i << " = " << rods[i - 1].length << "\nm" << i << " = " << rods[i - 1].mass << "\n";
-  f << "\n[ground]\npoints = { O = [0, 0] }\n";
-  for (std::size_t i = 1; i <= rods.size(); ++i) {
-    const std::string k = identical ? "" : std::to_string(i);
-    f << "\n[[body]]\nname = \"" << i << "\"\nshape = \"rod\"\nmass = \"m" << k << "\"\nlength = \"l" << k
-      << "\"\npoints = { A = [\"-l" << k << "/2\", 0], B = [\"l" << k << "/2\", 0] }\n";
-  }
-  for (std::size_t i = 1; i <= rods.size(); ++i)
-    f << "\n[[joint]]\nname = \"J" << i << "\"\ntype = \"pin\"\nbodies = [\""
-      << (i == 1 ? "ground" : std::to_string(i - 1)) << "\", \"" << i << "\"]\npoints = [\"" << (i == 1 ? "O" : "B")
-      << "\", \"A\"]\n";
-  f << "\n[initial]\n";
-  for (std::size_t i = 1; i <= rods.size(); ++i) f << "\"" << i << "\" = { theta = " << rods[i - 1].theta << " }\n";
-  return f.str();
-}
-
-/// N rods of 0.1 m and 0.1 kg, each leaning a little further than the one above.
-std::vector<Rod> leaning_rods(int n) {
-  std::vector<Rod> rods(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i) rods[static_cast<std::size_t>(i)].theta = -0.5 - 0.01 * i;
-  return rods;
-}
 
 std::filesystem::path write(const TempDir& dir, const std::string& name, const std::string& text) {
   const std::filesystem::path path = dir / name;
@@ -147,48 +108,6 @@ TEST(LongChain, SigtermEndsTheDerivationOfTwoHundredLinksAtOnce) {
   EXPECT_EQ(r.exit_code, 128 + SIGTERM) << r.err;
   EXPECT_LT(r.seconds_after_signal, 1.0);
   EXPECT_EQ(dir.entries(), std::vector<std::string>{"chain200.toml"});
-}
-
-// Every stage of the derivation polls for the signal (building the system, closing and
-// checking the initial state, deriving the case, solving it at the start, compiling it,
-// and compiling the sample: the angular momentum's substitution and walk, which took
-// seconds without a check, lie at about 0.5 and 0.65 of the run): a signal at any moment
-// of it ends the run within a second. The moments are fractions of the time the same run
-// takes here unsignalled, measured first, so that they fall at the same stages on any
-// machine (the integration is the last 0.2 s).
-TEST(LongChain, ASignalAtAnyMomentOfTheDerivationEndsTheRunWithinASecond) {
-  const TempDir dir;
-  const std::string chain = write(dir, "chain100.toml", chain_toml(leaning_rods(100))).string();
-  const std::vector<std::string> args{
-      "simulate", "--mechanism", chain, "--duration", "1", "--out", (dir / "run.csv").string()};
-  const auto begun = std::chrono::steady_clock::now();
-  const RunResult whole = run_linkage(args);
-  ASSERT_EQ(whole.exit_code, 0) << whole.err;
-  const double run = std::chrono::duration<double>(std::chrono::steady_clock::now() - begun).count();
-  std::filesystem::remove(dir / "run.csv");
-  struct Moment {
-    double fraction;
-    int signal;
-  };
-  for (const Moment m : {Moment{0.05, SIGTERM}, Moment{0.3, SIGINT}, Moment{0.5, SIGTERM}, Moment{0.55, SIGTERM},
-                         Moment{0.65, SIGTERM}, Moment{0.85, SIGTERM}}) {
-    SCOPED_TRACE("signal " + std::to_string(m.signal) + " at " + std::to_string(m.fraction) + " of " +
-                 std::to_string(run) + " s");
-    RunOptions options;
-    options.args = args;
-    options.signal = m.signal;
-    options.timeout_seconds = 10 * run + 30;
-    const auto start = std::chrono::steady_clock::now();
-    options.ready = [&](const std::string&, const std::string&) {
-      return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > m.fraction * run;
-    };
-    const RunResult r = run_linkage(options);
-    ASSERT_TRUE(r.signal_sent) << "it ended before the signal: " << r.err;
-    EXPECT_FALSE(r.timed_out);
-    EXPECT_EQ(r.exit_code, 128 + m.signal) << r.err;
-    EXPECT_LT(r.seconds_after_signal, 1.0);
-    EXPECT_EQ(dir.entries(), std::vector<std::string>{"chain100.toml"});
-  }
 }
 
 }  // namespace

@@ -161,10 +161,16 @@ TEST_P(RenderBadTrajectory, NamesTheFileAndLine) {
 INSTANTIATE_TEST_SUITE_P(
     Files, RenderBadTrajectory,
     ::testing::Values(
+        // The generalized coordinates are enough (x2, y2 follow through the pin); one is missing.
         BadTrajectory{{},
                       "t,x1,y1,theta1\n0,1,2,0.1\n1,1,2,0.1\n",
-                      "{file}: no column 'x2'; --compare, to draw the bodies of two-blocks, needs the columns t, "
-                      "x1, y1, theta1, x2, y2, theta2"},
+                      "{file}: no column 'theta2'; --compare, to draw the bodies of two-blocks, needs the columns t, "
+                      "x1, y1, theta1, theta2, or each body's pose t, x1, y1, theta1, x2, y2, theta2 (as linkage "
+                      "simulate writes them); the header has t, x1, y1, theta1"},
+        // A misspelt column: the header's name it is close to.
+        BadTrajectory{{},
+                      "t,x1,y1,thetaa1,theta2\n0,1,2,0.1,0.2\n1,1,2,0.1,0.2\n",
+                      "{file}: no column 'theta1' (the header has 'thetaa1': did you mean 'theta1'?); --compare"},
         BadTrajectory{{},
                       "t,x1,y1,theta1,theta2,x2,y2\n0,1,2,0.1,0.2,1,2\n0.5,1,2,0.1,0.2,1,2\n0.5,1,2,0.1,0.2,1,2\n1,1,2,"
                       "0.1,0.2,1,2\n",
@@ -186,8 +192,8 @@ INSTANTIATE_TEST_SUITE_P(
                       "{file}:2: the first row has t = 0.1 s, after the clip's start at 0 s"},
         BadTrajectory{{"--mechanism", "double-pendulum"},
                       "t,1.x,1.y,1.theta\n0,1,2,0.1\n1,1,2,0.1\n",
-                      "{file}: no column '2.x'; --compare, to draw the bodies of double-pendulum, needs the columns t, "
-                      "1.x, 1.y, 1.theta, 2.x, 2.y, 2.theta"}));
+                      "{file}: no column '2.theta'; --compare, to draw the bodies of double-pendulum, needs the "
+                      "columns t, 1.theta, 2.theta, or each body's pose t, 1.x, 1.y, 1.theta, 2.x, 2.y, 2.theta"}));
 
 TEST(RenderBadInputFolder, UnwritableFolderIsAnInputError) {
   if (::geteuid() == 0) GTEST_SKIP() << "root writes anywhere";

@@ -39,7 +39,7 @@ Printed printed(const std::vector<std::string>& solve_args, const std::string& h
 }
 
 TEST(RenderEquations, AreTheLinesSolvePrintsForTheCase) {
-  const sym::System homework(homework_mechanism(Inputs{}));
+  const sym::System homework(default_mechanism(Inputs{}));
   const std::vector<std::size_t> rows{8, 6, 4};
   for (const int n : {1, 2, 3}) {
     SCOPED_TRACE("Case " + std::to_string(n));

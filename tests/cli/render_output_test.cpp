@@ -145,6 +145,33 @@ TEST(RenderCli, HomeworkOverlaysFromSettingsAndATrajectoryFile) {
             still("blocks_plain.png", {"--mechanism", "two-blocks"}));
 }
 
+// --compare FILE.csv with only the generalized coordinates (the homework's t, x1, y1,
+// theta1, theta2: x2, y2 follow through the pin), and with its angles in degrees as
+// `simulate --angles deg` heads them ("theta1 (deg)"): the same picture as in radians.
+TEST(RenderCli, ATrajectoryFileOfTheCoordinatesInRadiansOrDegrees) {
+  TempDir dir;
+  for (const char* unit : {"rad", "deg"}) {
+    std::filesystem::create_directory(dir / unit);
+    const RunResult sim =
+        run_linkage({"simulate", "--integrator", "euler", "--dt", "0.01", "--duration", "2", "--angles", unit,
+                     "--columns", "t,x1,y1,theta1,theta2", "--out", (dir / unit / "run.csv").string()});
+    ASSERT_EQ(sim.exit_code, 0) << sim.err;
+  }
+  EXPECT_EQ(read_text(dir / "deg" / "run.csv").substr(0, 36), "t,x1,y1,theta1 (deg),theta2 (deg)\n0,");
+  const auto still = [&](const char* unit) {
+    const RunResult r = render(
+        {"--compare", (dir / unit / "run.csv").string(), "--at", "1.5", "--out", (dir / unit / "still.png").string()});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return file_bytes(dir / unit / "still.png");
+  };
+  const auto radians = still("rad");
+  EXPECT_FALSE(radians.empty());
+  EXPECT_EQ(still("deg"), radians);
+  const RunResult plain = render({"--at", "1.5", "--out", (dir / "plain.png").string()});
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  EXPECT_NE(file_bytes(dir / "plain.png"), radians);  // the compared blocks are drawn
+}
+
 // Issue 23 (f): the homework is two-blocks.toml drawn as any mechanism: its flags and
 // `--mechanism two-blocks --set` at the same settings give the same picture, byte for byte,
 // a still and a clip's frames alike.
@@ -160,6 +187,8 @@ TEST(RenderCli, TheHomeworkIsTwoBlocksDrawnAsAnyMechanism) {
   EXPECT_EQ(homework, drawn("mechanism.png",
                             {"--mechanism", "two-blocks", "--set", "L=0.4", "--set", "1.theta=0.3", "--case", "1"}));
   EXPECT_NE(homework, drawn("other.png", {"--mechanism", "two-blocks", "--case", "1"}));
+  // --set is a setting of the default mechanism as of any (simulate and solve take it too).
+  EXPECT_EQ(homework, drawn("set.png", {"--set", "L=0.4", "--theta1", "0.3", "--case", "1"}));
   for (const std::string flags : {"homework", "mechanism"}) {
     std::vector<std::string> args{"--duration", "0.2", "--frames", (dir / flags).string()};
     if (flags == "mechanism") args.insert(args.end(), {"--mechanism", "two-blocks"});

@@ -92,8 +92,10 @@ TEST_P(SimulateOnePath, HomeworkFlagsAreTwoBlocksWithTheSameSettings) {
   const std::vector<std::string> lines_b = lines_of(b.out);
   ASSERT_FALSE(lines_b.empty());
   std::string header;
-  for (const std::string& name : split(lines_b.front(), ','))
-    header += (header.empty() ? "" : ",") + two_blocks.aliased(name);
+  for (const std::string& name : split(lines_b.front(), ',')) {
+    if (!header.empty()) header += ',';
+    header += two_blocks.aliased(name);
+  }
   const std::string rows = b.out.substr(lines_b.front().size());
   EXPECT_EQ(a.out, header + rows) << "every column, bit for bit";
   EXPECT_EQ(lines_of(a.out).size(), 12U) << "0 to 0.5 s every 0.05 s";

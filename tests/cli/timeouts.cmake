@@ -9,4 +9,9 @@ if(COMMAND set_tests_properties)
   # Release pass. The other long-chain signal tests run under the sanitizers too.
   set_tests_properties(LongChain.ASignalAtAnyMomentOfTheDerivationEndsTheRunWithinASecond PROPERTIES TIMEOUT 240
                                                                                                      LABELS no-sanitize)
+  # The same for solve (about 10 s a run here), render (20 s) and a lesson (45 s): one
+  # run unsignalled, then each signalled within a few tenths of it.
+  set_tests_properties(LongChain.ASignalAtAnyMomentOfSolveEndsItWithinASecond PROPERTIES TIMEOUT 300 LABELS no-sanitize)
+  set_tests_properties(LongChain.ASignalAtAnyMomentOfRenderEndsItWithinASecond PROPERTIES TIMEOUT 600 LABELS no-sanitize)
+  set_tests_properties(LongChain.ASignalAtAnyMomentOfALessonEndsItWithinASecond PROPERTIES TIMEOUT 600 LABELS no-sanitize)
 endif()

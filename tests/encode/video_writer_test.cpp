@@ -5,9 +5,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <csignal>
 #include <cstdlib>
 
 #include "core/error.hpp"
+#include "core/interrupt.hpp"
 #include "encode/encode_test_support.hpp"
 #include "support/test_support.hpp"
 
@@ -186,6 +188,36 @@ TEST(VideoWriter, DestructionWithoutFinishLeavesEarlierFileUntouched) {
   }
   EXPECT_EQ(dir.entries(), std::vector<std::string>{"clip.mp4"});
   EXPECT_EQ(test::read_text(dir / "clip.mp4"), "earlier clip");
+}
+
+// Issue 22: a signal while finish() drains the frames the encoder delayed (seconds for a
+// long clip at 720p) was ignored: the clip was finished and the run ended with exit 0. In a
+// child process (the interrupt flag, once set, stays set), which checks its own folder.
+TEST(VideoWriterDeathTest, ASignalBeforeFinishLeavesTheEarlierFile) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  const auto finish_after_a_signal = [] {
+    install_interrupt_handler();
+    const TempDir dir;
+    test::write_text(dir / "clip.mp4", "earlier clip");
+    int status = 1;
+    try {
+      VideoWriter writer(dir / "clip.mp4", small_options());
+      Frame frame(width, height);
+      for (int k = 0; k < frame_count; ++k) {
+        test::draw_test_frame(frame, k);
+        writer.write(frame);
+      }
+      std::raise(SIGTERM);
+      writer.finish();
+      status = 2;  // finished in spite of the signal
+    } catch (const Error& e) {
+      if (e.exit_status() == 128 + SIGTERM && dir.entries() == std::vector<std::string>{"clip.mp4"} &&
+          test::read_text(dir / "clip.mp4") == "earlier clip")
+        status = 0;
+    }
+    std::_Exit(status);
+  };
+  EXPECT_EXIT(finish_after_a_signal(), ::testing::ExitedWithCode(0), "");
 }
 
 TEST(VideoWriter, FinishReplacesEarlierFile) {

@@ -17,21 +17,7 @@
 #include <string>
 #include <vector>
 
-namespace {
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-// GCC pairs the inlined replacement delete with the library's new and warns; the pair
-// here is matched (malloc/free), so the warning is a false positive in this file only.
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-
-[[gnu::noinline]] void* operator new(std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-[[gnu::noinline]] void operator delete(void* p) noexcept { std::free(p); }
-[[gnu::noinline]] void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+#include "support/allocation_counter.hpp"
 
 namespace linkage::eval {
 namespace {
@@ -392,13 +378,13 @@ TEST(Program, RunAllocatesNothing) {
   for (int k = 0; k < 20; ++k) expressions.push_back(random.any(4));
   const Program p = compile_in(expressions, {x, y});
   std::vector<double> in{0.7, 1.3}, out(p.output_count()), scratch(p.scratch_size());
-  const long before = g_allocations.load();
+  const long before = test::allocations();
   for (int k = 0; k < 100; ++k) {
     in[0] += 0.01;
     p.run(in.data(), out.data(), scratch.data());
   }
-  EXPECT_EQ(g_allocations.load() - before, 0);
-  EXPECT_GT(g_allocations.load(), 0);  // the counter is live: compiling allocated
+  EXPECT_EQ(test::allocations() - before, 0);
+  EXPECT_GT(test::allocations(), 0);  // the counter is live: compiling allocated
 }
 
 TEST(Program, DumpNamesInputsAndOutputs) {

@@ -71,7 +71,7 @@ TEST(LessonReadme, DocumentsEveryNameAndColumn) {
     }
   EXPECT_NE(readme().find(code("pi")), std::string::npos);
   // The homework's columns a plot names, but each point's (the table gives their range).
-  const auto homework = build_mechanism(kHomeworkMechanism, {}, "test", true);
+  const auto homework = build_mechanism(kDefaultMechanism, {}, "test", true);
   for (const MechanismColumn& c : homework->named_columns()) {
     if (c.quantity == MechanismQuantity::point) continue;
     EXPECT_NE(readme().find(code(c.name)), std::string::npos) << c.name;

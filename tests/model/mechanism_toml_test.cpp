@@ -236,7 +236,10 @@ TEST(MechanismToml, PictureGivesTheTitleTrailAndEnsembleCoordinate) {
 TEST(MechanismToml, TableGivesTheInterfacesColumnsInOrder) {
   const Mechanism m = load_mechanism("two-blocks");
   std::string names;
-  for (const TableColumn& c : m.table) names += (names.empty() ? "" : ",") + m.aliased(c.name);
+  for (const TableColumn& c : m.table) {
+    if (!names.empty()) names += ',';
+    names += m.aliased(c.name);
+  }
   EXPECT_EQ(names,
             "t,x1,y1,theta1,theta2,x1_dot,y1_dot,theta1_dot,theta2_dot,x2,y2,x2_dot,y2_dot,x1_ddot,y1_ddot,"
             "theta1_ddot,theta2_ddot,F_x,F_y,energy,momentum_x,momentum_y,angular_momentum,"
@@ -279,7 +282,7 @@ TEST(MechanismToml, TwoBlocksIsTheSpecExample) {
 // The homework's flags land on two-blocks.toml under their mechanism names, with their
 // origin; values left at their defaults keep the file's positions.
 TEST(MechanismToml, HomeworkInputsSetTheTwoBlocksFile) {
-  const Mechanism plain = homework_mechanism(Inputs{});
+  const Mechanism plain = default_mechanism(Inputs{});
   for (const InputKey& key : kInputKeys) {
     const std::string name(key.mechanism_key);
     const bool is_parameter = key.param != nullptr;
@@ -288,7 +291,7 @@ TEST(MechanismToml, HomeworkInputsSetTheTwoBlocksFile) {
   Inputs inputs;
   inputs.set(*find_input_key("theta2_dot"), 1.25, "--theta2-dot");
   inputs.set(*find_input_key("L"), 0.5, "run.toml:2:5");
-  const Mechanism set = homework_mechanism(inputs);
+  const Mechanism set = default_mechanism(inputs);
   EXPECT_EQ(initial(set, "2.theta_dot"), 1.25);
   EXPECT_EQ(parameter(set, "L"), 0.5);
   for (const Parameter& p : set.parameters)

@@ -430,6 +430,105 @@ std::string test_mechanism(const std::string& file) {
   return std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/" + file;
 }
 
+// --show acceleration in free fall: a ≈ g, so each block's acceleration arrow leaves its
+// centre of mass along its weight's. Laid out, the weight stays at G and the acceleration
+// sits beside it, the two heads apart (a head's width and a shaft's), each labelled.
+TEST(MechanismForces, AnAccelerationAlongTheWeightIsDrawnBesideIt) {
+  const Theme theme = load_theme("light", {}, "theme");
+  const sym::System system(load_mechanism("two-blocks"));
+  std::vector<double> times;
+  for (int k = 0; k <= 30; ++k) times.push_back(k / 30.0);
+  SimulationOptions options;
+  options.duration = 1;
+  ClipResult result;
+  const MechanismMotion motion = sample_mechanism_motion(system, sym::checked_initial_state(system).state, options,
+                                                         times, 1, result, {}, {}, nullptr, {}, true);
+  ElementSet shown = ElementSet::defaults();
+  shown.show(Element::acceleration);
+  const MechanismScene scene(mechanism_geometry(system), motion, {}, 2.0, {}, shown);
+  for (const auto& [width, height] : {std::pair{1280, 720}, std::pair{854, 480}}) {
+    const DrawStyle style = style_at(theme, width, height);
+    const cairo::SurfacePtr surface = cairo::image_surface(width, height);
+    const cairo::ContextPtr cr = cairo::context(surface.get());
+    MechanismDrawList list;
+    scene.frame(30, list);
+    const Camera camera = frame_camera(scene, 30, width, height);
+    const ForceLayout layout = layout_forces(cr.get(), style, camera, list, width, height, {});
+    std::size_t pairs = 0;
+    for (std::size_t g = 0; g < list.arrows.size(); ++g) {
+      if (list.arrows[g].kind != MechanismDrawList::Arrow::Kind::gravity) continue;
+      for (std::size_t a = 0; a < list.arrows.size(); ++a) {
+        const MechanismDrawList::Arrow& acceleration = list.arrows[a];
+        if (acceleration.kind != MechanismDrawList::Arrow::Kind::acceleration ||
+            acceleration.body != list.arrows[g].body || acceleration.label.find('.') != std::string::npos)
+          continue;
+        SCOPED_TRACE(acceleration.label);
+        ++pairs;
+        EXPECT_NEAR((acceleration.tail - list.arrows[g].tail).norm(), 0, 1e-12);  // both from G
+        EXPECT_NEAR((layout.arrows[g].a - camera.to_pixels(list.arrows[g].tail)).norm(), 0, 1e-9);
+        const double apart = 2 * style.arrow_head_half_width() + style.arrow_width() - 1e-9;
+        EXPECT_GE((layout.arrows[a].a - layout.arrows[g].a).norm(), apart);
+        EXPECT_GE((layout.arrows[a].b - layout.arrows[g].b).norm(), apart);
+        for (const std::size_t i : {g, a}) {
+          const auto labelled = std::find_if(layout.labels.begin(), layout.labels.end(),
+                                             [&](const PlacedLabel& l) { return l.text == list.arrows[i].label; });
+          EXPECT_NE(labelled, layout.labels.end()) << list.arrows[i].label;
+        }
+      }
+    }
+    EXPECT_EQ(pairs, 2U);
+  }
+}
+
+// The centres of mass's symbol in the legend (the homework clip's row): at the end of a
+// row with room for it, so the legend is no larger (a row of its own left the floating
+// pairs' legend no place clear of the bodies in the test below); painted inside the
+// legend in the homework's frames, and only when the symbols are drawn.
+TEST(MechanismForces, TheCentresOfMassSymbolSitsInTheLegendAtNoCostOfRoom) {
+  const Theme theme = load_theme("light", {}, "theme");
+  const sym::System system(load_mechanism("two-blocks"));
+  const MechanismMotion motion = clip_motion(system, 1.0, 30);
+  const MechanismGeometry geometry = mechanism_geometry(system);
+  const MechanismScene scene(geometry, motion, {geometry.resolve("1.P", "trail")}, 2.0, {});
+  const DrawStyle style = style_at(theme, 1280, 720);
+  MechanismDrawList list;
+  scene.frame(30, list);
+  EXPECT_TRUE(list.legend.com);
+  list.legend.note = "the view follows the centre of mass; the grid stays put";
+  const Camera camera = frame_camera(scene, 30, 1280, 720);
+  const auto legend_pixels = [&](bool com, Rect& legend) {
+    MechanismDrawList drawn = list;
+    drawn.legend.com = com;
+    const cairo::SurfacePtr surface = cairo::image_surface(1280, 720);
+    const cairo::ContextPtr cr = cairo::context(surface.get());
+    const ForceLayout layout = layout_forces(cr.get(), style, camera, drawn, 1280, 720, {});
+    paint_forces(cr.get(), style, camera, drawn, layout);
+    cairo_surface_flush(surface.get());
+    legend = layout.legend;
+    const unsigned char* data = cairo_image_surface_get_data(surface.get());
+    const int stride = cairo_image_surface_get_stride(surface.get());
+    std::vector<unsigned char> inside;
+    for (auto y = static_cast<int>(legend.y); y < static_cast<int>(legend.y + legend.height); ++y)
+      inside.insert(inside.end(), data + y * stride + 4 * static_cast<int>(legend.x),
+                    data + y * stride + 4 * static_cast<int>(legend.x + legend.width));
+    return inside;
+  };
+  Rect with, without;
+  const std::vector<unsigned char> shown = legend_pixels(true, with), hidden = legend_pixels(false, without);
+  ASSERT_FALSE(with.empty());
+  EXPECT_EQ(with.x, without.x);
+  EXPECT_EQ(with.y, without.y);
+  EXPECT_EQ(with.width, without.width);
+  EXPECT_EQ(with.height, without.height);
+  EXPECT_NE(shown, hidden);
+  // Hidden centres of mass: no symbol, no entry.
+  ElementSet bare = ElementSet::defaults();
+  bare.hide(Element::com);
+  const MechanismScene plain(geometry, motion, {}, 2.0, {}, bare);
+  plain.frame(30, list);
+  EXPECT_FALSE(list.legend.com);
+}
+
 // Issue 23 D1: the legend over the triple pendulum's disc, a ladder sliding down a wall
 // and the four-bar's "A on 2"; D5: a legend stating "1 cm = ..." with no scale bar.
 TEST(MechanismForces, TheLegendAndItsScaleBarCoverNoBodyArrowOrJointAt720pAndAtQualityLow) {

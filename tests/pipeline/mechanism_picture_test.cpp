@@ -57,7 +57,7 @@ TEST(MechanismPicture, GravityAndSpringArrowsCarryTheLoadsValues) {
     EXPECT_NEAR(gravity[0].force, 0.2 * 9.81, 1e-12);
     EXPECT_NEAR((gravity[0].tail - centre).norm(), 0, 1e-12);
     EXPECT_NEAR(gravity[0].vector.normalized().y(), -1, 1e-12);
-    EXPECT_EQ(gravity[0].label, "m g on 1");
+    EXPECT_EQ(gravity[0].label, "mg");
     const auto spring = arrows_of(list, Kind::spring);
     ASSERT_EQ(spring.size(), 1U);  // the ground's end is not drawn
     const double length = centre.norm(), rate = centre.dot(velocity) / length;
@@ -93,6 +93,82 @@ TEST(MechanismPicture, GravityAndSpringArrowsCarryTheLoadsValues) {
   fixed.fixed = {{"gravity", 2.0}};  // 1 cm = 2 N
   const MechanismScene two(mechanism_geometry(system), motion, {}, 2.0, fixed, shown);
   EXPECT_NEAR(two.scale_of(Kind::gravity), 0.01 / 2, 1e-15);
+}
+
+// Gravity's label as a lecturer writes the weight: the mass's and g's names side by side
+// ("mg" on each of the homework's blocks, as its clip wrote them), a mass's digits lowered
+// ("m₁g"), a longer name set apart ("ma g"), one arrow per body.
+TEST(MechanismPicture, GravityIsLabelledAsTheWeightIsWritten) {
+  const std::vector<std::pair<std::string, std::vector<std::string>>> expected{
+      {"two-blocks", {"mg", "mg"}}, {"double-pendulum", {"m₁g", "m₂g"}}, {"four-bar", {"ma g", "mb g", "mc g"}}};
+  for (const auto& [name, labels] : expected) {
+    SCOPED_TRACE(name);
+    const sym::System system(load_mechanism(name));
+    const MechanismMotion motion = motion_of(system, 0.2, 10);
+    const MechanismScene scene(mechanism_geometry(system), motion, {}, 2.0, {}, ElementSet::defaults());
+    MechanismDrawList list;
+    scene.frame(1, list);
+    std::vector<std::string> drawn;
+    for (const MechanismDrawList::Arrow& arrow : arrows_of(list, Kind::gravity)) drawn.push_back(arrow.label);
+    EXPECT_EQ(drawn, labels);
+  }
+}
+
+// Under a camera following the centre of mass G, velocities are drawn relative to G (the
+// homework's clip did so): each block's is its own minus G's, so the mass-weighted sum of
+// the arrows' velocities is zero, and the legend says "relative to G"; otherwise absolute.
+TEST(MechanismPicture, VelocitiesAreRelativeToTheFollowedCentreOfMass) {
+  const sym::System system(load_mechanism("unequal-blocks"));
+  const MechanismMotion motion = motion_of(system, 1.0, 10);
+  const MechanismGeometry geometry = mechanism_geometry(system);
+  ElementSet shown = ElementSet::defaults();
+  shown.show(Element::velocity);
+  for (const bool relative : {false, true}) {
+    SCOPED_TRACE(relative);
+    const MechanismScene scene(geometry, motion, {}, 2.0, {}, shown, false, relative);
+    MechanismDrawList list;
+    scene.frame(10, list);
+    const eval::MechanismSample& s = motion.samples[10];
+    const auto velocities = arrows_of(list, Kind::velocity);
+    ASSERT_EQ(velocities.size(), 2U);
+    const Vec2 com(s.com[2], s.com[3]);
+    ASSERT_GT(com.norm(), 5.0);  // falling for a second: G's velocity dwarfs the turning
+    Vec2 momentum = Vec2::Zero();
+    for (std::size_t i = 0; i < 2; ++i) {
+      const Vec2 v = Vec2(s.rates[3 * i], s.rates[3 * i + 1]) - (relative ? com : Vec2::Zero());
+      const Vec2 drawn = velocities[i].force * velocities[i].vector.normalized();
+      EXPECT_NEAR((drawn - v).norm(), 0, 1e-9 * (1 + v.norm()));
+      momentum += geometry.bodies[i].mass * drawn;
+    }
+    if (relative) {
+      EXPECT_NEAR(momentum.norm(), 0, 1e-9);
+    }
+    EXPECT_EQ(list.legend.relative_velocity, relative);
+  }
+}
+
+// A trajectory file with only the generalized coordinates (the homework's t, x1, y1,
+// theta1, theta2): every body's pose follows from them as the System states it, so block
+// 2's centre is the simulation's own, to round-off.
+TEST(MechanismPicture, ATrajectoryOfTheCoordinatesGivesEveryPose) {
+  const sym::System system(load_mechanism("two-blocks"));
+  const MechanismGeometry geometry = mechanism_geometry(system);
+  const MechanismMotion motion = motion_of(system, 1.0, 10);
+  TrajectoryTable table;
+  table.names = mechanism_coordinate_columns(system, &system.mechanism());
+  EXPECT_EQ(table.names, (std::vector<std::string>{"t", "x1", "y1", "theta1", "theta2"}));
+  table.values.assign(5, {});
+  for (std::size_t k = 0; k < motion.times.size(); ++k) {
+    const std::vector<double>& pose = motion.samples[k].pose;
+    const double row[] = {motion.times[k], pose[0], pose[1], pose[2], pose[5]};
+    for (std::size_t c = 0; c < 5; ++c) table.values[c].push_back(row[c]);
+  }
+  table.t = table.values[0];
+  const MechanismMotion read = table_motion(table, geometry, motion.times, &system.mechanism(), &system);
+  for (std::size_t k = 0; k < motion.times.size(); ++k)
+    for (std::size_t i = 0; i < 6; ++i)
+      EXPECT_NEAR(read.samples[k].pose[i], motion.samples[k].pose[i], 1e-12) << "sample " << k << ", " << i;
+  EXPECT_GT(std::fabs(motion.samples[10].pose[3] - motion.samples[10].pose[0]), 0.1);  // block 2 is elsewhere
 }
 
 TEST(MechanismPicture, ShowAndHideDecideTheDrawList) {

@@ -23,7 +23,7 @@ inline Run bare_run(const std::string& label, double duration) {
 /// `duration` s by DOP853, as a lesson's parser builds it.
 inline Run homework_run(const std::string& label, double duration) {
   Run run = bare_run(label, duration);
-  run.built = build_mechanism(kHomeworkMechanism, homework_settings(run.inputs), "test", true);
+  run.built = build_mechanism(kDefaultMechanism, default_mechanism_settings(run.inputs), "test", true);
   return run;
 }
 

@@ -1,7 +1,7 @@
 // --show equations: the case's equations in a band of their own under the motion (and
 // the panel), above the caption; the lines drawn are the ones given, their shared
 // indentation removed; the font shrinks to fit and a frame too small is an error that
-// names a size that fits. Bodies and names stay clear of the band at the default view.
+// names a size that fits. (Bodies stay clear of the band: tests/pipeline/two_blocks_clip_test.cpp.)
 #include "render/equations_overlay.hpp"
 
 #include <gtest/gtest.h>
@@ -11,7 +11,6 @@
 
 #include "core/error.hpp"
 #include "render/cairo_util.hpp"
-#include "render/clip_renderer.hpp"
 #include "render/frame_layout.hpp"
 #include "render/label_layout.hpp"
 #include "render_test_support.hpp"
@@ -145,40 +144,6 @@ TEST(EquationsOverlay, ShrinksToFitThenRefusesNamingASizeThatFits) {
   EXPECT_DOUBLE_EQ(frame_bands(draft).equations.font_size, kMinEquationFont);
   small.elements.hide(Element::equations);  // not shown: not checked
   EXPECT_NO_THROW(small.validate());
-}
-
-TEST(EquationsOverlay, BodiesAndNamesStayClearOfTheBandAtTheDefaultView) {
-  const Params p;
-  const Motion motion = test::closed_form_motion(p, State{}, 41, 0.25, true);
-  const Theme theme = load_theme("light", {}, "theme");
-  for (const auto& [width, height] : {std::pair{854, 480}, std::pair{1280, 720}}) {
-    for (const bool panel : {false, true}) {
-      SCOPED_TRACE(std::to_string(width) + (panel ? " with a panel" : ""));
-      RenderSettings settings = with_equations(width, height);
-      settings.captions = {{0.0, "The pin force is small next to the weight"}};
-      FrameLayout layout(settings, theme, panel ? theta_panel(motion.samples.size()) : PanelData{});
-      const Rect band = layout.equations_rect();
-      ClipRenderer renderer(p, motion, layout.scene_settings(), theme, "Case 1");
-      Frame frame(width, height);
-      for (std::size_t k = 0; k < motion.samples.size(); ++k) {
-        SCOPED_TRACE("t = " + std::to_string(motion.samples[k].t));
-        layout.draw(k, motion.samples[k].t, frame, [&](Frame& scene) { renderer.draw(k, scene); });
-        const SceneLabels& labels = renderer.labels();
-        ASSERT_GT(labels.count, 0U);
-        for (std::size_t i = 0; i < labels.count; ++i)
-          EXPECT_FALSE(overlaps(labels.labels[i].box, band)) << labels.labels[i].text.data();
-        std::size_t edges = 0;
-        for (std::size_t i = 0; i < labels.segment_count; ++i) {
-          const Segment& s = labels.segments[i];
-          if (s.body < 0) continue;
-          ++edges;
-          EXPECT_FALSE(crosses(band, s.a, s.b)) << "an edge of block " << s.body + 1;
-          EXPECT_LT(std::max(s.a.y(), s.b.y()), band.y) << "block " << s.body + 1 << " reaches into the band";
-        }
-        EXPECT_EQ(edges, 8U);  // both blocks drawn
-      }
-    }
-  }
 }
 
 }  // namespace

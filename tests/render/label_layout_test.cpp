@@ -1,13 +1,12 @@
-// Names never cover one another, an arrow or a block: the homework's frames at many
-// times, at the default and the common arrow scale, and at two frame sizes. (Any
-// mechanism's frames: tests/pipeline/mechanism_clip_test.cpp.)
+// Where a name goes: past an arrow's head when free, else around what is in the way.
+// (That names never cover one another, an arrow or a body in any mechanism's frames, the
+// homework's among them: tests/pipeline/mechanism_clip_test.cpp.)
 #include "render/label_layout.hpp"
 
 #include <gtest/gtest.h>
 
-#include <string>
+#include <array>
 
-#include "render/clip_renderer.hpp"
 #include "render_test_support.hpp"
 
 namespace linkage {
@@ -34,56 +33,6 @@ TEST(LabelLayout, PlacesPastTheHeadWhenFreeAndAroundWhatIsInTheWay) {
                                       Segment{{50, 50}, {0, 50}, 0}, Segment{{0, 50}, {0, 0}, 0}};
   EXPECT_TRUE(touches({20, 20, 5, 5}, square));
   EXPECT_FALSE(touches({60, 20, 5, 5}, square));
-}
-
-TEST(LabelLayout, HomeworkNamesKeepClearOfEachOtherArrowsAndBlocks) {
-  const Params p;
-  // Ten seconds: the blocks turn through every relative angle and the pin force through
-  // every direction; every quarter second.
-  const Motion motion = test::closed_form_motion(p, State{}, 41, 0.25, true);
-  for (const bool common : {false, true}) {
-    for (const auto& [width, height] : {std::pair{854, 480}, std::pair{1280, 720}}) {
-      SCOPED_TRACE(std::string(common ? "common" : "own") + " scale, " + std::to_string(width));
-      RenderSettings settings;
-      settings.width = width;
-      settings.height = height;
-      settings.elements.show(Element::velocity);  // the most arrows
-      settings.arrow_scale.common = common;
-      ClipRenderer renderer(p, motion, settings, load_theme("light", {}, "theme"), "Case 3");
-      Frame frame(width, height);
-      std::size_t valued = 0;
-      for (std::size_t k = 0; k < motion.samples.size(); ++k) {
-        SCOPED_TRACE("t = " + std::to_string(motion.samples[k].t));
-        renderer.draw(k, frame);
-        const SceneLabels& layout = renderer.labels();
-        // Both blocks, the pin and six arrows are named.
-        ASSERT_EQ(layout.count, 2U + 1U + 6U);
-        const std::span<const Segment> segments(layout.segments.data(), layout.segment_count);
-        for (std::size_t i = 0; i < layout.count; ++i) {
-          const SceneLabels::Placed& a = layout.labels[i];
-          const std::string text = a.text.data();
-          if (text.find(" = ") != std::string::npos) ++valued;
-          for (std::size_t j = i + 1; j < layout.count; ++j)
-            EXPECT_FALSE(overlaps(a.box, layout.labels[j].box)) << text << " / " << layout.labels[j].text.data();
-          for (const Segment& s : segments) {
-            // A block's number is on its block; nothing else touches a block or an arrow.
-            if (s.body >= 0 && a.block) continue;
-            EXPECT_FALSE(crosses(a.box, s.a, s.b)) << text;
-          }
-          if (!a.block) {
-            EXPECT_FALSE(touches(a.box, segments)) << text;
-            // Nor the title, legend, scale bar or HUD (the first boxes taken).
-            for (std::size_t panel = 0; panel < 4; ++panel) EXPECT_FALSE(overlaps(a.box, layout.boxes[panel])) << text;
-          }
-        }
-      }
-      // At one scale both forces' labels give their values (the pin force's arrow too
-      // short to see, drawn longer), so their ratio reads off the frame.
-      if (common) {
-        EXPECT_EQ(valued, 4 * motion.samples.size());
-      }
-    }
-  }
 }
 
 }  // namespace

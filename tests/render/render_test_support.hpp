@@ -1,6 +1,5 @@
 #pragma once
-// Helpers for the render tests: PNG files through libspng and pixel colours (motions
-// come from scene/scene_test_support.hpp).
+// Helpers for the render tests: PNG files through libspng and pixel colours.
 #include <spng.h>
 
 #include <cmath>
@@ -16,7 +15,6 @@
 
 #include "core/frame.hpp"
 #include "render/theme.hpp"
-#include "scene/scene_test_support.hpp"
 
 namespace linkage::test {
 

@@ -96,9 +96,14 @@ std::vector<std::string> child_environment() {
 RunResult run_linkage(const RunOptions& options) {
   using Clock = std::chrono::steady_clock;
   std::array<int, 2> in{-1, -1}, out{-1, -1}, err{-1, -1};
-  if (::pipe2(in.data(), O_CLOEXEC) != 0 || ::pipe2(err.data(), O_CLOEXEC) != 0)
+  if (::pipe2(in.data(), O_CLOEXEC) != 0) throw std::runtime_error("pipe failed");
+  Terminal terminal, error_terminal;
+  if (options.stderr_terminal) {
+    error_terminal = open_terminal();
+    err = {error_terminal.master, error_terminal.slave};
+  } else if (::pipe2(err.data(), O_CLOEXEC) != 0) {
     throw std::runtime_error("pipe failed");
-  Terminal terminal;
+  }
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_adddup2(&actions, in[0], 0);

@@ -30,6 +30,7 @@ struct RunOptions {
   std::string input;             // written to stdin, which is then closed...
   bool keep_stdin_open = false;  // ...unless this is set: a pipe open until the process ends
   enum class Stdout { pipe, dev_full, terminal } stdout_to = Stdout::pipe;  // terminal: a pseudo-terminal
+  bool stderr_terminal = false;                                             // stderr on a pseudo-terminal
   std::filesystem::path cwd;                                                // empty: this process's
   double timeout_seconds = 60;                                              // then SIGKILL and RunResult::timed_out
   /// When set: sent once `ready(stdout so far, stderr so far)` returns true (it is
