@@ -234,7 +234,7 @@ class Parser {
     if (n == nullptr) return;
     if (!n->is_table()) top.fail(key, "'" + std::string(key) + "' must be a table, got " + type_phrase(*n));
     for (const auto& [name, value] : *n->as_table())
-      if (const InputKey* input = find_input_key(name.str()); input && (input->param != nullptr) != parameters)
+      if (const InputKey* input = find_input_key(name.str()); input && input->parameter != parameters)
         throw Error::input(
             position(file_text_, name.source()) + ": lesson: '" + std::string(name.str()) + "' is " +
             (parameters ? "a state value; put it under [state]" : "a parameter; put it under [parameters]"));
