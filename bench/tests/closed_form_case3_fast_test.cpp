@@ -6,9 +6,9 @@
 #include <cmath>
 #include <random>
 
-#include "formulations/case3.hpp"
-#include "formulations/case3_fast.hpp"
-#include "formulations/linear_solve.hpp"
+#include "bench/closed_form/case3.hpp"
+#include "bench/closed_form/case3_fast.hpp"
+#include "bench/closed_form/linear_solve.hpp"
 #include "support/test_support.hpp"
 
 namespace linkage {

@@ -5,9 +5,9 @@
 
 #include <cmath>
 
+#include "bench/closed_form/kinematics.hpp"
+#include "bench/closed_form/simulation.hpp"
 #include "bench/tests/spec_reference.hpp"
-#include "integrate/simulation.hpp"
-#include "model/kinematics.hpp"
 
 namespace linkage {
 namespace {

@@ -7,13 +7,13 @@
 #include <string>
 #include <vector>
 
+#include "bench/closed_form/kinematics.hpp"
+#include "bench/closed_form/linkage_rhs.hpp"
+#include "bench/closed_form/projection.hpp"
+#include "bench/closed_form/simulation.hpp"
 #include "bench/tests/spec_reference.hpp"
 #include "core/error.hpp"
 #include "integrate/explicit_rk.hpp"
-#include "integrate/linkage_rhs.hpp"
-#include "integrate/projection.hpp"
-#include "integrate/simulation.hpp"
-#include "model/kinematics.hpp"
 
 namespace linkage {
 namespace {

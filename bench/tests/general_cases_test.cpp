@@ -6,12 +6,12 @@
 
 #include <random>
 
+#include "bench/closed_form/formulation.hpp"
+#include "bench/closed_form/kinematics.hpp"
+#include "bench/closed_form/linkage_rhs.hpp"
 #include "evaluate/mechanism_dynamics.hpp"
 #include "formulations/case_numbers.hpp"
 #include "formulations/case_system.hpp"
-#include "formulations/formulation.hpp"
-#include "integrate/linkage_rhs.hpp"
-#include "model/kinematics.hpp"
 #include "support/mechanisms_in_code.hpp"
 #include "symbolic/energy.hpp"
 
@@ -41,7 +41,7 @@ TEST(GeneralCases, HomeworkMatchesTheClosedForm) {
 }
 
 // Case 3 of the general path against the homework's closed form, which is written out by
-// hand (formulations/case3_fast.hpp): same coordinates (x1, y1, theta1, theta2) and rates.
+// hand (closed_form/case3_fast.hpp): same coordinates (x1, y1, theta1, theta2) and rates.
 TEST(MechanismDynamics, HomeworkMatchesTheClosedFormAtRandomStates) {
   const sym::System system(built::homework());
   Params p;
@@ -67,7 +67,7 @@ TEST(MechanismDynamics, HomeworkMatchesTheClosedFormAtRandomStates) {
   }
 }
 
-// T, V, p and H against the homework's closed form (model/kinematics: H about the centre
+// T, V, p and H against the homework's closed form (closed_form/kinematics.hpp: H about the centre
 // of mass G, so H_O = H_G + M G x G').
 TEST(Energy, HomeworkMatchesTheClosedForm) {
   const sym::System system(built::homework());
