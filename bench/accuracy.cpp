@@ -8,14 +8,14 @@
 #include <thread>
 
 #include "bench/accuracy_report.hpp"
+#include "bench/closed_form/kinematics.hpp"
+#include "bench/closed_form/linear_solve.hpp"
+#include "bench/closed_form/linkage_rhs.hpp"
 #include "bench/rhs.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
 #include "core/number_format.hpp"
 #include "core/progress.hpp"
-#include "formulations/linear_solve.hpp"
-#include "integrate/linkage_rhs.hpp"
-#include "model/kinematics.hpp"
 
 namespace linkage::bench {
 namespace {

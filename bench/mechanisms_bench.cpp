@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 
+#include "bench/closed_form/linkage_rhs.hpp"
 #include "bench/double_pendulum_user.hpp"
 #include "bench/timing.hpp"
 #include "core/atomic_file.hpp"
@@ -13,7 +14,6 @@
 #include "core/number_format.hpp"
 #include "core/progress.hpp"
 #include "evaluate/mechanism_dynamics.hpp"
-#include "integrate/linkage_rhs.hpp"
 #include "integrate/mechanism_simulation.hpp"
 #include "model/mechanism_toml.hpp"
 #include "render/plot.hpp"
@@ -68,7 +68,7 @@ Loaded load(const Mechanism& mechanism) {
   return out;
 }
 
-/// The homework's closed form (formulations/case3_fast.hpp and friends) at its file's values.
+/// The homework's closed form (closed_form/case3_fast.hpp and friends) at its file's values.
 void closed_form_rows(const sym::System& system, const GiNaC::exmap& state, double min_batch, int batches,
                       std::vector<RhsRow>& rows) {
   Params p;

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "bench/closed_form/state.hpp"
 #include "bench/scenarios.hpp"
-#include "model/state.hpp"
 
 namespace linkage::bench {
 
@@ -58,7 +58,7 @@ struct PeerLibrary {
 [[nodiscard]] std::vector<std::string> peers_not_built();
 
 /// Our integrators on one case (its fastest right-hand side), in the order of
-/// integrate/simulation.hpp's integrators().
+/// integrate/simulation_options.hpp's integrators().
 [[nodiscard]] std::vector<Method> linkage_methods(int case_id);
 /// Boost.Odeint RKF78, Dopri5 (dense output) and Bulirsch-Stoer on Case 3, each with
 /// the user's and with our right-hand side. Defined only when Boost is built in.

@@ -7,15 +7,15 @@
 // definition's right-hand side, to show what the closed form buys.
 #include <string>
 
+#include "bench/closed_form/kinematics.hpp"
+#include "bench/closed_form/linkage_rhs.hpp"
 #include "bench/method.hpp"
 #include "bench/rhs.hpp"
 #include "integrate/dop853.hpp"
 #include "integrate/dopri5.hpp"
 #include "integrate/explicit_rk.hpp"
 #include "integrate/gauss_legendre.hpp"
-#include "integrate/linkage_rhs.hpp"
 #include "integrate/symplectic_euler.hpp"
-#include "model/kinematics.hpp"
 
 namespace linkage::bench {
 namespace {

@@ -15,10 +15,10 @@
 #include <boost/numeric/odeint/stepper/runge_kutta_dopri5.hpp>
 #include <boost/numeric/odeint/stepper/runge_kutta_fehlberg78.hpp>
 
+#include "bench/closed_form/case3_fast.hpp"
+#include "bench/closed_form/kinematics.hpp"
 #include "bench/method.hpp"
 #include "bench/rhs.hpp"
-#include "formulations/case3_fast.hpp"
-#include "model/kinematics.hpp"
 
 namespace linkage::bench {
 namespace {

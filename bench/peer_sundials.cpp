@@ -23,11 +23,11 @@
 #include <memory>
 #include <string>
 
+#include "bench/closed_form/case3_fast.hpp"
+#include "bench/closed_form/kinematics.hpp"
+#include "bench/closed_form/linkage_rhs.hpp"
 #include "bench/method.hpp"
 #include "bench/rhs.hpp"
-#include "formulations/case3_fast.hpp"
-#include "integrate/linkage_rhs.hpp"
-#include "model/kinematics.hpp"
 
 namespace linkage::bench {
 namespace {

@@ -8,8 +8,8 @@
 #include <optional>
 #include <string>
 
+#include "bench/closed_form/state.hpp"
 #include "bench/scenarios.hpp"
-#include "model/state.hpp"
 
 namespace linkage::bench {
 

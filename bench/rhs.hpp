@@ -1,9 +1,9 @@
 #pragma once
 // Right-hand sides y' = f(y) of the linkage for the benchmarks, beside the ones the
-// integrators use (integrate/linkage_rhs.hpp: GeneralizedRhs<Case>, MaximalRhs, from
+// integrators use (closed_form/linkage_rhs.hpp: GeneralizedRhs<Case>, MaximalRhs, from
 // the one definition of each case).
 //
-//   - FastCase3Rhs<T>: the closed-form Case 3 (formulations/case3_fast.hpp) as an
+//   - FastCase3Rhs<T>: the closed-form Case 3 (closed_form/case3_fast.hpp) as an
 //     integrator's f(t, y, dydt), for double runs and long double references;
 //   - user_case3_rhs: what a user of an ODE library would write for Case 3: the 4x4 A
 //     and B of spec sec. 5 typed in by hand into fixed-size Eigen types, then
@@ -13,9 +13,9 @@
 #include <Eigen/LU>
 #include <cmath>
 
-#include "formulations/case3_fast.hpp"
-#include "integrate/linkage_rhs.hpp"
-#include "model/params.hpp"
+#include "bench/closed_form/case3_fast.hpp"
+#include "bench/closed_form/linkage_rhs.hpp"
+#include "bench/closed_form/params.hpp"
 
 namespace linkage::bench {
 

@@ -5,8 +5,8 @@
 #include <string_view>
 #include <vector>
 
-#include "model/params.hpp"
-#include "model/state.hpp"
+#include "bench/closed_form/params.hpp"
+#include "bench/closed_form/state.hpp"
 
 namespace linkage::bench {
 

@@ -7,20 +7,20 @@
 #include <sstream>
 
 #include "bench/accuracy_report.hpp"
+#include "bench/closed_form/case1.hpp"
+#include "bench/closed_form/case2.hpp"
+#include "bench/closed_form/case3.hpp"
+#include "bench/closed_form/case3_fast.hpp"
+#include "bench/closed_form/formulation.hpp"
+#include "bench/closed_form/kinematics.hpp"
+#include "bench/closed_form/linear_solve.hpp"
+#include "bench/closed_form/simulation.hpp"
 #include "bench/scenarios.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
 #include "core/number_format.hpp"
 #include "core/progress.hpp"
-#include "formulations/case1.hpp"
-#include "formulations/case2.hpp"
-#include "formulations/case3.hpp"
-#include "formulations/case3_fast.hpp"
-#include "formulations/formulation.hpp"
-#include "formulations/linear_solve.hpp"
-#include "integrate/simulation.hpp"
-#include "model/kinematics.hpp"
 #include "render/plot.hpp"
 
 namespace linkage::bench {

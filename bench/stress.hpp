@@ -1,6 +1,6 @@
 #pragma once
 // `linkage bench stress`: numerical stability, run through the tool's own engine
-// (integrate/simulation.hpp), in four studies:
+// (closed_form/simulation.hpp), in four studies:
 //   long runs      every integrator on Cases 3 and 1 over 10^4 s: energy and constraint
 //                  error against time;
 //   stable step    the largest step of each fixed-step method (per case) whose run stays

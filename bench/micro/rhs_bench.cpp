@@ -7,10 +7,10 @@
 #include <array>
 #include <random>
 
+#include "bench/closed_form/case3_fast.hpp"
+#include "bench/closed_form/linear_solve.hpp"
+#include "bench/closed_form/linkage_rhs.hpp"
 #include "bench/rhs.hpp"
-#include "formulations/case3_fast.hpp"
-#include "formulations/linear_solve.hpp"
-#include "integrate/linkage_rhs.hpp"
 
 namespace linkage::bench {
 namespace {

@@ -6,15 +6,15 @@
 
 #include <cstdint>
 
+#include "bench/closed_form/kinematics.hpp"
+#include "bench/closed_form/linkage_rhs.hpp"
 #include "bench/rhs.hpp"
 #include "bench/scenarios.hpp"
 #include "integrate/dop853.hpp"
 #include "integrate/dopri5.hpp"
 #include "integrate/explicit_rk.hpp"
 #include "integrate/gauss_legendre.hpp"
-#include "integrate/linkage_rhs.hpp"
 #include "integrate/symplectic_euler.hpp"
-#include "model/kinematics.hpp"
 
 namespace linkage::bench {
 namespace {

@@ -8,12 +8,12 @@
 #include <filesystem>
 #include <string>
 
+#include "bench/closed_form/case3.hpp"
+#include "bench/closed_form/case3_fast.hpp"
+#include "bench/closed_form/linear_solve.hpp"
 #include "bench/method.hpp"
 #include "bench/reference.hpp"
 #include "bench/rhs.hpp"
-#include "formulations/case3.hpp"
-#include "formulations/case3_fast.hpp"
-#include "formulations/linear_solve.hpp"
 #include "linkage/reference_example.hpp"
 #include "support/test_support.hpp"
 

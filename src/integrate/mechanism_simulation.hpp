@@ -8,8 +8,8 @@
 #include <optional>
 #include <string>
 
+#include "columns/mechanism_columns.hpp"
 #include "evaluate/mechanism_dynamics.hpp"
-#include "integrate/mechanism_columns.hpp"
 #include "integrate/simulation_options.hpp"
 #include "symbolic/system.hpp"
 

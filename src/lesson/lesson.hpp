@@ -11,7 +11,7 @@
 #include <variant>
 #include <vector>
 
-#include "integrate/mechanism_columns.hpp"
+#include "columns/mechanism_columns.hpp"
 #include "integrate/simulation_options.hpp"
 #include "lesson/expression.hpp"
 #include "lesson/text_template.hpp"

@@ -20,7 +20,6 @@
 #include "lesson/schema.hpp"
 #include "model/inputs_toml.hpp"
 #include "model/mechanism_toml.hpp"
-#include "model/toml_table.hpp"
 #include "pipeline/clip_request.hpp"
 #include "pipeline/clip_result.hpp"
 #include "pipeline/panel_data.hpp"
@@ -33,6 +32,7 @@
 #include "report/quotable_values.hpp"
 #include "symbolic/loop_closure.hpp"
 #include "symbolic/system.hpp"
+#include "toml/toml_table.hpp"
 
 namespace linkage::lesson {
 namespace {
@@ -234,7 +234,7 @@ class Parser {
     if (n == nullptr) return;
     if (!n->is_table()) top.fail(key, "'" + std::string(key) + "' must be a table, got " + type_phrase(*n));
     for (const auto& [name, value] : *n->as_table())
-      if (const InputKey* input = find_input_key(name.str()); input && (input->param != nullptr) != parameters)
+      if (const InputKey* input = find_input_key(name.str()); input && input->parameter != parameters)
         throw Error::input(
             position(file_text_, name.source()) + ": lesson: '" + std::string(name.str()) + "' is " +
             (parameters ? "a state value; put it under [state]" : "a parameter; put it under [parameters]"));

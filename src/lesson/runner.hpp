@@ -8,7 +8,6 @@
 #include <string>
 #include <vector>
 
-#include "formulations/expr.hpp"
 #include "lesson/lesson.hpp"
 #include "pipeline/clip_request.hpp"
 #include "report/document_writer.hpp"

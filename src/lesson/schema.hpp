@@ -5,7 +5,7 @@
 #include <span>
 #include <string_view>
 
-#include "model/toml_table.hpp"
+#include "toml/toml_table.hpp"
 
 namespace linkage::lesson {
 

@@ -38,10 +38,6 @@ std::optional<std::string_view> closest_input_key(std::string_view key) {
   return find_input_key(*close)->key;
 }
 
-std::string source_position(const std::string& file, long line, long column) {
-  return file + ":" + std::to_string(line) + ":" + std::to_string(column);
-}
-
 std::string canonical_text(const Inputs& inputs) {
   std::string out;
   for (const InputKey& key : kInputKeys) {
@@ -51,41 +47,20 @@ std::string canonical_text(const Inputs& inputs) {
   return out;
 }
 
-Inputs::Inputs() { origins_.fill("default"); }
-
-double Inputs::value(const InputKey& key) const {
-  return key.param != nullptr ? params_.*key.param : state_.*key.state;
+Inputs::Inputs() {
+  for (std::size_t i = 0; i < kInputKeys.size(); ++i) values_[i] = kInputKeys[i].default_value;
+  origins_.fill("default");
 }
+
+double Inputs::value(const InputKey& key) const { return values_[index_of(key)]; }
 
 const std::string& Inputs::origin(const InputKey& key) const { return origins_[index_of(key)]; }
 
 void Inputs::set(const InputKey& key, double value, std::string origin) {
   if (!std::isfinite(value))
     throw Error::invalid(origin, std::string(key.key) + " = " + format_roundtrip(value) + " is not a finite number");
-  if (key.param != nullptr)
-    params_.*key.param = value;
-  else
-    state_.*key.state = value;
+  values_[index_of(key)] = value;
   origins_[index_of(key)] = std::move(origin);
-}
-
-std::string likely_causes(const Inputs& inputs) {
-  std::string list;
-  for (const InputKey& key : kInputKeys) {
-    const double v = std::fabs(inputs.value(key));
-    if (v >= 1e50 || (v > 0 && v <= 1e-50)) {
-      list += list.empty() ? "" : ", ";
-      list += std::string(key.key) + " = " + format_roundtrip(inputs.value(key)) + " (" + inputs.origin(key) + ")";
-    }
-  }
-  if (!list.empty()) return list;
-  // Nothing extreme on its own: the combination overflowed; name what was given.
-  for (const InputKey& key : kInputKeys) {
-    if (inputs.origin(key) == "default") continue;
-    list += list.empty() ? "" : ", ";
-    list += std::string(key.key) + " = " + format_roundtrip(inputs.value(key)) + " (" + inputs.origin(key) + ")";
-  }
-  return list;
 }
 
 void Inputs::validate() const {
@@ -95,16 +70,18 @@ void Inputs::validate() const {
     throw Error::invalid(origin(k), std::string(k.key) + " = " + format_roundtrip(value(k)) + " " +
                                         std::string(k.unit) + " is out of range; " + rule);
   };
-  if (!(params_.L > 0)) fail("L", "the block length must be > 0");
-  if (!(params_.w > 0)) fail("w", "the block width must be > 0");
-  if (!(params_.m > 0)) fail("m", "the mass must be > 0");
-  if (!(params_.g >= 0)) fail("g", "g must be >= 0 (gravity points along -y)");
-  if (!(params_.b >= 0 && params_.b <= params_.L)) {
+  auto get = [&](const char* key) { return value(*find_input_key(key)); };
+  const double L = get("L"), b = get("b");
+  if (!(L > 0)) fail("L", "the block length must be > 0");
+  if (!(get("w") > 0)) fail("w", "the block width must be > 0");
+  if (!(get("m") > 0)) fail("m", "the mass must be > 0");
+  if (!(get("g") >= 0)) fail("g", "g must be >= 0 (gravity points along -y)");
+  if (!(b >= 0 && b <= L)) {
     // b was left at its default: the L given is what made it invalid.
     if (origin(*find_input_key("b")) == "default" && origin(*find_input_key("L")) != "default")
-      fail("L", "the default b = " + format_roundtrip(params_.b) + " m must lie in [0, L] = [0, " +
-                    format_roundtrip(params_.L) + "] m; give a smaller b too");
-    fail("b", "b must lie in [0, L] = [0, " + format_roundtrip(params_.L) + "] m");
+      fail("L", "the default b = " + format_roundtrip(b) + " m must lie in [0, L] = [0, " + format_roundtrip(L) +
+                    "] m; give a smaller b too");
+    fail("b", "b must lie in [0, L] = [0, " + format_roundtrip(L) + "] m");
   }
 }
 

@@ -8,34 +8,31 @@
 #include <string>
 #include <string_view>
 
-#include "model/params.hpp"
-#include "model/state.hpp"
-
 namespace linkage {
 
 struct InputKey {
-  std::string_view key;          // TOML key and JSON name, e.g. "theta1_dot"
-  std::string_view unit;         // e.g. "rad/s"
-  std::string_view description;  // e.g. "angular velocity of block 1"
-  double Params::*param = nullptr;
-  double State::*state = nullptr;
+  std::string_view key;              // TOML key and JSON name, e.g. "theta1_dot"
+  std::string_view unit;             // e.g. "rad/s"
+  std::string_view description;      // e.g. "angular velocity of block 1"
+  bool parameter = false;            // one of the five parameters, else a state value
+  double default_value = 0;          // the spec's example, as mechanisms/two-blocks.toml has it
   std::string_view mechanism_key{};  // the same value in mechanisms/two-blocks.toml, e.g. "2.theta_dot"
 };
 
 inline constexpr std::array<InputKey, 13> kInputKeys{{
-    {"L", "m", "block length", &Params::L, nullptr, "L"},
-    {"w", "m", "block width", &Params::w, nullptr, "w"},
-    {"b", "m", "pin distance from one end of each block, in [0, L]", &Params::b, nullptr, "b"},
-    {"m", "kg", "mass of each block", &Params::m, nullptr, "m"},
-    {"g", "m/s^2", "gravitational acceleration along -y", &Params::g, nullptr, "g"},
-    {"x1", "m", "x of block 1's centre of mass", nullptr, &State::x1, "1.x"},
-    {"y1", "m", "y of block 1's centre of mass", nullptr, &State::y1, "1.y"},
-    {"theta1", "rad", "angle of block 1 from +x", nullptr, &State::theta1, "1.theta"},
-    {"theta2", "rad", "angle of block 2 from +x", nullptr, &State::theta2, "2.theta"},
-    {"x1_dot", "m/s", "x velocity of block 1's centre of mass", nullptr, &State::x1_dot, "1.x_dot"},
-    {"y1_dot", "m/s", "y velocity of block 1's centre of mass", nullptr, &State::y1_dot, "1.y_dot"},
-    {"theta1_dot", "rad/s", "angular velocity of block 1", nullptr, &State::theta1_dot, "1.theta_dot"},
-    {"theta2_dot", "rad/s", "angular velocity of block 2", nullptr, &State::theta2_dot, "2.theta_dot"},
+    {"L", "m", "block length", true, 0.3, "L"},
+    {"w", "m", "block width", true, 0.1, "w"},
+    {"b", "m", "pin distance from one end of each block, in [0, L]", true, 0.04, "b"},
+    {"m", "kg", "mass of each block", true, 0.1, "m"},
+    {"g", "m/s^2", "gravitational acceleration along -y", true, 9.81, "g"},
+    {"x1", "m", "x of block 1's centre of mass", false, 1, "1.x"},
+    {"y1", "m", "y of block 1's centre of mass", false, 2, "1.y"},
+    {"theta1", "rad", "angle of block 1 from +x", false, 0.1, "1.theta"},
+    {"theta2", "rad", "angle of block 2 from +x", false, 0.2, "2.theta"},
+    {"x1_dot", "m/s", "x velocity of block 1's centre of mass", false, 0.15, "1.x_dot"},
+    {"y1_dot", "m/s", "y velocity of block 1's centre of mass", false, 0.25, "1.y_dot"},
+    {"theta1_dot", "rad/s", "angular velocity of block 1", false, 0.35, "1.theta_dot"},
+    {"theta2_dot", "rad/s", "angular velocity of block 2", false, 0.45, "2.theta_dot"},
 }};
 
 /// The input named `key` (TOML spelling), or nullptr.
@@ -45,18 +42,11 @@ inline constexpr std::array<InputKey, 13> kInputKeys{{
 /// The valid key closest to a misspelt one (edit distance), if any is close.
 [[nodiscard]] std::optional<std::string_view> closest_input_key(std::string_view key);
 
-class Inputs;
-/// For a value that overflowed: the inputs far outside physical sizes (|v| >= 1e50 or
-/// <= 1e-50), else every input given, each with its origin ("x1_dot = 1e+200 (--x1-dot)").
-[[nodiscard]] std::string likely_causes(const Inputs& inputs);
-
 /// Parameters and state together with where each value came from ("default", a flag,
 /// "run.toml:3:5"), so errors can name the source.
 class Inputs {
  public:
   Inputs();
-  [[nodiscard]] const Params& params() const { return params_; }
-  [[nodiscard]] const State& state() const { return state_; }
   [[nodiscard]] double value(const InputKey& key) const;
   [[nodiscard]] const std::string& origin(const InputKey& key) const;
 
@@ -70,13 +60,9 @@ class Inputs {
   void validate() const;
 
  private:
-  Params params_;
-  State state_;
+  std::array<double, kInputKeys.size()> values_;
   std::array<std::string, kInputKeys.size()> origins_;
 };
-
-/// "file:line:column" for a source position.
-[[nodiscard]] std::string source_position(const std::string& file, long line, long column);
 
 /// "L=0.3;w=0.1;...;theta2_dot=0.45" in round-trip form (for content hashes).
 [[nodiscard]] std::string canonical_text(const Inputs& inputs);

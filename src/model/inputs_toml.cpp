@@ -13,7 +13,7 @@
 #include "core/error.hpp"
 #include "core/input_file.hpp"
 #include "core/limits.hpp"
-#include "model/toml_table.hpp"
+#include "toml/toml_table.hpp"
 
 namespace linkage {
 
@@ -128,32 +128,6 @@ toml::table parse_toml_text(std::string_view toml_text, const std::string& path,
     throw Error::input(source_position(path, where.line, where.column) + ": " + std::string(e.description()) +
                        (at == std::string_view::npos ? "" : lookalike_advice(toml_text, at)));
   }
-}
-
-std::string type_phrase(const toml::node& node) {
-  switch (node.type()) {
-    case toml::node_type::string:
-      return "a string";
-    case toml::node_type::integer:
-      return "an integer";
-    case toml::node_type::floating_point:
-      return "a float";
-    case toml::node_type::boolean:
-      return "a boolean";
-    case toml::node_type::array:
-      return "an array";
-    case toml::node_type::table:
-      return "a table";
-    case toml::node_type::date:
-      return "a date";
-    case toml::node_type::time:
-      return "a time";
-    case toml::node_type::date_time:
-      return "a date-time";
-    case toml::node_type::none:
-      return "nothing";
-  }
-  return "nothing";
 }
 
 }  // namespace linkage

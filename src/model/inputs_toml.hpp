@@ -16,9 +16,6 @@ namespace linkage {
 void apply_toml(Inputs& inputs, const toml::table& table, const std::string& file,
                 const std::string& context = "inputs");
 
-/// "a string", "an integer", "a table", ... for "must be a number, got ..." messages.
-[[nodiscard]] std::string type_phrase(const toml::node& node);
-
 /// Parses a TOML file, turning a syntax error into Error::input with file:line:column
 /// and an unreadable file into Error::input naming `origin`.
 [[nodiscard]] toml::table parse_toml_file(const std::string& path, const std::string& origin);

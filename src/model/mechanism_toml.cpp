@@ -17,7 +17,7 @@
 #include "core/number_format.hpp"
 #include "model/inputs_toml.hpp"
 #include "model/joint_types.hpp"
-#include "model/toml_table.hpp"
+#include "toml/toml_table.hpp"
 
 namespace linkage {
 namespace {

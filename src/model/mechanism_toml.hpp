@@ -1,7 +1,7 @@
 #pragma once
 // Reading a mechanism file (mechanisms/README.md is the format): every structural mistake
 // is one line "FILE:LINE:COLUMN: TABLE: what is wrong; valid ..." thrown as Error::input,
-// worded by model/toml_table.hpp as a lesson file's errors are.
+// worded by toml/toml_table.hpp as a lesson file's errors are.
 // Expressions are kept as text; the symbolic layer parses them and checks their values.
 #include <cmath>
 #include <filesystem>

@@ -7,11 +7,11 @@
 #include <initializer_list>
 #include <string_view>
 
+#include "columns/mechanism_columns.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
 #include "core/number_format.hpp"
-#include "integrate/mechanism_columns.hpp"
 #include "integrate/mechanism_simulation.hpp"
 #include "model/mechanism_toml.hpp"
 #include "pipeline/encode_frames.hpp"

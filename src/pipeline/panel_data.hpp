@@ -1,10 +1,10 @@
 #pragma once
 // What a --panel plots, by name: a mechanism's trajectory columns
-// (integrate/mechanism_columns.hpp), each with its words and unit for the axes.
+// (columns/mechanism_columns.hpp), each with its words and unit for the axes.
 #include <string>
 #include <vector>
 
-#include "integrate/mechanism_columns.hpp"
+#include "columns/mechanism_columns.hpp"
 #include "render/panel.hpp"
 
 namespace linkage {

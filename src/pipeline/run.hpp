@@ -9,8 +9,8 @@
 #include <string_view>
 #include <vector>
 
+#include "columns/mechanism_columns.hpp"
 #include "core/angle_unit.hpp"
-#include "integrate/mechanism_columns.hpp"
 #include "integrate/simulation_options.hpp"
 #include "model/inputs.hpp"
 #include "model/mechanism_toml.hpp"  // kDefaultMechanism, with default_mechanism_settings

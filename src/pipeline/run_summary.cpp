@@ -1,7 +1,7 @@
 #include "pipeline/run_summary.hpp"
 
+#include "columns/mechanism_columns.hpp"
 #include "core/number_format.hpp"
-#include "integrate/mechanism_columns.hpp"
 
 namespace linkage {
 namespace {

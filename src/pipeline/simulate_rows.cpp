@@ -19,26 +19,10 @@ void WrittenColumns::scale(std::vector<double>& values) const {
   for (std::size_t j = 0; j < values.size(); ++j) values[j] *= factors[j];
 }
 
-WrittenColumns written_columns(const std::vector<Column>& columns, AngleUnit angles) {
-  WrittenColumns written;
-  for (const Column c : columns) written.add(std::string(info(c).name), info(c).unit, angles);
-  return written;
-}
-
 WrittenColumns written_columns(const std::vector<MechanismColumn>& columns, AngleUnit angles) {
   WrittenColumns written;
   for (const MechanismColumn& c : columns) written.add(c.name, c.unit, angles);
   return written;
-}
-
-void homework_row(Simulation& simulation, const Inputs& inputs, double t, const BodyState& state,
-                  const std::vector<Column>& columns, std::vector<double>& values) {
-  compute_row(simulation, t, state, columns, values);
-  for (std::size_t j = 0; j < values.size(); ++j)
-    if (!std::isfinite(values[j]))
-      throw Error::diverged(std::string(info(columns[j]).name) + " at t = " + format_roundtrip(t) +
-                            " s is not a finite number; the run stopped" +
-                            (likely_causes(inputs).empty() ? "" : " (inputs: " + likely_causes(inputs) + ")"));
 }
 
 void mechanism_row(MechanismSimulation& simulation, int case_id, double t, const Eigen::VectorXd& y,
@@ -52,24 +36,6 @@ void mechanism_row(MechanismSimulation& simulation, int case_id, double t, const
       throw Error::diverged(columns[j].name + " at t = " + format_roundtrip(t) +
                             " s is not a finite number; the run stopped (Case " + std::to_string(case_id) + ")");
   }
-}
-
-BodyState homework_trajectory(Simulation& simulation, const Inputs& inputs, const TrajectoryRows& rows,
-                              const std::vector<Column>& columns, AngleUnit angles, const RowSink& row) {
-  const WrittenColumns written = written_columns(columns, angles);
-  std::vector<double> values;
-  BodyState state;
-  for (long i = 0; i < rows.count; ++i) {
-    const double t = rows.at(i);
-    state = simulation.state_at(t);
-    if (!columns.empty()) {
-      homework_row(simulation, inputs, t, state, columns, values);
-      written.scale(values);
-      row(t, values);
-    }
-    throw_if_interrupted();
-  }
-  return state;
 }
 
 Eigen::VectorXd mechanism_trajectory(MechanismSimulation& simulation, int case_id, const TrajectoryRows& rows,

@@ -1,18 +1,15 @@
 #pragma once
-// The rows of `linkage simulate`, for the command and a lesson's simulate step alike: the
-// homework's columns or a mechanism's, each value checked finite, angles in rad or deg.
+// The rows of `linkage simulate`, for the command and a lesson's simulate step alike: a
+// mechanism's columns, each value checked finite, angles in rad or deg.
 #include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "columns/mechanism_columns.hpp"
+#include "columns/trajectory_rows.hpp"
 #include "core/angle_unit.hpp"
-#include "integrate/columns.hpp"
-#include "integrate/mechanism_columns.hpp"
 #include "integrate/mechanism_simulation.hpp"
-#include "integrate/simulation.hpp"
-#include "integrate/trajectory_rows.hpp"
-#include "model/inputs.hpp"
 
 namespace linkage {
 
@@ -26,14 +23,8 @@ struct WrittenColumns {
   void add(const std::string& name, std::string_view unit, AngleUnit angles);
   void scale(std::vector<double>& values) const;
 };
-[[nodiscard]] WrittenColumns written_columns(const std::vector<Column>& columns, AngleUnit angles);
 [[nodiscard]] WrittenColumns written_columns(const std::vector<MechanismColumn>& columns, AngleUnit angles);
 
-/// The homework's `columns` at time t (state: the simulation's at t) into `values`;
-/// Error::diverged naming the column, the time and the inputs' likely causes when one is
-/// not a finite number.
-void homework_row(Simulation& simulation, const Inputs& inputs, double t, const BodyState& state,
-                  const std::vector<Column>& columns, std::vector<double>& values);
 /// A mechanism's `columns` at time t (y: the simulation's state at t) into `values`;
 /// Error::diverged naming the column, the time and the case when one is not finite.
 void mechanism_row(MechanismSimulation& simulation, int case_id, double t, const Eigen::VectorXd& y,
@@ -43,10 +34,6 @@ void mechanism_row(MechanismSimulation& simulation, int case_id, double t, const
 /// Receives each row: its time and its values as written (angles scaled).
 using RowSink = std::function<void(double t, const std::vector<double>& values)>;
 
-/// The homework's table at `rows`' times, row by row; returns the state at the last row.
-/// With no columns it only steps to each row's time (what a table-less summary costs).
-BodyState homework_trajectory(Simulation& simulation, const Inputs& inputs, const TrajectoryRows& rows,
-                              const std::vector<Column>& columns, AngleUnit angles, const RowSink& row);
 /// A mechanism's table at `rows`' times, row by row; returns the state y = (q, q', W) at
 /// the last row.
 Eigen::VectorXd mechanism_trajectory(MechanismSimulation& simulation, int case_id, const TrajectoryRows& rows,

@@ -13,7 +13,7 @@
 #include "core/name_match.hpp"
 #include "linkage/embedded_themes.hpp"
 #include "model/inputs_toml.hpp"
-#include "model/toml_table.hpp"
+#include "toml/toml_table.hpp"
 
 namespace linkage {
 namespace {

@@ -3,10 +3,10 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "columns/mechanism_columns.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
 #include "evaluate/case_evaluator.hpp"
-#include "integrate/mechanism_columns.hpp"
 #include "model/mechanism_toml.hpp"
 #include "report/json_layout.hpp"
 #include "report/mechanism_parts.hpp"

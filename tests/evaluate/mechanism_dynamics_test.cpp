@@ -1,6 +1,6 @@
-// The compiled dynamics of any mechanism: its accelerations agree with the homework's
-// closed form (a second derivation, by hand) at random states to 1e-13, the three cases
-// give the same motion of every body, and a projection lands on the constraints.
+// The compiled dynamics of any mechanism: the tree's recursion equals the compiled rows,
+// the three cases give the same motion of every body, and a projection lands on the
+// constraints. (Against the homework's closed form: bench/tests/general_cases_test.cpp.)
 #include "evaluate/mechanism_dynamics.hpp"
 
 #include <gtest/gtest.h>
@@ -8,39 +8,11 @@
 #include <algorithm>
 #include <random>
 
-#include "integrate/linkage_rhs.hpp"
 #include "support/mechanisms_in_code.hpp"
 #include "symbolic/loop_closure.hpp"
 
 namespace linkage {
 namespace {
-
-// Case 3 of the general path against the homework's closed form, which is written out by
-// hand (formulations/case3_fast.hpp): same coordinates (x1, y1, theta1, theta2) and rates.
-TEST(MechanismDynamics, HomeworkMatchesTheClosedFormAtRandomStates) {
-  const sym::System system(built::homework());
-  Params p;
-  p.w = 0.1;  // the mechanism built in code: L 0.3, w 0.1, b 0.04, m 0.1, g 9.81
-  const GeneralizedRhs<Case3> closed(p);
-  std::mt19937 rng(3);
-  for (CaseId id : kAllCases) {
-    if (id == CaseId::maximal) continue;  // Case 1 integrates other coordinates; compared below
-    const eval::MechanismDynamics dynamics(system, id);
-    ASSERT_EQ(dynamics.coordinate_names(), (std::vector<std::string>{"1.x", "1.y", "1.theta", "2.theta"}));
-    for (int trial = 0; trial < 20; ++trial) {
-      const Eigen::VectorXd y = dynamics.initial_state(built::random_state(system, rng));
-      Vec<8> y8;
-      for (int i = 0; i < 8; ++i) y8[i] = y[i];
-      Vec<8> expected;
-      closed(0, y8, expected);
-      Eigen::VectorXd dydt;
-      ASSERT_TRUE(dynamics.derivative(0, y, dydt));
-      for (int i = 0; i < 8; ++i)
-        EXPECT_NEAR(dydt[i], expected[i], 1e-13 * (1 + std::abs(expected[i])))
-            << "Case " << case_number(id) << " entry " << i << " trial " << trial;
-    }
-  }
-}
 
 // Case 3 of a tree runs the O(n) recursion (and a Schur complement for loops); Case 2 the
 // compiled rows by LU. Same accelerations at random states, for every mechanism built in

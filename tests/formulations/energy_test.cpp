@@ -1,7 +1,8 @@
 // Energy, power and momentum (symbolic/energy.hpp) against the derived cases: along the
 // motion each case predicts, d(T + V)/dt equals the power P of dampers and applied loads,
 // and a mechanism with nothing external keeps p and H_O. The values themselves are held
-// to the homework's closed form (model/kinematics) and to a spring pendulum by hand.
+// to a spring pendulum by hand (and to the homework's closed form in
+// bench/tests/general_cases_test.cpp).
 #include "symbolic/energy.hpp"
 
 #include <gtest/gtest.h>
@@ -10,7 +11,6 @@
 
 #include "formulations/case_numbers.hpp"
 #include "formulations/case_system.hpp"
-#include "model/kinematics.hpp"
 #include "model/mechanism_toml.hpp"
 #include "support/mechanisms_in_code.hpp"
 
@@ -159,35 +159,6 @@ TEST(Momentum, HomeworkChangesByGravityAlone) {
       EXPECT_NEAR(value_at(Hc_rate, solved), 0, 1e-12) << "Case " << case_number(c.id);
     }
   }
-}
-
-// T, V, p and H against the homework's closed form (model/kinematics: H about the centre
-// of mass G, so H_O = H_G + M G x G').
-TEST(Energy, HomeworkMatchesTheClosedForm) {
-  const sym::System system(built::homework());
-  const GiNaC::exmap values = state_values(system, system.initial_state(), 0);
-  State s;
-  s.x1 = 1;
-  s.y1 = 2;
-  s.theta1 = 0.1;
-  s.theta2 = 0.2;
-  s.x1_dot = 0.15;
-  s.y1_dot = 0.25;
-  s.theta1_dot = 0.35;
-  s.theta2_dot = 0.45;
-  const Params params;
-  const BodyState bodies = body_state(params, s);
-  const Invariants expected = invariants(params, bodies);
-  const Vec2 G = system_com(bodies), G_dot = system_com_velocity(bodies);
-  const double H_O = expected.angular_momentum + 2 * params.m * (G.x() * G_dot.y() - G.y() * G_dot.x());
-
-  EXPECT_NEAR(value_at(sym::kinetic_energy(system), values), expected.kinetic_energy, 1e-15);
-  EXPECT_NEAR(value_at(sym::potential_energy(system), values), expected.potential_energy, 1e-14);
-  EXPECT_NEAR(value_at(sym::linear_momentum(system).x, values), expected.momentum.x(), 1e-15);
-  EXPECT_NEAR(value_at(sym::linear_momentum(system).y, values), expected.momentum.y(), 1e-15);
-  EXPECT_NEAR(value_at(sym::angular_momentum(system), values), H_O, 1e-15);
-  EXPECT_NEAR(value_at(sym::angular_momentum_about_centre(system), values), expected.angular_momentum, 1e-15);
-  EXPECT_TRUE(sym::nonconservative_power_terms(system).empty());
 }
 
 // A point mass at (x, y) on a spring-damper from O, driven by F0 sin(Omega t) along x:

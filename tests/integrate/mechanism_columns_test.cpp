@@ -2,7 +2,7 @@
 // error, on the homework (two-blocks.toml at its defaults: L = 0.3, w = 0.1, m = 0.1,
 // g = 9.81, both blocks' masses equal) where each has a closed form, and the energy scale:
 // T + m g (|y1| + |y2| + L) there, the homework's own.
-#include "integrate/mechanism_columns.hpp"
+#include "columns/mechanism_columns.hpp"
 
 #include <gtest/gtest.h>
 

@@ -9,8 +9,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "columns/mechanism_columns.hpp"
 #include "core/error.hpp"
-#include "integrate/mechanism_columns.hpp"
 #include "model/mechanism_toml.hpp"
 #include "symbolic/loop_closure.hpp"
 

@@ -90,8 +90,8 @@ plot = "constraint_position_error"
   EXPECT_EQ(c.runs[1].label, "Baumgarte");
   EXPECT_EQ(c.runs[0].label, "Case 1, dop853, rtol 1e-10, none");
   EXPECT_EQ(c.runs[2].options.case_id, 3);
-  EXPECT_EQ(c.runs[2].inputs.params().g, 0.0);
-  EXPECT_EQ(c.runs[0].inputs.params().g, 9.81);
+  EXPECT_EQ(c.runs[2].inputs.value(*find_input_key("g")), 0.0);
+  EXPECT_EQ(c.runs[0].inputs.value(*find_input_key("g")), 9.81);
   EXPECT_EQ(c.runs[2].label, "Case 3, rk4, dt 0.01 s, g = 0");
   EXPECT_EQ(c.runs[2].series, "rk4");
   ASSERT_TRUE(c.plot.has_value());

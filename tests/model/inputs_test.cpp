@@ -17,7 +17,7 @@ TEST(Inputs, DefaultsAreTheSpecExampleAndValid) {
   EXPECT_NO_THROW(inputs.validate());
   const auto& example = test::spec_example();
   for (const auto& key : kInputKeys) {
-    const auto& table = key.param != nullptr ? example["parameters"] : example["state"];
+    const auto& table = key.parameter ? example["parameters"] : example["state"];
     EXPECT_EQ(inputs.value(key), table[std::string(key.key)].get<double>()) << key.key;
     EXPECT_EQ(inputs.origin(key), "default");
   }

@@ -80,8 +80,8 @@ TEST(InputsToml, ValuesApplyWithTheirPosition) {
   test::write_text(file, "m = 2\ntheta2_dot = -1.5\n");
   Inputs inputs;
   inputs.apply_file(file);
-  EXPECT_EQ(inputs.params().m, 2.0);
-  EXPECT_EQ(inputs.state().theta2_dot, -1.5);
+  EXPECT_EQ(inputs.value(*find_input_key("m")), 2.0);
+  EXPECT_EQ(inputs.value(*find_input_key("theta2_dot")), -1.5);
   EXPECT_EQ(inputs.origin(*find_input_key("theta2_dot")), file.string() + ":2:14");
 }
 
@@ -90,8 +90,8 @@ TEST(InputsToml, ApplyNamesItsTableAndKeepsEveryPosition) {
   const toml::table table = parse_toml_text("m = 0.25\n\ntheta1 = 0.5\n", "l.toml", "lesson");
   Inputs inputs;
   apply_toml(inputs, table, "l.toml", "[parameters]");
-  EXPECT_EQ(inputs.params().m, 0.25);
-  EXPECT_EQ(inputs.state().theta1, 0.5);
+  EXPECT_EQ(inputs.value(*find_input_key("m")), 0.25);
+  EXPECT_EQ(inputs.value(*find_input_key("theta1")), 0.5);
   EXPECT_EQ(inputs.origin(*find_input_key("theta1")), "l.toml:3:10");
   EXPECT_EQ(inputs.origin(*find_input_key("L")), "default");
 

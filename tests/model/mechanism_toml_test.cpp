@@ -285,7 +285,7 @@ TEST(MechanismToml, HomeworkInputsSetTheTwoBlocksFile) {
   const Mechanism plain = default_mechanism(Inputs{});
   for (const InputKey& key : kInputKeys) {
     const std::string name(key.mechanism_key);
-    const bool is_parameter = key.param != nullptr;
+    const bool is_parameter = key.parameter;
     EXPECT_EQ(is_parameter ? parameter(plain, name) : initial(plain, name), Inputs{}.value(key)) << name;
   }
   Inputs inputs;

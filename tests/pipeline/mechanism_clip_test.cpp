@@ -11,9 +11,9 @@
 #include <map>
 #include <set>
 
+#include "columns/mechanism_columns.hpp"
 #include "core/error.hpp"
 #include "encode/encode_test_support.hpp"
-#include "integrate/mechanism_columns.hpp"
 #include "integrate/mechanism_simulation.hpp"
 #include "model/mechanism_toml.hpp"
 #include "render/cairo_util.hpp"

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "integrate/mechanism_columns.hpp"
+#include "columns/mechanism_columns.hpp"
 #include "pipeline/run.hpp"
 
 namespace linkage::test {

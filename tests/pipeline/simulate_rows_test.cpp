@@ -17,66 +17,60 @@ struct Table {
   std::vector<std::vector<double>> rows;
 };
 
-Table homework_table(const Inputs& inputs, const std::vector<Column>& columns, AngleUnit angles, BodyState* end) {
-  SimulationOptions o;
-  o.duration = 0.3;
-  Simulation sim(inputs.params(), inputs.state(), o);
+/// The homework (two-blocks.toml from its default inputs) as `linkage simulate` runs it
+/// without --mechanism: its columns under the homework's names, 0.3 s in rows 0.1 s apart.
+Table homework_table(const std::string& list, AngleUnit angles, Eigen::VectorXd* end) {
+  const linkage::Run run = test::homework_run("homework", 0.3);
+  const std::vector<MechanismColumn> columns = named_columns(run.built->named_columns(), list, "test");
+  MechanismSimulation sim(*run.built->system, run.built->initial, run.options);
   Table table;
-  const BodyState last = homework_trajectory(sim, inputs, TrajectoryRows(0.3, 0.1), columns, angles,
-                                             [&](double t, const std::vector<double>& values) {
-                                               table.t.push_back(t);
-                                               table.rows.push_back(values);
-                                             });
+  const Eigen::VectorXd last = mechanism_trajectory(sim, 3, TrajectoryRows(0.3, 0.1), columns, angles,
+                                                    [&](double t, const std::vector<double>& values) {
+                                                      table.t.push_back(t);
+                                                      table.rows.push_back(values);
+                                                    });
   if (end != nullptr) *end = last;
   return table;
 }
 
 TEST(SimulateRows, HomeworkRowsAtTheCommandsTimesAndInDegrees) {
-  const std::vector<Column> columns = parse_columns("t,x1,theta1,theta1_dot", "test");
-  BodyState end;
-  const Table rad = homework_table(Inputs(), columns, AngleUnit::rad, &end);
-  const Table deg = homework_table(Inputs(), columns, AngleUnit::deg, nullptr);
+  Eigen::VectorXd end;
+  const Table rad = homework_table("t,x1,theta1,theta1_dot", AngleUnit::rad, &end);
+  const Table deg = homework_table("t,x1,theta1,theta1_dot", AngleUnit::deg, nullptr);
   // 0.1 does not divide 0.3 in binary: still four rows, the last at the duration.
   EXPECT_EQ(rad.t, (std::vector<double>{0, 0.1, 0.2, 0.3}));
   ASSERT_EQ(rad.rows.size(), 4u);
   EXPECT_EQ(rad.rows[0], (std::vector<double>{0, 1, 0.1, 0.35}));  // the default start
-  EXPECT_EQ(rad.rows[3][1], end.x1);
-  EXPECT_EQ(rad.rows[3][2], end.theta1);
+  EXPECT_EQ(rad.rows[3][1], end[0]);                               // y = (x1, y1, theta1, theta2, rates..., W)
+  EXPECT_EQ(rad.rows[3][2], end[2]);
   for (std::size_t i = 0; i < 4; ++i) {
     EXPECT_EQ(deg.rows[i][0], rad.rows[i][0]);
     EXPECT_EQ(deg.rows[i][1], rad.rows[i][1]);
     EXPECT_DOUBLE_EQ(deg.rows[i][2], rad.rows[i][2] * 180 / std::numbers::pi);
     EXPECT_DOUBLE_EQ(deg.rows[i][3], rad.rows[i][3] * 180 / std::numbers::pi);
   }
-  const WrittenColumns written = written_columns(columns, AngleUnit::deg);
+  const linkage::Run run = test::homework_run("homework", 0.3);
+  const WrittenColumns written =
+      written_columns(named_columns(run.built->named_columns(), "t,x1,theta1,theta1_dot", "test"), AngleUnit::deg);
   EXPECT_EQ(written.names, (std::vector<std::string>{"t", "x1", "theta1 (deg)", "theta1_dot (deg/s)"}));
   EXPECT_EQ(written.units, (std::vector<std::string>{"s", "m", "deg", "deg/s"}));
   EXPECT_EQ(joined_names(written.names), "t,x1,theta1 (deg),theta1_dot (deg/s)");
 }
 
-TEST(SimulateRows, WithoutColumnsARunOnlySteps) {
-  int rows = 0;
-  SimulationOptions o;
-  Inputs inputs;
-  Simulation sim(inputs.params(), inputs.state(), o);
-  const BodyState end = homework_trajectory(sim, inputs, TrajectoryRows(o.duration, 0.5), {}, AngleUnit::rad,
-                                            [&](double, const std::vector<double>&) { ++rows; });
-  EXPECT_EQ(rows, 0);
-  EXPECT_NE(end.x1, 1);  // moved from the start
-  EXPECT_GT(sim.stats().steps_accepted, 0);
-}
-
 TEST(SimulateRows, AValueThatIsNotFiniteStopsTheRunNamingItsCause) {
-  Inputs inputs;
-  for (const InputKey& key : kInputKeys)
-    if (key.key == "x1_dot") inputs.set(key, 1e300, "--x1-dot");
+  const linkage::Run run = test::homework_run("homework", 0.3);
+  const std::vector<MechanismColumn> columns = named_columns(run.built->named_columns(), "t,energy", "test");
+  MechanismSimulation sim(*run.built->system, run.built->initial, run.options);
+  Eigen::VectorXd y = sim.state_at(0);
+  y[4] = 1e300;  // x1_dot: the kinetic energy overflows
+  eval::MechanismSample sample;
+  std::vector<double> values;
   try {
-    (void)homework_table(inputs, parse_columns("t,energy", "test"), AngleUnit::rad, nullptr);
+    mechanism_row(sim, 3, 0, y, columns, sample, values);
     FAIL() << "no error";
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ExitCode::diverged);
-    EXPECT_EQ(std::string(e.what()),
-              "energy at t = 0 s is not a finite number; the run stopped (inputs: x1_dot = 1e+300 (--x1-dot))");
+    EXPECT_EQ(std::string(e.what()), "energy at t = 0 s is not a finite number; the run stopped (Case 3)");
   }
 }
 

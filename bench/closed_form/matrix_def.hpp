@@ -4,8 +4,8 @@
 // entries are identically zero, both from the one definition.
 #include <array>
 
+#include "bench/closed_form/expr.hpp"
 #include "core/types.hpp"
-#include "formulations/expr.hpp"
 
 namespace linkage {
 

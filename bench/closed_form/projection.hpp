@@ -12,8 +12,8 @@
 //   v <- v - M^-1 J^T (J M^-1 J^T)^-1 J v
 // Mass weighting moves the two blocks by equal and opposite amounts in x and y, so the
 // centre of mass and the linear momentum are unchanged.
+#include "bench/closed_form/params.hpp"
 #include "core/types.hpp"
-#include "model/params.hpp"
 
 namespace linkage {
 

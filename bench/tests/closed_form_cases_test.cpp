@@ -6,13 +6,13 @@
 #include <cmath>
 #include <random>
 
+#include "bench/closed_form/case1.hpp"
+#include "bench/closed_form/case2.hpp"
+#include "bench/closed_form/case3.hpp"
+#include "bench/closed_form/formulation.hpp"
+#include "bench/closed_form/kinematics.hpp"
+#include "bench/closed_form/linear_solve.hpp"
 #include "core/error.hpp"
-#include "formulations/case1.hpp"
-#include "formulations/case2.hpp"
-#include "formulations/case3.hpp"
-#include "formulations/formulation.hpp"
-#include "formulations/linear_solve.hpp"
-#include "model/kinematics.hpp"
 #include "support/test_support.hpp"
 
 namespace linkage {

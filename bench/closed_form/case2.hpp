@@ -14,8 +14,8 @@
 #include <array>
 #include <string_view>
 
-#include "formulations/matrix_def.hpp"
-#include "formulations/unknowns.hpp"
+#include "bench/closed_form/matrix_def.hpp"
+#include "bench/closed_form/unknowns.hpp"
 
 namespace linkage {
 

@@ -1,6 +1,6 @@
 // The located TOML table reader: every error one line "FILE:LINE:COLUMN: CONTEXT: problem"
 // at the offending key, value or entry; and the canonical text content hashes are built on.
-#include "model/toml_table.hpp"
+#include "toml/toml_table.hpp"
 
 #include <gtest/gtest.h>
 

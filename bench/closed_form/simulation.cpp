@@ -1,4 +1,4 @@
-#include "integrate/simulation.hpp"
+#include "bench/closed_form/simulation.hpp"
 
 #include <array>
 #include <chrono>
@@ -6,6 +6,8 @@
 #include <limits>
 #include <vector>
 
+#include "bench/closed_form/linkage_rhs.hpp"
+#include "bench/closed_form/projection.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
 #include "core/name_match.hpp"
@@ -15,8 +17,6 @@
 #include "integrate/dopri5.hpp"
 #include "integrate/explicit_rk.hpp"
 #include "integrate/gauss_legendre.hpp"
-#include "integrate/linkage_rhs.hpp"
-#include "integrate/projection.hpp"
 #include "integrate/step_budget.hpp"
 #include "integrate/symplectic_euler.hpp"
 

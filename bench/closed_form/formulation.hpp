@@ -1,17 +1,17 @@
 #pragma once
 // The homework's closed-form cases behind one runtime interface: `solve_case` evaluates
-// and solves a case at a state from the definitions in case1/2/3.hpp (the fast path the
-// lessons' quantities and the homework's simulation use; tests hold it to the general
-// procedure).
+// and solves a case at a state from the definitions in case1/2/3.hpp (the bench's
+// stress study uses it; bench/tests/general_cases_test.cpp holds the general procedure
+// to it).
 #include <Eigen/Core>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include "formulations/expr.hpp"
-#include "formulations/unknowns.hpp"
-#include "model/params.hpp"
-#include "model/state.hpp"
+#include "bench/closed_form/expr.hpp"
+#include "bench/closed_form/params.hpp"
+#include "bench/closed_form/state.hpp"
+#include "bench/closed_form/unknowns.hpp"
 
 namespace linkage {
 

@@ -1,9 +1,8 @@
-#include "model/kinematics.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "bench/closed_form/kinematics.hpp"
 #include "support/test_support.hpp"
 
 namespace linkage {

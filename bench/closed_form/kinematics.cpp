@@ -1,4 +1,4 @@
-#include "model/kinematics.hpp"
+#include "bench/closed_form/kinematics.hpp"
 
 #include <cmath>
 

@@ -23,6 +23,12 @@ struct KeySpec {
   std::string_view default_text;  // e.g. "3", "(required)"
 };
 
+/// "file:line:column" for a source position.
+[[nodiscard]] std::string source_position(const std::string& file, long line, long column);
+
+/// "a string", "an integer", "a table", ... for "must be a number, got ..." messages.
+[[nodiscard]] std::string type_phrase(const toml::node& node);
+
 /// "file:line:column" of a node; a region toml++ did not record (line 0) is 1:1, the
 /// file as a whole.
 [[nodiscard]] std::string position(const std::string& file, const toml::source_region& where);

@@ -1,13 +1,13 @@
-#include "formulations/formulation.hpp"
+#include "bench/closed_form/formulation.hpp"
 
 #include <Eigen/SVD>
 
+#include "bench/closed_form/case1.hpp"
+#include "bench/closed_form/case2.hpp"
+#include "bench/closed_form/case3.hpp"
+#include "bench/closed_form/linear_solve.hpp"
 #include "core/error.hpp"
 #include "core/number_format.hpp"
-#include "formulations/case1.hpp"
-#include "formulations/case2.hpp"
-#include "formulations/case3.hpp"
-#include "formulations/linear_solve.hpp"
 
 namespace linkage {
 namespace {

@@ -1,6 +1,6 @@
 #pragma once
 // The linkage as a first-order system y' = f(y) for the integrators, from the one
-// definition of each case (src/formulations: assemble<Case> + solve_blocks<Case>).
+// definition of each case (case1/2/3.hpp: assemble<Case> + solve_blocks<Case>).
 //
 // Cases 2 and 3 (generalized coordinates, 8 values):
 //   y = (x1, y1, th1, th2, x1', y1', th1', th2'),  y' = (rates, x1'', y1'', th1'', th2'')
@@ -20,13 +20,13 @@
 #include <cmath>
 #include <limits>
 
+#include "bench/closed_form/case1.hpp"
+#include "bench/closed_form/case2.hpp"
+#include "bench/closed_form/case3.hpp"
+#include "bench/closed_form/case3_fast.hpp"
+#include "bench/closed_form/linear_solve.hpp"
+#include "bench/closed_form/params.hpp"
 #include "core/types.hpp"
-#include "formulations/case1.hpp"
-#include "formulations/case2.hpp"
-#include "formulations/case3.hpp"
-#include "formulations/case3_fast.hpp"
-#include "formulations/linear_solve.hpp"
-#include "model/params.hpp"
 
 namespace linkage {
 

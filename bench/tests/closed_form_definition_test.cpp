@@ -2,11 +2,11 @@
 // their values are held to the general procedure in the cases' tests.
 #include <gtest/gtest.h>
 
-#include "formulations/case1.hpp"
-#include "formulations/case2.hpp"
-#include "formulations/case3.hpp"
-#include "formulations/formulation.hpp"
-#include "formulations/linear_solve.hpp"
+#include "bench/closed_form/case1.hpp"
+#include "bench/closed_form/case2.hpp"
+#include "bench/closed_form/case3.hpp"
+#include "bench/closed_form/formulation.hpp"
+#include "bench/closed_form/linear_solve.hpp"
 
 namespace linkage {
 namespace {

@@ -1,4 +1,4 @@
-#include "integrate/mechanism_columns.hpp"
+#include "columns/mechanism_columns.hpp"
 
 #include <algorithm>
 #include <cctype>

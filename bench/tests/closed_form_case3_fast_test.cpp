@@ -1,15 +1,14 @@
 // The closed-form Case 3 accelerations against the one definition (case3.hpp solved by
 // the block solver), the spec's example, and its own long double evaluation.
-#include "formulations/case3_fast.hpp"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <random>
 
-#include "formulations/case3.hpp"
-#include "formulations/linear_solve.hpp"
+#include "bench/closed_form/case3.hpp"
+#include "bench/closed_form/case3_fast.hpp"
+#include "bench/closed_form/linear_solve.hpp"
 #include "support/test_support.hpp"
 
 namespace linkage {

@@ -1,4 +1,4 @@
-#include "model/toml_table.hpp"
+#include "toml/toml_table.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,10 +8,39 @@
 #include "core/error.hpp"
 #include "core/name_match.hpp"
 #include "core/number_format.hpp"
-#include "model/inputs.hpp"
-#include "model/inputs_toml.hpp"
 
 namespace linkage {
+
+std::string source_position(const std::string& file, long line, long column) {
+  return file + ":" + std::to_string(line) + ":" + std::to_string(column);
+}
+
+std::string type_phrase(const toml::node& node) {
+  switch (node.type()) {
+    case toml::node_type::string:
+      return "a string";
+    case toml::node_type::integer:
+      return "an integer";
+    case toml::node_type::floating_point:
+      return "a float";
+    case toml::node_type::boolean:
+      return "a boolean";
+    case toml::node_type::array:
+      return "an array";
+    case toml::node_type::table:
+      return "a table";
+    case toml::node_type::date:
+      return "a date";
+    case toml::node_type::time:
+      return "a time";
+    case toml::node_type::date_time:
+      return "a date-time";
+    case toml::node_type::none:
+      return "nothing";
+  }
+  return "nothing";
+}
+
 namespace {
 // 'key', built by appending ("literal" + std::string trips GCC 12's -Wrestrict, bug 105329).
 std::string q(std::string_view key) {

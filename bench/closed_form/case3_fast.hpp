@@ -1,7 +1,7 @@
 #pragma once
 // Case 3 in closed form: the same four equations as case3.hpp, solved by hand once and
 // for all, for the integrators' inner loop. Verified against the definition by
-// tests/formulations/case3_fast_test.cpp; case3.hpp stays the one definition.
+// bench/tests/closed_form_case3_fast_test.cpp; case3.hpp stays the one definition.
 //
 // Rows (3.3) and (4.3) give the linear accelerations from the angular ones:
 //   x1'' = D/2 (sin th1 th1'' + sin th2 th2'' + th1'^2 cos th1 + th2'^2 cos th2)
@@ -14,7 +14,7 @@
 // written as that product it has no cancellation. Cost: two sincos and ~35 flops.
 #include <cmath>
 
-#include "model/params.hpp"
+#include "bench/closed_form/params.hpp"
 
 namespace linkage {
 

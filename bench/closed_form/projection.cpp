@@ -1,4 +1,4 @@
-#include "integrate/projection.hpp"
+#include "bench/closed_form/projection.hpp"
 
 #include <Eigen/LU>
 #include <algorithm>

@@ -1,7 +1,7 @@
 #pragma once
-// The motion over time: one case's equations, one integrator, one stabilization,
-// sampled at increasing times. This is the seam every consumer uses (simulate, render,
-// lesson, bench); integrators themselves know nothing about the linkage.
+// The homework's motion over time by its closed form: one case's equations, one
+// integrator, one stabilization, sampled at increasing times (the bench's stress study;
+// the program runs every mechanism, the homework too, by integrate/mechanism_simulation).
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -9,10 +9,10 @@
 #include <string>
 #include <string_view>
 
+#include "bench/closed_form/kinematics.hpp"
+#include "bench/closed_form/params.hpp"
+#include "bench/closed_form/state.hpp"
 #include "integrate/simulation_options.hpp"
-#include "model/kinematics.hpp"
-#include "model/params.hpp"
-#include "model/state.hpp"
 
 namespace linkage {
 
@@ -21,7 +21,7 @@ struct SimulationStats {
   std::int64_t steps_rejected = 0;
   std::int64_t rhs_evaluations = 0;
   std::int64_t force_evaluations = 0;  // pin-force solves done for output/drawing
-  double energy_scale = 0;             // J, model/kinematics energy_scale at the start
+  double energy_scale = 0;             // J, kinematics.hpp energy_scale at the start
   double max_energy_error = 0;         // |E - E0| / energy_scale, over samples
   double max_constraint_error = 0;     // m, |C| over samples (Case 1)
   double wall_seconds = 0;             // time spent in state_at() and dynamics()

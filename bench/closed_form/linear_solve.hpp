@@ -9,9 +9,9 @@
 #include <cmath>
 #include <limits>
 
+#include "bench/closed_form/expr.hpp"
+#include "bench/closed_form/params.hpp"
 #include "core/types.hpp"
-#include "formulations/expr.hpp"
-#include "model/params.hpp"
 
 namespace linkage {
 

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "model/params.hpp"
-#include "model/state.hpp"
+#include "bench/closed_form/params.hpp"
+#include "bench/closed_form/state.hpp"
 #include "support/test_support.hpp"
 
 namespace linkage::test {

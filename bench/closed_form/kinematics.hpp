@@ -7,9 +7,9 @@
 //   p = m (C1' + C2'),   H_c = m/2 (C2 - C1) x (C2' - C1') + I (th1' + th2')
 // H_c is the angular momentum about the system's centre of mass. Nothing external
 // acts but uniform gravity, so T + V, p_x, H_c are constant and p_y falls at 2 m g.
+#include "bench/closed_form/params.hpp"
+#include "bench/closed_form/state.hpp"
 #include "core/types.hpp"
-#include "model/params.hpp"
-#include "model/state.hpp"
 
 namespace linkage {
 
