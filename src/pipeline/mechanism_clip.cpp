@@ -147,7 +147,8 @@ class MechanismFrames {
         motion_(motion),
         settings_(settings),
         labels_{clip.settings.title, run_label(clip.simulation)},
-        overlays_(overlays) {
+        overlays_(overlays),
+        shown_(clip.settings.elements) {
     labels_.ensemble = std::move(ensemble_row);
     centre_compared_ = clip.compare && clip.compare->centred;
     if (clip.compare)
@@ -168,15 +169,19 @@ class MechanismFrames {
   }
 
   void draw(std::size_t k, Frame& frame) {
+    const auto start = std::chrono::steady_clock::now();
+    const bool backdrop = copy_backdrop(frame);
+    stats_.draw_seconds += seconds_since(start);
     const cairo::SurfacePtr surface = cairo::surface_for(frame);
     const cairo::ContextPtr cr = cairo::context(surface.get());
-    paint(k, cr.get());
+    paint(k, cr.get(), backdrop, &paint_cache_);
     cairo::check(cr.get(), "drawing a frame");
     cairo_surface_flush(surface.get());
   }
 
-  /// Sample k onto any surface's context (a vector still's), at the origin.
-  void paint(std::size_t k, cairo_t* cr) {
+  /// Sample k onto any surface's context (a vector still's), at the origin; with
+  /// `backdrop_painted`, over the backdrop already there; `cache`: a raster clip's, kept across frames.
+  void paint(std::size_t k, cairo_t* cr, bool backdrop_painted = false, MechanismPaintCache* cache = nullptr) {
     const auto start = std::chrono::steady_clock::now();
     scene_.frame(k, list_);
     for (const MechanismDrawList::Line& line : list_.lines)
@@ -191,7 +196,7 @@ class MechanismFrames {
     const Camera earlier = k > 0 ? camera_at(k - 1) : camera;
     cairo_save(cr);
     paint_mechanism_frame(cr, style_, camera, list_, labels_, motion_.times[k], settings_.width, settings_.height,
-                          &earlier);
+                          &earlier, backdrop_painted, cache);
     cairo_restore(cr);
     cairo::check(cr, "drawing a frame");
     ++stats_.frames_drawn;
@@ -205,6 +210,23 @@ class MechanismFrames {
   }
 
  private:
+  // A fixed camera's backdrop (background and grid) is the same in every frame: painted
+  // once, then copied byte for byte. False (nothing copied) for a following camera.
+  bool copy_backdrop(Frame& frame) {
+    if (follow_ || frame.width != settings_.width || frame.height != settings_.height) return false;
+    if (backdrop_.pixels.empty()) {
+      backdrop_ = Frame(frame.width, frame.height);
+      const cairo::SurfacePtr surface = cairo::surface_for(backdrop_);
+      const cairo::ContextPtr cr = cairo::context(surface.get());
+      paint_mechanism_backdrop(cr.get(), style_, camera_, shown_, labels_, frame.width, frame.height, &camera_);
+      cairo::check(cr.get(), "drawing a frame's backdrop");
+      cairo_surface_flush(surface.get());
+    }
+    if (frame.stride != backdrop_.stride) return false;
+    std::copy(backdrop_.pixels.begin(), backdrop_.pixels.end(), frame.pixels.begin());
+    return true;
+  }
+
   void add_ghosts(std::size_t k) {
     for (const Overlay& overlay : overlays_) {
       MechanismDrawList::Ghost ghost;
@@ -240,6 +262,9 @@ class MechanismFrames {
   Camera camera_;
   const std::vector<Overlay>& overlays_;
   MechanismDrawList list_;
+  ElementSet shown_;  // the scene's elements, as its draw lists give them
+  Frame backdrop_;    // a fixed camera's background and grid, once drawn
+  MechanismPaintCache paint_cache_;
   RenderStats stats_;
 };
 

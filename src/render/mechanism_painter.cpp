@@ -283,18 +283,102 @@ Rect paint_com_inset(cairo_t* cr, const DrawStyle& style, const MechanismLabels&
 
 }  // namespace
 
-void paint_mechanism_frame(cairo_t* cr, const DrawStyle& style, const Camera& camera, const MechanismDrawList& list,
-                           const MechanismLabels& labels, double t, int width, int height, const Camera* earlier) {
-  const ElementSet& shown = list.shown;
-  paint_background(cr, style, width, height);
-  // Grid lines fixed in the world: a following camera shows the motion against them, a
-  // few lines to the frame each named by its height so the fall can be read.
+namespace {
+
+// The pixels of `region` on an image surface (flushed), into `out`.
+void copy_out(cairo_surface_t* target, const MechanismPaintCache::Region& region, std::vector<std::uint8_t>& out) {
+  const unsigned char* data = cairo_image_surface_get_data(target);
+  const int stride = cairo_image_surface_get_stride(target);
+  const auto row = static_cast<std::size_t>(4 * region.width);
+  out.resize(row * static_cast<std::size_t>(region.height));
+  for (int y = 0; y < region.height; ++y)
+    std::memcpy(out.data() + row * static_cast<std::size_t>(y),
+                data + static_cast<std::ptrdiff_t>(region.y + y) * stride + 4 * region.x, row);
+}
+
+bool same_as(cairo_surface_t* target, const MechanismPaintCache::Region& region,
+             const std::vector<std::uint8_t>& pixels) {
+  const unsigned char* data = cairo_image_surface_get_data(target);
+  const int stride = cairo_image_surface_get_stride(target);
+  const auto row = static_cast<std::size_t>(4 * region.width);
+  for (int y = 0; y < region.height; ++y)
+    if (std::memcmp(pixels.data() + row * static_cast<std::size_t>(y),
+                    data + static_cast<std::ptrdiff_t>(region.y + y) * stride + 4 * region.x, row) != 0)
+      return false;
+  return true;
+}
+
+// Paints the title; or, on an image surface whose pixels under every one the title may touch
+// are those it was first drawn over, copies what it drew then: the same pixels, as drawing
+// is a function of them. Either way the context is left in the same state.
+void paint_title_cached(cairo_t* cr, const DrawStyle& style, const std::string& title, const TitleLayout& layout,
+                        MechanismPaintCache* cache) {
+  cairo_surface_t* target = cairo_get_target(cr);
+  cairo_matrix_t matrix;
+  cairo_get_matrix(cr, &matrix);
+  const bool identity =
+      matrix.xx == 1 && matrix.yy == 1 && matrix.xy == 0 && matrix.yx == 0 && matrix.x0 == 0 && matrix.y0 == 0;
+  if (cache == nullptr || !identity || cairo_surface_get_type(target) != CAIRO_SURFACE_TYPE_IMAGE ||
+      cairo_image_surface_get_format(target) != CAIRO_FORMAT_ARGB32) {
+    paint_title(cr, style, title, layout);
+    return;
+  }
+  MechanismPaintCache::Region& region = cache->title;
+  if (region.width < 0) {  // a pixel's margin around the ink, within the surface
+    const Rect ink = title_ink(cr, style, title, layout);
+    const int right =
+        std::min(cairo_image_surface_get_width(target), static_cast<int>(std::ceil(ink.x + ink.width)) + 1);
+    const int bottom =
+        std::min(cairo_image_surface_get_height(target), static_cast<int>(std::ceil(ink.y + ink.height)) + 1);
+    region.x = std::max(0, static_cast<int>(std::floor(ink.x)) - 1);
+    region.y = std::max(0, static_cast<int>(std::floor(ink.y)) - 1);
+    region.width = std::max(0, right - region.x);
+    region.height = std::max(0, bottom - region.y);
+  }
+  cairo_surface_flush(target);
+  if (!region.drawn.empty() && same_as(target, region, region.under)) {
+    unsigned char* data = cairo_image_surface_get_data(target);
+    const int stride = cairo_image_surface_get_stride(target);
+    const auto row = static_cast<std::size_t>(4 * region.width);
+    for (int y = 0; y < region.height; ++y)
+      std::memcpy(data + static_cast<std::ptrdiff_t>(region.y + y) * stride + 4 * region.x,
+                  region.drawn.data() + row * static_cast<std::size_t>(y), row);
+    cairo_surface_mark_dirty_rectangle(target, region.x, region.y, region.width, region.height);
+    title_pen(cr, style, layout);
+    return;
+  }
+  copy_out(target, region, region.under);
+  paint_title(cr, style, title, layout);
+  cairo_surface_flush(target);
+  copy_out(target, region, region.drawn);
+}
+
+// Grid lines fixed in the world: a following camera shows the motion against them, a
+// few lines to the frame each named by its height so the fall can be read.
+GridSpec frame_grid(const Camera& camera, const ElementSet& shown, const MechanismLabels& labels, int width,
+                    int height) {
   GridSpec grid;
   grid.spacing = grid_spacing_for(camera, width, height, labels.follows ? 5 : 10);
   grid.name_every = labels.follows;
   grid.x_ticks = !labels.follows || shown.has(Element::axes);
-  if (shown.has(Element::grid))
-    paint_grid(cr, style, camera, grid, width, height, earlier);  // streaking past a following camera
+  return grid;
+}
+
+}  // namespace
+
+void paint_mechanism_backdrop(cairo_t* cr, const DrawStyle& style, const Camera& camera, const ElementSet& shown,
+                              const MechanismLabels& labels, int width, int height, const Camera* earlier) {
+  paint_background(cr, style, width, height);
+  if (shown.has(Element::grid))  // streaking past a following camera
+    paint_grid(cr, style, camera, frame_grid(camera, shown, labels, width, height), width, height, earlier);
+}
+
+void paint_mechanism_frame(cairo_t* cr, const DrawStyle& style, const Camera& camera, const MechanismDrawList& list,
+                           const MechanismLabels& labels, double t, int width, int height, const Camera* earlier,
+                           bool backdrop_painted, MechanismPaintCache* cache) {
+  const ElementSet& shown = list.shown;
+  const GridSpec grid = frame_grid(camera, shown, labels, width, height);
+  if (!backdrop_painted) paint_mechanism_backdrop(cr, style, camera, shown, labels, width, height, earlier);
   cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
   paint_lines(cr, style, camera, list, List::Line::Kind::trail);
   paint_lines(cr, style, camera, list, List::Line::Kind::rail);
@@ -319,7 +403,7 @@ void paint_mechanism_frame(cairo_t* cr, const DrawStyle& style, const Camera& ca
     occupied.push_back(paint_com_inset(cr, style, labels, list.centre_of_mass, t, inset_top, width));
   if (!labels.title.empty() && shown.has(Element::title)) {
     const TitleLayout title = title_layout(cr, style, labels.title, width);
-    paint_title(cr, style, labels.title, title);
+    paint_title_cached(cr, style, labels.title, title, cache);
     occupied.push_back(title.rect);
   }
   const ForceLayout layout = layout_forces(cr, style, camera, list, width, height, occupied);

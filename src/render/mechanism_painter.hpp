@@ -5,6 +5,7 @@
 // (bodies alternate the two block colours); sizes from the DrawStyle, so lines and text read the same at any zoom.
 #include <cairo.h>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -26,9 +27,27 @@ struct MechanismLabels {
   std::vector<Vec2> com_path{};       // its path over 0 .. duration at even times (empty: no inset)
 };
 
-/// Paints the whole frame (it is fully covered) for the mechanism at time `t`.
+/// What a clip's painter keeps from frame to frame on an image surface: the title's pixels
+/// as first drawn and what was under them, to copy the title wherever it lies over the same.
+struct MechanismPaintCache {
+  struct Region {
+    int x = 0, y = 0, width = -1, height = 0;    // width -1: not measured yet
+    std::vector<std::uint8_t> under{}, drawn{};  // row after row, 4 bytes a pixel
+  };
+  Region title;
+};
+
+/// Paints the frame's backdrop, all of it that does not move with the mechanism: the
+/// background and the grid (`earlier`: the camera a frame before, which the grid streaks from).
+void paint_mechanism_backdrop(cairo_t* cr, const DrawStyle& style, const Camera& camera, const ElementSet& shown,
+                              const MechanismLabels& labels, int width, int height, const Camera* earlier = nullptr);
+
+/// Paints the whole frame (it is fully covered) for the mechanism at time `t`; over a
+/// backdrop already there (`backdrop_painted`: a fixed camera's, copied from a cache) only
+/// what comes after it, so the pixels are the same either way.
 void paint_mechanism_frame(cairo_t* cr, const DrawStyle& style, const Camera& camera, const MechanismDrawList& list,
                            const MechanismLabels& labels, double t, int width, int height,
-                           const Camera* earlier = nullptr);
+                           const Camera* earlier = nullptr, bool backdrop_painted = false,
+                           MechanismPaintCache* cache = nullptr);
 
 }  // namespace linkage

@@ -461,6 +461,34 @@ void paint_title(cairo_t* cr, const DrawStyle& style, const std::string& title, 
                        style.theme->background, halo);
 }
 
+Rect title_ink(cairo_t* cr, const DrawStyle& style, const std::string& title, const TitleLayout& layout) {
+  if (layout.rect.empty()) return {};
+  cairo_save(cr);
+  const text::Font font{layout.font_size, true};
+  const text::Metrics m = text::metrics(cr, font);  // and the font set
+  cairo_new_path(cr);
+  cairo_move_to(cr, style.padding(), style.padding() + m.ascent);  // as paint_title
+  cairo_text_path(cr, title.c_str());
+  cairo_set_line_width(cr, kTitleHalo * font.size);
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0, fx0 = 0, fy0 = 0, fx1 = 0, fy1 = 0;
+  cairo_stroke_extents(cr, &x0, &y0, &x1, &y1);
+  cairo_fill_extents(cr, &fx0, &fy0, &fx1, &fy1);
+  cairo_new_path(cr);
+  cairo_restore(cr);
+  x0 = std::min(x0, fx0), y0 = std::min(y0, fy0), x1 = std::max(x1, fx1), y1 = std::max(y1, fy1);
+  return {x0, y0, x1 - x0, y1 - y0};
+}
+
+void title_pen(cairo_t* cr, const DrawStyle& style, const TitleLayout& layout) {
+  const text::Font font{layout.font_size, true};
+  text::use(cr, font);
+  cairo_new_path(cr);
+  cairo_set_line_width(cr, kTitleHalo * font.size);  // as text::draw_with_halo leaves it
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  set_colour(cr, style.theme->text);
+}
+
 Rect legend_rect(cairo_t* cr, const DrawStyle& style, const std::vector<LegendRow>& rows, int height) {
   if (rows.empty()) return {};
   const text::Font font{style.text_size(), false};

@@ -88,6 +88,10 @@ struct TitleLayout {
 };
 [[nodiscard]] TitleLayout title_layout(cairo_t* cr, const DrawStyle& style, const std::string& title, int width);
 void paint_title(cairo_t* cr, const DrawStyle& style, const std::string& title, const TitleLayout& layout);
+/// The box, in user space, of every pixel paint_title may touch (its halo's stroke and its fill).
+[[nodiscard]] Rect title_ink(cairo_t* cr, const DrawStyle& style, const std::string& title, const TitleLayout& layout);
+/// The state paint_title leaves (font, colour, pen), set without drawing: for a title copied from a cache.
+void title_pen(cairo_t* cr, const DrawStyle& style, const TitleLayout& layout);
 
 /// A legend row: a glyph in a colour, a name, and a note (an arrow scale).
 struct LegendRow {

@@ -117,6 +117,37 @@ TEST(MechanismClip, FourBarClipDecodesWithEveryFrame) {
   EXPECT_EQ(test::entries(dir.path()), std::vector<std::string>{"four-bar.mp4"});
 }
 
+// A clip keeps a fixed camera's backdrop and the title's pixels from frame to frame: each
+// frame drawn after the others is byte for byte the frame drawn first by a fresh clip.
+TEST(MechanismClip, FramesDrawnAfterOthersAreTheFramesDrawnAlone) {
+  for (const std::string name : {"four-bar", "two-blocks"}) {
+    SCOPED_TRACE(name);
+    const sym::System system(load_mechanism(name));
+    const GiNaC::exmap initial = sym::checked_initial_state(system).state;
+    MechanismClip clip;
+    clip.settings.width = 640;
+    clip.settings.height = 360;
+    clip.settings.duration = 1.0;
+    clip.settings.title = "A title with a halo";
+    clip.simulation.duration = 1.0;
+    clip.theme = load_theme("light", {}, "theme");
+    clip.trails = system.mechanism().picture.trails;
+    ClipResult result;
+    MechanismClipFrames frames(system, initial, clip, result);
+    ASSERT_EQ(frames.count(), 30);
+    Frame after(640, 360);
+    for (std::size_t k = 0; k < 30; ++k) {
+      frames.draw(k, after);
+      if (k % 7 != 3) continue;
+      ClipResult unused;
+      MechanismClipFrames fresh(system, initial, clip, unused);
+      Frame alone(640, 360);
+      fresh.draw(k, alone);
+      EXPECT_EQ(after.pixels, alone.pixels) << "frame " << k;
+    }
+  }
+}
+
 // GIF and WebM by extension: every frame decodes, and each matches the PNG frame drawn
 // for it (the --frames sequence of the same run) on average over the picture.
 TEST(MechanismClip, GifAndWebmClipsMatchTheirDrawnFrames) {
