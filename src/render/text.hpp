@@ -14,6 +14,7 @@ struct Font {
   double size = 12;  // pixels (points on vector surfaces)
   bool bold = false;
   bool mono = false;  // DejaVu Sans Mono: every code point one column wide (equations as printed)
+  bool operator==(const Font&) const = default;
 };
 
 /// Sets the font and the fixed font options on `cr`.
