@@ -268,5 +268,29 @@ TEST(NativeLibrary, NoCompilerFallsBackToTheInterpreter) {
   EXPECT_EQ(ran(p, in), before);
 }
 
+// A compile that fails: the interpreter runs, the reason keeps the compiler's first error
+// line, and no temporary is left in the cache. The stand-in compiler prints what g++ does.
+TEST(NativeLibrary, FailedCompileFallsBackWithTheFirstErrorLine) {
+  Cache cache;
+  const fs::path bin = cache.dir / "bin";
+  fs::create_directories(bin);
+  write_text(bin / "c++",
+             "#!/bin/sh\necho 'In file included from x.cpp:1:'\necho 'x.cpp:2:3: error: boom'\n"
+             "echo 'x.cpp:4:5: error: second'\nexit 1\n");
+  fs::permissions(bin / "c++", fs::perms::owner_all);
+  Program p = every_op();
+  NativeAttachment a;
+  {
+    const ScopedEnv path("PATH", bin.string());
+    a = attach_native({&p});
+  }
+  EXPECT_FALSE(a.attached);
+  EXPECT_TRUE(a.compiled);
+  EXPECT_NE(a.reason.find("c++ failed: x.cpp:2:3: error: boom"), std::string::npos) << a.reason;
+  EXPECT_EQ(a.reason.find("second"), std::string::npos) << a.reason;
+  EXPECT_FALSE(p.native());
+  EXPECT_TRUE(fs::is_empty(native_cache_folder()));
+}
+
 }  // namespace
 }  // namespace linkage::eval
