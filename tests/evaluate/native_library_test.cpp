@@ -20,6 +20,7 @@
 
 #include "core/run_program.hpp"
 #include "evaluate/case_evaluator.hpp"
+#include "evaluate/mechanism_dynamics.hpp"
 #include "formulations/case_numbers.hpp"
 #include "linkage/embedded_mechanisms.hpp"
 #include "model/mechanism_toml.hpp"
@@ -178,6 +179,62 @@ TEST(NativeLibrary, EveryShippedMechanismAgreesWithTheInterpreter) {
   EXPECT_GT(outputs, 0U);
   RecordProperty("outputs_compared", static_cast<int>(outputs));
   RecordProperty("outputs_not_bit_identical", static_cast<int>(differ));
+}
+
+// Everything a sample reports, in one list.
+std::vector<double> flat(const MechanismSample& s) {
+  std::vector<double> out;
+  for (const std::vector<double>* part : {&s.pose, &s.rates, &s.slider, &s.force, &s.constraint, &s.constraint_rate,
+                                          &s.accelerations, &s.slider_accelerations, &s.points})
+    out.insert(out.end(), part->begin(), part->end());
+  for (const double v : {s.kinetic, s.potential, s.power, s.momentum_x, s.momentum_y, s.angular_momentum})
+    out.push_back(v);
+  out.insert(out.end(), s.com.begin(), s.com.end());
+  return out;
+}
+
+// MechanismDynamics::attach_native: every program of every case of every shipped
+// mechanism (the tree recursion's too) native; y' and the whole sample, with the
+// kinematics, as the interpreter gives them, with and without Baumgarte's terms.
+TEST(NativeLibrary, MechanismDynamicsAgreesWithTheInterpreter) {
+  Cache cache;
+  std::mt19937 rng(2024);
+  std::size_t differ = 0, compared = 0;
+  for (const EmbeddedMechanism& shipped : kEmbeddedMechanisms) {
+    const sym::System system(load_mechanism(std::string(shipped.name)));
+    for (CaseId id : kAllCases) {
+      const std::string what = std::string(shipped.name) + " Case " + std::to_string(case_number(id));
+      MechanismDynamics native(system, id);
+      MechanismDynamics interpreted(system, id);
+      const NativeAttachment a = native.attach_native(true);
+      ASSERT_TRUE(a.attached) << what << ": " << a.reason;
+      for (int trial = 0; trial < 3; ++trial) {
+        const Eigen::VectorXd y = native.initial_state(built::random_state(system, rng));
+        const double t = 0.3 * trial;
+        if (trial == 2) {  // the constraints' program in the right-hand side too
+          native.set_baumgarte(5.0, 7.0);
+          interpreted.set_baumgarte(5.0, 7.0);
+        }
+        Eigen::VectorXd dn, di;
+        ASSERT_EQ(native.derivative(t, y, dn), interpreted.derivative(t, y, di)) << what;
+        MechanismSample sn, si;
+        native.sample(t, y, sn, true);
+        interpreted.sample(t, y, si, true);
+        std::vector<double> n(dn.begin(), dn.end()), i(di.begin(), di.end());
+        const std::vector<double> fn = flat(sn), fi = flat(si);
+        n.insert(n.end(), fn.begin(), fn.end());
+        i.insert(i.end(), fi.begin(), fi.end());
+        ASSERT_EQ(n.size(), i.size()) << what;
+        for (std::size_t k = 0; k < n.size(); ++k) {
+          EXPECT_NEAR(n[k], i[k], 1e-13 * (1 + std::abs(i[k]))) << what << " value " << k << " trial " << trial;
+          if (std::bit_cast<std::uint64_t>(n[k]) != std::bit_cast<std::uint64_t>(i[k])) ++differ;
+        }
+        compared += n.size();
+      }
+    }
+  }
+  RecordProperty("values_compared", static_cast<int>(compared));
+  RecordProperty("values_not_bit_identical", static_cast<int>(differ));
 }
 
 // Garbage where the cached library should be: deleted, rebuilt, and right.
