@@ -29,6 +29,8 @@ class CaseEvaluator {
   /// estimate of A's reciprocal condition number: near 0 means singular, and then
   /// `unknowns` is not to be used. The one seam for the accelerations of any mechanism.
   double solve(const std::vector<double>& inputs, Eigen::VectorXd& unknowns) const;
+  /// The programs it runs, for native_library.hpp's attach_native.
+  [[nodiscard]] std::vector<Program*> programs() { return {&program_}; }
 
  private:
   std::vector<GiNaC::symbol> inputs_;

@@ -136,6 +136,18 @@ MechanismDynamics::MechanismDynamics(const sym::System& system, CaseId id, std::
   scratch_.resize(std::max(scratch_.size(), constraints_.scratch_size()));
 }
 
+NativeAttachment MechanismDynamics::attach_native(bool kinematics) {
+  compile_case();
+  if (kinematics) compile_kinematics();
+  std::vector<Program*> programs;
+  for (Program* p : {&power_, &constraints_, &rhs_, &outputs_, &kinematics_})
+    if (p->output_count() > 0) programs.push_back(p);
+  if (tree_)
+    for (Program* p : tree_->programs())
+      if (p->output_count() > 0) programs.push_back(p);
+  return eval::attach_native(programs);
+}
+
 GiNaC::ex MechanismDynamics::prepare(const GiNaC::ex& e) const {
   // Expanded, as CaseEvaluator does: one form whatever GiNaC's term order.
   return substitute_in_turn(e, {&system_->lengths(), &to_state_, &system_->constants(), &system_->constants()}, true);

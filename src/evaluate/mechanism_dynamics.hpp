@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "evaluate/native_library.hpp"
 #include "evaluate/program.hpp"
 #include "formulations/case_system.hpp"
 
@@ -98,6 +99,12 @@ class MechanismDynamics {
   /// Everything a sample reports at (t, y), from one evaluation of the unknowns; with
   /// `kinematics` the accelerations and the named points' motion too (compiled on first need).
   void sample(double t, const Eigen::VectorXd& y, MechanismSample& out, bool kinematics = false) const;
+
+  /// Compiles the case (and with `kinematics` the sample's kinematics) now, then runs every
+  /// program of this case, the tree recursion's included, as native code
+  /// (native_library.hpp), or none of them; what happened and why. Programs compiled later
+  /// (the kinematics, when not asked for here) stay interpreted.
+  [[nodiscard]] NativeAttachment attach_native(bool kinematics = false);
 
  private:
   [[nodiscard]] GiNaC::ex prepare(const GiNaC::ex& e) const;

@@ -1,12 +1,13 @@
 #include "evaluate/program.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <sstream>
 
 namespace linkage::eval {
 
-void Program::run(const double* inputs, double* outputs, double* scratch) const {
+void Program::interpret(const double* inputs, double* outputs, double* scratch) const {
   double* r = scratch;
   std::copy_n(inputs, input_names_.size(), r);
   std::copy(constants_.begin(), constants_.end(), r + input_names_.size());
@@ -62,6 +63,40 @@ void Program::run(const double* inputs, double* outputs, double* scratch) const 
     }
   }
   for (std::size_t k = 0; k < output_registers_.size(); ++k) outputs[k] = r[output_registers_[k]];
+}
+
+namespace {
+
+// FNV-1a over 64-bit words, byte by byte: the same on every machine and run.
+struct Fnv {
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  void add(std::uint64_t v) {
+    for (int k = 0; k < 8; ++k) {
+      h ^= (v >> (8 * k)) & 0xffU;
+      h *= 0x100000001b3ULL;
+    }
+  }
+};
+
+}  // namespace
+
+std::uint64_t Program::fingerprint() const {
+  Fnv f;
+  f.add(kNativeGeneratorVersion);
+  f.add(input_names_.size());
+  f.add(constants_.size());
+  for (const double c : constants_) f.add(std::bit_cast<std::uint64_t>(c));
+  f.add(code_.size());
+  for (const Instruction& i : code_) {
+    f.add(static_cast<std::uint64_t>(i.op));
+    f.add(i.dst);
+    f.add(i.a);
+    f.add(i.b);
+  }
+  f.add(output_registers_.size());
+  for (const std::uint32_t r : output_registers_) f.add(r);
+  f.add(register_count_);
+  return f.h;
 }
 
 namespace {

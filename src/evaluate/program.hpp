@@ -17,6 +17,13 @@
 
 namespace linkage::eval {
 
+/// Bumped when emit_cpp's output or the native library's layout changes: part of every
+/// fingerprint, so code from another generator is never attached.
+inline constexpr std::uint64_t kNativeGeneratorVersion = 1;
+
+/// Compiled code for one Program (evaluate/emit_cpp.hpp): outputs from inputs, no scratch.
+using NativeFunction = void (*)(const double* in, double* out);
+
 enum class Op : std::uint8_t { add, sub, mul, div, neg, sqrt, pow, sin, cos, sincos, tan, exp, log, abs };
 
 /// r[dst] = r[a] op r[b]; for sincos, r[dst] = sin(r[a]) and r[b] = cos(r[a]).
@@ -32,7 +39,24 @@ class Program {
   Program() = default;  // no inputs, no outputs
 
   /// Evaluates every output. `scratch` holds scratch_size() doubles; nothing is allocated.
-  void run(const double* inputs, double* outputs, double* scratch) const;
+  /// With native code attached, that code runs instead (and `scratch` is not touched).
+  void run(const double* inputs, double* outputs, double* scratch) const {
+    if (native_ != nullptr)
+      native_(inputs, outputs);
+    else
+      interpret(inputs, outputs, scratch);
+  }
+  /// The interpreter alone, whether or not native code is attached: the reference.
+  void interpret(const double* inputs, double* outputs, double* scratch) const;
+
+  /// Runs `f` instead of the interpreter from now on (nullptr: the interpreter again). `f`
+  /// must compute this program (its fingerprint's): native_library.hpp checks that.
+  void attach(NativeFunction f) { native_ = f; }
+  [[nodiscard]] bool native() const { return native_ != nullptr; }
+  /// A 64-bit hash of everything run() computes from (inputs, constants' bits, code,
+  /// output registers, register count) and kNativeGeneratorVersion: equal programs, equal
+  /// fingerprints, on every run and machine.
+  [[nodiscard]] std::uint64_t fingerprint() const;
 
   [[nodiscard]] std::size_t input_count() const { return input_names_.size(); }
   [[nodiscard]] std::size_t output_count() const { return output_registers_.size(); }
@@ -40,6 +64,8 @@ class Program {
   [[nodiscard]] std::size_t instruction_count() const { return code_.size(); }
   [[nodiscard]] std::size_t constant_count() const { return constants_.size(); }
   [[nodiscard]] const std::vector<Instruction>& instructions() const { return code_; }
+  [[nodiscard]] const std::vector<double>& constants() const { return constants_; }
+  [[nodiscard]] const std::vector<std::uint32_t>& output_registers() const { return output_registers_; }
   /// One line per register load, instruction and output, e.g. "r7, r8 = sincos(r3)".
   [[nodiscard]] std::string dump() const;
 
@@ -58,6 +84,7 @@ class Program {
   std::vector<Instruction> code_;                // in evaluation order
   std::vector<std::uint32_t> output_registers_;  // where each output ends
   std::size_t register_count_ = 0;
+  NativeFunction native_ = nullptr;
 };
 
 /// Compiles `outputs` over `inputs` (the order of run()'s arrays). Throws

@@ -116,6 +116,8 @@ struct TreeDynamics::Impl {
   void recursion(bool loaded, const Eigen::VectorXd& tau_absolute, Eigen::VectorXd& out) const;
 };
 
+std::vector<Program*> TreeDynamics::programs() { return {&impl_->loads, &impl_->loops}; }
+
 bool TreeDynamics::applies(const sym::System& system) {
   const SpanningTree& tree = system.tree();
   for (std::size_t b = 0; b < tree.bodies.size(); ++b)

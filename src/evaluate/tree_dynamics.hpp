@@ -51,6 +51,9 @@ class TreeDynamics {
   /// change point): q'' is then not to be used.
   bool accelerations(double t, const Eigen::VectorXd& y, Eigen::VectorXd& q_ddot) const;
 
+  /// The programs it runs (the loads, the loops' Jacobian), for native code.
+  [[nodiscard]] std::vector<Program*> programs();
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
