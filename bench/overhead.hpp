@@ -16,7 +16,10 @@ namespace linkage::bench {
 /// y = (q, v), q' = v, v' = -w^2 q for four oscillators of angular frequency w = 3, 4,
 /// 5, 7 rad/s (periods 0.9 to 2.1 s, like the homework's swings).
 struct OscillatorsRhs {
-  void operator()(double /*t*/, const Vec<8>& y, Vec<8>& dydt) const {
+  /// For Vec<8>, or for Eigen::VectorXd as a mechanism read from a file runs.
+  template <class V>
+  void operator()(double /*t*/, const V& y, V& dydt) const {
+    if constexpr (V::SizeAtCompileTime == Eigen::Dynamic) dydt.resize(8);
     dydt[0] = y[4];
     dydt[1] = y[5];
     dydt[2] = y[6];

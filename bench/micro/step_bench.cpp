@@ -111,12 +111,24 @@ void BM_Dop853Oscillators(benchmark::State& state) {
 }
 BENCHMARK(BM_Dop853Oscillators)->Name("overhead/dop853");
 
+// The same with dynamic-size states, as a mechanism read from a file runs.
+void BM_Dopri5OscillatorsDynamic(benchmark::State& state) {
+  adaptive_steps<ode::Dopri5<double, Eigen::Dynamic>>(state, OscillatorsRhs{}, oscillators_start());
+}
+BENCHMARK(BM_Dopri5OscillatorsDynamic)->Name("overhead/dopri5_dynamic");
+
+void BM_Dop853OscillatorsDynamic(benchmark::State& state) {
+  adaptive_steps<ode::Dop853<double, Eigen::Dynamic>>(state, OscillatorsRhs{}, oscillators_start());
+}
+BENCHMARK(BM_Dop853OscillatorsDynamic)->Name("overhead/dop853_dynamic");
+
 // The oscillators alone, each input waiting for the previous output as stages do.
 void BM_OscillatorsRhs(benchmark::State& state) {
   const OscillatorsRhs f;
   Vec<8> y = oscillators_start(), dy = Vec<8>::Zero();
   for (auto _ : state) {
-    f(0.0, y + 0.0 * dy, dy);
+    const Vec<8> in = y + 0.0 * dy;
+    f(0.0, in, dy);
     benchmark::DoNotOptimize(dy);
   }
 }
