@@ -5,7 +5,7 @@
 //                      is y1 and its derivative is f(t + h, y1) (first-same-as-last)
 //   main_stages        stages per step, FSAL stage included
 //   error_order, beta, fac_min, fac_max        for the step controller (step_control.hpp)
-//   error_norm(k, h, sk)                       the scaled error of a step
+//   error_norm(k, h, sk, scratch)              the scaled error of a step
 //   dense_prepare(...), dense_evaluate(...)    the continuous extension of a step
 //
 // Each call to step() makes one accepted step, retrying rejected attempts with smaller
@@ -94,7 +94,7 @@ class AdaptiveRk {
       evaluate_stages<Method::tableau, 1, main_stages>(f, t_, y_, h, k_, stage_);  // stage_ = y1
       counters_.rhs_evaluations += static_cast<std::int64_t>(main_stages - 1);
       error_scale(settings_.tolerances, y_, stage_, sk_);
-      Scalar err = Method::error_norm(k_, h, sk_);
+      Scalar err = Method::error_norm(k_, h, sk_, e_);
       last_non_finite = !all_finite(stage_) || !std::isfinite(err);
       if (last_non_finite) err = std::numeric_limits<Scalar>::quiet_NaN();
       if (controller_.decide(err, h, h_next_)) {
@@ -154,6 +154,7 @@ class AdaptiveRk {
   StepController<Scalar> controller_;
   Scalar t_ = 0, t_old_ = 0, h_ = 0, h_next_ = 0;
   Vector y_, y_old_, f_, stage_, sk_;  // stage_: y1 of the last step; sk_: also dense scratch
+  Vector e_;                           // error_norm's scratch: sized once, not per attempt
   std::array<Vector, stages> k_;
   std::array<Vector, Method::dense_terms> dense_;
   bool step_valid_ = false;   // k_ holds the stages of the last accepted step
