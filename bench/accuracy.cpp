@@ -12,6 +12,7 @@
 #include "bench/closed_form/linear_solve.hpp"
 #include "bench/closed_form/linkage_rhs.hpp"
 #include "bench/rhs.hpp"
+#include "bench/targets.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
 #include "core/number_format.hpp"
@@ -183,7 +184,28 @@ RhsTimings measure_rhs(const Scenario& s, bool quick) {
       },
       batch);
   if (sink == 0.123456789) throw Error::failure("unreachable");
+  t.oscillators = oscillators_rhs_ns(batch);
   return t;
+}
+
+// Our integrators on the oscillators, each copying its Case 3 run at the overhead's error.
+std::vector<OverheadTiming> measure_overhead(const ScenarioResult& sr, double min_time) {
+  std::vector<OverheadTiming> out;
+  for (const Curve& c : curves(sr)) {
+    if (!c.ours() || c.case_id != 3 || c.rhs != RhsKind::fastest) continue;
+    const AccuracyPoint* p = overhead_point(c);
+    if (p == nullptr) continue;
+    OverheadTiming o;
+    o.method = c.method;
+    o.label = c.label;
+    o.adaptive = p->adaptive;
+    o.knob = p->knob;
+    o.homework_error = p->error;
+    o.per_evaluation = time_on_oscillators(c.method, p->knob, sr.scenario.duration, p->outcome.rhs_evaluations,
+                                           min_time, o.evaluations);
+    out.push_back(o);
+  }
+  return out;
 }
 
 std::vector<Method> all_methods() {
@@ -263,6 +285,7 @@ AccuracyResult run_accuracy(const AccuracyOptions& options) {
     long done = 0;
     for (const Method& m : methods) sweep(m, sr.scenario, sr.reference, limits, sr.points, progress, done);
     progress.finish();
+    sr.overhead = measure_overhead(sr, limits.min_time);
     result.scenarios.push_back(std::move(sr));
   }
   write_accuracy_report(options, result);

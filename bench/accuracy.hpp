@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "bench/method.hpp"
+#include "bench/overhead.hpp"
 #include "bench/reference.hpp"
 #include "bench/scenarios.hpp"
 #include "bench/timing.hpp"
@@ -48,6 +49,9 @@ struct ScenarioResult {
   Scenario scenario;  // as run (duration overridden if asked)
   Reference reference;
   std::vector<AccuracyPoint> points;
+  /// Our integrators' own cost per evaluation (bench/overhead.hpp), each copying its
+  /// Case 3 run that first reaches 1e-8 (or its most accurate).
+  std::vector<OverheadTiming> overhead;
 };
 
 /// Cost of one right-hand-side evaluation, measured in the same run on states taken
@@ -60,6 +64,7 @@ struct RhsTimings {
   PerCall case1;
   PerCall solve_blocks;  // the Case 3 4x4 solve alone: our block solve
   PerCall solve_lu;      //                         and Eigen's partialPivLu
+  PerCall oscillators;   // OscillatorsRhs, on which the integrators' overhead is timed
 };
 
 struct AccuracyResult {

@@ -33,9 +33,12 @@ enum class Clock { wall, cpu };
 /// between the last setting above it and the first at or below it. None if never.
 [[nodiscard]] std::optional<double> time_to_error(const Curve& curve, double error, Clock clock = Clock::wall);
 
-/// Median over a curve's points that ran at least 0.5 ms of (time per evaluation
-/// - the right-hand side's own cost), in ns: what the integrator adds per evaluation.
-[[nodiscard]] std::optional<double> overhead_ns(const Curve& curve, double rhs_ns, Clock clock = Clock::wall);
+/// The error at which the integrators' overhead is measured: the speed target's.
+inline constexpr double kOverheadError = 1e-8;
+
+/// The run whose work the overhead measurement copies: the first point that reaches
+/// `error`, else the last one that ran to the end. None if no run did.
+[[nodiscard]] const AccuracyPoint* overhead_point(const Curve& curve, double error = kOverheadError);
 
 struct TargetRow {
   std::string target;       // what is measured

@@ -51,8 +51,8 @@ BENCHMARK(BM_RhsCase3Definition)->Name("rhs/case3_definition");
 // The same closed form with each input waiting for the previous output, as an explicit
 // Runge-Kutta method's stages do (stage i needs k_(i-1)): its latency, not its
 // throughput. `+ 0 * dy` is kept by the compiler (no fast-math) and costs one multiply
-// and add on the chain. Per-evaluation integrator overhead is the step time per
-// evaluation minus this.
+// and add on the chain. (The integrators' own cost per evaluation is timed on a cheap
+// right-hand side instead: overhead/* in step_bench.cpp.)
 void BM_RhsCase3Chained(benchmark::State& state) {
   const GeneralizedRhs<Case3> f{Params{}};
   const auto ys = random_states<8>();

@@ -2,12 +2,16 @@
 // and DOP853 on Case 1 (12 values). Fixed-step methods restart from the same state each
 // iteration; adaptive ones step on and restart every 1000 steps, so the step size is the
 // one their controller picks for the scenario `fast` at rtol = atol = 1e-10.
+// overhead/*: the same on OscillatorsRhs (bench/overhead.hpp, a few ns), whose counter
+// time_per_rhs is the integrator's own cost per evaluation, that cheap RHS included.
 #include <benchmark/benchmark.h>
 
 #include <cstdint>
+#include <type_traits>
 
 #include "bench/closed_form/kinematics.hpp"
 #include "bench/closed_form/linkage_rhs.hpp"
+#include "bench/overhead.hpp"
 #include "bench/rhs.hpp"
 #include "bench/scenarios.hpp"
 #include "integrate/dop853.hpp"
@@ -21,10 +25,22 @@ namespace {
 
 const Scenario& fast() { return find_scenario("fast", "micro"); }
 
-template <class Integrator>
+/// Time per evaluation, as a counter.
+benchmark::Counter per_evaluation(std::int64_t evaluations) {
+  return benchmark::Counter(static_cast<double>(evaluations),
+                            benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+template <class Integrator, class F = FastCase3Rhs<double>>
 void BM_FixedStep(benchmark::State& state) {
-  FastCase3Rhs<double> f(fast().params);
-  const Vec<8> y0 = fast().initial.vector();
+  constexpr bool cheap = std::is_same_v<F, OscillatorsRhs>;
+  F f = [&] {
+    if constexpr (cheap)
+      return F{};
+    else
+      return F(fast().params);
+  }();
+  const Vec<8> y0 = cheap ? oscillators_start() : fast().initial.vector();
   Integrator integrator;
   Vec<8> y;
   for (auto _ : state) {
@@ -34,11 +50,16 @@ void BM_FixedStep(benchmark::State& state) {
   }
   state.counters["rhs_per_step"] =
       static_cast<double>(integrator.counters().rhs_evaluations) / static_cast<double>(state.iterations());
+  if constexpr (cheap) state.counters["time_per_rhs"] = per_evaluation(integrator.counters().rhs_evaluations);
 }
 BENCHMARK(BM_FixedStep<ode::ExplicitEuler<double, 8>>)->Name("step/euler");
 BENCHMARK(BM_FixedStep<ode::SymplecticEuler<double, 8>>)->Name("step/symplectic_euler");
 BENCHMARK(BM_FixedStep<ode::Rk4<double, 8>>)->Name("step/rk4");
 BENCHMARK(BM_FixedStep<ode::GaussLegendre2<double, 8>>)->Name("step/gauss_legendre");
+BENCHMARK(BM_FixedStep<ode::ExplicitEuler<double, 8>, OscillatorsRhs>)->Name("overhead/euler");
+BENCHMARK(BM_FixedStep<ode::SymplecticEuler<double, 8>, OscillatorsRhs>)->Name("overhead/symplectic_euler");
+BENCHMARK(BM_FixedStep<ode::Rk4<double, 8>, OscillatorsRhs>)->Name("overhead/rk4");
+BENCHMARK(BM_FixedStep<ode::GaussLegendre2<double, 8>, OscillatorsRhs>)->Name("overhead/gauss_legendre");
 
 template <class Integrator, class F, int N>
 void adaptive_steps(benchmark::State& state, F f, const Vec<N>& y0) {
@@ -59,9 +80,9 @@ void adaptive_steps(benchmark::State& state, F f, const Vec<N>& y0) {
       state.ResumeTiming();
     }
   }
-  // rejected attempts included: time per step / rhs_per_step - rhs/case3_chained is
-  // the integrator's overhead per evaluation
+  // rejected attempts included
   state.counters["rhs_per_step"] = static_cast<double>(evaluations) / static_cast<double>(state.iterations());
+  if constexpr (std::is_same_v<F, OscillatorsRhs>) state.counters["time_per_rhs"] = per_evaluation(evaluations);
 }
 
 void BM_Dopri5Case3(benchmark::State& state) {
@@ -79,6 +100,39 @@ void BM_Dop853Case1(benchmark::State& state) {
                                           body_state(fast().params, fast().initial).vector());
 }
 BENCHMARK(BM_Dop853Case1)->Name("step/dop853_case1");
+
+void BM_Dopri5Oscillators(benchmark::State& state) {
+  adaptive_steps<ode::Dopri5<double, 8>>(state, OscillatorsRhs{}, oscillators_start());
+}
+BENCHMARK(BM_Dopri5Oscillators)->Name("overhead/dopri5");
+
+void BM_Dop853Oscillators(benchmark::State& state) {
+  adaptive_steps<ode::Dop853<double, 8>>(state, OscillatorsRhs{}, oscillators_start());
+}
+BENCHMARK(BM_Dop853Oscillators)->Name("overhead/dop853");
+
+// The same with dynamic-size states, as a mechanism read from a file runs.
+void BM_Dopri5OscillatorsDynamic(benchmark::State& state) {
+  adaptive_steps<ode::Dopri5<double, Eigen::Dynamic>>(state, OscillatorsRhs{}, oscillators_start());
+}
+BENCHMARK(BM_Dopri5OscillatorsDynamic)->Name("overhead/dopri5_dynamic");
+
+void BM_Dop853OscillatorsDynamic(benchmark::State& state) {
+  adaptive_steps<ode::Dop853<double, Eigen::Dynamic>>(state, OscillatorsRhs{}, oscillators_start());
+}
+BENCHMARK(BM_Dop853OscillatorsDynamic)->Name("overhead/dop853_dynamic");
+
+// The oscillators alone, each input waiting for the previous output as stages do.
+void BM_OscillatorsRhs(benchmark::State& state) {
+  const OscillatorsRhs f;
+  Vec<8> y = oscillators_start(), dy = Vec<8>::Zero();
+  for (auto _ : state) {
+    const Vec<8> in = y + 0.0 * dy;
+    f(0.0, in, dy);
+    benchmark::DoNotOptimize(dy);
+  }
+}
+BENCHMARK(BM_OscillatorsRhs)->Name("overhead/oscillators_rhs");
 
 }  // namespace
 }  // namespace linkage::bench

@@ -1,4 +1,5 @@
-// Pieces of the study's arithmetic: the median, time-to-error interpolation, overhead.
+// Pieces of the study's arithmetic: the median, time-to-error interpolation, and the
+// integrators' overhead (what it copies, how the row reads; bench/overhead.hpp).
 #include "bench/targets.hpp"
 
 #include <gtest/gtest.h>
@@ -6,7 +7,9 @@
 #include <cmath>
 #include <utility>
 
+#include "bench/overhead.hpp"
 #include "bench/timing.hpp"
+#include "core/error.hpp"
 
 namespace linkage::bench {
 namespace {
@@ -67,11 +70,60 @@ TEST(Curves, SplitByMethodCaseAndRightHandSide) {
   EXPECT_EQ(curves(r).size(), 3u);
 }
 
-TEST(Overhead, IsTimePerEvaluationLessTheRightHandSide) {
+// Under load the old figure (run time / evaluations - the RHS timed apart) printed
+// RK4's overhead as -7.26 ns: a run faster per evaluation than its RHS alone.
+TEST(Overhead, TheRowIsTheTimeOnTheCheapRightHandSideAndNeverNegative) {
   ScenarioResult r;
-  r.points = {point(1e-3, 1e-6, 10000), point(1e-4, 1e-4, 10)};  // the second is too short to count
-  // 1 ms / 10000 = 100 ns per evaluation, 40 of them the right-hand side
-  EXPECT_NEAR(*overhead_ns(curves(r)[0], 40.0), 60.0, 1e-9);
+  r.points = {point(1e-3, 1e-9, 100000)};  // 10 ns per evaluation on Case 3
+  r.points[0].label = "RK4";
+  RhsTimings rhs;
+  rhs.case3_fast = {40.0, 40.0};  // more than a whole evaluation's share of the run
+  rhs.oscillators = {1.5, 1.5};
+  OverheadTiming o;
+  o.method = "x";
+  o.label = "RK4";
+  o.adaptive = false;
+  o.knob = 25000;
+  o.homework_error = 1e-9;
+  o.evaluations = 100000;
+  o.per_evaluation = {12.5, 12.0};
+  r.overhead = {o};
+  int rows = 0;
+  for (const TargetRow& row : evaluate_targets(r, rhs, Clock::wall, {})) {
+    if (row.target.rfind("integrator overhead", 0) != 0) continue;
+    ++rows;
+    EXPECT_EQ(row.measured, "12.5 ns") << row.note;
+    EXPECT_EQ(row.met, std::optional<bool>(true));
+    EXPECT_NE(row.note.find("that RHS alone 1.5 ns, included), 100000 evaluations at 25000 steps"), std::string::npos)
+        << row.note;
+  }
+  EXPECT_EQ(rows, 1);
+}
+
+TEST(Overhead, CopiesTheFirstRunReachingTheErrorElseTheLastThatFinished) {
+  ScenarioResult r;
+  r.points = {point(1e-4, 1e-6), point(2e-4, 1e-9), point(3e-4, 1e-11), point(4e-4, std::nan(""))};
+  r.points[3].outcome.failure = "the step size underflowed";
+  const Curve c = curves(r)[0];
+  EXPECT_EQ(overhead_point(c, 1e-8), c.points[1]);
+  EXPECT_EQ(overhead_point(c, 1e-13), c.points[2]);  // never reached: the most accurate
+  EXPECT_EQ(overhead_point(c, 1e-5), c.points[0]);
+}
+
+TEST(Overhead, TheOscillatorRunsMakeTheHomeworksEvaluations) {
+  double sink = 0;
+  // fixed step: the same steps, 4 evaluations each for RK4
+  EXPECT_EQ(run_on_oscillators("rk4", 1000, 10.0, 0, sink), 4000);
+  EXPECT_EQ(run_on_oscillators("symplectic-euler", 1000, 10.0, 0, sink), 1000);
+  // adaptive: at least as many, by at most the last step's few attempts (12, 6 evaluations each)
+  const std::int64_t dop853 = run_on_oscillators("dop853", 1e-10, 10.0, 20000, sink);
+  EXPECT_GE(dop853, 20000);
+  EXPECT_LT(dop853, 20000 + 3 * 12);
+  const std::int64_t dopri5 = run_on_oscillators("dopri5", 1e-10, 10.0, 20000, sink);
+  EXPECT_GE(dopri5, 20000);
+  EXPECT_LT(dopri5, 20000 + 3 * 6);
+  EXPECT_TRUE(std::isfinite(sink));
+  EXPECT_THROW((void)run_on_oscillators("nope", 1, 1, 1, sink), Error);
 }
 
 /// The rows of the targets against the peers (time to error).

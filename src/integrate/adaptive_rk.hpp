@@ -5,12 +5,14 @@
 //                      is y1 and its derivative is f(t + h, y1) (first-same-as-last)
 //   main_stages        stages per step, FSAL stage included
 //   error_order, beta, fac_min, fac_max        for the step controller (step_control.hpp)
-//   error_norm(k, h, sk)                       the scaled error of a step
+//   error_norm(k, h, sk, scratch)              the scaled error of a step
 //   dense_prepare(...), dense_evaluate(...)    the continuous extension of a step
 //
 // Each call to step() makes one accepted step, retrying rejected attempts with smaller
 // h. Output between steps comes from dense(), which never changes the step sequence.
-// Nothing here allocates; the state and all stages are fixed-size.
+// Nothing here allocates; the state and all stages are fixed-size. A step copies the
+// state twice and the FSAL derivative once (into k_0, before its attempts): the end
+// state stays in stage_ and the end derivative in k_(s-1) until the next step.
 #include <array>
 #include <cassert>
 #include <limits>
@@ -41,16 +43,21 @@ class AdaptiveRk {
   explicit AdaptiveRk(const Settings& settings)
       : settings_(settings),
         controller_(Method::error_order, static_cast<Scalar>(Method::beta), static_cast<Scalar>(Method::fac_min),
-                    static_cast<Scalar>(Method::fac_max)) {}
+                    static_cast<Scalar>(Method::fac_max)) {
+    // Written by dense_prepare before any read; zeroed once so GCC, which cannot follow
+    // dense_ready_, does not see a read of uninitialized values.
+    for (Vector& r : dense_) r.setZero();
+  }
 
   /// Starts at (t0, y0); evaluates f there (and picks the first step if not given).
   template <class F>
   requires Derivative<F, Scalar, N>
   void start(F& f, Scalar t0, const Vector& y0) {
     t_ = t_old_ = t0;
-    y_ = y_old_ = y_end_ = y0;
+    y_ = y_old_ = y0;
     f(t_, y_, f_);
     ++counters_.rhs_evaluations;
+    fsal_ = Fsal::in_f;
     h_next_ = settings_.first_step > 0 ? settings_.first_step
                                        : initial_step(f, t_, y_, f_, order, settings_.tolerances, counters_);
     h_ = 0;
@@ -64,27 +71,38 @@ class AdaptiveRk {
     bool last_non_finite = false;
     step_valid_ = false;  // the attempts below overwrite the last step's stages
     dense_ready_ = false;
+    if (t_ >= settings_.t_stop) return StepStatus::ok;  // nothing left to do
+    // k_0 = f(t, y), once: the attempts leave it
+    switch (fsal_) {
+      case Fsal::in_f:
+        copy_state(f_, k_[0]);
+        break;
+      case Fsal::in_k_last:
+        copy_state(k_[main_stages - 1], k_[0]);
+        break;
+      case Fsal::in_k_first:
+        break;
+    }
+    fsal_ = Fsal::in_k_first;
     for (;;) {
-      if (t_ >= settings_.t_stop) return StepStatus::ok;  // nothing left to do
       const bool last = t_ + std::min(h_next_, settings_.max_step) >= settings_.t_stop;
       const Scalar h = last ? settings_.t_stop - t_ : std::min(h_next_, settings_.max_step);
       if (step_underflows(t_, h)) {
         h_next_ = h;
         return last_non_finite ? StepStatus::non_finite : StepStatus::step_underflow;
       }
-      k_[0] = f_;
       evaluate_stages<Method::tableau, 1, main_stages>(f, t_, y_, h, k_, stage_);  // stage_ = y1
       counters_.rhs_evaluations += static_cast<std::int64_t>(main_stages - 1);
       error_scale(settings_.tolerances, y_, stage_, sk_);
-      Scalar err = Method::error_norm(k_, h, sk_);
+      Scalar err = Method::error_norm(k_, h, sk_, e_);
       last_non_finite = !all_finite(stage_) || !std::isfinite(err);
       if (last_non_finite) err = std::numeric_limits<Scalar>::quiet_NaN();
       if (controller_.decide(err, h, h_next_)) {
         t_old_ = t_;
-        y_old_ = y_;
+        copy_state(y_, y_old_);
         t_ = last ? settings_.t_stop : t_old_ + h;
-        y_ = y_end_ = stage_;
-        f_ = k_[main_stages - 1];
+        copy_state(stage_, y_);  // stage_ keeps y1 for dense(), k_ the end derivative for the next step
+        fsal_ = Fsal::in_k_last;
         h_ = h;
         step_valid_ = true;
         ++counters_.steps_accepted;
@@ -105,7 +123,7 @@ class AdaptiveRk {
       return;
     }
     if (!dense_ready_) {
-      counters_.rhs_evaluations += Method::dense_prepare(f, t_old_, h_, y_old_, y_end_, k_, stage_, dense_);
+      counters_.rhs_evaluations += Method::dense_prepare(f, t_old_, h_, y_old_, stage_, k_, sk_, dense_);
       dense_ready_ = true;
     }
     Method::dense_evaluate((s - t_old_) / h_, y_old_, dense_, out);
@@ -120,6 +138,7 @@ class AdaptiveRk {
     y_ = y;
     f(t_, y_, f_);
     ++counters_.rhs_evaluations;
+    fsal_ = Fsal::in_f;
   }
 
   [[nodiscard]] Scalar t() const { return t_; }
@@ -134,11 +153,16 @@ class AdaptiveRk {
   Settings settings_;
   StepController<Scalar> controller_;
   Scalar t_ = 0, t_old_ = 0, h_ = 0, h_next_ = 0;
-  Vector y_, y_old_, y_end_, f_, stage_, sk_;
+  Vector y_, y_old_, f_, stage_, sk_;  // stage_: y1 of the last step; sk_: also dense scratch
+  Vector e_;                           // error_norm's scratch: sized once, not per attempt
   std::array<Vector, stages> k_;
   std::array<Vector, Method::dense_terms> dense_;
   bool step_valid_ = false;   // k_ holds the stages of the last accepted step
   bool dense_ready_ = false;  // dense_ holds its continuous extension
+  // Where f(t, y) is: f_ (after start, replace_state), k_(s-1) (the last step's end), or
+  // k_0 already (after a step that failed, whose attempts left k_0 alone).
+  enum class Fsal { in_f, in_k_last, in_k_first };
+  Fsal fsal_ = Fsal::in_f;
   Counters counters_;
 };
 

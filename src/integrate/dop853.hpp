@@ -130,9 +130,8 @@ struct Dop853Method {
   static constexpr std::size_t dense_terms = 7;
 
   template <class Scalar, int N, std::size_t K>
-  [[nodiscard]] static Scalar error_norm(const std::array<State<Scalar, N>, K>& k, Scalar h,
-                                         const State<Scalar, N>& sk) {
-    State<Scalar, N> e;
+  [[nodiscard]] static Scalar error_norm(const std::array<State<Scalar, N>, K>& k, Scalar h, const State<Scalar, N>& sk,
+                                         State<Scalar, N>& e) {
     weighted_sum<e5>(k, e);
     const Scalar err5 = e.cwiseQuotient(sk).squaredNorm();
     weighted_sum<e3>(k, e);

@@ -52,9 +52,8 @@ struct Dopri5Method {
   static constexpr std::size_t dense_terms = 4;
 
   template <class Scalar, int N, std::size_t K>
-  [[nodiscard]] static Scalar error_norm(const std::array<State<Scalar, N>, K>& k, Scalar h,
-                                         const State<Scalar, N>& sk) {
-    State<Scalar, N> e;
+  [[nodiscard]] static Scalar error_norm(const std::array<State<Scalar, N>, K>& k, Scalar h, const State<Scalar, N>& sk,
+                                         State<Scalar, N>& e) {
     weighted_sum<error_weights>(k, e);
     return std::fabs(h) * rms_norm(e, sk);
   }

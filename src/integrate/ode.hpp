@@ -58,6 +58,16 @@ struct Counters {
   std::int64_t newton_iterations = 0;  // implicit methods only
 };
 
+/// dst = src. For a fixed size a plain loop: Eigen's assignment stayed an out-of-line
+/// call inside an adaptive step (too large a function for GCC's inliner).
+template <class Scalar, int N>
+inline void copy_state(const State<Scalar, N>& src, State<Scalar, N>& dst) {
+  if constexpr (N == Eigen::Dynamic)
+    dst = src;
+  else
+    for (int i = 0; i < N; ++i) dst[i] = src[i];
+}
+
 /// True when every entry is finite.
 template <class Scalar, int N>
 [[nodiscard]] bool all_finite(const State<Scalar, N>& y) {

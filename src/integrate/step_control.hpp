@@ -50,17 +50,17 @@ class StepController {
   StepController(int order, Scalar beta, Scalar fac_min, Scalar fac_max, Scalar safety = Scalar(0.9))
       : exponent_(Scalar(1) / static_cast<Scalar>(order + 1) - Scalar(0.75) * beta),
         beta_(beta),
-        fac_min_(fac_min),
-        fac_max_(fac_max),
         safety_(safety),
+        inv_fac_min_(Scalar(1) / fac_min),
+        inv_fac_max_(Scalar(1) / fac_max),
         square_roots_(beta == 0 ? square_roots_for(order + 1) : -1) {}
 
   /// Decides on a step of size h with scaled error err. Returns true to accept; `h_next`
   /// is the size of the next attempt either way.
   bool decide(Scalar err, Scalar h, Scalar& h_next) {
     if (!(err <= Scalar(1))) {  // rejected, or err is NaN
-      const Scalar fac = std::isfinite(err) ? power(err) / safety_ : Scalar(1) / fac_min_;
-      h_next = h / std::min(Scalar(1) / fac_min_, fac);
+      const Scalar fac = std::isfinite(err) ? power(err) / safety_ : inv_fac_min_;
+      h_next = h / std::min(inv_fac_min_, fac);
       rejected_last_ = true;
       return false;
     }
@@ -73,7 +73,7 @@ class StepController {
       fac = std::exp(exponent_ * log_err - beta_ * log_err_prev_) / safety_;
       log_err_prev_ = std::max(log_err, kLogErrFloor);
     }
-    fac = std::clamp(fac, Scalar(1) / fac_max_, Scalar(1) / fac_min_);
+    fac = std::clamp(fac, inv_fac_max_, inv_fac_min_);
     h_next = h / fac;
     if (rejected_last_) h_next = std::min(h_next, h);
     rejected_last_ = false;
@@ -100,8 +100,9 @@ class StepController {
     return std::exp(exponent_ * std::log(err));
   }
 
-  Scalar exponent_, beta_, fac_min_, fac_max_, safety_;
-  int square_roots_;  // > 0: power() is that many square roots
+  Scalar exponent_, beta_, safety_;
+  Scalar inv_fac_min_, inv_fac_max_;  // 1 / fac_min, 1 / fac_max: divided once, not per step
+  int square_roots_;                  // > 0: power() is that many square roots
   static constexpr Scalar kLogErrFloor = Scalar(-9.21034037197618273607196581873745L);  // log(1e-4): err_prev >= 1e-4
   Scalar log_err_prev_ = kLogErrFloor;  // log of the last accepted step's err_prev
   bool rejected_last_ = false;

@@ -1,0 +1,93 @@
+#include "bench/overhead.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "core/error.hpp"
+#include "integrate/dop853.hpp"
+#include "integrate/dopri5.hpp"
+#include "integrate/explicit_rk.hpp"
+#include "integrate/gauss_legendre.hpp"
+#include "integrate/symplectic_euler.hpp"
+
+namespace linkage::bench {
+namespace {
+
+template <class Integrator>
+std::int64_t fixed(double n_steps, double duration, double& sink) {
+  const auto n = static_cast<std::int64_t>(n_steps);
+  const double h = duration / static_cast<double>(n);
+  OscillatorsRhs f;
+  Integrator integrator;
+  Vec<8> y = oscillators_start();
+  for (std::int64_t k = 0; k < n; ++k)
+    if (integrator.step(f, static_cast<double>(k) * h, h, y) != ode::StepStatus::ok) break;
+  sink += y.sum();
+  return integrator.counters().rhs_evaluations;
+}
+
+template <class Integrator>
+std::int64_t adaptive(double tol, std::int64_t evaluations, double& sink) {
+  typename Integrator::Settings settings;
+  settings.tolerances = {tol, tol};
+  OscillatorsRhs f;
+  Integrator integrator(settings);
+  integrator.start(f, 0.0, oscillators_start());
+  while (integrator.counters().rhs_evaluations < evaluations)
+    if (integrator.step(f) != ode::StepStatus::ok) break;
+  sink += integrator.y().sum();
+  return integrator.counters().rhs_evaluations;
+}
+
+}  // namespace
+
+Vec<8> oscillators_start() {
+  Vec<8> y;
+  y << 0.4, -0.3, 0.2, 0.1, 0.0, 0.5, -1.0, 1.5;
+  return y;
+}
+
+std::int64_t run_on_oscillators(const std::string& method, double knob, double duration, std::int64_t evaluations,
+                                double& sink) {
+  if (method == "euler") return fixed<ode::ExplicitEuler<double, 8>>(knob, duration, sink);
+  if (method == "symplectic-euler") return fixed<ode::SymplecticEuler<double, 8>>(knob, duration, sink);
+  if (method == "rk4") return fixed<ode::Rk4<double, 8>>(knob, duration, sink);
+  if (method == "gauss-legendre") return fixed<ode::GaussLegendre2<double, 8>>(knob, duration, sink);
+  if (method == "dopri5") return adaptive<ode::Dopri5<double, 8>>(knob, evaluations, sink);
+  if (method == "dop853") return adaptive<ode::Dop853<double, 8>>(knob, evaluations, sink);
+  throw Error::failure("run_on_oscillators: no integrator '" + method + "'");
+}
+
+PerCall time_on_oscillators(const std::string& method, double knob, double duration, std::int64_t evaluations,
+                            double min_time, std::int64_t& made) {
+  double sink = 0;
+  made = 0;
+  const Timing t =
+      time_repeated([&] { made = run_on_oscillators(method, knob, duration, evaluations, sink); }, min_time);
+  if (sink == 0.123456789) throw Error::failure("unreachable");  // keeps the runs alive
+  const double per = 1e9 / static_cast<double>(std::max<std::int64_t>(made, 1));
+  return {t.median_seconds * per, t.cpu_median_seconds * per};
+}
+
+PerCall oscillators_rhs_ns(double min_batch) {
+  std::vector<Vec<8>> ys;
+  const OscillatorsRhs f;
+  Vec<8> y = oscillators_start(), dy;
+  for (int i = 0; i < 64; ++i) {  // explicit Euler at h = 0.01 s: states along the motion
+    f(0.0, y, dy);
+    y += 0.01 * dy;
+    ys.push_back(y);
+  }
+  double sink = 0;
+  const PerCall ns = nanoseconds_per_call(
+      [&](std::size_t i) {
+        f(0.0, ys[i % ys.size()], dy);
+        sink += dy[7];
+      },
+      min_batch);
+  if (sink == 0.123456789) throw Error::failure("unreachable");
+  return ns;
+}
+
+}  // namespace linkage::bench
