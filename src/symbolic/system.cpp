@@ -168,6 +168,7 @@ System::System(const Mechanism& mechanism) : mechanism_(mechanism), tree_(spanni
   table_.add({t_, Role::time, "t", "t", "t", "t", "s", "time"});
   add_bodies();
   add_joints();
+  add_drivers();
   add_loads();
   add_generalized();
   add_newton_euler();
@@ -315,6 +316,16 @@ Vec2 System::point_position(int body, const std::string& point) const {
   const BodySystem& b = bodies_[static_cast<std::size_t>(body)];
   const Vec2 origin{b.x.q, b.y.q};
   return origin + rotate(b.rotates ? ex(b.theta.q) : ex(0), b.points.at(point));
+}
+
+// Step 1 of issue 25 reads drivers; their rows come in step 2. Until then a driven file
+// is refused rather than run as if undriven. An unknown name in a motion is named first.
+void System::add_drivers() {
+  for (const Driver& d : mechanism_.drivers) (void)quantity(d.motion, true);
+  if (mechanism_.drivers.empty()) return;
+  const Driver& d = mechanism_.drivers.front();
+  throw Error::input(where(d.pos) + "driver '" + d.name +
+                     "': drivers are read but not yet in the equations; valid for now: a mechanism without [[driver]]");
 }
 
 void System::add_joints() {

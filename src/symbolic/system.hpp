@@ -109,6 +109,7 @@ class System {
   void add_parameters();
   void add_bodies();
   void add_joints();
+  void add_drivers();
   void add_loads();
   void add_generalized();
   void add_newton_euler();
