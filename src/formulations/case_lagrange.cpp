@@ -5,7 +5,8 @@
 // every load (gravity, springs and dampers with their length symbols, applied loads) less
 // the velocity terms of T. A loop-closing joint's force is one more load, J^T lambda with
 // its force components as lambda (Case 3's unknowns), and its constraint at the
-// acceleration level one more row, J q'' = -J' q'. Trigonometry contracted:
+// acceleration level one more row, J q'' = -J' q'; a driver's likewise, its torque or
+// force lambda entering as lambda dC/dq_i. Trigonometry contracted:
 // sin a sin b + cos a cos b = cos(a - b) and the like.
 #include <algorithm>
 #include <map>
@@ -165,11 +166,14 @@ CaseSystem lagrange_case(const sym::System& system) {
       Q += in_q(load.force.x) * in_q(v.x).diff(rate) + in_q(load.force.y) * in_q(v.y).diff(rate);
       if (b.rotates) Q += in_q(load.moment) * in_q(b.theta.q_dot).diff(rate);
     }
+    for (const sym::DriverSystem& d : system.drivers()) Q += d.unknown * in_q(d.constraint).diff(g.symbols.q);
     rows.push_back(system.time_derivative(T.diff(rate)) - T.diff(g.symbols.q) - Q);
   }
   for (int j : system.tree().loop_joints)
     for (const ex& phi : system.joints()[static_cast<std::size_t>(j)].constraints)
       rows.push_back(system.time_derivative(system.time_derivative(in_q(phi))));
+  for (const sym::DriverSystem& d : system.drivers())
+    rows.push_back(system.time_derivative(system.time_derivative(in_q(d.constraint))));
 
   CaseSystem reduced = reduced_case(system);  // the same unknowns; what it recovers from them
   CaseSystem out = linear_system(CaseId::reduced, rows, reduced.unknowns);
@@ -179,7 +183,7 @@ CaseSystem lagrange_case(const sym::System& system) {
   for (std::size_t r = 0; r < out.labels.size(); ++r) out.labels[r] = std::to_string(r + 1) + ".L";
   out.recovered = std::move(reduced.recovered);
   // "M symmetric" and what lambda is fit one 80-column heading only without loops.
-  out.title = count_word(rows.size()) + (system.tree().loop_joints.empty()
+  out.title = count_word(rows.size()) + (system.tree().loop_joints.empty() && system.drivers().empty()
                                              ? " equations in Lagrange's form M(q) q'' = Q, M symmetric"
                                              : " equations, Lagrange's form M(q) q'' = Q + J^T lambda, loop rows");
   return out;

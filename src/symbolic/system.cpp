@@ -318,14 +318,29 @@ Vec2 System::point_position(int body, const std::string& point) const {
   return origin + rotate(b.rotates ? ex(b.theta.q) : ex(0), b.points.at(point));
 }
 
-// Step 1 of issue 25 reads drivers; their rows come in step 2. Until then a driven file
-// is refused rather than run as if undriven. An unknown name in a motion is named first.
 void System::add_drivers() {
-  for (const Driver& d : mechanism_.drivers) (void)quantity(d.motion, true);
-  if (mechanism_.drivers.empty()) return;
-  const Driver& d = mechanism_.drivers.front();
-  throw Error::input(where(d.pos) + "driver '" + d.name +
-                     "': drivers are read but not yet in the equations; valid for now: a mechanism without [[driver]]");
+  for (std::size_t i = 0; i < mechanism_.drivers.size(); ++i) {
+    const Driver& d = mechanism_.drivers[i];
+    DriverSystem ds;
+    ds.index = static_cast<int>(i);
+    for (std::size_t j = 0; j < mechanism_.joints.size(); ++j)
+      if (mechanism_.joints[j].name == d.joint) ds.joint = static_cast<int>(j);
+    const Joint& joint = mechanism_.joints.at(static_cast<std::size_t>(ds.joint));
+    const JointStages& stages = joint_stages(joint.type);
+    const GiNaC::ex driven = stages.driven(maximal_ends(*this, ds.joint));
+    if (driven.is_zero())  // a pin between two point masses has no angle to drive
+      throw Error::input(where(d.pos) + "driver '" + d.name + "': joint '" + joint.name + "' joins bodies without " +
+                         "angles; valid: a pin with a body that rotates, or a slider");
+    ds.constraint = driven - quantity(d.motion, true);
+    const std::string column = joint_type_info(joint.type).driver_column;
+    const Spelling spelling = spell_indexed(stages.driver_letter, 0, d.name);
+    ds.unknown =
+        table_
+            .add({symbol(d.name + "." + column), Role::force, d.name + "." + column, spelling.unicode, spelling.ascii,
+                  spelling.latex, stages.driver_unit, "driver " + d.name + "'s " + column + " on " + joint.bodies[1]})
+            .symbol;
+    drivers_.push_back(std::move(ds));
+  }
 }
 
 void System::add_joints() {
@@ -551,6 +566,13 @@ void System::add_newton_euler() {
     apply(b, ex(-1) * js.force, at_b, -js.moment);
   }
   for (const Load& load : loads_) apply(load.body, load.force, load.point, load.moment);
+  // Each driver's multiplier as the generalized force lambda dC/dq on every body it moves.
+  for (const DriverSystem& d : drivers_)
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+      const BodySystem& b = bodies_[i];
+      sum_force[i] = sum_force[i] + Vec2{d.unknown * d.constraint.diff(b.x.q), d.unknown * d.constraint.diff(b.y.q)};
+      if (b.rotates) sum_moment[i] += d.unknown * d.constraint.diff(b.theta.q);
+    }
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
     const BodySystem& b = bodies_[i];
     NewtonEulerRows rows{static_cast<int>(i), {}};
