@@ -6,7 +6,7 @@
 // the velocity terms of T. A loop-closing joint's force is one more load, J^T lambda with
 // its force components as lambda (Case 3's unknowns), and its constraint at the
 // acceleration level one more row, J q'' = -J' q'; a driver's likewise, its torque or
-// force lambda entering as lambda dC/dq_i. Trigonometry contracted:
+// force lambda one more load, lambda dC/dq. Trigonometry contracted:
 // sin a sin b + cos a cos b = cos(a - b) and the like.
 #include <algorithm>
 #include <map>
@@ -129,6 +129,8 @@ struct Application {
 std::vector<Application> applications(const sym::System& system) {
   std::vector<Application> out;
   for (const sym::Load& load : system.loads()) out.push_back({load.body, load.force, load.point, load.moment});
+  for (const sym::DriverSystem& d : system.drivers())  // lambda dC/dq
+    for (const sym::Load& load : d.loads) out.push_back({load.body, load.force, load.point, load.moment});
   // A loop-closing joint's force on both its bodies, as Newton-Euler applies it.
   const Mechanism& m = system.mechanism();
   for (int j : system.tree().loop_joints) {
@@ -166,7 +168,6 @@ CaseSystem lagrange_case(const sym::System& system) {
       Q += in_q(load.force.x) * in_q(v.x).diff(rate) + in_q(load.force.y) * in_q(v.y).diff(rate);
       if (b.rotates) Q += in_q(load.moment) * in_q(b.theta.q_dot).diff(rate);
     }
-    for (const sym::DriverSystem& d : system.drivers()) Q += d.unknown * in_q(d.constraint).diff(g.symbols.q);
     rows.push_back(system.time_derivative(T.diff(rate)) - T.diff(g.symbols.q) - Q);
   }
   for (int j : system.tree().loop_joints)

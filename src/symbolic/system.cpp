@@ -339,6 +339,13 @@ void System::add_drivers() {
             .add({symbol(d.name + "." + column), Role::force, d.name + "." + column, spelling.unicode, spelling.ascii,
                   spelling.latex, stages.driver_unit, "driver " + d.name + "'s " + column + " on " + joint.bodies[1]})
             .symbol;
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+      const BodySystem& body = bodies_[b];
+      const Vec2 force{ds.unknown * ds.constraint.diff(body.x.q), ds.unknown * ds.constraint.diff(body.y.q)};
+      const GiNaC::ex moment = body.rotates ? ds.unknown * ds.constraint.diff(body.theta.q) : GiNaC::ex(0);
+      if (!(force.x.is_zero() && force.y.is_zero() && moment.is_zero()))
+        ds.loads.push_back({static_cast<int>(b), force, {body.x.q, body.y.q}, moment, "driver " + d.name});
+    }
     drivers_.push_back(std::move(ds));
   }
 }
@@ -566,13 +573,8 @@ void System::add_newton_euler() {
     apply(b, ex(-1) * js.force, at_b, -js.moment);
   }
   for (const Load& load : loads_) apply(load.body, load.force, load.point, load.moment);
-  // Each driver's multiplier as the generalized force lambda dC/dq on every body it moves.
   for (const DriverSystem& d : drivers_)
-    for (std::size_t i = 0; i < bodies_.size(); ++i) {
-      const BodySystem& b = bodies_[i];
-      sum_force[i] = sum_force[i] + Vec2{d.unknown * d.constraint.diff(b.x.q), d.unknown * d.constraint.diff(b.y.q)};
-      if (b.rotates) sum_moment[i] += d.unknown * d.constraint.diff(b.theta.q);
-    }
+    for (const Load& load : d.loads) apply(load.body, load.force, load.point, load.moment);
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
     const BodySystem& b = bodies_[i];
     NewtonEulerRows rows{static_cast<int>(i), {}};

@@ -71,6 +71,9 @@ struct DriverSystem {
   int joint = -1;  // into Mechanism::joints
   GiNaC::ex constraint;
   GiNaC::symbol unknown;  // NAME.torque or NAME.force
+  // unknown * dC/dq on each body it moves: (d/dx, d/dy) as a force at the centre of mass,
+  // d/dtheta as a couple; the Newton-Euler rows and the reports read these.
+  std::vector<Load> loads;
 };
 
 /// One generalized coordinate: its symbols (for a floating base and a pin, the body's own
