@@ -184,9 +184,11 @@ CaseSystem lagrange_case(const sym::System& system) {
   for (std::size_t r = 0; r < out.labels.size(); ++r) out.labels[r] = std::to_string(r + 1) + ".L";
   out.recovered = std::move(reduced.recovered);
   // "M symmetric" and what lambda is fit one 80-column heading only without loops.
-  out.title = count_word(rows.size()) + (system.tree().loop_joints.empty() && system.drivers().empty()
-                                             ? " equations in Lagrange's form M(q) q'' = Q, M symmetric"
-                                             : " equations, Lagrange's form M(q) q'' = Q + J^T lambda, loop rows");
+  const bool loops = !system.tree().loop_joints.empty(), drivers = !system.drivers().empty();
+  const std::string kept = loops ? (drivers ? "loop and driver rows" : "loop rows") : "driver rows";
+  out.title =
+      count_word(rows.size()) + (!loops && !drivers ? " equations in Lagrange's form M(q) q'' = Q, M symmetric"
+                                                    : " equations, Lagrange's form M(q) q'' = Q + J^T lambda, " + kept);
   return out;
 }
 

@@ -139,7 +139,7 @@ CaseSystem reduced_case(const sym::System& system) {
               (loops                               ? "only loop-closing forces"
                : system.mechanism().joints.empty() ? std::string("no joints")
                                                    : "no " + force_phrase(system));
-  if (!system.drivers().empty()) out.title += ", the drivers' kept";
+  if (!system.drivers().empty()) out.title += loops ? " and drivers" : ", drivers kept";
   return out;
 }
 
