@@ -10,6 +10,7 @@
 #include "evaluate/tree_dynamics.hpp"
 #include "symbolic/energy.hpp"
 #include "symbolic/joints.hpp"
+#include "symbolic/loop_closure.hpp"
 
 namespace linkage::eval {
 
@@ -40,6 +41,7 @@ std::vector<NamedPoint> named_points(const sym::System& system) {
 MechanismDynamics::MechanismDynamics(const sym::System& system, CaseId id, std::optional<CaseSystem> derived)
     : id_(id), system_(&system), derived_(std::move(derived)) {
   if (derived_ && derived_->id != id) throw std::logic_error("a derived case given for another case");
+  sym::require_no_drivers_to_simulate(system);
   const bool maximal = id == CaseId::maximal;
   bodies_ = system.bodies().size();
   joints_ = system.joints().size();

@@ -4,7 +4,8 @@
 // Rows, in order: the row of each generalized coordinate (x -> the body's x row, y -> its
 // y row, theta -> its moment row, s -> its row along the slider axis); then the rest,
 // body by body, a translation row per unit mass (x_b'' + sum F / m_b: the homework's
-// (5.2), (6.2)); then each loop-closing joint's constraint at the acceleration level.
+// (5.2), (6.2)); then each loop-closing joint's constraint at the acceleration level,
+// then each driver's (kept like a loop's, its torque or force an unknown).
 #include <stdexcept>
 
 #include "core/interrupt.hpp"
@@ -33,6 +34,7 @@ GeneralizedRows generalized_rows(const sym::System& system) {
   for (const sym::GeneralizedCoordinate& g : coordinates) out.unknowns.push_back(g.symbols.q_ddot);
   for (const sym::JointSystem& j : system.joints())
     for (const GiNaC::symbol& u : j.unknowns) out.unknowns.push_back(u);
+  for (const sym::DriverSystem& d : system.drivers()) out.unknowns.push_back(d.unknown);
 
   std::vector<BodyRows> per_body(bodies.size());
   for (const sym::NewtonEulerRows& ne : system.newton_euler()) {
@@ -84,6 +86,9 @@ GeneralizedRows generalized_rows(const sym::System& system) {
     for (const GiNaC::ex& phi : system.joints()[static_cast<std::size_t>(j)].constraints)
       out.rows.push_back(GiNaC::expand(
           system.time_derivative(system.time_derivative(phi.subs(to_q, GiNaC::subs_options::no_pattern)))));
+  for (const sym::DriverSystem& d : system.drivers())
+    out.rows.push_back(GiNaC::expand(
+        system.time_derivative(system.time_derivative(d.constraint.subs(to_q, GiNaC::subs_options::no_pattern)))));
 
   for (const sym::BodySystem& b : bodies) {
     auto recover = [&](const sym::CoordinateSymbols& c) {

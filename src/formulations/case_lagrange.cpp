@@ -5,7 +5,8 @@
 // every load (gravity, springs and dampers with their length symbols, applied loads) less
 // the velocity terms of T. A loop-closing joint's force is one more load, J^T lambda with
 // its force components as lambda (Case 3's unknowns), and its constraint at the
-// acceleration level one more row, J q'' = -J' q'. Trigonometry contracted:
+// acceleration level one more row, J q'' = -J' q'; a driver's likewise, its torque or
+// force lambda one more load, lambda dC/dq. Trigonometry contracted:
 // sin a sin b + cos a cos b = cos(a - b) and the like.
 #include <algorithm>
 #include <map>
@@ -128,6 +129,8 @@ struct Application {
 std::vector<Application> applications(const sym::System& system) {
   std::vector<Application> out;
   for (const sym::Load& load : system.loads()) out.push_back({load.body, load.force, load.point, load.moment});
+  for (const sym::DriverSystem& d : system.drivers())  // lambda dC/dq
+    for (const sym::Load& load : d.loads) out.push_back({load.body, load.force, load.point, load.moment});
   // A loop-closing joint's force on both its bodies, as Newton-Euler applies it.
   const Mechanism& m = system.mechanism();
   for (int j : system.tree().loop_joints) {
@@ -170,6 +173,8 @@ CaseSystem lagrange_case(const sym::System& system) {
   for (int j : system.tree().loop_joints)
     for (const ex& phi : system.joints()[static_cast<std::size_t>(j)].constraints)
       rows.push_back(system.time_derivative(system.time_derivative(in_q(phi))));
+  for (const sym::DriverSystem& d : system.drivers())
+    rows.push_back(system.time_derivative(system.time_derivative(in_q(d.constraint))));
 
   CaseSystem reduced = reduced_case(system);  // the same unknowns; what it recovers from them
   CaseSystem out = linear_system(CaseId::reduced, rows, reduced.unknowns);
@@ -179,9 +184,11 @@ CaseSystem lagrange_case(const sym::System& system) {
   for (std::size_t r = 0; r < out.labels.size(); ++r) out.labels[r] = std::to_string(r + 1) + ".L";
   out.recovered = std::move(reduced.recovered);
   // "M symmetric" and what lambda is fit one 80-column heading only without loops.
-  out.title = count_word(rows.size()) + (system.tree().loop_joints.empty()
-                                             ? " equations in Lagrange's form M(q) q'' = Q, M symmetric"
-                                             : " equations, Lagrange's form M(q) q'' = Q + J^T lambda, loop rows");
+  const bool loops = !system.tree().loop_joints.empty(), drivers = !system.drivers().empty();
+  const std::string kept = loops ? (drivers ? "loop and driver rows" : "loop rows") : "driver rows";
+  out.title =
+      count_word(rows.size()) + (!loops && !drivers ? " equations in Lagrange's form M(q) q'' = Q, M symmetric"
+                                                    : " equations, Lagrange's form M(q) q'' = Q + J^T lambda, " + kept);
   return out;
 }
 

@@ -1,5 +1,5 @@
 // Case 3, the generalized coordinates with the tree's joint forces eliminated; only the
-// forces of loop-closing joints stay unknown. From Case 2's rows, each tree force
+// forces of loop-closing joints and the drivers' torques and forces stay unknown. From Case 2's rows, each tree force
 // component f is solved from the row that holds it alone among the tree forces,
 //   r = c f + rest = 0  =>  f = -rest / c,
 // preferring a row where c does not depend on the state, then the row with the fewest
@@ -129,15 +129,17 @@ CaseSystem reduced_case(const sym::System& system) {
   for (const sym::JointSystem& j : system.joints())
     if (!j.in_tree)
       for (const GiNaC::symbol& u : j.unknowns) unknowns.push_back(u);
+  for (const sym::DriverSystem& d : system.drivers()) unknowns.push_back(d.unknown);
 
   CaseSystem out = linear_system(CaseId::reduced, kept, unknowns);
   out.recovered = std::move(g.recovered);
   for (Recovered& r : forces) out.recovered.push_back(std::move(r));
-  const bool loops = unknowns.size() > accelerations.size();
+  const bool loops = !system.tree().loop_joints.empty();
   out.title = count_word(kept.size()) + " equations in generalized coordinates, " +
               (loops                               ? "only loop-closing forces"
                : system.mechanism().joints.empty() ? std::string("no joints")
                                                    : "no " + force_phrase(system));
+  if (!system.drivers().empty()) out.title += loops ? " and drivers" : ", drivers kept";
   return out;
 }
 

@@ -15,6 +15,16 @@ std::string joint_types_with(bool JointTypeInfo::*takes) {
   return out;
 }
 
+std::string drivable_joint_types() {
+  std::vector<std::string> names;
+  for (const JointTypeInfo& info : kJointTypes)
+    if (drivable(info.type)) names.emplace_back(info.name);
+  std::string out;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    out += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+  return out;
+}
+
 bool has_own_coordinate(JointMotion motion) {
   switch (motion) {
     case JointMotion::revolute:

@@ -27,13 +27,19 @@ struct JointTypeInfo {
   bool torsional_spring = false;  // takes stiffness, damping, rest_angle
   bool axis = false;              // needs axis, a direction in the frame of bodies[0]
   bool keeps_angle = false;       // holds both angles equal: neither body may be a point mass
+  // What a [[driver]] on it prescribes, and its column ("torque": NAME.torque); "" when
+  // it cannot be driven.
+  const char* driven = "";         // "the relative angle th_b - th_a, rad"
+  const char* driver_column = "";  // "torque"
 };
 
 /// One row per JointType, in the enum's order (checked below; symbolic/joints.cpp checks
 /// that no enum entry lacks its row).
 inline constexpr std::array kJointTypes{
-    JointTypeInfo{JointType::pin, "pin", JointMotion::revolute, "stiffness, damping, rest_angle", true, false, false},
-    JointTypeInfo{JointType::slider, "slider", JointMotion::prismatic, "axis", false, true, true},
+    JointTypeInfo{JointType::pin, "pin", JointMotion::revolute, "stiffness, damping, rest_angle", true, false, false,
+                  "the relative angle th_b - th_a, rad", "torque"},
+    JointTypeInfo{JointType::slider, "slider", JointMotion::prismatic, "axis", false, true, true, "the travel s, m",
+                  "force"},
 };
 
 static_assert(
@@ -61,6 +67,12 @@ inline constexpr std::array<const char*, kJointTypes.size()> kJointTypeNames = [
 
 /// The types whose row has `takes`, for messages: "pins", "pins and sliders".
 [[nodiscard]] std::string joint_types_with(bool JointTypeInfo::*takes);
+
+/// Whether a [[driver]] may drive a joint of this type (its row names a driver column).
+[[nodiscard]] constexpr bool drivable(JointType type) { return *joint_type_info(type).driver_column != '\0'; }
+
+/// The drivable types, for messages: "pin or slider".
+[[nodiscard]] std::string drivable_joint_types();
 
 /// Whether the motion has a coordinate of the joint's own (keyed "JOINT.s" in [initial]).
 [[nodiscard]] bool has_own_coordinate(JointMotion motion);

@@ -66,6 +66,16 @@ struct Joint {
   SourcePos pos;
 };
 
+/// A motor at a pin or slider joint: one more constraint, rheonomic, (th_b - th_a) = motion(t)
+/// at a pin, s = motion(t) at a slider; its multiplier is the driver's torque or force on
+/// the joint's bodies[1] (the `NAME.torque` or `NAME.force` column).
+struct Driver {
+  std::string name;
+  std::string joint;  // a joint of the file whose type's row is drivable
+  Quantity motion;    // in t, parameters and definitions: rad (pin) or m (slider)
+  SourcePos pos;
+};
+
 /// "body.point", e.g. "ground.O" or "1.P".
 struct PointRef {
   std::string body;
@@ -150,6 +160,7 @@ struct Mechanism {
   std::vector<NamedPoint> ground_points;
   std::vector<Body> bodies;
   std::vector<Joint> joints;
+  std::vector<Driver> drivers;  // [[driver]], in file order
   std::vector<Spring> springs;
   std::vector<AppliedForce> forces;
   std::vector<AppliedTorque> torques;

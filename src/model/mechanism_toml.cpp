@@ -37,6 +37,7 @@ constexpr MechanismKey kKeys[] = {
     {"top level", "ground", "table", "none", "the fixed frame's named points"},
     {"top level", "body", "list of tables", "(required)", "the moving bodies, at least one"},
     {"top level", "joint", "list of tables", "none", "pins and sliders between two bodies or a body and the ground"},
+    {"top level", "driver", "list of tables", "none", "motors: the prescribed motion of a pin or slider joint"},
     {"top level", "spring", "list of tables", "none", "linear spring-dampers between two points"},
     {"top level", "force", "list of tables", "none", "applied forces at points, world frame"},
     {"top level", "torque", "list of tables", "none", "applied torques on bodies"},
@@ -73,6 +74,12 @@ constexpr MechanismKey kKeys[] = {
     {"[[joint]]", "rest_angle", kQuantity, "0", "pin only: relative angle at which the torsional spring is slack, rad"},
     {"[[joint]]", "axis", kVector, "(required by slider)",
      "slider only: the sliding direction in the frame of bodies[0], any length but not zero"},
+    {"[[driver]]", "name", "string", "(required)",
+     "the driver's name, naming its column NAME.torque (pin) or NAME.force (slider): letters, digits, '_' or '-'"},
+    {"[[driver]]", "joint", "string", "(required)", "the pin or slider joint it drives"},
+    {"[[driver]]", "motion", kQuantity, "(required)",
+     "pin: the relative angle th_b - th_a of the joint's bodies, rad; slider: the joint's travel s, m; in t, the "
+     "parameters and definitions"},
     {"[[spring]]", "name", "string", "(required)", "the spring's name: letters, digits, '_' or '-'"},
     {"[[spring]]", "between", "list of two strings", "(required)", "two points as \"body.point\" (\"ground.O\")"},
     {"[[spring]]", "stiffness", kQuantity, "(required)", "N/m, >= 0"},
@@ -179,6 +186,7 @@ class MechanismReader {
     read_ground();
     read_bodies();
     read_joints();
+    read_drivers();
     read_springs();
     read_loads();
     read_initial();
@@ -605,6 +613,68 @@ class MechanismReader {
     if (is_zero(joint.axis->x) && is_zero(joint.axis->y))
       fail(joint.axis->x.pos,
            r.context() + ": 'axis' = [0, 0] has no direction; valid: a nonzero vector such as [1, 0]");
+  }
+
+  // [[driver]]: a joint whose type's row is drivable, at most one driver each, a name no
+  // body or joint has (they share the columns' namespace), a motion free of the state.
+  void read_drivers() {
+    std::map<std::string, long> lines;
+    std::size_t index = 0;
+    for (const toml::table* table : root_.tables("driver", "[[driver]]")) {
+      Driver driver;
+      driver.pos = pos(table->source());
+      const TableReader numbered = checked(*table, "[[driver]] number " + std::to_string(++index), "[[driver]]");
+      driver.name = unique_name(numbered, "driver", true, lines);
+      const SourcePos name_at = string_at(numbered, "name", true)->second;
+      const auto clash = [&](const std::string& kind, const SourcePos& first) {
+        fail(name_at, "driver name " + q(driver.name) + " is the name of the " + kind + " at line " +
+                          std::to_string(first.line) + "; a driver's name must differ from every body and joint name");
+      };
+      if (const Body* body = m_.find_body(driver.name)) clash("body", body->pos);
+      if (const Joint* joint = m_.find_joint(driver.name)) clash("joint", joint->pos);
+      const TableReader r = reader(*table, "driver " + q(driver.name));
+      const auto joint_name = string_at(r, "joint", true);
+      const Joint* joint = m_.find_joint(joint_name->first);
+      std::vector<std::string> drivable;
+      for (const Joint& j : m_.joints)
+        if (linkage::drivable(j.type)) drivable.push_back(j.name);
+      if (joint == nullptr)
+        fail(joint_name->second, r.context() + ": " + q(joint_name->first) + " is not a joint" +
+                                     did_you_mean(joint_name->first, drivable) +
+                                     "; valid: " + join_names(drivable, "none (the file has no pin or slider joint)"));
+      if (!linkage::drivable(joint->type))
+        fail(joint_name->second, r.context() + ": joint " + q(joint->name) + " is a " + joint_type_name(joint->type) +
+                                     ", which cannot be driven; valid: a joint of type " + drivable_joint_types());
+      for (const Driver& other : m_.drivers)
+        if (other.joint == joint->name)
+          fail(joint_name->second, r.context() + ": joint " + q(joint->name) + " is already driven by " +
+                                       q(other.name) + " (line " + std::to_string(other.pos.line) +
+                                       "); a joint takes one driver");
+      driver.joint = joint->name;
+      driver.motion = required_quantity(r, "motion").quantity;
+      reject_state_in_motion(driver, r.context());
+      m_.drivers.push_back(std::move(driver));
+    }
+  }
+
+  // "crank.theta", "S.s_dot": a BODY.NAME or JOINT.NAME in a motion, which must be a
+  // function of t alone (the expression reader would only say "unknown name").
+  void reject_state_in_motion(const Driver& driver, const std::string& context) const {
+    const std::string& text = driver.motion.text;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+      const auto word = [&](std::size_t j) { return j < text.size() && (alnum(text[j]) || text[j] == '_'); };
+      if (!word(i) || (i > 0 && (word(i - 1) || text[i - 1] == '.'))) continue;
+      std::size_t end = i;
+      while (word(end)) ++end;
+      if (end + 1 >= text.size() || text[end] != '.' || !(alpha(text[end + 1]) || text[end + 1] == '_')) continue;
+      const std::string owner = text.substr(i, end - i);
+      if (m_.find_body(owner) == nullptr && m_.find_joint(owner) == nullptr) continue;
+      std::size_t stop = end + 1;
+      while (word(stop)) ++stop;
+      fail(driver.motion.pos, context + ": the motion \"" + text + "\" uses the state " + q(text.substr(i, stop - i)) +
+                                  "; valid: an expression in t, the parameters and definitions (a prescribed "
+                                  "motion cannot depend on the state)");
+    }
   }
 
   PointRef point_ref(const std::pair<std::string, SourcePos>& text, const std::string& context) const {

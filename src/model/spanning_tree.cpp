@@ -92,7 +92,7 @@ bool body_rotates(const Body& body) { return body.shape != Shape::point || body.
 int degrees_of_freedom(const Mechanism& mechanism) {
   int dof = 0;
   for (const Body& body : mechanism.bodies) dof += body_rotates(body) ? 3 : 2;
-  return dof - 2 * static_cast<int>(mechanism.joints.size());
+  return dof - 2 * static_cast<int>(mechanism.joints.size()) - static_cast<int>(mechanism.drivers.size());
 }
 
 }  // namespace linkage

@@ -47,7 +47,7 @@ struct SpanningTree {
 [[nodiscard]] bool body_rotates(const Body& body);
 
 /// Degrees of freedom when no constraint is redundant: 3 per body (2 per point mass),
-/// minus 2 per pin or slider.
+/// minus 2 per pin or slider, minus 1 per driver.
 [[nodiscard]] int degrees_of_freedom(const Mechanism& mechanism);
 
 }  // namespace linkage

@@ -290,24 +290,38 @@ class DerivationWriter {
       new_paragraph(text(concat({"Joint ", joint.name, ": ", kJointTypeNames[static_cast<std::size_t>(joint.type)],
                                  " between ", joint.bodies[0], ".", joint.points[0], " and ", joint.bodies[1], ".",
                                  joint.points[1], js.in_tree ? " (spanning tree)." : " (closes a loop)."})));
-      static constexpr std::array<const char*, 3> kLevels{"position", "velocity", "acceleration"};
       std::vector<std::string> groups;
-      for (const GiNaC::ex& phi : js.constraints) {
-        std::vector<std::string> rows;
-        GiNaC::ex form = phi;
-        for (const char* level : {kLevels[0], kLevels[1]}) {
-          rows.push_back(
-              equation_row(tex(GiNaC::expand(form)), "0", concat({" && \\text{", level, "}"}), kEquationLimit, pad()));
-          form = system_.time_derivative(form);
-        }
-        // The acceleration level as Case 1 writes it: the accelerations on the left.
-        const EquationSides eq = acceleration_form(system_, phi, Style::latex);
-        rows.push_back(equation_row(eq.lhs, eq.rhs, concat({" && \\text{", kLevels[2], "}"}), kEquationLimit, pad()));
-        groups.push_back(joined(rows, " \\\\\n"));
-        groups.back().pop_back();
-      }
+      for (const GiNaC::ex& phi : js.constraints) groups.push_back(levels(phi));
       aligned(joined(groups, " \\\\[1ex]\n"));
     }
+    for (const sym::DriverSystem& d : system_.drivers()) {
+      const Driver& driver = m.drivers[static_cast<std::size_t>(d.index)];
+      const Joint& joint = m.joints[static_cast<std::size_t>(d.joint)];
+      new_paragraph(concat({text(concat({"Driver ", driver.name, ": ", joint_type_name(joint.type), " ", joint.name,
+                                         " on its motion ", driver.motion.text, ", a row of every case; its ",
+                                         joint_type_info(joint.type).driver_column, " "})),
+                            inline_math(tex(d.unknown)),
+                            text(concat({" on ", joint.bodies[1], " is an unknown of every case."}))}));
+      aligned(levels(d.constraint));
+    }
+  }
+
+  // A constraint row at position, velocity and acceleration level, as aligned rows.
+  std::string levels(const GiNaC::ex& phi) {
+    static constexpr std::array<const char*, 3> kLevels{"position", "velocity", "acceleration"};
+    std::vector<std::string> rows;
+    GiNaC::ex form = phi;
+    for (const char* level : {kLevels[0], kLevels[1]}) {
+      rows.push_back(
+          equation_row(tex(GiNaC::expand(form)), "0", concat({" && \\text{", level, "}"}), kEquationLimit, pad()));
+      form = system_.time_derivative(form);
+    }
+    // The acceleration level as Case 1 writes it: the accelerations on the left.
+    const EquationSides eq = acceleration_form(system_, phi, Style::latex);
+    rows.push_back(equation_row(eq.lhs, eq.rhs, concat({" && \\text{", kLevels[2], "}"}), kEquationLimit, pad()));
+    std::string out = joined(rows, " \\\\\n");
+    out.pop_back();
+    return out;
   }
 
   void energy() {
@@ -315,6 +329,11 @@ class DerivationWriter {
     std::string note = power.is_zero()
                            ? "Only conservative forces work on the mechanism: its energy $E = T + V$ stays constant."
                            : "The dampers and applied loads work at the rate $P$; $E = T + V$ changes at that rate.";
+    if (!system_.drivers().empty())
+      note = concat({power.is_zero() ? "$E = T + V$ changes at the drivers' power"
+                                     : "The dampers and applied loads work at the rate $P$; $E = T + V$ changes at "
+                                       "$P$ and at the drivers' power",
+                     ", each driver's torque or force times its joint's relative rate."});
     if (!touches_ground(system_.mechanism()))
       note +=
           " Nothing touches the ground: the horizontal momentum and the angular momentum $H_c$ about the centre of "
@@ -369,7 +388,9 @@ class DerivationWriter {
             {item, ": ",
              text(concat({kJointTypeNames[static_cast<std::size_t>(joint.type)], " ", joint.name, ", from ", from}))}));
       }
-      for (const sym::Load& load : system_.loads()) {
+      std::vector<sym::Load> loads = system_.loads();
+      for (const sym::DriverSystem& d : system_.drivers()) loads.insert(loads.end(), d.loads.begin(), d.loads.end());
+      for (const sym::Load& load : loads) {
         if (load.body != static_cast<int>(b)) continue;
         std::string item;
         if (!(load.force.x.is_zero() && load.force.y.is_zero())) {

@@ -21,7 +21,7 @@ namespace linkage {
 namespace {
 
 // Case 1's unknowns, in its order: every body's accelerations, then every joint's force
-// components.
+// components, then every driver's torque or force.
 std::vector<GiNaC::symbol> case1_unknowns(const sym::System& system) {
   std::vector<GiNaC::symbol> out;
   for (const sym::BodySystem& b : system.bodies()) {
@@ -30,6 +30,7 @@ std::vector<GiNaC::symbol> case1_unknowns(const sym::System& system) {
     if (b.rotates) out.push_back(b.theta.q_ddot);
   }
   for (const sym::JointSystem& j : system.joints()) out.insert(out.end(), j.unknowns.begin(), j.unknowns.end());
+  for (const sym::DriverSystem& d : system.drivers()) out.push_back(d.unknown);
   return out;
 }
 
@@ -315,6 +316,15 @@ std::string mechanism_json(const MechanismSolution& s, JsonKeys keys) {
       joints[m.joints[j].name] = entry;
     }
     one["joints"] = joints;
+    if (!system.drivers().empty()) {
+      ordered_json drivers = ordered_json::object();
+      for (const sym::DriverSystem& d : system.drivers()) {
+        const Driver& driver = m.drivers[static_cast<std::size_t>(d.index)];
+        const Joint& joint = m.joints[static_cast<std::size_t>(d.joint)];
+        drivers[driver.name] = {{joint_type_info(joint.type).driver_column, solved_value(s, c, d.unknown)}};
+      }
+      one["drivers"] = drivers;
+    }
     cases.push_back(one);
   }
   doc["cases"] = cases;

@@ -170,17 +170,31 @@ class MechanismWriter {
       line(concat({"  Joint ", joint.name, ": ", kJointTypeNames[static_cast<std::size_t>(joint.type)], " between ",
                    joint.bodies[0], ".", joint.points[0], " and ", joint.bodies[1], ".", joint.points[1],
                    js.in_tree ? " (spanning tree)" : " (closes a loop)"}));
-      for (const GiNaC::ex& phi : js.constraints) {
-        lines(wrap("    position      ", concat({marked(GiNaC::expand(phi)), std::string(1, kBreakMark), " = 0"}),
-                   std::string(20, ' '), o_.width));
-        const GiNaC::ex rate = system_.time_derivative(phi);
-        lines(wrap("    velocity      ", concat({marked(GiNaC::expand(rate)), std::string(1, kBreakMark), " = 0"}),
-                   std::string(20, ' '), o_.width));
-        const EquationSides eq = acceleration_form(system_, phi, style_);
-        lines(wrap("    acceleration  ", concat({eq.lhs, std::string(1, kBreakMark), " = ", eq.rhs}),
-                   std::string(20, ' '), o_.width));
-      }
+      for (const GiNaC::ex& phi : js.constraints) levels(phi);
     }
+    for (const sym::DriverSystem& d : system_.drivers()) {
+      const Driver& driver = m.drivers[static_cast<std::size_t>(d.index)];
+      const Joint& joint = m.joints[static_cast<std::size_t>(d.joint)];
+      blank();
+      lines(wrap_words(
+          concat({"Driver ", driver.name, ": ", joint_type_name(joint.type), " ", joint.name, " on its motion ",
+                  driver.motion.text, ", a row of every case; its ", joint_type_info(joint.type).driver_column, " ",
+                  spelling(d.unknown), " on ", joint.bodies[1], " is an unknown of every case"}),
+          "  ", o_.width));
+      levels(d.constraint);
+    }
+  }
+
+  // A constraint row at position, velocity and acceleration level.
+  void levels(const GiNaC::ex& phi) {
+    lines(wrap("    position      ", concat({marked(GiNaC::expand(phi)), std::string(1, kBreakMark), " = 0"}),
+               std::string(20, ' '), o_.width));
+    const GiNaC::ex rate = system_.time_derivative(phi);
+    lines(wrap("    velocity      ", concat({marked(GiNaC::expand(rate)), std::string(1, kBreakMark), " = 0"}),
+               std::string(20, ' '), o_.width));
+    const EquationSides eq = acceleration_form(system_, phi, style_);
+    lines(wrap("    acceleration  ", concat({eq.lhs, std::string(1, kBreakMark), " = ", eq.rhs}), std::string(20, ' '),
+               o_.width));
   }
 
   void energy() {
@@ -189,6 +203,11 @@ class MechanismWriter {
     std::string note = power.is_zero()
                            ? "Only conservative forces work on the mechanism: its energy E = T + V stays constant."
                            : "The dampers and applied loads work at the rate P; E = T + V changes at that rate.";
+    if (!system_.drivers().empty())
+      note = concat({power.is_zero() ? "E = T + V"
+                                     : "The dampers and applied loads work at the rate P; E = T + V changes at P and",
+                     power.is_zero() ? " changes at the drivers' power" : " at the drivers' power",
+                     ", each driver's torque or force times its joint's relative rate."});
     if (!touches_ground(system_.mechanism()))
       note +=
           " Nothing touches the ground: the horizontal momentum and the angular momentum H_c about the centre of mass "
@@ -240,7 +259,9 @@ class MechanismWriter {
         line(concat({text, ": ", kJointTypeNames[static_cast<std::size_t>(joint.type)], " ", joint.name, ", from ",
                      body_label(system_.mechanism(), first ? joint.bodies[1] : joint.bodies[0])}));
       }
-      for (const sym::Load& load : system_.loads()) {
+      std::vector<sym::Load> loads = system_.loads();
+      for (const sym::DriverSystem& d : system_.drivers()) loads.insert(loads.end(), d.loads.begin(), d.loads.end());
+      for (const sym::Load& load : loads) {
         if (load.body != static_cast<int>(b)) continue;
         // A long load (a spring's, a damper's) wraps at its sums and between its components.
         const std::string mark(1, kBreakMark);

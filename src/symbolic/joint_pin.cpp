@@ -2,6 +2,7 @@
 //   rows:   r_a + R(th_a) s_a - (r_b + R(th_b) s_b) = 0 (x and y)
 //   force:  F = (Fx, Fy), the force b exerts on a, at the pin; -F on b; no moment
 //   tree:   revolute: the child keeps its own angle; its centre follows from the pin point
+//   driver: prescribes th_b - th_a (the ground's angle is 0)
 #include "symbolic/joints.hpp"
 
 namespace linkage::sym {
@@ -39,9 +40,12 @@ Placement place(const JointEnds& ends, bool child_is_b, const GiNaC::ex& child_a
 
 GiNaC::ex no_coordinate(const JointEnds&) { return 0; }
 
+GiNaC::ex relative_angle(const JointEnds& ends) { return ends.b.angle - ends.a.angle; }
+
 }  // namespace
 
 extern const JointStages kPinJoint{
-    rows, unknowns, force, false, place, nullptr, no_coordinate, false, "m", "m/s", JointDrawing::marker};
+    rows,           unknowns, force, false, place, nullptr, no_coordinate, false, "m", "m/s", JointDrawing::marker,
+    relative_angle, "tau",    "N m"};
 
 }  // namespace linkage::sym

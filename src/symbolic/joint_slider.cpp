@@ -4,6 +4,7 @@
 //   force:  N n, the force b exerts on a, acting at p_b, and a moment M; the opposite on b
 //   tree:   prismatic: its own coordinate s = u . (p_b - p_a); the child keeps the
 //           parent's angle
+//   driver: prescribes s
 #include "symbolic/joints.hpp"
 
 namespace linkage::sym {
@@ -64,6 +65,7 @@ const OwnCoordinate kTravel{
 }  // namespace
 
 extern const JointStages kSliderJoint{
-    rows, unknowns, force, true, place, &kTravel, coordinate, true, "m, rad", "m/s, rad/s", JointDrawing::rail};
+    rows,         unknowns,           force,      true, place, &kTravel, coordinate, true, "m, rad",
+    "m/s, rad/s", JointDrawing::rail, coordinate, "F",  "N"};
 
 }  // namespace linkage::sym

@@ -9,7 +9,8 @@
 //   tree     where it puts the body it carries, from that body's angle (revolute) or its
 //            own coordinate (prismatic: the symbol, units and value of that coordinate);
 //   columns  what `simulate` writes for it besides force_x and force_y;
-//   drawing  how the scene draws it.
+//   drawing  how the scene draws it;
+//   driver   what a [[driver]] on it prescribes.
 // The model-level stages (its [[joint]] keys, the coordinate it adds to the tree, which
 // the O(n) recursion reads) are its row in model/joint_types.hpp, beside its enum entry.
 // docs/joints.md: how to add a joint type.
@@ -86,6 +87,13 @@ struct JointStages {
   const char* constraint_rate_unit;
   /// drawing: how the scene draws it.
   JointDrawing drawing;
+  /// driver: what a [[driver]] on it prescribes, in the ends' placements (a pin: the
+  /// relative angle th_b - th_a; a slider: its travel, the `coordinate` above).
+  GiNaC::ex (*driven)(const JointEnds& ends);
+  /// driver: its multiplier's letter and unit ("tau", "N m"); the column is the row's
+  /// `driver_column` (model/joint_types.hpp).
+  const char* driver_letter;
+  const char* driver_unit;
 };
 
 /// Every joint type's stages, from the registration in joints.cpp.

@@ -131,10 +131,41 @@ ClosedState close_loops(const System& system, const GiNaC::exmap& state) {
 
 ClosedState checked_initial_state(const System& system) {
   validate_quantities(system);
+
   validate_constraints(system, system.initial_state());  // structural redundancy, before closing
   ClosedState closed = close_loops(system, system.initial_state());
   validate_constraints(system, closed.state);
+  require_on_the_motion(system, closed.state);
   return closed;
+}
+
+void require_no_drivers_to_simulate(const System& system) {
+  if (system.drivers().empty()) return;
+  const Driver& d = system.mechanism().drivers.front();
+  throw Error::input(where(d.pos) + "driver '" + d.name +
+                     "': a driven mechanism is derived and solved by `linkage solve` but not yet simulated; valid "
+                     "for now: a mechanism without [[driver]]");
+}
+
+void require_on_the_motion(const System& system, const GiNaC::exmap& state) {
+  GiNaC::exmap at = system.parameter_values();
+  for (const auto& [symbol, expression] : system.constants())
+    at[symbol] = GiNaC::numeric(evaluate(expression, system.parameter_values()));
+  for (const auto& [symbol, value] : state) at[symbol] = value;
+  at[system.time()] = 0;
+  for (const DriverSystem& d : system.drivers()) {
+    const Driver& driver = system.mechanism().drivers[static_cast<std::size_t>(d.index)];
+    const GiNaC::ex motion = system.quantity(driver.motion, true);
+    const GiNaC::ex driven = (d.constraint + motion).subs(system.to_generalized());
+    const double value = evaluate(driven, at), rate = evaluate(system.time_derivative(driven), at);
+    const double wanted = evaluate(motion, at), wanted_rate = evaluate(motion.diff(system.time()), at);
+    if (std::abs(value - wanted) <= 1e-9 && std::abs(rate - wanted_rate) <= 1e-9) continue;
+    throw Error::input(where(driver.pos) + "driver '" + driver.name + "': [initial] puts joint '" + driver.joint +
+                       "' at " + format_significant(value, 9) + " moving at " + format_significant(rate, 9) +
+                       ", its motion at t = 0 at " + format_significant(wanted, 9) + " moving at " +
+                       format_significant(wanted_rate, 9) +
+                       "; valid for now: [initial] on the motion at t = 0 (placing it there is the next step)");
+  }
 }
 
 }  // namespace linkage::sym

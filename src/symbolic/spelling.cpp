@@ -88,8 +88,8 @@ Spelling spell_name(const std::string& name) {
 Spelling spell_indexed(const std::string& base, int dots, const std::string& index) {
   // Unicode: precomposed dotted x and y where they exist, combining dots otherwise.
   Spelling s;
-  const bool theta = base == "theta";
-  const std::string letter = theta ? "θ" : base;
+  const bool theta = base == "theta", tau = base == "tau";  // the Greek bases in use
+  const std::string letter = theta ? "θ" : tau ? "τ" : base;
   if (dots == 0) {
     s.unicode = letter;
   } else if (base == "x") {
@@ -100,7 +100,7 @@ Spelling spell_indexed(const std::string& base, int dots, const std::string& ind
     s.unicode = letter + (dots == 1 ? "\u0307" : "\u0308");
   }
   const std::string ascii_base = theta ? "th" : base;
-  const std::string latex_letter = theta ? "\\theta" : base;
+  const std::string latex_letter = theta ? "\\theta" : tau ? "\\tau" : base;
   s.latex = dots == 0 ? latex_letter : (dots == 1 ? "\\dot{" : "\\ddot{") + latex_letter + "}";
   Spelling out = with_index(s, index);
   // ASCII puts the primes after the index: th1'', x_crank'.

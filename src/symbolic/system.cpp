@@ -168,6 +168,7 @@ System::System(const Mechanism& mechanism) : mechanism_(mechanism), tree_(spanni
   table_.add({t_, Role::time, "t", "t", "t", "t", "s", "time"});
   add_bodies();
   add_joints();
+  add_drivers();
   add_loads();
   add_generalized();
   add_newton_euler();
@@ -315,6 +316,38 @@ Vec2 System::point_position(int body, const std::string& point) const {
   const BodySystem& b = bodies_[static_cast<std::size_t>(body)];
   const Vec2 origin{b.x.q, b.y.q};
   return origin + rotate(b.rotates ? ex(b.theta.q) : ex(0), b.points.at(point));
+}
+
+void System::add_drivers() {
+  for (std::size_t i = 0; i < mechanism_.drivers.size(); ++i) {
+    const Driver& d = mechanism_.drivers[i];
+    DriverSystem ds;
+    ds.index = static_cast<int>(i);
+    for (std::size_t j = 0; j < mechanism_.joints.size(); ++j)
+      if (mechanism_.joints[j].name == d.joint) ds.joint = static_cast<int>(j);
+    const Joint& joint = mechanism_.joints.at(static_cast<std::size_t>(ds.joint));
+    const JointStages& stages = joint_stages(joint.type);
+    const GiNaC::ex driven = stages.driven(maximal_ends(*this, ds.joint));
+    if (driven.is_zero())  // a pin between two point masses has no angle to drive
+      throw Error::input(where(d.pos) + "driver '" + d.name + "': joint '" + joint.name + "' joins bodies without " +
+                         "angles; valid: a pin with a body that rotates, or a slider");
+    ds.constraint = driven - quantity(d.motion, true);
+    const std::string column = joint_type_info(joint.type).driver_column;
+    const Spelling spelling = spell_indexed(stages.driver_letter, 0, d.name);
+    ds.unknown =
+        table_
+            .add({symbol(d.name + "." + column), Role::force, d.name + "." + column, spelling.unicode, spelling.ascii,
+                  spelling.latex, stages.driver_unit, "driver " + d.name + "'s " + column + " on " + joint.bodies[1]})
+            .symbol;
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+      const BodySystem& body = bodies_[b];
+      const Vec2 force{ds.unknown * ds.constraint.diff(body.x.q), ds.unknown * ds.constraint.diff(body.y.q)};
+      const GiNaC::ex moment = body.rotates ? ds.unknown * ds.constraint.diff(body.theta.q) : GiNaC::ex(0);
+      if (!(force.x.is_zero() && force.y.is_zero() && moment.is_zero()))
+        ds.loads.push_back({static_cast<int>(b), force, {body.x.q, body.y.q}, moment, "driver " + d.name});
+    }
+    drivers_.push_back(std::move(ds));
+  }
 }
 
 void System::add_joints() {
@@ -540,6 +573,8 @@ void System::add_newton_euler() {
     apply(b, ex(-1) * js.force, at_b, -js.moment);
   }
   for (const Load& load : loads_) apply(load.body, load.force, load.point, load.moment);
+  for (const DriverSystem& d : drivers_)
+    for (const Load& load : d.loads) apply(load.body, load.force, load.point, load.moment);
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
     const BodySystem& b = bodies_[i];
     NewtonEulerRows rows{static_cast<int>(i), {}};

@@ -4,6 +4,7 @@
 //     s of b at r_b + R(theta_b) s in the world;
 //   each joint: its position constraint rows Phi(q) = 0 (joint_pin.cpp, joint_slider.cpp)
 //     and its force (the force bodies[1] exerts on bodies[0]) as unknown symbols;
+//   each driver: one row C(q, t) = 0 and its torque or force as an unknown symbol;
 //   loads: gravity, springs and dampers, joint springs, applied forces and torques;
 //   Newton-Euler of each body, each row an expression r(q, q', q'', F) = 0:
 //     m_b x_b'' - sum F_x,  m_b y_b'' - sum F_y,  I_b theta_b'' - sum (p - r_b) x F - sum M;
@@ -60,6 +61,21 @@ struct JointSystem {
   bool in_tree = false;
 };
 
+/// A [[driver]]: one more constraint row C(q, t) = driven(q) - motion(t) = 0 (pin: th_b -
+/// th_a; slider: s), kept in every case, with its multiplier `unknown` among the unknowns.
+/// The multiplier enters each body's Newton-Euler rows as the generalized force
+/// unknown * dC/dq (maximal coordinates): at a pin the torque on bodies[1] (the opposite on
+/// bodies[0]), at a slider the force along the unit axis on bodies[1].
+struct DriverSystem {
+  int index = -1;  // into Mechanism::drivers
+  int joint = -1;  // into Mechanism::joints
+  GiNaC::ex constraint;
+  GiNaC::symbol unknown;  // NAME.torque or NAME.force
+  // unknown * dC/dq on each body it moves: (d/dx, d/dy) as a force at the centre of mass,
+  // d/dtheta as a couple; the Newton-Euler rows and the reports read these.
+  std::vector<Load> loads;
+};
+
 /// One generalized coordinate: its symbols (for a floating base and a pin, the body's own
 /// maximal symbols; a slider's s its own).
 struct GeneralizedCoordinate {
@@ -82,6 +98,7 @@ class System {
   [[nodiscard]] const GiNaC::symbol& time() const { return t_; }
   [[nodiscard]] const std::vector<BodySystem>& bodies() const { return bodies_; }
   [[nodiscard]] const std::vector<JointSystem>& joints() const { return joints_; }
+  [[nodiscard]] const std::vector<DriverSystem>& drivers() const { return drivers_; }
   [[nodiscard]] const std::vector<Load>& loads() const { return loads_; }
   [[nodiscard]] const std::vector<GeneralizedCoordinate>& coordinates() const { return coordinates_; }
   [[nodiscard]] const std::vector<NewtonEulerRows>& newton_euler() const { return newton_euler_; }
@@ -109,6 +126,7 @@ class System {
   void add_parameters();
   void add_bodies();
   void add_joints();
+  void add_drivers();
   void add_loads();
   void add_generalized();
   void add_newton_euler();
@@ -120,6 +138,7 @@ class System {
   GiNaC::symtab names_;  // parser symbols: parameters, definitions
   std::vector<BodySystem> bodies_;
   std::vector<JointSystem> joints_;
+  std::vector<DriverSystem> drivers_;
   std::vector<Load> loads_;
   std::vector<GeneralizedCoordinate> coordinates_;
   std::vector<NewtonEulerRows> newton_euler_;

@@ -54,6 +54,7 @@ void require_non_negative(const System& system, const Quantity& q, const std::st
 void validate_quantities(const System& system) {
   const Mechanism& m = system.mechanism();
   for (const Definition& d : m.definitions) (void)checked_value(system, d.value, false, "definition " + d.name);
+  for (const Driver& d : m.drivers) (void)checked_value(system, d.motion, true, "motion of driver " + d.name);
   if (m.gravity) require_non_negative(system, *m.gravity, "gravity");  // a magnitude: it acts along -y
   for (const NamedPoint& p : m.ground_points) {
     (void)checked_value(system, p.at.x, false, "ground point " + p.name + " x");

@@ -551,6 +551,46 @@ TEST(MechanismToml, SliderReads) {
       << message;
 }
 
+// [[driver]] (issue 25): read with its position; each mistake one line at its key.
+TEST(MechanismToml, Drivers) {
+  const std::string driver = "points = [\"O\", \"O\"]\n[[driver]]\nname = \"M\"\njoint = \"O\"\nmotion = \"w*t\"";
+  const Mechanism m = read_mechanism(pendulum_with(19, driver), "m.toml");
+  ASSERT_EQ(m.drivers.size(), 1u);
+  EXPECT_EQ(m.drivers[0].name, "M");
+  EXPECT_EQ(m.drivers[0].joint, "O");
+  EXPECT_EQ(m.drivers[0].motion.text, "w*t");
+  EXPECT_EQ(m.drivers[0].motion.pos.line, 23);
+  EXPECT_EQ(m.drivers[0].motion.pos.column, 10);
+  EXPECT_EQ(m.drivers[0].pos.line, 20);
+  EXPECT_EQ(degrees_of_freedom(m), 0);  // the pendulum's one degree of freedom, taken by M
+  EXPECT_EQ(degrees_of_freedom(read_mechanism(pendulum(), "m.toml")), 1);
+
+  const auto with = [&](const std::string& from, const std::string& to) {
+    std::string text = driver;
+    text.replace(text.find(from), from.size(), to);
+    return pendulum_with(19, text);
+  };
+  expect_error(with("joint = \"O\"", "joint = \"P\""), "22:9", {"driver 'M': 'P' is not a joint; valid: O"});
+  expect_error(with("joint = \"O\"", "joint = \"o\""), "22:9", {"(did you mean 'O'?)"});
+  expect_error(pendulum_with(19, driver + "\n[[driver]]\nname = \"N\"\njoint = \"O\"\nmotion = 0"), "26:9",
+               {"driver 'N': joint 'O' is already driven by 'M' (line 20); a joint takes one driver"});
+  expect_error(pendulum_with(19, driver + "\n[[driver]]\nname = \"M\"\njoint = \"O\"\nmotion = 0"), "25:8",
+               {"driver name 'M' is used twice (first at line 21)"});
+  expect_error(with("name = \"M\"", "name = \"1\""), "21:8",
+               {"driver name '1' is the name of the body at line 9; a driver's name must differ from every body and "
+                "joint name"});
+  expect_error(with("name = \"M\"", "name = \"O\""), "21:8", {"driver name 'O' is the name of the joint at line 15"});
+  expect_error(with("name = \"M\"", "name = \"ground\""), "21:8", {"driver name 'ground' is reserved"});
+  expect_error(
+      with("w*t", "w*t + 1.theta_dot"), "23:10",
+      {"driver 'M': the motion \"w*t + 1.theta_dot\" uses the state '1.theta_dot'; valid: an expression in t"});
+  expect_error(with("w*t", "sin(O.s)"), "23:10", {"uses the state 'O.s'"});
+  expect_error(with("motion = \"w*t\"", "moton = 1"), "23:1", {"'moton'", "(did you mean 'motion'?)"});
+  expect_error(with("motion = \"w*t\"", "# none"), "20:1", {"driver 'M': the key 'motion' is required"});
+  // A number before a '.' is not a state, nor is a name that is no body or joint.
+  EXPECT_EQ(read_mechanism(with("w*t", "1.5*t + w.x"), "m.toml").drivers[0].motion.text, "1.5*t + w.x");
+}
+
 TEST(MechanismToml, SpringsAndLoads) {
   const std::string loads =
       "[[spring]]\nname = \"k1\"\nbetween = [\"ground.O\", \"1.A\"]\nstiffness = \"2*m\"\nrest_length = 0.1\n"
