@@ -148,9 +148,11 @@ void require_no_drivers_to_simulate(const System& system) {
 }
 
 void require_on_the_motion(const System& system, const GiNaC::exmap& state) {
+  if (system.drivers().empty()) return;
   GiNaC::exmap at = system.parameter_values();
-  for (const auto& [symbol, expression] : system.constants())
-    at[symbol] = GiNaC::numeric(evaluate(expression, system.parameter_values()));
+  // Definitions by their expressions (evaluate() evaluates a value in turn): a value out of
+  // double range is then named by the finiteness checks, never made a CLN number here.
+  for (const auto& [symbol, expression] : system.constants()) at[symbol] = expression;
   for (const auto& [symbol, value] : state) at[symbol] = value;
   at[system.time()] = 0;
   for (const DriverSystem& d : system.drivers()) {
