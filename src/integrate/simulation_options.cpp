@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "core/error.hpp"
@@ -70,6 +71,18 @@ Stabilization parse_stabilization(std::string_view name, const std::string& orig
     names.emplace_back(spelling);
   }
   throw Error::invalid(origin, "'" + std::string(name) + "' is not a stabilization" + did_you_mean(name, names) +
+                                   "; valid: " + join_names(names));
+}
+
+Evaluator parse_evaluator(std::string_view name, const std::string& origin) {
+  constexpr std::array<std::pair<Evaluator, std::string_view>, 3> kEvaluators{
+      {{Evaluator::automatic, "auto"}, {Evaluator::compiled, "compiled"}, {Evaluator::interpreted, "interpreted"}}};
+  std::vector<std::string> names;
+  for (const auto& [kind, spelling] : kEvaluators) {
+    if (spelling == name) return kind;
+    names.emplace_back(spelling);
+  }
+  throw Error::invalid(origin, "'" + std::string(name) + "' is not an evaluator" + did_you_mean(name, names) +
                                    "; valid: " + join_names(names));
 }
 
