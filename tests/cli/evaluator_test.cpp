@@ -10,6 +10,7 @@
 #include <string>
 
 #include "linkage/embedded_mechanisms.hpp"
+#include "support/scoped_env.hpp"
 #include "support/test_support.hpp"
 
 namespace linkage {
@@ -17,28 +18,8 @@ namespace {
 
 using test::run_linkage;
 using test::RunResult;
+using test::ScopedEnv;
 using test::TempDir;
-
-// Sets an environment variable for the scope (children inherit it), then restores it.
-class ScopedEnv {
- public:
-  ScopedEnv(const char* name, const std::string& value) : name_(name) {
-    if (const char* old = std::getenv(name)) old_ = old;
-    ::setenv(name, value.c_str(), 1);
-  }
-  ScopedEnv(const ScopedEnv&) = delete;
-  ScopedEnv& operator=(const ScopedEnv&) = delete;
-  ~ScopedEnv() {
-    if (old_)
-      ::setenv(name_, old_->c_str(), 1);
-    else
-      ::unsetenv(name_);
-  }
-
- private:
-  const char* name_;
-  std::optional<std::string> old_;
-};
 
 RunResult simulate(const std::string& mechanism, const std::string& evaluator) {
   return run_linkage(
