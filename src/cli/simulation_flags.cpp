@@ -50,7 +50,8 @@ void add_simulation_flags(CLI::App* sub, SimulationFlags& o) {
                   "else compiled with the system's c++ and cached in $XDG_CACHE_HOME/linkage/native), "
                   "interpreted (never compiles), or auto: built in, else a cached entry, else compiled when c++ "
                   "is on PATH and the run is expected to take 40 million right-hand sides or more (duration / dt "
-                  "x the method's stages: a compile of 1 to 3 s against a saving of at most 60 ns each), else "
+                  "x the method's stages: a compile of 0.3 s (four-bar) to a few s (long chains) against a saving of "
+                  "at most 60 ns each), else "
                   "interpreted (default " +
                       o.evaluator + ")")
       ->type_name("KIND")

@@ -68,8 +68,8 @@ class MechanismSimulation {
 };
 
 /// Right-hand sides from which `auto` compiles a mechanism that is not built in: the
-/// compile (about 1 to 3 s) against the saving of native code (0 to 60 ns per right-hand
-/// side measured, docs/performance.md), about 2 s / 50 ns.
+/// compile (0.3 s for a four-bar, seconds for long chains, docs/performance.md) against
+/// the saving of native code (0 to 60 ns per right-hand side measured): about 2 s / 50 ns.
 inline constexpr double kCompileWorthEvaluations = 4e7;
 /// Attaches native code to `dynamics` as `o.evaluator` asks (built in; else for compiled,
 /// or auto on a run of kCompileWorthEvaluations or more, compiled at run time, a cached
