@@ -13,9 +13,11 @@
 
 #include "cli/commands.hpp"
 #include "cli/input_options.hpp"
+#include "cli/native_shipped.hpp"
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
 #include "core/name_match.hpp"
+#include "evaluate/native_builtin.hpp"
 #include "linkage/version.hpp"
 
 namespace {
@@ -132,6 +134,7 @@ int main(int argc, char** argv) {
 
   cli::register_commands(app);
   install_interrupt_handler();
+  eval::use_builtin_native({eval::kShippedNative, eval::kShippedNativeCount});
   try {
     check_command_words(app, argc, argv);
     app.parse(argc, argv);

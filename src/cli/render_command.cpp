@@ -99,8 +99,9 @@ void note_duration(const RenderFlags& f, bool still, bool frames) {
     std::fprintf(stderr, "linkage: note: --duration applies to a clip; a still shows the time --at (default 0)\n");
 }
 
-void print_stats(const RenderStats& s) {
+void print_stats(const RenderStats& s, const std::string& evaluator) {
   const nlohmann::json json = {
+      {"evaluator", evaluator},
       {"frames_drawn", s.frames_drawn},
       {"static_layer_draws", s.static_layer_draws},
       {"trail_points_drawn", s.trail_points_drawn},
@@ -167,7 +168,7 @@ void run_render(const RenderFlags& flags) {
   if (!flags.quiet)
     for (const std::string& note : result.notes) std::fprintf(stderr, "linkage: %s\n", note.c_str());
   for (const std::string& warning : result.warnings) std::fprintf(stderr, "linkage: warning: %s\n", warning.c_str());
-  if (flags.stats) print_stats(result.stats);
+  if (flags.stats) print_stats(result.stats, result.evaluator);
 }
 
 }  // namespace

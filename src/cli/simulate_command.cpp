@@ -192,7 +192,7 @@ std::string table_columns(const Mechanism& m) {
   return list;
 }
 
-void run_simulate_mechanism(const SimulateOptions& o, const SimulationOptions& s, double every, Format format) {
+void run_simulate_mechanism(const SimulateOptions& o, SimulationOptions s, double every, Format format) {
   const auto start = std::chrono::steady_clock::now();
   const TrajectoryRows samples = checked_rows(s.duration, every);
   // The initial state worked out as solve does, so a value that breaks it is named the same way.
@@ -211,6 +211,7 @@ void run_simulate_mechanism(const SimulateOptions& o, const SimulationOptions& s
       default_interface
           ? named_columns(all, o.columns == "all" ? table_columns(system.mechanism()) : o.columns, "--columns")
           : select_mechanism_columns(all, asked ? o.columns : "default", "--columns");
+  s.kinematics = needs_kinematics(columns);
   MechanismSimulation simulation(system, checked.state, s, checked.cases.front().system);
   deriving.done();
   if (!o.quiet) {
@@ -246,12 +247,13 @@ void run_simulate_mechanism(const SimulateOptions& o, const SimulationOptions& s
                "linkage simulate: %s, Case %d, %s, stabilize %s, 0 to %s s, %ld rows\n"
                "  steps: %lld accepted, %lld rejected; right-hand side evaluations: %lld\n"
                "  largest energy balance error: %s of the energy scale %s J; largest constraint error: %s\n"
-               "  wall time: %s s (integration %s s)\n",
+               "  wall time: %s s (integration %s s); evaluator: %s\n",
                system.mechanism().name.c_str(), s.case_id, method.c_str(), std::string(name(s.stabilization)).c_str(),
                format_roundtrip(s.duration).c_str(), samples.count, static_cast<long long>(st.steps_accepted),
                static_cast<long long>(st.steps_rejected), static_cast<long long>(st.rhs_evaluations),
                format_significant(st.max_energy_error, 3).c_str(), format_significant(st.energy_scale, 4).c_str(),
-               constraint.c_str(), format_significant(wall, 3).c_str(), format_significant(st.wall_seconds, 3).c_str());
+               constraint.c_str(), format_significant(wall, 3).c_str(), format_significant(st.wall_seconds, 3).c_str(),
+               st.evaluator.c_str());
   const std::string warning = mechanism_result_warning(s, st);
   if (!warning.empty()) std::fprintf(stderr, "linkage: warning: %s\n", warning.c_str());
 }

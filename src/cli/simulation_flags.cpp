@@ -45,6 +45,17 @@ void add_simulation_flags(CLI::App* sub, SimulationFlags& o) {
                       o.stabilize + ")")
       ->type_name("KIND")
       ->group(group);
+  sub->add_option("--evaluator", o.evaluator,
+                  "What computes the equations: compiled (native code: built in for the shipped mechanisms, "
+                  "else compiled with the system's c++ and cached in $XDG_CACHE_HOME/linkage/native), "
+                  "interpreted (never compiles), or auto: built in, else a cached entry, else compiled when c++ "
+                  "is on PATH and the run is expected to take 40 million right-hand sides or more (duration / dt "
+                  "x the method's stages: a compile of 0.3 s (four-bar) to a few s (long chains) against a saving of "
+                  "at most 60 ns each), else "
+                  "interpreted (default " +
+                      o.evaluator + ")")
+      ->type_name("KIND")
+      ->group(group);
   o.alpha_option = sub->add_option("--baumgarte-alpha", o.numbers["baumgarte_alpha"],
                                    "Baumgarte damping gain alpha, 1/s (default " + fmt(d.baumgarte_alpha) + ")")
                        ->type_name("NUM")
@@ -64,6 +75,7 @@ SimulationOptions resolve_simulation_flags(const SimulationFlags& o, double dura
     throw Error::input("--case: '" + o.which_case + "' is not a case; valid: 1, 2, 3");
   s.integrator = parse_integrator(o.integrator, "--integrator");
   s.stabilization = parse_stabilization(o.stabilize, "--stabilize");
+  s.evaluator = parse_evaluator(o.evaluator, "--evaluator");
   s.duration = duration;
   for (const NumberOption& n : kNumberOptions)
     if (const auto it = o.numbers.find(n.name); it != o.numbers.end() && !it->second.empty())

@@ -1,7 +1,7 @@
 #pragma once
 // The simulation options shared by commands that run the motion (render; simulate has
 // the same flags): --case, --integrator, --dt, --rtol, --atol, --stabilize and the
-// Baumgarte gains, with the same help and checks.
+// Baumgarte gains, --evaluator, with the same help and checks.
 #include <CLI/CLI.hpp>
 #include <map>
 #include <string>
@@ -16,6 +16,7 @@ struct SimulationFlags {
   std::string integrator = "dop853";
   std::map<std::string_view, std::string> numbers;  // by kNumberOptions' name: "dt", "rtol", ...
   std::string stabilize = "none";
+  std::string evaluator = "auto";
   CLI::Option* rtol_option = nullptr;
   CLI::Option* atol_option = nullptr;
   CLI::Option* alpha_option = nullptr;

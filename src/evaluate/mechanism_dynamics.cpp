@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/interrupt.hpp"
+#include "evaluate/native_builtin.hpp"
 #include "evaluate/substitute.hpp"
 #include "evaluate/tree_dynamics.hpp"
 #include "symbolic/energy.hpp"
@@ -138,16 +139,25 @@ MechanismDynamics::MechanismDynamics(const sym::System& system, CaseId id, std::
   scratch_.resize(std::max(scratch_.size(), constraints_.scratch_size()));
 }
 
-NativeAttachment MechanismDynamics::attach_native(bool kinematics) {
+std::vector<Program*> MechanismDynamics::programs(bool kinematics) {
   compile_case();
   if (kinematics) compile_kinematics();
-  std::vector<Program*> programs;
+  std::vector<Program*> out;
   for (Program* p : {&power_, &constraints_, &rhs_, &outputs_, &kinematics_})
-    if (p->output_count() > 0) programs.push_back(p);
+    if (p->output_count() > 0) out.push_back(p);
   if (tree_)
     for (Program* p : tree_->programs())
-      if (p->output_count() > 0) programs.push_back(p);
-  return eval::attach_native(programs);
+      if (p->output_count() > 0) out.push_back(p);
+  return out;
+}
+
+NativeAttachment MechanismDynamics::attach_native(bool kinematics, bool may_compile) {
+  return eval::attach_native(programs(kinematics), may_compile);
+}
+
+bool MechanismDynamics::attach_builtin(bool kinematics) {
+  builtin_ = eval::attach_builtin(programs(kinematics));
+  return builtin_;
 }
 
 GiNaC::ex MechanismDynamics::prepare(const GiNaC::ex& e) const {
@@ -270,6 +280,9 @@ void MechanismDynamics::compile_kinematics() const {
   }
   kinematics_ = compile(out, output_symbols_);
   kinematics_compiled_ = true;
+  // Compiled after attach_builtin: built in as well when the table has it.
+  if (builtin_)
+    if (const NativeFunction f = builtin_native(kinematics_.fingerprint()); f != nullptr) kinematics_.attach(f);
 }
 
 MechanismDynamics::~MechanismDynamics() = default;

@@ -104,7 +104,14 @@ class MechanismDynamics {
   /// program of this case, the tree recursion's included, as native code
   /// (native_library.hpp), or none of them; what happened and why. Programs compiled later
   /// (the kinematics, when not asked for here) stay interpreted.
-  [[nodiscard]] NativeAttachment attach_native(bool kinematics = false);
+  [[nodiscard]] NativeAttachment attach_native(bool kinematics = false, bool may_compile = true);
+  /// Runs every program of programs(kinematics) as built-in native code
+  /// (native_builtin.hpp) when each has some, else none; whether it did. The kinematics,
+  /// compiled later, are then attached too when built in.
+  [[nodiscard]] bool attach_builtin(bool kinematics = false);
+  /// Every program this case runs (compiled now), the tree recursion's included, and with
+  /// `kinematics` the sample's kinematics: the one list native code is made for.
+  [[nodiscard]] std::vector<Program*> programs(bool kinematics = false);
 
  private:
   [[nodiscard]] GiNaC::ex prepare(const GiNaC::ex& e) const;
@@ -138,6 +145,7 @@ class MechanismDynamics {
   mutable Program outputs_;                     // the sample, with the unknowns as inputs too
   mutable Program kinematics_;                  // accelerations and points, with the same inputs
   mutable bool kinematics_compiled_ = false;
+  bool builtin_ = false;  // attach_builtin succeeded: the kinematics too, once compiled
   mutable std::vector<GiNaC::symbol> output_symbols_;
   double two_alpha_ = 0, beta_squared_ = 0;
   mutable std::vector<double> inputs_, values_, scratch_, constraint_values_, output_inputs_, power_values_;

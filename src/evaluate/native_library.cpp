@@ -199,6 +199,8 @@ NativeSource native_source(const std::vector<const Program*>& programs) {
   return out;
 }
 
+bool native_compiler_found() { return find_compiler().has_value(); }
+
 fs::path native_cache_folder() {
   const char* xdg = std::getenv("XDG_CACHE_HOME");
   if (xdg != nullptr && fs::path(xdg).is_absolute()) return fs::path(xdg) / "linkage" / "native";
@@ -207,7 +209,7 @@ fs::path native_cache_folder() {
   return {};
 }
 
-NativeAttachment attach_native(const std::vector<Program*>& programs) {
+NativeAttachment attach_native(const std::vector<Program*>& programs, bool may_compile) {
   NativeAttachment out;
   const std::vector<const Program*> views(programs.begin(), programs.end());
   const NativeSource source = native_source(views);
@@ -226,6 +228,10 @@ NativeAttachment attach_native(const std::vector<Program*>& programs) {
   out.library = folder / (source.hash + ".so");
   std::error_code ec;
   const auto build = [&]() -> bool {
+    if (!may_compile) {
+      out.reason = "not compiled yet";
+      return false;
+    }
     const std::optional<fs::path> compiler = find_compiler();
     if (!compiler) {
       out.reason = "no C++ compiler (" + std::string(kCompiler) + ") on PATH";

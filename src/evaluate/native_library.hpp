@@ -33,6 +33,9 @@ struct NativeSource {
 /// $HOME/.cache/linkage/native; empty when neither is set.
 [[nodiscard]] std::filesystem::path native_cache_folder();
 
+/// Whether the system's C++ compiler (c++) is on PATH.
+[[nodiscard]] bool native_compiler_found();
+
 struct NativeAttachment {
   bool attached = false;  // every Program runs native code
   std::string reason;     // when not: why the interpreter runs, one line
@@ -42,8 +45,9 @@ struct NativeAttachment {
   std::size_t functions = 0;
 };
 
-/// Attaches native code to every one of `programs`, or to none. Throws only
-/// interrupted_error (a signal while the compiler runs).
-[[nodiscard]] NativeAttachment attach_native(const std::vector<Program*>& programs);
+/// Attaches native code to every one of `programs`, or to none. Without `may_compile`,
+/// only a cached entry is used (the compiler never runs). Throws only interrupted_error
+/// (a signal while the compiler runs).
+[[nodiscard]] NativeAttachment attach_native(const std::vector<Program*>& programs, bool may_compile = true);
 
 }  // namespace linkage::eval

@@ -15,14 +15,13 @@
 #include <utility>
 #include <vector>
 
+#include "evaluate/native_entry.hpp"
+
 namespace linkage::eval {
 
 /// Bumped when emit_cpp's output or the native library's layout changes: part of every
 /// fingerprint, so code from another generator is never attached.
 inline constexpr std::uint64_t kNativeGeneratorVersion = 1;
-
-/// Compiled code for one Program (evaluate/emit_cpp.hpp): outputs from inputs, no scratch.
-using NativeFunction = void (*)(const double* in, double* out);
 
 enum class Op : std::uint8_t { add, sub, mul, div, neg, sqrt, pow, sin, cos, sincos, tan, exp, log, abs };
 

@@ -60,6 +60,7 @@ struct MechanismSimulation::Impl {
         dynamics(system, static_cast<CaseId>(o.case_id), std::move(derived)),
         rhs{&dynamics, std::nan("")} {
     if (o.stabilization == Stabilization::baumgarte) dynamics.set_baumgarte(o.baumgarte_alpha, o.baumgarte_beta);
+    stats.evaluator = choose_evaluator(dynamics, o);
     project = o.stabilization == Stabilization::projection && dynamics.constraint_rows() > 0;
     y = dynamics.initial_state(initial);
     Vector dydt;
@@ -168,6 +169,53 @@ struct MechanismSimulation::Impl {
   std::unique_ptr<ode::Dop853<double, kDynamic>> dop853;
   std::int64_t k = 0;  // fixed steps taken
 };
+
+namespace {
+
+// Right-hand sides a run is expected to take: duration / dt steps of the method's stages
+// (dt the first step of an adaptive method, so an estimate from below).
+double expected_evaluations(const SimulationOptions& o) {
+  double stages = 1;
+  switch (o.integrator) {
+    case IntegratorKind::euler:
+    case IntegratorKind::symplectic_euler:
+      stages = 1;
+      break;
+    case IntegratorKind::rk4:
+    case IntegratorKind::gauss2:
+      stages = 4;
+      break;
+    case IntegratorKind::dopri5:
+      stages = 6;
+      break;
+    case IntegratorKind::dop853:
+      stages = 12;
+      break;
+  }
+  return o.duration / o.dt * stages;
+}
+
+}  // namespace
+
+std::string choose_evaluator(eval::MechanismDynamics& dynamics, const SimulationOptions& o) {
+  if (o.evaluator == Evaluator::interpreted) return "interpreted (as asked)";
+  if (dynamics.attach_builtin(o.kinematics)) return "compiled (built in)";
+  const auto compiled = [](const eval::NativeAttachment& a) {
+    return std::string("compiled (") + (a.compiled ? "compiled into " : "cache ") + a.library.string() + ")";
+  };
+  if (o.evaluator == Evaluator::compiled) {
+    const eval::NativeAttachment a = dynamics.attach_native();
+    if (!a.attached)
+      throw Error::invalid("evaluator", "'compiled' cannot run: " + a.reason + "; valid: auto, interpreted");
+    return compiled(a);
+  }
+  // auto: a cached entry costs milliseconds; compiling pays only on very long runs.
+  if (const eval::NativeAttachment a = dynamics.attach_native(o.kinematics, false); a.attached) return compiled(a);
+  if (!eval::native_compiler_found()) return "interpreted (no C++ compiler on PATH)";
+  if (expected_evaluations(o) < kCompileWorthEvaluations) return "interpreted (run too short to gain from compiling)";
+  const eval::NativeAttachment a = dynamics.attach_native(o.kinematics);
+  return a.attached ? compiled(a) : "interpreted (" + a.reason + ")";
+}
 
 void MechanismSimulation::Impl::start_stepper() {
   switch (options.integrator) {

@@ -28,6 +28,8 @@ struct MechanismStats {
   double size = 0;          // m: the longest body's length or radius (0 when no body has a size)
   std::string size_name;    // "body 1's length L", for the warning
   double wall_seconds = 0;  // in state_at()
+  // What computed the equations, once for the summary: "compiled (built in)", "interpreted (...)".
+  std::string evaluator;
 };
 
 class MechanismSimulation {
@@ -64,6 +66,16 @@ class MechanismSimulation {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+/// Right-hand sides from which `auto` compiles a mechanism that is not built in: the
+/// compile (0.3 s for a four-bar, seconds for long chains, docs/performance.md) against
+/// the saving of native code (0 to 60 ns per right-hand side measured): about 2 s / 50 ns.
+inline constexpr double kCompileWorthEvaluations = 4e7;
+/// Attaches native code to `dynamics` as `o.evaluator` asks (built in; else for compiled,
+/// or auto on a run of kCompileWorthEvaluations or more, compiled at run time, a cached
+/// entry used by auto too); what runs and why, one line. Throws Error::invalid about
+/// "evaluator" when compiled cannot be.
+[[nodiscard]] std::string choose_evaluator(eval::MechanismDynamics& dynamics, const SimulationOptions& o);
 
 /// One line for the user when a finished run's figures say its numbers are meaningless
 /// (the energy balance off by more than the energy scale, or a tree's joint drifted a

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "core/error.hpp"
@@ -63,14 +64,32 @@ IntegratorKind parse_integrator(std::string_view name, const std::string& origin
                                    "; valid: " + join_names(names));
 }
 
-Stabilization parse_stabilization(std::string_view name, const std::string& origin) {
+namespace {
+
+// The kind spelled `name` in `spellings`, else Error::invalid naming `origin` and the valid names.
+template <typename Kind, std::size_t N>
+Kind parse_spelling(const std::array<std::pair<Kind, std::string_view>, N>& spellings, std::string_view name,
+                    const std::string& origin, std::string_view what) {
   std::vector<std::string> names;
-  for (const auto& [kind, spelling] : kStabilizations) {
+  for (const auto& [kind, spelling] : spellings) {
     if (spelling == name) return kind;
     names.emplace_back(spelling);
   }
-  throw Error::invalid(origin, "'" + std::string(name) + "' is not a stabilization" + did_you_mean(name, names) +
+  throw Error::invalid(origin, "'" + std::string(name) + "' is not " + std::string(what) + did_you_mean(name, names) +
                                    "; valid: " + join_names(names));
+}
+
+constexpr std::array<std::pair<Evaluator, std::string_view>, 3> kEvaluators{
+    {{Evaluator::automatic, "auto"}, {Evaluator::compiled, "compiled"}, {Evaluator::interpreted, "interpreted"}}};
+
+}  // namespace
+
+Stabilization parse_stabilization(std::string_view name, const std::string& origin) {
+  return parse_spelling(kStabilizations, name, origin, "a stabilization");
+}
+
+Evaluator parse_evaluator(std::string_view name, const std::string& origin) {
+  return parse_spelling(kEvaluators, name, origin, "an evaluator");
 }
 
 std::string_view name(Stabilization s) {

@@ -9,6 +9,9 @@ namespace linkage {
 
 enum class IntegratorKind { euler, symplectic_euler, rk4, dopri5, dop853, gauss2 };
 enum class Stabilization { none, baumgarte, projection };
+/// What computes the equations: native code (built in, else compiled at run time) or the
+/// interpreter of evaluate/program.hpp; automatic picks (mechanism_simulation.cpp).
+enum class Evaluator { automatic, compiled, interpreted };
 
 struct IntegratorInfo {
   IntegratorKind kind;
@@ -24,6 +27,8 @@ struct IntegratorInfo {
 [[nodiscard]] IntegratorKind parse_integrator(std::string_view name, const std::string& origin);
 [[nodiscard]] Stabilization parse_stabilization(std::string_view name, const std::string& origin);
 [[nodiscard]] std::string_view name(Stabilization s);
+/// "auto", "compiled" or "interpreted"; throws Error::input naming `origin` and the valid names.
+[[nodiscard]] Evaluator parse_evaluator(std::string_view name, const std::string& origin);
 
 struct SimulationOptions {
   int case_id = 3;  // 1, 2 or 3
@@ -32,6 +37,8 @@ struct SimulationOptions {
   double rtol = 1e-10, atol = 1e-10;  // adaptive error control
   double duration = 10.0;             // s
   Stabilization stabilization = Stabilization::none;
+  Evaluator evaluator = Evaluator::automatic;
+  bool kinematics = false;  // the samples will need the kinematics (a column asks): native code covers them too
   // Baumgarte asks C'' + 2 alpha C' + beta^2 C = 0 of the pin constraint C (Case 1).
   // alpha = beta is critical damping: a violation decays like (1 + 10 t) e^(-10 t), in
   // about half a second, while the gains stay small enough (10/s) that explicit steps

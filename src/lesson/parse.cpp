@@ -436,6 +436,8 @@ class Parser {
       o.integrator = parse_integrator(*i, r.where("integrator"));
     if (auto s = r.choice("stabilize", {"none", "baumgarte", "projection"}))
       o.stabilization = parse_stabilization(*s, r.where("stabilize"));
+    if (auto e = r.choice("evaluator", {"auto", "compiled", "interpreted"}))
+      o.evaluator = parse_evaluator(*e, r.where("evaluator"));
     for (const NumberOption& n : kNumberOptions) o.*n.field = r.number(n.name, -kInf, kInf, "").value_or(o.*n.field);
     if (auto settings = r.strings("set")) {
       if (run.mechanism.empty())

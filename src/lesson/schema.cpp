@@ -24,7 +24,7 @@ constexpr std::array<KeySpec, 3> kCommonKeys{{
     {"mechanism", "string", "the lesson's"},
 }};
 
-constexpr std::array<KeySpec, 10> kRunKeys{{
+constexpr std::array<KeySpec, 11> kRunKeys{{
     {"set", "list of strings", "none"},
     {"case", "integer", "3"},
     {"integrator", "string", "\"dop853\""},
@@ -35,6 +35,7 @@ constexpr std::array<KeySpec, 10> kRunKeys{{
     {"stabilize", "string", "\"none\""},
     {"baumgarte_alpha", "number", "10"},
     {"baumgarte_beta", "number", "10"},
+    {"evaluator", "string", "\"auto\""},
 }};
 
 constexpr std::array<KeySpec, 2> kRunEntryKeys{{

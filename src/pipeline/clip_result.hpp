@@ -36,6 +36,7 @@ struct ClipResult {
   double encoder_idle_seconds = 0;    // the encoder thread waited for a drawn frame
   std::int64_t video_bytes = 0;       // size of the MP4
   std::string encoder;                // e.g. "libx264"
+  std::string evaluator;              // what computed the equations (MechanismStats::evaluator)
   std::vector<std::string> notes;     // for the user (e.g. the encoder chosen instead)
   std::vector<std::string> warnings;  // the simulation's numbers are meaningless (result_warning)
 };

@@ -331,17 +331,19 @@ MechanismMotion sample_mechanism_motion(const sym::System& system, const GiNaC::
                                         const std::optional<CaseSystem>& derived, bool accelerations) {
   const auto start = std::chrono::steady_clock::now();
   const bool same_case = derived && derived->id == static_cast<CaseId>(options.case_id);
-  MechanismSimulation simulation(system, initial, options, same_case ? derived : std::nullopt);
   std::vector<MechanismColumn> columns;
   if (panel != nullptr && !panel_names.empty()) {
     columns = mechanism_panel_columns(mechanism_columns(system), panel_names);
     *panel = mechanism_panel(columns, frame_times.back());
   }
+  const bool kinematics = accelerations || needs_kinematics(columns);
+  SimulationOptions with_kinematics = options;
+  with_kinematics.kinematics = kinematics;
+  MechanismSimulation simulation(system, initial, with_kinematics, same_case ? derived : std::nullopt);
   MechanismMotion motion;
   motion.times = frame_times;
   motion.samples.resize(frame_times.size());
   const bool fine = trail_steps > 1;
-  const bool kinematics = accelerations || needs_kinematics(columns);
   // The HUD's energy balance, as the energy_error column gives it; and whether the case
   // keeps a constraint whose error is worth showing (Case 1 every joint, else loops).
   MechanismColumn balance;
@@ -395,6 +397,7 @@ MechanismMotion sample_mechanism_motion(const sym::System& system, const GiNaC::
   result.stats.simulate_seconds += seconds_since(start);
   const std::string warning = mechanism_result_warning(options, simulation.stats());
   if (!warning.empty()) result.warnings.push_back(warning);
+  if (result.evaluator.empty()) result.evaluator = simulation.stats().evaluator;
   return motion;
 }
 

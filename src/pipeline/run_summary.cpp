@@ -65,6 +65,7 @@ ResultTable mechanism_summary(const Run& run, const MechanismStats& st, const Ei
     t.rows.push_back({"final " + words,
                       format_significant(end[static_cast<Eigen::Index>(i)], 6) + (unit.empty() ? "" : " " + unit)});
   }
+  if (!st.evaluator.empty()) t.rows.push_back({"evaluator", st.evaluator});
   t.rows.push_back({"run time", format_significant(st.wall_seconds * 1e3, 3) + " ms"});
   return t;
 }

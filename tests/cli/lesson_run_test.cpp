@@ -387,8 +387,8 @@ TEST(LessonErrors, ABrokenLessonMakesNothing) {
                 ":11:1: step 2 (render): unknown key 'fsp' (did you mean 'fps'?); valid keys: kind, heading, "
                 "mechanism, out, caption, quality, size, fps, speed, at, camera, view, show, hide, theme, title, "
                 "arrow_scale, panel, angles, trail, ensemble, spread, compare, captions, set, case, integrator, dt, "
-                "rtol, atol, duration, stabilize, baumgarte_alpha, baumgarte_beta, L, w, b, m, g, x1, y1, theta1, "
-                "theta2, x1_dot, y1_dot, theta1_dot, theta2_dot\n");
+                "rtol, atol, duration, stabilize, baumgarte_alpha, baumgarte_beta, evaluator, L, w, b, m, g, x1, y1, "
+                "theta1, theta2, x1_dot, y1_dot, theta1_dot, theta2_dot\n");
   EXPECT_FALSE(fs::exists(out));
 
   const RunResult missing = run_linkage({"lesson", (dir / "nope.toml").string()});

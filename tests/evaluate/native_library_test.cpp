@@ -25,6 +25,7 @@
 #include "linkage/embedded_mechanisms.hpp"
 #include "model/mechanism_toml.hpp"
 #include "support/mechanisms_in_code.hpp"
+#include "support/scoped_env.hpp"
 #include "support/test_support.hpp"
 
 namespace linkage::eval {
@@ -34,29 +35,9 @@ namespace fs = std::filesystem;
 using GiNaC::ex;
 using GiNaC::symbol;
 using test::read_text;
+using test::ScopedEnv;
 using test::TempDir;
 using test::write_text;
-
-// Sets an environment variable for a scope, restoring the old value after.
-class ScopedEnv {
- public:
-  ScopedEnv(const char* name, const std::string& value) : name_(name) {
-    if (const char* old = std::getenv(name)) old_ = old;
-    ::setenv(name, value.c_str(), 1);
-  }
-  ScopedEnv(const ScopedEnv&) = delete;
-  ScopedEnv& operator=(const ScopedEnv&) = delete;
-  ~ScopedEnv() {
-    if (old_)
-      ::setenv(name_, old_->c_str(), 1);
-    else
-      ::unsetenv(name_);
-  }
-
- private:
-  const char* name_;
-  std::optional<std::string> old_;
-};
 
 // A cache of the test's own.
 struct Cache {
