@@ -12,6 +12,7 @@
 //   C'' + 2 alpha C' + beta^2 C = 0,   so   B <- B - 2 alpha C' - beta^2 C   on their rows,
 // and a projection moves q and q' back onto C = 0, C' = 0 in the kinetic-energy metric
 // M = d^2 T / dq'^2 (mass-weighted, so free mechanisms keep their momentum).
+#include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <Eigen/LU>
 #include <array>
@@ -103,7 +104,8 @@ class MechanismDynamics {
   /// Compiles the case (and with `kinematics` the sample's kinematics) now, then runs every
   /// program of this case, the tree recursion's included, as native code
   /// (native_library.hpp), or none of them; what happened and why. Programs compiled later
-  /// (the kinematics, when not asked for here) stay interpreted.
+  /// (the kinematics, when not asked for here) stay interpreted. Once attached, derivative()
+  /// solves A u = B by its structure (structured_unknowns()) instead of the general LU.
   [[nodiscard]] NativeAttachment attach_native(bool kinematics = false);
 
  private:
@@ -114,6 +116,12 @@ class MechanismDynamics {
   void compile_kinematics() const;
   void fill_inputs(double t, const Eigen::VectorXd& y) const;
   void evaluate_constraints(double t, const Eigen::VectorXd& y) const;
+  /// As unknowns(), by A's structure: up to kFixedRows rows one fixed-size LU (no
+  /// allocation, unrolled); A = [M G; J 0] with G = +-J^T by the Schur complement
+  /// (J M^-1 G) lambda = J M^-1 b1 - b2 (M diagonal: divided by); else the general LU.
+  /// Not for a long tree's Case 3, which the recursion solves in O(n).
+  double structured_unknowns(double t, const Eigen::VectorXd& y, Eigen::VectorXd& u) const;
+  void find_structure(const std::vector<GiNaC::ex>& rhs) const;
 
   CaseId id_;
   const sym::System* system_;
@@ -144,6 +152,13 @@ class MechanismDynamics {
   mutable Eigen::MatrixXd A_, J_, M_;
   mutable Eigen::VectorXd B_, u_;
   mutable Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+  bool native_ = false;                                 // attach_native() succeeded: solve by structure
+  mutable bool schur_ = false, mass_diagonal_ = false;  // A = [M G; J 0], G = +-J^T (M diagonal)
+  mutable Eigen::MatrixXd minv_g_;
+  mutable Eigen::VectorXd minv_b_, mass_inverse_, lambda_;
+  mutable std::vector<double> schur_values_;
+  mutable Eigen::LDLT<Eigen::MatrixXd> mass_ldlt_;
+  mutable Eigen::PartialPivLU<Eigen::MatrixXd> schur_lu_;
 };
 
 }  // namespace linkage::eval
