@@ -7,6 +7,7 @@
 #include <limits>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 
 #include "core/interrupt.hpp"
 #include "evaluate/substitute.hpp"
@@ -77,28 +78,15 @@ double solve_fixed(const double* values, Eigen::VectorXd& u) {
 }
 
 /// solve_fixed for N up to kFixedRows; nullopt for a larger system.
+template <std::size_t... I>
+std::optional<double> solve_small(std::size_t n, const double* values, Eigen::VectorXd& u,
+                                  std::index_sequence<I...> /*sizes less one*/) {
+  std::optional<double> rcond;
+  (void)((n == I + 1 && (rcond = solve_fixed<static_cast<int>(I + 1)>(values, u), true)) || ...);
+  return rcond;
+}
 std::optional<double> solve_small(std::size_t n, const double* values, Eigen::VectorXd& u) {
-  static_assert(kFixedRows == 8, "one case per fixed size");
-  switch (n) {
-    case 1:
-      return solve_fixed<1>(values, u);
-    case 2:
-      return solve_fixed<2>(values, u);
-    case 3:
-      return solve_fixed<3>(values, u);
-    case 4:
-      return solve_fixed<4>(values, u);
-    case 5:
-      return solve_fixed<5>(values, u);
-    case 6:
-      return solve_fixed<6>(values, u);
-    case 7:
-      return solve_fixed<7>(values, u);
-    case 8:
-      return solve_fixed<8>(values, u);
-    default:
-      return std::nullopt;
-  }
+  return solve_small(n, values, u, std::make_index_sequence<kFixedRows>{});
 }
 
 /// The joint's own coordinate in maximal coordinates (a slider's s; 0 without one).
@@ -413,21 +401,26 @@ void MechanismDynamics::evaluate_constraints(double t, const Eigen::VectorXd& y)
     for (std::size_t j = 0; j < n_; ++j) M_(idx(i), idx(j)) = values_[k++];
 }
 
-double MechanismDynamics::unknowns(double t, const Eigen::VectorXd& y, Eigen::VectorXd& u) const {
+void MechanismDynamics::evaluate_rows(double t, const Eigen::VectorXd& y) const {
   compile_case();
   const bool baumgarte = constraint_rows_ > 0 && (two_alpha_ != 0 || beta_squared_ != 0);
   if (baumgarte) evaluate_constraints(t, y);  // first: values_ ends with the right-hand side's outputs
   fill_inputs(t, y);
   rhs_.run(inputs_.data(), values_.data(), scratch_.data());
+  if (!baumgarte) return;
+  // On the kept constraints' rows, the last (Case 2 has force rows before them).
+  const auto m = static_cast<Eigen::Index>(constraint_rows_);
+  Eigen::Map<Eigen::VectorXd> B(values_.data() + rows_ * cols_, idx(rows_));
+  const Eigen::Map<const Eigen::VectorXd> C(constraint_values_.data(), m);
+  B.tail(m) -= two_alpha_ * (J_ * y.segment(idx(n_), idx(n_))) + beta_squared_ * C;
+}
+
+double MechanismDynamics::unknowns(double t, const Eigen::VectorXd& y, Eigen::VectorXd& u) const {
+  evaluate_rows(t, y);
   std::size_t k = 0;
   for (std::size_t i = 0; i < rows_; ++i)
     for (std::size_t j = 0; j < cols_; ++j) A_(idx(i), idx(j)) = values_[k++];
   for (std::size_t i = 0; i < rows_; ++i) B_[idx(i)] = values_[k++];
-  if (baumgarte) {
-    const auto m = static_cast<Eigen::Index>(constraint_rows_);
-    const Eigen::Map<const Eigen::VectorXd> C(constraint_values_.data(), m);
-    B_.tail(m) -= two_alpha_ * (J_ * y.segment(idx(n_), idx(n_))) + beta_squared_ * C;
-  }
   lu_.compute(A_);
   // The pivots' spread, not Eigen's rcond(): a condition estimate costs more solves than
   // the step it guards, and only "singular or not" matters here.
@@ -438,18 +431,9 @@ double MechanismDynamics::unknowns(double t, const Eigen::VectorXd& y, Eigen::Ve
 }
 
 double MechanismDynamics::structured_unknowns(double t, const Eigen::VectorXd& y, Eigen::VectorXd& u) const {
-  compile_case();
-  const bool baumgarte = constraint_rows_ > 0 && (two_alpha_ != 0 || beta_squared_ != 0);
-  if (baumgarte) evaluate_constraints(t, y);  // first: values_ ends with the right-hand side's outputs
-  fill_inputs(t, y);
-  rhs_.run(inputs_.data(), values_.data(), scratch_.data());
+  evaluate_rows(t, y);
   const auto rows = idx(rows_), n = idx(n_), m = rows - n;
-  Eigen::Map<Eigen::VectorXd> b(values_.data() + rows_ * cols_, rows);
-  if (baumgarte) {  // on the kept constraints' rows, the last (Case 2 has force rows before them)
-    const auto kept = static_cast<Eigen::Index>(constraint_rows_);
-    const Eigen::Map<const Eigen::VectorXd> C(constraint_values_.data(), kept);
-    b.tail(kept) -= two_alpha_ * (J_ * y.segment(n, n)) + beta_squared_ * C;
-  }
+  const Eigen::Map<const Eigen::VectorXd> b(values_.data() + rows_ * cols_, rows);
   if (const std::optional<double> rcond = solve_small(rows_, values_.data(), u)) return *rcond;
   const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> A(values_.data(), rows,
                                                                                                    rows);

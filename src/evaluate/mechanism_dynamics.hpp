@@ -116,6 +116,8 @@ class MechanismDynamics {
   void compile_kinematics() const;
   void fill_inputs(double t, const Eigen::VectorXd& y) const;
   void evaluate_constraints(double t, const Eigen::VectorXd& y) const;
+  /// A (row major) and B into values_, B with Baumgarte's terms.
+  void evaluate_rows(double t, const Eigen::VectorXd& y) const;
   /// As unknowns(), by A's structure: up to kFixedRows rows one fixed-size LU (no
   /// allocation, unrolled); A = [M G; J 0] with G = +-J^T by the Schur complement
   /// (J M^-1 G) lambda = J M^-1 b1 - b2 (M diagonal: divided by); else the general LU.
