@@ -1,16 +1,18 @@
-// The general path's right-hand side, y' of MechanismDynamics for the homework
-// (two-blocks), interpreted against native code (evaluate/native_library.hpp): the same
-// programs, the interpreter's register walk against straight-line compiled code. Case 3
-// of this free tree runs the O(n) recursion, whose only program (the loads) is constant
-// here, so native code cannot help it; Case 2 solves the compiled rows by LU and shows
-// what the programs themselves cost. The native code is compiled (or taken from the
-// user's cache) before timing starts.
+// The general path's right-hand side, y' of MechanismDynamics, interpreted against native
+// code (evaluate/native_library.hpp): the same programs, the interpreter's register walk
+// against straight-line compiled code. The homework (two-blocks) in every case, the
+// four-bar's Cases 1 and 3, and Case 3 of pendulum chains of 8, 32 and 64 links (the O(n)
+// recursion beyond 8 rows). The native code is compiled (or taken from the user's cache) before timing
+// starts.
 #include <benchmark/benchmark.h>
 
 #include <Eigen/Core>
+#include <map>
+#include <memory>
 #include <random>
 #include <vector>
 
+#include "bench/mechanisms_bench.hpp"
 #include "evaluate/mechanism_dynamics.hpp"
 #include "model/mechanism_toml.hpp"
 #include "symbolic/system.hpp"
@@ -18,8 +20,7 @@
 namespace linkage::bench {
 namespace {
 
-void general_rhs(benchmark::State& state, CaseId id, bool native) {
-  static const sym::System system(load_mechanism("two-blocks"));
+void general_rhs_of(benchmark::State& state, const sym::System& system, CaseId id, bool native) {
   eval::MechanismDynamics dynamics(system, id);
   if (native) {
     const eval::NativeAttachment a = dynamics.attach_native();
@@ -27,6 +28,7 @@ void general_rhs(benchmark::State& state, CaseId id, bool native) {
       state.SkipWithError(("no native code: " + a.reason).c_str());
       return;
     }
+    dynamics.solve_by_structure(true);
   }
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(-3.0, 3.0);
@@ -42,10 +44,40 @@ void general_rhs(benchmark::State& state, CaseId id, bool native) {
   }
 }
 
+void general_rhs(benchmark::State& state, CaseId id, bool native) {
+  static const sym::System system(load_mechanism("two-blocks"));
+  general_rhs_of(state, system, id, native);
+}
+
+void four_bar_rhs(benchmark::State& state, CaseId id, bool native) {
+  static const sym::System system(load_mechanism("four-bar"));
+  general_rhs_of(state, system, id, native);
+}
+
+void chain_rhs(benchmark::State& state, int links, bool native) {
+  static std::map<int, std::unique_ptr<sym::System>> systems;
+  std::unique_ptr<sym::System>& system = systems[links];
+  if (!system) system = std::make_unique<sym::System>(read_mechanism(pendulum_chain_toml(links), "chain.toml"));
+  general_rhs_of(state, *system, CaseId::reduced, native);
+}
+
+BENCHMARK_CAPTURE(general_rhs, case1_interpreted, CaseId::maximal, false)->Name("rhs/general_case1_interpreted");
+BENCHMARK_CAPTURE(general_rhs, case1_native, CaseId::maximal, true)->Name("rhs/general_case1_native");
 BENCHMARK_CAPTURE(general_rhs, case3_interpreted, CaseId::reduced, false)->Name("rhs/general_case3_interpreted");
 BENCHMARK_CAPTURE(general_rhs, case3_native, CaseId::reduced, true)->Name("rhs/general_case3_native");
 BENCHMARK_CAPTURE(general_rhs, case2_interpreted, CaseId::generalized, false)->Name("rhs/general_case2_interpreted");
 BENCHMARK_CAPTURE(general_rhs, case2_native, CaseId::generalized, true)->Name("rhs/general_case2_native");
+BENCHMARK_CAPTURE(four_bar_rhs, case1_interpreted, CaseId::maximal, false)->Name("rhs/four_bar_case1_interpreted");
+BENCHMARK_CAPTURE(four_bar_rhs, case1_native, CaseId::maximal, true)->Name("rhs/four_bar_case1_native");
+BENCHMARK_CAPTURE(four_bar_rhs, case3_interpreted, CaseId::reduced, false)->Name("rhs/four_bar_case3_interpreted");
+BENCHMARK_CAPTURE(four_bar_rhs, case3_native, CaseId::reduced, true)->Name("rhs/four_bar_case3_native");
+// attach_native() expands a chain's A and B first, which takes minutes for 32 and more
+// links: the long chains are timed on the recursion without native code (its one program,
+// the loads, is the same either way).
+BENCHMARK_CAPTURE(chain_rhs, chain8_interpreted, 8, false)->Name("rhs/chain8_case3_interpreted");
+BENCHMARK_CAPTURE(chain_rhs, chain8_native, 8, true)->Name("rhs/chain8_case3_native");
+BENCHMARK_CAPTURE(chain_rhs, chain32_interpreted, 32, false)->Name("rhs/chain32_case3_interpreted");
+BENCHMARK_CAPTURE(chain_rhs, chain64_interpreted, 64, false)->Name("rhs/chain64_case3_interpreted");
 
 }  // namespace
 }  // namespace linkage::bench

@@ -1,9 +1,13 @@
 #include "evaluate/mechanism_dynamics.hpp"
 
 #include <Eigen/Cholesky>
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
+#include <utility>
 
 #include "core/interrupt.hpp"
 #include "evaluate/native_builtin.hpp"
@@ -23,6 +27,69 @@ Eigen::Index idx(std::size_t i) { return static_cast<Eigen::Index>(i); }
 
 // A Newton projection that has not met the constraints in this many iterations will not.
 constexpr int kProjectionIterations = 12;
+
+// Systems up to this many rows solve with fixed-size matrices once native code runs A and
+// B: the compiler unrolls the LU, and nothing is allocated or sized at run time.
+constexpr std::size_t kFixedRows = 8;
+
+/// The pivots' spread of an LU (see unknowns()).
+template <class Lu>
+double pivot_spread(const Lu& lu) {
+  const auto pivots = lu.matrixLU().diagonal().cwiseAbs();
+  return pivots.minCoeff() / pivots.maxCoeff();
+}
+
+/// A u = B for A (row major) and B of N rows at `values`; the pivots' spread. The same
+/// elimination as Eigen's PartialPivLU (largest pivot of the column, first on ties), with
+/// N known to the compiler: Eigen's fixed-size LU still runs its general loops and
+/// triangular solves, 60% of the homework's Case 3 right-hand side under perf.
+template <int N>
+double solve_fixed(const double* values, Eigen::VectorXd& u) {
+  std::array<double, N * N> a;
+  std::array<double, N> b;
+  std::copy(values, values + N * N, a.begin());
+  std::copy(values + N * N, values + N * N + N, b.begin());
+  double largest = 0, smallest = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < N; ++k) {
+    int p = k;
+    for (int i = k + 1; i < N; ++i)
+      if (std::fabs(a[i * N + k]) > std::fabs(a[p * N + k])) p = i;
+    if (p != k) {
+      for (int j = 0; j < N; ++j) std::swap(a[k * N + j], a[p * N + j]);
+      std::swap(b[k], b[p]);
+    }
+    const double pivot = a[k * N + k];
+    if (!(std::fabs(pivot) > 0)) return 0;  // zero or NaN: singular
+    largest = std::max(largest, std::fabs(pivot));
+    smallest = std::min(smallest, std::fabs(pivot));
+    for (int i = k + 1; i < N; ++i) {
+      const double l = a[i * N + k] / pivot;
+      for (int j = k + 1; j < N; ++j) a[i * N + j] -= l * a[k * N + j];
+      b[i] -= l * b[k];
+    }
+  }
+  const double rcond = smallest / largest;
+  if (!(rcond > std::numeric_limits<double>::epsilon())) return 0;
+  u.resize(N);
+  for (int k = N - 1; k >= 0; --k) {
+    double x = b[k];
+    for (int j = k + 1; j < N; ++j) x -= a[k * N + j] * u[j];
+    u[k] = x / a[k * N + k];
+  }
+  return rcond;
+}
+
+/// solve_fixed for N up to kFixedRows; nullopt for a larger system.
+template <std::size_t... I>
+std::optional<double> solve_small(std::size_t n, const double* values, Eigen::VectorXd& u,
+                                  std::index_sequence<I...> /*sizes less one*/) {
+  std::optional<double> rcond;
+  (void)((n == I + 1 && (rcond = solve_fixed<static_cast<int>(I + 1)>(values, u), true)) || ...);
+  return rcond;
+}
+std::optional<double> solve_small(std::size_t n, const double* values, Eigen::VectorXd& u) {
+  return solve_small(n, values, u, std::make_index_sequence<kFixedRows>{});
+}
 
 /// The joint's own coordinate in maximal coordinates (a slider's s; 0 without one).
 ex joint_coordinate(const sym::System& system, int joint) {
@@ -160,6 +227,32 @@ bool MechanismDynamics::attach_builtin(bool kinematics) {
   return builtin_;
 }
 
+void MechanismDynamics::find_structure(const std::vector<GiNaC::ex>& rhs) const {
+  // Symbolically, from the expanded rows: A = [M G; J 0] with M symmetric, G = s J^T.
+  schur_ = false;
+  if (rows_ <= kFixedRows || rows_ == n_) return;
+  const auto at = [&](std::size_t i, std::size_t j) -> const ex& { return rhs[i * cols_ + j]; };
+  const auto same = [](const ex& a, const ex& b) { return GiNaC::expand(a - b).is_zero(); };
+  mass_diagonal_ = true;
+  for (std::size_t i = 0; i < n_; ++i)
+    for (std::size_t j = i + 1; j < n_; ++j) {
+      if (!same(at(i, j), at(j, i))) return;
+      if (!at(i, j).is_zero()) mass_diagonal_ = false;
+    }
+  for (std::size_t i = n_; i < rows_; ++i)
+    for (std::size_t j = n_; j < cols_; ++j)
+      if (!at(i, j).is_zero()) return;
+  for (const int sign : {1, -1}) {
+    bool transposed = true;
+    for (std::size_t i = 0; i < n_ && transposed; ++i)
+      for (std::size_t k = n_; k < rows_ && transposed; ++k) transposed = same(at(i, k), sign * at(k, i));
+    if (transposed) {
+      schur_ = true;
+      return;
+    }
+  }
+}
+
 GiNaC::ex MechanismDynamics::prepare(const GiNaC::ex& e) const {
   // Expanded, as CaseEvaluator does: one form whatever GiNaC's term order.
   return substitute_in_turn(e, {&system_->lengths(), &to_state_, &system_->constants(), &system_->constants()}, true);
@@ -184,6 +277,7 @@ void MechanismDynamics::compile_case() const {
     rhs.push_back(prepare(e));
   }
   rhs_ = compile(rhs, input_symbols_);
+  find_structure(rhs);
   free_checking(rhs);
 
   // The sample: with the unknowns as inputs, and the eliminated forces recovered from them.
@@ -320,28 +414,88 @@ void MechanismDynamics::evaluate_constraints(double t, const Eigen::VectorXd& y)
     for (std::size_t j = 0; j < n_; ++j) M_(idx(i), idx(j)) = values_[k++];
 }
 
-double MechanismDynamics::unknowns(double t, const Eigen::VectorXd& y, Eigen::VectorXd& u) const {
+void MechanismDynamics::evaluate_rows(double t, const Eigen::VectorXd& y) const {
   compile_case();
   const bool baumgarte = constraint_rows_ > 0 && (two_alpha_ != 0 || beta_squared_ != 0);
   if (baumgarte) evaluate_constraints(t, y);  // first: values_ ends with the right-hand side's outputs
   fill_inputs(t, y);
   rhs_.run(inputs_.data(), values_.data(), scratch_.data());
+  if (!baumgarte) return;
+  // On the kept constraints' rows, the last (Case 2 has force rows before them).
+  const auto m = static_cast<Eigen::Index>(constraint_rows_);
+  Eigen::Map<Eigen::VectorXd> B(values_.data() + rows_ * cols_, idx(rows_));
+  const Eigen::Map<const Eigen::VectorXd> C(constraint_values_.data(), m);
+  B.tail(m) -= two_alpha_ * (J_ * y.segment(idx(n_), idx(n_))) + beta_squared_ * C;
+}
+
+double MechanismDynamics::unknowns(double t, const Eigen::VectorXd& y, Eigen::VectorXd& u) const {
+  evaluate_rows(t, y);
   std::size_t k = 0;
   for (std::size_t i = 0; i < rows_; ++i)
     for (std::size_t j = 0; j < cols_; ++j) A_(idx(i), idx(j)) = values_[k++];
   for (std::size_t i = 0; i < rows_; ++i) B_[idx(i)] = values_[k++];
-  if (baumgarte) {
-    const auto m = static_cast<Eigen::Index>(constraint_rows_);
-    const Eigen::Map<const Eigen::VectorXd> C(constraint_values_.data(), m);
-    B_.tail(m) -= two_alpha_ * (J_ * y.segment(idx(n_), idx(n_))) + beta_squared_ * C;
-  }
   lu_.compute(A_);
   // The pivots' spread, not Eigen's rcond(): a condition estimate costs more solves than
   // the step it guards, and only "singular or not" matters here.
-  const auto pivots = lu_.matrixLU().diagonal().cwiseAbs();
-  const double rcond = pivots.minCoeff() / pivots.maxCoeff();
+  const double rcond = pivot_spread(lu_);
   if (!(rcond > std::numeric_limits<double>::epsilon())) return 0;  // NaN entries count as singular
   u = lu_.solve(B_);
+  return rcond;
+}
+
+double MechanismDynamics::structured_unknowns(double t, const Eigen::VectorXd& y, Eigen::VectorXd& u) const {
+  evaluate_rows(t, y);
+  const auto rows = idx(rows_), n = idx(n_), m = rows - n;
+  const Eigen::Map<const Eigen::VectorXd> b(values_.data() + rows_ * cols_, rows);
+  if (const std::optional<double> rcond = solve_small(rows_, values_.data(), u)) return *rcond;
+  const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> A(values_.data(), rows,
+                                                                                                   rows);
+  bool mass_solved = false;
+  if (schur_ && mass_diagonal_) {
+    mass_inverse_ = A.diagonal().head(n).cwiseInverse();
+    mass_solved = mass_inverse_.allFinite() && (mass_inverse_.array() > 0).all();
+    minv_g_.noalias() = mass_inverse_.asDiagonal() * A.topRightCorner(n, m);
+    minv_b_ = mass_inverse_.cwiseProduct(b.head(n));
+  } else if (schur_) {
+    mass_ldlt_.compute(A.topLeftCorner(n, n));
+    mass_solved =
+        mass_ldlt_.info() == Eigen::Success && mass_ldlt_.isPositive() &&
+        mass_ldlt_.vectorD().minCoeff() > std::numeric_limits<double>::epsilon() * mass_ldlt_.vectorD().maxCoeff();
+    if (mass_solved) {
+      minv_g_ = mass_ldlt_.solve(A.topRightCorner(n, m));
+      minv_b_ = mass_ldlt_.solve(b.head(n));
+    }
+  }
+  if (!mass_solved) {  // no structure, or M not positive definite here: the general LU
+    for (Eigen::Index i = 0; i < rows; ++i) B_[i] = b[i];
+    A_ = A;
+    lu_.compute(A_);
+    const double rcond = pivot_spread(lu_);
+    if (!(rcond > std::numeric_limits<double>::epsilon())) return 0;
+    u = lu_.solve(B_);
+    return rcond;
+  }
+  // A is singular exactly when J M^-1 G is (M is regular here).
+  // Row major, then the right-hand side: as solve_small() takes them.
+  schur_values_.resize(static_cast<std::size_t>(m * (m + 1)));
+  Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> S(schur_values_.data(), m, m);
+  Eigen::Map<Eigen::VectorXd> r(schur_values_.data() + m * m, m);
+  S.noalias() = A.bottomLeftCorner(m, n).lazyProduct(minv_g_);
+  r.noalias() = A.bottomLeftCorner(m, n).lazyProduct(minv_b_);
+  r -= b.tail(m);
+  double rcond = 0;
+  if (const std::optional<double> small = solve_small(static_cast<std::size_t>(m), schur_values_.data(), lambda_)) {
+    rcond = *small;
+  } else {
+    schur_lu_.compute(S);
+    rcond = pivot_spread(schur_lu_);
+    if (rcond > std::numeric_limits<double>::epsilon()) lambda_ = schur_lu_.solve(r);
+  }
+  if (!(rcond > std::numeric_limits<double>::epsilon())) return 0;
+  u.resize(rows);
+  u.tail(m) = lambda_;
+  u.head(n) = minv_b_;
+  u.head(n).noalias() -= minv_g_.lazyProduct(lambda_);
   return rcond;
 }
 
@@ -349,7 +503,9 @@ bool MechanismDynamics::derivative(double t, const Eigen::VectorXd& y, Eigen::Ve
   dydt.resize(y.size());
   const bool baumgarte = constraint_rows_ > 0 && (two_alpha_ != 0 || beta_squared_ != 0);
   bool solved = false;
-  if (tree_ && !baumgarte) {
+  if (structured_ && (!tree_ || n_ + static_cast<std::size_t>(constraint_rows_) <= kFixedRows)) {
+    solved = structured_unknowns(t, y, u_) > 0;
+  } else if (tree_ && !baumgarte) {
     solved = tree_->accelerations(t, y, u_);
   } else {
     solved = unknowns(t, y, u_) > 0;

@@ -12,6 +12,7 @@
 //   C'' + 2 alpha C' + beta^2 C = 0,   so   B <- B - 2 alpha C' - beta^2 C   on their rows,
 // and a projection moves q and q' back onto C = 0, C' = 0 in the kinetic-energy metric
 // M = d^2 T / dq'^2 (mass-weighted, so free mechanisms keep their momentum).
+#include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <Eigen/LU>
 #include <array>
@@ -112,6 +113,11 @@ class MechanismDynamics {
   /// Every program this case runs (compiled now), the tree recursion's included, and with
   /// `kinematics` the sample's kinematics: the one list native code is made for.
   [[nodiscard]] std::vector<Program*> programs(bool kinematics = false);
+  /// From now on derivative() solves A u = B by its structure (an unrolled fixed-size LU
+  /// up to 8 rows; the Schur complement of [M G; J 0] above) instead of the general LU:
+  /// faster, the same to 1e-12, but not to the last bit, so off by default until the
+  /// evaluators' outputs are compared with a tolerance (linkage_micro and tests turn it on).
+  void solve_by_structure(bool on) { structured_ = on; }
 
  private:
   [[nodiscard]] GiNaC::ex prepare(const GiNaC::ex& e) const;
@@ -121,6 +127,14 @@ class MechanismDynamics {
   void compile_kinematics() const;
   void fill_inputs(double t, const Eigen::VectorXd& y) const;
   void evaluate_constraints(double t, const Eigen::VectorXd& y) const;
+  /// A (row major) and B into values_, B with Baumgarte's terms.
+  void evaluate_rows(double t, const Eigen::VectorXd& y) const;
+  /// As unknowns(), by A's structure: up to kFixedRows rows one fixed-size LU (no
+  /// allocation, unrolled); A = [M G; J 0] with G = +-J^T by the Schur complement
+  /// (J M^-1 G) lambda = J M^-1 b1 - b2 (M diagonal: divided by); else the general LU.
+  /// Not for a long tree's Case 3, which the recursion solves in O(n).
+  double structured_unknowns(double t, const Eigen::VectorXd& y, Eigen::VectorXd& u) const;
+  void find_structure(const std::vector<GiNaC::ex>& rhs) const;
 
   CaseId id_;
   const sym::System* system_;
@@ -152,6 +166,13 @@ class MechanismDynamics {
   mutable Eigen::MatrixXd A_, J_, M_;
   mutable Eigen::VectorXd B_, u_;
   mutable Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+  bool structured_ = false;                             // solve_by_structure(true): derivative() solves by structure
+  mutable bool schur_ = false, mass_diagonal_ = false;  // A = [M G; J 0], G = +-J^T (M diagonal)
+  mutable Eigen::MatrixXd minv_g_;
+  mutable Eigen::VectorXd minv_b_, mass_inverse_, lambda_;
+  mutable std::vector<double> schur_values_;
+  mutable Eigen::LDLT<Eigen::MatrixXd> mass_ldlt_;
+  mutable Eigen::PartialPivLU<Eigen::MatrixXd> schur_lu_;
 };
 
 }  // namespace linkage::eval
