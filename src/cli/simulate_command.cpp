@@ -32,6 +32,7 @@
 #include "pipeline/simulate_rows.hpp"
 #include "report/mechanism_solution.hpp"
 #include "symbolic/joints.hpp"
+#include "symbolic/loop_closure.hpp"
 
 namespace linkage::cli {
 namespace {
@@ -204,6 +205,7 @@ void run_simulate_mechanism(const SimulateOptions& o, SimulationOptions s, doubl
   mechanism.speaks_aliases = default_interface;
   const MechanismSolution checked = work_out_mechanism(mechanism, {static_cast<CaseId>(s.case_id)});
   const sym::System& system = *checked.system;
+  sym::require_no_drivers_to_simulate(system);  // until the drivers' columns
   std::vector<MechanismColumn> all = mechanism_columns(system);
   for (MechanismColumn& c : all) c.name = system.mechanism().named(c.name);
   const bool asked = o.columns_option != nullptr && o.columns_option->count() > 0;
