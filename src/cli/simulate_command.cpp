@@ -32,7 +32,6 @@
 #include "pipeline/simulate_rows.hpp"
 #include "report/mechanism_solution.hpp"
 #include "symbolic/joints.hpp"
-#include "symbolic/loop_closure.hpp"
 
 namespace linkage::cli {
 namespace {
@@ -205,7 +204,6 @@ void run_simulate_mechanism(const SimulateOptions& o, SimulationOptions s, doubl
   mechanism.speaks_aliases = default_interface;
   const MechanismSolution checked = work_out_mechanism(mechanism, {static_cast<CaseId>(s.case_id)});
   const sym::System& system = *checked.system;
-  sym::require_no_drivers_to_simulate(system);  // until the drivers' columns
   std::vector<MechanismColumn> all = mechanism_columns(system);
   for (MechanismColumn& c : all) c.name = system.mechanism().named(c.name);
   const bool asked = o.columns_option != nullptr && o.columns_option->count() > 0;
@@ -297,7 +295,9 @@ void register_simulate(CLI::App& app) {
                       "and their _dot and _ddot (1.x, 2.theta_dot, 2.theta_ddot); every slider's s and s_ddot; "
                       "every named point's 3.P.x, .y, .vx, .vy, .ax, .ay (world frame; m, m/s, m/s^2); every "
                       "joint's force_x, force_y (on its first body; moment for a slider), constraint_error (m) and "
-                      "constraint_velocity_error (m/s); energy (J, kinetic + potential), work and energy_error; "
+                      "constraint_velocity_error (m/s); every [[driver]]'s NAME.torque (N m) or NAME.force (N), on "
+                      "its joint's second body; energy (J, kinetic + potential), work (of dampers, loads and "
+                      "drivers) and energy_error; "
                       "momentum_x, momentum_y and angular_momentum when nothing holds it to the ground. With "
                       "--mechanism: default (t, every body's x, y, theta, every slider's s), all, or names. The "
                       "homework (no --mechanism) names them as its table always has, e.g. x1, theta2_dot, "
