@@ -130,7 +130,6 @@ ClipResult render_mechanism(const RenderFlags& f, const ClipProgress& progress) 
   const MechanismSolution checked =
       work_out_mechanism(chosen_mechanism(f.mechanism, f.inputs), {static_cast<CaseId>(simulation.case_id)});
   const sym::System& system = *checked.system;
-  sym::require_no_drivers_to_simulate(system);  // before the notes: one line
   CheckedMechanismClip made = mechanism_clip(request, system, checked.state, simulation, plan);
   made.clip.derived = checked.cases.front().system;
   const MechanismClip& clip = made.clip;

@@ -83,6 +83,17 @@ std::vector<MechanismColumn> mechanism_columns(const sym::System& system) {
     out.push_back({joint.name + ".constraint_velocity_error", stages.constraint_rate_unit,
                    "|C'| of joint " + joint.name + "'s position constraint", Q::constraint_rate, j, false});
   }
+  for (std::size_t d = 0; d < system.drivers().size(); ++d) {
+    const Driver& driver = m.drivers[static_cast<std::size_t>(system.drivers()[d].index)];
+    const Joint& joint = m.joints[static_cast<std::size_t>(system.drivers()[d].joint)];
+    const sym::JointStages& stages = sym::joint_stages(joint.type);
+    const std::string column = joint_type_info(joint.type).driver_column;
+    out.push_back({driver.name + "." + column, stages.driver_unit,
+                   "driver " + driver.name + "'s " + column + " on " +
+                       (joint.bodies[1] == kGround ? std::string("the ground") : "body " + joint.bodies[1]) +
+                       " at joint " + joint.name,
+                   Q::driver, d, false});
+  }
   if (!m.joints.empty()) {
     out.push_back({"constraint_position_error", "m", "|C| of every joint's position constraints together",
                    Q::constraints, 0, false});
@@ -100,7 +111,10 @@ std::vector<MechanismColumn> mechanism_columns(const sym::System& system) {
                      std::string(axes[c]) + " of body " + system.bodies()[b].name + "'s centre of mass less G's",
                      Q::from_com, 2 * b + c, false});
   out.push_back({"energy", "J", "kinetic plus potential energy", Q::energy, 0, false});
-  out.push_back({"work", "J", "work done by dampers and applied loads since t = 0", Q::work, 0, false});
+  out.push_back({"work", "J",
+                 system.drivers().empty() ? "work done by dampers and applied loads since t = 0"
+                                          : "work done by dampers, applied loads and drivers since t = 0",
+                 Q::work, 0, false});
   out.push_back({"energy_error", "J", "energy balance E - E(0) - work: 0 up to the integration error", Q::energy_error,
                  0, false});
   out.push_back({"energy_error_relative", "", "|E - E(0) - work| / the energy scale (simulate's energy_scale)",
@@ -201,6 +215,7 @@ bool needs_kinematics(const std::vector<MechanismColumn>& columns) {
       case MechanismQuantity::rate:
       case MechanismQuantity::slider:
       case MechanismQuantity::force:
+      case MechanismQuantity::driver:
       case MechanismQuantity::constraint:
       case MechanismQuantity::constraint_rate:
       case MechanismQuantity::energy:
@@ -278,6 +293,8 @@ double column_value(const MechanismColumn& c, double t, const Eigen::VectorXd& y
       return s.points.at(c.index);
     case MechanismQuantity::force:
       return s.force[c.index];
+    case MechanismQuantity::driver:
+      return s.drivers.at(c.index);
     case MechanismQuantity::constraint:
       return s.constraint[c.index];
     case MechanismQuantity::constraint_rate:
@@ -377,6 +394,7 @@ std::string column_words(const MechanismColumn& c) {
     case Q::slider:
     case Q::slider_acceleration:
     case Q::force:
+    case Q::driver:
     case Q::constraint:
     case Q::constraint_rate:
       break;

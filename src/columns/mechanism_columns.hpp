@@ -32,12 +32,13 @@ enum class MechanismQuantity {
   constraint_rate,      // index: joint
   energy,
   energy_error,  // E - E0 - W: the balance, 0 up to the integration error
-  work,          // W, of dampers and applied loads since t = 0
+  work,          // W, of dampers, applied loads and drivers since t = 0
   momentum_x,
   momentum_y,
   angular_momentum,
   com,                     // index: x, y, x', y'
   from_com,                // index: 2 body + component (x, y): the body's centre less G
+  driver,                  // index: driver; its torque or force (the case's multiplier)
   constraints,             // |C| of every joint's rows together
   constraints_rate,        // |C'| of the same
   energy_error_relative,   // |E - E0 - W| / energy scale

@@ -109,7 +109,6 @@ std::vector<NamedPoint> named_points(const sym::System& system) {
 MechanismDynamics::MechanismDynamics(const sym::System& system, CaseId id, std::optional<CaseSystem> derived)
     : id_(id), system_(&system), derived_(std::move(derived)) {
   if (derived_ && derived_->id != id) throw std::logic_error("a derived case given for another case");
-  sym::require_no_drivers_to_simulate(system);
   const bool maximal = id == CaseId::maximal;
   bodies_ = system.bodies().size();
   joints_ = system.joints().size();
@@ -170,9 +169,12 @@ MechanismDynamics::MechanismDynamics(const sym::System& system, CaseId id, std::
   const ex power = prepare(sym::nonconservative_power(system));
   power_zero_ = power.is_zero();  // no damper, no applied load: nothing to evaluate per step
   power_ = compile({power}, inputs);
-  if (id == CaseId::reduced && TreeDynamics::applies(system)) tree_ = std::make_unique<TreeDynamics>(system);
+  // A driven Case 3 solves densely: the drivers' power needs their torques, which the
+  // recursion does not yield.
+  if (id == CaseId::reduced && system.drivers().empty() && TreeDynamics::applies(system))
+    tree_ = std::make_unique<TreeDynamics>(system);
 
-  // The kept constraints: the last rows of the case, in joint order.
+  // The kept constraints: the last rows of the case, in joint order, then the drivers'.
   std::vector<ex> kept;
   auto keep = [&](int j) {
     for (const ex& phi : system.joints()[static_cast<std::size_t>(j)].constraints) {
@@ -184,7 +186,26 @@ MechanismDynamics::MechanismDynamics(const sym::System& system, CaseId id, std::
     for (std::size_t j = 0; j < joints_; ++j) keep(static_cast<int>(j));
   else
     for (int j : system.tree().loop_joints) keep(j);
+  for (const sym::DriverSystem& d : system.drivers()) {
+    kept.push_back(prepare(d.constraint));
+    constraint_joint_.push_back(d.joint);
+  }
   constraint_rows_ = static_cast<int>(kept.size());
+  drivers_ = system.drivers().size();
+  if (drivers_ > 0) {
+    // C' = J q' + C_t: C_t of every kept row, then each driver's J q' (its power over its
+    // torque or force). Only with drivers: a scleronomic mechanism's programs stay as built in.
+    std::vector<ex> rates;
+    for (const ex& phi : kept) rates.push_back(GiNaC::expand(phi.diff(system.time())));
+    for (std::size_t d = 0; d < drivers_; ++d) {
+      ex jq = 0;
+      for (std::size_t i = 0; i < n_; ++i) jq += kept[kept.size() - drivers_ + d].diff(q[i]) * q_dot[i];
+      rates.push_back(GiNaC::expand(jq));
+    }
+    time_rates_ = compile(rates, inputs);
+    time_rate_values_.resize(rates.size());
+    scratch_.resize(std::max(scratch_.size(), time_rates_.scratch_size()));
+  }
   inputs_.assign(inputs.size(), 0.0);
   for (std::size_t i = 0; i < parameters_; ++i) inputs_[i] = parameter_values_[i];
   J_.resize(constraint_rows_, idx(n_));
@@ -210,7 +231,7 @@ std::vector<Program*> MechanismDynamics::programs(bool kinematics) {
   compile_case();
   if (kinematics) compile_kinematics();
   std::vector<Program*> out;
-  for (Program* p : {&power_, &constraints_, &rhs_, &outputs_, &kinematics_})
+  for (Program* p : {&power_, &constraints_, &rhs_, &outputs_, &kinematics_, &time_rates_})
     if (p->output_count() > 0) out.push_back(p);
   if (tree_)
     for (Program* p : tree_->programs())
@@ -402,6 +423,20 @@ void MechanismDynamics::fill_inputs(double t, const Eigen::VectorXd& y) const {
   inputs_[parameters_ + 2 * n_] = t;
 }
 
+void MechanismDynamics::evaluate_time_rates(double t, const Eigen::VectorXd& y) const {
+  if (drivers_ == 0) return;
+  fill_inputs(t, y);
+  time_rates_.run(inputs_.data(), time_rate_values_.data(), scratch_.data());
+}
+
+Eigen::VectorXd MechanismDynamics::constraint_rate(double t, const Eigen::VectorXd& y) const {
+  Eigen::VectorXd rate = J_ * y.segment(idx(n_), idx(n_));
+  if (drivers_ == 0) return rate;
+  evaluate_time_rates(t, y);
+  for (Eigen::Index i = 0; i < rate.size(); ++i) rate[i] += time_rate_values_[static_cast<std::size_t>(i)];
+  return rate;
+}
+
 void MechanismDynamics::evaluate_constraints(double t, const Eigen::VectorXd& y) const {
   fill_inputs(t, y);
   constraints_.run(inputs_.data(), values_.data(), scratch_.data());
@@ -425,7 +460,7 @@ void MechanismDynamics::evaluate_rows(double t, const Eigen::VectorXd& y) const 
   const auto m = static_cast<Eigen::Index>(constraint_rows_);
   Eigen::Map<Eigen::VectorXd> B(values_.data() + rows_ * cols_, idx(rows_));
   const Eigen::Map<const Eigen::VectorXd> C(constraint_values_.data(), m);
-  B.tail(m) -= two_alpha_ * (J_ * y.segment(idx(n_), idx(n_))) + beta_squared_ * C;
+  B.tail(m) -= two_alpha_ * constraint_rate(t, y) + beta_squared_ * C;
 }
 
 double MechanismDynamics::unknowns(double t, const Eigen::VectorXd& y, Eigen::VectorXd& u) const {
@@ -523,7 +558,19 @@ bool MechanismDynamics::derivative(double t, const Eigen::VectorXd& y, Eigen::Ve
     power_.run(inputs_.data(), power_values_.data(), scratch_.data());
     dydt[idx(2 * n_)] = power_values_[0];
   }
+  dydt[idx(2 * n_)] += driver_power(t, y, u_);
   return true;
+}
+
+double MechanismDynamics::driver_power(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& u) const {
+  // Each driver's multiplier acts as the generalized force lambda dC/dq: its power is
+  // lambda (dC/dq) q', the work the motor does as its constraint moves (C_t != 0).
+  if (drivers_ == 0) return 0;
+  evaluate_time_rates(t, y);
+  const std::size_t m = static_cast<std::size_t>(constraint_rows_);
+  double power = 0;
+  for (std::size_t d = 0; d < drivers_; ++d) power += u[idx(cols_ - drivers_ + d)] * time_rate_values_[m + d];
+  return power;
 }
 
 double MechanismDynamics::constraint_violation(double t, const Eigen::VectorXd& y) const {
@@ -564,7 +611,7 @@ double MechanismDynamics::project(double t, Eigen::VectorXd& y) const {
   evaluate_constraints(t, y);
   const Eigen::LDLT<Eigen::MatrixXd> metric(M_);
   const Eigen::MatrixXd MinvJt = metric.solve(J_.transpose());
-  const Eigen::VectorXd rate = J_ * y.segment(n, n);
+  const Eigen::VectorXd rate = constraint_rate(t, y);
   y.segment(n, n) -= MinvJt * (J_ * MinvJt).fullPivLu().solve(rate);
   return C.cwiseAbs().maxCoeff();
 }
@@ -605,6 +652,10 @@ void MechanismDynamics::sample(double t, const Eigen::VectorXd& y, MechanismSamp
   out.momentum_y = values[k++];
   out.angular_momentum = values[k++];
   for (double& v : out.com) v = values[k++];
+  // The drivers' torques and forces: the case's last unknowns in every case.
+  out.drivers.assign(drivers_, std::numeric_limits<double>::quiet_NaN());
+  if (solved)
+    for (std::size_t d = 0; d < drivers_; ++d) out.drivers[d] = u[idx(cols_ - drivers_ + d)];
   if (!kinematics) return;
   values.resize(kinematics_.output_count());
   scratch.resize(kinematics_.scratch_size());

@@ -3,12 +3,13 @@
 // from the case's GiNaC rows (the very expressions `solve` prints):
 //   state y = (q, q', W): the case's coordinates (Case 1: x, y, theta of every body;
 //   Cases 2 and 3: the tree's generalized coordinates), their rates, and W, the work done
-//   so far by dampers and applied loads, so that E(t) - E(0) - W(t) = 0 is a check even
-//   when the energy is not conserved;
+//   so far by dampers, applied loads and drivers, so that E(t) - E(0) - W(t) = 0 is a
+//   check even when the energy is not conserved;
 //   y' = (q', q'', P) with A(q, q', t) u = B(q, q', t) solved for u, whose first entries are
-//   q'' (the remaining ones joint forces), and P the power of dampers and applied loads.
+//   q'' (the remaining ones joint forces), and P the power of dampers, applied loads and drivers.
 // Constraints C(q) = 0 that the case keeps (Case 1: every joint; Cases 2 and 3: the joints
-// that close loops) are met at the acceleration level only; Baumgarte's correction asks
+// that close loops; in every case each driver's C(q, t) = driven(q) - motion(t), after
+// them) are met at the acceleration level only, with C' = J q' + C_t; Baumgarte's correction asks
 //   C'' + 2 alpha C' + beta^2 C = 0,   so   B <- B - 2 alpha C' - beta^2 C   on their rows,
 // and a projection moves q and q' back onto C = 0, C' = 0 in the kinetic-energy metric
 // M = d^2 T / dq'^2 (mass-weighted, so free mechanisms keep their momentum).
@@ -38,7 +39,8 @@ struct MechanismSample {
   std::vector<double> constraint;       // per joint: |C| of its position rows, m (and rad)
   std::vector<double> constraint_rate;  // per joint: |C'|, m/s (and rad/s)
   double kinetic = 0, potential = 0;
-  double power = 0;  // of dampers and applied loads, W
+  double power = 0;             // of dampers and applied loads, W
+  std::vector<double> drivers;  // per [[driver]]: its torque (N m) or force (N) on its joint's bodies[1]
   double momentum_x = 0, momentum_y = 0;
   double angular_momentum = 0;  // about the centre of mass
   std::array<double, 4> com{};  // the centre of mass: x, y, x', y'
@@ -127,6 +129,12 @@ class MechanismDynamics {
   void compile_kinematics() const;
   void fill_inputs(double t, const Eigen::VectorXd& y) const;
   void evaluate_constraints(double t, const Eigen::VectorXd& y) const;
+  /// The drivers' C_t and J q' into time_rate_values_ (nothing without drivers).
+  void evaluate_time_rates(double t, const Eigen::VectorXd& y) const;
+  /// C' = J q' + C_t of the kept rows, J_ evaluated at y already.
+  [[nodiscard]] Eigen::VectorXd constraint_rate(double t, const Eigen::VectorXd& y) const;
+  /// The drivers' power at (t, y) with the case's unknowns u, W.
+  [[nodiscard]] double driver_power(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& u) const;
   /// A (row major) and B into values_, B with Baumgarte's terms.
   void evaluate_rows(double t, const Eigen::VectorXd& y) const;
   /// As unknowns(), by A's structure: up to kFixedRows rows one fixed-size LU (no
@@ -148,6 +156,9 @@ class MechanismDynamics {
   bool power_zero_ = false;
   std::unique_ptr<TreeDynamics> tree_;  // Case 3 of a tree: the O(n) recursion
   int constraint_rows_ = 0;
+  std::size_t drivers_ = 0;  // the last constraint rows and the last unknowns
+  Program time_rates_;       // with drivers: C_t of every kept row, then each driver's J q'
+  mutable std::vector<double> time_rate_values_;
   std::vector<int> constraint_joint_;
   std::vector<std::string> coordinate_names_;
   std::vector<double> parameter_values_;

@@ -139,14 +139,6 @@ ClosedState checked_initial_state(const System& system) {
   return closed;
 }
 
-void require_no_drivers_to_simulate(const System& system) {
-  if (system.drivers().empty()) return;
-  const Driver& d = system.mechanism().drivers.front();
-  throw Error::input(where(d.pos) + "driver '" + d.name +
-                     "': a driven mechanism is derived and solved by `linkage solve` but not yet simulated; valid "
-                     "for now: a mechanism without [[driver]]");
-}
-
 void require_on_the_motion(const System& system, const GiNaC::exmap& state) {
   if (system.drivers().empty()) return;
   GiNaC::exmap at = system.parameter_values();

@@ -31,9 +31,4 @@ struct ClosedState {
 /// coordinates and rates) does not put on its motion at t = 0, position or rate.
 void require_on_the_motion(const System& system, const GiNaC::exmap& state);
 
-/// Throws Error::input naming the first driver: `solve` derives and solves a driven
-/// mechanism, integrating one is the next step of issue 25 (MechanismDynamics asks; a
-/// command that prints notes first asks before them).
-void require_no_drivers_to_simulate(const System& system);
-
 }  // namespace linkage::sym

@@ -15,39 +15,6 @@
 namespace linkage::test {
 namespace {
 
-/// A parsed CSV table: the header and the rows of numbers.
-struct Table {
-  std::vector<std::string> columns;
-  std::vector<std::vector<double>> rows;
-  [[nodiscard]] std::size_t index(const std::string& name) const {
-    for (std::size_t i = 0; i < columns.size(); ++i)
-      if (columns[i] == name) return i;
-    throw std::runtime_error("no column " + name);
-  }
-};
-
-std::vector<std::string> split(const std::string& line, char sep) {
-  std::vector<std::string> parts;
-  std::stringstream in(line);
-  for (std::string part; std::getline(in, part, sep);) parts.push_back(part);
-  return parts;
-}
-
-Table parse_csv(const std::string& text) {
-  Table t;
-  std::stringstream in(text);
-  std::string line;
-  std::getline(in, line);
-  t.columns = split(line, ',');
-  while (std::getline(in, line)) {
-    std::vector<double> row;
-    for (const std::string& cell : split(line, ',')) row.push_back(std::stod(cell));
-    EXPECT_EQ(row.size(), t.columns.size()) << line;
-    t.rows.push_back(row);
-  }
-  return t;
-}
-
 std::vector<std::string> reference_args(int case_id) {
   std::vector<std::string> args{"simulate",
                                 "--integrator",

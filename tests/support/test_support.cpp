@@ -273,6 +273,36 @@ std::vector<std::string> lines_of(const std::string& text) {
   return lines;
 }
 
+std::size_t Table::index(const std::string& name) const {
+  for (std::size_t i = 0; i < columns.size(); ++i)
+    if (columns[i] == name) return i;
+  throw std::runtime_error("no column " + name);
+}
+
+namespace {
+std::vector<std::string> split(const std::string& line, char sep) {
+  std::vector<std::string> parts;
+  std::stringstream in(line);
+  for (std::string part; std::getline(in, part, sep);) parts.push_back(part);
+  return parts;
+}
+}  // namespace
+
+Table parse_csv(const std::string& text) {
+  Table t;
+  std::stringstream in(text);
+  std::string line;
+  std::getline(in, line);
+  t.columns = split(line, ',');
+  while (std::getline(in, line)) {
+    std::vector<double> row;
+    for (const std::string& cell : split(line, ',')) row.push_back(std::stod(cell));
+    EXPECT_EQ(row.size(), t.columns.size()) << line;
+    t.rows.push_back(row);
+  }
+  return t;
+}
+
 std::string repeat(std::string_view s, int n) {
   std::string out;
   for (int i = 0; i < n; ++i) out += s;

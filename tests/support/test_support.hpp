@@ -74,6 +74,15 @@ void write_text(const std::filesystem::path& path, const std::string& text);
 
 /// The text's lines, without their line ends.
 std::vector<std::string> lines_of(const std::string& text);
+/// A parsed CSV table (simulate's output): the header and the rows of numbers.
+struct Table {
+  std::vector<std::string> columns;
+  std::vector<std::vector<double>> rows;
+  /// The column named `name` (throws when there is none).
+  [[nodiscard]] std::size_t index(const std::string& name) const;
+};
+/// `text` as a Table: every row as many numbers as the header has names (checked).
+Table parse_csv(const std::string& text);
 /// `s` written `n` times (hostile input: deep nesting, long names).
 std::string repeat(std::string_view s, int n);
 /// A mechanism's name as a GoogleTest parameter name (letters, digits and '_' only).
