@@ -146,6 +146,7 @@ int main(int argc, char** argv) {
       print_error(interrupted_error().what());
       return written != 0 ? written : interrupted_error().exit_status();
     }
+    end_by_default_on_signal();  // what is left polls nothing
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) {
       const int code = app.exit(e);  // --help, --version

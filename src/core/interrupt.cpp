@@ -69,6 +69,11 @@ void throw_if_interrupted() {
 
 void file_begun() noexcept { g_end_at_once.store(nullptr); }
 
+void end_by_default_on_signal() noexcept {
+  for (int signal : kSignals) std::signal(signal, SIG_DFL);
+  if (const int received = g_signal.load(std::memory_order_relaxed); received != 0) std::raise(received);
+}
+
 EndAtOnceOnSignal::EndAtOnceOnSignal(std::function<void()> last_words) : last_words_(std::move(last_words)) {
   g_end_at_once.store(this);
 }

@@ -31,6 +31,12 @@ void throw_if_interrupted();
 /// and what was begun is removed.
 void file_begun() noexcept;
 
+/// From now on a terminating signal ends the process at once by its default action (status
+/// 128 + the signal), and one already received does so now: for the end of a run whose
+/// output is whole, where what is left (freeing a long chain's expressions, the static
+/// destructors) polls nothing and would otherwise end with status 0.
+void end_by_default_on_signal() noexcept;
+
 class EndAtOnceOnSignal {
  public:
   explicit EndAtOnceOnSignal(std::function<void()> last_words = {});
