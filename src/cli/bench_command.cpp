@@ -232,8 +232,9 @@ void add_mechanisms(CLI::App* bench) {
   auto flags = std::make_shared<bench::MechanismsBenchOptions>();
   CLI::App* sub = bench->add_subcommand(
       "mechanisms",
-      "Any mechanism's motion: ns per right-hand side for every shipped mechanism and case, a pendulum chain of 2 to "
-      "64 links against MuJoCo, work against precision on the double pendulum against Odeint and MuJoCo");
+      "Any mechanism's motion: ns per right-hand side for every shipped mechanism and case on the evaluator and the "
+      "compiled path, a pendulum chain of 2 to 64 links against MuJoCo, work against precision on the double "
+      "pendulum against Odeint and MuJoCo");
   sub->add_option("--out", flags->out,
                   "Folder for mechanisms.csv, work-precision.csv, mechanisms.md and the plots (default "
                   "bench-mechanisms)")
