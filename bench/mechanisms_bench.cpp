@@ -562,6 +562,23 @@ PoseRun run_poses(const sym::System& system, const GiNaC::exmap& state, const Si
   return out;
 }
 
+/// Sets `o` to the compiled path when it can run its case (built in, else compiled into the
+/// user's cache as simulate does), else to the evaluator; what runs, as simulate's summary says it.
+std::string choose_path(const sym::System& system, const GiNaC::exmap& state, SimulationOptions& o) {
+  o.evaluator = Evaluator::compiled;
+  try {
+    return MechanismSimulation(system, state, o).stats().evaluator;
+  } catch (const Error& e) {
+    if (e.setting() != "evaluator") throw;
+    o.evaluator = Evaluator::interpreted;
+    // detail(): "'compiled' cannot run: REASON; valid: ..."
+    std::string reason = e.detail();
+    reason = reason.substr(0, reason.rfind("; valid:"));
+    reason = reason.substr(reason.find(": ") == std::string::npos ? 0 : reason.find(": ") + 2);
+    return "interpreted (" + reason + ")";
+  }
+}
+
 double largest_difference(const std::vector<double>& a, const std::vector<double>& b) {
   double d = 0;
   for (std::size_t i = 0; i < a.size(); ++i) d = std::max(d, std::fabs(a[i] - b[i]));
@@ -581,6 +598,20 @@ MechanismAccuracyResult run_mechanism_accuracy(const MechanismAccuracyOptions& o
   reference.rtol = reference.atol = 1e-14;
   reference.duration = duration;
   reference.stabilization = loops ? Stabilization::projection : Stabilization::none;
+  std::vector<std::string> paths;  // per case: what computes its equations
+  std::vector<Evaluator> evaluators;
+  for (int c : o.cases) {
+    SimulationOptions s = reference;
+    s.case_id = c;
+    paths.push_back("Case " + std::to_string(c) + ": " + choose_path(*m.system, m.state, s));
+    evaluators.push_back(s.evaluator);
+  }
+  {
+    SimulationOptions s = reference;
+    r.path = "reference (Case 3): " + choose_path(*m.system, m.state, s);
+    reference.evaluator = s.evaluator;
+    for (const std::string& p : paths) r.path += "; " + p;
+  }
   const PoseRun exact = run_poses(*m.system, m.state, reference);
   SimulationOptions second = reference;
   second.case_id = 2;
@@ -596,11 +627,13 @@ MechanismAccuracyResult run_mechanism_accuracy(const MechanismAccuracyOptions& o
       o.quick ? std::vector<double>{1e-2, 1e-3} : std::vector<double>{1e-2, 3e-3, 1e-3, 3e-4, 1e-4};
   Progress progress("bench accuracy", static_cast<long>(o.cases.size()), "cases", o.quiet);
   long done = 0;
-  for (int c : o.cases) {
+  for (std::size_t k = 0; k < o.cases.size(); ++k) {
+    const int c = o.cases[k];
     for (const IntegratorInfo& info : integrators()) {
       for (double setting : info.adaptive ? tolerances : steps) {
         SimulationOptions s = reference;
         s.case_id = c;
+        s.evaluator = evaluators[k];
         s.integrator = info.kind;
         s.stabilization = c == 1 || loops ? Stabilization::projection : Stabilization::none;
         if (info.adaptive)
@@ -637,7 +670,9 @@ MechanismAccuracyResult run_mechanism_accuracy(const MechanismAccuracyOptions& o
         "checked twice: the same run on Case 2's equations differs by "
      << sig(r.second_equations, 2) << ", Gauss-Legendre (order 4, implicit) at dt = " << sig(gauss.dt) << " s by "
      << sig(r.second_method, 2)
-     << ". Errors below the larger of these are not resolved. Case 1 and mechanisms with loops run with projection.\n\n"
+     << ". Errors below the larger of these are not resolved. Case 1 and mechanisms with loops run with projection."
+     << "\n\nWhat computes the equations (the compiled path when it can run, as simulate's `--evaluator compiled`): "
+     << r.path << ".\n\n"
      << "| method | setting | run time (s) | error |\n|---|---|---|---|\n";
   for (const WorkPoint& w : r.work)
     md << "| " << w.method << " | " << sig(w.setting, 2) << " | "
@@ -650,6 +685,7 @@ MechanismAccuracyResult run_mechanism_accuracy(const MechanismAccuracyOptions& o
   write_work_plot(r.work, mechanism.title + ": work against precision to t = " + sig(duration) + " s",
                   "error: max |Δ| of every body's x, y, θ", o.out / (stem + ".png"));
   r.files = {o.out / (stem + ".csv"), o.out / (stem + ".md"), o.out / (stem + ".png")};
+  r.lines.push_back("path: " + r.path);
   r.lines.push_back("reference (DOP853 1e-14, Case 3) against Case 2: " + sig(r.second_equations, 2) +
                     ", against Gauss-Legendre: " + sig(r.second_method, 2));
   for (const int c : o.cases)

@@ -91,6 +91,7 @@ struct MechanismAccuracyResult {
   std::vector<WorkPoint> work;  // method "Case N integrator"; error: max |pose - reference| of every body, m or rad
   double second_equations = 0;  // |reference - Case 2 at 1e-14|
   double second_method = 0;     // |reference - Gauss-Legendre|
+  std::string path;             // what computed each case's equations: "Case 3: compiled (built in); ..."
   std::vector<std::string> lines;
   std::vector<std::filesystem::path> files;
 };

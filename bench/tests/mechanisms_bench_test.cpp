@@ -94,6 +94,10 @@ TEST(MechanismsBench, AccuracyOfAnyMechanism) {
       {"bench", "accuracy", "--mechanism", "four-bar", "--quick", "--quiet", "--out", dir.path().string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("reference (DOP853 1e-14, Case 3) against Case 2: "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("path: reference (Case 3): compiled (built in); Case 1: compiled (built in); Case 2: compiled "
+                       "(built in); Case 3: compiled (built in)\n"),
+            std::string::npos)
+      << r.out;
   const std::string csv = test::read_text(dir / "accuracy-four-bar.csv");
   for (const std::string method : {"Case 1 dop853", "Case 2 rk4", "Case 3 gauss-legendre", "Case 3 euler"})
     EXPECT_NE(csv.find("\n" + method + ","), std::string::npos) << method;
@@ -102,6 +106,26 @@ TEST(MechanismsBench, AccuracyOfAnyMechanism) {
       test::run_linkage({"bench", "accuracy", "--mechanism", "four-bar", "--scenario", "fast", "--quick"});
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("--scenario and --integrators are the homework's"), std::string::npos) << bad.err;
+}
+
+// A mechanism file with no built-in code and no compiler on PATH runs on the evaluator
+// and says why.
+TEST(MechanismsBench, AccuracyOfAFileWithoutACompilerRunsTheEvaluator) {
+  const test::TempDir dir;
+  std::string text = test::read_text(fs::path(LINKAGE_SOURCE_DIR) / "mechanisms" / "four-bar.toml");
+  const std::string mass = "mass = \"mb\"";
+  ASSERT_NE(text.find(mass), std::string::npos);
+  text.replace(text.find(mass), mass.size(), "mass = \"mb + ma/10\"");  // other equations: not built in
+  test::write_text(dir / "four-bar.toml", text);
+  const test::ScopedEnv cache("XDG_CACHE_HOME", (dir / "cache").string());
+  const test::ScopedEnv path("PATH", (dir / "no-compiler").string());
+  const test::RunResult r = test::run_linkage({"bench", "accuracy", "--mechanism", (dir / "four-bar.toml").string(),
+                                               "--cases", "3", "--quick", "--quiet", "--out", (dir / "out").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("path: reference (Case 3): interpreted (no C++ compiler (c++) on PATH); Case 3: interpreted (no "
+                       "C++ compiler (c++) on PATH)\n"),
+            std::string::npos)
+      << r.out;
 }
 
 // The Odeint peer's right-hand side, written by hand, equals our derivation of the

@@ -168,6 +168,39 @@ TEST(Targets, WithAPeerMissingTheFigureSaysItIsTheBestOfThoseBuilt) {
   EXPECT_EQ(peer_rows(r, {})[0].note.find("not built"), std::string::npos);
 }
 
+// The homework on the general path is judged against the best peer with the user's
+// right-hand side, beside (not instead of) the closed form.
+TEST(Targets, TheGeneralPathHasItsOwnRowsAgainstTheBestPeer) {
+  ScenarioResult r;
+  r.points = {point(1e-3, 1e-11), point(2e-3, 1e-11), point(8e-3, 1e-11)};
+  r.points[1].rhs = RhsKind::general;
+  r.points[1].label = "DOP853";
+  r.points[2].method = "odeint-bs";
+  r.points[2].library = "Boost.Odeint";
+  r.points[2].label = "Odeint Bulirsch-Stoer";
+  r.points[2].rhs = RhsKind::user;
+  RhsTimings rhs;
+  rhs.general_evaluator = "compiled (built in)";
+  std::vector<TargetRow> general;
+  for (TargetRow& row : evaluate_targets(r, rhs, Clock::wall, {}))
+    if (row.target.rfind("general path", 0) == 0) general.push_back(std::move(row));
+  ASSERT_EQ(general.size(), 2u);  // 1e-8 (goal 4x) and 1e-10 (goal 3x)
+  EXPECT_NE(general[0].target.find("general path, compiled (built in), time to error 1e"), std::string::npos)
+      << general[0].target;
+  EXPECT_EQ(general[0].measured, "4x");
+  EXPECT_EQ(general[0].met, std::optional<bool>(true));
+  EXPECT_NE(general[0].note.find("DOP853 (Case 3, general path) 2 ms"), std::string::npos) << general[0].note;
+  EXPECT_EQ(general[1].goal, ">= 3x");
+  // The closed form's row is unchanged: 8x.
+  EXPECT_EQ(peer_rows(r, {})[0].measured, "8x");
+  // Without general-path runs (--integrators, --cases), its rows say so.
+  r.points.erase(r.points.begin() + 1);
+  for (const TargetRow& row : evaluate_targets(r, rhs, Clock::wall, {})) {
+    if (row.target.rfind("general path", 0) != 0) continue;
+    EXPECT_EQ(row.note, "not measured: not in this run (--cases, --integrators)");
+  }
+}
+
 // A peer that never gets to the error says how close it came and why it stopped.
 TEST(Targets, APeerThatFallsShortSaysHowCloseItCameAndWhy) {
   ScenarioResult r;
