@@ -207,6 +207,11 @@ std::vector<OverheadTiming> measure_overhead(const ScenarioResult& sr, double mi
     o.homework_error = p->error;
     o.per_evaluation = time_on_oscillators(c.method, p->knob, sr.scenario.duration, p->outcome.rhs_evaluations,
                                            min_time, o.evaluations);
+    if (has_dynamic_run(c.method)) {
+      std::int64_t made = 0;
+      o.dynamic_per_evaluation = time_on_oscillators(c.method, p->knob, sr.scenario.duration,
+                                                     p->outcome.rhs_evaluations, min_time, made, true);
+    }
     out.push_back(o);
   }
   return out;

@@ -100,6 +100,43 @@ TEST(Overhead, TheRowIsTheTimeOnTheCheapRightHandSideAndNeverNegative) {
   EXPECT_EQ(rows, 1);
 }
 
+// DOP853 and Dopri5 have a second row: the same run on a dynamic-size state.
+TEST(Overhead, TheAdaptiveMethodsHaveADynamicSizeRow) {
+  ScenarioResult r;
+  r.points = {point(1e-3, 1e-9, 100000)};
+  OverheadTiming o;
+  o.method = "dop853";
+  o.label = "DOP853";
+  o.knob = 1e-10;
+  o.evaluations = 100000;
+  o.per_evaluation = {10.0, 10.0};
+  o.dynamic_per_evaluation = PerCall{16.0, 15.5};
+  r.overhead = {o};
+  RhsTimings rhs;
+  rhs.case3_fast = {40.0, 40.0};
+  std::vector<TargetRow> rows;
+  for (TargetRow& row : evaluate_targets(r, rhs, Clock::wall, {}))
+    if (row.target.rfind("integrator overhead", 0) == 0) rows.push_back(std::move(row));
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0].measured, "10 ns");
+  EXPECT_EQ(rows[0].met, std::optional<bool>(true));
+  EXPECT_NE(rows[1].target.find("DOP853, dynamic-size state"), std::string::npos) << rows[1].target;
+  EXPECT_EQ(rows[1].measured, "16 ns");
+  EXPECT_EQ(rows[1].met, std::optional<bool>(false));  // goal < 15 ns
+}
+
+TEST(Overhead, TheDynamicSizeRunsMakeTheSameEvaluations) {
+  double sink = 0;
+  for (const std::string method : {"dop853", "dopri5"}) {
+    ASSERT_TRUE(has_dynamic_run(method));
+    EXPECT_EQ(run_on_oscillators(method, 1e-10, 10.0, 20000, sink, true),
+              run_on_oscillators(method, 1e-10, 10.0, 20000, sink, false))
+        << method;
+  }
+  EXPECT_FALSE(has_dynamic_run("rk4"));
+  EXPECT_THROW((void)run_on_oscillators("rk4", 100, 1, 1, sink, true), Error);
+}
+
 TEST(Overhead, CopiesTheFirstRunReachingTheErrorElseTheLastThatFinished) {
   ScenarioResult r;
   r.points = {point(1e-4, 1e-6), point(2e-4, 1e-9), point(3e-4, 1e-11), point(4e-4, std::nan(""))};
