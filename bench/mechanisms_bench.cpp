@@ -309,7 +309,7 @@ void judge(const MechanismsBenchOptions& o, MechanismsBenchResult& r) {
     t.met = std::isfinite(measured) && (below ? measured <= goal : measured >= goal);
     if (!std::isfinite(measured)) t.note = why;
     if (std::isfinite(measured) && !t.met && !because.empty())
-      t.note = "**missed** by " + sig(below ? measured / goal : goal / measured, 2) + "x: " + because;
+      t.note = "**missed** by " + sig(below ? measured / goal : goal / measured) + "x: " + because;
     r.targets.push_back(t);
   };
   auto ns_of = [&](const std::string& mechanism, int case_id, const std::string& path) {
@@ -347,8 +347,8 @@ void judge(const MechanismsBenchOptions& o, MechanismsBenchResult& r) {
   line("chain of 32: mj_forward / ours (compiled)", mujoco32 / ours32, kMinSpeedupOverMujocoChain32, false, "x", why32,
        "both are O(n) per evaluation; ours " + sig(ours32) + " ns (evaluator " +
            sig(ns_of("chain-32", 3, "evaluator")) +
-           " ns) runs the recursion on dynamic-size 3 x 3 spatial algebra, whose cost native code does not touch "
-           "(its one program, the loads, is trivial)");
+           " ns) runs the recursion on dynamic-size 3 x 3 spatial algebra, which native code does not change "
+           "(it replaces the recursion's one program, the loads, which is trivial)");
   const double c8 = ns_of("chain-8", 3, "compiled"), c64 = ns_of("chain-64", 3, "compiled");
   line("chain: time at 64 links / at 8 (compiled)", c64 / c8, kMaxChainGrowth, true, "x", o.quick ? quick : no_compiled,
        "the recursion is O(n); the rest is caches and the run's noise");
