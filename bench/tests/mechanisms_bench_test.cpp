@@ -62,6 +62,25 @@ TEST(MechanismsBench, HomeworkCase3HasTheThreePaths) {
   }
 }
 
+// Without a compiler the chains have no compiled rows and the report says why in one
+// line; the shipped mechanisms' built-in code needs none.
+TEST(MechanismsBench, WithoutACompilerTheChainsKeepTheEvaluatorRows) {
+  const test::TempDir dir;
+  const test::ScopedEnv cache("XDG_CACHE_HOME", (dir / "cache").string());
+  const test::ScopedEnv path("PATH", (dir / "no-compiler").string());
+  const test::RunResult r =
+      test::run_linkage({"bench", "mechanisms", "--quick", "--quiet", "--out", (dir / "out").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("chains: no compiled rows (no C++ compiler (c++) on PATH); the evaluator's rows stand\n"),
+            std::string::npos)
+      << r.out;
+  const std::string csv = test::read_text(dir / "out" / "mechanisms.csv");
+  EXPECT_NE(csv.find("\nchain-8,3,evaluator,8,"), std::string::npos);
+  EXPECT_EQ(csv.find(",compiled,", csv.find("\nchain-")), std::string::npos) << csv;
+  EXPECT_NE(csv.find("\nfour-bar,1,compiled,3,"), std::string::npos);
+  EXPECT_NE(test::read_text(dir / "out" / "mechanisms.md").find("- chains: no compiled rows"), std::string::npos);
+}
+
 TEST(MechanismsBench, QuickRunWritesEveryRowPeerAndTarget) {
   const QuickRun& run = quick_run();
   const test::RunResult& r = run.result;
