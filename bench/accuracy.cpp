@@ -11,6 +11,7 @@
 #include "bench/closed_form/kinematics.hpp"
 #include "bench/closed_form/linear_solve.hpp"
 #include "bench/closed_form/linkage_rhs.hpp"
+#include "bench/general_rhs.hpp"
 #include "bench/rhs.hpp"
 #include "bench/targets.hpp"
 #include "core/error.hpp"
@@ -185,6 +186,9 @@ RhsTimings measure_rhs(const Scenario& s, bool quick) {
       batch);
   if (sink == 0.123456789) throw Error::failure("unreachable");
   t.oscillators = oscillators_rhs_ns(batch);
+  const GeneralCase3Rhs general(p);
+  t.case3_general = rhs_ns<8>(general, y8, batch);
+  t.general_evaluator = general.evaluator();
   return t;
 }
 
@@ -203,6 +207,11 @@ std::vector<OverheadTiming> measure_overhead(const ScenarioResult& sr, double mi
     o.homework_error = p->error;
     o.per_evaluation = time_on_oscillators(c.method, p->knob, sr.scenario.duration, p->outcome.rhs_evaluations,
                                            min_time, o.evaluations);
+    if (has_dynamic_run(c.method)) {
+      std::int64_t made = 0;
+      o.dynamic_per_evaluation = time_on_oscillators(c.method, p->knob, sr.scenario.duration,
+                                                     p->outcome.rhs_evaluations, min_time, made, true);
+    }
     out.push_back(o);
   }
   return out;
@@ -283,6 +292,9 @@ AccuracyResult run_accuracy(const AccuracyOptions& options) {
       total += m.adaptive ? static_cast<long>(limits.tolerances.size()) : limits.max_step_counts;
     Progress progress("accuracy " + name, total, "runs", options.quiet);
     long done = 0;
+    // The general path is derived and compiled once per Params, here rather than in a timed run.
+    if (std::any_of(methods.begin(), methods.end(), [](const Method& m) { return m.rhs == RhsKind::general; }))
+      (void)GeneralCase3Rhs(sr.scenario.params);
     for (const Method& m : methods) sweep(m, sr.scenario, sr.reference, limits, sr.points, progress, done);
     progress.finish();
     sr.overhead = measure_overhead(sr, limits.min_time);

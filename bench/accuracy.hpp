@@ -62,9 +62,11 @@ struct RhsTimings {
   PerCall case3_user;        // hand-typed 4x4 + Eigen partialPivLu
   PerCall case2;
   PerCall case1;
-  PerCall solve_blocks;  // the Case 3 4x4 solve alone: our block solve
-  PerCall solve_lu;      //                         and Eigen's partialPivLu
-  PerCall oscillators;   // OscillatorsRhs, on which the integrators' overhead is timed
+  PerCall solve_blocks;           // the Case 3 4x4 solve alone: our block solve
+  PerCall solve_lu;               //                         and Eigen's partialPivLu
+  PerCall oscillators;            // OscillatorsRhs, on which the integrators' overhead is timed
+  PerCall case3_general;          // the general path (general_rhs.hpp): two-blocks.toml as simulate runs it
+  std::string general_evaluator;  // what computes it: "compiled (built in)", "interpreted (why)"
 };
 
 struct AccuracyResult {

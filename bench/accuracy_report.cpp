@@ -111,7 +111,7 @@ std::string targets_table(const ScenarioResult& fast, const AccuracyResult& resu
   return out.str();
 }
 
-std::string rhs_row(const char* what, const PerCall& c) {
+std::string rhs_row(const std::string& what, const PerCall& c) {
   return std::string("| ") + what + " | " + sig(c.wall_ns) + " | " + sig(c.cpu_ns) + " |\n";
 }
 
@@ -156,6 +156,8 @@ std::string markdown(const AccuracyOptions& options, const AccuracyResult& resul
       << "## Right-hand side cost (ns per evaluation, this run)\n\n"
       << "| right-hand side | steady clock | thread CPU time |\n| --- | --- | --- |\n"
       << rhs_row("Case 3, closed form (ours, fastest)", result.rhs.case3_fast)
+      << rhs_row("Case 3, general path (two-blocks.toml as simulate runs it, " + result.rhs.general_evaluator + ")",
+                 result.rhs.case3_general)
       << rhs_row("Case 3, definition + block solve", result.rhs.case3_definition)
       << rhs_row("Case 3, user: hand-typed 4x4 + Eigen partialPivLu", result.rhs.case3_user)
       << rhs_row("Case 2, definition + block solve", result.rhs.case2)
@@ -200,10 +202,14 @@ plot::Series series_of(const Curve& c) {
   const int slot = integrator_slot(c.method);
   s.color = static_cast<std::size_t>(slot) % plot::palette_size;
   if (c.ours()) {
-    s.dash = c.case_id == 3   ? (c.rhs == RhsKind::definition ? plot::Dash::dash_dot : plot::Dash::solid)
+    s.dash = c.case_id == 3   ? (c.rhs == RhsKind::definition ? plot::Dash::dash_dot
+                                 : c.rhs == RhsKind::general  ? plot::Dash::dashed
+                                                              : plot::Dash::solid)
              : c.case_id == 2 ? plot::Dash::dashed
                               : plot::Dash::dotted;
-    s.marker = c.case_id == 3 ? plot::Marker::circle : c.case_id == 2 ? plot::Marker::square : plot::Marker::triangle;
+    s.marker = c.case_id == 3   ? (c.rhs == RhsKind::general ? plot::Marker::diamond : plot::Marker::circle)
+               : c.case_id == 2 ? plot::Marker::square
+                                : plot::Marker::triangle;
   } else {
     s.dash = c.rhs == RhsKind::user ? plot::Dash::dashed : plot::Dash::dotted;
     static const plot::Marker peer_markers[] = {plot::Marker::diamond, plot::Marker::cross, plot::Marker::plus,

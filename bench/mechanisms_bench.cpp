@@ -228,9 +228,9 @@ void write_plots(const MechanismsBenchResult& r, const fs::path& out, std::vecto
   chain.title = "Pendulum chain: one evaluation of the dynamics";
   chain.x = {"links n", plot::Scale::log, std::nullopt, std::nullopt};
   chain.y = {"time per evaluation (ns)", plot::Scale::log, std::nullopt, std::nullopt};
-  for (const std::string path : {"general", "mujoco"}) {
+  for (const std::string path : {"evaluator", "compiled", "mujoco"}) {
     plot::Series s;
-    s.name = path == "general" ? "ours: Case 3, O(n) recursion" : "MuJoCo 2.2 mj_forward";
+    s.name = path == "mujoco" ? "MuJoCo 2.2 mj_forward" : "ours: Case 3, O(n) recursion, " + path;
     s.style = plot::Style::line_and_markers;
     for (const RhsRow& row : r.rows)
       if (row.mechanism.rfind("chain-", 0) == 0 && row.path == path)
@@ -257,14 +257,22 @@ void write_report(const MechanismsBenchOptions& o, MechanismsBenchResult& r) {
      << "Reproduce: `linkage bench mechanisms" << (o.quick ? " --quick" : "") << " --out " << o.out.string()
      << "`. Every figure comes from this one run on this machine; compare ratios, not "
         "absolute times (shared machines are noisy). Times are wall clock, the median of batches.\n\n";
+  if (!r.lines.empty()) {
+    md << "## Notes\n\n";
+    for (const std::string& line : r.lines) md << "- " << line << "\n";
+    md << "\n";
+  }
   md << "## Targets\n\n| target | measured | goal | verdict |\n|---|---|---|---|\n";
   for (const TargetLine& t : r.targets)
     md << "| " << t.target << " | " << t.measured << " | " << t.goal << " | "
        << (t.note.empty() ? (t.met ? "met" : "**missed**") : t.note) << " |\n";
   md << "\n## Nanoseconds per right-hand side\n\n"
-        "`general`: the mechanism's equations compiled from the symbolic system (Case 3 of a tree: the O(n) "
-        "recursion over the spanning tree, with a Schur complement for loops; Cases 1 and 2: the compiled rows "
-        "solved by LU). `closed-form`: the homework's equations written out by hand. `mujoco`: mj_forward on "
+        "`evaluator`: the mechanism's equations compiled from the symbolic system into programs run by the "
+        "interpreter (Case 3 of a tree: the O(n) recursion over the spanning tree, with a Schur complement for "
+        "loops; Cases 1 and 2: the compiled rows solved by LU). `compiled`: the same programs as native code, as "
+        "simulate runs them (the shipped mechanisms' built into the program; the chains' compiled at run time "
+        "into the user's cache, the recursion's programs alone). `closed-form`: the homework's equations written "
+        "out by hand. `mujoco`: mj_forward on "
         "the same chain.\n\n| mechanism | case | path | bodies | ns |\n|---|---|---|---|---|\n";
   for (const RhsRow& row : r.rows)
     md << "| " << row.mechanism << " | " << row.case_id << " | " << row.path << " | " << row.bodies << " | "
@@ -292,55 +300,81 @@ void write_report(const MechanismsBenchOptions& o, MechanismsBenchResult& r) {
 
 void judge(const MechanismsBenchOptions& o, MechanismsBenchResult& r) {
   // `why`: what stops a measurement; `because`: why a measured target is missed.
-  auto ratio_line = [&](const std::string& target, double measured, double goal, bool below, const std::string& why,
-                        const std::string& because = "") {
+  auto line = [&](const std::string& target, double measured, double goal, bool below, const std::string& unit,
+                  const std::string& why, const std::string& because = "") {
     TargetLine t;
     t.target = target;
-    t.measured = std::isfinite(measured) ? sig(measured) + "x" : "-";
-    t.goal = (below ? "<= " : ">= ") + sig(goal) + "x";
+    t.measured = std::isfinite(measured) ? sig(measured) + unit : "-";
+    t.goal = (below ? "<= " : ">= ") + sig(goal) + unit;
     t.met = std::isfinite(measured) && (below ? measured <= goal : measured >= goal);
     if (!std::isfinite(measured)) t.note = why;
     if (std::isfinite(measured) && !t.met && !because.empty())
-      t.note = "**missed** by " + sig(below ? measured / goal : goal / measured, 2) + "x: " + because;
+      t.note = "**missed** by " + sig(below ? measured / goal : goal / measured) + "x: " + because;
     r.targets.push_back(t);
   };
-  const RhsRow* general = find(r.rows, "two-blocks", 3, "general");
-  const RhsRow* closed = find(r.rows, "two-blocks", 3, "closed-form");
-  ratio_line("homework Case 3: general path / closed form", general->ns_per_rhs / closed->ns_per_rhs,
-             kMaxGeneralOverClosed, true, "",
-             "the closed form is the two blocks' four equations solved by hand and inlined by the compiler (" +
-                 sig(closed->ns_per_rhs) +
-                 " ns); the general path runs the tree's recursion for any mechanism, with 3 x 3 spatial "
-                 "algebra per body and a 3 x 3 solve for the floating base (" +
-                 sig(general->ns_per_rhs) + " ns)");
-  const RhsRow* c8 = find(r.rows, "chain-8", 3, "general");
-  const RhsRow* c64 = find(r.rows, "chain-64", 3, "general");
-  ratio_line("chain: time at 64 links / at 8", c8 && c64 ? c64->ns_per_rhs / c8->ns_per_rhs : kNotMeasured,
-             kMaxChainGrowth, true, "not measured: --quick stops at 8 links");
-  const RhsRow* ours32 = find(r.rows, "chain-32", 3, "general");
-  const RhsRow* mujoco32 = find(r.rows, "chain-32", 3, "mujoco");
-  ratio_line("chain of 32: mj_forward / ours (ours faster above 1)",
-             ours32 && mujoco32 ? mujoco32->ns_per_rhs / ours32->ns_per_rhs : kNotMeasured, 1.0, false,
-             o.quick ? "not measured: --quick stops at 8 links" : "not measured: MuJoCo not built");
+  auto ns_of = [&](const std::string& mechanism, int case_id, const std::string& path) {
+    const RhsRow* row = find(r.rows, mechanism, case_id, path);
+    return row != nullptr ? row->ns_per_rhs : kNotMeasured;
+  };
+  const std::string no_compiled = "not measured: no compiled row (see the notes)";
+  // What the structured solve (off by default) gave on the same case in this run.
+  auto structured = [&](const std::string& key) {
+    const auto it = r.structured.find(key);
+    return it == r.structured.end() ? std::string()
+                                    : "; with MechanismDynamics::solve_by_structure (off by default, not what "
+                                      "simulate runs) " +
+                                          sig(it->second) + " ns";
+  };
+  const double compiled3 = ns_of("two-blocks", 3, "compiled"), closed3 = ns_of("two-blocks", 3, "closed-form");
+  line("homework Case 3: compiled / closed form", compiled3 / closed3, kMaxCompiledOverClosed, true, "x", no_compiled,
+       "the closed form is the two blocks' four equations solved by hand and inlined by the compiler (" + sig(closed3) +
+           " ns); the compiled path runs the tree's recursion for any mechanism, with 3 x 3 spatial "
+           "algebra per body and a 3 x 3 solve for the floating base (" +
+           sig(compiled3) + " ns; evaluator " + sig(ns_of("two-blocks", 3, "evaluator")) + " ns)" +
+           structured("two-blocks Case 3"));
+  line("four-bar Case 1 right-hand side (compiled)", ns_of("four-bar", 1, "compiled"), kMaxFourBarCase1Ns, true, " ns",
+       no_compiled,
+       "the general LU of its 14 x 14 A (evaluator " + sig(ns_of("four-bar", 1, "evaluator")) + " ns)" +
+           structured("four-bar Case 1"));
+  line("four-bar Case 3 right-hand side (compiled)", ns_of("four-bar", 3, "compiled"), kMaxFourBarCase3Ns, true, " ns",
+       no_compiled,
+       "the recursion over the spanning tree and the Schur complement of the loop's rows by the general LU "
+       "(evaluator " +
+           sig(ns_of("four-bar", 3, "evaluator")) + " ns)" + structured("four-bar Case 3"));
+  const std::string quick = "not measured: --quick stops at 8 links";
+  const double ours32 = ns_of("chain-32", 3, "compiled"), mujoco32 = ns_of("chain-32", 3, "mujoco");
+  std::string why32 = o.quick ? quick : std::isnan(ours32) ? no_compiled : "not measured: MuJoCo not built";
+  line("chain of 32: mj_forward / ours (compiled)", mujoco32 / ours32, kMinSpeedupOverMujocoChain32, false, "x", why32,
+       "both are O(n) per evaluation; ours " + sig(ours32) + " ns (evaluator " +
+           sig(ns_of("chain-32", 3, "evaluator")) +
+           " ns) runs the recursion on dynamic-size 3 x 3 spatial algebra, which native code does not change "
+           "(it replaces the recursion's one program, the loads, which is trivial)");
+  const double c8 = ns_of("chain-8", 3, "compiled"), c64 = ns_of("chain-64", 3, "compiled");
+  line("chain: time at 64 links / at 8 (compiled)", c64 / c8, kMaxChainGrowth, true, "x", o.quick ? quick : no_compiled,
+       "the recursion is O(n); the rest is caches and the run's noise");
   const auto [ours, ours_method] = time_at_error(r.work, "ours", kPendulumTargetError);
   const auto [rk4, rk4_method] = time_at_error(r.work, "mujoco rk4", kPendulumTargetError);
   std::string why = "not measured: MuJoCo not built";
 #if LINKAGE_PEER_MUJOCO
   if (std::isnan(rk4)) why = "MuJoCo's RK4 reached no error of 1e-8 at the steps tried";
 #endif
-  const RhsRow* pendulum = find(r.rows, "double-pendulum", 3, "general");
-  const RhsRow* mj2 = find(r.rows, "chain-2", 3, "mujoco");
-  ratio_line("double pendulum, error 1e-8 at t = 10 s (interpolated): MuJoCo RK4 / ours (" + ours_method + ")",
-             rk4 / ours, kMinSpeedupOverMujocoRk4, false, why,
-             "one evaluation of ours costs " + sig(pendulum->ns_per_rhs) + " ns against " +
-                 (mj2 != nullptr ? sig(mj2->ns_per_rhs) : std::string("-")) +
-                 " ns for mj_forward on two links, but at 1e-8 MuJoCo's RK4 needs only a step of a few "
-                 "milliseconds (four evaluations each), while DOP853 rejects about a quarter of its steps on "
-                 "this motion, whose fast phases make its error estimate swing");
+  const double pendulum = ns_of("double-pendulum", 3, "compiled"), mj2 = ns_of("chain-2", 3, "mujoco");
+  line("double pendulum, error 1e-8 at t = 10 s (interpolated): MuJoCo RK4 / ours (" + ours_method + ", compiled)",
+       rk4 / ours, kMinSpeedupOverMujocoRk4, false, "x", why,
+       "one evaluation of ours costs " + sig(pendulum) + " ns against " + sig(mj2) +
+           " ns for mj_forward on two links, but at 1e-8 MuJoCo's RK4 needs only a step of a few "
+           "milliseconds (four evaluations each), while DOP853 rejects about a quarter of its steps on "
+           "this motion, whose fast phases make its error estimate swing");
   const auto [odeint, odeint_method] = time_at_error(r.work, "odeint", kPendulumTargetError);
-  if (std::isfinite(odeint))
-    r.targets.push_back({"the same, against the best Odeint (" + odeint_method + ", hand-written right-hand side)",
-                         sig(odeint / ours) + "x", "-", true, "for reference (no goal)"});
+  std::string why_odeint = "not measured: Boost.Odeint not built";
+#if LINKAGE_PEER_ODEINT
+  why_odeint = "no Odeint method reached an error of 1e-8 at the settings tried";
+#endif
+  line("the same: best Odeint (" + odeint_method + ", hand-written right-hand side) / ours", odeint / ours,
+       kMinSpeedupOverOdeint, false, "x", why_odeint,
+       "the hand-written right-hand side (bench/double_pendulum_user.hpp) is a few lines of closed form for this "
+       "one mechanism, cheaper per evaluation than the general path's recursion (" +
+           sig(pendulum) + " ns compiled)");
 }
 
 }  // namespace
@@ -371,28 +405,57 @@ MechanismsBenchResult run_mechanisms_bench(const MechanismsBenchOptions& o) {
   const std::vector<int> chains = o.quick ? std::vector<int>{2, 4, 8} : std::vector<int>{2, 4, 8, 16, 32, 64};
   Progress progress("bench mechanisms", static_cast<long>(names.size() + chains.size() + 1), "studies", o.quiet);
   long done = 0;
+  std::vector<std::string> missing_builtin;  // shipped cases without built-in native code
 
   for (const std::string& name : names) {
     const Loaded m = load(load_mechanism(name));
     const int bodies = static_cast<int>(m.system->bodies().size());
     for (CaseId id : kAllCases) {
       const eval::MechanismDynamics d(*m.system, id);
-      r.rows.push_back(
-          {name, case_number(id), "general", bodies, ns_per_rhs(d, d.initial_state(m.state), min_batch, batches)});
+      const Eigen::VectorXd y = d.initial_state(m.state);
+      r.rows.push_back({name, case_number(id), "evaluator", bodies, ns_per_rhs(d, y, min_batch, batches)});
+      eval::MechanismDynamics compiled(*m.system, id);
+      if (!compiled.attach_builtin()) {
+        missing_builtin.push_back(name + " Case " + std::to_string(case_number(id)));
+        continue;
+      }
+      r.rows.push_back({name, case_number(id), "compiled", bodies, ns_per_rhs(compiled, y, min_batch, batches)});
+      const std::string key = name + " Case " + std::to_string(case_number(id));
+      if (key == "two-blocks Case 3" || key == "four-bar Case 1" || key == "four-bar Case 3") {
+        compiled.solve_by_structure(true);
+        r.structured[key] = ns_per_rhs(compiled, y, min_batch, batches);
+      }
     }
     if (name == "two-blocks") closed_form_rows(*m.system, m.state, min_batch, batches, r.rows);
     progress.update(++done);
   }
+  if (!missing_builtin.empty())
+    r.lines.push_back("no compiled rows for " + std::to_string(missing_builtin.size()) +
+                      " shipped cases (first: " + missing_builtin.front() +
+                      "): no built-in native code in this program; the evaluator's rows stand");
+  std::string chains_not_compiled;  // why the chains have no compiled rows ("" when they have)
+  if (!eval::native_compiler_found()) chains_not_compiled = "no C++ compiler (c++) on PATH";
   for (int n : chains) {
     const Loaded m = load(read_mechanism(pendulum_chain_toml(n), "chain-" + std::to_string(n) + ".toml"));
     const eval::MechanismDynamics d(*m.system, CaseId::reduced);
     const std::string name = "chain-" + std::to_string(n);
-    r.rows.push_back({name, 3, "general", n, ns_per_rhs(d, d.initial_state(m.state), min_batch, batches)});
+    const Eigen::VectorXd y = d.initial_state(m.state);
+    r.rows.push_back({name, 3, "evaluator", n, ns_per_rhs(d, y, min_batch, batches)});
+    if (chains_not_compiled.empty()) {
+      eval::MechanismDynamics compiled(*m.system, CaseId::reduced);
+      const eval::NativeAttachment a = compiled.attach_native_derivative();
+      if (a.attached)
+        r.rows.push_back({name, 3, "compiled", n, ns_per_rhs(compiled, y, min_batch, batches)});
+      else
+        chains_not_compiled = a.reason;
+    }
 #if LINKAGE_PEER_MUJOCO
     r.rows.push_back({name, 3, "mujoco", n, mujoco_forward_ns(n, min_batch * batches)});
 #endif
     progress.update(++done);
   }
+  if (!chains_not_compiled.empty())
+    r.lines.push_back("chains: no compiled rows (" + chains_not_compiled + "); the evaluator's rows stand");
 
   // The double pendulum to t = 10 s.
   const Mechanism pendulum = load_mechanism("double-pendulum");
@@ -401,6 +464,7 @@ MechanismsBenchResult run_mechanisms_bench(const MechanismsBenchOptions& o) {
   SimulationOptions reference;
   reference.integrator = IntegratorKind::dop853;
   reference.rtol = reference.atol = 1e-14;
+  reference.evaluator = Evaluator::compiled;  // built in: no compiler needed
   const OurRun exact = run_ours(*m.system, m.state, reference, 1);
   SimulationOptions check = reference;
   check.case_id = 2;
@@ -417,14 +481,14 @@ MechanismsBenchResult run_mechanisms_bench(const MechanismsBenchOptions& o) {
       o.quick ? std::vector<double>{1e-2, 1e-3} : std::vector<double>{2e-2, 1e-2, 5e-3, 2e-3, 1e-3, 5e-4, 2e-4, 1e-4};
   for (const IntegratorKind kind : {IntegratorKind::dop853, IntegratorKind::dopri5})
     for (double tol : tolerances) {
-      SimulationOptions s;
+      SimulationOptions s = reference;
       s.integrator = kind;
       s.rtol = s.atol = tol;
       const OurRun run = run_ours(*m.system, m.state, s, repeats);
       r.work.push_back({"ours " + std::string(info(kind).name), tol, run.seconds, error(run.theta1, run.theta2)});
     }
   for (double dt : steps) {
-    SimulationOptions s;
+    SimulationOptions s = reference;
     s.integrator = IntegratorKind::rk4;
     s.dt = dt;
     const OurRun run = run_ours(*m.system, m.state, s, repeats);
@@ -498,6 +562,23 @@ PoseRun run_poses(const sym::System& system, const GiNaC::exmap& state, const Si
   return out;
 }
 
+/// Sets `o` to the compiled path when it can run its case (built in, else compiled into the
+/// user's cache as simulate does), else to the evaluator; what runs, as simulate's summary says it.
+std::string choose_path(const sym::System& system, const GiNaC::exmap& state, SimulationOptions& o) {
+  o.evaluator = Evaluator::compiled;
+  try {
+    return MechanismSimulation(system, state, o).stats().evaluator;
+  } catch (const Error& e) {
+    if (e.setting() != "evaluator") throw;
+    o.evaluator = Evaluator::interpreted;
+    // detail(): "'compiled' cannot run: REASON; valid: ..."
+    std::string reason = e.detail();
+    reason = reason.substr(0, reason.rfind("; valid:"));
+    reason = reason.substr(reason.find(": ") == std::string::npos ? 0 : reason.find(": ") + 2);
+    return "interpreted (" + reason + ")";
+  }
+}
+
 double largest_difference(const std::vector<double>& a, const std::vector<double>& b) {
   double d = 0;
   for (std::size_t i = 0; i < a.size(); ++i) d = std::max(d, std::fabs(a[i] - b[i]));
@@ -517,6 +598,20 @@ MechanismAccuracyResult run_mechanism_accuracy(const MechanismAccuracyOptions& o
   reference.rtol = reference.atol = 1e-14;
   reference.duration = duration;
   reference.stabilization = loops ? Stabilization::projection : Stabilization::none;
+  std::vector<std::string> paths;  // per case: what computes its equations
+  std::vector<Evaluator> evaluators;
+  for (int c : o.cases) {
+    SimulationOptions s = reference;
+    s.case_id = c;
+    paths.push_back("Case " + std::to_string(c) + ": " + choose_path(*m.system, m.state, s));
+    evaluators.push_back(s.evaluator);
+  }
+  {
+    SimulationOptions s = reference;
+    r.path = "reference (Case 3): " + choose_path(*m.system, m.state, s);
+    reference.evaluator = s.evaluator;
+    for (const std::string& p : paths) r.path += "; " + p;
+  }
   const PoseRun exact = run_poses(*m.system, m.state, reference);
   SimulationOptions second = reference;
   second.case_id = 2;
@@ -532,11 +627,13 @@ MechanismAccuracyResult run_mechanism_accuracy(const MechanismAccuracyOptions& o
       o.quick ? std::vector<double>{1e-2, 1e-3} : std::vector<double>{1e-2, 3e-3, 1e-3, 3e-4, 1e-4};
   Progress progress("bench accuracy", static_cast<long>(o.cases.size()), "cases", o.quiet);
   long done = 0;
-  for (int c : o.cases) {
+  for (std::size_t k = 0; k < o.cases.size(); ++k) {
+    const int c = o.cases[k];
     for (const IntegratorInfo& info : integrators()) {
       for (double setting : info.adaptive ? tolerances : steps) {
         SimulationOptions s = reference;
         s.case_id = c;
+        s.evaluator = evaluators[k];
         s.integrator = info.kind;
         s.stabilization = c == 1 || loops ? Stabilization::projection : Stabilization::none;
         if (info.adaptive)
@@ -573,7 +670,9 @@ MechanismAccuracyResult run_mechanism_accuracy(const MechanismAccuracyOptions& o
         "checked twice: the same run on Case 2's equations differs by "
      << sig(r.second_equations, 2) << ", Gauss-Legendre (order 4, implicit) at dt = " << sig(gauss.dt) << " s by "
      << sig(r.second_method, 2)
-     << ". Errors below the larger of these are not resolved. Case 1 and mechanisms with loops run with projection.\n\n"
+     << ". Errors below the larger of these are not resolved. Case 1 and mechanisms with loops run with projection."
+     << "\n\nWhat computes the equations (the compiled path when it can run, as simulate's `--evaluator compiled`): "
+     << r.path << ".\n\n"
      << "| method | setting | run time (s) | error |\n|---|---|---|---|\n";
   for (const WorkPoint& w : r.work)
     md << "| " << w.method << " | " << sig(w.setting, 2) << " | "
@@ -586,6 +685,7 @@ MechanismAccuracyResult run_mechanism_accuracy(const MechanismAccuracyOptions& o
   write_work_plot(r.work, mechanism.title + ": work against precision to t = " + sig(duration) + " s",
                   "error: max |Δ| of every body's x, y, θ", o.out / (stem + ".png"));
   r.files = {o.out / (stem + ".csv"), o.out / (stem + ".md"), o.out / (stem + ".png")};
+  r.lines.push_back("path: " + r.path);
   r.lines.push_back("reference (DOP853 1e-14, Case 3) against Case 2: " + sig(r.second_equations, 2) +
                     ", against Gauss-Legendre: " + sig(r.second_method, 2));
   for (const int c : o.cases)

@@ -10,6 +10,8 @@ const char* name(RhsKind kind) {
       return "definition";
     case RhsKind::user:
       return "user";
+    case RhsKind::general:
+      return "general";
   }
   return "?";
 }

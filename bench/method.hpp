@@ -27,6 +27,7 @@ enum class RhsKind {
   fastest,     // ours: the closed-form Case 3 (case3_fast.hpp); Cases 1, 2: the block solve
   definition,  // ours: the formulation's matrices + block solve (what every case shares)
   user,        // what a user of the library writes: Eigen fixed-size partial-pivot LU
+  general,     // ours: the general path, two-blocks.toml's Case 3 as simulate runs it (general_rhs.hpp)
 };
 [[nodiscard]] const char* name(RhsKind kind);
 

@@ -4,11 +4,14 @@
 // shorten a step to hit a time). Case 3 uses its fastest right-hand side, the closed
 // form of case3_fast.hpp; Cases 1 and 2 the block solve of their definition (Case 1
 // without stabilization, so its drift shows). DOP853 also runs Case 3 on the
-// definition's right-hand side, to show what the closed form buys.
+// definition's right-hand side, to show what the closed form buys; every integrator also
+// runs Case 3 on the general path (two-blocks.toml through MechanismDynamics with native
+// code, general_rhs.hpp), the path the homework takes in simulate.
 #include <string>
 
 #include "bench/closed_form/kinematics.hpp"
 #include "bench/closed_form/linkage_rhs.hpp"
+#include "bench/general_rhs.hpp"
 #include "bench/method.hpp"
 #include "bench/rhs.hpp"
 #include "integrate/dop853.hpp"
@@ -143,6 +146,9 @@ std::vector<Method> linkage_methods(int case_id) {
           3, RhsKind::fastest, [](const Params& p) { return FastCase3Rhs<double>(p); }, true);
       for (Method& m : methods_on<8>(
                3, RhsKind::definition, [](const Params& p) { return DefinitionCase3Rhs{p}; }, false))
+        out.push_back(std::move(m));
+      for (Method& m : methods_on<8>(
+               3, RhsKind::general, [](const Params& p) { return GeneralCase3Rhs(p); }, true))
         out.push_back(std::move(m));
       return out;
     }

@@ -48,8 +48,13 @@ Vec<8> oscillators_start() {
   return y;
 }
 
+bool has_dynamic_run(const std::string& method) { return method == "dopri5" || method == "dop853"; }
+
 std::int64_t run_on_oscillators(const std::string& method, double knob, double duration, std::int64_t evaluations,
-                                double& sink) {
+                                double& sink, bool dynamic) {
+  if (dynamic && method == "dopri5") return adaptive<ode::Dopri5<double, Eigen::Dynamic>>(knob, evaluations, sink);
+  if (dynamic && method == "dop853") return adaptive<ode::Dop853<double, Eigen::Dynamic>>(knob, evaluations, sink);
+  if (dynamic) throw Error::failure("run_on_oscillators: no dynamic-size run of '" + method + "'");
   if (method == "euler") return fixed<ode::ExplicitEuler<double, 8>>(knob, duration, sink);
   if (method == "symplectic-euler") return fixed<ode::SymplecticEuler<double, 8>>(knob, duration, sink);
   if (method == "rk4") return fixed<ode::Rk4<double, 8>>(knob, duration, sink);
@@ -60,11 +65,11 @@ std::int64_t run_on_oscillators(const std::string& method, double knob, double d
 }
 
 PerCall time_on_oscillators(const std::string& method, double knob, double duration, std::int64_t evaluations,
-                            double min_time, std::int64_t& made) {
+                            double min_time, std::int64_t& made, bool dynamic) {
   double sink = 0;
   made = 0;
   const Timing t =
-      time_repeated([&] { made = run_on_oscillators(method, knob, duration, evaluations, sink); }, min_time);
+      time_repeated([&] { made = run_on_oscillators(method, knob, duration, evaluations, sink, dynamic); }, min_time);
   if (sink == 0.123456789) throw Error::failure("unreachable");  // keeps the runs alive
   const double per = 1e9 / static_cast<double>(std::max<std::int64_t>(made, 1));
   return {t.median_seconds * per, t.cpu_median_seconds * per};

@@ -6,6 +6,7 @@
 // side from the homework run's time per evaluation instead came out negative under load
 // (RK4 at -7.26 ns); this figure includes the cheap right-hand side, so it cannot.
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "bench/timing.hpp"
@@ -38,23 +39,29 @@ struct OscillatorsRhs {
 /// `knob` equal steps over `duration` s; dopri5, dop853: rtol = atol = `knob`, stepping
 /// until at least `evaluations` evaluations) on OscillatorsRhs. Returns the evaluations
 /// made; `sink` receives the final state's sum, so the run cannot be optimized away.
+/// `dynamic` (dopri5, dop853 only): on a dynamic-size state, as a mechanism file runs.
 std::int64_t run_on_oscillators(const std::string& method, double knob, double duration, std::int64_t evaluations,
-                                double& sink);
+                                double& sink, bool dynamic = false);
+
+/// Whether run_on_oscillators has a dynamic-size run of `method`.
+[[nodiscard]] bool has_dynamic_run(const std::string& method);
 
 /// One integrator's cost per evaluation on OscillatorsRhs, copying one homework run.
 struct OverheadTiming {
   std::string method;  // Method::id
   std::string label;
   bool adaptive = true;
-  double knob = 0;               // the homework run's tolerance (adaptive) or step count
-  double homework_error = 0;     // that run's error, m or rad
-  std::int64_t evaluations = 0;  // per timed run (the homework run's, or just above it)
-  PerCall per_evaluation;        // run time / evaluations, the oscillators' own cost included
+  double knob = 0;                                // the homework run's tolerance (adaptive) or step count
+  double homework_error = 0;                      // that run's error, m or rad
+  std::int64_t evaluations = 0;                   // per timed run (the homework run's, or just above it)
+  PerCall per_evaluation;                         // run time / evaluations, the oscillators' own cost included
+  std::optional<PerCall> dynamic_per_evaluation;  // the same on a dynamic-size state (dopri5, dop853)
 };
 
 /// Times run_on_oscillators (repeated until `min_time` s, the median run).
 [[nodiscard]] PerCall time_on_oscillators(const std::string& method, double knob, double duration,
-                                          std::int64_t evaluations, double min_time, std::int64_t& made);
+                                          std::int64_t evaluations, double min_time, std::int64_t& made,
+                                          bool dynamic = false);
 
 /// The oscillators' own cost per evaluation, on states along their motion.
 [[nodiscard]] PerCall oscillators_rhs_ns(double min_batch);

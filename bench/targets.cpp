@@ -31,6 +31,7 @@ Best best_time(const std::vector<Curve>& all, double error, Pick pick, Clock clo
 }
 
 bool is_ours_fastest(const Curve& c) { return c.ours() && c.case_id == 3 && c.rhs == RhsKind::fastest; }
+bool is_ours_general(const Curve& c) { return c.ours() && c.case_id == 3 && c.rhs == RhsKind::general; }
 
 double pick(const PerCall& c, Clock clock) { return clock == Clock::wall ? c.wall_ns : c.cpu_ns; }
 const char* clock_name(Clock clock) { return clock == Clock::wall ? "steady clock" : "thread CPU time"; }
@@ -67,9 +68,10 @@ std::string closest(const std::vector<Curve>& all, Pick pick) {
 /// Our best time against the best peer's (both by `clock`), to reach `error`. With a
 /// peer library missing from the build the best peer may be missing too: no figure
 /// when none ran, and the figure names what it leaves out otherwise.
-template <class PeerPick>
+template <class PeerPick, class OursPick = bool (*)(const Curve&)>
 TargetRow speed_row(const std::vector<Curve>& all, const std::string& what, double error, PeerPick peer_pick,
-                    double goal, Clock clock, const std::vector<std::string>& peers_not_built) {
+                    double goal, Clock clock, const std::vector<std::string>& peers_not_built,
+                    OursPick ours_pick = is_ours_fastest) {
   TargetRow row;
   row.target = what;
   row.goal = ">= " + format_significant(goal, 2) + "x";
@@ -79,18 +81,20 @@ TargetRow speed_row(const std::vector<Curve>& all, const std::string& what, doub
     row.note = "not measured: " + (missing.empty() ? std::string("no peer in this run") : missing);
     return row;
   }
-  const Best ours = best_time(all, error, is_ours_fastest, clock);
+  const Best ours = best_time(all, error, ours_pick, clock);
   const Best peer = best_time(all, error, peer_pick, clock);
   if (!std::isfinite(peer.time) || !std::isfinite(ours.time)) {
     row.measured = "n/a";
-    row.note = !std::isfinite(ours.time) ? "none of our integrators reached the error"
-                                         : "no peer reached the error: " + closest(all, peer_pick);
+    row.note = std::none_of(all.begin(), all.end(), ours_pick)
+                   ? "not measured: not in this run (--cases, --integrators)"
+               : !std::isfinite(ours.time) ? "none of our integrators reached the error"
+                                           : "no peer reached the error: " + closest(all, peer_pick);
   } else {
     const double r = peer.time / ours.time;
     row.measured = ratio(r);
     row.met = r >= goal;
     row.note = ours.name + " " + seconds(ours.time) + " vs " + peer.name + " " + seconds(peer.time);
-    const Best ours_other = best_time(all, error, is_ours_fastest, other(clock));
+    const Best ours_other = best_time(all, error, ours_pick, other(clock));
     const Best peer_other = best_time(all, error, peer_pick, other(clock));
     if (std::isfinite(peer_other.time) && std::isfinite(ours_other.time))
       row.note += "; by " + std::string(clock_name(other(clock))) + " " + ratio(peer_other.time / ours_other.time);
@@ -106,6 +110,7 @@ std::string Curve::name() const {
   if (ours()) {
     suffix = "Case " + std::to_string(case_id);
     if (case_id == 3 && rhs == RhsKind::definition) suffix += ", definition RHS";
+    if (case_id == 3 && rhs == RhsKind::general) suffix += ", general path";
   } else if (case_id == 1 && rhs == RhsKind::user) {
     suffix = "Case 1 DAE, user residual";
   } else {
@@ -185,6 +190,15 @@ std::vector<TargetRow> evaluate_targets(const ScenarioResult& fast, const RhsTim
                              peer_ours, 1.0, clock, peers_not_built));
   }
 
+  // The homework as simulate runs it: two-blocks.toml on the general path.
+  const std::string path = rhs.general_evaluator.empty() ? "" : ", " + rhs.general_evaluator;
+  for (const double error : {1e-8, 1e-10}) {
+    rows.push_back(speed_row(all,
+                             "general path" + path + ", time to error " + format_significant(error, 1) +
+                                 ": best peer with user RHS / ours" + by,
+                             error, peer_user, error == 1e-8 ? 4.0 : 3.0, clock, peers_not_built, is_ours_general));
+  }
+
   const std::string oscillators = ns(pick(rhs.oscillators, clock));
   for (const OverheadTiming& o : fast.overhead) {
     TargetRow row;
@@ -200,6 +214,17 @@ std::vector<TargetRow> evaluate_targets(const ScenarioResult& fast, const RhsTim
                " as on Case 3 (error " + format_significant(o.homework_error, 2) + ")" + by_other +
                ns(pick(o.per_evaluation, other(clock)));
     rows.push_back(row);
+    if (o.dynamic_per_evaluation) {
+      TargetRow dynamic;
+      dynamic.target = "integrator overhead per RHS evaluation, " + o.label + ", dynamic-size state" + by;
+      dynamic.goal = "< 15 ns";
+      const double d = pick(*o.dynamic_per_evaluation, clock);
+      dynamic.measured = ns(d);
+      dynamic.met = d < 15.0;
+      dynamic.note = "the same run on Eigen::VectorXd, as a mechanism file's state (simulate)" + by_other +
+                     ns(pick(*o.dynamic_per_evaluation, other(clock)));
+      rows.push_back(dynamic);
+    }
   }
   return rows;
 }

@@ -100,6 +100,43 @@ TEST(Overhead, TheRowIsTheTimeOnTheCheapRightHandSideAndNeverNegative) {
   EXPECT_EQ(rows, 1);
 }
 
+// DOP853 and Dopri5 have a second row: the same run on a dynamic-size state.
+TEST(Overhead, TheAdaptiveMethodsHaveADynamicSizeRow) {
+  ScenarioResult r;
+  r.points = {point(1e-3, 1e-9, 100000)};
+  OverheadTiming o;
+  o.method = "dop853";
+  o.label = "DOP853";
+  o.knob = 1e-10;
+  o.evaluations = 100000;
+  o.per_evaluation = {10.0, 10.0};
+  o.dynamic_per_evaluation = PerCall{16.0, 15.5};
+  r.overhead = {o};
+  RhsTimings rhs;
+  rhs.case3_fast = {40.0, 40.0};
+  std::vector<TargetRow> rows;
+  for (TargetRow& row : evaluate_targets(r, rhs, Clock::wall, {}))
+    if (row.target.rfind("integrator overhead", 0) == 0) rows.push_back(std::move(row));
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0].measured, "10 ns");
+  EXPECT_EQ(rows[0].met, std::optional<bool>(true));
+  EXPECT_NE(rows[1].target.find("DOP853, dynamic-size state"), std::string::npos) << rows[1].target;
+  EXPECT_EQ(rows[1].measured, "16 ns");
+  EXPECT_EQ(rows[1].met, std::optional<bool>(false));  // goal < 15 ns
+}
+
+TEST(Overhead, TheDynamicSizeRunsMakeTheSameEvaluations) {
+  double sink = 0;
+  for (const std::string method : {"dop853", "dopri5"}) {
+    ASSERT_TRUE(has_dynamic_run(method));
+    EXPECT_EQ(run_on_oscillators(method, 1e-10, 10.0, 20000, sink, true),
+              run_on_oscillators(method, 1e-10, 10.0, 20000, sink, false))
+        << method;
+  }
+  EXPECT_FALSE(has_dynamic_run("rk4"));
+  EXPECT_THROW((void)run_on_oscillators("rk4", 100, 1, 1, sink, true), Error);
+}
+
 TEST(Overhead, CopiesTheFirstRunReachingTheErrorElseTheLastThatFinished) {
   ScenarioResult r;
   r.points = {point(1e-4, 1e-6), point(2e-4, 1e-9), point(3e-4, 1e-11), point(4e-4, std::nan(""))};
@@ -166,6 +203,39 @@ TEST(Targets, WithAPeerMissingTheFigureSaysItIsTheBestOfThoseBuilt) {
   EXPECT_EQ(shared_1e8.note, "not measured: peer not built: SUNDIALS");
   // All peers built: the same figure, and no word of a missing peer.
   EXPECT_EQ(peer_rows(r, {})[0].note.find("not built"), std::string::npos);
+}
+
+// The homework on the general path is judged against the best peer with the user's
+// right-hand side, beside (not instead of) the closed form.
+TEST(Targets, TheGeneralPathHasItsOwnRowsAgainstTheBestPeer) {
+  ScenarioResult r;
+  r.points = {point(1e-3, 1e-11), point(2e-3, 1e-11), point(8e-3, 1e-11)};
+  r.points[1].rhs = RhsKind::general;
+  r.points[1].label = "DOP853";
+  r.points[2].method = "odeint-bs";
+  r.points[2].library = "Boost.Odeint";
+  r.points[2].label = "Odeint Bulirsch-Stoer";
+  r.points[2].rhs = RhsKind::user;
+  RhsTimings rhs;
+  rhs.general_evaluator = "compiled (built in)";
+  std::vector<TargetRow> general;
+  for (TargetRow& row : evaluate_targets(r, rhs, Clock::wall, {}))
+    if (row.target.rfind("general path", 0) == 0) general.push_back(std::move(row));
+  ASSERT_EQ(general.size(), 2u);  // 1e-8 (goal 4x) and 1e-10 (goal 3x)
+  EXPECT_NE(general[0].target.find("general path, compiled (built in), time to error 1e"), std::string::npos)
+      << general[0].target;
+  EXPECT_EQ(general[0].measured, "4x");
+  EXPECT_EQ(general[0].met, std::optional<bool>(true));
+  EXPECT_NE(general[0].note.find("DOP853 (Case 3, general path) 2 ms"), std::string::npos) << general[0].note;
+  EXPECT_EQ(general[1].goal, ">= 3x");
+  // The closed form's row is unchanged: 8x.
+  EXPECT_EQ(peer_rows(r, {})[0].measured, "8x");
+  // Without general-path runs (--integrators, --cases), its rows say so.
+  r.points.erase(r.points.begin() + 1);
+  for (const TargetRow& row : evaluate_targets(r, rhs, Clock::wall, {})) {
+    if (row.target.rfind("general path", 0) != 0) continue;
+    EXPECT_EQ(row.note, "not measured: not in this run (--cases, --integrators)");
+  }
 }
 
 // A peer that never gets to the error says how close it came and why it stopped.

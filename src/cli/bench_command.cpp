@@ -116,9 +116,10 @@ void run_accuracy(const AccuracyFlags& flags) {
   const bench::AccuracyResult result = bench::run_accuracy(options);
   std::printf(
       "Right-hand side, ns per evaluation (thread CPU time): Case 3 closed form %.1f, Case 3 definition "
-      "%.1f, Case 3 user (Eigen partialPivLu) %.1f, Case 2 %.1f, Case 1 %.1f\n",
+      "%.1f, Case 3 user (Eigen partialPivLu) %.1f, Case 2 %.1f, Case 1 %.1f, Case 3 general path %.1f (%s)\n",
       result.rhs.case3_fast.cpu_ns, result.rhs.case3_definition.cpu_ns, result.rhs.case3_user.cpu_ns,
-      result.rhs.case2.cpu_ns, result.rhs.case1.cpu_ns);
+      result.rhs.case2.cpu_ns, result.rhs.case1.cpu_ns, result.rhs.case3_general.cpu_ns,
+      result.rhs.general_evaluator.c_str());
   if (result.busy())
     std::printf("The machine is busy (load %.1f on %u cores): targets judged by thread CPU time\n", result.load_average,
                 result.cores);
@@ -232,8 +233,9 @@ void add_mechanisms(CLI::App* bench) {
   auto flags = std::make_shared<bench::MechanismsBenchOptions>();
   CLI::App* sub = bench->add_subcommand(
       "mechanisms",
-      "Any mechanism's motion: ns per right-hand side for every shipped mechanism and case, a pendulum chain of 2 to "
-      "64 links against MuJoCo, work against precision on the double pendulum against Odeint and MuJoCo");
+      "Any mechanism's motion: ns per right-hand side for every shipped mechanism and case on the evaluator and the "
+      "compiled path, a pendulum chain of 2 to 64 links against MuJoCo, work against precision on the double "
+      "pendulum against Odeint and MuJoCo");
   sub->add_option("--out", flags->out,
                   "Folder for mechanisms.csv, work-precision.csv, mechanisms.md and the plots (default "
                   "bench-mechanisms)")

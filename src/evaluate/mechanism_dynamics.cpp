@@ -243,6 +243,16 @@ NativeAttachment MechanismDynamics::attach_native(bool kinematics, bool may_comp
   return eval::attach_native(programs(kinematics), may_compile);
 }
 
+NativeAttachment MechanismDynamics::attach_native_derivative(bool may_compile) {
+  if (!tree_) return attach_native(false, may_compile);
+  std::vector<Program*> programs;
+  for (Program* p : {&power_, &time_rates_})
+    if (p->output_count() > 0) programs.push_back(p);
+  for (Program* p : tree_->programs())
+    if (p->output_count() > 0) programs.push_back(p);
+  return eval::attach_native(programs, may_compile);
+}
+
 bool MechanismDynamics::attach_builtin(bool kinematics) {
   builtin_ = eval::attach_builtin(programs(kinematics));
   return builtin_;

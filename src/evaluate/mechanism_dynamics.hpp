@@ -108,6 +108,10 @@ class MechanismDynamics {
   /// (native_library.hpp), or none of them; what happened and why. Programs compiled later
   /// (the kinematics, when not asked for here) stay interpreted.
   [[nodiscard]] NativeAttachment attach_native(bool kinematics = false, bool may_compile = true);
+  /// As attach_native(), on a tree's Case 3 for the programs derivative() runs there
+  /// without Baumgarte's terms alone (the recursion's and the power), A and B not expanded
+  /// (minutes for a long chain); for `bench mechanisms`. Other cases: attach_native().
+  [[nodiscard]] NativeAttachment attach_native_derivative(bool may_compile = true);
   /// Runs every program of programs(kinematics) as built-in native code
   /// (native_builtin.hpp) when each has some, else none; whether it did. The kinematics,
   /// compiled later, are then attached too when built in.
