@@ -209,8 +209,8 @@ void run_simulate_mechanism(const SimulateOptions& o, SimulationOptions s, doubl
   const bool asked = o.columns_option != nullptr && o.columns_option->count() > 0;
   const std::vector<MechanismColumn> columns =
       default_interface
-          ? named_columns(all, o.columns == "all" ? table_columns(system.mechanism()) : o.columns, "--columns")
-          : select_mechanism_columns(all, asked ? o.columns : "default", "--columns");
+          ? named_columns(all, o.columns == "all" ? table_columns(system.mechanism()) : o.columns, "--columns", &system)
+          : select_mechanism_columns(all, asked ? o.columns : "default", "--columns", &system);
   s.kinematics = needs_kinematics(columns);
   MechanismSimulation simulation(system, checked.state, s, checked.cases.front().system);
   deriving.done();
@@ -302,7 +302,9 @@ void register_simulate(CLI::App& app) {
                       "--mechanism: default (t, every body's x, y, theta, every slider's s), all, or names. The "
                       "homework (no --mechanism) names them as its table always has, e.g. x1, theta2_dot, "
                       "x1_ddot, F_x (the pin force on block 1, N), constraint_position_error (m), "
-                      "constraint_velocity_error (m/s), x2, y2; all of them by default")
+                      "constraint_velocity_error (m/s), x2, y2; all of them by default. NAME=EXPRESSION defines a "
+                      "column over the others, the parameters and the functions of mechanism files: "
+                      "gamma=4.theta-3.theta (an angle: in --angles' unit), P=M.torque*2.theta_dot (W)")
           ->type_name("LIST");
   add_angle_option(sub, o->angles, "angle columns (theta, rates, accelerations) in the table");
   sub->add_flag("--quiet", o->quiet, "No progress or notes on stderr (the summary and warnings stay)");

@@ -4,10 +4,11 @@
 #include <cctype>
 #include <cmath>
 #include <limits>
-#include <sstream>
 
+#include "columns/expression_column.hpp"
 #include "core/error.hpp"
 #include "core/name_match.hpp"
+#include "core/parse_text.hpp"
 #include "symbolic/joints.hpp"
 
 namespace linkage {
@@ -114,7 +115,7 @@ std::vector<MechanismColumn> mechanism_columns(const sym::System& system) {
   out.push_back({"work", "J",
                  system.drivers().empty() ? "work done by dampers and applied loads since t = 0"
                                           : "work done by dampers, applied loads and drivers since t = 0",
-                 Q::work, 0, false});
+                 Q::work, system.drivers().empty() ? 0U : 1U, false});  // index 1: with the drivers'
   out.push_back({"energy_error", "J", "energy balance E - E(0) - work: 0 up to the integration error", Q::energy_error,
                  0, false});
   out.push_back({"energy_error_relative", "", "|E - E(0) - work| / the energy scale (simulate's energy_scale)",
@@ -143,7 +144,8 @@ std::vector<MechanismColumn> mechanism_columns(const sym::System& system) {
 constexpr std::size_t kLongestValidList = 400;
 
 MechanismColumn find_mechanism_column(const std::vector<MechanismColumn>& all, const std::string& name,
-                                      const std::string& origin, bool groups) {
+                                      const std::string& origin, bool groups, const sym::System* system) {
+  if (defines_column(name)) return expression_column(all, system, name, origin);
   std::vector<std::string> names;
   if (groups) names = {"default", "all"};
   std::string nearest;
@@ -177,11 +179,13 @@ MechanismColumn find_mechanism_column(const std::vector<MechanismColumn>& all, c
 
 std::vector<MechanismColumn> select_mechanism_columns(const std::vector<MechanismColumn>& all,
                                                       const std::vector<std::string>& names,
-                                                      const std::function<std::string(std::size_t)>& origin) {
-  std::vector<MechanismColumn> out;
+                                                      const std::function<std::string(std::size_t)>& origin,
+                                                      const sym::System* system) {
+  std::vector<MechanismColumn> out, defined = all;  // a definition may use those before it
   for (std::size_t i = 0; i < names.size(); ++i) {
     if (names[i] != "default" && names[i] != "all") {
-      out.push_back(find_mechanism_column(all, names[i], origin(i), true));
+      out.push_back(find_mechanism_column(defined, names[i], origin(i), true, system));
+      if (out.back().quantity == MechanismQuantity::expression) defined.push_back(out.back());
       continue;
     }
     for (const MechanismColumn& c : all)
@@ -193,15 +197,15 @@ std::vector<MechanismColumn> select_mechanism_columns(const std::vector<Mechanis
 }
 
 std::vector<MechanismColumn> select_mechanism_columns(const std::vector<MechanismColumn>& all, const std::string& spec,
-                                                      const std::string& origin) {
-  std::vector<std::string> names;
-  std::stringstream in(spec);
-  for (std::string item; std::getline(in, item, ',');) names.push_back(item);
+                                                      const std::string& origin, const sym::System* system) {
+  std::vector<std::string> names = split_commas(spec);
+  if (!names.empty() && names.back().empty()) names.pop_back();  // "a,b," as getline read it
   if (names.empty()) {
     for (const MechanismColumn& c : all) names.push_back(c.name);
     throw Error::input(origin + ": empty list; valid: default, all, " + join_names(names));
   }
-  return select_mechanism_columns(all, names, [&](std::size_t) { return origin; });
+  return select_mechanism_columns(
+      all, names, [&](std::size_t) { return origin; }, system);
 }
 
 bool needs_kinematics(const std::vector<MechanismColumn>& columns) {
@@ -210,6 +214,10 @@ bool needs_kinematics(const std::vector<MechanismColumn>& columns) {
       case MechanismQuantity::slider_acceleration:
       case MechanismQuantity::point:
         return true;
+      case MechanismQuantity::expression:
+        for (const auto& [symbol, input] : c.expression->inputs)
+          if (needs_kinematics({input})) return true;
+        break;
       case MechanismQuantity::time:
       case MechanismQuantity::position:
       case MechanismQuantity::rate:
@@ -239,12 +247,15 @@ bool needs_kinematics(const std::vector<MechanismColumn>& columns) {
 }
 
 std::vector<MechanismColumn> named_columns(const std::vector<MechanismColumn>& all, std::string_view list,
-                                           const std::string& origin) {
+                                           const std::string& origin, const sym::System* system) {
   if (list == "all") return all;
-  std::vector<MechanismColumn> out;
-  for (std::size_t start = 0; start <= list.size();) {
-    const std::size_t comma = std::min(list.find(',', start), list.size());
-    const std::string name(list.substr(start, comma - start));
+  std::vector<MechanismColumn> out, defined = all;
+  for (const std::string& name : (list.empty() ? std::vector<std::string>{""} : split_commas(std::string(list)))) {
+    if (defines_column(name)) {
+      out.push_back(expression_column(defined, system, name, origin));
+      defined.push_back(out.back());
+      continue;
+    }
     const auto named = [&](const MechanismColumn& c) { return c.name == name; };
     const auto found = std::find_if(all.begin(), all.end(), named);
     if (found == all.end()) {
@@ -256,7 +267,6 @@ std::vector<MechanismColumn> named_columns(const std::vector<MechanismColumn>& a
     if (std::any_of(out.begin(), out.end(), named))
       throw Error::invalid(origin, "column '" + name + "' is listed twice");
     out.push_back(*found);
-    start = comma + 1;
   }
   return out;
 }
@@ -327,6 +337,8 @@ double column_value(const MechanismColumn& c, double t, const Eigen::VectorXd& y
       return std::fabs(s.momentum_y - (o.momentum_y0 - o.weight * t));
     case MechanismQuantity::angular_momentum_error:
       return std::fabs(s.angular_momentum - o.angular_momentum0);
+    case MechanismQuantity::expression:
+      return expression_value(*c.expression, t, y, s, o);
     case MechanismQuantity::com_parabola_error:
       return std::hypot(s.com[0] - (o.com0[0] + o.com0[2] * t),
                         s.com[1] - (o.com0[1] + o.com0[3] * t - 0.5 * o.g * t * t));
@@ -361,7 +373,7 @@ std::string column_words(const MechanismColumn& c) {
     case Q::energy:
       return "energy E = T + V";
     case Q::work:
-      return "work W of dampers and loads";
+      return c.index == 1 ? "work W of dampers, loads and drivers" : "work W of dampers and loads";
     case Q::energy_error:
       return "energy balance E − E_{0} − W";
     case Q::momentum_x:
@@ -397,6 +409,7 @@ std::string column_words(const MechanismColumn& c) {
     case Q::driver:
     case Q::constraint:
     case Q::constraint_rate:
+    case Q::expression:
       break;
   }
   return c.meaning;

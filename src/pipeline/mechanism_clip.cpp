@@ -333,7 +333,7 @@ MechanismMotion sample_mechanism_motion(const sym::System& system, const GiNaC::
   const bool same_case = derived && derived->id == static_cast<CaseId>(options.case_id);
   std::vector<MechanismColumn> columns;
   if (panel != nullptr && !panel_names.empty()) {
-    columns = mechanism_panel_columns(mechanism_columns(system), panel_names);
+    columns = mechanism_panel_columns(mechanism_columns(system), panel_names, &system);
     *panel = mechanism_panel(columns, frame_times.back());
   }
   const bool kinematics = accelerations || needs_kinematics(columns);
@@ -577,7 +577,7 @@ void MechanismClip::validate(const sym::System& system) const {
   if (frames && fs::exists(*frames, ec) && !fs::is_directory(*frames, ec))
     throw Error::invalid("frames", "'" + frames->string() + "' exists and is not a folder");
   (void)resolve_trails(mechanism_geometry(system), trails);
-  if (!settings.panel.empty()) (void)mechanism_panel_columns(mechanism_columns(system), settings.panel);
+  if (!settings.panel.empty()) (void)mechanism_panel_columns(mechanism_columns(system), settings.panel, &system);
   if (ensemble != 0 && (ensemble < 2 || ensemble > 200))
     throw Error::invalid("ensemble", std::to_string(ensemble) + " runs; expected 2 .. 200");
   if (!(spread > 0 && spread <= kMaxSpread))

@@ -42,6 +42,9 @@ struct ExpressionNames {
   const GiNaC::symtab& symbols;
   std::string_view note = {};
   const std::vector<std::string>* functions = nullptr;
+  /// Past this many characters the valid names of an unknown-name error are cut to the
+  /// undotted ones and those beside the nearest ("3.P." for "3.P.z"), and "N more".
+  std::size_t longest_valid_list = std::string_view::npos;
 };
 
 /// Reads `text`. Throws Error::input, one line: "ORIGIN: problem at character N of 'TEXT'"

@@ -106,6 +106,8 @@ class System {
   [[nodiscard]] const GiNaC::exmap& constants() const { return constants_; }
   /// Parameter symbols -> values.
   [[nodiscard]] const GiNaC::exmap& parameter_values() const { return parameter_values_; }
+  /// The parameters' and definitions' symbols by the names the file gives them.
+  [[nodiscard]] const GiNaC::symtab& names() const { return names_; }
   /// Maximal coordinates, rates and accelerations -> expressions in generalized ones.
   [[nodiscard]] const GiNaC::exmap& to_generalized() const { return to_generalized_; }
   /// Each spring's length symbol (l_k1, in its loads) -> |r_b - r_a| in maximal
