@@ -61,8 +61,8 @@ struct MechanismsBenchResult {
   std::vector<RhsRow> rows;
   std::vector<WorkPoint> work;
   double reference_check = 0;  // |Case 3 - Case 2| of the reference at t = 10 s, rad
-  /// ns per right-hand side on the compiled path with MechanismDynamics::solve_by_structure
-  /// (off by default, so not what simulate runs), by "mechanism Case N", for the notes.
+  /// ns per right-hand side on the compiled path with the general LU
+  /// (MechanismDynamics::solve_by_structure(false)), by "mechanism Case N", for the notes.
   std::map<std::string, double> structured;
   std::vector<TargetLine> targets;
   std::vector<std::string> lines;  // the terminal summary

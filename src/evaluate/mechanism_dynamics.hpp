@@ -119,10 +119,9 @@ class MechanismDynamics {
   /// Every program this case runs (compiled now), the tree recursion's included, and with
   /// `kinematics` the sample's kinematics: the one list native code is made for.
   [[nodiscard]] std::vector<Program*> programs(bool kinematics = false);
-  /// From now on derivative() solves A u = B by its structure (an unrolled fixed-size LU
-  /// up to 8 rows; the Schur complement of [M G; J 0] above) instead of the general LU:
-  /// faster, the same to 1e-12, but not to the last bit, so off by default until the
-  /// evaluators' outputs are compared with a tolerance (linkage_micro and tests turn it on).
+  /// Whether derivative() solves A u = B by its structure (the default: an unrolled
+  /// fixed-size LU up to 8 rows; the Schur complement of [M G; J 0] above, M by LDL^T) or
+  /// by the general LU (off: the reference it agrees with to 1e-12, not to the last bit).
   void solve_by_structure(bool on) { structured_ = on; }
 
  private:
@@ -181,7 +180,7 @@ class MechanismDynamics {
   mutable Eigen::MatrixXd A_, J_, M_;
   mutable Eigen::VectorXd B_, u_;
   mutable Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
-  bool structured_ = false;                             // solve_by_structure(true): derivative() solves by structure
+  bool structured_ = true;                              // solve_by_structure(): derivative() solves by structure
   mutable bool schur_ = false, mass_diagonal_ = false;  // A = [M G; J 0], G = +-J^T (M diagonal)
   mutable Eigen::MatrixXd minv_g_;
   mutable Eigen::VectorXd minv_b_, mass_inverse_, lambda_;

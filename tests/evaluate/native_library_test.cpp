@@ -233,6 +233,7 @@ TEST(NativeLibrary, StructuredSolveAgreesWithTheGeneralPath) {
       MechanismDynamics general(system, id);
       ASSERT_TRUE(native.attach_native().attached) << what;
       native.solve_by_structure(true);
+      general.solve_by_structure(false);
       for (int trial = 0; trial < 4; ++trial) {
         const Eigen::VectorXd y = native.initial_state(built::random_state(system, rng));
         if (trial == 3) {
