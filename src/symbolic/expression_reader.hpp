@@ -42,6 +42,10 @@ struct ExpressionNames {
   const GiNaC::symtab& symbols;
   std::string_view note = {};
   const std::vector<std::string>* functions = nullptr;
+  /// Names known but not allowed here (the state's, outside loads): refused with
+  /// `refused_note` as the valid part rather than as unknown.
+  const GiNaC::symtab* refused = nullptr;
+  std::string_view refused_note = {};
 };
 
 /// Reads `text`. Throws Error::input, one line: "ORIGIN: problem at character N of 'TEXT'"
