@@ -46,6 +46,7 @@ enum class MechanismQuantity {
   momentum_y_error,        // |p_y - p_y0 + M g t|
   angular_momentum_error,  // |H_G - H_G0|
   com_parabola_error,      // |G - (G0 + G0' t - g t^2 / 2 y)|
+  shaking,                 // index: 0 force x, 1 force y, 2 moment about the origin (on the ground)
 };
 
 /// What the error columns measure a sample against: the run's state at t = 0.
