@@ -92,6 +92,15 @@ TEST(SimulateShaking, TheOffsetSliderCrankShakesItsFrameAsNewtonSays) {
          none});
 }
 
+// The same with its ground joints written ground second: the ground takes -F and -M.
+TEST(SimulateShaking, GroundSecondInAJointShakesTheFrameTheSame) {
+  check({"offset-slider-crank-reversed.toml",
+         {{"crank", 0.4, rod(0.4, 0.1)},
+          {"rod", 0.4, rod(0.4, 0.35)},
+          {"piston", 0.6, 0.6 * (0.08 * 0.08 + 0.05 * 0.05) / 12}},
+         none});
+}
+
 // A damper in the ground pin: its torque on the rod is the ground's, so the frame takes -it.
 TEST(SimulateShaking, AGroundPinsDamperTorqueIsInTheShakingMoment) {
   check({"damped-pendulum-pin.toml", {{"pend", 0.5, rod(0.5, 0.6)}}, none});
