@@ -83,22 +83,21 @@ TEST(SimulateShaking, TheDrivenFourBarShakesItsFrameAsNewtonSays) {
          none});
 }
 
+// offset-slider-crank.toml's bodies: rods r = 0.1, l = 0.35 of 0.4 kg, a 0.08 x 0.05 piston of 0.6 kg.
+std::vector<BodyMass> slider_crank_bodies() {
+  return {{"crank", 0.4, rod(0.4, 0.1)},
+          {"rod", 0.4, rod(0.4, 0.35)},
+          {"piston", 0.6, 0.6 * (0.08 * 0.08 + 0.05 * 0.05) / 12}};
+}
+
 // A ground pin, a ground slider (its force and moment) and the motor at the crank.
 TEST(SimulateShaking, TheOffsetSliderCrankShakesItsFrameAsNewtonSays) {
-  check({"offset-slider-crank.toml",
-         {{"crank", 0.4, rod(0.4, 0.1)},
-          {"rod", 0.4, rod(0.4, 0.35)},
-          {"piston", 0.6, 0.6 * (0.08 * 0.08 + 0.05 * 0.05) / 12}},
-         none});
+  check({"offset-slider-crank.toml", slider_crank_bodies(), none});
 }
 
 // The same with its ground joints written ground second: the ground takes -F and -M.
 TEST(SimulateShaking, GroundSecondInAJointShakesTheFrameTheSame) {
-  check({"offset-slider-crank-reversed.toml",
-         {{"crank", 0.4, rod(0.4, 0.1)},
-          {"rod", 0.4, rod(0.4, 0.35)},
-          {"piston", 0.6, 0.6 * (0.08 * 0.08 + 0.05 * 0.05) / 12}},
-         none});
+  check({"offset-slider-crank-reversed.toml", slider_crank_bodies(), none});
 }
 
 // A damper in the ground pin: its torque on the rod is the ground's, so the frame takes -it.
