@@ -226,7 +226,8 @@ MechanismColumn expression_column(const std::vector<MechanismColumn>& available,
   const std::string where = origin + ": column '" + name + "'";
   constexpr std::size_t kLongestValidList = 400;  // as an unknown column's: one readable line
   e->value = sym::read_expression(
-      text, where, {names, "(the mechanism's columns, parameters and definitions)", nullptr, kLongestValidList});
+      text, where,
+      {names, "(the mechanism's columns, parameters and definitions)", nullptr, nullptr, {}, kLongestValidList});
   for (std::size_t i = 0; i < available.size(); ++i)
     if (e->value.has(symbols[i])) e->inputs.emplace_back(symbols[i], available[i]);
   if (system != nullptr)

@@ -120,6 +120,17 @@ std::vector<MechanismColumn> mechanism_columns(const sym::System& system) {
                  0, false});
   out.push_back({"energy_error_relative", "", "|E - E(0) - work| / the energy scale (simulate's energy_scale)",
                  Q::energy_error_relative, 0, false});
+  if (grounded(m)) {
+    out.push_back({"shaking_force_x", "N",
+                   "shaking force, x: the resultant the moving bodies exert on the ground through its joints, "
+                   "drivers and springs",
+                   Q::shaking, 0, false});
+    out.push_back({"shaking_force_y", "N", "shaking force, y", Q::shaking, 1, false});
+    out.push_back({"shaking_moment", "N m",
+                   "shaking moment: the moment of the shaking force about the world origin, with the drivers' "
+                   "reaction torques and the ground pins' spring-damper torques",
+                   Q::shaking, 2, false});
+  }
   if (!grounded(m)) {
     out.push_back({"momentum_x", "kg m/s", "linear momentum, x", Q::momentum_x, 0, false});
     out.push_back({"momentum_y", "kg m/s", "linear momentum, y", Q::momentum_y, 0, false});
@@ -241,6 +252,7 @@ bool needs_kinematics(const std::vector<MechanismColumn>& columns) {
       case MechanismQuantity::momentum_y_error:
       case MechanismQuantity::angular_momentum_error:
       case MechanismQuantity::com_parabola_error:
+      case MechanismQuantity::shaking:
         break;
     }
   return false;
@@ -342,6 +354,8 @@ double column_value(const MechanismColumn& c, double t, const Eigen::VectorXd& y
     case MechanismQuantity::com_parabola_error:
       return std::hypot(s.com[0] - (o.com0[0] + o.com0[2] * t),
                         s.com[1] - (o.com0[1] + o.com0[3] * t - 0.5 * o.g * t * t));
+    case MechanismQuantity::shaking:
+      return s.shaking.at(c.index);
   }
   return 0;
 }
@@ -403,6 +417,10 @@ std::string column_words(const MechanismColumn& c) {
       return "angular momentum error |H_{G} − H_{G0}|";
     case Q::com_parabola_error:
       return "distance of G from the parabola G_{0} + v_{0} t − g t^{2}/2";
+    case Q::shaking: {
+      static const char* const shaking[] = {"shaking force F_{x}", "shaking force F_{y}", "shaking moment M_{O}"};
+      return shaking[c.index];
+    }
     case Q::slider:
     case Q::slider_acceleration:
     case Q::force:

@@ -48,6 +48,7 @@ enum class MechanismQuantity {
   angular_momentum_error,  // |H_G - H_G0|
   com_parabola_error,      // |G - (G0 + G0' t - g t^2 / 2 y)|
   expression,              // NAME=EXPRESSION over other columns (expression_column.hpp)
+  shaking,                 // index: 0 force x, 1 force y, 2 moment about the origin (on the ground)
 };
 
 /// What the error columns measure a sample against: the run's state at t = 0.

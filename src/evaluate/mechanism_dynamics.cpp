@@ -16,6 +16,7 @@
 #include "symbolic/energy.hpp"
 #include "symbolic/joints.hpp"
 #include "symbolic/loop_closure.hpp"
+#include "symbolic/shaking.hpp"
 
 namespace linkage::eval {
 
@@ -363,6 +364,8 @@ void MechanismDynamics::compile_case() const {
   out.push_back(substituted(sym::angular_momentum_about_centre(system)));
   const sym::Vec2 com = sym::centre_of_mass(system), com_velocity = sym::centre_of_mass_velocity(system);
   for (const ex& e : {com.x, com.y, com_velocity.x, com_velocity.y}) out.push_back(prepare(e));
+  const sym::GroundReaction shaking = sym::ground_reaction(system);
+  for (const ex& e : {shaking.force.x, shaking.force.y, shaking.moment}) out.push_back(prepare_output(e));
   outputs_ = compile(out, output_inputs);
   free_checking(out);
   output_symbols_ = output_inputs;
@@ -662,6 +665,7 @@ void MechanismDynamics::sample(double t, const Eigen::VectorXd& y, MechanismSamp
   out.momentum_y = values[k++];
   out.angular_momentum = values[k++];
   for (double& v : out.com) v = values[k++];
+  for (double& v : out.shaking) v = values[k++];
   // The drivers' torques and forces: the case's last unknowns in every case.
   out.drivers.assign(drivers_, std::numeric_limits<double>::quiet_NaN());
   if (solved)

@@ -44,6 +44,9 @@ struct MechanismSample {
   double momentum_x = 0, momentum_y = 0;
   double angular_momentum = 0;  // about the centre of mass
   std::array<double, 4> com{};  // the centre of mass: x, y, x', y'
+  // The force the moving bodies exert on the ground (x, y, N) and its moment about the
+  // world origin (N m): sym::ground_reaction.
+  std::array<double, 3> shaking{};
   // Only when sample() is asked for the kinematics (a column needs them), else empty:
   std::vector<double> accelerations;         // per body: x'', y'', theta'' (0 for a point mass)
   std::vector<double> slider_accelerations;  // per joint: s'' for a slider, 0 for a pin

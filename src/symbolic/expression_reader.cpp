@@ -209,6 +209,8 @@ class Reader {
     skip_space();
     if (w.find('.') == std::string::npos && accept('(')) return call(w, start);
     if (const auto it = names_.symbols.find(w); it != names_.symbols.end()) return it->second;
+    if (names_.refused != nullptr && names_.refused->count(w) > 0)
+      fail(start, "the state name '" + w + "' is not allowed here", "; valid: " + std::string(names_.refused_note));
     std::vector<std::string> valid, candidates;
     for (const auto& [n, value] : names_.symbols) {
       candidates.push_back(n);
