@@ -550,17 +550,23 @@ double MechanismDynamics::structured_unknowns(double t, const Eigen::VectorXd& y
 bool MechanismDynamics::derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) const {
   dydt.resize(y.size());
   const bool baumgarte = constraint_rows_ > 0 && (two_alpha_ != 0 || beta_squared_ != 0);
-  bool solved = false;
+  bool solved = false, rows = true;
   if (structured_ && (!tree_ || n_ + static_cast<std::size_t>(constraint_rows_) <= kFixedRows)) {
     solved = structured_unknowns(t, y, u_) > 0;
   } else if (tree_ && !baumgarte) {
     solved = tree_->accelerations(t, y, u_);
+    rows = false;
   } else {
     solved = unknowns(t, y, u_) > 0;
   }
   if (!solved) {
     dydt.setConstant(std::numeric_limits<double>::quiet_NaN());
-    return false;
+    // A state or rows beyond double range is a step that ran away (the integrator reports
+    // it as such), not a matrix that turned singular.
+    const auto finite = [](double v) { return std::isfinite(v); };
+    return !(y.allFinite() &&
+             (!rows || std::all_of(values_.begin(),
+                                   values_.begin() + static_cast<std::ptrdiff_t>(rows_ * cols_ + rows_), finite)));
   }
   dydt.head(idx(n_)) = y.segment(idx(n_), idx(n_));
   dydt.segment(idx(n_), idx(n_)) = u_.head(idx(n_));

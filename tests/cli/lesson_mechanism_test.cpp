@@ -120,7 +120,8 @@ y = ["2.theta", "S.x"]
   EXPECT_NE(r.err.find("bad.toml:6:17: step 1 (plot): y: unknown column 'S.x'; nearest 'S.s'; valid: t, S.s, S.s_ddot, "
                        "S.force_x, S.force_y, S.moment, S.constraint_error, S.constraint_velocity_error, "
                        "constraint_position_error, constraint_velocity_error, energy, work, energy_error, "
-                       "energy_error_relative and 79 more (the columns of every body, point and joint; 'all' "
+                       "energy_error_relative, shaking_force_x, shaking_force_y, shaking_moment and 79 more (the "
+                       "columns of every body, point and joint; 'all' "
                        "selects every one)\n"),
             std::string::npos)
       << r.err;

@@ -190,8 +190,9 @@ TEST(MechanismSimulation, ColumnsFollowTheContract) {
     EXPECT_EQ(std::string(e.what()),
               "--columns: unknown column 'B.forcex'; nearest 'B.force_x'; valid: default, all, t, B.force_x, "
               "B.force_y, B.constraint_error, B.constraint_velocity_error, constraint_position_error, "
-              "constraint_velocity_error, energy, work, energy_error, energy_error_relative and " +
-                  std::to_string(all.size() + 2 - 13) +
+              "constraint_velocity_error, energy, work, energy_error, energy_error_relative, shaking_force_x, "
+              "shaking_force_y, shaking_moment and " +
+                  std::to_string(all.size() + 2 - 16) +
                   " more (the columns of every body, point and joint; 'all' selects every one)");
   }
   // A list of names (a lesson's): groups anywhere, t once and first; errors at each entry.
