@@ -15,6 +15,7 @@
 #include "integrate/dopri5.hpp"
 #include "integrate/explicit_rk.hpp"
 #include "integrate/gauss_legendre.hpp"
+#include "integrate/kinematic_path.hpp"
 #include "integrate/step_budget.hpp"
 #include "integrate/symplectic_euler.hpp"
 
@@ -59,10 +60,14 @@ struct MechanismSimulation::Impl {
         mechanism(&system.mechanism()),
         dynamics(system, static_cast<CaseId>(o.case_id), std::move(derived)),
         rhs{&dynamics, std::nan("")} {
-    if (o.stabilization == Stabilization::baumgarte) dynamics.set_baumgarte(o.baumgarte_alpha, o.baumgarte_beta);
+    // Kinematic analysis integrates nothing: the stabilization has nothing to stabilize.
+    stats.kinematic = dynamics.kinematic();
+    if (o.stabilization == Stabilization::baumgarte && !stats.kinematic)
+      dynamics.set_baumgarte(o.baumgarte_alpha, o.baumgarte_beta);
     stats.evaluator = choose_evaluator(dynamics, o);
-    project = o.stabilization == Stabilization::projection && dynamics.constraint_rows() > 0;
+    project = o.stabilization == Stabilization::projection && dynamics.constraint_rows() > 0 && !stats.kinematic;
     y = dynamics.initial_state(initial);
+    if (stats.kinematic) kinematic = std::make_unique<KinematicPath>(system, dynamics, y);
     Vector dydt;
     if (!dynamics.derivative(0, y, dydt))
       throw Error::input(system.mechanism().source + ": the matrix of Case " + std::to_string(o.case_id) +
@@ -110,6 +115,10 @@ struct MechanismSimulation::Impl {
         }
     if (!(stats.energy_scale > 0)) stats.energy_scale = 1;  // nothing moves and nothing pulls: report in J
     origin = {energy0, stats.energy_scale, s.momentum_x, s.momentum_y, s.angular_momentum, s.com, total_mass * g, g};
+    if (kinematic) {
+      kinematic->set_energy_scale(stats.energy_scale);
+      return;
+    }
     if (project) dynamics.project(0, y);
     start_stepper();
   }
@@ -167,7 +176,8 @@ struct MechanismSimulation::Impl {
   std::unique_ptr<ode::GaussLegendre2<double, kDynamic>> gauss;
   std::unique_ptr<ode::Dopri5<double, kDynamic>> dopri5;
   std::unique_ptr<ode::Dop853<double, kDynamic>> dop853;
-  std::int64_t k = 0;  // fixed steps taken
+  std::int64_t k = 0;                        // fixed steps taken
+  std::unique_ptr<KinematicPath> kinematic;  // instead of a step when the drivers take every degree of freedom
 };
 
 namespace {
@@ -252,6 +262,11 @@ void MechanismSimulation::Impl::start_stepper() {
 }
 
 void MechanismSimulation::Impl::advance(double t) {
+  if (kinematic) {
+    kinematic->advance(t, y);
+    sample_y = y;
+    return;
+  }
   if (dopri5 || dop853) {
     auto run = [&](auto& stepper) {
       while (stepper.t() < t) {
@@ -342,6 +357,7 @@ const Eigen::VectorXd& MechanismSimulation::state_at(double t) {
       if (run.gauss) c = run.gauss->counters();
       if (run.dopri5) c = run.dopri5->counters();
       if (run.dop853) c = run.dop853->counters();
+      if (run.kinematic) c = {run.kinematic->accepted(), run.kinematic->rejected(), run.kinematic->solves()};
       run.stats.steps_accepted = c.steps_accepted;
       run.stats.steps_rejected = c.steps_rejected;
       run.stats.rhs_evaluations = c.rhs_evaluations;

@@ -1,5 +1,7 @@
 // Issue 25: a driven file's [initial] placed on the drivers' motion at t = 0 (simulate and
-// solve).
+// solve), kinematic analysis when the drivers take every degree of freedom (its summary
+// and the note on integrator flags), and a triple-rocker driven past its limit position
+// stopping with one line and no non-finite row.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -74,6 +76,46 @@ TEST(SimulateKinematic, InitialOffTheMotionIsPlacedOnItInSolve) {
   }();
   ASSERT_EQ(m.size(), 2U) << note;
   EXPECT_NEAR(freudenstein(1.0, std::stod(m[1].str())), 0, 1e-4);
+}
+
+TEST(SimulateKinematic, SummarySaysKinematicAnalysisAndNotesTheIntegratorFlags) {
+  const RunResult r = run_linkage({"simulate", "--mechanism", mechanism_file("offset-slider-crank.toml"),
+                                   "--integrator", "rk4", "--dt", "0.01", "--duration", "0.1", "--every", "0.05"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("linkage: note: kinematic analysis (0 degrees of freedom): the drivers fix the motion and "
+                       "nothing is integrated, so --integrator, --dt not used\n"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find(", Case 3, kinematic analysis (0 degrees of freedom), 0 to 0.1 s, 3 rows"), std::string::npos)
+      << r.err;
+  // Without those flags, no note about them.
+  const RunResult plain = run_linkage(
+      {"simulate", "--mechanism", mechanism_file("offset-slider-crank.toml"), "--duration", "0.1", "--every", "0.05"});
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  EXPECT_EQ(plain.err.find("not used"), std::string::npos) << plain.err;
+}
+
+// triple-rocker.toml: the input link reaches its limit 1.637512 rad at t = 0.568756 s.
+// The run stops there with one line naming the time, the driver's value and the loop;
+// every row written before is finite and before the limit.
+TEST(SimulateKinematic, TripleRockerDrivenPastItsLimitStopsWithOneLine) {
+  for (const std::string case_id : {"1", "2", "3"}) {
+    const RunResult r = run_linkage({"simulate", "--mechanism", mechanism_file("triple-rocker.toml"), "--quiet",
+                                     "--case", case_id, "--duration", "1", "--every", "0.01", "--columns",
+                                     "t,2.theta,3.theta,4.theta,3.theta_dot,M.torque"});
+    EXPECT_EQ(r.exit_code, 2) << "Case " << case_id;
+    EXPECT_TRUE(std::regex_search(r.err, std::regex("^linkage: error: at t = 0\\.5687[0-9]* s driver 'M' at "
+                                                    "1\\.6375[0-9]* rad: the loop through B cannot close beyond "
+                                                    "here \\(a limit position, its links in line: [^;]*; "
+                                                    "valid: [^\n]*\n$")))
+        << r.err;
+    EXPECT_EQ(r.out.find("nan"), std::string::npos);
+    EXPECT_EQ(r.out.find("inf"), std::string::npos);
+    const Table table = parse_csv(r.out);
+    ASSERT_EQ(table.rows.size(), 57U) << "Case " << case_id;  // t = 0 to 0.56
+    for (const std::vector<double>& row : table.rows)
+      for (double v : row) EXPECT_TRUE(std::isfinite(v)) << "Case " << case_id << " t " << row[0];
+  }
 }
 
 }  // namespace
