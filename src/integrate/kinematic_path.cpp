@@ -19,6 +19,8 @@ namespace {
 constexpr int kGaussPoints = 8;
 // Halvings of an interval before the quadrature takes what it has.
 constexpr int kQuadratureDepth = 10;
+// The largest Newton correction of a continuation step, relative to the coordinates' scale.
+constexpr double kLargestCorrection = 1e-3;
 // A continuation step shorter than this fraction of the time reached is not taken: the
 // mechanism cannot go on there.
 constexpr double kShortestStep = 1e-10;
@@ -65,10 +67,12 @@ bool KinematicPath::solve_at(double t0, const Eigen::VectorXd& y0, const Eigen::
   if (!dynamics_->close_positions(t, y)) return false;
   // On the branch the predictor errs by O(h^3) against a motion of O(h): a correction of a
   // quarter of the motion is another branch (halving h shrinks a true step's ratio 4-fold).
+  // Nor more than a thousandth of the coordinates' scale, far below the distance between two
+  // assemblies of the same links, so a long step cannot land on the other one.
+  const double scale = 1 + y.head(n).cwiseAbs().maxCoeff();
   const double motion = (predicted - y0.head(n)).cwiseAbs().maxCoeff();
   const double correction = (y.head(n) - predicted).cwiseAbs().maxCoeff();
-  const double round_off = 1e-12 * (1 + y.head(n).cwiseAbs().maxCoeff());
-  if (correction > 0.25 * motion + round_off) return false;
+  if (correction > std::min(0.25 * motion, kLargestCorrection * scale) + 1e-12 * scale) return false;
   dynamics_->solve_rates(t, y);
   return true;
 }
