@@ -656,6 +656,7 @@ void MechanismDynamics::solve_rates(double t, Eigen::VectorXd& y) const {
 }
 
 double MechanismDynamics::jacobian_spread(double t, const Eigen::VectorXd& y) const {
+  if (constraint_rows_ == 0) return 1;
   evaluate_constraints(t, y);
   const Eigen::JacobiSVD<Eigen::MatrixXd> svd(J_);
   const auto& s = svd.singularValues();

@@ -107,7 +107,8 @@ class MechanismDynamics {
   bool close_positions(double t, Eigen::VectorXd& y) const;
   /// Kinematic only. q' from J q' = -C_t at y's q.
   void solve_rates(double t, Eigen::VectorXd& y) const;
-  /// Kinematic only. J's smallest over its largest singular value at y's q (0: singular).
+  /// The kept rows' Jacobian J's smallest over its largest singular value at y's q (0:
+  /// singular; 1 without kept rows).
   [[nodiscard]] double jacobian_spread(double t, const Eigen::VectorXd& y) const;
 
   /// Everything a sample reports at (t, y), from one evaluation of the unknowns; with

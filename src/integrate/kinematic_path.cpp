@@ -160,15 +160,20 @@ void KinematicPath::advance(double t, Eigen::VectorXd& y) {
 }
 
 void KinematicPath::stop(double t, const std::string& what) const {
-  const Mechanism& mechanism = system_->mechanism();
+  throw Error::input(driven_stop_message(*system_, t, what) +
+                     " (kinematic analysis: the drivers take every degree of freedom)");
+}
+
+std::string driven_stop_message(const sym::System& system, double t, const std::string& what) {
+  const Mechanism& mechanism = system.mechanism();
   std::string loops;
-  for (int j : system_->tree().loop_joints)
+  for (int j : system.tree().loop_joints)
     loops += (loops.empty() ? "" : ", ") + mechanism.joints[static_cast<std::size_t>(j)].name;
   std::string drivers;
-  GiNaC::exmap at = system_->parameter_values();
-  for (const auto& [symbol, expression] : system_->constants()) at[symbol] = expression;
-  at[system_->time()] = t;
-  for (const sym::DriverSystem& d : system_->drivers()) {
+  GiNaC::exmap at = system.parameter_values();
+  for (const auto& [symbol, expression] : system.constants()) at[symbol] = expression;
+  at[system.time()] = t;
+  for (const sym::DriverSystem& d : system.drivers()) {
     const Driver& driver = mechanism.drivers[static_cast<std::size_t>(d.index)];
     std::string unit;
     switch (mechanism.joints[static_cast<std::size_t>(d.joint)].type) {
@@ -180,12 +185,11 @@ void KinematicPath::stop(double t, const std::string& what) const {
         break;
     }
     drivers += std::string(drivers.empty() ? "" : ", ") + "driver '" + driver.name + "' at " +
-               format_significant(sym::evaluate(system_->quantity(driver.motion, true), at), 6) + unit;
+               format_significant(sym::evaluate(system.quantity(driver.motion, true), at), 6) + unit;
   }
   const std::string what_closes = loops.empty() ? std::string("the mechanism") : "the loop through " + loops;
-  throw Error::input("at t = " + format_significant(t, 6) + " s " + drivers + ": " + what_closes + " " + what +
-                     "; valid: a motion within the mechanism's range (kinematic analysis: the drivers take every "
-                     "degree of freedom)");
+  return "at t = " + format_significant(t, 6) + " s " + drivers + ": " + what_closes + " " + what +
+         "; valid: a motion within the mechanism's range";
 }
 
 }  // namespace linkage

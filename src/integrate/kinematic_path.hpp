@@ -62,4 +62,8 @@ class KinematicPath {
   std::int64_t accepted_ = 0, rejected_ = 0, solves_ = 0;
 };
 
+/// "at t = T s driver 'M' at V rad: the loop through B WHAT; valid: ...": where a driven
+/// mechanism cannot go on, for the one line that ends its run.
+[[nodiscard]] std::string driven_stop_message(const sym::System& system, double t, const std::string& what);
+
 }  // namespace linkage

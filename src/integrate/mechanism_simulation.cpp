@@ -28,6 +28,11 @@ constexpr int kDynamic = Eigen::Dynamic;
 // A loop whose constraint error passes this, in metres (or radians), has come apart: the
 // numbers no longer describe the mechanism.
 constexpr double kOpenLoop = 1e-3;
+// A driven run whose step fails with the kept rows' Jacobian this close to losing rank
+// (smallest over largest singular value) has been driven past its range: J's smallest
+// singular value falls as the square root of the distance to a limit position, so a step
+// underflowing to round-off there leaves it near sqrt of a step's relative size.
+constexpr double kDrivenPastItsRange = 1e-4;
 
 /// f(t, y) for the integrators; remembers where the case's matrix was singular.
 struct Rhs {
@@ -57,6 +62,7 @@ struct MechanismSimulation::Impl {
   Impl(const sym::System& system, const GiNaC::exmap& initial, const SimulationOptions& o,
        std::optional<CaseSystem> derived)
       : options(o),
+        system_ptr(&system),
         mechanism(&system.mechanism()),
         dynamics(system, static_cast<CaseId>(o.case_id), std::move(derived)),
         rhs{&dynamics, std::nan("")} {
@@ -142,6 +148,17 @@ struct MechanismSimulation::Impl {
            project ? "try a smaller step or tighter rtol/atol" : "try stabilization by projection", t);
   }
   [[noreturn]] void fail_step(ode::StepStatus status, double t, double h) {
+    // Driven past the mechanism's range: the kept rows' Jacobian has nearly lost rank where
+    // the step failed (a limit position or toggle), which no tolerance or step cures.
+    if (!mechanism->drivers.empty() && dynamics.constraint_rows() > 0 && y.allFinite()) {
+      const double spread = dynamics.jacobian_spread(t, y);
+      if (spread < kDrivenPastItsRange)
+        throw Error::input(driven_stop_message(*system_ptr, t,
+                                               "cannot close beyond here (a limit position, its links in line: J's "
+                                               "smallest over largest singular value " +
+                                                   format_significant(spread, 2) + " there; " + case_text(options) +
+                                                   ")"));
+    }
     if (!std::isnan(rhs.singular_at))
       fail(options,
            "the matrix of Case " + std::to_string(options.case_id) +
@@ -158,6 +175,7 @@ struct MechanismSimulation::Impl {
   }
 
   SimulationOptions options;
+  const sym::System* system_ptr;
   const Mechanism* mechanism;
   eval::MechanismDynamics dynamics;
   Rhs rhs;

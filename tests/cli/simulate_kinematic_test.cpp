@@ -118,5 +118,27 @@ TEST(SimulateKinematic, TripleRockerDrivenPastItsLimitStopsWithOneLine) {
   }
 }
 
+// triple-rocker-on-cart.toml: the same four-bar on a free cart, integrated (one degree of
+// freedom left). The adaptive integrator's step underflows at the limit; the run stops with
+// the same one line (exit 2), naming the case, every row before it finite.
+TEST(SimulateKinematic, MixedRunDrivenPastItsLimitStopsWithOneLine) {
+  for (const std::string case_id : {"1", "2", "3"}) {
+    const RunResult r =
+        run_linkage({"simulate", "--mechanism", mechanism_file("triple-rocker-on-cart.toml"), "--quiet", "--case",
+                     case_id, "--duration", "1", "--every", "0.01", "--columns", "t,2.theta,4.theta,cart.x,M.torque"});
+    EXPECT_EQ(r.exit_code, 2) << "Case " << case_id;
+    EXPECT_TRUE(std::regex_search(
+        r.err, std::regex("^linkage: error: at t = 0\\.5687[0-9]* s driver 'M' at 1\\.6375[0-9]* rad: the loop "
+                          "through B cannot close beyond here \\(a limit position, its links in line: [^;]*; "
+                          "dop853, Case " +
+                          case_id + "\\); valid: [^\n]*\n$")))
+        << r.err;
+    const Table table = parse_csv(r.out);
+    ASSERT_EQ(table.rows.size(), 57U) << "Case " << case_id;
+    for (const std::vector<double>& row : table.rows)
+      for (double v : row) EXPECT_TRUE(std::isfinite(v)) << "Case " << case_id << " t " << row[0];
+  }
+}
+
 }  // namespace
 }  // namespace linkage::test
