@@ -250,14 +250,15 @@ void run_simulate_mechanism(const SimulateOptions& o, SimulationOptions s, doubl
                "linkage simulate: %s, Case %d, %s, 0 to %s s, %ld rows\n"
                "  %s: %lld accepted, %lld rejected; %s: %lld\n"
                "  largest energy balance error: %s of the energy scale %s J; largest constraint error: %s\n"
-               "  wall time: %s s (integration %s s); evaluator: %s\n",
+               "  wall time: %s s (%s %s s); evaluator: %s\n",
                system.mechanism().name.c_str(), s.case_id, method.c_str(), format_roundtrip(s.duration).c_str(),
                samples.count, st.kinematic ? "continuation steps" : "steps", static_cast<long long>(st.steps_accepted),
                static_cast<long long>(st.steps_rejected),
                st.kinematic ? "position solves" : "right-hand side evaluations",
                static_cast<long long>(st.rhs_evaluations), format_significant(st.max_energy_error, 3).c_str(),
                format_significant(st.energy_scale, 4).c_str(), constraint.c_str(), format_significant(wall, 3).c_str(),
-               format_significant(st.wall_seconds, 3).c_str(), st.evaluator.c_str());
+               st.kinematic ? "kinematic analysis" : "integration", format_significant(st.wall_seconds, 3).c_str(),
+               st.evaluator.c_str());
   const std::string warning = mechanism_result_warning(s, st);
   if (!warning.empty()) std::fprintf(stderr, "linkage: warning: %s\n", warning.c_str());
 }
