@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "core/name_match.hpp"
 #include "core/parse_text.hpp"
+#include "model/spanning_tree.hpp"
 #include "symbolic/joints.hpp"
 
 namespace linkage {
@@ -112,12 +113,19 @@ std::vector<MechanismColumn> mechanism_columns(const sym::System& system) {
                      std::string(axes[c]) + " of body " + system.bodies()[b].name + "'s centre of mass less G's",
                      Q::from_com, 2 * b + c, false});
   out.push_back({"energy", "J", "kinetic plus potential energy", Q::energy, 0, false});
+  // Kinematic analysis integrates nothing: the work is the power's quadrature along the
+  // solved path (integrate/kinematic_path.hpp), so the balance checks the torques to round-off.
+  const bool kinematic = !system.drivers().empty() && degrees_of_freedom(m) == 0;
   out.push_back({"work", "J",
                  system.drivers().empty() ? "work done by dampers and applied loads since t = 0"
-                                          : "work done by dampers, applied loads and drivers since t = 0",
+                 : kinematic ? "work done by dampers, applied loads and drivers since t = 0 (their power integrated "
+                               "along the solved motion by Gauss-Legendre quadrature to round-off)"
+                             : "work done by dampers, applied loads and drivers since t = 0",
                  Q::work, system.drivers().empty() ? 0U : 1U, false});  // index 1: with the drivers'
-  out.push_back({"energy_error", "J", "energy balance E - E(0) - work: 0 up to the integration error", Q::energy_error,
-                 0, false});
+  out.push_back({"energy_error", "J",
+                 kinematic ? "energy balance E - E(0) - work: 0 up to round-off (kinematic analysis)"
+                           : "energy balance E - E(0) - work: 0 up to the integration error",
+                 Q::energy_error, 0, false});
   out.push_back({"energy_error_relative", "", "|E - E(0) - work| / the energy scale (simulate's energy_scale)",
                  Q::energy_error_relative, 0, false});
   if (grounded(m)) {

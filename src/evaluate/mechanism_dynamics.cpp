@@ -1,6 +1,7 @@
 #include "evaluate/mechanism_dynamics.hpp"
 
 #include <Eigen/Cholesky>
+#include <Eigen/SVD>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -633,6 +634,42 @@ double MechanismDynamics::project(double t, Eigen::VectorXd& y) const {
   const Eigen::VectorXd rate = constraint_rate(t, y);
   y.segment(n, n) -= MinvJt * (J_ * MinvJt).fullPivLu().solve(rate);
   return C.cwiseAbs().maxCoeff();
+}
+
+bool MechanismDynamics::close_positions(double t, Eigen::VectorXd& y) const {
+  const auto n = idx(n_);
+  const Eigen::Map<const Eigen::VectorXd> C(constraint_values_.data(), n);
+  // Round-off of the coordinates: Newton is done when |C| or its step is there.
+  const double floor = 4 * std::numeric_limits<double>::epsilon() * (1 + y.head(n).cwiseAbs().maxCoeff());
+  double previous = std::numeric_limits<double>::infinity();
+  for (int iteration = 0; iteration < 2 * kProjectionIterations; ++iteration) {
+    evaluate_constraints(t, y);
+    const double residual = C.cwiseAbs().maxCoeff();
+    if (!std::isfinite(residual)) return false;
+    if (residual <= floor) return true;
+    // Quadratic convergence halves |C| at least; stalling above round-off means no root near.
+    if (iteration > 2 && !(residual < 0.5 * previous)) return residual <= 1e3 * floor;
+    previous = residual;
+    const Eigen::FullPivLU<Eigen::MatrixXd> lu(J_);
+    if (!lu.isInvertible()) return false;
+    y.head(n) -= lu.solve(C);
+  }
+  return false;
+}
+
+void MechanismDynamics::solve_rates(double t, Eigen::VectorXd& y) const {
+  evaluate_constraints(t, y);
+  evaluate_time_rates(t, y);
+  const Eigen::Map<const Eigen::VectorXd> c_t(time_rate_values_.data(), idx(n_));
+  y.segment(idx(n_), idx(n_)) = J_.fullPivLu().solve(-c_t);
+}
+
+double MechanismDynamics::jacobian_spread(double t, const Eigen::VectorXd& y) const {
+  if (constraint_rows_ == 0) return 1;
+  evaluate_constraints(t, y);
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(J_);
+  const auto& s = svd.singularValues();
+  return s.size() == 0 || !(s[0] > 0) ? 0.0 : s[s.size() - 1] / s[0];
 }
 
 void MechanismDynamics::sample(double t, const Eigen::VectorXd& y, MechanismSample& out, bool kinematics) const {
