@@ -28,8 +28,8 @@ struct RenderDraft {
 namespace {
 
 // "pin" is the joint kind's other name, as --show's pin-force is joint-force's.
-constexpr std::array<std::string_view, 7> kMechanismArrowKinds{"joint",  "pin",      "applied",     "gravity",
-                                                               "spring", "velocity", "acceleration"};
+constexpr std::array<std::string_view, 8> kMechanismArrowKinds{"joint",  "pin",      "applied",      "gravity",
+                                                               "spring", "velocity", "acceleration", "driver"};
 
 /// Runs `parse`, whose errors are worded "NAME: ...", and makes them the setting's.
 template <typename Parse>

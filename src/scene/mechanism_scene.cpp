@@ -160,6 +160,9 @@ MechanismGeometry mechanism_geometry(const sym::System& system) {
     }
     g.joints.push_back(std::move(shape));
   }
+  for (const Driver& d : m.drivers)
+    for (std::size_t j = 0; j < m.joints.size(); ++j)
+      if (m.joints[j].name == d.joint) g.drivers.push_back({d.name, j});
   for (const Spring& s : m.springs)
     g.springs.push_back({s.name,
                          {point_of(system, s.between[0].body, s.between[0].point),
@@ -291,6 +294,7 @@ void MechanismDrawList::clear() {
   markers.clear();
   arrows.clear();
   torques.clear();
+  motors.clear();
   labels.clear();
   joint_labels.clear();
   ghosts.clear();
@@ -317,7 +321,8 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
   // Each sample's largest force (joint or applied) and torque: the scales' statistics;
   // and per other kind its own largest.
   std::vector<double> largest_force(samples, 0), largest_torque(samples, 0), largest_gravity(samples, 0),
-      largest_spring(samples, 0), largest_velocity(samples, 0), largest_acceleration(samples, 0);
+      largest_spring(samples, 0), largest_velocity(samples, 0), largest_acceleration(samples, 0),
+      largest_driver_force(samples, 0), largest_driver_torque(samples, 0);
   std::vector<double> inputs, scratch(geometry_.load_values.scratch_size());
   // The traced points' velocities, shown with the centres of mass's.
   trail_velocity_.assign(samples, {});
@@ -358,6 +363,11 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
         bounds_.include(p);
         reach_ = std::max(reach_, (p - c).norm());
       }
+    for (std::size_t d = 0; d < geometry_.drivers.size() && d < s.drivers.size(); ++d) {
+      const bool slider = geometry_.joints[geometry_.drivers[d].joint].type == JointType::slider;
+      double& largest = slider ? largest_driver_force[k] : largest_driver_torque[k];
+      largest = std::max(largest, std::fabs(s.drivers[d]));
+    }
     for (std::size_t j = 0; j < joints; ++j) {
       const MechanismGeometry::JointShape& joint = geometry_.joints[j];
       if (joints_shown && (joint.points[0].body >= 0 || joint.points[1].body >= 0))
@@ -493,6 +503,17 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
   legend_.relative_velocity = relative_velocities_ && velocity_scale_ > 0;
   acceleration_scale_ =
       own_scale(Kind::acceleration, Element::acceleration, largest_acceleration, "acceleration", "m/s²", false);
+  driver_scale_ = own_scale(Kind::driver, Element::motor, largest_driver_force, "driver", "N", true);
+  // A driver's torque: an arc whose sweep is its size, a typical one a turn and a quarter,
+  // the legend's reference arc a round torque.
+  if (const double typical = typical_of(largest_driver_torque);
+      shown_.has(Element::motor) && typical > 0 && std::isfinite(typical)) {
+    driver_torque_scale_ = kTypicalSweep / typical;
+    const double reference = round_near(typical);
+    legend_.rows.push_back({Kind::driver, 0, format_quantity(reference, "N m"),
+                            "a half turn = " + format_quantity(std::numbers::pi / driver_torque_scale_, "N m"),
+                            reference * driver_torque_scale_});
+  }
   for (const BodyPoint& trail : trails_) {  // "path of P": the point's own name
     const std::vector<std::pair<std::string, Vec2>>& named =
         trail.body < 0 ? geometry_.ground : geometry_.bodies[static_cast<std::size_t>(trail.body)].points;
@@ -578,7 +599,9 @@ Vec2 MechanismScene::centroid_velocity(std::size_t k) const {
 
 MechanismDrawList::Arrow MechanismScene::force_arrow(MechanismDrawList::Arrow::Kind kind, const Vec2& at,
                                                      const Vec2& force, std::string label) const {
-  const bool applied = kind == MechanismDrawList::Arrow::Kind::applied;
+  // An applied load's and a driver's labels carry their value already.
+  const bool applied =
+      kind == MechanismDrawList::Arrow::Kind::applied || kind == MechanismDrawList::Arrow::Kind::driver;
   MechanismDrawList::Arrow arrow{kind, at, scale_of(kind) * force, force.norm(), false, std::move(label)};
   const double length = arrow.vector.norm();
   if (length > arrow_cap_ || (length > 0 && length < shortest_)) {
@@ -610,6 +633,8 @@ double MechanismScene::scale_of(MechanismDrawList::Arrow::Kind kind) const {
       return velocity_scale_;
     case Kind::acceleration:
       return acceleration_scale_;
+    case Kind::driver:
+      return driver_scale_;
   }
   return 0;
 }
@@ -746,10 +771,7 @@ void MechanismScene::add_loads(std::size_t k, MechanismDrawList& out) const {
     const double torque = torque_[k][i];
     if (torque == 0) continue;
     const auto body = static_cast<std::size_t>(geometry_.torques[i].body);
-    const MechanismGeometry::BodyShape& shape = geometry_.bodies[body];
-    // About a third of the body's size, but readable on a point mass and not past a long rod.
-    const double size = std::max({shape.length, shape.width, 2 * shape.radius});
-    const double radius = std::clamp(0.3 * size, extent_ / 30, extent_ / 12);
+    const double radius = torque_radius(geometry_.bodies[body]);
     const double sweep = std::copysign(std::min(torque_scale_ * std::fabs(torque), kLongestSweep), torque);
     // Centred on the body's own "up", so the arc turns with it.
     const double start = pose[3 * body + 2] + 0.5 * std::numbers::pi - 0.5 * sweep;
@@ -759,6 +781,53 @@ void MechanismScene::add_loads(std::size_t k, MechanismDrawList& out) const {
     if (!tags) label.clear();
     out.torques.push_back(
         {Vec2(pose[3 * body], pose[3 * body + 1]), radius, start, sweep, std::move(label), static_cast<int>(body)});
+  }
+}
+
+double MechanismScene::torque_radius(const MechanismGeometry::BodyShape& shape) const {
+  // About a third of the body's size, but readable on a point mass and not past a long rod.
+  const double size = std::max({shape.length, shape.width, 2 * shape.radius});
+  return std::clamp(0.3 * size, extent_ / 30, extent_ / 12);
+}
+
+void MechanismScene::add_motors(std::size_t k, MechanismDrawList& out) const {
+  // Each driver at its joint: a pin's motor at the joint's point with its torque on
+  // bodies[1] as an arc (counter-clockwise positive), centred opposite that body's x axis
+  // (a crank's arm); a slider's at the guide, with its force along the axis.
+  const eval::MechanismSample& s = motion_.samples[k];
+  if (!shown_.has(Element::motor)) return;
+  for (std::size_t d = 0; d < geometry_.drivers.size() && d < s.drivers.size(); ++d) {
+    const MechanismGeometry::DriverShape& driver = geometry_.drivers[d];
+    const MechanismGeometry::JointShape& joint = geometry_.joints[driver.joint];
+    const double value = s.drivers[d];
+    if (!std::isfinite(value)) continue;  // not solved at this sample
+    const int moved = joint.points[1].body, held = joint.points[0].body;
+    const double theta1 = moved < 0 ? 0 : s.pose[3 * static_cast<std::size_t>(moved) + 2];
+    const double theta0 = held < 0 ? 0 : s.pose[3 * static_cast<std::size_t>(held) + 2];
+    const bool slider = joint.type == JointType::slider;
+    const std::string label =
+        shown_.has(Element::labels) ? driver.name + ": " + format_quantity(value, slider ? "N" : "N m") : "";
+    switch (joint.type) {
+      case JointType::pin: {
+        const Vec2 at = world_point(s.pose, joint.points[0]);
+        out.motors.push_back({at, Vec2::UnitX(), false, held});
+        if (driver_torque_scale_ <= 0 || value == 0) break;
+        // Clear of the motor's symbol around the joint.
+        const double radius =
+            std::max(extent_ / 16, moved < 0 ? 0.0 : torque_radius(geometry_.bodies[static_cast<std::size_t>(moved)]));
+        const double sweep = std::copysign(std::min(driver_torque_scale_ * std::fabs(value), kLongestSweep), value);
+        out.torques.push_back({at, radius, theta1 + std::numbers::pi - 0.5 * sweep, sweep, label, held, true});
+        break;
+      }
+      case JointType::slider: {
+        const Vec2 at = world_point(s.pose, joint.points[1]), axis = rotated(theta0, joint.axis);
+        out.motors.push_back({at, axis, true, moved});
+        if (driver_scale_ <= 0 || value == 0) break;
+        out.arrows.push_back(force_arrow(MechanismDrawList::Arrow::Kind::driver, at, value * axis, label));
+        out.arrows.back().body = moved;
+        break;
+      }
+    }
   }
 }
 
@@ -802,8 +871,13 @@ void legend_for_frame(MechanismDrawList& out) {
     return std::any_of(out.arrows.begin(), out.arrows.end(), [&](const auto& a) { return a.kind == kind; });
   };
   legend.joint = legend.joint && present(Kind::joint);
-  legend.applied = legend.applied && (present(Kind::applied) || !out.torques.empty());
-  std::erase_if(legend.rows, [&](const MechanismDrawList::Legend::Row& row) { return !present(row.kind); });
+  const bool driver_torque =
+      std::any_of(out.torques.begin(), out.torques.end(), [](const auto& t) { return t.driver; });
+  legend.applied = legend.applied && (present(Kind::applied) || std::any_of(out.torques.begin(), out.torques.end(),
+                                                                            [](const auto& t) { return !t.driver; }));
+  std::erase_if(legend.rows, [&](const MechanismDrawList::Legend::Row& row) {
+    return !(present(row.kind) || (row.kind == Kind::driver && row.sweep > 0 && driver_torque));
+  });
   legend.relative_velocity = legend.relative_velocity && present(Kind::velocity);
   legend.cut = std::any_of(out.arrows.begin(), out.arrows.end(), [](const auto& a) { return a.cut; });
   legend.stretched = std::any_of(out.arrows.begin(), out.arrows.end(), [](const auto& a) { return a.stretched; });
@@ -883,6 +957,7 @@ void MechanismScene::frame(std::size_t k, MechanismDrawList& out) const {
   }
   place_joints(pose, first_marker, first_line, out);
   add_loads(k, out);
+  add_motors(k, out);
   add_load_arrows(k, out);
   add_trails(k, out);
   if (free_body_) pull_apart(k, out);
@@ -973,6 +1048,7 @@ void MechanismScene::pull_apart(std::size_t k, MechanismDrawList& out) const {
   for (MechanismDrawList::Marker& m : out.markers) m.at += offset(m.body);
   for (MechanismDrawList::Arrow& a : out.arrows) a.tail += offset(a.body);
   for (MechanismDrawList::Torque& t : out.torques) t.centre += offset(t.body);
+  for (MechanismDrawList::Motor& m : out.motors) m.at += offset(m.body);
   for (MechanismDrawList::Label& l : out.labels) l.at += offset(l.body);
 }
 

@@ -70,6 +70,13 @@ struct MechanismGeometry {
   std::vector<ForceShape> forces;
   std::vector<TorqueShape> torques;
   std::vector<LoadShape> loads;
+  /// A [[driver]]: its name and joint (an index of `joints`), in file order as
+  /// MechanismSample::drivers holds their torques or forces.
+  struct DriverShape {
+    std::string name;
+    std::size_t joint = 0;
+  };
+  std::vector<DriverShape> drivers;
   /// Per load: force x, y (N) and its point x, y (m), world frame; inputs per body x, y,
   /// theta, then per body their rates, then t (load_inputs).
   eval::Program load_values;
@@ -120,7 +127,7 @@ struct MechanismDrawList {
     int body = -1;                   // the body it moves with in the free-body view (-1: the world)
   };
   struct Arrow {
-    enum class Kind { joint, applied, gravity, spring, velocity, acceleration } kind = Kind::joint;
+    enum class Kind { joint, applied, gravity, spring, velocity, acceleration, driver } kind = Kind::joint;
     Vec2 tail = Vec2::Zero(), vector = Vec2::Zero();  // vector in metres: force x scale, or cut
     double force = 0;                                 // N, the magnitude
     bool cut = false;                                 // drawn shorter than the scale says
@@ -135,6 +142,14 @@ struct MechanismDrawList {
     double radius = 0, start = 0, sweep = 0;  // m, rad
     std::string label;                        // "τ = 0.01 N m"
     int body = -1;
+    bool driver = false;  // a driver's torque (the motor's colour), else an applied one
+  };
+  /// A driver's motor: a circle at a pin's point, or at a slider's guide along its axis.
+  struct Motor {
+    Vec2 at = Vec2::Zero();
+    Vec2 axis = Vec2::UnitX();  // a slider's axis in the world
+    bool slider = false;
+    int body = -1;  // the body it moves with in the free-body view
   };
   struct Label {
     Vec2 at = Vec2::Zero();
@@ -157,6 +172,7 @@ struct MechanismDrawList {
       Arrow::Kind kind = Arrow::Kind::gravity;
       double metres = 0;
       std::string value, scale;  // "2 N", "1 cm = 0.5 N"
+      double sweep = 0;          // a torque's row: its reference arc (rad), drawn instead of an arrow
     };
     std::vector<Row> rows;
     bool relative_velocity = false;   // the velocity row: relative to the centre of mass G
@@ -170,6 +186,7 @@ struct MechanismDrawList {
   std::vector<Marker> markers;
   std::vector<Arrow> arrows;
   std::vector<Torque> torques;
+  std::vector<Motor> motors;
   std::vector<Label> labels;        // body names at their centres
   std::vector<Label> joint_labels;  // joint names at their points (not in the free-body view)
   /// Another run's bodies, drawn over this one: an ensemble member (faint, at `ramp`
@@ -274,6 +291,8 @@ class MechanismScene {
   bool free_body_ = false;
   bool relative_velocities_ = false;
   double gravity_scale_ = 0, spring_scale_ = 0, velocity_scale_ = 0, acceleration_scale_ = 0;
+  double driver_scale_ = 0;                 // a slider driver's force arrows, m/N
+  double driver_torque_scale_ = 0;          // a pin driver's torque arcs, rad/(N m)
   std::vector<std::size_t> traced_points_;  // per traced point on a body: its index in MechanismSample::points
 
   void add_spring(const MechanismGeometry::SpringShape& spring, std::size_t index, const std::vector<double>& pose,
@@ -282,6 +301,9 @@ class MechanismScene {
   void add_trails(std::size_t k, MechanismDrawList& out) const;
   void add_load_arrows(std::size_t k, MechanismDrawList& out) const;
   void add_acceleration_arrows(std::size_t k, MechanismDrawList& out) const;
+  void add_motors(std::size_t k, MechanismDrawList& out) const;
+  /// An arc's radius for a torque on a body of this shape, m.
+  [[nodiscard]] double torque_radius(const MechanismGeometry::BodyShape& shape) const;
   void place_joints(const std::vector<double>& pose, std::size_t first_marker, std::size_t first_line,
                     MechanismDrawList& out) const;
   void pull_apart(std::size_t k, MechanismDrawList& out) const;

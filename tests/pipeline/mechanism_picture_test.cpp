@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
+#include "columns/mechanism_columns.hpp"
 #include "model/mechanism_toml.hpp"
 #include "pipeline/mechanism_clip.hpp"
 #include "scene/mechanism_scene.hpp"
@@ -460,6 +462,93 @@ TEST(MechanismPicture, FreeBodyViewPullsEachBodyApartWithItsForces) {
         EXPECT_GE(p.x(), apart.view_bounds().min.x() - 1e-12);
         EXPECT_LE(p.y(), apart.view_bounds().max.y() + 1e-12);
       }
+  }
+}
+
+// Issue 25, Deliver 8: a driver drawn as a motor at its joint. driven-four-bar.toml's M
+// drives O2 (ground, crank "2"): the motor at O2's point, its torque on the crank an arc
+// about O2 turning counter-clockwise for M.torque > 0 with the column's value in its label;
+// shown by default, hidden by --hide motor, absent from a file with no driver.
+TEST(MechanismPicture, ADriverIsAMotorAtItsJointWithItsTorque) {
+  const sym::System system(
+      load_mechanism(std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/driven-four-bar.toml"));
+  const MechanismMotion motion = motion_of(system, 2.0, 10);
+  const MechanismScene scene(mechanism_geometry(system), motion, {});
+  const std::vector<MechanismColumn> columns = mechanism_columns(system);
+  const MechanismColumn torque = find_mechanism_column(columns, "M.torque", "test");
+  MechanismDrawList list;
+  int positive = 0, negative = 0;
+  for (std::size_t k = 0; k < motion.samples.size(); ++k) {
+    SCOPED_TRACE(k);
+    scene.frame(k, list);
+    const eval::MechanismSample& s = motion.samples[k];
+    const double value = column_value(torque, motion.times[k], Eigen::VectorXd::Zero(1), s, {});
+    ASSERT_TRUE(std::isfinite(value));
+    ASSERT_EQ(list.motors.size(), 1U);
+    EXPECT_NEAR(list.motors[0].at.norm(), 0, 1e-12);  // O2 = (0, 0)
+    EXPECT_FALSE(list.motors[0].slider);
+    ASSERT_EQ(list.torques.size(), 1U);  // the file has no applied torque
+    const MechanismDrawList::Torque& arc = list.torques[0];
+    EXPECT_TRUE(arc.driver);
+    EXPECT_NEAR(arc.centre.norm(), 0, 1e-12);
+    EXPECT_EQ(arc.sweep > 0, value > 0);  // counter-clockwise positive, on the crank
+    (value > 0 ? positive : negative)++;
+    ASSERT_EQ(arc.label.rfind("M: ", 0), 0U) << arc.label;
+    EXPECT_EQ(arc.label.substr(arc.label.size() - 4), " N m");
+    // The printed value is the column's, to its three significant digits.
+    const double printed = std::stod(arc.label.substr(3));
+    EXPECT_NEAR(printed, value, 5e-3 * std::fabs(value)) << arc.label;
+    EXPECT_EQ(arc.label, "M: " + format_quantity(value, "N m"));
+    const bool row = std::any_of(list.legend.rows.begin(), list.legend.rows.end(),
+                                 [](const auto& r) { return r.kind == Kind::driver && r.sweep > 0; });
+    EXPECT_TRUE(row);
+  }
+  EXPECT_GT(positive, 0);
+  // Its sweep is its size: twice the torque, twice the arc (below the longest drawn).
+  scene.frame(5, list);
+  const double a = list.torques[0].sweep / motion.samples[5].drivers[0];
+  scene.frame(15, list);
+  EXPECT_NEAR(list.torques[0].sweep / motion.samples[15].drivers[0], a, 1e-12 * std::fabs(a));
+
+  ElementSet hidden = ElementSet::defaults();
+  EXPECT_TRUE(hidden.has(Element::motor));
+  hidden.hide(Element::motor);
+  const MechanismScene without(mechanism_geometry(system), motion, {}, 2.0, {}, hidden);
+  without.frame(5, list);
+  EXPECT_TRUE(list.motors.empty());
+  EXPECT_TRUE(list.torques.empty());
+  for (const auto& r : list.legend.rows) EXPECT_NE(r.kind, Kind::driver);
+
+  const sym::System undriven(load_mechanism("four-bar"));
+  const MechanismMotion still = motion_of(undriven, 0.2, 10);
+  const MechanismScene plain(mechanism_geometry(undriven), still, {});
+  plain.frame(1, list);
+  EXPECT_TRUE(list.motors.empty());
+  EXPECT_TRUE(list.torques.empty());
+}
+
+// A slider's driver: driven-cart-pendulum.toml's D moves the cart along slider S: the
+// motor at the guide along the rail, its force an arrow along the axis with D.force's value.
+TEST(MechanismPicture, ASliderDriverIsAMotorAlongItsAxisWithItsForce) {
+  const sym::System system(
+      load_mechanism(std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/driven-cart-pendulum.toml"));
+  const MechanismMotion motion = motion_of(system, 1.0, 10);
+  const MechanismScene scene(mechanism_geometry(system), motion, {});
+  MechanismDrawList list;
+  for (std::size_t k = 1; k < motion.samples.size(); ++k) {
+    SCOPED_TRACE(k);
+    scene.frame(k, list);
+    const double force = motion.samples[k].drivers.at(0);
+    ASSERT_EQ(list.motors.size(), 1U);
+    EXPECT_TRUE(list.motors[0].slider);
+    const auto drawn = arrows_of(list, Kind::driver);
+    ASSERT_EQ(drawn.size(), force == 0 ? 0U : 1U);
+    if (force == 0) continue;
+    EXPECT_NEAR(drawn[0].force, std::fabs(force), 1e-12);
+    EXPECT_NEAR((drawn[0].tail - list.motors[0].at).norm(), 0, 1e-12);
+    // Along the axis, pointing the way the force on bodies[1] does.
+    EXPECT_NEAR(drawn[0].vector.normalized().dot(list.motors[0].axis), force > 0 ? 1 : -1, 1e-12);
+    EXPECT_EQ(drawn[0].label, "D: " + format_quantity(force, "N"));
   }
 }
 
