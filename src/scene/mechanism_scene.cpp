@@ -820,7 +820,13 @@ void MechanismScene::add_motors(std::size_t k, MechanismDrawList& out) const {
         break;
       }
       case JointType::slider: {
-        const Vec2 at = world_point(s.pose, joint.points[1]), axis = rotated(theta0, joint.axis);
+        // At the slider's guide on its rail when the joints are drawn (placed under the body).
+        Vec2 at = world_point(s.pose, joint.points[1]);
+        const Vec2 axis = rotated(theta0, joint.axis), point = at;
+        for (const MechanismDrawList::Marker& m : out.markers)
+          if (m.kind == MechanismDrawList::Marker::Kind::guide && m.body == moved &&
+              ((m.at - point).norm() < (at - point).norm() || at == point))
+            at = m.at;
         out.motors.push_back({at, axis, true, moved});
         if (driver_scale_ <= 0 || value == 0) break;
         out.arrows.push_back(force_arrow(MechanismDrawList::Arrow::Kind::driver, at, value * axis, label));
