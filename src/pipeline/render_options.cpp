@@ -112,6 +112,20 @@ void trail(RenderDraft& d, const std::string& text) {
   for (std::string& item : split_commas(text)) d.request.trails.push_back(std::move(item));
 }
 
+void trail_length(RenderDraft& d, const std::string& text) {
+  if (text != "cycle") {
+    const std::string valid = "; valid: seconds > 0, or cycle (one period of the driver's motion)";
+    double value = 0;
+    try {
+      value = parse_number(text, "trail_length", "");
+    } catch (const Error&) {
+      throw Error::invalid("trail_length", "'" + text + "' is not a number" + valid);
+    }
+    if (!(value > 0) || !std::isfinite(value)) throw Error::invalid("trail_length", "'" + text + "' s" + valid);
+  }
+  d.request.trail_length = text;
+}
+
 void ensemble(RenderDraft& d, const std::string& text) {
   const bool whole = !text.empty() && text.size() < 5 && text.find_first_not_of("0123456789") == std::string::npos;
   const int n = whole ? std::stoi(text) : -1;
@@ -187,6 +201,10 @@ std::vector<RenderOption> make_options() {
        "Draw the path of a body's point over the last 2 s, e.g. 3.B (a four-bar's coupler curve); default: the "
        "file's [picture] trail (the homework's P)",
        trail},
+      {"trail_length", V::string, "string", "S|cycle", "\"2\"",
+       "How long a trail is: seconds (\"2.5\"), or cycle: one period of the driver's motion (2 pi/|omega| for a "
+       "motion theta0 + omega*t), so a coupler curve closes",
+       trail_length},
       {"ensemble", V::integer, "integer", "N", "none",
        "Draw N runs (2 .. 200) starting up to spread apart, faint in a colour ramp behind the main run (chaos "
        "fanning out): in the file's [picture] ensemble coordinate (the homework's theta1), else the first",

@@ -241,7 +241,7 @@ Vec2 legend_rows(cairo_t* cr, const DrawStyle& style, const Camera& camera, cons
   // What is not an arrow: each trail (a line), then a note.
   const double glyph = 40 * u, x = at.x() + names + 8 * u;
   char seconds[32];
-  std::snprintf(seconds, sizeof seconds, "last %g s", legend.trail_seconds);
+  std::snprintf(seconds, sizeof seconds, "last %.3g s", legend.trail_seconds);
   for (const std::string& trail : legend.trails) {
     if (paint) {
       text::draw(cr, font, at.x(), baseline(), trail.c_str(), theme.text);

@@ -844,8 +844,21 @@ void MechanismScene::add_trails(std::size_t k, MechanismDrawList& out) const {
   // The samples in [now - trail_seconds, now], finer than the frames when the motion has them.
   const auto first = std::lower_bound(times.begin(), times.end(), now - trail_seconds_ - 1e-9);
   const auto last = std::upper_bound(times.begin(), times.end(), now + 1e-9);
+  // The trail's start between two samples: its point there, between theirs (a cycle's
+  // trail then closes on itself to the samples' resolution).
+  const double start = now - trail_seconds_;
+  const bool between = first != times.begin() && first<last&& * first> start + 1e-9;
+  const auto pose_at = [&](std::size_t i) -> const std::vector<double>& {
+    return fine ? motion_.trail_poses[i] : motion_.samples[i].pose;
+  };
   for (const BodyPoint& trail : trails_) {
     MechanismDrawList::Line line{MechanismDrawList::Line::Kind::trail, {}, {}};
+    if (between) {
+      const auto i = static_cast<std::size_t>(first - times.begin());
+      const double f = (start - times[i - 1]) / (times[i] - times[i - 1]);
+      line.points.push_back((1 - f) * world_point(pose_at(i - 1), trail) + f * world_point(pose_at(i), trail));
+      line.fade.push_back(0.0);
+    }
     for (auto it = first; it < last; ++it) {
       const auto i = static_cast<std::size_t>(it - times.begin());
       line.points.push_back(world_point(fine ? motion_.trail_poses[i] : motion_.samples[i].pose, trail));

@@ -3,10 +3,13 @@
 // System gives; the camera is the one asked for (fit and follow by default).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include "columns/mechanism_columns.hpp"
+#include "core/error.hpp"
 #include "model/mechanism_toml.hpp"
 #include "pipeline/mechanism_clip.hpp"
 #include "scene/mechanism_scene.hpp"
@@ -550,6 +553,59 @@ TEST(MechanismPicture, ASliderDriverIsAMotorAlongItsAxisWithItsForce) {
     EXPECT_NEAR(drawn[0].vector.normalized().dot(list.motors[0].axis), force > 0 ? 1 : -1, 1e-12);
     EXPECT_EQ(drawn[0].label, "D: " + format_quantity(force, "N"));
   }
+}
+
+// Issue 25, Deliver 8: --trail-length cycle is one period of the driver's motion, and the
+// trail over it closes. offset-slider-crank.toml turns its crank at w = 12 rad/s: 2 pi/12 =
+// 0.5236 s. The trail's samples are 1/120 s apart (30 fps, 4 per frame), so its start,
+// between two of them, is placed between their points: off the true path by at most
+// r w^2 dt^2/8 = 0.1 x 144/120^2/8 = 1.25e-4 m for A at r = 0.1 m (without it, up to
+// r w dt = 1 cm), far below a pixel of the picture (0.7 m over 1280 px).
+TEST(MechanismPicture, ATrailOverADriversCycleCloses) {
+  const sym::System system(
+      load_mechanism(std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/offset-slider-crank.toml"));
+  const double period = driver_cycle_seconds(system);
+  EXPECT_NEAR(period, 2 * std::numbers::pi / 12, 1e-12);
+  EXPECT_NEAR(trail_seconds_of(system, "cycle"), period, 0);
+  EXPECT_EQ(trail_seconds_of(system, ""), 2.0);
+  EXPECT_EQ(trail_seconds_of(system, "2.5"), 2.5);
+  std::vector<double> times;
+  for (int k = 0; k <= 30; ++k) times.push_back(k / 30.0);
+  SimulationOptions options;
+  options.duration = 1.0;
+  ClipResult result;
+  const MechanismMotion motion =
+      sample_mechanism_motion(system, sym::checked_initial_state(system).state, options, times, 4, result);
+  const MechanismGeometry geometry = mechanism_geometry(system);
+  const BodyPoint a = geometry.resolve("rod.A", "trail");
+  const MechanismScene scene(geometry, motion, {a}, period);
+  MechanismDrawList list;
+  int closed = 0;
+  for (std::size_t k = 16; k <= 30; ++k) {  // from t = 0.533 s, a whole cycle back
+    SCOPED_TRACE(k);
+    scene.frame(k, list);
+    const auto trail = std::find_if(list.lines.begin(), list.lines.end(), [](const MechanismDrawList::Line& l) {
+      return l.kind == MechanismDrawList::Line::Kind::trail;
+    });
+    ASSERT_NE(trail, list.lines.end());
+    EXPECT_NEAR((trail->points.front() - trail->points.back()).norm(), 0, 2e-4);
+    EXPECT_NEAR((trail->points.back() - world_point(motion.samples[k].pose, a)).norm(), 0, 1e-12);
+    ++closed;
+  }
+  EXPECT_EQ(closed, 15);
+  // No cycle to close: no driver, a varying rate, a slider's travel.
+  const auto refusal = [](const std::string& file) {
+    try {
+      (void)driver_cycle_seconds(sym::System(load_mechanism(file)));
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const std::string data = std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/";
+  EXPECT_NE(refusal("four-bar").find("cycle needs a [[driver]], and four-bar has none"), std::string::npos);
+  EXPECT_NE(refusal(data + "driven-four-bar.toml").find("does not turn at a constant rate"), std::string::npos);
+  EXPECT_NE(refusal(data + "driven-cart-pendulum.toml").find("moves slider S"), std::string::npos);
 }
 
 }  // namespace
