@@ -59,9 +59,21 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-std::vector<BodyPoint> resolve_trails(const MechanismGeometry& geometry, const std::vector<std::string>& trails) {
+std::vector<BodyPoint> resolve_trails(const MechanismGeometry& geometry, const std::vector<std::string>& trails,
+                                      const std::string& setting = "trail") {
   std::vector<BodyPoint> points;
-  for (const std::string& trail : trails) points.push_back(geometry.resolve(trail, "trail"));
+  for (const std::string& trail : trails) points.push_back(geometry.resolve(trail, setting));
+  return points;
+}
+
+/// --points: each a point of a moving body (a ground point has no velocity to draw).
+std::vector<BodyPoint> resolve_points(const MechanismGeometry& geometry, const std::vector<std::string>& names) {
+  std::vector<BodyPoint> points = resolve_trails(geometry, names, "points");
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (points[i].body < 0)
+      throw Error::invalid(
+          "points",
+          "'" + names[i] + "' is a point of the ground, which does not move; give BODY.POINT of a moving body");
   return points;
 }
 
@@ -144,7 +156,7 @@ class MechanismFrames {
                   const RenderSettings& settings, const std::vector<Overlay>& overlays, std::string ensemble_row)
       : scene_(geometry, motion, resolve_trails(geometry, clip.trails), clip.trail_seconds, clip.settings.arrow_scale,
                clip.settings.elements, clip.settings.free_body,
-               mechanism_camera_mode(settings, geometry) == CameraMode::follow),
+               mechanism_camera_mode(settings, geometry) == CameraMode::follow, resolve_points(geometry, clip.points)),
         motion_(motion),
         settings_(settings),
         labels_{clip.settings.title, run_label(clip.simulation)},
@@ -622,6 +634,7 @@ void MechanismClip::validate(const sym::System& system) const {
   if (frames && fs::exists(*frames, ec) && !fs::is_directory(*frames, ec))
     throw Error::invalid("frames", "'" + frames->string() + "' exists and is not a folder");
   (void)resolve_trails(mechanism_geometry(system), trails);
+  (void)resolve_points(mechanism_geometry(system), points);
   if (!(trail_seconds > 0) || !std::isfinite(trail_seconds))
     throw Error::invalid("trail_length", format_significant(trail_seconds, 6) + " s; valid: seconds > 0, or cycle");
   if (!settings.panel.empty()) (void)mechanism_panel_columns(mechanism_columns(system), settings.panel);

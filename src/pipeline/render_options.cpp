@@ -126,6 +126,10 @@ void trail_length(RenderDraft& d, const std::string& text) {
   d.request.trail_length = text;
 }
 
+void points(RenderDraft& d, const std::string& text) {
+  for (std::string& item : split_commas(text)) d.request.points.push_back(std::move(item));
+}
+
 void ensemble(RenderDraft& d, const std::string& text) {
   const bool whole = !text.empty() && text.size() < 5 && text.find_first_not_of("0123456789") == std::string::npos;
   const int n = whole ? std::stoi(text) : -1;
@@ -205,6 +209,10 @@ std::vector<RenderOption> make_options() {
        "How long a trail is: seconds (\"2.5\"), or cycle: one period of the driver's motion (2 pi/|omega| for a "
        "motion theta0 + omega*t), so a coupler curve closes",
        trail_length},
+      {"points", V::list, "list of strings", "BODY.POINT", "none",
+       "Draw the velocity and acceleration of these points (with --show velocity,acceleration), e.g. 3.P,4.B, each "
+       "arrow labelled with its magnitude",
+       points},
       {"ensemble", V::integer, "integer", "N", "none",
        "Draw N runs (2 .. 200) starting up to spread apart, faint in a colour ramp behind the main run (chaos "
        "fanning out): in the file's [picture] ensemble coordinate (the homework's theta1), else the first",

@@ -302,7 +302,7 @@ void MechanismDrawList::clear() {
 
 MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion& motion, std::vector<BodyPoint> trails,
                                double trail_seconds, const ArrowScaleRequest& arrows, ElementSet shown, bool free_body,
-                               bool relative_velocities)
+                               bool relative_velocities, const std::vector<BodyPoint>& arrow_points)
     : geometry_(std::move(geometry)),
       motion_(motion),
       trails_(std::move(trails)),
@@ -311,6 +311,18 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
       free_body_(free_body),
       relative_velocities_(relative_velocities) {
   if (!shown_.has(Element::trail)) trails_.clear();
+  // The points whose velocity and acceleration are drawn: the trails', then those named
+  // (--points), these labelled with their magnitude.
+  for (const BodyPoint& trail : trails_) marked_.push_back({trail, false});
+  for (const BodyPoint& point : arrow_points) {
+    const auto same = std::find_if(marked_.begin(), marked_.end(), [&](const Marked& m) {
+      return m.point.body == point.body && m.point.local == point.local;
+    });
+    if (same != marked_.end())
+      same->valued = true;
+    else
+      marked_.push_back({point, true});
+  }
   const std::size_t joints = geometry_.joints.size(), samples = motion_.samples.size();
   rail_span_.assign(joints, {1e300, -1e300});
   spring_span_.assign(geometry_.springs.size(), {1e300, 0});
@@ -329,14 +341,15 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
   eval::Program traced;
   if (shown_.has(Element::velocity)) {
     std::vector<GiNaC::ex> velocities;
-    for (const BodyPoint& trail : trails_) {
+    for (const Marked& marked : marked_) {
+      const BodyPoint& trail = marked.point;
       if (trail.body < 0) continue;
       const auto b = static_cast<std::size_t>(trail.body);
       for (std::size_t p = 0; p < geometry_.bodies[b].points.size() && b < geometry_.point_velocities.size(); ++p)
         if (geometry_.bodies[b].points[p].second == trail.local) {
           velocities.push_back(geometry_.point_velocities[b][p][0]);
           velocities.push_back(geometry_.point_velocities[b][p][1]);
-          traced_.push_back(trail);
+          traced_.push_back(marked);
           break;
         }
     }
@@ -344,7 +357,8 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
   }
   // The traced points' places in a sample's named points (bodies in order, each body's
   // points by name), whose accelerations are drawn with the centres of mass's.
-  for (const BodyPoint& trail : trails_) {
+  for (std::size_t m = 0; m < marked_.size(); ++m) {
+    const BodyPoint& trail = marked_[m].point;
     if (trail.body < 0 || !shown_.has(Element::acceleration)) continue;
     std::size_t index = 0;
     for (std::size_t b = 0; b < static_cast<std::size_t>(trail.body); ++b) index += geometry_.bodies[b].points.size();
@@ -352,7 +366,7 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
     const auto own = std::find_if(points.begin(), points.end(), [&](const auto& p) { return p.second == trail.local; });
     if (own == points.end()) continue;
     for (const auto& p : points) index += p.first < own->first ? 1 : 0;
-    traced_points_.push_back(index);
+    traced_points_.emplace_back(m, index);
   }
   std::vector<double> scratch_traced(traced.scratch_size());
   for (std::size_t k = 0; k < samples; ++k) {
@@ -415,7 +429,7 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
     for (std::size_t i = 0; 3 * i + 1 < s.accelerations.size(); ++i)
       largest_acceleration[k] =
           std::max(largest_acceleration[k], std::hypot(s.accelerations[3 * i], s.accelerations[3 * i + 1]));
-    for (const std::size_t p : traced_points_)
+    for (const auto& [m, p] : traced_points_)
       if (6 * p + 5 < s.points.size())
         largest_acceleration[k] =
             std::max(largest_acceleration[k], std::hypot(s.points[6 * p + 4], s.points[6 * p + 5]));
@@ -666,13 +680,10 @@ void MechanismScene::add_load_arrows(std::size_t k, MechanismDrawList& out) cons
   for (std::size_t i = 0; velocity_scale_ > 0 && 2 * i + 1 < traced.size(); ++i) {
     const Vec2 v(traced[2 * i], traced[2 * i + 1]);
     if (v.norm() == 0) continue;
-    const BodyPoint& point = traced_[i];
-    const MechanismGeometry::BodyShape& body = geometry_.bodies[static_cast<std::size_t>(point.body)];
-    std::string name;
-    for (const auto& [n, at] : body.points)
-      if (at == point.local) name = n;
+    const BodyPoint& point = traced_[i].point;
     out.arrows.push_back(force_arrow(Kind::velocity, world_point(motion_.samples[k].pose, point), v,
-                                     tags ? "v of " + body.name + "." + name : ""));
+                                     tags ? "v of " + point_name(point) : ""));
+    if (traced_[i].valued) with_value(out.arrows.back(), "m/s");
     out.arrows.back().body = point.body;
   }
   add_acceleration_arrows(k, out);
@@ -689,20 +700,30 @@ void MechanismScene::add_acceleration_arrows(std::size_t k, MechanismDrawList& o
                                      tags ? "a of " + geometry_.bodies[i].name : ""));
     out.arrows.back().body = static_cast<int>(i);
   }
-  for (std::size_t t = 0, i = 0; acceleration_scale_ > 0 && t < trails_.size(); ++t) {
-    if (trails_[t].body < 0 || i >= traced_points_.size()) continue;
-    const std::size_t p = traced_points_[i++];
-    if (6 * p + 5 >= s.points.size()) continue;
+  for (const auto& [m, p] : traced_points_) {
+    if (acceleration_scale_ <= 0 || 6 * p + 5 >= s.points.size()) continue;
     const Vec2 a(s.points[6 * p + 4], s.points[6 * p + 5]);
     if (a.norm() == 0) continue;
-    const MechanismGeometry::BodyShape& body = geometry_.bodies[static_cast<std::size_t>(trails_[t].body)];
-    std::string name;
-    for (const auto& [n, at] : body.points)
-      if (at == trails_[t].local) name = n;
+    const BodyPoint& point = marked_[m].point;
     out.arrows.push_back(force_arrow(Kind::acceleration, Vec2(s.points[6 * p], s.points[6 * p + 1]), a,
-                                     tags ? "a of " + body.name + "." + name : ""));
-    out.arrows.back().body = trails_[t].body;
+                                     tags ? "a of " + point_name(point) : ""));
+    if (marked_[m].valued) with_value(out.arrows.back(), "m/s²");
+    out.arrows.back().body = point.body;
   }
+}
+
+std::string MechanismScene::point_name(const BodyPoint& point) const {
+  const MechanismGeometry::BodyShape& body = geometry_.bodies[static_cast<std::size_t>(point.body)];
+  std::string name;
+  for (const auto& [n, at] : body.points)
+    if (at == point.local) name = n;
+  return body.name + "." + name;
+}
+
+void MechanismScene::with_value(MechanismDrawList::Arrow& arrow, const char* unit) {
+  // A cut or stretched arrow's label has its value already (force_arrow).
+  if (arrow.label.empty() || arrow.cut || arrow.stretched) return;
+  arrow.label += ": " + format_quantity(arrow.force, unit);
 }
 
 void MechanismScene::add_spring(const MechanismGeometry::SpringShape& spring, std::size_t index,

@@ -5,6 +5,7 @@
 // force and torque arrows and trails.
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/types.hpp"
@@ -235,9 +236,12 @@ class MechanismScene {
   /// distance) with every force on it, a joint's pin drawn on each of its bodies.
   /// `relative_velocities`: velocities drawn relative to the centre of mass G (what a
   /// camera following G shows), the legend saying so; else in the world frame.
+  /// `points`: points of bodies whose velocity and acceleration arrows are drawn (when
+  /// those elements are shown) with their magnitude, besides the trails' points.
   MechanismScene(MechanismGeometry geometry, const MechanismMotion& motion, std::vector<BodyPoint> trails,
                  double trail_seconds = 2.0, const ArrowScaleRequest& arrows = {},
-                 ElementSet shown = ElementSet::defaults(), bool free_body = false, bool relative_velocities = false);
+                 ElementSet shown = ElementSet::defaults(), bool free_body = false, bool relative_velocities = false,
+                 const std::vector<BodyPoint>& points = {});
 
   /// Force arrows shorter than `metres` (but not zero) are drawn `drawn` long (0: that
   /// long) and marked stretched, their labels giving the value; the legend says whether any is.
@@ -275,7 +279,12 @@ class MechanismScene {
   MechanismGeometry geometry_;
   const MechanismMotion& motion_;
   std::vector<BodyPoint> trails_;
-  std::vector<BodyPoint> traced_;  // the trails' points on bodies, whose velocities are drawn
+  struct Marked {
+    BodyPoint point;
+    bool valued = false;  // named by --points: its arrows' labels give their magnitude
+  };
+  std::vector<Marked> marked_;  // the trails' points, then the named ones
+  std::vector<Marked> traced_;  // those on bodies, whose velocities are drawn
   double trail_seconds_;
   Bounds bounds_, view_bounds_;
   double reach_ = 0, view_reach_ = 0, force_scale_ = 0, applied_scale_ = 0, arrow_cap_ = 0, torque_scale_ = 0,
@@ -291,9 +300,10 @@ class MechanismScene {
   bool free_body_ = false;
   bool relative_velocities_ = false;
   double gravity_scale_ = 0, spring_scale_ = 0, velocity_scale_ = 0, acceleration_scale_ = 0;
-  double driver_scale_ = 0;                 // a slider driver's force arrows, m/N
-  double driver_torque_scale_ = 0;          // a pin driver's torque arcs, rad/(N m)
-  std::vector<std::size_t> traced_points_;  // per traced point on a body: its index in MechanismSample::points
+  double driver_scale_ = 0;         // a slider driver's force arrows, m/N
+  double driver_torque_scale_ = 0;  // a pin driver's torque arcs, rad/(N m)
+  /// Per marked point on a body: its index in marked_ and in MechanismSample::points.
+  std::vector<std::pair<std::size_t, std::size_t>> traced_points_;
 
   void add_spring(const MechanismGeometry::SpringShape& spring, std::size_t index, const std::vector<double>& pose,
                   MechanismDrawList& out) const;
@@ -302,6 +312,10 @@ class MechanismScene {
   void add_load_arrows(std::size_t k, MechanismDrawList& out) const;
   void add_acceleration_arrows(std::size_t k, MechanismDrawList& out) const;
   void add_motors(std::size_t k, MechanismDrawList& out) const;
+  /// "3.P": a point of a body as --points names it.
+  [[nodiscard]] std::string point_name(const BodyPoint& point) const;
+  /// Its magnitude added to an arrow's label.
+  static void with_value(MechanismDrawList::Arrow& arrow, const char* unit);
   /// An arc's radius for a torque on a body of this shape, m.
   [[nodiscard]] double torque_radius(const MechanismGeometry::BodyShape& shape) const;
   void place_joints(const std::vector<double>& pose, std::size_t first_marker, std::size_t first_line,

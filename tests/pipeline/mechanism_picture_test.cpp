@@ -4,9 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <tuple>
 
 #include "columns/mechanism_columns.hpp"
 #include "core/error.hpp"
@@ -606,6 +608,71 @@ TEST(MechanismPicture, ATrailOverADriversCycleCloses) {
   EXPECT_NE(refusal("four-bar").find("cycle needs a [[driver]], and four-bar has none"), std::string::npos);
   EXPECT_NE(refusal(data + "driven-four-bar.toml").find("does not turn at a constant rate"), std::string::npos);
   EXPECT_NE(refusal(data + "driven-cart-pendulum.toml").find("moves slider S"), std::string::npos);
+}
+
+// Issue 25, Deliver 8: --show velocity,acceleration --points 3.P,4.B: at each named point
+// its velocity and acceleration (world frame), each kind its own scale, labelled with its
+// magnitude; the values are the sample's kinematics of those points (MechanismSample::points,
+// the 3.P.x_dot ... columns), independent of the scene's own derivative of the position.
+TEST(MechanismPicture, NamedPointsCarryTheirVelocityAndAcceleration) {
+  const sym::System system(
+      load_mechanism(std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/driven-four-bar.toml"));
+  std::vector<double> times;
+  for (int k = 0; k <= 10; ++k) times.push_back(k / 10.0);
+  SimulationOptions options;
+  options.duration = 1.0;
+  ClipResult result;
+  const MechanismMotion motion = sample_mechanism_motion(system, sym::checked_initial_state(system).state, options,
+                                                         times, 1, result, {}, {}, nullptr, {}, true);
+  const MechanismGeometry geometry = mechanism_geometry(system);
+  const std::vector<BodyPoint> points{geometry.resolve("3.P", "points"), geometry.resolve("4.B", "points")};
+  // Their places in the sample's named points: bodies in order, each body's points by name.
+  const std::vector<eval::NamedPoint> named = eval::named_points(system);
+  const auto index_of = [&](std::size_t body, const std::string& name) {
+    for (std::size_t i = 0; i < named.size(); ++i)
+      if (named[i].body == body && named[i].name == name) return i;
+    return named.size();
+  };
+  const std::array<std::size_t, 2> index{index_of(1, "P"), index_of(2, "B")};
+  const std::array<std::string, 2> names{"3.P", "4.B"};
+  ElementSet shown = ElementSet::defaults();
+  shown.show(Element::velocity);
+  shown.show(Element::acceleration);
+  const MechanismScene scene(geometry, motion, {}, 2.0, {}, shown, false, false, points);
+  EXPECT_NE(scene.scale_of(Kind::velocity), scene.scale_of(Kind::acceleration));
+  MechanismDrawList list;
+  for (const std::size_t k : {3UL, 10UL}) {
+    SCOPED_TRACE(k);
+    scene.frame(k, list);
+    const eval::MechanismSample& s = motion.samples[k];
+    for (std::size_t i = 0; i < 2; ++i) {
+      SCOPED_TRACE(names[i]);
+      const std::size_t p = index[i];
+      ASSERT_LT(6 * p + 5, s.points.size());
+      const Vec2 at(s.points[6 * p], s.points[6 * p + 1]), v(s.points[6 * p + 2], s.points[6 * p + 3]),
+          a(s.points[6 * p + 4], s.points[6 * p + 5]);
+      for (const auto& [kind, value, symbol, unit] :
+           {std::tuple{Kind::velocity, v, "v", "m/s"}, std::tuple{Kind::acceleration, a, "a", "m/s²"}}) {
+        const auto arrows = arrows_of(list, kind);
+        const auto drawn = std::find_if(arrows.begin(), arrows.end(), [&](const auto& arrow) {
+          return arrow.label.rfind(std::string(symbol) + " of " + names[i], 0) == 0;
+        });
+        ASSERT_NE(drawn, arrows.end());
+        EXPECT_NEAR((drawn->tail - at).norm(), 0, 1e-12);
+        EXPECT_NEAR(drawn->force, value.norm(), 1e-9 * value.norm());
+        EXPECT_NEAR(drawn->vector.normalized().dot(value.normalized()), 1, 1e-9);
+        if (!drawn->cut && !drawn->stretched) {
+          EXPECT_NEAR(drawn->vector.norm(), scene.scale_of(kind) * value.norm(), 1e-9 * drawn->vector.norm());
+        }
+        EXPECT_EQ(drawn->label, std::string(symbol) + " of " + names[i] + ": " + format_quantity(drawn->force, unit));
+      }
+    }
+  }
+  // Without velocity and acceleration shown (the default), none.
+  const MechanismScene plain(geometry, motion, {}, 2.0, {}, ElementSet::defaults(), false, false, points);
+  plain.frame(3, list);
+  EXPECT_TRUE(arrows_of(list, Kind::velocity).empty());
+  EXPECT_TRUE(arrows_of(list, Kind::acceleration).empty());
 }
 
 }  // namespace

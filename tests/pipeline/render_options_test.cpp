@@ -44,7 +44,7 @@ TEST(RenderOptions, NamesAreUniqueAndEachIsDocumented) {
     EXPECT_FALSE(o.placeholder.empty()) << o.name;
     EXPECT_NE(o.apply, nullptr) << o.name;
   }
-  EXPECT_EQ(names.size(), 19U);
+  EXPECT_EQ(names.size(), 20U);
 }
 
 TEST(RenderOptions, APlainDefaultGivenAsTextChangesNothing) {
