@@ -108,9 +108,11 @@ void angles(RenderDraft& d, const std::string& text) {
   d.request.settings.angles = as_setting("angles", [&] { return parse_angle_unit(text, "angles"); });
 }
 
-void trail(RenderDraft& d, const std::string& text) {
-  for (std::string& item : split_commas(text)) d.request.trails.push_back(std::move(item));
+void append_items(std::vector<std::string>& to, const std::string& text) {
+  for (std::string& item : split_commas(text)) to.push_back(std::move(item));
 }
+
+void trail(RenderDraft& d, const std::string& text) { append_items(d.request.trails, text); }
 
 void trail_length(RenderDraft& d, const std::string& text) {
   if (text != "cycle") {
@@ -126,9 +128,7 @@ void trail_length(RenderDraft& d, const std::string& text) {
   d.request.trail_length = text;
 }
 
-void points(RenderDraft& d, const std::string& text) {
-  for (std::string& item : split_commas(text)) d.request.points.push_back(std::move(item));
-}
+void points(RenderDraft& d, const std::string& text) { append_items(d.request.points, text); }
 
 void ensemble(RenderDraft& d, const std::string& text) {
   const bool whole = !text.empty() && text.size() < 5 && text.find_first_not_of("0123456789") == std::string::npos;
@@ -190,7 +190,8 @@ std::vector<RenderOption> make_options() {
       {"arrow_scale", V::string, "string", "SPEC", "each kind its own",
        "Arrow lengths: each kind its own scale (default); common (every force one scale, so the pin force reads "
        "against gravity; common=N_PER_CM sets it); KIND=N_PER_CM,... fixes kinds (pin, gravity, velocity; a "
-       "mechanism's joint (or pin), applied, gravity, spring, velocity, acceleration). Arrows too short to see are "
+       "mechanism's joint (or pin), applied, gravity, spring, velocity, acceleration, driver). Arrows too short to see "
+       "are "
        "drawn dashed at a least "
        "length, labelled with "
        "their value",
@@ -202,7 +203,8 @@ std::vector<RenderOption> make_options() {
       {"angles", V::string, "string", "rad|deg", "\"rad\"",
        "Unit of the panel's angles and angular rates: rad or deg (axis in deg, deg/s)", angles},
       {"trail", V::list, "list of strings", "BODY.POINT", "none",
-       "Draw the path of a body's point over the last 2 s, e.g. 3.B (a four-bar's coupler curve); default: the "
+       "Draw the path of a body's point over the last trail_length (2 s), e.g. 3.B (a four-bar's coupler curve); "
+       "default: the "
        "file's [picture] trail (the homework's P)",
        trail},
       {"trail_length", V::string, "string", "S|cycle", "\"2\"",

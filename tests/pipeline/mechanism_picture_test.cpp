@@ -22,13 +22,20 @@ namespace {
 
 using Kind = MechanismDrawList::Arrow::Kind;
 
-MechanismMotion motion_of(const sym::System& system, double duration, double fps) {
+// A mechanism file of tests/data/mechanisms/.
+std::string test_data(const std::string& file) {
+  return std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/" + file;
+}
+
+MechanismMotion motion_of(const sym::System& system, double duration, double fps, int trail_steps = 1,
+                          bool accelerations = false) {
   std::vector<double> times;
   for (long k = 0; k <= std::lround(duration * fps); ++k) times.push_back(static_cast<double>(k) / fps);
   SimulationOptions options;
   options.duration = duration;
   ClipResult result;
-  return sample_mechanism_motion(system, sym::checked_initial_state(system).state, options, times, 1, result);
+  return sample_mechanism_motion(system, sym::checked_initial_state(system).state, options, times, trail_steps, result,
+                                 {}, {}, nullptr, {}, accelerations);
 }
 
 std::vector<MechanismDrawList::Arrow> arrows_of(const MechanismDrawList& list, Kind kind) {
@@ -475,8 +482,7 @@ TEST(MechanismPicture, FreeBodyViewPullsEachBodyApartWithItsForces) {
 // about O2 turning counter-clockwise for M.torque > 0 with the column's value in its label;
 // shown by default, hidden by --hide motor, absent from a file with no driver.
 TEST(MechanismPicture, ADriverIsAMotorAtItsJointWithItsTorque) {
-  const sym::System system(
-      load_mechanism(std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/driven-four-bar.toml"));
+  const sym::System system(load_mechanism(test_data("driven-four-bar.toml")));
   const MechanismMotion motion = motion_of(system, 2.0, 10);
   const MechanismScene scene(mechanism_geometry(system), motion, {});
   const std::vector<MechanismColumn> columns = mechanism_columns(system);
@@ -535,8 +541,7 @@ TEST(MechanismPicture, ADriverIsAMotorAtItsJointWithItsTorque) {
 // A slider's driver: driven-cart-pendulum.toml's D moves the cart along slider S: the
 // motor at the guide along the rail, its force an arrow along the axis with D.force's value.
 TEST(MechanismPicture, ASliderDriverIsAMotorAlongItsAxisWithItsForce) {
-  const sym::System system(
-      load_mechanism(std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/driven-cart-pendulum.toml"));
+  const sym::System system(load_mechanism(test_data("driven-cart-pendulum.toml")));
   const MechanismMotion motion = motion_of(system, 1.0, 10);
   const MechanismScene scene(mechanism_geometry(system), motion, {});
   MechanismDrawList list;
@@ -564,20 +569,13 @@ TEST(MechanismPicture, ASliderDriverIsAMotorAlongItsAxisWithItsForce) {
 // r w^2 dt^2/8 = 0.1 x 144/120^2/8 = 1.25e-4 m for A at r = 0.1 m (without it, up to
 // r w dt = 1 cm), far below a pixel of the picture (0.7 m over 1280 px).
 TEST(MechanismPicture, ATrailOverADriversCycleCloses) {
-  const sym::System system(
-      load_mechanism(std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/offset-slider-crank.toml"));
+  const sym::System system(load_mechanism(test_data("offset-slider-crank.toml")));
   const double period = driver_cycle_seconds(system);
   EXPECT_NEAR(period, 2 * std::numbers::pi / 12, 1e-12);
   EXPECT_NEAR(trail_seconds_of(system, "cycle"), period, 0);
   EXPECT_EQ(trail_seconds_of(system, ""), 2.0);
   EXPECT_EQ(trail_seconds_of(system, "2.5"), 2.5);
-  std::vector<double> times;
-  for (int k = 0; k <= 30; ++k) times.push_back(k / 30.0);
-  SimulationOptions options;
-  options.duration = 1.0;
-  ClipResult result;
-  const MechanismMotion motion =
-      sample_mechanism_motion(system, sym::checked_initial_state(system).state, options, times, 4, result);
+  const MechanismMotion motion = motion_of(system, 1.0, 30, 4);
   const MechanismGeometry geometry = mechanism_geometry(system);
   const BodyPoint a = geometry.resolve("rod.A", "trail");
   const MechanismScene scene(geometry, motion, {a}, period);
@@ -604,10 +602,9 @@ TEST(MechanismPicture, ATrailOverADriversCycleCloses) {
     }
     return std::string("no error");
   };
-  const std::string data = std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/";
   EXPECT_NE(refusal("four-bar").find("cycle needs a [[driver]], and four-bar has none"), std::string::npos);
-  EXPECT_NE(refusal(data + "driven-four-bar.toml").find("does not turn at a constant rate"), std::string::npos);
-  EXPECT_NE(refusal(data + "driven-cart-pendulum.toml").find("moves slider S"), std::string::npos);
+  EXPECT_NE(refusal(test_data("driven-four-bar.toml")).find("does not turn at a constant rate"), std::string::npos);
+  EXPECT_NE(refusal(test_data("driven-cart-pendulum.toml")).find("moves slider S"), std::string::npos);
 }
 
 // Issue 25, Deliver 8: --show velocity,acceleration --points 3.P,4.B: at each named point
@@ -615,15 +612,8 @@ TEST(MechanismPicture, ATrailOverADriversCycleCloses) {
 // magnitude; the values are the sample's kinematics of those points (MechanismSample::points,
 // the 3.P.x_dot ... columns), independent of the scene's own derivative of the position.
 TEST(MechanismPicture, NamedPointsCarryTheirVelocityAndAcceleration) {
-  const sym::System system(
-      load_mechanism(std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/driven-four-bar.toml"));
-  std::vector<double> times;
-  for (int k = 0; k <= 10; ++k) times.push_back(k / 10.0);
-  SimulationOptions options;
-  options.duration = 1.0;
-  ClipResult result;
-  const MechanismMotion motion = sample_mechanism_motion(system, sym::checked_initial_state(system).state, options,
-                                                         times, 1, result, {}, {}, nullptr, {}, true);
+  const sym::System system(load_mechanism(test_data("driven-four-bar.toml")));
+  const MechanismMotion motion = motion_of(system, 1.0, 10, 1, true);
   const MechanismGeometry geometry = mechanism_geometry(system);
   const std::vector<BodyPoint> points{geometry.resolve("3.P", "points"), geometry.resolve("4.B", "points")};
   // Their places in the sample's named points: bodies in order, each body's points by name.
