@@ -831,13 +831,14 @@ void MechanismScene::add_motors(std::size_t k, MechanismDrawList& out) const {
     switch (joint.type) {
       case JointType::pin: {
         const Vec2 at = world_point(s.pose, joint.points[0]);
-        out.motors.push_back({at, Vec2::UnitX(), false, held});
+        // With the body it turns in the free-body view, as the joint's pin on the ground is.
+        out.motors.push_back({at, Vec2::UnitX(), false, moved});
         if (driver_torque_scale_ <= 0 || value == 0) break;
         // Clear of the motor's symbol around the joint.
         const double radius =
             std::max(extent_ / 16, moved < 0 ? 0.0 : torque_radius(geometry_.bodies[static_cast<std::size_t>(moved)]));
         const double sweep = std::copysign(std::min(driver_torque_scale_ * std::fabs(value), kLongestSweep), value);
-        out.torques.push_back({at, radius, theta1 + std::numbers::pi - 0.5 * sweep, sweep, label, held, true});
+        out.torques.push_back({at, radius, theta1 + std::numbers::pi - 0.5 * sweep, sweep, label, moved, true});
         break;
       }
       case JointType::slider: {
@@ -916,7 +917,7 @@ void legend_for_frame(MechanismDrawList& out) {
   legend.applied = legend.applied && (present(Kind::applied) || std::any_of(out.torques.begin(), out.torques.end(),
                                                                             [](const auto& t) { return !t.driver; }));
   std::erase_if(legend.rows, [&](const MechanismDrawList::Legend::Row& row) {
-    return !(present(row.kind) || (row.kind == Kind::driver && row.sweep > 0 && driver_torque));
+    return row.kind == Kind::driver && row.sweep > 0 ? !driver_torque : !present(row.kind);
   });
   legend.relative_velocity = legend.relative_velocity && present(Kind::velocity);
   legend.cut = std::any_of(out.arrows.begin(), out.arrows.end(), [](const auto& a) { return a.cut; });
