@@ -21,6 +21,7 @@
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
 #include "core/progress.hpp"
+#include "model/spanning_tree.hpp"
 #include "pipeline/clip_request.hpp"
 #include "pipeline/mechanism_clip.hpp"
 #include "pipeline/render_options.hpp"
@@ -141,7 +142,8 @@ ClipResult render_mechanism(const RenderFlags& f, const ClipProgress& progress) 
     int kept = 0;
     for (const sym::JointSystem& joint : system.joints())
       if (clip.simulation.case_id == 1 || !joint.in_tree) ++kept;
-    note_ignored_simulation_flags(f.simulation, clip.simulation, kept);
+    note_ignored_simulation_flags(f.simulation, clip.simulation, kept,
+                                  !system.drivers().empty() && degrees_of_freedom(system.mechanism()) == 0);
     if (!checked.closure_note.empty()) std::fprintf(stderr, "linkage: note: %s\n", checked.closure_note.c_str());
   }
   // Sampling the motion compiles more of a long chain's expressions: until the output is

@@ -209,13 +209,14 @@ void run_simulate_mechanism(const SimulateOptions& o, SimulationOptions s, doubl
   const bool asked = o.columns_option != nullptr && o.columns_option->count() > 0;
   const std::vector<MechanismColumn> columns =
       default_interface
-          ? named_columns(all, o.columns == "all" ? table_columns(system.mechanism()) : o.columns, "--columns")
-          : select_mechanism_columns(all, asked ? o.columns : "default", "--columns");
+          ? named_columns(all, o.columns == "all" ? table_columns(system.mechanism()) : o.columns, "--columns", &system)
+          : select_mechanism_columns(all, asked ? o.columns : "default", "--columns", &system);
   s.kinematics = needs_kinematics(columns);
   MechanismSimulation simulation(system, checked.state, s, checked.cases.front().system);
   deriving.done();
   if (!o.quiet) {
-    note_ignored_simulation_flags(o.simulation, s, simulation.dynamics().constraint_rows());
+    note_ignored_simulation_flags(o.simulation, s, simulation.dynamics().constraint_rows(),
+                                  simulation.stats().kinematic);
     if (!checked.closure_note.empty()) std::fprintf(stderr, "linkage: note: %s\n", checked.closure_note.c_str());
   }
   std::optional<AtomicFile> file;
@@ -238,21 +239,25 @@ void run_simulate_mechanism(const SimulateOptions& o, SimulationOptions s, doubl
   if (file) file->commit();
   std::fflush(stdout);
   const MechanismStats& st = simulation.stats();
-  const std::string method = method_text(s);
+  // Kinematic analysis: no integrator, no stabilization; its steps are the continuation's.
+  const std::string method = st.kinematic ? "kinematic analysis (0 degrees of freedom)"
+                                          : method_text(s) + ", stabilize " + std::string(name(s.stabilization));
   // The largest constraint error in its joint's unit, naming the joint.
   std::string constraint = format_significant(st.max_constraint_error, 3);
   if (const Joint* joint = system.mechanism().find_joint(st.drifted_joint))
     constraint += std::string(" ") + sym::joint_stages(joint->type).constraint_unit + " (joint " + joint->name + ")";
   std::fprintf(stderr,
-               "linkage simulate: %s, Case %d, %s, stabilize %s, 0 to %s s, %ld rows\n"
-               "  steps: %lld accepted, %lld rejected; right-hand side evaluations: %lld\n"
+               "linkage simulate: %s, Case %d, %s, 0 to %s s, %ld rows\n"
+               "  %s: %lld accepted, %lld rejected; %s: %lld\n"
                "  largest energy balance error: %s of the energy scale %s J; largest constraint error: %s\n"
-               "  wall time: %s s (integration %s s); evaluator: %s\n",
-               system.mechanism().name.c_str(), s.case_id, method.c_str(), std::string(name(s.stabilization)).c_str(),
-               format_roundtrip(s.duration).c_str(), samples.count, static_cast<long long>(st.steps_accepted),
-               static_cast<long long>(st.steps_rejected), static_cast<long long>(st.rhs_evaluations),
-               format_significant(st.max_energy_error, 3).c_str(), format_significant(st.energy_scale, 4).c_str(),
-               constraint.c_str(), format_significant(wall, 3).c_str(), format_significant(st.wall_seconds, 3).c_str(),
+               "  wall time: %s s (%s %s s); evaluator: %s\n",
+               system.mechanism().name.c_str(), s.case_id, method.c_str(), format_roundtrip(s.duration).c_str(),
+               samples.count, st.kinematic ? "continuation steps" : "steps", static_cast<long long>(st.steps_accepted),
+               static_cast<long long>(st.steps_rejected),
+               st.kinematic ? "position solves" : "right-hand side evaluations",
+               static_cast<long long>(st.rhs_evaluations), format_significant(st.max_energy_error, 3).c_str(),
+               format_significant(st.energy_scale, 4).c_str(), constraint.c_str(), format_significant(wall, 3).c_str(),
+               st.kinematic ? "kinematic analysis" : "integration", format_significant(st.wall_seconds, 3).c_str(),
                st.evaluator.c_str());
   const std::string warning = mechanism_result_warning(s, st);
   if (!warning.empty()) std::fprintf(stderr, "linkage: warning: %s\n", warning.c_str());
@@ -302,7 +307,9 @@ void register_simulate(CLI::App& app) {
                       "--mechanism: default (t, every body's x, y, theta, every slider's s), all, or names. The "
                       "homework (no --mechanism) names them as its table always has, e.g. x1, theta2_dot, "
                       "x1_ddot, F_x (the pin force on block 1, N), constraint_position_error (m), "
-                      "constraint_velocity_error (m/s), x2, y2; all of them by default")
+                      "constraint_velocity_error (m/s), x2, y2; all of them by default. NAME=EXPRESSION defines a "
+                      "column over the others, the parameters and the functions of mechanism files: "
+                      "gamma=4.theta-3.theta (an angle: in --angles' unit), P=M.torque*2.theta_dot (W)")
           ->type_name("LIST");
   add_angle_option(sub, o->angles, "angle columns (theta, rates, accelerations) in the table");
   sub->add_flag("--quiet", o->quiet, "No progress or notes on stderr (the summary and warnings stay)");

@@ -21,13 +21,15 @@ void add_simulation_flags(CLI::App* sub, SimulationFlags& o) {
   std::string names;
   for (const IntegratorInfo& i : integrators())
     names += "\n  " + std::string(i.name) + ": " + std::string(i.description);
-  sub->add_option("--integrator", o.integrator, "Integrator (default " + o.integrator + "):" + names)
-      ->type_name("NAME")
-      ->group(group);
-  sub->add_option("--dt", o.numbers["dt"],
-                  "Step of fixed-step integrators, first step of adaptive ones, s (default " + fmt(d.dt) + ")")
-      ->type_name("S")
-      ->group(group);
+  o.integrator_option =
+      sub->add_option("--integrator", o.integrator, "Integrator (default " + o.integrator + "):" + names)
+          ->type_name("NAME")
+          ->group(group);
+  o.dt_option =
+      sub->add_option("--dt", o.numbers["dt"],
+                      "Step of fixed-step integrators, first step of adaptive ones, s (default " + fmt(d.dt) + ")")
+          ->type_name("S")
+          ->group(group);
   o.rtol_option =
       sub->add_option("--rtol", o.numbers["rtol"],
                       "Relative tolerance of adaptive integrators, in [1e-14, 1] (default " + fmt(d.rtol) + ")")
@@ -39,12 +41,13 @@ void add_simulation_flags(CLI::App* sub, SimulationFlags& o) {
                                       fmt(d.atol) + ")")
                       ->type_name("NUM")
                       ->group(group);
-  sub->add_option("--stabilize", o.stabilize,
-                  "Constraint stabilization of Case 1: none, baumgarte (C'' + 2 alpha C' + beta^2 C = 0) or "
-                  "projection (back onto the joints' constraints after every step) (default " +
-                      o.stabilize + ")")
-      ->type_name("KIND")
-      ->group(group);
+  o.stabilize_option =
+      sub->add_option("--stabilize", o.stabilize,
+                      "Constraint stabilization of Case 1: none, baumgarte (C'' + 2 alpha C' + beta^2 C = 0) or "
+                      "projection (back onto the joints' constraints after every step) (default " +
+                          o.stabilize + ")")
+          ->type_name("KIND")
+          ->group(group);
   sub->add_option("--evaluator", o.evaluator,
                   "What computes the equations: compiled (native code: built in for the shipped mechanisms, "
                   "else compiled with the system's c++ and cached in $XDG_CACHE_HOME/linkage/native), "
@@ -84,8 +87,22 @@ SimulationOptions resolve_simulation_flags(const SimulationFlags& o, double dura
   return s;
 }
 
-void note_ignored_simulation_flags(const SimulationFlags& o, const SimulationOptions& s, int kept_constraints) {
+void note_ignored_simulation_flags(const SimulationFlags& o, const SimulationOptions& s, int kept_constraints,
+                                   bool kinematic) {
   const auto note = [](const std::string& text) { std::fprintf(stderr, "linkage: note: %s\n", text.c_str()); };
+  if (kinematic) {
+    std::string given;
+    for (const auto& [option, flag] :
+         {std::pair{o.integrator_option, "--integrator"}, std::pair{o.dt_option, "--dt"},
+          std::pair{o.rtol_option, "--rtol"}, std::pair{o.atol_option, "--atol"},
+          std::pair{o.stabilize_option, "--stabilize"}, std::pair{o.alpha_option, "--baumgarte-alpha"},
+          std::pair{o.beta_option, "--baumgarte-beta"}})
+      if (option != nullptr && option->count() > 0) given += (given.empty() ? "" : ", ") + std::string(flag);
+    if (!given.empty())
+      note("kinematic analysis (0 degrees of freedom): the drivers fix the motion and nothing is integrated, so " +
+           given + " not used");
+    return;
+  }
   if (kept_constraints == 0 && s.stabilization != Stabilization::none)
     note("Case " + std::to_string(s.case_id) +
          " keeps no constraint here (its coordinates meet every joint by construction); --stabilize " +

@@ -17,6 +17,9 @@ struct SimulationFlags {
   std::map<std::string_view, std::string> numbers;  // by kNumberOptions' name: "dt", "rtol", ...
   std::string stabilize = "none";
   std::string evaluator = "auto";
+  CLI::Option* integrator_option = nullptr;
+  CLI::Option* dt_option = nullptr;
+  CLI::Option* stabilize_option = nullptr;
   CLI::Option* rtol_option = nullptr;
   CLI::Option* atol_option = nullptr;
   CLI::Option* alpha_option = nullptr;
@@ -29,8 +32,10 @@ void add_simulation_flags(CLI::App* sub, SimulationFlags& flags);
 [[nodiscard]] SimulationOptions resolve_simulation_flags(const SimulationFlags& flags, double duration);
 /// Notes on stderr for flags that do nothing in this configuration (e.g. --stabilize
 /// with Case 3, --rtol with a fixed-step integrator). `kept_constraints`: for a mechanism
-/// file, how many constraint rows the case keeps; -1 for the homework.
+/// file, how many constraint rows the case keeps; -1 for the homework. `kinematic`: the
+/// drivers take every degree of freedom, so nothing is integrated and one note names the
+/// integrator's flags given.
 void note_ignored_simulation_flags(const SimulationFlags& flags, const SimulationOptions& options,
-                                   int kept_constraints = -1);
+                                   int kept_constraints = -1, bool kinematic = false);
 
 }  // namespace linkage::cli

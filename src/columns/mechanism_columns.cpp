@@ -4,10 +4,12 @@
 #include <cctype>
 #include <cmath>
 #include <limits>
-#include <sstream>
 
+#include "columns/expression_column.hpp"
 #include "core/error.hpp"
 #include "core/name_match.hpp"
+#include "core/parse_text.hpp"
+#include "model/spanning_tree.hpp"
 #include "symbolic/joints.hpp"
 
 namespace linkage {
@@ -111,14 +113,32 @@ std::vector<MechanismColumn> mechanism_columns(const sym::System& system) {
                      std::string(axes[c]) + " of body " + system.bodies()[b].name + "'s centre of mass less G's",
                      Q::from_com, 2 * b + c, false});
   out.push_back({"energy", "J", "kinetic plus potential energy", Q::energy, 0, false});
+  // Kinematic analysis integrates nothing: the work is the power's quadrature along the
+  // solved path (integrate/kinematic_path.hpp), so the balance checks the torques to round-off.
+  const bool kinematic = !system.drivers().empty() && degrees_of_freedom(m) == 0;
   out.push_back({"work", "J",
                  system.drivers().empty() ? "work done by dampers and applied loads since t = 0"
-                                          : "work done by dampers, applied loads and drivers since t = 0",
-                 Q::work, 0, false});
-  out.push_back({"energy_error", "J", "energy balance E - E(0) - work: 0 up to the integration error", Q::energy_error,
-                 0, false});
+                 : kinematic ? "work done by dampers, applied loads and drivers since t = 0 (their power integrated "
+                               "along the solved motion by Gauss-Legendre quadrature to round-off)"
+                             : "work done by dampers, applied loads and drivers since t = 0",
+                 Q::work, system.drivers().empty() ? 0U : 1U, false});  // index 1: with the drivers'
+  out.push_back({"energy_error", "J",
+                 kinematic ? "energy balance E - E(0) - work: 0 up to round-off (kinematic analysis)"
+                           : "energy balance E - E(0) - work: 0 up to the integration error",
+                 Q::energy_error, 0, false});
   out.push_back({"energy_error_relative", "", "|E - E(0) - work| / the energy scale (simulate's energy_scale)",
                  Q::energy_error_relative, 0, false});
+  if (grounded(m)) {
+    out.push_back({"shaking_force_x", "N",
+                   "shaking force, x: the resultant the moving bodies exert on the ground through its joints, "
+                   "drivers and springs",
+                   Q::shaking, 0, false});
+    out.push_back({"shaking_force_y", "N", "shaking force, y", Q::shaking, 1, false});
+    out.push_back({"shaking_moment", "N m",
+                   "shaking moment: the moment of the shaking force about the world origin, with the drivers' "
+                   "reaction torques and the ground pins' spring-damper torques",
+                   Q::shaking, 2, false});
+  }
   if (!grounded(m)) {
     out.push_back({"momentum_x", "kg m/s", "linear momentum, x", Q::momentum_x, 0, false});
     out.push_back({"momentum_y", "kg m/s", "linear momentum, y", Q::momentum_y, 0, false});
@@ -143,7 +163,8 @@ std::vector<MechanismColumn> mechanism_columns(const sym::System& system) {
 constexpr std::size_t kLongestValidList = 400;
 
 MechanismColumn find_mechanism_column(const std::vector<MechanismColumn>& all, const std::string& name,
-                                      const std::string& origin, bool groups) {
+                                      const std::string& origin, bool groups, const sym::System* system) {
+  if (defines_column(name)) return expression_column(all, system, name, origin);
   std::vector<std::string> names;
   if (groups) names = {"default", "all"};
   std::string nearest;
@@ -177,11 +198,13 @@ MechanismColumn find_mechanism_column(const std::vector<MechanismColumn>& all, c
 
 std::vector<MechanismColumn> select_mechanism_columns(const std::vector<MechanismColumn>& all,
                                                       const std::vector<std::string>& names,
-                                                      const std::function<std::string(std::size_t)>& origin) {
-  std::vector<MechanismColumn> out;
+                                                      const std::function<std::string(std::size_t)>& origin,
+                                                      const sym::System* system) {
+  std::vector<MechanismColumn> out, defined = all;  // a definition may use those before it
   for (std::size_t i = 0; i < names.size(); ++i) {
     if (names[i] != "default" && names[i] != "all") {
-      out.push_back(find_mechanism_column(all, names[i], origin(i), true));
+      out.push_back(find_mechanism_column(defined, names[i], origin(i), true, system));
+      if (out.back().quantity == MechanismQuantity::expression) defined.push_back(out.back());
       continue;
     }
     for (const MechanismColumn& c : all)
@@ -193,15 +216,15 @@ std::vector<MechanismColumn> select_mechanism_columns(const std::vector<Mechanis
 }
 
 std::vector<MechanismColumn> select_mechanism_columns(const std::vector<MechanismColumn>& all, const std::string& spec,
-                                                      const std::string& origin) {
-  std::vector<std::string> names;
-  std::stringstream in(spec);
-  for (std::string item; std::getline(in, item, ',');) names.push_back(item);
+                                                      const std::string& origin, const sym::System* system) {
+  std::vector<std::string> names = split_commas(spec);
+  if (!names.empty() && names.back().empty()) names.pop_back();  // "a,b," as getline read it
   if (names.empty()) {
     for (const MechanismColumn& c : all) names.push_back(c.name);
     throw Error::input(origin + ": empty list; valid: default, all, " + join_names(names));
   }
-  return select_mechanism_columns(all, names, [&](std::size_t) { return origin; });
+  return select_mechanism_columns(
+      all, names, [&](std::size_t) { return origin; }, system);
 }
 
 bool needs_kinematics(const std::vector<MechanismColumn>& columns) {
@@ -210,6 +233,10 @@ bool needs_kinematics(const std::vector<MechanismColumn>& columns) {
       case MechanismQuantity::slider_acceleration:
       case MechanismQuantity::point:
         return true;
+      case MechanismQuantity::expression:
+        for (const auto& [symbol, input] : c.expression->inputs)
+          if (needs_kinematics({input})) return true;
+        break;
       case MechanismQuantity::time:
       case MechanismQuantity::position:
       case MechanismQuantity::rate:
@@ -233,18 +260,22 @@ bool needs_kinematics(const std::vector<MechanismColumn>& columns) {
       case MechanismQuantity::momentum_y_error:
       case MechanismQuantity::angular_momentum_error:
       case MechanismQuantity::com_parabola_error:
+      case MechanismQuantity::shaking:
         break;
     }
   return false;
 }
 
 std::vector<MechanismColumn> named_columns(const std::vector<MechanismColumn>& all, std::string_view list,
-                                           const std::string& origin) {
+                                           const std::string& origin, const sym::System* system) {
   if (list == "all") return all;
-  std::vector<MechanismColumn> out;
-  for (std::size_t start = 0; start <= list.size();) {
-    const std::size_t comma = std::min(list.find(',', start), list.size());
-    const std::string name(list.substr(start, comma - start));
+  std::vector<MechanismColumn> out, defined = all;
+  for (const std::string& name : (list.empty() ? std::vector<std::string>{""} : split_commas(std::string(list)))) {
+    if (defines_column(name)) {
+      out.push_back(expression_column(defined, system, name, origin));
+      defined.push_back(out.back());
+      continue;
+    }
     const auto named = [&](const MechanismColumn& c) { return c.name == name; };
     const auto found = std::find_if(all.begin(), all.end(), named);
     if (found == all.end()) {
@@ -256,7 +287,6 @@ std::vector<MechanismColumn> named_columns(const std::vector<MechanismColumn>& a
     if (std::any_of(out.begin(), out.end(), named))
       throw Error::invalid(origin, "column '" + name + "' is listed twice");
     out.push_back(*found);
-    start = comma + 1;
   }
   return out;
 }
@@ -327,9 +357,13 @@ double column_value(const MechanismColumn& c, double t, const Eigen::VectorXd& y
       return std::fabs(s.momentum_y - (o.momentum_y0 - o.weight * t));
     case MechanismQuantity::angular_momentum_error:
       return std::fabs(s.angular_momentum - o.angular_momentum0);
+    case MechanismQuantity::expression:
+      return expression_value(*c.expression, t, y, s, o);
     case MechanismQuantity::com_parabola_error:
       return std::hypot(s.com[0] - (o.com0[0] + o.com0[2] * t),
                         s.com[1] - (o.com0[1] + o.com0[3] * t - 0.5 * o.g * t * t));
+    case MechanismQuantity::shaking:
+      return s.shaking.at(c.index);
   }
   return 0;
 }
@@ -361,7 +395,7 @@ std::string column_words(const MechanismColumn& c) {
     case Q::energy:
       return "energy E = T + V";
     case Q::work:
-      return "work W of dampers and loads";
+      return c.index == 1 ? "work W of dampers, loads and drivers" : "work W of dampers and loads";
     case Q::energy_error:
       return "energy balance E − E_{0} − W";
     case Q::momentum_x:
@@ -391,12 +425,17 @@ std::string column_words(const MechanismColumn& c) {
       return "angular momentum error |H_{G} − H_{G0}|";
     case Q::com_parabola_error:
       return "distance of G from the parabola G_{0} + v_{0} t − g t^{2}/2";
+    case Q::shaking: {
+      static const char* const shaking[] = {"shaking force F_{x}", "shaking force F_{y}", "shaking moment M_{O}"};
+      return shaking[c.index];
+    }
     case Q::slider:
     case Q::slider_acceleration:
     case Q::force:
     case Q::driver:
     case Q::constraint:
     case Q::constraint_rate:
+    case Q::expression:
       break;
   }
   return c.meaning;

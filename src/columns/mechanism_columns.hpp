@@ -10,6 +10,7 @@
 // mechanism to the ground.
 #include <array>
 #include <functional>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -46,6 +47,8 @@ enum class MechanismQuantity {
   momentum_y_error,        // |p_y - p_y0 + M g t|
   angular_momentum_error,  // |H_G - H_G0|
   com_parabola_error,      // |G - (G0 + G0' t - g t^2 / 2 y)|
+  expression,              // NAME=EXPRESSION over other columns (expression_column.hpp)
+  shaking,                 // index: 0 force x, 1 force y, 2 moment about the origin (on the ground)
 };
 
 /// What the error columns measure a sample against: the run's state at t = 0.
@@ -58,6 +61,8 @@ struct ColumnOrigin {
   double g = 0;                  // m/s^2
 };
 
+struct ColumnExpression;  // expression_column.cpp
+
 struct MechanismColumn {
   std::string name;  // "1.theta", "P.force_x", "energy_error"
   std::string unit;
@@ -66,6 +71,7 @@ struct MechanismColumn {
   std::size_t index = 0;
   bool by_default = false;
   std::string owner{};  // the body, point or joint it belongs to ("2", "3.P"), kept when the name is aliased
+  std::shared_ptr<const ColumnExpression> expression{};  // quantity expression only: what it computes
 };
 
 /// A column in words for a plot axis or legend, in plot markup and without its unit:
@@ -77,20 +83,25 @@ struct MechanismColumn {
 /// Every column this mechanism has, in table order.
 [[nodiscard]] std::vector<MechanismColumn> mechanism_columns(const sym::System& system);
 
-/// The column named `name`; else Error::input "ORIGIN: unknown column 'NAME'; nearest
-/// 'N'; valid: ..." (the fewest edits, of equals one on the same body or joint; `groups`:
-/// "default" and "all" are valid too, and listed).
+/// The column named `name`, or defined by it (NAME=EXPRESSION over `all` and `system`'s
+/// parameters: expression_column.hpp); else Error::input "ORIGIN: unknown column 'NAME';
+/// nearest 'N'; valid: ..." (the fewest edits, of equals one on the same body or joint;
+/// `groups`: "default" and "all" are valid too, and listed).
 [[nodiscard]] MechanismColumn find_mechanism_column(const std::vector<MechanismColumn>& all, const std::string& name,
-                                                    const std::string& origin, bool groups = false);
+                                                    const std::string& origin, bool groups = false,
+                                                    const sym::System* system = nullptr);
 
-/// The columns `names` select, t first: each a column's name, or "default" or "all" for
-/// theirs (t once); an unknown name is find_mechanism_column's error at `origin(i)`.
+/// The columns `names` select, t first: each a column's name or a definition (which may
+/// use the definitions before it), or "default" or "all" for theirs (t once); an unknown
+/// name is find_mechanism_column's error at `origin(i)`.
 [[nodiscard]] std::vector<MechanismColumn> select_mechanism_columns(
     const std::vector<MechanismColumn>& all, const std::vector<std::string>& names,
-    const std::function<std::string(std::size_t)>& origin);
-/// The same from a comma-separated list (`simulate --columns`), every error at `origin`.
+    const std::function<std::string(std::size_t)>& origin, const sym::System* system = nullptr);
+/// The same from a comma-separated list (`simulate --columns`; a comma inside parentheses
+/// is an expression's), every error at `origin`.
 [[nodiscard]] std::vector<MechanismColumn> select_mechanism_columns(const std::vector<MechanismColumn>& all,
-                                                                    const std::string& spec, const std::string& origin);
+                                                                    const std::string& spec, const std::string& origin,
+                                                                    const sym::System* system = nullptr);
 
 /// Whether any of `columns` needs the sample's kinematics (accelerations, points).
 [[nodiscard]] bool needs_kinematics(const std::vector<MechanismColumn>& columns);
@@ -99,10 +110,14 @@ struct MechanismColumn {
 /// "all" (the homework's `--columns`, its names two-blocks' [aliases]); else
 /// Error::invalid at `origin` for a name that is no column (with the nearest) or a repeat.
 [[nodiscard]] std::vector<MechanismColumn> named_columns(const std::vector<MechanismColumn>& all, std::string_view list,
-                                                         const std::string& origin);
+                                                         const std::string& origin,
+                                                         const sym::System* system = nullptr);
 
 /// A column's value at a sample; `y` the state (its last entry W), `origin` the run's t = 0.
 [[nodiscard]] double column_value(const MechanismColumn& column, double t, const Eigen::VectorXd& y,
                                   const eval::MechanismSample& sample, const ColumnOrigin& origin);
+/// An expression column's value: its expression at its columns' values (expression_column.cpp).
+[[nodiscard]] double expression_value(const ColumnExpression& expression, double t, const Eigen::VectorXd& y,
+                                      const eval::MechanismSample& sample, const ColumnOrigin& origin);
 
 }  // namespace linkage

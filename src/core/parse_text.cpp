@@ -28,10 +28,16 @@ double parse_number(const std::string& text, const std::string& setting, const s
 
 std::vector<std::string> split_commas(const std::string& list) {
   std::vector<std::string> items;
-  for (std::size_t at = 0; !list.empty() && at <= list.size();) {
-    const std::size_t comma = std::min(list.find(',', at), list.size());
-    items.push_back(list.substr(at, comma - at));
-    at = comma + 1;
+  if (list.empty()) return items;
+  int depth = 0;  // a comma inside parentheses is an expression's: atan2(y, x)
+  std::size_t start = 0;
+  for (std::size_t at = 0; at <= list.size(); ++at) {
+    if (at < list.size() && list[at] == '(') ++depth;
+    if (at < list.size() && list[at] == ')') depth = std::max(0, depth - 1);
+    if (at == list.size() || (list[at] == ',' && depth == 0)) {
+      items.push_back(list.substr(start, at - start));
+      start = at + 1;
+    }
   }
   return items;
 }

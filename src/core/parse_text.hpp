@@ -10,7 +10,8 @@ namespace linkage {
 /// (`setting`, ...) saying what is wrong, with `unit` naming what it counts.
 [[nodiscard]] double parse_number(const std::string& text, const std::string& setting, const std::string& unit);
 
-/// "a,b,,c" -> {"a", "b", "", "c"} (an empty item stays, for its reader to refuse); "" -> {}.
+/// "a,b,,c" -> {"a", "b", "", "c"} (an empty item stays, for its reader to refuse); "" -> {};
+/// a comma inside parentheses stays in its item: "t,a=atan2(y, x)" -> {"t", "a=atan2(y, x)"}.
 [[nodiscard]] std::vector<std::string> split_commas(const std::string& list);
 
 }  // namespace linkage

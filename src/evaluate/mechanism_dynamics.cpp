@@ -1,6 +1,7 @@
 #include "evaluate/mechanism_dynamics.hpp"
 
 #include <Eigen/Cholesky>
+#include <Eigen/SVD>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -16,6 +17,7 @@
 #include "symbolic/energy.hpp"
 #include "symbolic/joints.hpp"
 #include "symbolic/loop_closure.hpp"
+#include "symbolic/shaking.hpp"
 
 namespace linkage::eval {
 
@@ -363,6 +365,8 @@ void MechanismDynamics::compile_case() const {
   out.push_back(substituted(sym::angular_momentum_about_centre(system)));
   const sym::Vec2 com = sym::centre_of_mass(system), com_velocity = sym::centre_of_mass_velocity(system);
   for (const ex& e : {com.x, com.y, com_velocity.x, com_velocity.y}) out.push_back(prepare(e));
+  const sym::GroundReaction shaking = sym::ground_reaction(system);
+  for (const ex& e : {shaking.force.x, shaking.force.y, shaking.moment}) out.push_back(prepare_output(e));
   outputs_ = compile(out, output_inputs);
   free_checking(out);
   output_symbols_ = output_inputs;
@@ -626,6 +630,42 @@ double MechanismDynamics::project(double t, Eigen::VectorXd& y) const {
   return C.cwiseAbs().maxCoeff();
 }
 
+bool MechanismDynamics::close_positions(double t, Eigen::VectorXd& y) const {
+  const auto n = idx(n_);
+  const Eigen::Map<const Eigen::VectorXd> C(constraint_values_.data(), n);
+  // Round-off of the coordinates: Newton is done when |C| or its step is there.
+  const double floor = 4 * std::numeric_limits<double>::epsilon() * (1 + y.head(n).cwiseAbs().maxCoeff());
+  double previous = std::numeric_limits<double>::infinity();
+  for (int iteration = 0; iteration < 2 * kProjectionIterations; ++iteration) {
+    evaluate_constraints(t, y);
+    const double residual = C.cwiseAbs().maxCoeff();
+    if (!std::isfinite(residual)) return false;
+    if (residual <= floor) return true;
+    // Quadratic convergence halves |C| at least; stalling above round-off means no root near.
+    if (iteration > 2 && !(residual < 0.5 * previous)) return residual <= 1e3 * floor;
+    previous = residual;
+    const Eigen::FullPivLU<Eigen::MatrixXd> lu(J_);
+    if (!lu.isInvertible()) return false;
+    y.head(n) -= lu.solve(C);
+  }
+  return false;
+}
+
+void MechanismDynamics::solve_rates(double t, Eigen::VectorXd& y) const {
+  evaluate_constraints(t, y);
+  evaluate_time_rates(t, y);
+  const Eigen::Map<const Eigen::VectorXd> c_t(time_rate_values_.data(), idx(n_));
+  y.segment(idx(n_), idx(n_)) = J_.fullPivLu().solve(-c_t);
+}
+
+double MechanismDynamics::jacobian_spread(double t, const Eigen::VectorXd& y) const {
+  if (constraint_rows_ == 0) return 1;
+  evaluate_constraints(t, y);
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(J_);
+  const auto& s = svd.singularValues();
+  return s.size() == 0 || !(s[0] > 0) ? 0.0 : s[s.size() - 1] / s[0];
+}
+
 void MechanismDynamics::sample(double t, const Eigen::VectorXd& y, MechanismSample& out, bool kinematics) const {
   compile_case();
   if (kinematics) compile_kinematics();
@@ -662,6 +702,7 @@ void MechanismDynamics::sample(double t, const Eigen::VectorXd& y, MechanismSamp
   out.momentum_y = values[k++];
   out.angular_momentum = values[k++];
   for (double& v : out.com) v = values[k++];
+  for (double& v : out.shaking) v = values[k++];
   // The drivers' torques and forces: the case's last unknowns in every case.
   out.drivers.assign(drivers_, std::numeric_limits<double>::quiet_NaN());
   if (solved)

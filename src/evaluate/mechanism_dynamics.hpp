@@ -44,6 +44,9 @@ struct MechanismSample {
   double momentum_x = 0, momentum_y = 0;
   double angular_momentum = 0;  // about the centre of mass
   std::array<double, 4> com{};  // the centre of mass: x, y, x', y'
+  // The force the moving bodies exert on the ground (x, y, N) and its moment about the
+  // world origin (N m): sym::ground_reaction.
+  std::array<double, 3> shaking{};
   // Only when sample() is asked for the kinematics (a column needs them), else empty:
   std::vector<double> accelerations;         // per body: x'', y'', theta'' (0 for a point mass)
   std::vector<double> slider_accelerations;  // per joint: s'' for a slider, 0 for a pin
@@ -98,6 +101,18 @@ class MechanismDynamics {
   [[nodiscard]] double constraint_violation(double t, const Eigen::VectorXd& y) const;
   /// The name of the joint whose kept constraint is violated most at y ("" without).
   [[nodiscard]] std::string worst_joint(double t, const Eigen::VectorXd& y) const;
+
+  /// True when the drivers take every degree of freedom: as many kept rows as coordinates,
+  /// so C(q, t) = 0 alone fixes q (kinematic analysis, integrator/kinematic_path.hpp).
+  [[nodiscard]] bool kinematic() const { return drivers_ > 0 && static_cast<std::size_t>(constraint_rows_) == n_; }
+  /// Kinematic only. Newton's method on C(q, t) = 0 from y's q, J square; true when it met
+  /// the constraints to round-off (q is then that solution, q' untouched).
+  bool close_positions(double t, Eigen::VectorXd& y) const;
+  /// Kinematic only. q' from J q' = -C_t at y's q.
+  void solve_rates(double t, Eigen::VectorXd& y) const;
+  /// The kept rows' Jacobian J's smallest over its largest singular value at y's q (0:
+  /// singular; 1 without kept rows).
+  [[nodiscard]] double jacobian_spread(double t, const Eigen::VectorXd& y) const;
 
   /// Everything a sample reports at (t, y), from one evaluation of the unknowns; with
   /// `kinematics` the accelerations and the named points' motion too (compiled on first need).

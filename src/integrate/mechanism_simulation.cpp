@@ -15,6 +15,7 @@
 #include "integrate/dopri5.hpp"
 #include "integrate/explicit_rk.hpp"
 #include "integrate/gauss_legendre.hpp"
+#include "integrate/kinematic_path.hpp"
 #include "integrate/step_budget.hpp"
 #include "integrate/symplectic_euler.hpp"
 
@@ -27,6 +28,11 @@ constexpr int kDynamic = Eigen::Dynamic;
 // A loop whose constraint error passes this, in metres (or radians), has come apart: the
 // numbers no longer describe the mechanism.
 constexpr double kOpenLoop = 1e-3;
+// A driven run whose step fails with the kept rows' Jacobian this close to losing rank
+// (smallest over largest singular value) has been driven past its range: J's smallest
+// singular value falls as the square root of the distance to a limit position, so a step
+// underflowing to round-off there leaves it near sqrt of a step's relative size.
+constexpr double kDrivenPastItsRange = 1e-4;
 
 /// f(t, y) for the integrators; remembers where the case's matrix was singular.
 struct Rhs {
@@ -56,13 +62,18 @@ struct MechanismSimulation::Impl {
   Impl(const sym::System& system, const GiNaC::exmap& initial, const SimulationOptions& o,
        std::optional<CaseSystem> derived)
       : options(o),
+        system_ptr(&system),
         mechanism(&system.mechanism()),
         dynamics(system, static_cast<CaseId>(o.case_id), std::move(derived)),
         rhs{&dynamics, std::nan("")} {
-    if (o.stabilization == Stabilization::baumgarte) dynamics.set_baumgarte(o.baumgarte_alpha, o.baumgarte_beta);
+    // Kinematic analysis integrates nothing: the stabilization has nothing to stabilize.
+    stats.kinematic = dynamics.kinematic();
+    if (o.stabilization == Stabilization::baumgarte && !stats.kinematic)
+      dynamics.set_baumgarte(o.baumgarte_alpha, o.baumgarte_beta);
     stats.evaluator = choose_evaluator(dynamics, o);
-    project = o.stabilization == Stabilization::projection && dynamics.constraint_rows() > 0;
+    project = o.stabilization == Stabilization::projection && dynamics.constraint_rows() > 0 && !stats.kinematic;
     y = dynamics.initial_state(initial);
+    if (stats.kinematic) kinematic = std::make_unique<KinematicPath>(system, dynamics, y);
     Vector dydt;
     if (!dynamics.derivative(0, y, dydt))
       throw Error::input(system.mechanism().source + ": the matrix of Case " + std::to_string(o.case_id) +
@@ -110,6 +121,10 @@ struct MechanismSimulation::Impl {
         }
     if (!(stats.energy_scale > 0)) stats.energy_scale = 1;  // nothing moves and nothing pulls: report in J
     origin = {energy0, stats.energy_scale, s.momentum_x, s.momentum_y, s.angular_momentum, s.com, total_mass * g, g};
+    if (kinematic) {
+      kinematic->set_energy_scale(stats.energy_scale);
+      return;
+    }
     if (project) dynamics.project(0, y);
     start_stepper();
   }
@@ -133,6 +148,17 @@ struct MechanismSimulation::Impl {
            project ? "try a smaller step or tighter rtol/atol" : "try stabilization by projection", t);
   }
   [[noreturn]] void fail_step(ode::StepStatus status, double t, double h) {
+    // Driven past the mechanism's range: the kept rows' Jacobian has nearly lost rank where
+    // the step failed (a limit position or toggle), which no tolerance or step cures.
+    if (!mechanism->drivers.empty() && dynamics.constraint_rows() > 0 && y.allFinite()) {
+      const double spread = dynamics.jacobian_spread(t, y);
+      if (spread < kDrivenPastItsRange)
+        throw Error::input(driven_stop_message(*system_ptr, t,
+                                               "cannot close beyond here (a limit position, its links in line: J's "
+                                               "smallest over largest singular value " +
+                                                   format_significant(spread, 2) + " there; " + case_text(options) +
+                                                   ")"));
+    }
     if (!std::isnan(rhs.singular_at))
       fail(options,
            "the matrix of Case " + std::to_string(options.case_id) +
@@ -149,6 +175,7 @@ struct MechanismSimulation::Impl {
   }
 
   SimulationOptions options;
+  const sym::System* system_ptr;
   const Mechanism* mechanism;
   eval::MechanismDynamics dynamics;
   Rhs rhs;
@@ -167,7 +194,8 @@ struct MechanismSimulation::Impl {
   std::unique_ptr<ode::GaussLegendre2<double, kDynamic>> gauss;
   std::unique_ptr<ode::Dopri5<double, kDynamic>> dopri5;
   std::unique_ptr<ode::Dop853<double, kDynamic>> dop853;
-  std::int64_t k = 0;  // fixed steps taken
+  std::int64_t k = 0;                        // fixed steps taken
+  std::unique_ptr<KinematicPath> kinematic;  // instead of a step when the drivers take every degree of freedom
 };
 
 namespace {
@@ -252,6 +280,11 @@ void MechanismSimulation::Impl::start_stepper() {
 }
 
 void MechanismSimulation::Impl::advance(double t) {
+  if (kinematic) {
+    kinematic->advance(t, y);
+    sample_y = y;
+    return;
+  }
   if (dopri5 || dop853) {
     auto run = [&](auto& stepper) {
       while (stepper.t() < t) {
@@ -342,6 +375,7 @@ const Eigen::VectorXd& MechanismSimulation::state_at(double t) {
       if (run.gauss) c = run.gauss->counters();
       if (run.dopri5) c = run.dopri5->counters();
       if (run.dop853) c = run.dop853->counters();
+      if (run.kinematic) c = {run.kinematic->accepted(), run.kinematic->rejected(), run.kinematic->solves()};
       run.stats.steps_accepted = c.steps_accepted;
       run.stats.steps_rejected = c.steps_rejected;
       run.stats.rhs_evaluations = c.rhs_evaluations;

@@ -2,6 +2,8 @@
 // The motion of any mechanism over time: one case's compiled equations
 // (evaluate/mechanism_dynamics.hpp), one integrator, one stabilization, sampled at
 // increasing times. The integrators are the homework's, on a state sized at run time.
+// When the drivers take every degree of freedom nothing is integrated: the kinematic
+// analysis of integrate/kinematic_path.hpp gives the states instead.
 #include <Eigen/Core>
 #include <functional>
 #include <memory>
@@ -30,6 +32,9 @@ struct MechanismStats {
   double wall_seconds = 0;  // in state_at()
   // What computed the equations, once for the summary: "compiled (built in)", "interpreted (...)".
   std::string evaluator;
+  // The drivers take every degree of freedom: kinematic analysis, no integrator (the steps
+  // count its continuation steps, the right-hand sides its position solves).
+  bool kinematic = false;
 };
 
 class MechanismSimulation {

@@ -10,6 +10,7 @@
 #include <span>
 #include <sstream>
 
+#include "columns/expression_column.hpp"
 #include "core/content_hash.hpp"
 #include "core/error.hpp"
 #include "core/input_file.hpp"
@@ -577,8 +578,9 @@ class Parser {
     // As `linkage simulate --columns`: t first, "default" without the key.
     const auto names = r.strings("columns").value_or(std::vector<std::string>{"default"});
     if (names.empty()) r.fail("columns", "'columns' is empty; name at least one column, \"default\" or \"all\"");
-    s.mechanism_columns = select_mechanism_columns(s.run.built->named_columns(), names,
-                                                   [&](std::size_t i) { return entry_origin(r, "columns", i); });
+    s.mechanism_columns = select_mechanism_columns(
+        s.run.built->named_columns(), names, [&](std::size_t i) { return entry_origin(r, "columns", i); },
+        s.run.built->system.get());
     return s;
   }
 
@@ -623,7 +625,11 @@ class Parser {
     const std::vector<MechanismColumn> named = built.named_columns();
     const std::vector<MechanismColumn> all = mechanism_columns(*built.system);
     std::vector<std::string> out;
-    for (const MechanismColumn& c : mechanism_panel_columns(named, names)) {
+    for (const MechanismColumn& c : mechanism_panel_columns(named, names, built.system.get())) {
+      if (c.quantity == MechanismQuantity::expression) {  // reads both spellings
+        out.push_back(c.name + "=" + c.expression->text);
+        continue;
+      }
       const auto at = std::find_if(named.begin(), named.end(), [&](const auto& n) { return n.name == c.name; });
       out.push_back(all[static_cast<std::size_t>(at - named.begin())].name);
     }
@@ -721,13 +727,35 @@ class Parser {
 
   Figure figure(const TableReader& r, const std::vector<Run>& runs) const {
     Figure f;
-    f.x = find_mechanism_column(figure_columns(runs), r.string("x").value_or("t"), r.prefix("x") + "x");
+    f.x = find_mechanism_column(figure_columns(runs), r.string("x").value_or("t"), r.prefix("x") + "x", false,
+                                runs.front().built->system.get());
     f.log_x = r.boolean("log_x").value_or(false);
     f.log_y = r.boolean("log_y").value_or(false);
     f.title = r.string("title").value_or("");
     f.every = sample_interval(r, longest(runs), 400);
     figure_size(r, f.width, f.height);
     return f;
+  }
+
+  /// A defined column reads its parameters from the first run's mechanism: every run must
+  /// give them the same values.
+  static void check_defined_columns(const TableReader& r, const std::string& key,
+                                    const std::vector<MechanismColumn>& columns, const std::vector<Run>& runs) {
+    const auto value = [](const Run& run, const std::string& name) {
+      const sym::System& system = *run.built->system;
+      GiNaC::exmap values = system.parameter_values();
+      for (const auto& [symbol, expression] : system.constants()) values[symbol] = expression;
+      return sym::evaluate(system.names().at(name), values);
+    };
+    for (const MechanismColumn& c : columns) {
+      if (c.quantity != MechanismQuantity::expression) continue;
+      for (const std::string& name : c.expression->parameters)
+        for (const Run& run : runs)
+          if (const double v = value(run, name), v0 = value(runs.front(), name); v != v0)
+            r.fail(key, "column '" + c.name + "' uses '" + name + "', which run '" + run.label + "' sets to " +
+                            format_roundtrip(v) + " and run '" + runs.front().label + "' to " + format_roundtrip(v0) +
+                            "; valid: a definition without it, or runs that agree on it");
+    }
   }
 
   /// `difference` subtracts the first run sample by sample: two runs or more, against
@@ -757,8 +785,11 @@ class Parser {
     const std::vector<MechanismColumn> all = figure_columns(s.runs);
     const auto names = *r.strings("y");
     for (std::size_t i = 0; i < names.size(); ++i)
-      s.figure.y.push_back(find_mechanism_column(all, names[i], entry_origin(r, "y", i)));
+      s.figure.y.push_back(
+          find_mechanism_column(all, names[i], entry_origin(r, "y", i), false, s.runs.front().built->system.get()));
     if (s.figure.y.empty()) r.fail("y", "'y' is empty; name at least one column");
+    check_defined_columns(r, "x", {s.figure.x}, s.runs);
+    check_defined_columns(r, "y", s.figure.y, s.runs);
     std::vector<std::string> units;
     for (const MechanismColumn& c : s.figure.y) units.push_back(c.unit);
     check_equal_axes(r, s, s.figure.x.unit, units);
@@ -793,7 +824,9 @@ class Parser {
     s.width = f.width;
     s.height = f.height;
     if (auto y = r.string("plot")) {
-      f.y = {find_mechanism_column(figure_columns(s.runs), *y, r.prefix("plot") + "plot")};
+      f.y = {find_mechanism_column(figure_columns(s.runs), *y, r.prefix("plot") + "plot", false,
+                                   s.runs.front().built->system.get())};
+      check_defined_columns(r, "plot", f.y, s.runs);
       f.log_y = r.boolean("log_y").value_or(true);
       s.plot = f;
     } else if (r.has("log_y")) {

@@ -64,7 +64,11 @@ void run_simulate(RunContext& c, const Step& step, const SimulateStep& s) {
   const nlohmann::json results = s.trajectory.empty() ? simulate(c, s) : c.cached(step, [&] { return simulate(c, s); });
   c.warn(step, results);
   const ResultTable table = table_from_json(results.at("table"));
-  c.both([&](Writer& w) { w.table(table, "Simulated with " + method_text(s.run.options) + "."); });
+  // The summary's method: the integrator's, or kinematic analysis when the drivers fix the motion.
+  std::string method = method_text(s.run.options);
+  for (const auto& row : table.rows)
+    if (row.size() == 2 && row[0] == "method") method = row[1];
+  c.both([&](Writer& w) { w.table(table, "Simulated with " + method + "."); });
   if (!s.trajectory.empty())
     c.both([&](Writer& w) {
       w.figure(c.figure(s.trajectory, FigureRef::Kind::file, "the trajectory (CSV, as `linkage simulate`)"));

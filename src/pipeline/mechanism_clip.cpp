@@ -390,7 +390,7 @@ MechanismMotion sample_mechanism_motion(const sym::System& system, const GiNaC::
   const bool same_case = derived && derived->id == static_cast<CaseId>(options.case_id);
   std::vector<MechanismColumn> columns;
   if (panel != nullptr && !panel_names.empty()) {
-    columns = mechanism_panel_columns(mechanism_columns(system), panel_names);
+    columns = mechanism_panel_columns(mechanism_columns(system), panel_names, &system);
     *panel = mechanism_panel(columns, frame_times.back());
   }
   const bool kinematics = accelerations || needs_kinematics(columns);
@@ -637,7 +637,7 @@ void MechanismClip::validate(const sym::System& system) const {
   (void)resolve_points(mechanism_geometry(system), points);
   if (!(trail_seconds > 0) || !std::isfinite(trail_seconds))
     throw Error::invalid("trail_length", format_significant(trail_seconds, 6) + " s; valid: seconds > 0, or cycle");
-  if (!settings.panel.empty()) (void)mechanism_panel_columns(mechanism_columns(system), settings.panel);
+  if (!settings.panel.empty()) (void)mechanism_panel_columns(mechanism_columns(system), settings.panel, &system);
   if (ensemble != 0 && (ensemble < 2 || ensemble > 200))
     throw Error::invalid("ensemble", std::to_string(ensemble) + " runs; expected 2 .. 200");
   if (!(spread > 0 && spread <= kMaxSpread))

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "columns/expression_column.hpp"
 #include "core/error.hpp"
 #include "core/name_match.hpp"
 
@@ -23,13 +24,24 @@ void check_list(const std::vector<std::string>& names, const std::vector<std::st
 }  // namespace
 
 std::vector<MechanismColumn> mechanism_panel_columns(const std::vector<MechanismColumn>& all,
-                                                     const std::vector<std::string>& names) {
-  std::vector<std::string> valid;
+                                                     const std::vector<std::string>& names, const sym::System* system) {
+  std::vector<MechanismColumn> defined = all;  // with the definitions so far: a later one may use them
+  std::vector<std::string> valid, named;
   for (const MechanismColumn& c : all) valid.push_back(c.name);
-  check_list(names, valid);
+  for (const std::string& name : names) {
+    if (!defines_column(name)) {
+      named.push_back(name);
+      continue;
+    }
+    defined.push_back(expression_column(defined, system, name, "--panel"));
+    valid.push_back(defined.back().name);
+    named.push_back(defined.back().name);
+  }
+  check_list(named, valid);
   std::vector<MechanismColumn> out;
-  for (const std::string& name : names)
-    out.push_back(*std::find_if(all.begin(), all.end(), [&](const MechanismColumn& c) { return c.name == name; }));
+  for (const std::string& name : named)
+    out.push_back(
+        *std::find_if(defined.begin(), defined.end(), [&](const MechanismColumn& c) { return c.name == name; }));
   return out;
 }
 

@@ -9,9 +9,11 @@
 
 namespace linkage {
 
-/// The chosen columns of a mechanism; Error::invalid("panel", ...) for an unknown name.
+/// The chosen columns of a mechanism, each named or defined (NAME=EXPRESSION over `all`
+/// and `system`'s parameters); Error::invalid("panel", ...) for an unknown name.
 [[nodiscard]] std::vector<MechanismColumn> mechanism_panel_columns(const std::vector<MechanismColumn>& all,
-                                                                   const std::vector<std::string>& names);
+                                                                   const std::vector<std::string>& names,
+                                                                   const sym::System* system = nullptr);
 
 /// An empty panel for `columns` (words and units), its values to be appended.
 [[nodiscard]] PanelData mechanism_panel(const std::vector<MechanismColumn>& columns, double t_end);

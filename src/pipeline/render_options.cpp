@@ -198,7 +198,8 @@ std::vector<RenderOption> make_options() {
        arrow_scale},
       {"panel", V::list, "list of strings", "LIST", "none",
        "Plot these quantities beside the motion, with a cursor at the frame's time: theta1,theta2 (the names a "
-       "lesson's plot step takes; a mechanism's trajectory columns, e.g. 2.theta,B.force_x)",
+       "lesson's plot step takes; a mechanism's trajectory columns, e.g. 2.theta,B.force_x; or NAME=EXPRESSION "
+       "over them, e.g. gamma=4.theta-3.theta)",
        panel},
       {"angles", V::string, "string", "rad|deg", "\"rad\"",
        "Unit of the panel's angles and angular rates: rad or deg (axis in deg, deg/s)", angles},

@@ -12,7 +12,7 @@ ResultTable run_summary(const SimulationOptions& o, const MechanismStats& st) {
   t.headers = {"quantity", "value"};
   t.rows = {
       {"case", std::to_string(o.case_id)},
-      {"method", method_text(o)},
+      {"method", st.kinematic ? std::string("kinematic analysis (0 degrees of freedom)") : method_text(o)},
       {"simulated time", format_significant(o.duration, 6) + " s"},
       {"steps", std::to_string(st.steps_accepted) + " accepted, " + std::to_string(st.steps_rejected) + " rejected"},
       {"right-hand sides", std::to_string(st.rhs_evaluations)},

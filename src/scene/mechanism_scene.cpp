@@ -33,6 +33,12 @@ double number(const sym::System& system, const std::optional<Quantity>& q) {
   return q ? number(system, system.quantity(*q, false)) : 0.0;
 }
 
+// A spring's damping for the drawing (damped or not): 1 when it depends on the state.
+double damping_of(const sym::System& system, const Quantity& q) {
+  const GiNaC::ex c = system.quantity(q, false, true);
+  return system.depends_on_state(c) ? (c.is_zero() ? 0.0 : 1.0) : number(system, c);
+}
+
 Vec2 vector_of(const sym::System& system, const sym::Vec2& v) { return {number(system, v.x), number(system, v.y)}; }
 
 Vec2 rotated(double theta, const Vec2& v) {
@@ -167,15 +173,22 @@ MechanismGeometry mechanism_geometry(const sym::System& system) {
     g.springs.push_back({s.name,
                          {point_of(system, s.between[0].body, s.between[0].point),
                           point_of(system, s.between[1].body, s.between[1].point)},
-                         number(system, s.damping)});
+                         damping_of(system, s.damping)});
   // The loads' values keep t: constants and parameters substituted once, t per frame.
   const auto in_time = [&](const Quantity& q) {
-    return system.quantity(q, true).subs(system.constants()).subs(system.constants()).subs(system.parameter_values());
+    return system.quantity(q, true, true)
+        .subs(system.constants())
+        .subs(system.constants())
+        .subs(system.parameter_values());
   };
   for (const AppliedForce& f : m.forces)
     g.forces.push_back({point_of(system, f.body, f.point), in_time(f.value.x), in_time(f.value.y)});
   for (const AppliedTorque& t : m.torques) g.torques.push_back({m.body_index(t.body), in_time(t.value)});
   g.time = system.time();
+  for (const sym::BodySystem& b : system.bodies())
+    for (const sym::CoordinateSymbols* c : {&b.x, &b.y, &b.theta}) g.state.push_back(c->q);
+  for (const sym::BodySystem& b : system.bodies())
+    for (const sym::CoordinateSymbols* c : {&b.x, &b.y, &b.theta}) g.state.push_back(c->q_dot);
   if (m.gravity) g.gravity = number(system, system.quantity(*m.gravity, false));
   // Gravity and springs as the System states them (one source of truth), compiled once.
   std::vector<GiNaC::ex> outputs;
@@ -403,7 +416,10 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
       const double length = (world_point(s.pose, ends[1]) - world_point(s.pose, ends[0])).norm();
       spring_span_[i] = {std::min(spring_span_[i][0], length), std::max(spring_span_[i][1], length)};
     }
-    const GiNaC::exmap at{{geometry_.time, motion_.times[k]}};
+    // The time, and the sample's state for a load that depends on it.
+    GiNaC::exmap at{{geometry_.time, motion_.times[k]}};
+    for (std::size_t i = 0; i < geometry_.state.size() && i < s.pose.size() + s.rates.size(); ++i)
+      at[geometry_.state[i]] = i < s.pose.size() ? s.pose[i] : s.rates[i - s.pose.size()];
     for (const MechanismGeometry::ForceShape& f : geometry_.forces) {
       applied_[k].emplace_back(sym::evaluate(f.x, at), sym::evaluate(f.y, at));
       if (loads_shown) largest_force[k] = std::max(largest_force[k], applied_[k].back().norm());

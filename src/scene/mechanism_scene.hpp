@@ -47,12 +47,12 @@ struct MechanismGeometry {
     std::array<BodyPoint, 2> ends;
     double damping = 0;  // N s/m; > 0 draws a dashpot beside the coil
   };
-  /// An applied force ([[force]]): its point and value, world frame, N, in t only.
+  /// An applied force ([[force]]): its point and value, world frame, N, in t and the state.
   struct ForceShape {
     BodyPoint at;
     GiNaC::ex x, y;
   };
-  /// An applied torque ([[torque]]) on a body, N m, in t only.
+  /// An applied torque ([[torque]]) on a body, N m, in t and the state.
   struct TorqueShape {
     int body = 0;
     GiNaC::ex value;
@@ -87,6 +87,7 @@ struct MechanismGeometry {
   std::vector<std::vector<std::array<GiNaC::ex, 2>>> point_velocities;
   std::vector<GiNaC::symbol> inputs;  // load_values' inputs, in order
   GiNaC::ex time;                     // the symbol t of the loads' values
+  std::vector<GiNaC::ex> state;       // and the state's: per body x, y, theta, then their rates
 
   /// Whether any joint or spring holds the mechanism to the ground (else it floats).
   [[nodiscard]] bool grounded() const;

@@ -35,6 +35,25 @@ ex relative_angle(const System& system, const Joint& joint) {
   return angle_of(system, body_of(system, joint.bodies[1])) - angle_of(system, body_of(system, joint.bodies[0]));
 }
 
+// A spring's elastic force -k (x - rest) has the potential k (x - rest)^2 / 2 only when k
+// and rest are constants; with either depending on the state it works as a load does.
+struct Elastic {
+  ex stiffness, stretch;
+  bool conservative = true;
+};
+
+Elastic spring_elastic(const System& system, const Spring& spring) {
+  const ex k = system.quantity(spring.stiffness, false, true);
+  const ex rest = system.quantity(spring.rest_length, false, true);
+  return {k, spring_length(system, spring) - rest, !system.depends_on_state(k) && !system.depends_on_state(rest)};
+}
+
+Elastic pin_elastic(const System& system, const Joint& joint) {
+  const ex k = system.quantity(*joint.stiffness, false, true);
+  const ex rest = joint.rest_angle ? system.quantity(*joint.rest_angle, false, true) : ex(0);
+  return {k, relative_angle(system, joint) - rest, !system.depends_on_state(k) && !system.depends_on_state(rest)};
+}
+
 }  // namespace
 
 ex kinetic_energy(const System& system) {
@@ -53,14 +72,12 @@ ex potential_energy(const System& system) {
     const ex g = system.quantity(*mechanism.gravity, false);
     for (const BodySystem& b : system.bodies()) V += b.mass * g * b.y.q;
   }
-  for (const Spring& spring : mechanism.springs) {
-    const ex stretch = spring_length(system, spring) - system.quantity(spring.rest_length, false);
-    V += system.quantity(spring.stiffness, false) * GiNaC::pow(stretch, 2) / 2;
-  }
+  for (const Spring& spring : mechanism.springs)
+    if (const Elastic e = spring_elastic(system, spring); e.conservative)
+      V += e.stiffness * GiNaC::pow(e.stretch, 2) / 2;
   for (const Joint& joint : mechanism.joints) {
     if (!joint_type_info(joint.type).torsional_spring || !joint.stiffness) continue;
-    const ex rest = joint.rest_angle ? system.quantity(*joint.rest_angle, false) : ex(0);
-    V += system.quantity(*joint.stiffness, false) * GiNaC::pow(relative_angle(system, joint) - rest, 2) / 2;
+    if (const Elastic e = pin_elastic(system, joint); e.conservative) V += e.stiffness * GiNaC::pow(e.stretch, 2) / 2;
   }
   return V;
 }
@@ -69,24 +86,29 @@ std::vector<PowerTerm> nonconservative_power_terms(const System& system) {
   const Mechanism& mechanism = system.mechanism();
   std::vector<PowerTerm> terms;
   for (const Spring& spring : mechanism.springs) {
-    const ex damping = system.quantity(spring.damping, false);
-    if (damping.is_zero()) continue;
     const ex rate = system.time_derivative(spring_length(system, spring));
+    if (const Elastic e = spring_elastic(system, spring); !e.conservative)
+      terms.push_back({-e.stiffness * e.stretch, rate});
+    const ex damping = system.quantity(spring.damping, false, true);
+    if (damping.is_zero()) continue;
     terms.push_back({-damping * rate, rate});
   }
   for (const Joint& joint : mechanism.joints) {
-    if (!joint_type_info(joint.type).torsional_spring || !joint.damping) continue;
+    if (!joint_type_info(joint.type).torsional_spring) continue;
     const ex rate = system.time_derivative(relative_angle(system, joint));
-    terms.push_back({-system.quantity(*joint.damping, false) * rate, rate});
+    if (joint.stiffness)
+      if (const Elastic e = pin_elastic(system, joint); !e.conservative)
+        terms.push_back({-e.stiffness * e.stretch, rate});
+    if (joint.damping) terms.push_back({-system.quantity(*joint.damping, false, true) * rate, rate});
   }
   for (const AppliedForce& force : mechanism.forces) {
     const Vec2 at = system.point_position(body_of(system, force.body), force.point);
-    terms.push_back({system.quantity(force.value.x, true), system.time_derivative(at.x)});
-    terms.push_back({system.quantity(force.value.y, true), system.time_derivative(at.y)});
+    terms.push_back({system.quantity(force.value.x, true, true), system.time_derivative(at.x)});
+    terms.push_back({system.quantity(force.value.y, true, true), system.time_derivative(at.y)});
   }
   for (const AppliedTorque& torque : mechanism.torques)
-    terms.push_back(
-        {system.quantity(torque.value, true), system.time_derivative(angle_of(system, body_of(system, torque.body)))});
+    terms.push_back({system.quantity(torque.value, true, true),
+                     system.time_derivative(angle_of(system, body_of(system, torque.body)))});
   return terms;
 }
 

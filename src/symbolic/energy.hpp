@@ -17,7 +17,8 @@ namespace linkage::sym {
 
 /// V = sum_b m_b g y_b                          gravity along -y
 ///   + sum_springs k (l - l0)^2 / 2             l the distance between the spring's points
-///   + sum_pins k (th_b - th_a - rest)^2 / 2    torsional springs in pins.
+///   + sum_pins k (th_b - th_a - rest)^2 / 2    torsional springs in pins;
+/// a spring whose k or rest depends on the state has no potential: its force is a power term.
 [[nodiscard]] GiNaC::ex potential_energy(const System& system);
 
 /// One term of the non-conservative power: a load times the rate it works on, P_k = Q_k v_k.
@@ -31,7 +32,8 @@ struct PowerTerm {
 /// The loads that are not derived from V, each with the rate it works on:
 ///   linear dampers      (-c l') l'
 ///   torsional dampers   (-c (th_b' - th_a')) (th_b' - th_a')
-///   applied forces      F_x v_x + F_y v_y of the point they act at (F may depend on t)
+///   springs whose k or rest depends on the state   (-k (l - l0)) l'   (pins alike)
+///   applied forces      F_x v_x + F_y v_y of the point they act at (F may depend on t and the state)
 ///   applied torques     tau theta_b'.
 [[nodiscard]] std::vector<PowerTerm> nonconservative_power_terms(const System& system);
 

@@ -209,12 +209,25 @@ class Reader {
     skip_space();
     if (w.find('.') == std::string::npos && accept('(')) return call(w, start);
     if (const auto it = names_.symbols.find(w); it != names_.symbols.end()) return it->second;
+    if (names_.refused != nullptr && names_.refused->count(w) > 0)
+      fail(start, "the state name '" + w + "' is not allowed here", "; valid: " + std::string(names_.refused_note));
     std::vector<std::string> valid, candidates;
     for (const auto& [n, value] : names_.symbols) {
       candidates.push_back(n);
       if (n != "pi") valid.push_back(n);
     }
-    std::string valid_text = did_you_mean(w, candidates) + "; valid: " + join_names(valid, "(none)");
+    std::string listed = join_names(valid, "(none)");
+    if (listed.size() > names_.longest_valid_list) {
+      const std::optional<std::string> nearest = closest_name(w, candidates);
+      const std::string near = nearest ? nearest->substr(0, nearest->rfind('.') + 1) : std::string();
+      std::vector<std::string> some;
+      for (const std::string& n : valid)
+        if (n.find('.') == std::string::npos ||
+            (!near.empty() && n.rfind(near, 0) == 0 && n.find('.', near.size()) == std::string::npos))
+          some.push_back(n);
+      listed = join_names(some) + " and " + std::to_string(valid.size() - some.size()) + " more";
+    }
+    std::string valid_text = did_you_mean(w, candidates) + "; valid: " + listed;
     if (!names_.note.empty()) valid_text.append(" ").append(names_.note);
     fail(start, "unknown name '" + w + "'", valid_text);
   }

@@ -42,6 +42,13 @@ struct ExpressionNames {
   const GiNaC::symtab& symbols;
   std::string_view note = {};
   const std::vector<std::string>* functions = nullptr;
+  /// Names known but not allowed here (the state's, outside loads): refused with
+  /// `refused_note` as the valid part rather than as unknown.
+  const GiNaC::symtab* refused = nullptr;
+  std::string_view refused_note = {};
+  /// Past this many characters the valid names of an unknown-name error are cut to the
+  /// undotted ones and those beside the nearest ("3.P." for "3.P.z"), and "N more".
+  std::size_t longest_valid_list = std::string_view::npos;
 };
 
 /// Reads `text`. Throws Error::input, one line: "ORIGIN: problem at character N of 'TEXT'"

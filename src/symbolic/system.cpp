@@ -163,25 +163,66 @@ int body_index(const Mechanism& m, const std::string& name) {
 }  // namespace
 
 System::System(const Mechanism& mechanism) : mechanism_(mechanism), tree_(spanning_tree(mechanism)) {
+  // The state's names, known before the bodies' symbols are: a mass or a definition that
+  // names one is refused as such, not as an unknown name.
+  for (const Body& body : mechanism_.bodies)
+    for (const char* base : {"x", "y", "theta"})
+      if (std::string_view(base) != "theta" || body_rotates(body))
+        for (const char* suffix : {"", "_dot"}) refused_[body.name + "." + base + suffix] = t_;
+  for (const Joint& joint : mechanism_.joints)
+    if (const OwnCoordinate* own = joint_stages(joint.type).own)
+      for (const char* suffix : {"", "_dot"}) refused_[joint.name + "." + own->base + suffix] = t_;
   add_parameters();
   // The time of applied loads, printed like any symbol.
   table_.add({t_, Role::time, "t", "t", "t", "t", "s", "time"});
   add_bodies();
   add_joints();
   add_drivers();
+  add_state_names();
   add_loads();
   add_generalized();
   add_newton_euler();
 }
 
-ex System::quantity(const Quantity& q, bool time_allowed) const {
+ex System::quantity(const Quantity& q, bool time_allowed, bool state_allowed) const {
   GiNaC::symtab names = names_;
   if (time_allowed) names["t"] = t_;
+  if (state_allowed) names.insert(state_.begin(), state_.end());
   std::string origin = where(q.pos);
   if (origin.size() >= 2 && origin.compare(origin.size() - 2, 2, ": ") == 0) origin.resize(origin.size() - 2);
   return read_expression(q.text, origin,
                          {names, time_allowed ? std::string_view() : "(t only in [[force]] and [[torque]] values)",
-                          &equation_functions()});
+                          &equation_functions(), state_allowed ? nullptr : &refused_,
+                          std::string(time_allowed ? "parameters, definitions and t" : "parameters and definitions") +
+                              " (the state's coordinates and rates only in [[force]] and [[torque]] values, a "
+                              "spring's stiffness, rest_length and damping, and a pin's stiffness, damping and "
+                              "rest_angle)"});
+}
+
+bool System::depends_on_state(const ex& e) const {
+  for (const BodySystem& b : bodies_)
+    for (const CoordinateSymbols* c : {&b.x, &b.y, &b.theta})
+      if ((b.rotates || c != &b.theta) && (e.has(c->q) || e.has(c->q_dot))) return true;
+  return false;
+}
+
+void System::add_state_names() {
+  // As the columns name them; a slider's s is not a maximal coordinate: its expression.
+  for (const BodySystem& b : bodies_)
+    for (const CoordinateSymbols* c : {&b.x, &b.y, &b.theta}) {
+      if (c == &b.theta && !b.rotates) continue;
+      const std::string& key = table_.find(c->q)->key;
+      state_[key] = c->q;
+      state_[key + "_dot"] = c->q_dot;
+    }
+  for (std::size_t j = 0; j < mechanism_.joints.size(); ++j) {
+    const Joint& joint = mechanism_.joints[j];
+    const JointStages& stages = joint_stages(joint.type);
+    if (stages.own == nullptr) continue;
+    const ex s = stages.coordinate(maximal_ends(*this, static_cast<int>(j)));
+    state_[joint.name + "." + stages.own->base] = s;
+    state_[joint.name + "." + stages.own->base + "_dot"] = time_derivative(s);
+  }
 }
 
 void System::add_parameters() {
@@ -398,8 +439,8 @@ void System::add_loads() {
                           .symbol;
     lengths_[length] = GiNaC::sqrt(d.x * d.x + d.y * d.y);
     derivative_[length] = (d.x * time_derivative(d.x) + d.y * time_derivative(d.y)) / length;
-    const ex tension = quantity(spring.stiffness, false) * (length - quantity(spring.rest_length, false)) +
-                       quantity(spring.damping, false) * time_derivative(length);
+    const ex tension = quantity(spring.stiffness, false, true) * (length - quantity(spring.rest_length, false, true)) +
+                       quantity(spring.damping, false, true) * time_derivative(length);
     // Tension pulls b towards a and a towards b.
     const Vec2 on_b = (-tension / length) * d;
     if (b >= 0) loads_.push_back({b, on_b, pb, 0, spring.name});
@@ -414,23 +455,23 @@ void System::add_loads() {
                                                                     : ex(bodies_[static_cast<std::size_t>(i)].theta.q);
     };
     const ex relative = angle(b) - angle(a);
-    const ex rest = joint.rest_angle ? quantity(*joint.rest_angle, false) : ex(0);
+    const ex rest = joint.rest_angle ? quantity(*joint.rest_angle, false, true) : ex(0);
     ex torque = 0;
-    if (joint.stiffness) torque -= quantity(*joint.stiffness, false) * (relative - rest);
-    if (joint.damping) torque -= quantity(*joint.damping, false) * time_derivative(relative);
+    if (joint.stiffness) torque -= quantity(*joint.stiffness, false, true) * (relative - rest);
+    if (joint.damping) torque -= quantity(*joint.damping, false, true) * time_derivative(relative);
     if (b >= 0) loads_.push_back({b, {}, {}, torque, joint.name});
     if (a >= 0) loads_.push_back({a, {}, {}, -torque, joint.name});
   }
   int count = 0;
   for (const AppliedForce& force : mechanism_.forces) {
     const int body = body_index(mechanism_, force.body);
-    const Vec2 value{quantity(force.value.x, true), quantity(force.value.y, true)};
+    const Vec2 value{quantity(force.value.x, true, true), quantity(force.value.y, true, true)};
     loads_.push_back({body, value, point_position(body, force.point), 0, "force " + std::to_string(++count)});
   }
   count = 0;
   for (const AppliedTorque& torque : mechanism_.torques) {
     const int body = body_index(mechanism_, torque.body);
-    loads_.push_back({body, {}, {}, quantity(torque.value, true), "torque " + std::to_string(++count)});
+    loads_.push_back({body, {}, {}, quantity(torque.value, true, true), "torque " + std::to_string(++count)});
   }
 }
 

@@ -106,6 +106,8 @@ class System {
   [[nodiscard]] const GiNaC::exmap& constants() const { return constants_; }
   /// Parameter symbols -> values.
   [[nodiscard]] const GiNaC::exmap& parameter_values() const { return parameter_values_; }
+  /// The parameters' and definitions' symbols by the names the file gives them.
+  [[nodiscard]] const GiNaC::symtab& names() const { return names_; }
   /// Maximal coordinates, rates and accelerations -> expressions in generalized ones.
   [[nodiscard]] const GiNaC::exmap& to_generalized() const { return to_generalized_; }
   /// Each spring's length symbol (l_k1, in its loads) -> |r_b - r_a| in maximal
@@ -116,8 +118,13 @@ class System {
   [[nodiscard]] GiNaC::ex time_derivative(const GiNaC::ex& e) const;
   /// World position of a body's point, maximal coordinates (body -1: the ground).
   [[nodiscard]] Vec2 point_position(int body, const std::string& point) const;
-  /// A parsed quantity of the file, in parameters, definitions (and t where allowed).
-  [[nodiscard]] GiNaC::ex quantity(const Quantity& q, bool time_allowed) const;
+  /// A parsed quantity of the file, in parameters, definitions (and t where allowed). A
+  /// load's value (`state_allowed`) may also name the state by its columns: a body's x,
+  /// y, theta and their _dot as the maximal symbols, a slider's s and s_dot as their
+  /// expressions in them; elsewhere such a name is refused.
+  [[nodiscard]] GiNaC::ex quantity(const Quantity& q, bool time_allowed, bool state_allowed = false) const;
+  /// Whether `e` holds a maximal coordinate or rate (a load that depends on the state).
+  [[nodiscard]] bool depends_on_state(const GiNaC::ex& e) const;
 
   /// Generalized coordinate and rate symbols -> values from the file's [initial].
   [[nodiscard]] GiNaC::exmap initial_state() const;
@@ -127,6 +134,7 @@ class System {
   void add_bodies();
   void add_joints();
   void add_drivers();
+  void add_state_names();
   void add_loads();
   void add_generalized();
   void add_newton_euler();
@@ -135,7 +143,9 @@ class System {
   SymbolTable table_;
   SpanningTree tree_;
   GiNaC::symbol t_{"t"};
-  GiNaC::symtab names_;  // parser symbols: parameters, definitions
+  GiNaC::symtab names_;    // parser symbols: parameters, definitions
+  GiNaC::symtab state_;    // the state's column names (loads only) -> maximal expressions
+  GiNaC::symtab refused_;  // the same names from the start, for a quantity that may not use them
   std::vector<BodySystem> bodies_;
   std::vector<JointSystem> joints_;
   std::vector<DriverSystem> drivers_;

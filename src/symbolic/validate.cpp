@@ -14,15 +14,22 @@ namespace linkage::sym {
 
 namespace {
 
-// The quantity's value at the parameters (t = 0), or an error naming it.
-double checked_value(const System& system, const Quantity& q, bool time_allowed, const std::string& what) {
+// The quantity's value at the parameters (t = 0; a load's at the initial state too), or an
+// error naming it.
+double checked_value(const System& system, const Quantity& q, bool time_allowed, const std::string& what,
+                     bool state_allowed = false) {
   GiNaC::exmap values = system.parameter_values();
   for (const auto& [symbol, expression] : system.constants())
     values[symbol] = expression.subs(system.parameter_values());
   values[system.time()] = 0;
   double v = std::nan("");
   try {
-    v = to_double(system.quantity(q, time_allowed).subs(values));
+    GiNaC::ex e = system.quantity(q, time_allowed, state_allowed);
+    if (system.depends_on_state(e)) {
+      const GiNaC::exmap state = system.initial_state();
+      e = e.subs(system.to_generalized(), GiNaC::subs_options::no_pattern).subs(state);
+    }
+    v = to_double(e.subs(values));
   } catch (const Error&) {
     throw;
   } catch (const std::exception&) {
@@ -42,8 +49,9 @@ void require_positive(const System& system, const Quantity& q, const std::string
                        " at the parameters; valid: > 0");
 }
 
-void require_non_negative(const System& system, const Quantity& q, const std::string& what) {
-  const double v = checked_value(system, q, false, what);
+void require_non_negative(const System& system, const Quantity& q, const std::string& what,
+                          bool state_allowed = false) {
+  const double v = checked_value(system, q, false, what, state_allowed);
   if (!(v >= 0))
     throw Error::input(where(q.pos) + what + " \"" + q.text + "\" is " + format_significant(v, 6) +
                        " at the parameters; valid: >= 0");
@@ -72,9 +80,9 @@ void validate_quantities(const System& system) {
     }
   }
   for (const Joint& j : m.joints) {
-    if (j.stiffness) require_non_negative(system, *j.stiffness, "stiffness of joint " + j.name);
-    if (j.damping) require_non_negative(system, *j.damping, "damping of joint " + j.name);
-    if (j.rest_angle) (void)checked_value(system, *j.rest_angle, false, "rest angle of joint " + j.name);
+    if (j.stiffness) require_non_negative(system, *j.stiffness, "stiffness of joint " + j.name, true);
+    if (j.damping) require_non_negative(system, *j.damping, "damping of joint " + j.name, true);
+    if (j.rest_angle) (void)checked_value(system, *j.rest_angle, false, "rest angle of joint " + j.name, true);
     if (j.stiffness || j.damping)
       for (const std::string& body : j.bodies) {
         const Body* b = m.find_body(body);
@@ -101,15 +109,15 @@ void validate_quantities(const System& system) {
       }
   }
   for (const Spring& s : m.springs) {
-    require_non_negative(system, s.stiffness, "stiffness of spring " + s.name);
-    require_non_negative(system, s.rest_length, "rest length of spring " + s.name);
-    require_non_negative(system, s.damping, "damping of spring " + s.name);
+    require_non_negative(system, s.stiffness, "stiffness of spring " + s.name, true);
+    require_non_negative(system, s.rest_length, "rest length of spring " + s.name, true);
+    require_non_negative(system, s.damping, "damping of spring " + s.name, true);
   }
   for (const AppliedForce& f : m.forces) {
-    (void)checked_value(system, f.value.x, true, "force on " + f.body + " x");
-    (void)checked_value(system, f.value.y, true, "force on " + f.body + " y");
+    (void)checked_value(system, f.value.x, true, "force on " + f.body + " x", true);
+    (void)checked_value(system, f.value.y, true, "force on " + f.body + " y", true);
   }
-  for (const AppliedTorque& t : m.torques) (void)checked_value(system, t.value, true, "torque on " + t.body);
+  for (const AppliedTorque& t : m.torques) (void)checked_value(system, t.value, true, "torque on " + t.body, true);
 }
 
 void validate_constraints(const System& system, const GiNaC::exmap& state) {

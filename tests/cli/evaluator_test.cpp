@@ -63,6 +63,21 @@ TEST(Evaluator, AUsersFileCompilesOnceThenLoadsFromTheCache) {
   EXPECT_EQ(second.out, interpreted.out);
 }
 
+// Loads in the state's rates and coordinates (issue 25): the generated programs take q and
+// q' as inputs, so the compiled code gives the interpreter's CSV, shaking columns included.
+TEST(Evaluator, LoadsThatDependOnTheStateCompileToTheInterpretersNumbers) {
+  TempDir cache;
+  const ScopedEnv xdg("XDG_CACHE_HOME", cache.path().string());
+  const std::string file = std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/state-loads-cart.toml";
+  const RunResult compiled = simulate(file, "compiled");
+  const RunResult interpreted = simulate(file, "interpreted");
+  ASSERT_EQ(compiled.exit_code, 0) << compiled.err;
+  ASSERT_EQ(interpreted.exit_code, 0) << interpreted.err;
+  EXPECT_NE(compiled.err.find("evaluator: compiled (compiled into"), std::string::npos) << compiled.err;
+  EXPECT_NE(compiled.out.find("shaking_moment"), std::string::npos);
+  EXPECT_EQ(compiled.out, interpreted.out);
+}
+
 TEST(Evaluator, WithoutACompilerAutoFallsBackAndCompiledIsRefused) {
   TempDir cache, empty;
   const ScopedEnv xdg("XDG_CACHE_HOME", cache.path().string());

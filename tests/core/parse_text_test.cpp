@@ -42,5 +42,11 @@ TEST(SplitCommas, KeepsEmptyItemsForTheReaderToRefuse) {
   EXPECT_EQ(split_commas("a,"), (std::vector<std::string>{"a", ""}));
 }
 
+TEST(SplitCommas, ACommaInsideParenthesesIsAnExpressions) {
+  EXPECT_EQ(split_commas("t,a=atan2(y, x),b"), (std::vector<std::string>{"t", "a=atan2(y, x)", "b"}));
+  EXPECT_EQ(split_commas("f(g(1,2),3),h"), (std::vector<std::string>{"f(g(1,2),3)", "h"}));
+  EXPECT_EQ(split_commas("a),b"), (std::vector<std::string>{"a)", "b"}));  // an unmatched ')' is the reader's
+}
+
 }  // namespace
 }  // namespace linkage

@@ -82,6 +82,8 @@ std::vector<built::Named> energy_mechanisms() {
           {"driven_spring_pendulum", [] { return built::spring_pendulum(true); }},
           {"double_pendulum_loaded", built::double_pendulum_loaded},
           {"cart_pendulum", built::cart_pendulum},
+          {"cart_pendulum_state_loads", built::cart_pendulum_state_loads},
+          {"double_pendulum_state_loads", built::double_pendulum_state_loads},
           {"arm_collar", built::arm_collar},
           {"reversed_joints", built::reversed_joints},
           {"floating_pair", built::floating_pair},

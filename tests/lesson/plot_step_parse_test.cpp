@@ -77,5 +77,23 @@ TEST(PlotStepParse, EqualAxesNeedsLinearAxesInOneUnit) {
   EXPECT_NE(log.find("'equal_axes' needs linear axes"), std::string::npos) << log;
 }
 
+// A plot's y may define a column; one that reads a parameter the runs set differently is
+// refused (it would be evaluated with the first run's value).
+TEST(PlotStepParse, ADefinedColumnIsPlottedAndItsParametersMustAgree) {
+  test::TempDir dir;
+  const std::string head =
+      "title = \"d\"\nmechanism = \"double-pendulum\"\n[[step]]\nkind = \"plot\"\nout = \"d\"\nduration = 1\n";
+  test::write_text(dir / "ok.toml", head + "y = [\"rel=2.theta-1.theta\", \"tip=l1*1.theta\"]\n");
+  const Lesson lesson = parse_lesson(dir / "ok.toml");
+  const auto& plot_step = std::get<PlotStep>(lesson.steps.at(0).body);
+  ASSERT_EQ(plot_step.figure.y.size(), 2U);
+  EXPECT_EQ(plot_step.figure.y[0].unit, "rad");
+  EXPECT_EQ(plot_step.figure.y[1].unit, "m");
+  const std::string differ =
+      error_of(head + "y = \"tip=l1*1.theta\"\nruns = [{label = \"a\"}, {label = \"b\", set = [\"l1=0.4\"]}]\n");
+  EXPECT_NE(differ.find("column 'tip' uses 'l1', which run 'b' sets to 0.4 and run 'a' to 0.3"), std::string::npos)
+      << differ;
+}
+
 }  // namespace
 }  // namespace linkage::lesson

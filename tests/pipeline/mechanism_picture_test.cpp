@@ -483,7 +483,7 @@ TEST(MechanismPicture, FreeBodyViewPullsEachBodyApartWithItsForces) {
 // shown by default, hidden by --hide motor, absent from a file with no driver.
 TEST(MechanismPicture, ADriverIsAMotorAtItsJointWithItsTorque) {
   const sym::System system(load_mechanism(test_data("driven-four-bar.toml")));
-  const MechanismMotion motion = motion_of(system, 2.0, 10);
+  const MechanismMotion motion = motion_of(system, 2.0, 30);
   const MechanismScene scene(mechanism_geometry(system), motion, {});
   const std::vector<MechanismColumn> columns = mechanism_columns(system);
   const MechanismColumn torque = find_mechanism_column(columns, "M.torque", "test");
@@ -613,7 +613,7 @@ TEST(MechanismPicture, ATrailOverADriversCycleCloses) {
 // the 3.P.x_dot ... columns), independent of the scene's own derivative of the position.
 TEST(MechanismPicture, NamedPointsCarryTheirVelocityAndAcceleration) {
   const sym::System system(load_mechanism(test_data("driven-four-bar.toml")));
-  const MechanismMotion motion = motion_of(system, 1.0, 10, 1, true);
+  const MechanismMotion motion = motion_of(system, 1.0, 30, 1, true);
   const MechanismGeometry geometry = mechanism_geometry(system);
   const std::vector<BodyPoint> points{geometry.resolve("3.P", "points"), geometry.resolve("4.B", "points")};
   // Their places in the sample's named points: bodies in order, each body's points by name.

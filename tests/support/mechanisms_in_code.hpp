@@ -201,6 +201,30 @@ inline Mechanism cart_pendulum() {
   return m;
 }
 
+/// cart_pendulum with loads that depend on the state (issue 25): the spring stiffens with
+/// the travel rail.s, the damper with the pole's angle, the cart's force and the pole's
+/// torque read the rates.
+inline Mechanism cart_pendulum_state_loads() {
+  Mechanism m = cart_pendulum();
+  m.name = "cart-pendulum-state-loads";
+  m.springs = {spring("k1", "ground.A", "cart.C", "k*(1 + rail.s^2)", "0.2", "c*(1 + pole.theta^2)")};
+  m.forces = {{"cart", "C", {q("-0.5*rail.s_dot + 0.3*pole.theta"), q("cart.y_dot")}, {}}};
+  m.torques = {{"pole", q("-0.2*rail.s*pole.theta_dot + 0.1*pole.x"), {}}};
+  return m;
+}
+
+/// double_pendulum_loaded with its pin spring's stiffness, rest angle and damping and its
+/// torque in the state (issue 25).
+inline Mechanism double_pendulum_state_loads() {
+  Mechanism m = double_pendulum_loaded();
+  m.name = "double-pendulum-state-loads";
+  m.joints[1].stiffness = q("kt*(1 + 1.theta^2)");
+  m.joints[1].rest_angle = q("0.3*1.theta_dot");
+  m.joints[1].damping = q("ct*(2 + sin(2.theta))");
+  m.torques = {{"2", q("tau0*(1 - 2.theta_dot/3)"), {}}};
+  return m;
+}
+
 /// A rod turning about a ground pin, driven by a torque that varies with t, with a collar
 /// sliding along it on a spring-damper from the pivot: a slider whose axis turns.
 inline Mechanism arm_collar() {

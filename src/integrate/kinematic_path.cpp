@@ -1,0 +1,195 @@
+#include "integrate/kinematic_path.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "core/error.hpp"
+#include "core/interrupt.hpp"
+#include "core/number_format.hpp"
+
+namespace linkage {
+
+namespace {
+
+// Gauss-Legendre points per quadrature interval: exact for the power's Taylor polynomial
+// of degree 15, so halving an output interval shrinks the error 2^16-fold.
+constexpr int kGaussPoints = 8;
+// Halvings of an interval before the quadrature takes what it has.
+constexpr int kQuadratureDepth = 10;
+// The largest Newton correction of a continuation step, relative to the coordinates' scale.
+constexpr double kLargestCorrection = 1e-3;
+// A continuation step shorter than this fraction of the time reached is not taken: the
+// mechanism cannot go on there.
+constexpr double kShortestStep = 1e-10;
+// J's smallest over largest singular value below sqrt(eps): at a fold of C(q, t) = 0 a
+// residual of round-off moves q by its square root, so q is no longer fixed to the
+// digits the columns promise; the mechanism is at a toggle or limit position.
+const double kSingularSpread = std::sqrt(std::numeric_limits<double>::epsilon());
+
+}  // namespace
+
+KinematicPath::KinematicPath(const sym::System& system, const eval::MechanismDynamics& dynamics, Eigen::VectorXd& y)
+    : system_(&system), dynamics_(&dynamics) {
+  // Golub-Welsch: the nodes are the eigenvalues of Legendre's Jacobi matrix, the weights
+  // 2 v_0^2 of its unit eigenvectors.
+  Eigen::MatrixXd jacobi = Eigen::MatrixXd::Zero(kGaussPoints, kGaussPoints);
+  for (int k = 1; k < kGaussPoints; ++k) jacobi(k - 1, k) = jacobi(k, k - 1) = k / std::sqrt(4.0 * k * k - 1);
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> legendre(jacobi);
+  for (int k = 0; k < kGaussPoints; ++k) {
+    nodes_.push_back(legendre.eigenvalues()[k]);
+    weights_.push_back(2 * legendre.eigenvectors()(0, k) * legendre.eigenvectors()(0, k));
+  }
+  if (!dynamics.close_positions(0, y)) stop(0, "cannot close at the start");
+  dynamics.solve_rates(0, y);
+  if (dynamics.jacobian_spread(0, y) < kSingularSpread) stop(0, "is at a toggle or limit position at the start");
+  y[y.size() - 1] = 0;
+  dy_ = derivative(0, y);
+}
+
+Eigen::VectorXd KinematicPath::derivative(double t, const Eigen::VectorXd& y) const {
+  Eigen::VectorXd dydt;
+  if (!dynamics_->derivative(t, y, dydt))
+    stop(t, "reached a dead point (the case's matrix is singular: the driver cannot move it)");
+  return dydt;
+}
+
+bool KinematicPath::solve_at(double t0, const Eigen::VectorXd& y0, const Eigen::VectorXd& a0, double t,
+                             Eigen::VectorXd& y) {
+  const auto n = static_cast<Eigen::Index>(dynamics_->coordinates());
+  const double h = t - t0;
+  y = y0;
+  y.head(n) += h * y0.segment(n, n) + 0.5 * h * h * a0.segment(n, n);
+  const Eigen::VectorXd predicted = y.head(n);
+  ++solves_;
+  if (!dynamics_->close_positions(t, y)) return false;
+  // On the branch the predictor errs by O(h^3) against a motion of O(h): a correction of a
+  // quarter of the motion is another branch (halving h shrinks a true step's ratio 4-fold).
+  // Nor more than a thousandth of the coordinates' scale, far below the distance between two
+  // assemblies of the same links, so a long step cannot land on the other one.
+  const double scale = 1 + y.head(n).cwiseAbs().maxCoeff();
+  const double motion = (predicted - y0.head(n)).cwiseAbs().maxCoeff();
+  const double correction = (y.head(n) - predicted).cwiseAbs().maxCoeff();
+  if (correction > std::min(0.25 * motion, kLargestCorrection * scale) + 1e-12 * scale) return false;
+  dynamics_->solve_rates(t, y);
+  return true;
+}
+
+bool KinematicPath::solve_between(double a, const Eigen::VectorXd& ya, double b, const Eigen::VectorXd& yb, double t,
+                                  Eigen::VectorXd& y) {
+  // Predicted by the cubic through q and q' at both ends of an accepted step: within it the
+  // branch is the one they are on, so a correction of a quarter of the step's motion is not.
+  const auto n = static_cast<Eigen::Index>(dynamics_->coordinates());
+  const double h = b - a, s = (t - a) / h;
+  const double h00 = (1 + 2 * s) * (1 - s) * (1 - s), h10 = s * (1 - s) * (1 - s), h01 = s * s * (3 - 2 * s),
+               h11 = s * s * (s - 1);
+  y = ya;
+  y.head(n) = h00 * ya.head(n) + h10 * h * ya.segment(n, n) + h01 * yb.head(n) + h11 * h * yb.segment(n, n);
+  const Eigen::VectorXd predicted = y.head(n);
+  ++solves_;
+  if (!dynamics_->close_positions(t, y)) return false;
+  const double motion = (yb.head(n) - ya.head(n)).cwiseAbs().maxCoeff();
+  const double correction = (y.head(n) - predicted).cwiseAbs().maxCoeff();
+  if (correction > 0.25 * motion + 1e-12 * (1 + y.head(n).cwiseAbs().maxCoeff())) return false;
+  dynamics_->solve_rates(t, y);
+  return true;
+}
+
+std::optional<double> KinematicPath::gauss(double a, const Eigen::VectorXd& ya, double b, const Eigen::VectorXd& yb) {
+  const auto last = ya.size() - 1;
+  double sum = 0;
+  Eigen::VectorXd y;
+  for (int k = 0; k < kGaussPoints; ++k) {
+    const double t = a + (b - a) * (1 + nodes_[static_cast<std::size_t>(k)]) / 2;
+    if (!solve_between(a, ya, b, yb, t, y)) return std::nullopt;
+    sum += weights_[static_cast<std::size_t>(k)] * derivative(t, y)[last];
+  }
+  return sum * (b - a) / 2;
+}
+
+std::optional<double> KinematicPath::work(double a, const Eigen::VectorXd& ya, double b, const Eigen::VectorXd& yb,
+                                          std::optional<double> whole, int depth) {
+  if (!whole) whole = gauss(a, ya, b, yb);
+  const double m = (a + b) / 2;
+  Eigen::VectorXd ym;
+  if (!whole || !solve_between(a, ya, b, yb, m, ym)) return std::nullopt;
+  const std::optional<double> left = gauss(a, ya, m, ym), right = gauss(m, ym, b, yb);
+  if (!left || !right) return std::nullopt;
+  const double halves = *left + *right;
+  if (depth >= kQuadratureDepth ||
+      std::fabs(*whole - halves) <= 4 * std::numeric_limits<double>::epsilon() * energy_scale_)
+    return halves;
+  const std::optional<double> first = work(a, ya, m, ym, left, depth + 1),
+                              second = work(m, ym, b, yb, right, depth + 1);
+  if (!first || !second) return std::nullopt;
+  return *first + *second;
+}
+
+void KinematicPath::advance(double t, Eigen::VectorXd& y) {
+  if (h_ == 0) h_ = t;  // the first output interval sets the first step
+  Eigen::VectorXd next;
+  while (t_ < t) {
+    throw_if_interrupted();
+    const double h = std::min(h_, t - t_);
+    const double to = h == t - t_ ? t : t_ + h;
+    std::optional<double> done;  // the work over the step, when it is taken
+    if (solve_at(t_, y, dy_, to, next)) {
+      if (dynamics_->jacobian_spread(to, next) < kSingularSpread)
+        stop(to, "reached a toggle or limit position (its links in line: the driver cannot move it on)");
+      done = work(t_, y, to, next, std::nullopt, 0);
+    }
+    if (!done) {
+      ++rejected_;
+      h_ = h / 2;
+      if (h_ < kShortestStep * std::max(1.0, t_))
+        stop(t_,
+             "cannot close beyond here (a limit position, its links in line: J's smallest over largest singular "
+             "value " +
+                 format_significant(dynamics_->jacobian_spread(t_, y), 2) + " there)");
+      continue;
+    }
+    next[next.size() - 1] = y[y.size() - 1] + *done;
+    ++accepted_;
+    y = next;
+    dy_ = derivative(to, next);
+    t_ = to;
+    h_ = std::max(h_, 2 * h);
+  }
+}
+
+void KinematicPath::stop(double t, const std::string& what) const {
+  throw Error::input(driven_stop_message(*system_, t, what) +
+                     " (kinematic analysis: the drivers take every degree of freedom)");
+}
+
+std::string driven_stop_message(const sym::System& system, double t, const std::string& what) {
+  const Mechanism& mechanism = system.mechanism();
+  std::string loops;
+  for (int j : system.tree().loop_joints)
+    loops += (loops.empty() ? "" : ", ") + mechanism.joints[static_cast<std::size_t>(j)].name;
+  std::string drivers;
+  GiNaC::exmap at = system.parameter_values();
+  for (const auto& [symbol, expression] : system.constants()) at[symbol] = expression;
+  at[system.time()] = t;
+  for (const sym::DriverSystem& d : system.drivers()) {
+    const Driver& driver = mechanism.drivers[static_cast<std::size_t>(d.index)];
+    std::string unit;
+    switch (mechanism.joints[static_cast<std::size_t>(d.joint)].type) {
+      case JointType::pin:
+        unit = " rad";
+        break;
+      case JointType::slider:
+        unit = " m";
+        break;
+    }
+    drivers += std::string(drivers.empty() ? "" : ", ") + "driver '" + driver.name + "' at " +
+               format_significant(sym::evaluate(system.quantity(driver.motion, true), at), 6) + unit;
+  }
+  const std::string what_closes = loops.empty() ? std::string("the mechanism") : "the loop through " + loops;
+  return "at t = " + format_significant(t, 6) + " s " + drivers + ": " + what_closes + " " + what +
+         "; valid: a motion within the mechanism's range";
+}
+
+}  // namespace linkage
