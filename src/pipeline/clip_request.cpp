@@ -137,6 +137,8 @@ CheckedMechanismClip mechanism_clip(const RenderRequest& request, const sym::Sys
   clip.theme = load_theme(clip.settings.theme, plan.assets, "theme");
   clip.simulation = simulation;
   clip.trails = request.trails.empty() ? picture.trails : request.trails;
+  clip.trail_seconds = trail_seconds_of(system, request.trail_length);
+  clip.points = request.points;
   for (std::string& name : clip.settings.panel) name = system.mechanism().unaliased(name);  // theta1: 1.theta
   clip.ensemble = request.ensemble;
   clip.spread = request.spread;

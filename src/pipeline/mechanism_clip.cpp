@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <initializer_list>
+#include <numbers>
 #include <string_view>
 
 #include "columns/mechanism_columns.hpp"
@@ -12,6 +13,7 @@
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
 #include "core/number_format.hpp"
+#include "core/parse_text.hpp"
 #include "integrate/mechanism_simulation.hpp"
 #include "model/mechanism_toml.hpp"
 #include "pipeline/encode_frames.hpp"
@@ -43,7 +45,6 @@ const sym::GeneralizedCoordinate& ensemble_coordinate(const sym::System& system)
   return system.coordinates().front();
 }
 
-constexpr double kTrailSeconds = 2.0;
 constexpr int kTrailSteps = 4;          // trail samples per frame interval
 constexpr double kPanelSamples = 4000;  // a panel's samples over the clip, at least (one per frame when fewer)
 constexpr double kMargin = 0.1;         // of the view's larger side, around the whole motion
@@ -58,9 +59,21 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-std::vector<BodyPoint> resolve_trails(const MechanismGeometry& geometry, const std::vector<std::string>& trails) {
+std::vector<BodyPoint> resolve_trails(const MechanismGeometry& geometry, const std::vector<std::string>& trails,
+                                      const std::string& setting = "trail") {
   std::vector<BodyPoint> points;
-  for (const std::string& trail : trails) points.push_back(geometry.resolve(trail, "trail"));
+  for (const std::string& trail : trails) points.push_back(geometry.resolve(trail, setting));
+  return points;
+}
+
+/// --points: each a point of a moving body (a ground point has no velocity to draw).
+std::vector<BodyPoint> resolve_points(const MechanismGeometry& geometry, const std::vector<std::string>& names) {
+  std::vector<BodyPoint> points = resolve_trails(geometry, names, "points");
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (points[i].body < 0)
+      throw Error::invalid(
+          "points",
+          "'" + names[i] + "' is a point of the ground, which does not move; give BODY.POINT of a moving body");
   return points;
 }
 
@@ -141,9 +154,9 @@ class MechanismFrames {
  public:
   MechanismFrames(const MechanismGeometry& geometry, const MechanismMotion& motion, const MechanismClip& clip,
                   const RenderSettings& settings, const std::vector<Overlay>& overlays, std::string ensemble_row)
-      : scene_(geometry, motion, resolve_trails(geometry, clip.trails), kTrailSeconds, clip.settings.arrow_scale,
+      : scene_(geometry, motion, resolve_trails(geometry, clip.trails), clip.trail_seconds, clip.settings.arrow_scale,
                clip.settings.elements, clip.settings.free_body,
-               mechanism_camera_mode(settings, geometry) == CameraMode::follow),
+               mechanism_camera_mode(settings, geometry) == CameraMode::follow, resolve_points(geometry, clip.points)),
         motion_(motion),
         settings_(settings),
         labels_{clip.settings.title, run_label(clip.simulation)},
@@ -279,7 +292,11 @@ void add_drawing(RenderStats& stats, const RenderStats& drawn) {
 void produce_still(const sym::System& system, const GiNaC::exmap& initial, const MechanismClip& clip,
                    const ClipProgress& progress, ClipResult& result) {
   const RenderSettings& s = clip.settings;
-  const std::vector<double> times = s.still_times(s.panel.empty() ? std::min(s.at, kTrailSeconds) : s.at);
+  // Back to the trail's start, a frame interval early when it falls between frames (the
+  // trail's first point is found between the two).
+  const double step = s.speed / s.fps;
+  const double back = (std::ceil(clip.trail_seconds / step - 1e-9) + 0.5) * step;
+  const std::vector<double> times = s.still_times(s.panel.empty() ? std::min(s.at, back) : s.at);
   SimulationOptions options = clip.simulation;
   options.duration = std::max(s.at, options.dt);
   options.validate();
@@ -300,6 +317,46 @@ void produce_still(const sym::System& system, const GiNaC::exmap& initial, const
 }
 
 }  // namespace
+
+double driver_cycle_seconds(const sym::System& system) {
+  const Mechanism& m = system.mechanism();
+  if (m.drivers.empty())
+    throw Error::invalid("trail_length", "cycle needs a [[driver]], and " + m.name + " has none; give seconds");
+  const GiNaC::symbol& t = system.time();
+  double period = 0;
+  for (const Driver& d : m.drivers) {
+    const std::string named = "driver " + d.name + "'s motion '" + d.motion.text + "'";
+    const auto joint =
+        std::find_if(m.joints.begin(), m.joints.end(), [&](const Joint& j) { return j.name == d.joint; });
+    if (joint != m.joints.end() && joint->type != JointType::pin)
+      throw Error::invalid("trail_length", "cycle: " + named + " moves slider " + d.joint +
+                                               ", whose travel does not come round; give seconds");
+    const GiNaC::ex motion = system.quantity(d.motion, true)
+                                 .subs(system.constants())
+                                 .subs(system.constants())
+                                 .subs(system.parameter_values());
+    const GiNaC::ex rate = GiNaC::normal(motion.diff(t));
+    if (!GiNaC::normal(rate.diff(t)).is_zero() || !GiNaC::is_a<GiNaC::numeric>(GiNaC::evalf(rate)))
+      throw Error::invalid("trail_length",
+                           "cycle: " + named + " does not turn at a constant rate (theta0 + omega*t); give seconds");
+    const double omega = GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(rate)).to_double();
+    if (!(std::fabs(omega) > 0) || !std::isfinite(omega))
+      throw Error::invalid("trail_length", "cycle: " + named + " does not turn (omega = 0); give seconds");
+    const double own = 2 * std::numbers::pi / std::fabs(omega);
+    if (period > 0 && std::fabs(own - period) > 1e-12 * period)
+      throw Error::invalid("trail_length", "cycle: " + named + " has period " + format_significant(own, 6) +
+                                               " s, another driver's " + format_significant(period, 6) +
+                                               " s; give seconds");
+    period = own;
+  }
+  return period;
+}
+
+double trail_seconds_of(const sym::System& system, const std::string& trail_length) {
+  if (trail_length.empty()) return 2.0;
+  if (trail_length == "cycle") return driver_cycle_seconds(system);
+  return parse_number(trail_length, "trail_length", "");
+}
 
 CameraMode mechanism_camera_mode(const RenderSettings& settings, const MechanismGeometry& geometry) {
   if (settings.camera_chosen) return settings.camera;
@@ -577,6 +634,9 @@ void MechanismClip::validate(const sym::System& system) const {
   if (frames && fs::exists(*frames, ec) && !fs::is_directory(*frames, ec))
     throw Error::invalid("frames", "'" + frames->string() + "' exists and is not a folder");
   (void)resolve_trails(mechanism_geometry(system), trails);
+  (void)resolve_points(mechanism_geometry(system), points);
+  if (!(trail_seconds > 0) || !std::isfinite(trail_seconds))
+    throw Error::invalid("trail_length", format_significant(trail_seconds, 6) + " s; valid: seconds > 0, or cycle");
   if (!settings.panel.empty()) (void)mechanism_panel_columns(mechanism_columns(system), settings.panel, &system);
   if (ensemble != 0 && (ensemble < 2 || ensemble > 200))
     throw Error::invalid("ensemble", std::to_string(ensemble) + " runs; expected 2 .. 200");

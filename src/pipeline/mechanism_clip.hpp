@@ -63,7 +63,9 @@ struct MechanismClip {
   SimulationOptions simulation;
   RenderSettings settings;
   Theme theme;
-  std::vector<std::string> trails;              // "BODY.POINT": paths over the last 2 s
+  std::vector<std::string> trails;              // "BODY.POINT": paths over the last trail_seconds
+  double trail_seconds = 2.0;                   // > 0
+  std::vector<std::string> points;              // "BODY.POINT": their velocity and acceleration arrows
   std::optional<std::filesystem::path> out;     // .mp4, .gif, .webm, or a still: .png, .svg, .pdf
   std::optional<std::filesystem::path> frames;  // a numbered PNG sequence's folder
   int ensemble = 0;                             // 0, or 2..200 runs (the main one among them)
@@ -78,6 +80,13 @@ struct MechanismClip {
   /// about "out", "frames", "size", ...; Error::input naming --trail for a bad point.
   void validate(const sym::System& system) const;
 };
+
+/// One period of the drivers' motion, s: 2 pi/|omega| when every driver turns a pin at a
+/// constant rate omega (theta0 + omega*t) with one period; else Error::invalid("trail_length")
+/// naming the motion and why (`--trail-length cycle`).
+[[nodiscard]] double driver_cycle_seconds(const sym::System& system);
+/// A trail's length as `--trail-length` gives it: empty, the default 2 s; seconds; or "cycle".
+[[nodiscard]] double trail_seconds_of(const sym::System& system, const std::string& trail_length);
 
 /// The camera `settings` ask for (camera_chosen), else fit for a grounded mechanism and
 /// follow for a floating one.

@@ -28,8 +28,8 @@ struct RenderDraft {
 namespace {
 
 // "pin" is the joint kind's other name, as --show's pin-force is joint-force's.
-constexpr std::array<std::string_view, 7> kMechanismArrowKinds{"joint",  "pin",      "applied",     "gravity",
-                                                               "spring", "velocity", "acceleration"};
+constexpr std::array<std::string_view, 8> kMechanismArrowKinds{"joint",  "pin",      "applied",      "gravity",
+                                                               "spring", "velocity", "acceleration", "driver"};
 
 /// Runs `parse`, whose errors are worded "NAME: ...", and makes them the setting's.
 template <typename Parse>
@@ -108,9 +108,27 @@ void angles(RenderDraft& d, const std::string& text) {
   d.request.settings.angles = as_setting("angles", [&] { return parse_angle_unit(text, "angles"); });
 }
 
-void trail(RenderDraft& d, const std::string& text) {
-  for (std::string& item : split_commas(text)) d.request.trails.push_back(std::move(item));
+void append_items(std::vector<std::string>& to, const std::string& text) {
+  for (std::string& item : split_commas(text)) to.push_back(std::move(item));
 }
+
+void trail(RenderDraft& d, const std::string& text) { append_items(d.request.trails, text); }
+
+void trail_length(RenderDraft& d, const std::string& text) {
+  if (text != "cycle") {
+    const std::string valid = "; valid: seconds > 0, or cycle (one period of the driver's motion)";
+    double value = 0;
+    try {
+      value = parse_number(text, "trail_length", "");
+    } catch (const Error&) {
+      throw Error::invalid("trail_length", "'" + text + "' is not a number" + valid);
+    }
+    if (!(value > 0) || !std::isfinite(value)) throw Error::invalid("trail_length", "'" + text + "' s" + valid);
+  }
+  d.request.trail_length = text;
+}
+
+void points(RenderDraft& d, const std::string& text) { append_items(d.request.points, text); }
 
 void ensemble(RenderDraft& d, const std::string& text) {
   const bool whole = !text.empty() && text.size() < 5 && text.find_first_not_of("0123456789") == std::string::npos;
@@ -172,7 +190,8 @@ std::vector<RenderOption> make_options() {
       {"arrow_scale", V::string, "string", "SPEC", "each kind its own",
        "Arrow lengths: each kind its own scale (default); common (every force one scale, so the pin force reads "
        "against gravity; common=N_PER_CM sets it); KIND=N_PER_CM,... fixes kinds (pin, gravity, velocity; a "
-       "mechanism's joint (or pin), applied, gravity, spring, velocity, acceleration). Arrows too short to see are "
+       "mechanism's joint (or pin), applied, gravity, spring, velocity, acceleration, driver). Arrows too short to see "
+       "are "
        "drawn dashed at a least "
        "length, labelled with "
        "their value",
@@ -185,9 +204,18 @@ std::vector<RenderOption> make_options() {
       {"angles", V::string, "string", "rad|deg", "\"rad\"",
        "Unit of the panel's angles and angular rates: rad or deg (axis in deg, deg/s)", angles},
       {"trail", V::list, "list of strings", "BODY.POINT", "none",
-       "Draw the path of a body's point over the last 2 s, e.g. 3.B (a four-bar's coupler curve); default: the "
+       "Draw the path of a body's point over the last trail_length (2 s), e.g. 3.B (a four-bar's coupler curve); "
+       "default: the "
        "file's [picture] trail (the homework's P)",
        trail},
+      {"trail_length", V::string, "string", "S|cycle", "\"2\"",
+       "How long a trail is: seconds (\"2.5\"), or cycle: one period of the driver's motion (2 pi/|omega| for a "
+       "motion theta0 + omega*t), so a coupler curve closes",
+       trail_length},
+      {"points", V::list, "list of strings", "BODY.POINT", "none",
+       "Draw the velocity and acceleration of these points (with --show velocity,acceleration), e.g. 3.P,4.B, each "
+       "arrow labelled with its magnitude",
+       points},
       {"ensemble", V::integer, "integer", "N", "none",
        "Draw N runs (2 .. 200) starting up to spread apart, faint in a colour ramp behind the main run (chaos "
        "fanning out): in the file's [picture] ensemble coordinate (the homework's theta1), else the first",

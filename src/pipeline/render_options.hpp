@@ -48,6 +48,8 @@ struct RenderTarget {
 struct RenderRequest {
   RenderSettings settings;
   std::vector<std::string> trails;  // BODY.POINT (a mechanism's)
+  std::string trail_length;         // seconds as given, "cycle", or empty (the default 2 s)
+  std::vector<std::string> points;  // BODY.POINT: velocity and acceleration arrows there
   int ensemble = 0;                 // 0, or 2 .. 200 runs
   double spread = 1e-6;
   std::string compare;  // as given: NAME=VALUE,..., a trajectory FILE.csv or a mechanism

@@ -22,6 +22,8 @@ constexpr const char* kSpringName = "spring forces";
 constexpr const char* kVelocityName = "velocity";
 constexpr const char* kRelativeVelocityName = "velocity relative to G";
 constexpr const char* kAccelerationName = "acceleration";
+constexpr const char* kDriverTorqueName = "driver torque";
+constexpr const char* kDriverForceName = "driver force";
 constexpr const char* kComName = "centres of mass";
 constexpr const char* kCutNote = "cut short: its label gives the value";
 // On two lines, so the legend stays narrow enough to fit beside a body.
@@ -85,26 +87,62 @@ void paint_cut(cairo_t* cr, const DrawStyle& style, const Vec2& tail, const Vec2
   cairo_stroke(cr);
 }
 
-void paint_torque(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List::Torque& torque) {
-  const Rgba& colour = style.theme->velocity;
-  const double radius = torque.radius * camera.scale();
-  if (radius <= 0 || torque.sweep == 0) return;
+// An arc of `radius` pixels about `centre` (pixels) from `start` to start + sweep (world
+// angles: counter-clockwise on the screen for sweep > 0), with a head at its end.
+void paint_arc_arrow(cairo_t* cr, const DrawStyle& style, const Vec2& centre, double radius, double start, double sweep,
+                     const Rgba& colour) {
+  if (radius <= 0 || sweep == 0) return;
+  const auto at = [&](double angle) { return Vec2(centre + radius * Vec2(std::cos(angle), -std::sin(angle))); };
   // The arc stops where the head begins; the head is a short arrow along the chord,
   // long enough that paint_arrow keeps the head full size.
-  const double head = std::min(1.7 * style.arrow_head_length() / radius, 0.5 * std::fabs(torque.sweep));
-  List::Torque body = torque;
-  body.sweep -= std::copysign(head, torque.sweep);
-  const std::vector<Vec2> points = arc_points(camera, body, 48);
+  const double head = std::min(1.7 * style.arrow_head_length() / radius, 0.5 * std::fabs(sweep));
+  const double body = sweep - std::copysign(head, sweep);
+  constexpr int kSteps = 48;
   set_colour(cr, colour);
   cairo_set_line_width(cr, style.arrow_width());
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
   cairo_new_path(cr);
-  for (const Vec2& p : points) cairo_line_to(cr, p.x(), p.y());
+  for (int i = 0; i <= kSteps; ++i) {
+    const Vec2 p = at(start + body * i / kSteps);
+    cairo_line_to(cr, p.x(), p.y());
+  }
   cairo_stroke(cr);
-  const double end = torque.start + torque.sweep;
-  paint_arrow(cr, style, points.back(),
-              camera.to_pixels(torque.centre + torque.radius * Vec2(std::cos(end), std::sin(end))), colour);
+  paint_arrow(cr, style, at(start + body), at(start + sweep), colour);
 }
+
+void paint_torque(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List::Torque& torque) {
+  paint_arc_arrow(cr, style, camera.to_pixels(torque.centre), torque.radius * camera.scale(), torque.start,
+                  torque.sweep, torque.driver ? style.theme->motor : style.theme->velocity);
+}
+
+}  // namespace
+
+double motor_radius_px(const DrawStyle& style) { return 3.4 * style.pin_radius(); }
+
+void paint_motors(cairo_t* cr, const DrawStyle& style, const Camera& camera, const MechanismDrawList& list) {
+  // A motor as a drawing shows one: a circle in the motor's colour around the driven
+  // joint with a curved arrow inside it (a slider's: a straight one along its axis).
+  const Rgba& colour = style.theme->motor;
+  const double r = motor_radius_px(style);
+  for (const List::Motor& motor : list.motors) {
+    const Vec2 at = camera.to_pixels(motor.at);
+    cairo_new_path(cr);
+    cairo_arc(cr, at.x(), at.y(), r, 0, 2 * std::numbers::pi);
+    set_colour(cr, with_alpha(colour, 0.18));
+    cairo_fill_preserve(cr);
+    set_colour(cr, colour);
+    cairo_set_line_width(cr, 1.3 * style.edge_width());
+    cairo_stroke(cr);
+    if (motor.slider) {
+      const Vec2 along = Vec2(motor.axis.x(), -motor.axis.y()).normalized();  // y flips in pixels
+      paint_arrow(cr, style, at - 0.75 * r * along, at + 0.75 * r * along, colour);
+    } else {
+      paint_arc_arrow(cr, style, at, 0.62 * r, 0.75 * std::numbers::pi, 1.5 * std::numbers::pi, colour);
+    }
+  }
+}
+
+namespace {
 
 // The legend's rows: per kind a reference arrow at the kind's scale, its value and the
 // scale per centimetre; then what a cut and a stretched arrow mean. Measures the
@@ -118,7 +156,7 @@ Vec2 legend_rows(cairo_t* cr, const DrawStyle& style, const Camera& camera, cons
   const text::Metrics m = text::metrics(cr, font);
   const double u = style.u, row = 1.7 * font.size;
   double names = 0;
-  const auto row_name = [&legend](List::Arrow::Kind kind) {
+  const auto row_name = [&legend](List::Arrow::Kind kind, double sweep = 0) {
     switch (kind) {
       case List::Arrow::Kind::joint:
         return kJointName;
@@ -132,13 +170,16 @@ Vec2 legend_rows(cairo_t* cr, const DrawStyle& style, const Camera& camera, cons
         return legend.relative_velocity ? kRelativeVelocityName : kVelocityName;
       case List::Arrow::Kind::acceleration:
         return kAccelerationName;
+      case List::Arrow::Kind::driver:
+        return sweep > 0 ? kDriverTorqueName : kDriverForceName;
     }
     return kJointName;
   };
   const bool forces = legend.metres > 0;
   if (forces && legend.joint) names = std::max(names, text::width(cr, font, kJointName));
   if (forces && legend.applied) names = std::max(names, text::width(cr, font, kAppliedName));
-  for (const List::Legend::Row& r : legend.rows) names = std::max(names, text::width(cr, font, row_name(r.kind)));
+  for (const List::Legend::Row& r : legend.rows)
+    names = std::max(names, text::width(cr, font, row_name(r.kind, r.sweep)));
   for (const std::string& trail : legend.trails) names = std::max(names, text::width(cr, font, trail.c_str()));
   double y = at.y(), widest = 0;
   const auto baseline = [&] { return y + 0.5 * row + 0.5 * (m.ascent - m.descent); };
@@ -152,13 +193,18 @@ Vec2 legend_rows(cairo_t* cr, const DrawStyle& style, const Camera& camera, cons
     paint_com_symbol(cr, style, {x + style.com_radius(), y + 0.5 * row}, style.com_radius());
     text::draw(cr, font, x + 2 * style.com_radius() + 6 * u, baseline(), kComName, theme.text);
   };
+  // A torque's row (sweep > 0): its reference arc, as wide as the row is high, in place of the arrow.
   const auto scale_row = [&](const char* name, const Rgba& colour, double metres, const std::string& value,
-                             const std::string& scale) {
-    const double arrow = metres * camera.scale(), x = at.x() + names + 8 * u;
+                             const std::string& scale, double sweep = 0) {
+    const double arrow = sweep > 0 ? 0.9 * row : metres * camera.scale(), x = at.x() + names + 8 * u;
     const std::string note = value + "   (" + scale + ")";
     if (paint) {
       text::draw(cr, font, at.x(), baseline(), name, theme.text);
-      paint_arrow(cr, style, {x, y + 0.5 * row}, {x + arrow, y + 0.5 * row}, colour);
+      if (sweep > 0)
+        paint_arc_arrow(cr, style, {x + 0.5 * arrow, y + 0.5 * row}, 0.4 * row, 0.5 * std::numbers::pi - 0.5 * sweep,
+                        sweep, colour);
+      else
+        paint_arrow(cr, style, {x, y + 0.5 * row}, {x + arrow, y + 0.5 * row}, colour);
       text::draw(cr, font, x + arrow + 6 * u, baseline(), note.c_str(), theme.text);
     }
     const double used = names + 8 * u + arrow + 6 * u + text::width(cr, font, note.c_str());
@@ -189,13 +235,13 @@ Vec2 legend_rows(cairo_t* cr, const DrawStyle& style, const Camera& camera, cons
   if (forces && legend.applied)
     scale_row(kAppliedName, theme.velocity, legend.applied_metres, legend.applied_value, legend.applied_scale);
   for (const List::Legend::Row& r : legend.rows)
-    scale_row(row_name(r.kind), arrow_colour(theme, r.kind), r.metres, r.value, r.scale);
+    scale_row(row_name(r.kind, r.sweep), arrow_colour(theme, r.kind), r.metres, r.value, r.scale, r.sweep);
   if (legend.cut) marked_row(kCutNote, nullptr, true);
   if (legend.stretched) marked_row(kStretchedNote, kStretchedNote2, false);
   // What is not an arrow: each trail (a line), then a note.
   const double glyph = 40 * u, x = at.x() + names + 8 * u;
   char seconds[32];
-  std::snprintf(seconds, sizeof seconds, "last %g s", legend.trail_seconds);
+  std::snprintf(seconds, sizeof seconds, "last %.3g s", legend.trail_seconds);
   for (const std::string& trail : legend.trails) {
     if (paint) {
       text::draw(cr, font, at.x(), baseline(), trail.c_str(), theme.text);
@@ -240,6 +286,7 @@ std::vector<Rect> drawn_boxes(const DrawStyle& style, const Camera& camera, cons
   for (const List::Arrow& arrow : list.arrows)
     around({arrow.tail, arrow.tail + arrow.vector}, style.arrow_head_length());
   for (const List::Marker& marker : list.markers) around({marker.at}, 10 * style.u);
+  for (const List::Motor& motor : list.motors) around({motor.at}, motor_radius_px(style) + 2 * style.u);
   for (const List::Line& line : list.lines)
     if (line.kind != List::Line::Kind::trail && !line.points.empty()) around(line.points, style.edge_width());
   for (const List::Torque& torque : list.torques)
@@ -392,6 +439,11 @@ ForceLayout layout_forces(cairo_t* cr, const DrawStyle& style, const Camera& cam
     obstacles.boxes.push_back({at.x() - r, at.y() - r, 2 * r, 2 * r});
   }
   const std::size_t markers = obstacles.boxes.size();
+  for (const List::Motor& motor : list.motors) {
+    const double r = motor_radius_px(style) + 2 * style.u;
+    const Vec2 at = camera.to_pixels(motor.at);
+    obstacles.boxes.push_back({at.x() - r, at.y() - r, 2 * r, 2 * r});
+  }
   layout.arrows = arrows_apart(style, camera, list);
   for (const Segment& arrow : layout.arrows) obstacles.segments.push_back(arrow);
   for (std::size_t i = 0; i < list.labels.size(); ++i) {
@@ -474,7 +526,8 @@ ForceLayout layout_forces(cairo_t* cr, const DrawStyle& style, const Camera& cam
     const double middle = torque.start + 0.5 * torque.sweep;
     const Vec2 out(std::cos(middle), std::sin(middle));
     const Vec2 head = camera.to_pixels(torque.centre + torque.radius * out);
-    add(torque.label, head, Vec2(out.x(), -out.y()), List::Arrow::Kind::applied);
+    add(torque.label, head, Vec2(out.x(), -out.y()),
+        torque.driver ? List::Arrow::Kind::driver : List::Arrow::Kind::applied);
   }
   return layout;
 }
@@ -499,6 +552,8 @@ const Rgba& arrow_colour(const Theme& theme, MechanismDrawList::Arrow::Kind kind
       return theme.trail;
     case List::Arrow::Kind::acceleration:
       return theme.com;
+    case List::Arrow::Kind::driver:
+      return theme.motor;
   }
   return theme.pin_force;
 }

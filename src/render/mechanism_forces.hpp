@@ -53,6 +53,11 @@ struct ForceLayout {
 /// The colour of an arrow of `kind`.
 [[nodiscard]] const Rgba& arrow_colour(const Theme& theme, MechanismDrawList::Arrow::Kind kind);
 
+/// A driver's motor symbol's radius, px.
+[[nodiscard]] double motor_radius_px(const DrawStyle& style);
+/// Each driver's motor symbol at its joint (under the joint's pin, which sits in its middle).
+void paint_motors(cairo_t* cr, const DrawStyle& style, const Camera& camera, const MechanismDrawList& list);
+
 /// The arrows and torque arcs, then the laid-out labels and the legend.
 void paint_forces(cairo_t* cr, const DrawStyle& style, const Camera& camera, const MechanismDrawList& list,
                   const ForceLayout& layout);

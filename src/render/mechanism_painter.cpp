@@ -391,6 +391,7 @@ void paint_mechanism_frame(cairo_t* cr, const DrawStyle& style, const Camera& ca
   paint_trail_heads(cr, style, camera, list);
   paint_markers(cr, style, camera, list, List::Marker::Kind::ground);
   paint_markers(cr, style, camera, list, List::Marker::Kind::guide);
+  paint_motors(cr, style, camera, list);
   paint_markers(cr, style, camera, list, List::Marker::Kind::pin);
   paint_markers(cr, style, camera, list, List::Marker::Kind::com);
   std::vector<Rect> occupied;

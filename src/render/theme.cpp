@@ -44,7 +44,7 @@ using Accessor = Rgba& (*)(Theme&);
   {                                                 \
     key, [](Theme& t) -> Rgba& { return t.member; } \
   }
-constexpr std::array<std::pair<std::string_view, Accessor>, 17> kColourKeys{{
+constexpr std::array<std::pair<std::string_view, Accessor>, 18> kColourKeys{{
     LINKAGE_COLOUR("background", background),
     LINKAGE_COLOUR("grid", grid),
     LINKAGE_COLOUR("text", text),
@@ -62,6 +62,7 @@ constexpr std::array<std::pair<std::string_view, Accessor>, 17> kColourKeys{{
     LINKAGE_COLOUR("velocity", velocity),
     LINKAGE_COLOUR("trail", trail),
     LINKAGE_COLOUR("com", com),
+    LINKAGE_COLOUR("motor", motor),
 }};
 #undef LINKAGE_COLOUR
 

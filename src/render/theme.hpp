@@ -19,7 +19,7 @@ struct Theme {
   std::string name;
   Rgba background, grid, text, text_muted, panel, panel_edge;
   std::array<Rgba, 2> block_fill, block_edge;  // blocks 1 and 2
-  Rgba pin_fill, pin_edge, pin_force, gravity, velocity, trail, com;
+  Rgba pin_fill, pin_edge, pin_force, gravity, velocity, trail, com, motor;
 };
 
 /// The themes shipped: light, dark, print.

@@ -29,6 +29,7 @@ enum class Element : std::uint8_t {
   spring_force,  // a mechanism's spring (and damper) force on each body at its end
   loads,         // a mechanism's applied forces and torques
   acceleration,  // acceleration of each centre of mass and traced point (a mechanism's)
+  motor,         // a [[driver]] drawn as a motor at its joint, with its torque or force
 };
 
 struct ElementInfo {
@@ -37,7 +38,7 @@ struct ElementInfo {
   bool shown_by_default;
 };
 
-inline constexpr std::array<ElementInfo, 17> kElements{{
+inline constexpr std::array<ElementInfo, 18> kElements{{
     {Element::blocks, "blocks", true},
     {Element::pin, "pin", true},
     {Element::pin_force, "pin-force", true},
@@ -55,6 +56,7 @@ inline constexpr std::array<ElementInfo, 17> kElements{{
     {Element::spring_force, "spring-force", true},
     {Element::loads, "loads", true},
     {Element::acceleration, "acceleration", false},
+    {Element::motor, "motor", true},
 }};
 
 /// Other spellings a mechanism's picture reads more naturally with.

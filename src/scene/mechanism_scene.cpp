@@ -166,6 +166,9 @@ MechanismGeometry mechanism_geometry(const sym::System& system) {
     }
     g.joints.push_back(std::move(shape));
   }
+  for (const Driver& d : m.drivers)
+    for (std::size_t j = 0; j < m.joints.size(); ++j)
+      if (m.joints[j].name == d.joint) g.drivers.push_back({d.name, j});
   for (const Spring& s : m.springs)
     g.springs.push_back({s.name,
                          {point_of(system, s.between[0].body, s.between[0].point),
@@ -304,6 +307,7 @@ void MechanismDrawList::clear() {
   markers.clear();
   arrows.clear();
   torques.clear();
+  motors.clear();
   labels.clear();
   joint_labels.clear();
   ghosts.clear();
@@ -311,7 +315,7 @@ void MechanismDrawList::clear() {
 
 MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion& motion, std::vector<BodyPoint> trails,
                                double trail_seconds, const ArrowScaleRequest& arrows, ElementSet shown, bool free_body,
-                               bool relative_velocities)
+                               bool relative_velocities, const std::vector<BodyPoint>& arrow_points)
     : geometry_(std::move(geometry)),
       motion_(motion),
       trails_(std::move(trails)),
@@ -320,6 +324,18 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
       free_body_(free_body),
       relative_velocities_(relative_velocities) {
   if (!shown_.has(Element::trail)) trails_.clear();
+  // The points whose velocity and acceleration are drawn: the trails', then those named
+  // (--points), these labelled with their magnitude.
+  for (const BodyPoint& trail : trails_) marked_.push_back({trail, false});
+  for (const BodyPoint& point : arrow_points) {
+    const auto same = std::find_if(marked_.begin(), marked_.end(), [&](const Marked& m) {
+      return m.point.body == point.body && m.point.local == point.local;
+    });
+    if (same != marked_.end())
+      same->valued = true;
+    else
+      marked_.push_back({point, true});
+  }
   const std::size_t joints = geometry_.joints.size(), samples = motion_.samples.size();
   rail_span_.assign(joints, {1e300, -1e300});
   spring_span_.assign(geometry_.springs.size(), {1e300, 0});
@@ -330,21 +346,23 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
   // Each sample's largest force (joint or applied) and torque: the scales' statistics;
   // and per other kind its own largest.
   std::vector<double> largest_force(samples, 0), largest_torque(samples, 0), largest_gravity(samples, 0),
-      largest_spring(samples, 0), largest_velocity(samples, 0), largest_acceleration(samples, 0);
+      largest_spring(samples, 0), largest_velocity(samples, 0), largest_acceleration(samples, 0),
+      largest_driver_force(samples, 0), largest_driver_torque(samples, 0);
   std::vector<double> inputs, scratch(geometry_.load_values.scratch_size());
   // The traced points' velocities, shown with the centres of mass's.
   trail_velocity_.assign(samples, {});
   eval::Program traced;
   if (shown_.has(Element::velocity)) {
     std::vector<GiNaC::ex> velocities;
-    for (const BodyPoint& trail : trails_) {
+    for (const Marked& marked : marked_) {
+      const BodyPoint& trail = marked.point;
       if (trail.body < 0) continue;
       const auto b = static_cast<std::size_t>(trail.body);
       for (std::size_t p = 0; p < geometry_.bodies[b].points.size() && b < geometry_.point_velocities.size(); ++p)
         if (geometry_.bodies[b].points[p].second == trail.local) {
           velocities.push_back(geometry_.point_velocities[b][p][0]);
           velocities.push_back(geometry_.point_velocities[b][p][1]);
-          traced_.push_back(trail);
+          traced_.push_back(marked);
           break;
         }
     }
@@ -352,7 +370,8 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
   }
   // The traced points' places in a sample's named points (bodies in order, each body's
   // points by name), whose accelerations are drawn with the centres of mass's.
-  for (const BodyPoint& trail : trails_) {
+  for (std::size_t m = 0; m < marked_.size(); ++m) {
+    const BodyPoint& trail = marked_[m].point;
     if (trail.body < 0 || !shown_.has(Element::acceleration)) continue;
     std::size_t index = 0;
     for (std::size_t b = 0; b < static_cast<std::size_t>(trail.body); ++b) index += geometry_.bodies[b].points.size();
@@ -360,7 +379,7 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
     const auto own = std::find_if(points.begin(), points.end(), [&](const auto& p) { return p.second == trail.local; });
     if (own == points.end()) continue;
     for (const auto& p : points) index += p.first < own->first ? 1 : 0;
-    traced_points_.push_back(index);
+    traced_points_.emplace_back(m, index);
   }
   std::vector<double> scratch_traced(traced.scratch_size());
   for (std::size_t k = 0; k < samples; ++k) {
@@ -371,6 +390,11 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
         bounds_.include(p);
         reach_ = std::max(reach_, (p - c).norm());
       }
+    for (std::size_t d = 0; d < geometry_.drivers.size() && d < s.drivers.size(); ++d) {
+      const bool slider = geometry_.joints[geometry_.drivers[d].joint].type == JointType::slider;
+      double& largest = slider ? largest_driver_force[k] : largest_driver_torque[k];
+      largest = std::max(largest, std::fabs(s.drivers[d]));
+    }
     for (std::size_t j = 0; j < joints; ++j) {
       const MechanismGeometry::JointShape& joint = geometry_.joints[j];
       if (joints_shown && (joint.points[0].body >= 0 || joint.points[1].body >= 0))
@@ -421,7 +445,7 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
     for (std::size_t i = 0; 3 * i + 1 < s.accelerations.size(); ++i)
       largest_acceleration[k] =
           std::max(largest_acceleration[k], std::hypot(s.accelerations[3 * i], s.accelerations[3 * i + 1]));
-    for (const std::size_t p : traced_points_)
+    for (const auto& [m, p] : traced_points_)
       if (6 * p + 5 < s.points.size())
         largest_acceleration[k] =
             std::max(largest_acceleration[k], std::hypot(s.points[6 * p + 4], s.points[6 * p + 5]));
@@ -509,6 +533,17 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
   legend_.relative_velocity = relative_velocities_ && velocity_scale_ > 0;
   acceleration_scale_ =
       own_scale(Kind::acceleration, Element::acceleration, largest_acceleration, "acceleration", "m/s²", false);
+  driver_scale_ = own_scale(Kind::driver, Element::motor, largest_driver_force, "driver", "N", true);
+  // A driver's torque: an arc whose sweep is its size, a typical one a turn and a quarter,
+  // the legend's reference arc a round torque.
+  if (const double typical = typical_of(largest_driver_torque);
+      shown_.has(Element::motor) && typical > 0 && std::isfinite(typical)) {
+    driver_torque_scale_ = kTypicalSweep / typical;
+    const double reference = round_near(typical);
+    legend_.rows.push_back({Kind::driver, 0, format_quantity(reference, "N m"),
+                            "a half turn = " + format_quantity(std::numbers::pi / driver_torque_scale_, "N m"),
+                            reference * driver_torque_scale_});
+  }
   for (const BodyPoint& trail : trails_) {  // "path of P": the point's own name
     const std::vector<std::pair<std::string, Vec2>>& named =
         trail.body < 0 ? geometry_.ground : geometry_.bodies[static_cast<std::size_t>(trail.body)].points;
@@ -594,7 +629,9 @@ Vec2 MechanismScene::centroid_velocity(std::size_t k) const {
 
 MechanismDrawList::Arrow MechanismScene::force_arrow(MechanismDrawList::Arrow::Kind kind, const Vec2& at,
                                                      const Vec2& force, std::string label) const {
-  const bool applied = kind == MechanismDrawList::Arrow::Kind::applied;
+  // An applied load's and a driver's labels carry their value already.
+  const bool applied =
+      kind == MechanismDrawList::Arrow::Kind::applied || kind == MechanismDrawList::Arrow::Kind::driver;
   MechanismDrawList::Arrow arrow{kind, at, scale_of(kind) * force, force.norm(), false, std::move(label)};
   const double length = arrow.vector.norm();
   if (length > arrow_cap_ || (length > 0 && length < shortest_)) {
@@ -626,6 +663,8 @@ double MechanismScene::scale_of(MechanismDrawList::Arrow::Kind kind) const {
       return velocity_scale_;
     case Kind::acceleration:
       return acceleration_scale_;
+    case Kind::driver:
+      return driver_scale_;
   }
   return 0;
 }
@@ -657,13 +696,10 @@ void MechanismScene::add_load_arrows(std::size_t k, MechanismDrawList& out) cons
   for (std::size_t i = 0; velocity_scale_ > 0 && 2 * i + 1 < traced.size(); ++i) {
     const Vec2 v(traced[2 * i], traced[2 * i + 1]);
     if (v.norm() == 0) continue;
-    const BodyPoint& point = traced_[i];
-    const MechanismGeometry::BodyShape& body = geometry_.bodies[static_cast<std::size_t>(point.body)];
-    std::string name;
-    for (const auto& [n, at] : body.points)
-      if (at == point.local) name = n;
+    const BodyPoint& point = traced_[i].point;
     out.arrows.push_back(force_arrow(Kind::velocity, world_point(motion_.samples[k].pose, point), v,
-                                     tags ? "v of " + body.name + "." + name : ""));
+                                     tags ? "v of " + point_name(point) : ""));
+    if (traced_[i].valued) with_value(out.arrows.back(), "m/s");
     out.arrows.back().body = point.body;
   }
   add_acceleration_arrows(k, out);
@@ -680,20 +716,30 @@ void MechanismScene::add_acceleration_arrows(std::size_t k, MechanismDrawList& o
                                      tags ? "a of " + geometry_.bodies[i].name : ""));
     out.arrows.back().body = static_cast<int>(i);
   }
-  for (std::size_t t = 0, i = 0; acceleration_scale_ > 0 && t < trails_.size(); ++t) {
-    if (trails_[t].body < 0 || i >= traced_points_.size()) continue;
-    const std::size_t p = traced_points_[i++];
-    if (6 * p + 5 >= s.points.size()) continue;
+  for (const auto& [m, p] : traced_points_) {
+    if (acceleration_scale_ <= 0 || 6 * p + 5 >= s.points.size()) continue;
     const Vec2 a(s.points[6 * p + 4], s.points[6 * p + 5]);
     if (a.norm() == 0) continue;
-    const MechanismGeometry::BodyShape& body = geometry_.bodies[static_cast<std::size_t>(trails_[t].body)];
-    std::string name;
-    for (const auto& [n, at] : body.points)
-      if (at == trails_[t].local) name = n;
+    const BodyPoint& point = marked_[m].point;
     out.arrows.push_back(force_arrow(Kind::acceleration, Vec2(s.points[6 * p], s.points[6 * p + 1]), a,
-                                     tags ? "a of " + body.name + "." + name : ""));
-    out.arrows.back().body = trails_[t].body;
+                                     tags ? "a of " + point_name(point) : ""));
+    if (marked_[m].valued) with_value(out.arrows.back(), "m/s²");
+    out.arrows.back().body = point.body;
   }
+}
+
+std::string MechanismScene::point_name(const BodyPoint& point) const {
+  const MechanismGeometry::BodyShape& body = geometry_.bodies[static_cast<std::size_t>(point.body)];
+  std::string name;
+  for (const auto& [n, at] : body.points)
+    if (at == point.local) name = n;
+  return body.name + "." + name;
+}
+
+void MechanismScene::with_value(MechanismDrawList::Arrow& arrow, const char* unit) {
+  // A cut or stretched arrow's label has its value already (force_arrow).
+  if (arrow.label.empty() || arrow.cut || arrow.stretched) return;
+  arrow.label += ": " + format_quantity(arrow.force, unit);
 }
 
 void MechanismScene::add_spring(const MechanismGeometry::SpringShape& spring, std::size_t index,
@@ -762,10 +808,7 @@ void MechanismScene::add_loads(std::size_t k, MechanismDrawList& out) const {
     const double torque = torque_[k][i];
     if (torque == 0) continue;
     const auto body = static_cast<std::size_t>(geometry_.torques[i].body);
-    const MechanismGeometry::BodyShape& shape = geometry_.bodies[body];
-    // About a third of the body's size, but readable on a point mass and not past a long rod.
-    const double size = std::max({shape.length, shape.width, 2 * shape.radius});
-    const double radius = std::clamp(0.3 * size, extent_ / 30, extent_ / 12);
+    const double radius = torque_radius(geometry_.bodies[body]);
     const double sweep = std::copysign(std::min(torque_scale_ * std::fabs(torque), kLongestSweep), torque);
     // Centred on the body's own "up", so the arc turns with it.
     const double start = pose[3 * body + 2] + 0.5 * std::numbers::pi - 0.5 * sweep;
@@ -778,6 +821,60 @@ void MechanismScene::add_loads(std::size_t k, MechanismDrawList& out) const {
   }
 }
 
+double MechanismScene::torque_radius(const MechanismGeometry::BodyShape& shape) const {
+  // About a third of the body's size, but readable on a point mass and not past a long rod.
+  const double size = std::max({shape.length, shape.width, 2 * shape.radius});
+  return std::clamp(0.3 * size, extent_ / 30, extent_ / 12);
+}
+
+void MechanismScene::add_motors(std::size_t k, MechanismDrawList& out) const {
+  // Each driver at its joint: a pin's motor at the joint's point with its torque on
+  // bodies[1] as an arc (counter-clockwise positive), centred opposite that body's x axis
+  // (a crank's arm); a slider's at the guide, with its force along the axis.
+  const eval::MechanismSample& s = motion_.samples[k];
+  if (!shown_.has(Element::motor)) return;
+  for (std::size_t d = 0; d < geometry_.drivers.size() && d < s.drivers.size(); ++d) {
+    const MechanismGeometry::DriverShape& driver = geometry_.drivers[d];
+    const MechanismGeometry::JointShape& joint = geometry_.joints[driver.joint];
+    const double value = s.drivers[d];
+    if (!std::isfinite(value)) continue;  // not solved at this sample
+    const int moved = joint.points[1].body, held = joint.points[0].body;
+    const double theta1 = moved < 0 ? 0 : s.pose[3 * static_cast<std::size_t>(moved) + 2];
+    const double theta0 = held < 0 ? 0 : s.pose[3 * static_cast<std::size_t>(held) + 2];
+    const bool slider = joint.type == JointType::slider;
+    const std::string label =
+        shown_.has(Element::labels) ? driver.name + ": " + format_quantity(value, slider ? "N" : "N m") : "";
+    switch (joint.type) {
+      case JointType::pin: {
+        const Vec2 at = world_point(s.pose, joint.points[0]);
+        // With the body it turns in the free-body view, as the joint's pin on the ground is.
+        out.motors.push_back({at, Vec2::UnitX(), false, moved});
+        if (driver_torque_scale_ <= 0 || value == 0) break;
+        // Clear of the motor's symbol around the joint.
+        const double radius =
+            std::max(extent_ / 16, moved < 0 ? 0.0 : torque_radius(geometry_.bodies[static_cast<std::size_t>(moved)]));
+        const double sweep = std::copysign(std::min(driver_torque_scale_ * std::fabs(value), kLongestSweep), value);
+        out.torques.push_back({at, radius, theta1 + std::numbers::pi - 0.5 * sweep, sweep, label, moved, true});
+        break;
+      }
+      case JointType::slider: {
+        // At the slider's guide on its rail when the joints are drawn (placed under the body).
+        Vec2 at = world_point(s.pose, joint.points[1]);
+        const Vec2 axis = rotated(theta0, joint.axis), point = at;
+        for (const MechanismDrawList::Marker& m : out.markers)
+          if (m.kind == MechanismDrawList::Marker::Kind::guide && m.body == moved &&
+              ((m.at - point).norm() < (at - point).norm() || at == point))
+            at = m.at;
+        out.motors.push_back({at, axis, true, moved});
+        if (driver_scale_ <= 0 || value == 0) break;
+        out.arrows.push_back(force_arrow(MechanismDrawList::Arrow::Kind::driver, at, value * axis, label));
+        out.arrows.back().body = moved;
+        break;
+      }
+    }
+  }
+}
+
 void MechanismScene::add_trails(std::size_t k, MechanismDrawList& out) const {
   const double now = motion_.times[k];
   const bool fine = !motion_.trail_times.empty();
@@ -785,8 +882,21 @@ void MechanismScene::add_trails(std::size_t k, MechanismDrawList& out) const {
   // The samples in [now - trail_seconds, now], finer than the frames when the motion has them.
   const auto first = std::lower_bound(times.begin(), times.end(), now - trail_seconds_ - 1e-9);
   const auto last = std::upper_bound(times.begin(), times.end(), now + 1e-9);
+  // The trail's start between two samples: its point there, between theirs (a cycle's
+  // trail then closes on itself to the samples' resolution).
+  const double start = now - trail_seconds_;
+  const bool between = first != times.begin() && first<last&& * first> start + 1e-9;
+  const auto pose_at = [&](std::size_t i) -> const std::vector<double>& {
+    return fine ? motion_.trail_poses[i] : motion_.samples[i].pose;
+  };
   for (const BodyPoint& trail : trails_) {
     MechanismDrawList::Line line{MechanismDrawList::Line::Kind::trail, {}, {}};
+    if (between) {
+      const auto i = static_cast<std::size_t>(first - times.begin());
+      const double f = (start - times[i - 1]) / (times[i] - times[i - 1]);
+      line.points.push_back((1 - f) * world_point(pose_at(i - 1), trail) + f * world_point(pose_at(i), trail));
+      line.fade.push_back(0.0);
+    }
     for (auto it = first; it < last; ++it) {
       const auto i = static_cast<std::size_t>(it - times.begin());
       line.points.push_back(world_point(fine ? motion_.trail_poses[i] : motion_.samples[i].pose, trail));
@@ -818,8 +928,13 @@ void legend_for_frame(MechanismDrawList& out) {
     return std::any_of(out.arrows.begin(), out.arrows.end(), [&](const auto& a) { return a.kind == kind; });
   };
   legend.joint = legend.joint && present(Kind::joint);
-  legend.applied = legend.applied && (present(Kind::applied) || !out.torques.empty());
-  std::erase_if(legend.rows, [&](const MechanismDrawList::Legend::Row& row) { return !present(row.kind); });
+  const bool driver_torque =
+      std::any_of(out.torques.begin(), out.torques.end(), [](const auto& t) { return t.driver; });
+  legend.applied = legend.applied && (present(Kind::applied) || std::any_of(out.torques.begin(), out.torques.end(),
+                                                                            [](const auto& t) { return !t.driver; }));
+  std::erase_if(legend.rows, [&](const MechanismDrawList::Legend::Row& row) {
+    return row.kind == Kind::driver && row.sweep > 0 ? !driver_torque : !present(row.kind);
+  });
   legend.relative_velocity = legend.relative_velocity && present(Kind::velocity);
   legend.cut = std::any_of(out.arrows.begin(), out.arrows.end(), [](const auto& a) { return a.cut; });
   legend.stretched = std::any_of(out.arrows.begin(), out.arrows.end(), [](const auto& a) { return a.stretched; });
@@ -899,6 +1014,7 @@ void MechanismScene::frame(std::size_t k, MechanismDrawList& out) const {
   }
   place_joints(pose, first_marker, first_line, out);
   add_loads(k, out);
+  add_motors(k, out);
   add_load_arrows(k, out);
   add_trails(k, out);
   if (free_body_) pull_apart(k, out);
@@ -989,6 +1105,7 @@ void MechanismScene::pull_apart(std::size_t k, MechanismDrawList& out) const {
   for (MechanismDrawList::Marker& m : out.markers) m.at += offset(m.body);
   for (MechanismDrawList::Arrow& a : out.arrows) a.tail += offset(a.body);
   for (MechanismDrawList::Torque& t : out.torques) t.centre += offset(t.body);
+  for (MechanismDrawList::Motor& m : out.motors) m.at += offset(m.body);
   for (MechanismDrawList::Label& l : out.labels) l.at += offset(l.body);
 }
 

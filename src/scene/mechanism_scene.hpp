@@ -5,6 +5,7 @@
 // force and torque arrows and trails.
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/types.hpp"
@@ -70,6 +71,13 @@ struct MechanismGeometry {
   std::vector<ForceShape> forces;
   std::vector<TorqueShape> torques;
   std::vector<LoadShape> loads;
+  /// A [[driver]]: its name and joint (an index of `joints`), in file order as
+  /// MechanismSample::drivers holds their torques or forces.
+  struct DriverShape {
+    std::string name;
+    std::size_t joint = 0;
+  };
+  std::vector<DriverShape> drivers;
   /// Per load: force x, y (N) and its point x, y (m), world frame; inputs per body x, y,
   /// theta, then per body their rates, then t (load_inputs).
   eval::Program load_values;
@@ -121,7 +129,7 @@ struct MechanismDrawList {
     int body = -1;                   // the body it moves with in the free-body view (-1: the world)
   };
   struct Arrow {
-    enum class Kind { joint, applied, gravity, spring, velocity, acceleration } kind = Kind::joint;
+    enum class Kind { joint, applied, gravity, spring, velocity, acceleration, driver } kind = Kind::joint;
     Vec2 tail = Vec2::Zero(), vector = Vec2::Zero();  // vector in metres: force x scale, or cut
     double force = 0;                                 // N, the magnitude
     bool cut = false;                                 // drawn shorter than the scale says
@@ -136,6 +144,14 @@ struct MechanismDrawList {
     double radius = 0, start = 0, sweep = 0;  // m, rad
     std::string label;                        // "τ = 0.01 N m"
     int body = -1;
+    bool driver = false;  // a driver's torque (the motor's colour), else an applied one
+  };
+  /// A driver's motor: a circle at a pin's point, or at a slider's guide along its axis.
+  struct Motor {
+    Vec2 at = Vec2::Zero();
+    Vec2 axis = Vec2::UnitX();  // a slider's axis in the world
+    bool slider = false;
+    int body = -1;  // the body it moves with in the free-body view
   };
   struct Label {
     Vec2 at = Vec2::Zero();
@@ -158,6 +174,7 @@ struct MechanismDrawList {
       Arrow::Kind kind = Arrow::Kind::gravity;
       double metres = 0;
       std::string value, scale;  // "2 N", "1 cm = 0.5 N"
+      double sweep = 0;          // a torque's row: its reference arc (rad), drawn instead of an arrow
     };
     std::vector<Row> rows;
     bool relative_velocity = false;   // the velocity row: relative to the centre of mass G
@@ -171,6 +188,7 @@ struct MechanismDrawList {
   std::vector<Marker> markers;
   std::vector<Arrow> arrows;
   std::vector<Torque> torques;
+  std::vector<Motor> motors;
   std::vector<Label> labels;        // body names at their centres
   std::vector<Label> joint_labels;  // joint names at their points (not in the free-body view)
   /// Another run's bodies, drawn over this one: an ensemble member (faint, at `ramp`
@@ -219,9 +237,12 @@ class MechanismScene {
   /// distance) with every force on it, a joint's pin drawn on each of its bodies.
   /// `relative_velocities`: velocities drawn relative to the centre of mass G (what a
   /// camera following G shows), the legend saying so; else in the world frame.
+  /// `points`: points of bodies whose velocity and acceleration arrows are drawn (when
+  /// those elements are shown) with their magnitude, besides the trails' points.
   MechanismScene(MechanismGeometry geometry, const MechanismMotion& motion, std::vector<BodyPoint> trails,
                  double trail_seconds = 2.0, const ArrowScaleRequest& arrows = {},
-                 ElementSet shown = ElementSet::defaults(), bool free_body = false, bool relative_velocities = false);
+                 ElementSet shown = ElementSet::defaults(), bool free_body = false, bool relative_velocities = false,
+                 const std::vector<BodyPoint>& points = {});
 
   /// Force arrows shorter than `metres` (but not zero) are drawn `drawn` long (0: that
   /// long) and marked stretched, their labels giving the value; the legend says whether any is.
@@ -259,7 +280,12 @@ class MechanismScene {
   MechanismGeometry geometry_;
   const MechanismMotion& motion_;
   std::vector<BodyPoint> trails_;
-  std::vector<BodyPoint> traced_;  // the trails' points on bodies, whose velocities are drawn
+  struct Marked {
+    BodyPoint point;
+    bool valued = false;  // named by --points: its arrows' labels give their magnitude
+  };
+  std::vector<Marked> marked_;  // the trails' points, then the named ones
+  std::vector<Marked> traced_;  // those on bodies, whose velocities are drawn
   double trail_seconds_;
   Bounds bounds_, view_bounds_;
   double reach_ = 0, view_reach_ = 0, force_scale_ = 0, applied_scale_ = 0, arrow_cap_ = 0, torque_scale_ = 0,
@@ -275,7 +301,10 @@ class MechanismScene {
   bool free_body_ = false;
   bool relative_velocities_ = false;
   double gravity_scale_ = 0, spring_scale_ = 0, velocity_scale_ = 0, acceleration_scale_ = 0;
-  std::vector<std::size_t> traced_points_;  // per traced point on a body: its index in MechanismSample::points
+  double driver_scale_ = 0;         // a slider driver's force arrows, m/N
+  double driver_torque_scale_ = 0;  // a pin driver's torque arcs, rad/(N m)
+  /// Per marked point on a body: its index in marked_ and in MechanismSample::points.
+  std::vector<std::pair<std::size_t, std::size_t>> traced_points_;
 
   void add_spring(const MechanismGeometry::SpringShape& spring, std::size_t index, const std::vector<double>& pose,
                   MechanismDrawList& out) const;
@@ -283,6 +312,13 @@ class MechanismScene {
   void add_trails(std::size_t k, MechanismDrawList& out) const;
   void add_load_arrows(std::size_t k, MechanismDrawList& out) const;
   void add_acceleration_arrows(std::size_t k, MechanismDrawList& out) const;
+  void add_motors(std::size_t k, MechanismDrawList& out) const;
+  /// "3.P": a point of a body as --points names it.
+  [[nodiscard]] std::string point_name(const BodyPoint& point) const;
+  /// Its magnitude added to an arrow's label.
+  static void with_value(MechanismDrawList::Arrow& arrow, const char* unit);
+  /// An arc's radius for a torque on a body of this shape, m.
+  [[nodiscard]] double torque_radius(const MechanismGeometry::BodyShape& shape) const;
   void place_joints(const std::vector<double>& pose, std::size_t first_marker, std::size_t first_line,
                     MechanismDrawList& out) const;
   void pull_apart(std::size_t k, MechanismDrawList& out) const;

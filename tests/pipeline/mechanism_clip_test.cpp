@@ -1140,5 +1140,62 @@ TEST(MechanismClip, EveryPictureOptionOnEveryShippedMechanism) {
   EXPECT_EQ(test::entries(dir.path()).size(), 6 * shipped_mechanism_names().size());  // no temporary left
 }
 
+// Issue 25, Deliver 8: a still of driven-four-bar.toml draws the motor at O2 = (0, 0) in
+// the theme's motor colour; the shipped four-bar (the same linkage, undriven) and the
+// driven one with the motor hidden have none there. The SVG holds the motor's paths.
+TEST(MechanismClip, ADriversMotorIsDrawnAtItsJointInTheMotorColour) {
+  test::TempDir dir;
+  const auto motor_pixels = [&](const std::string& mechanism, bool shown, const std::string& name) {
+    const sym::System system(load_mechanism(mechanism));
+    MechanismClip clip = small_still((dir / (name + ".png")).string());
+    clip.settings.width = 640;
+    clip.settings.height = 360;
+    clip.settings.at = 1.0;
+    clip.simulation.duration = 1.0;
+    clip.settings.camera_chosen = true;
+    clip.settings.camera = CameraMode::fixed;
+    clip.settings.view = {-0.25, -0.2, 0.45, 0.35};
+    if (!shown) clip.settings.elements.hide(Element::motor);
+    produce_mechanism_clip(system, sym::checked_initial_state(system).state, clip);
+    const test::DecodedPng png = test::decode_png(*clip.out);
+    const Vec2 o2 = Camera(clip.settings.view, 640, 360).to_pixels(Vec2::Zero());
+    const Rgba& motor = clip.theme.motor;
+    int count = 0;
+    for (std::uint32_t y = 0; y < png.height; ++y)
+      for (std::uint32_t x = 0; x < png.width; ++x) {
+        if (std::hypot(x - o2.x(), y - o2.y()) > 30) continue;
+        const std::uint8_t* p = &png.rgba[4 * (y * png.width + x)];
+        if (std::abs(p[0] - motor.r * 255) < 24 && std::abs(p[1] - motor.g * 255) < 24 &&
+            std::abs(p[2] - motor.b * 255) < 24)
+          ++count;
+      }
+    if (shown) {
+      clip.out = dir / (name + ".svg");
+      produce_mechanism_clip(system, sym::checked_initial_state(system).state, clip);
+    }
+    return count;
+  };
+  const std::string driven = std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/driven-four-bar.toml";
+  EXPECT_GT(motor_pixels(driven, true, "driven"), 60);
+  EXPECT_EQ(motor_pixels(driven, false, "hidden"), 0);
+  EXPECT_EQ(motor_pixels("four-bar", true, "undriven"), 0);
+  // Cairo writes a colour as rgb(R%,G%,B%), six decimals, trailing zeros dropped: the motor's,
+  // in the driven figure only.
+  const Rgba& motor = load_theme("light", {}, "theme").motor;
+  const auto percent = [](double channel) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6f", channel * 100);
+    std::string out = text;
+    out.erase(out.find_last_not_of('0') + 1);
+    if (out.back() == '.') out.pop_back();
+    return out + "%";
+  };
+  const std::string colour = "rgb(" + percent(motor.r) + "," + percent(motor.g) + "," + percent(motor.b) + ")";
+  const std::string figure = test::read_text(dir / "driven.svg");
+  EXPECT_EQ(test::xml_error(figure), "");
+  EXPECT_NE(figure.find(colour), std::string::npos) << colour;
+  EXPECT_EQ(test::read_text(dir / "undriven.svg").find(colour), std::string::npos);
+}
+
 }  // namespace
 }  // namespace linkage

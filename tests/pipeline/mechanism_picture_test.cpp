@@ -3,8 +3,15 @@
 // System gives; the camera is the one asked for (fit and follow by default).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <numbers>
+#include <string>
+#include <tuple>
 
+#include "columns/mechanism_columns.hpp"
+#include "core/error.hpp"
 #include "model/mechanism_toml.hpp"
 #include "pipeline/mechanism_clip.hpp"
 #include "scene/mechanism_scene.hpp"
@@ -15,13 +22,20 @@ namespace {
 
 using Kind = MechanismDrawList::Arrow::Kind;
 
-MechanismMotion motion_of(const sym::System& system, double duration, double fps) {
+// A mechanism file of tests/data/mechanisms/.
+std::string test_data(const std::string& file) {
+  return std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/" + file;
+}
+
+MechanismMotion motion_of(const sym::System& system, double duration, double fps, int trail_steps = 1,
+                          bool accelerations = false) {
   std::vector<double> times;
   for (long k = 0; k <= std::lround(duration * fps); ++k) times.push_back(static_cast<double>(k) / fps);
   SimulationOptions options;
   options.duration = duration;
   ClipResult result;
-  return sample_mechanism_motion(system, sym::checked_initial_state(system).state, options, times, 1, result);
+  return sample_mechanism_motion(system, sym::checked_initial_state(system).state, options, times, trail_steps, result,
+                                 {}, {}, nullptr, {}, accelerations);
 }
 
 std::vector<MechanismDrawList::Arrow> arrows_of(const MechanismDrawList& list, Kind kind) {
@@ -461,6 +475,194 @@ TEST(MechanismPicture, FreeBodyViewPullsEachBodyApartWithItsForces) {
         EXPECT_LE(p.y(), apart.view_bounds().max.y() + 1e-12);
       }
   }
+}
+
+// Issue 25, Deliver 8: a driver drawn as a motor at its joint. driven-four-bar.toml's M
+// drives O2 (ground, crank "2"): the motor at O2's point, its torque on the crank an arc
+// about O2 turning counter-clockwise for M.torque > 0 with the column's value in its label;
+// shown by default, hidden by --hide motor, absent from a file with no driver.
+TEST(MechanismPicture, ADriverIsAMotorAtItsJointWithItsTorque) {
+  const sym::System system(load_mechanism(test_data("driven-four-bar.toml")));
+  const MechanismMotion motion = motion_of(system, 2.0, 30);
+  const MechanismScene scene(mechanism_geometry(system), motion, {});
+  const std::vector<MechanismColumn> columns = mechanism_columns(system);
+  const MechanismColumn torque = find_mechanism_column(columns, "M.torque", "test");
+  MechanismDrawList list;
+  int positive = 0, negative = 0;
+  for (std::size_t k = 0; k < motion.samples.size(); ++k) {
+    SCOPED_TRACE(k);
+    scene.frame(k, list);
+    const eval::MechanismSample& s = motion.samples[k];
+    const double value = column_value(torque, motion.times[k], Eigen::VectorXd::Zero(1), s, {});
+    ASSERT_TRUE(std::isfinite(value));
+    ASSERT_EQ(list.motors.size(), 1U);
+    EXPECT_NEAR(list.motors[0].at.norm(), 0, 1e-12);  // O2 = (0, 0)
+    EXPECT_FALSE(list.motors[0].slider);
+    ASSERT_EQ(list.torques.size(), 1U);  // the file has no applied torque
+    const MechanismDrawList::Torque& arc = list.torques[0];
+    EXPECT_TRUE(arc.driver);
+    EXPECT_NEAR(arc.centre.norm(), 0, 1e-12);
+    EXPECT_EQ(arc.sweep > 0, value > 0);  // counter-clockwise positive, on the crank
+    (value > 0 ? positive : negative)++;
+    ASSERT_EQ(arc.label.rfind("M: ", 0), 0U) << arc.label;
+    EXPECT_EQ(arc.label.substr(arc.label.size() - 4), " N m");
+    // The printed value is the column's, to its three significant digits.
+    const double printed = std::stod(arc.label.substr(3));
+    EXPECT_NEAR(printed, value, 5e-3 * std::fabs(value)) << arc.label;
+    EXPECT_EQ(arc.label, "M: " + format_quantity(value, "N m"));
+    const bool row = std::any_of(list.legend.rows.begin(), list.legend.rows.end(),
+                                 [](const auto& r) { return r.kind == Kind::driver && r.sweep > 0; });
+    EXPECT_TRUE(row);
+  }
+  EXPECT_GT(positive, 0);
+  // Its sweep is its size: twice the torque, twice the arc (below the longest drawn).
+  scene.frame(5, list);
+  const double a = list.torques[0].sweep / motion.samples[5].drivers[0];
+  scene.frame(15, list);
+  EXPECT_NEAR(list.torques[0].sweep / motion.samples[15].drivers[0], a, 1e-12 * std::fabs(a));
+
+  ElementSet hidden = ElementSet::defaults();
+  EXPECT_TRUE(hidden.has(Element::motor));
+  hidden.hide(Element::motor);
+  const MechanismScene without(mechanism_geometry(system), motion, {}, 2.0, {}, hidden);
+  without.frame(5, list);
+  EXPECT_TRUE(list.motors.empty());
+  EXPECT_TRUE(list.torques.empty());
+  for (const auto& r : list.legend.rows) EXPECT_NE(r.kind, Kind::driver);
+
+  const sym::System undriven(load_mechanism("four-bar"));
+  const MechanismMotion still = motion_of(undriven, 0.2, 10);
+  const MechanismScene plain(mechanism_geometry(undriven), still, {});
+  plain.frame(1, list);
+  EXPECT_TRUE(list.motors.empty());
+  EXPECT_TRUE(list.torques.empty());
+}
+
+// A slider's driver: driven-cart-pendulum.toml's D moves the cart along slider S: the
+// motor at the guide along the rail, its force an arrow along the axis with D.force's value.
+TEST(MechanismPicture, ASliderDriverIsAMotorAlongItsAxisWithItsForce) {
+  const sym::System system(load_mechanism(test_data("driven-cart-pendulum.toml")));
+  const MechanismMotion motion = motion_of(system, 1.0, 10);
+  const MechanismScene scene(mechanism_geometry(system), motion, {});
+  MechanismDrawList list;
+  for (std::size_t k = 1; k < motion.samples.size(); ++k) {
+    SCOPED_TRACE(k);
+    scene.frame(k, list);
+    const double force = motion.samples[k].drivers.at(0);
+    ASSERT_EQ(list.motors.size(), 1U);
+    EXPECT_TRUE(list.motors[0].slider);
+    const auto drawn = arrows_of(list, Kind::driver);
+    ASSERT_EQ(drawn.size(), force == 0 ? 0U : 1U);
+    if (force == 0) continue;
+    EXPECT_NEAR(drawn[0].force, std::fabs(force), 1e-12);
+    EXPECT_NEAR((drawn[0].tail - list.motors[0].at).norm(), 0, 1e-12);
+    // Along the axis, pointing the way the force on bodies[1] does.
+    EXPECT_NEAR(drawn[0].vector.normalized().dot(list.motors[0].axis), force > 0 ? 1 : -1, 1e-12);
+    EXPECT_EQ(drawn[0].label, "D: " + format_quantity(force, "N"));
+  }
+}
+
+// Issue 25, Deliver 8: --trail-length cycle is one period of the driver's motion, and the
+// trail over it closes. offset-slider-crank.toml turns its crank at w = 12 rad/s: 2 pi/12 =
+// 0.5236 s. The trail's samples are 1/120 s apart (30 fps, 4 per frame), so its start,
+// between two of them, is placed between their points: off the true path by at most
+// r w^2 dt^2/8 = 0.1 x 144/120^2/8 = 1.25e-4 m for A at r = 0.1 m (without it, up to
+// r w dt = 1 cm), far below a pixel of the picture (0.7 m over 1280 px).
+TEST(MechanismPicture, ATrailOverADriversCycleCloses) {
+  const sym::System system(load_mechanism(test_data("offset-slider-crank.toml")));
+  const double period = driver_cycle_seconds(system);
+  EXPECT_NEAR(period, 2 * std::numbers::pi / 12, 1e-12);
+  EXPECT_NEAR(trail_seconds_of(system, "cycle"), period, 0);
+  EXPECT_EQ(trail_seconds_of(system, ""), 2.0);
+  EXPECT_EQ(trail_seconds_of(system, "2.5"), 2.5);
+  const MechanismMotion motion = motion_of(system, 1.0, 30, 4);
+  const MechanismGeometry geometry = mechanism_geometry(system);
+  const BodyPoint a = geometry.resolve("rod.A", "trail");
+  const MechanismScene scene(geometry, motion, {a}, period);
+  MechanismDrawList list;
+  int closed = 0;
+  for (std::size_t k = 16; k <= 30; ++k) {  // from t = 0.533 s, a whole cycle back
+    SCOPED_TRACE(k);
+    scene.frame(k, list);
+    const auto trail = std::find_if(list.lines.begin(), list.lines.end(), [](const MechanismDrawList::Line& l) {
+      return l.kind == MechanismDrawList::Line::Kind::trail;
+    });
+    ASSERT_NE(trail, list.lines.end());
+    EXPECT_NEAR((trail->points.front() - trail->points.back()).norm(), 0, 2e-4);
+    EXPECT_NEAR((trail->points.back() - world_point(motion.samples[k].pose, a)).norm(), 0, 1e-12);
+    ++closed;
+  }
+  EXPECT_EQ(closed, 15);
+  // No cycle to close: no driver, a varying rate, a slider's travel.
+  const auto refusal = [](const std::string& file) {
+    try {
+      (void)driver_cycle_seconds(sym::System(load_mechanism(file)));
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(refusal("four-bar").find("cycle needs a [[driver]], and four-bar has none"), std::string::npos);
+  EXPECT_NE(refusal(test_data("driven-four-bar.toml")).find("does not turn at a constant rate"), std::string::npos);
+  EXPECT_NE(refusal(test_data("driven-cart-pendulum.toml")).find("moves slider S"), std::string::npos);
+}
+
+// Issue 25, Deliver 8: --show velocity,acceleration --points 3.P,4.B: at each named point
+// its velocity and acceleration (world frame), each kind its own scale, labelled with its
+// magnitude; the values are the sample's kinematics of those points (MechanismSample::points,
+// the 3.P.x_dot ... columns), independent of the scene's own derivative of the position.
+TEST(MechanismPicture, NamedPointsCarryTheirVelocityAndAcceleration) {
+  const sym::System system(load_mechanism(test_data("driven-four-bar.toml")));
+  const MechanismMotion motion = motion_of(system, 1.0, 30, 1, true);
+  const MechanismGeometry geometry = mechanism_geometry(system);
+  const std::vector<BodyPoint> points{geometry.resolve("3.P", "points"), geometry.resolve("4.B", "points")};
+  // Their places in the sample's named points: bodies in order, each body's points by name.
+  const std::vector<eval::NamedPoint> named = eval::named_points(system);
+  const auto index_of = [&](std::size_t body, const std::string& name) {
+    for (std::size_t i = 0; i < named.size(); ++i)
+      if (named[i].body == body && named[i].name == name) return i;
+    return named.size();
+  };
+  const std::array<std::size_t, 2> index{index_of(1, "P"), index_of(2, "B")};
+  const std::array<std::string, 2> names{"3.P", "4.B"};
+  ElementSet shown = ElementSet::defaults();
+  shown.show(Element::velocity);
+  shown.show(Element::acceleration);
+  const MechanismScene scene(geometry, motion, {}, 2.0, {}, shown, false, false, points);
+  EXPECT_NE(scene.scale_of(Kind::velocity), scene.scale_of(Kind::acceleration));
+  MechanismDrawList list;
+  for (const std::size_t k : {3UL, 10UL}) {
+    SCOPED_TRACE(k);
+    scene.frame(k, list);
+    const eval::MechanismSample& s = motion.samples[k];
+    for (std::size_t i = 0; i < 2; ++i) {
+      SCOPED_TRACE(names[i]);
+      const std::size_t p = index[i];
+      ASSERT_LT(6 * p + 5, s.points.size());
+      const Vec2 at(s.points[6 * p], s.points[6 * p + 1]), v(s.points[6 * p + 2], s.points[6 * p + 3]),
+          a(s.points[6 * p + 4], s.points[6 * p + 5]);
+      for (const auto& [kind, value, symbol, unit] :
+           {std::tuple{Kind::velocity, v, "v", "m/s"}, std::tuple{Kind::acceleration, a, "a", "m/s²"}}) {
+        const auto arrows = arrows_of(list, kind);
+        const auto drawn = std::find_if(arrows.begin(), arrows.end(), [&](const auto& arrow) {
+          return arrow.label.rfind(std::string(symbol) + " of " + names[i], 0) == 0;
+        });
+        ASSERT_NE(drawn, arrows.end());
+        EXPECT_NEAR((drawn->tail - at).norm(), 0, 1e-12);
+        EXPECT_NEAR(drawn->force, value.norm(), 1e-9 * value.norm());
+        EXPECT_NEAR(drawn->vector.normalized().dot(value.normalized()), 1, 1e-9);
+        if (!drawn->cut && !drawn->stretched) {
+          EXPECT_NEAR(drawn->vector.norm(), scene.scale_of(kind) * value.norm(), 1e-9 * drawn->vector.norm());
+        }
+        EXPECT_EQ(drawn->label, std::string(symbol) + " of " + names[i] + ": " + format_quantity(drawn->force, unit));
+      }
+    }
+  }
+  // Without velocity and acceleration shown (the default), none.
+  const MechanismScene plain(geometry, motion, {}, 2.0, {}, ElementSet::defaults(), false, false, points);
+  plain.frame(3, list);
+  EXPECT_TRUE(arrows_of(list, Kind::velocity).empty());
+  EXPECT_TRUE(arrows_of(list, Kind::acceleration).empty());
 }
 
 }  // namespace

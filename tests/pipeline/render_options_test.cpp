@@ -44,7 +44,7 @@ TEST(RenderOptions, NamesAreUniqueAndEachIsDocumented) {
     EXPECT_FALSE(o.placeholder.empty()) << o.name;
     EXPECT_NE(o.apply, nullptr) << o.name;
   }
-  EXPECT_EQ(names.size(), 18U);
+  EXPECT_EQ(names.size(), 20U);
 }
 
 TEST(RenderOptions, APlainDefaultGivenAsTextChangesNothing) {
@@ -64,7 +64,7 @@ TEST(RenderOptions, APlainDefaultGivenAsTextChangesNothing) {
     EXPECT_EQ(s.theme, defaults.theme) << o.name;
     EXPECT_EQ(s.angles, defaults.angles) << o.name;
   }
-  EXPECT_EQ(plain, 7);  // quality, size, fps, speed, at, theme, angles
+  EXPECT_EQ(plain, 8);  // quality, size, fps, speed, at, theme, angles, trail_length
   const RenderRequest fan = resolve_render_options({{"ensemble", "3"}, {"spread", "1e-6"}}, flags());
   EXPECT_EQ(fan.spread, RenderRequest{}.spread);
 }

@@ -81,15 +81,15 @@ TEST(Theme, BadPalettesNameFileLineAndColumn) {
   EXPECT_EQ(error_of("[colors]\nbackground = \"#FFFFFF\"\nvelocty = \"#000000\"\n"),
             "t.toml:3:1: [colors]: unknown key 'velocty' (did you mean 'velocity'?); valid keys: background, grid, "
             "text, text_muted, panel, panel_edge, block1_fill, block1_edge, block2_fill, block2_edge, pin_fill, "
-            "pin_edge, pin_force, gravity, velocity, trail, com");
+            "pin_edge, pin_force, gravity, velocity, trail, com, motor");
   EXPECT_EQ(error_of("[colors]\nbackground = \"#FFF\"\n"),
             "t.toml:2:14: [colors]: 'background' = '#FFF' is not a colour; valid: \"#RRGGBB\" or \"#RRGGBBAA\"");
   EXPECT_EQ(error_of("[colors]\nbackground = 3\n"),
             "t.toml:2:14: [colors]: 'background' must be a colour \"#RRGGBB\" or \"#RRGGBBAA\", got an integer");
   EXPECT_EQ(error_of("[colors]\nbackground = \"#FFFFFF\"\n"),
             "t.toml:1:1: [colors]: missing grid, text, text_muted, panel, panel_edge, block1_fill, block1_edge, "
-            "block2_fill, block2_edge, pin_fill, pin_edge, pin_force, gravity, velocity, trail, com; a theme sets "
-            "every colour");
+            "block2_fill, block2_edge, pin_fill, pin_edge, pin_force, gravity, velocity, trail, com, motor; a theme "
+            "sets every colour");
   EXPECT_NE(error_of("[colors\n").find("t.toml:1:"), std::string::npos);
   EXPECT_EQ(error_of("[fonts]\n"), "t.toml:1:2: theme: unknown key 'fonts'; valid keys: colors");
   EXPECT_EQ(error_of("[colours]\n"),
