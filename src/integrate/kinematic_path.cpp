@@ -130,9 +130,17 @@ std::optional<double> KinematicPath::work(double a, const Eigen::VectorXd& ya, d
 void KinematicPath::advance(double t, Eigen::VectorXd& y) {
   if (h_ == 0) h_ = t;  // the first output interval sets the first step
   Eigen::VectorXd next;
+  // Times a few roundings apart (0.1 + 0.1 + ... against 0.4) are the same time: the state
+  // moves by round-off, and a continuation step that short cannot be judged.
+  const double sliver = 64 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::fabs(t));
+  if (t_ < t && t - t_ <= sliver) {
+    y[y.size() - 1] += dy_[dy_.size() - 1] * (t - t_);
+    t_ = t;
+  }
   while (t_ < t) {
     throw_if_interrupted();
-    const double h = std::min(h_, t - t_);
+    double h = std::min(h_, t - t_);
+    if (t - (t_ + h) <= sliver) h = t - t_;  // never leave a sliver before t
     const double to = h == t - t_ ? t : t_ + h;
     std::optional<double> done;  // the work over the step, when it is taken
     if (solve_at(t_, y, dy_, to, next)) {
