@@ -14,7 +14,8 @@ VideoOptions clip_video_options(const RenderSettings& s, OutputKind kind) {
   return v;
 }
 
-std::string run_label(const SimulationOptions& s) {
+std::string run_label(const SimulationOptions& s, bool kinematic) {
+  if (kinematic) return "Case " + std::to_string(s.case_id) + " \u00b7 kinematic analysis";
   std::string text = "Case " + std::to_string(s.case_id) + " \u00b7 " + std::string(info(s.integrator).name);
   if (s.case_id == 1)  // only Case 1 can drift off the pin, so only there does stabilization matter
     text += s.stabilization == Stabilization::none ? std::string(" \u00b7 no stabilization")

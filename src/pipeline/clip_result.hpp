@@ -21,8 +21,9 @@ inline constexpr double kMaxSpread = 1e3;
 /// The encoder settings of a clip's video of `kind` (.mp4, .gif or .webm).
 [[nodiscard]] VideoOptions clip_video_options(const RenderSettings& settings, OutputKind kind = OutputKind::mp4);
 
-/// The HUD's second line, e.g. "Case 3 · dop853".
-[[nodiscard]] std::string run_label(const SimulationOptions& options);
+/// The HUD's second line, e.g. "Case 3 · dop853", or "Case 3 · kinematic analysis" when the
+/// drivers fixed the motion (nothing integrated).
+[[nodiscard]] std::string run_label(const SimulationOptions& options, bool kinematic = false);
 
 enum class ClipStage { simulate, draw };
 [[nodiscard]] std::string_view name(ClipStage stage);

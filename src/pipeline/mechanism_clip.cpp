@@ -159,7 +159,7 @@ class MechanismFrames {
                mechanism_camera_mode(settings, geometry) == CameraMode::follow, resolve_points(geometry, clip.points)),
         motion_(motion),
         settings_(settings),
-        labels_{clip.settings.title, run_label(clip.simulation)},
+        labels_{clip.settings.title, run_label(clip.simulation, motion.kinematic)},
         overlays_(overlays),
         shown_(clip.settings.elements) {
     labels_.ensemble = std::move(ensemble_row);
@@ -406,6 +406,7 @@ MechanismMotion sample_mechanism_motion(const sym::System& system, const GiNaC::
   MechanismColumn balance;
   balance.quantity = MechanismQuantity::energy_error;
   motion.constraints_kept = false;
+  motion.kinematic = simulation.stats().kinematic;
   for (const sym::JointSystem& joint : system.joints())
     motion.constraints_kept = motion.constraints_kept || options.case_id == 1 || !joint.in_tree;
   // The panel between frames too, at least kPanelSamples over the clip: its peaks are the

@@ -18,14 +18,16 @@ constexpr std::array<plot::Dash, 4> kDashes{plot::Dash::solid, plot::Dash::dashe
                                             plot::Dash::dash_dot};
 
 // Run r's curves, one per y quantity (columns[0] is x, columns[k + 1] the k-th y), each
-// scaled by its factor: named by the run, by the quantity, or by both when both vary.
+// scaled by its factor: named by the run, by the quantity, or by both when both vary;
+// coloured by run, or by quantity when there is one run.
 void add_run_series(plot::Plot& p, std::size_t runs, std::size_t r, const std::string& label,
                     const std::vector<std::string>& y_names, const std::vector<std::vector<double>>& columns,
                     const std::vector<double>& factors) {
   for (std::size_t k = 0; k < y_names.size(); ++k) {
     plot::Series series;
     series.name = y_names.size() == 1 ? label : runs == 1 ? y_names[k] : label + ": " + y_names[k];
-    series.color = r % plot::palette_size;
+    // One run: each quantity its own colour as well as its dash (four dashes read alike small).
+    series.color = (runs == 1 ? k : r) % plot::palette_size;
     series.dash = kDashes[k % kDashes.size()];
     series.points.reserve(columns[0].size());
     for (std::size_t i = 0; i < columns[0].size(); ++i)

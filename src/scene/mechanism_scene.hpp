@@ -219,6 +219,7 @@ struct MechanismMotion {
   std::vector<eval::MechanismSample> samples;
   std::vector<double> energy_error;  // per sample: E − E0 − W, J (empty: not recorded)
   bool constraints_kept = false;     // the case keeps a joint's constraint (its error is worth showing)
+  bool kinematic = false;            // the drivers fixed the motion: nothing was integrated
   std::vector<double> trail_times;
   std::vector<std::vector<double>> trail_poses;
 };

@@ -29,8 +29,11 @@ TEST(MechanismsCommand, ListsTheShippedMechanismsAsATable) {
   EXPECT_EQ(lines[0], "name             bodies  joints  dof  title");
   // name, bodies, joints, degrees of freedom, title; sorted by name, columns aligned.
   const std::vector<std::string> rows{
+      "cart-pendulum         2       2    1  Cart-pendulum: a cart moved by a motor, a pendulum free on it",
       "double-pendulum       2       2    2  Double pendulum: two uniform rods from a ground pin",
+      "engine                3       4    0  Engine: a slider-crank driven at constant crank speed",
       "four-bar              3       4    1  Four-bar linkage: a Grashof crank-rocker",
+      "four-bar-driven       3       4    0  Four-bar driven at constant crank speed: a crank-rocker",
       "slider-crank          3       4    1  Slider-crank: crank, connecting rod and piston on a slider",
       "spring-pendulum       1       0    3  Spring pendulum: a disc on a spring-damper from a fixed point",
       "triple-pendulum       3       3    3  Triple compound pendulum: a rod, a plate and a disc",

@@ -138,8 +138,9 @@ TEST(MechanismToml, EveryShippedMechanismReads) {
     if (entry.path().extension() == ".toml") files.push_back(entry.path().stem().string());
   std::sort(files.begin(), files.end());
   EXPECT_EQ(names, files);
-  EXPECT_EQ(names, (std::vector<std::string>{"double-pendulum", "four-bar", "slider-crank", "spring-pendulum",
-                                             "triple-pendulum", "two-blocks", "unequal-blocks"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"cart-pendulum", "double-pendulum", "engine", "four-bar",
+                                             "four-bar-driven", "slider-crank", "spring-pendulum", "triple-pendulum",
+                                             "two-blocks", "unequal-blocks"}));
   for (const std::string& name : names) {
     SCOPED_TRACE(name);
     const Mechanism built_in = load_mechanism(name);
