@@ -138,6 +138,7 @@ CheckedMechanismClip mechanism_clip(const RenderRequest& request, const sym::Sys
   clip.simulation = simulation;
   clip.trails = request.trails.empty() ? picture.trails : request.trails;
   clip.trail_seconds = trail_seconds_of(system, request.trail_length);
+  clip.trail_cycle = request.trail_length == "cycle";
   clip.points = request.points;
   for (std::string& name : clip.settings.panel) name = system.mechanism().unaliased(name);  // theta1: 1.theta
   clip.ensemble = request.ensemble;

@@ -179,6 +179,7 @@ class MechanismFrames {
     // An arrow too short to carry its label is drawn dashed with its value, as the legend says.
     scene_.set_shortest_arrow(shortest_labelled_arrow_px(style_) / camera_.scale(),
                               stretched_arrow_px(style_) / camera_.scale());
+    scene_.set_trail_fades(!clip.trail_cycle);
   }
 
   void draw(std::size_t k, Frame& frame) {

@@ -65,6 +65,7 @@ struct MechanismClip {
   Theme theme;
   std::vector<std::string> trails;              // "BODY.POINT": paths over the last trail_seconds
   double trail_seconds = 2.0;                   // > 0
+  bool trail_cycle = false;                     // trail_seconds is the driver's period: drawn unfaded
   std::vector<std::string> points;              // "BODY.POINT": their velocity and acceleration arrows
   std::optional<std::filesystem::path> out;     // .mp4, .gif, .webm, or a still: .png, .svg, .pdf
   std::optional<std::filesystem::path> frames;  // a numbered PNG sequence's folder

@@ -895,12 +895,13 @@ void MechanismScene::add_trails(std::size_t k, MechanismDrawList& out) const {
       const auto i = static_cast<std::size_t>(first - times.begin());
       const double f = (start - times[i - 1]) / (times[i] - times[i - 1]);
       line.points.push_back((1 - f) * world_point(pose_at(i - 1), trail) + f * world_point(pose_at(i), trail));
-      line.fade.push_back(0.0);
+      line.fade.push_back(trail_fades_ ? 0.0 : 1.0);
     }
     for (auto it = first; it < last; ++it) {
       const auto i = static_cast<std::size_t>(it - times.begin());
       line.points.push_back(world_point(fine ? motion_.trail_poses[i] : motion_.samples[i].pose, trail));
-      line.fade.push_back(trail_seconds_ > 0 ? std::clamp(1.0 - (now - *it) / trail_seconds_, 0.0, 1.0) : 1.0);
+      line.fade.push_back(trail_fades_ && trail_seconds_ > 0 ? std::clamp(1.0 - (now - *it) / trail_seconds_, 0.0, 1.0)
+                                                             : 1.0);
     }
     line.body = trail.body;
     out.lines.push_back(std::move(line));

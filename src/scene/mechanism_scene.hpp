@@ -248,6 +248,9 @@ class MechanismScene {
   /// Force arrows shorter than `metres` (but not zero) are drawn `drawn` long (0: that
   /// long) and marked stretched, their labels giving the value; the legend says whether any is.
   void set_shortest_arrow(double metres, double drawn = 0);
+  /// A trail over a whole cycle is drawn at full strength end to end, so the closed curve
+  /// reads as closed (by default the oldest part fades out).
+  void set_trail_fades(bool fades) { trail_fades_ = fades; }
 
   [[nodiscard]] const MechanismGeometry& geometry() const { return geometry_; }
   /// Every outline point over the motion and the ground points (the fixed camera's view).
@@ -288,6 +291,7 @@ class MechanismScene {
   std::vector<Marked> marked_;  // the trails' points, then the named ones
   std::vector<Marked> traced_;  // those on bodies, whose velocities are drawn
   double trail_seconds_;
+  bool trail_fades_ = true;
   Bounds bounds_, view_bounds_;
   double reach_ = 0, view_reach_ = 0, force_scale_ = 0, applied_scale_ = 0, arrow_cap_ = 0, torque_scale_ = 0,
          extent_ = 1, shortest_ = 0, stretched_ = 0;

@@ -100,7 +100,7 @@ TEST(MechanismsCommand, BadFileOrNameExitsTwoInOneLine) {
       {file + ":3:9: body '1': 'shape' = 'circle' is not valid", "valid: rectangle, rod, disc, point"});
   expect_one_line_error(test::run_linkage({"mechanisms", "to-blocks"}),
                         {"mechanisms: 'to-blocks' is not a shipped mechanism (did you mean 'two-blocks'?)",
-                         "valid: double-pendulum, four-bar", "or a file path"});
+                         "valid: cart-pendulum, double-pendulum, engine, four-bar", "or a file path"});
   expect_one_line_error(test::run_linkage({"mechanisms", (dir / "none.toml").string()}),
                         {"mechanisms: file", "none.toml' does not exist"});
   expect_one_line_error(test::run_linkage({"mechanisms", dir.path().string() + "/"}), {"is a folder"});

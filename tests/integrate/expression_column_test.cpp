@@ -11,19 +11,13 @@
 #include "core/error.hpp"
 #include "integrate/mechanism_simulation.hpp"
 #include "model/mechanism_toml.hpp"
+#include "support/test_support.hpp"
 #include "symbolic/loop_closure.hpp"
 
 namespace linkage {
 namespace {
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::input_error_of;
 
 class ExpressionColumns : public ::testing::Test {
  protected:
@@ -89,7 +83,7 @@ TEST_F(ExpressionColumns, CarryTheUnitOfWhatTheyCompute) {
 }
 
 TEST_F(ExpressionColumns, RefuseABadNameOrExpressionInOneLine) {
-  const auto error = [&](const std::string& spec) { return error_of([&] { (void)select(spec); }); };
+  const auto error = [&](const std::string& spec) { return input_error_of([&] { (void)select(spec); }); };
   EXPECT_EQ(error("t,1x=2.theta").rfind("--columns: '1x' in '1x=2.theta' is not a name for a column", 0), 0U)
       << error("t,1x=2.theta");
   EXPECT_NE(error("t,energy=2.theta").find("'energy' in 'energy=2.theta' is already a column"), std::string::npos);
@@ -112,7 +106,7 @@ TEST_F(ExpressionColumns, ANonNumberAtASampleIsAnErrorNamingTheTime) {
   eval::MechanismSample sample;
   const Eigen::VectorXd& y = simulation.state_at(0);
   simulation.sample(0, y, sample, false);
-  const std::string error = error_of([&] { (void)column_value(columns[1], 0, y, sample, simulation.origin()); });
+  const std::string error = input_error_of([&] { (void)column_value(columns[1], 0, y, sample, simulation.origin()); });
   EXPECT_EQ(error,
             "--columns: column 'root' = sqrt(2.theta-1.2) is not a number at t = 0 s; valid: an expression defined "
             "all along the run (check divisions, sqrt, log, asin, acos)");

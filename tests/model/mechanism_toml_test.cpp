@@ -702,7 +702,8 @@ TEST(MechanismToml, LoadByNameOrFile) {
     return std::string();
   };
   EXPECT_EQ(invalid("for-bar"),
-            "'for-bar' is not a shipped mechanism (did you mean 'four-bar'?); valid: double-pendulum, four-bar, "
+            "'for-bar' is not a shipped mechanism (did you mean 'four-bar'?); valid: cart-pendulum, double-pendulum, "
+            "engine, four-bar, four-bar-driven, "
             "slider-crank, spring-pendulum, triple-pendulum, two-blocks, unequal-blocks, or a file path (with '/' or "
             "ending in .toml)");
   EXPECT_FALSE(is_mechanism_file("four-bar"));

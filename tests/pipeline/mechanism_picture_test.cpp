@@ -578,7 +578,8 @@ TEST(MechanismPicture, ATrailOverADriversCycleCloses) {
   const MechanismMotion motion = motion_of(system, 1.0, 30, 4);
   const MechanismGeometry geometry = mechanism_geometry(system);
   const BodyPoint a = geometry.resolve("rod.A", "trail");
-  const MechanismScene scene(geometry, motion, {a}, period);
+  MechanismScene scene(geometry, motion, {a}, period);
+  scene.set_trail_fades(false);  // --trail-length cycle: the closed curve drawn end to end
   MechanismDrawList list;
   int closed = 0;
   for (std::size_t k = 16; k <= 30; ++k) {  // from t = 0.533 s, a whole cycle back
@@ -590,6 +591,7 @@ TEST(MechanismPicture, ATrailOverADriversCycleCloses) {
     ASSERT_NE(trail, list.lines.end());
     EXPECT_NEAR((trail->points.front() - trail->points.back()).norm(), 0, 2e-4);
     EXPECT_NEAR((trail->points.back() - world_point(motion.samples[k].pose, a)).norm(), 0, 1e-12);
+    EXPECT_EQ(*std::min_element(trail->fade.begin(), trail->fade.end()), 1.0);  // not faded out
     ++closed;
   }
   EXPECT_EQ(closed, 15);
