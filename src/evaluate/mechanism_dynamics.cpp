@@ -41,6 +41,16 @@ double pivot_spread(const Lu& lu) {
   return pivots.minCoeff() / pivots.maxCoeff();
 }
 
+/// x from the upper triangle of a (row major at `Stride`) and b of N rows.
+template <int N, int Stride>
+void back_substitute(const double* a, const double* b, double* x) {
+  for (int k = N - 1; k >= 0; --k) {
+    double v = b[k];
+    for (int j = k + 1; j < N; ++j) v -= a[k * Stride + j] * x[j];
+    x[k] = v / a[k * Stride + k];
+  }
+}
+
 /// A u = B for A (row major) and B of N rows at `values`; the pivots' spread. The same
 /// elimination as Eigen's PartialPivLU (largest pivot of the column, first on ties), with
 /// N known to the compiler: Eigen's fixed-size LU still runs its general loops and
@@ -73,11 +83,7 @@ double solve_fixed(const double* values, Eigen::VectorXd& u) {
   const double rcond = smallest / largest;
   if (!(rcond > std::numeric_limits<double>::epsilon())) return 0;
   u.resize(N);
-  for (int k = N - 1; k >= 0; --k) {
-    double x = b[k];
-    for (int j = k + 1; j < N; ++j) x -= a[k * N + j] * u[j];
-    u[k] = x / a[k * N + k];
-  }
+  back_substitute<N, N>(a.data(), b.data(), u.data());
   return rcond;
 }
 
@@ -114,11 +120,7 @@ double solve_symmetric(std::array<double, kFixedRows * kFixedRows>& p, std::arra
   }
   const double rcond = smallest / largest;
   if (!(rcond > std::numeric_limits<double>::epsilon())) return 0;
-  for (int k = N - 1; k >= 0; --k) {
-    double v = r[k];
-    for (int j = k + 1; j < N; ++j) v -= p[k * S + j] * x[j];
-    x[k] = v / p[k * S + k];
-  }
+  back_substitute<N, S>(p.data(), r.data(), x);
   return rcond;
 }
 
