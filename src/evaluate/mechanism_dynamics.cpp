@@ -41,6 +41,16 @@ double pivot_spread(const Lu& lu) {
   return pivots.minCoeff() / pivots.maxCoeff();
 }
 
+/// x from the upper triangle of a (row major at `Stride`) and b of N rows.
+template <int N, int Stride>
+void back_substitute(const double* a, const double* b, double* x) {
+  for (int k = N - 1; k >= 0; --k) {
+    double v = b[k];
+    for (int j = k + 1; j < N; ++j) v -= a[k * Stride + j] * x[j];
+    x[k] = v / a[k * Stride + k];
+  }
+}
+
 /// A u = B for A (row major) and B of N rows at `values`; the pivots' spread. The same
 /// elimination as Eigen's PartialPivLU (largest pivot of the column, first on ties), with
 /// N known to the compiler: Eigen's fixed-size LU still runs its general loops and
@@ -73,11 +83,7 @@ double solve_fixed(const double* values, Eigen::VectorXd& u) {
   const double rcond = smallest / largest;
   if (!(rcond > std::numeric_limits<double>::epsilon())) return 0;
   u.resize(N);
-  for (int k = N - 1; k >= 0; --k) {
-    double x = b[k];
-    for (int j = k + 1; j < N; ++j) x -= a[k * N + j] * u[j];
-    u[k] = x / a[k * N + k];
-  }
+  back_substitute<N, N>(a.data(), b.data(), u.data());
   return rcond;
 }
 
@@ -91,6 +97,39 @@ std::optional<double> solve_small(std::size_t n, const double* values, Eigen::Ve
 }
 std::optional<double> solve_small(std::size_t n, const double* values, Eigen::VectorXd& u) {
   return solve_small(n, values, u, std::make_index_sequence<kFixedRows>{});
+}
+
+/// P x = r for P symmetric positive definite of N rows, its upper triangle row major at
+/// stride kFixedRows; the pivots' spread, 0 for a pivot not positive (P singular, as at a
+/// dead point, where rounding leaves a pivot near zero of either sign). Gaussian
+/// elimination without pivoting on the upper triangle (LDL^T): half the LU's work.
+template <int N>
+double solve_symmetric(std::array<double, kFixedRows * kFixedRows>& p, std::array<double, kFixedRows>& r, double* x) {
+  constexpr int S = static_cast<int>(kFixedRows);
+  double largest = 0, smallest = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < N; ++k) {
+    const double pivot = p[k * S + k];
+    if (!(pivot > 0)) return 0;  // zero, negative or NaN: singular
+    largest = std::max(largest, pivot);
+    smallest = std::min(smallest, pivot);
+    for (int i = k + 1; i < N; ++i) {
+      const double l = p[k * S + i] / pivot;
+      for (int j = i; j < N; ++j) p[i * S + j] -= l * p[k * S + j];
+      r[i] -= l * r[k];
+    }
+  }
+  const double rcond = smallest / largest;
+  if (!(rcond > std::numeric_limits<double>::epsilon())) return 0;
+  back_substitute<N, S>(p.data(), r.data(), x);
+  return rcond;
+}
+
+template <std::size_t... I>
+double solve_symmetric(std::size_t n, std::array<double, kFixedRows * kFixedRows>& p, std::array<double, kFixedRows>& r,
+                       double* x, std::index_sequence<I...> /*sizes less one*/) {
+  double rcond = 0;
+  (void)((n == I + 1 && (rcond = solve_symmetric<static_cast<int>(I + 1)>(p, r, x), true)) || ...);
+  return rcond;
 }
 
 /// The joint's own coordinate in maximal coordinates (a slider's s; 0 without one).
@@ -281,9 +320,33 @@ void MechanismDynamics::find_structure(const std::vector<GiNaC::ex>& rhs) const 
       for (std::size_t k = n_; k < rows_ && transposed; ++k) transposed = same(at(i, k), sign * at(k, i));
     if (transposed) {
       schur_ = true;
+      schur_sign_ = sign;
+      find_sparsity(rhs);
       return;
     }
   }
+}
+
+void MechanismDynamics::find_sparsity(const std::vector<GiNaC::ex>& rhs) const {
+  // J's structurally non-zero columns by row, and those two rows share (a joint's row
+  // touches only its two bodies): S = J M^-1 J^T sums over these alone.
+  const std::size_t m = rows_ - n_;
+  const auto nonzero = [&](std::size_t k, std::size_t j) { return !rhs[(n_ + k) * cols_ + j].is_zero(); };
+  row_start_.assign(1, 0);
+  row_columns_.clear();
+  for (std::size_t k = 0; k < m; ++k) {
+    for (std::size_t j = 0; j < n_; ++j)
+      if (nonzero(k, j)) row_columns_.push_back(static_cast<std::uint32_t>(j));
+    row_start_.push_back(static_cast<std::uint32_t>(row_columns_.size()));
+  }
+  pair_start_.assign(1, 0);
+  pair_columns_.clear();
+  for (std::size_t k = 0; k < m; ++k)
+    for (std::size_t l = k; l < m; ++l) {
+      for (std::size_t j = 0; j < n_; ++j)
+        if (nonzero(k, j) && nonzero(l, j)) pair_columns_.push_back(static_cast<std::uint32_t>(j));
+      pair_start_.push_back(static_cast<std::uint32_t>(pair_columns_.size()));
+    }
 }
 
 GiNaC::ex MechanismDynamics::prepare(const GiNaC::ex& e) const {
@@ -499,6 +562,7 @@ double MechanismDynamics::structured_unknowns(double t, const Eigen::VectorXd& y
   if (const std::optional<double> rcond = solve_small(rows_, values_.data(), u)) return *rcond;
   const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> A(values_.data(), rows,
                                                                                                    rows);
+  if (schur_ && mass_diagonal_ && m <= idx(kFixedRows)) return diagonal_schur(u);
   bool mass_solved = false;
   if (schur_ && mass_diagonal_) {
     mass_inverse_ = A.diagonal().head(n).cwiseInverse();
@@ -515,15 +579,7 @@ double MechanismDynamics::structured_unknowns(double t, const Eigen::VectorXd& y
       minv_b_ = mass_ldlt_.solve(b.head(n));
     }
   }
-  if (!mass_solved) {  // no structure, or M not positive definite here: the general LU
-    for (Eigen::Index i = 0; i < rows; ++i) B_[i] = b[i];
-    A_ = A;
-    lu_.compute(A_);
-    const double rcond = pivot_spread(lu_);
-    if (!(rcond > std::numeric_limits<double>::epsilon())) return 0;
-    u = lu_.solve(B_);
-    return rcond;
-  }
+  if (!mass_solved) return general_unknowns(u);  // no structure, or M not positive definite here
   // A is singular exactly when J M^-1 G is (M is regular here).
   // Row major, then the right-hand side: as solve_small() takes them.
   schur_values_.resize(static_cast<std::size_t>(m * (m + 1)));
@@ -545,6 +601,62 @@ double MechanismDynamics::structured_unknowns(double t, const Eigen::VectorXd& y
   u.tail(m) = lambda_;
   u.head(n) = minv_b_;
   u.head(n).noalias() -= minv_g_.lazyProduct(lambda_);
+  return rcond;
+}
+
+double MechanismDynamics::general_unknowns(Eigen::VectorXd& u) const {
+  const auto rows = idx(rows_);
+  const double* b = values_.data() + rows_ * cols_;
+  for (Eigen::Index i = 0; i < rows; ++i) B_[i] = b[i];
+  A_ = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(values_.data(), rows,
+                                                                                                rows);
+  lu_.compute(A_);
+  const double rcond = pivot_spread(lu_);
+  if (!(rcond > std::numeric_limits<double>::epsilon())) return 0;
+  u = lu_.solve(B_);
+  return rcond;
+}
+
+double MechanismDynamics::diagonal_schur(Eigen::VectorXd& u) const {
+  const std::size_t m = rows_ - n_;
+  const double* a = values_.data();
+  const double* b = a + rows_ * cols_;
+  const auto jac = [&](std::size_t k, std::size_t j) { return a[(n_ + k) * cols_ + j]; };
+  mass_inverse_.resize(idx(n_));
+  minv_b_.resize(idx(n_));
+  for (std::size_t j = 0; j < n_; ++j) {
+    const double inverse = 1 / a[j * cols_ + j];
+    if (!(inverse > 0 && std::isfinite(inverse))) return general_unknowns(u);  // M not positive definite
+    mass_inverse_[idx(j)] = inverse;
+    minv_b_[idx(j)] = inverse * b[j];
+  }
+  // G = s J^T: (J M^-1 J^T) lambda = s (J M^-1 b1 - b2), the upper triangle only.
+  std::array<double, kFixedRows * kFixedRows> p;
+  std::array<double, kFixedRows> r;
+  std::size_t pair = 0;
+  for (std::size_t k = 0; k < m; ++k) {
+    for (std::size_t l = k; l < m; ++l, ++pair) {
+      double sum = 0;
+      for (std::uint32_t c = pair_start_[pair]; c < pair_start_[pair + 1]; ++c) {
+        const std::size_t j = pair_columns_[c];
+        sum += jac(k, j) * mass_inverse_[idx(j)] * jac(l, j);
+      }
+      p[k * kFixedRows + l] = sum;
+    }
+    double sum = 0;
+    for (std::uint32_t c = row_start_[k]; c < row_start_[k + 1]; ++c)
+      sum += jac(k, row_columns_[c]) * minv_b_[idx(row_columns_[c])];
+    r[k] = schur_sign_ * (sum - b[n_ + k]);
+  }
+  u.resize(idx(rows_));
+  const double rcond = solve_symmetric(m, p, r, u.data() + n_, std::make_index_sequence<kFixedRows>{});
+  if (!(rcond > 0)) return 0;
+  // u1 = M^-1 (b1 - G lambda), G = s J^T.
+  for (std::size_t j = 0; j < n_; ++j) u[idx(j)] = 0;
+  for (std::size_t k = 0; k < m; ++k)
+    for (std::uint32_t c = row_start_[k]; c < row_start_[k + 1]; ++c)
+      u[idx(row_columns_[c])] += jac(k, row_columns_[c]) * u[idx(n_ + k)];
+  for (std::size_t j = 0; j < n_; ++j) u[idx(j)] = minv_b_[idx(j)] - schur_sign_ * mass_inverse_[idx(j)] * u[idx(j)];
   return rcond;
 }
 

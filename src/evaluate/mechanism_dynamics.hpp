@@ -17,6 +17,7 @@
 #include <Eigen/Core>
 #include <Eigen/LU>
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -161,6 +162,12 @@ class MechanismDynamics {
   /// Not for a long tree's Case 3, which the recursion solves in O(n).
   double structured_unknowns(double t, const Eigen::VectorXd& y, Eigen::VectorXd& u) const;
   void find_structure(const std::vector<GiNaC::ex>& rhs) const;
+  void find_sparsity(const std::vector<GiNaC::ex>& rhs) const;
+  /// structured_unknowns() for M diagonal and at most kFixedRows constraint rows: only
+  /// J's structural non-zeros, S = J M^-1 J^T symmetric (its upper triangle, LDL^T).
+  double diagonal_schur(Eigen::VectorXd& u) const;
+  /// The general LU of A and B at values_.
+  double general_unknowns(Eigen::VectorXd& u) const;
 
   CaseId id_;
   const sym::System* system_;
@@ -197,6 +204,9 @@ class MechanismDynamics {
   mutable Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
   bool structured_ = true;                              // solve_by_structure(): derivative() solves by structure
   mutable bool schur_ = false, mass_diagonal_ = false;  // A = [M G; J 0], G = +-J^T (M diagonal)
+  mutable int schur_sign_ = 1;                          // G = schur_sign_ J^T
+  mutable std::vector<std::uint32_t> row_start_, row_columns_;    // J's non-zero columns by row
+  mutable std::vector<std::uint32_t> pair_start_, pair_columns_;  // those rows k <= l share
   mutable Eigen::MatrixXd minv_g_;
   mutable Eigen::VectorXd minv_b_, mass_inverse_, lambda_;
   mutable std::vector<double> schur_values_;
