@@ -8,6 +8,7 @@
 #include <random>
 
 #include "evaluate/mechanism_dynamics.hpp"
+#include "structured_agreement.hpp"
 #include "support/mechanisms_in_code.hpp"
 
 namespace linkage {
@@ -78,23 +79,9 @@ TEST(DrivenDynamics, StructuredSolveAgreesWithTheGeneralPath) {
     const sym::System system(named.make());
     for (CaseId id : kAllCases) {
       const std::string what = named.name + " Case " + std::to_string(case_number(id));
-      eval::MechanismDynamics structured(system, id), general(system, id);
-      structured.solve_by_structure(true);
-      general.solve_by_structure(false);
+      eval::MechanismDynamics structured(system, id);
+      test::expect_structured_agrees(system, structured, rng, what);
       EXPECT_EQ(structured.constraint_joints().back(), system.drivers().back().joint) << what;
-      for (int trial = 0; trial < 4; ++trial) {
-        const Eigen::VectorXd y = general.initial_state(built::random_state(system, rng));
-        if (trial == 3) {
-          structured.set_baumgarte(5.0, 7.0);
-          general.set_baumgarte(5.0, 7.0);
-        }
-        Eigen::VectorXd ds, dg;
-        ASSERT_TRUE(general.derivative(0.2 * trial, y, dg)) << what;
-        ASSERT_TRUE(structured.derivative(0.2 * trial, y, ds)) << what;
-        const double scale = 1 + dg.cwiseAbs().maxCoeff();
-        for (Eigen::Index k = 0; k < dg.size(); ++k)
-          EXPECT_NEAR(ds[k], dg[k], 1e-12 * scale) << what << " value " << k << " trial " << trial;
-      }
     }
   }
 }

@@ -24,6 +24,7 @@
 #include "formulations/case_numbers.hpp"
 #include "linkage/embedded_mechanisms.hpp"
 #include "model/mechanism_toml.hpp"
+#include "structured_agreement.hpp"
 #include "support/mechanisms_in_code.hpp"
 #include "support/scoped_env.hpp"
 #include "support/test_support.hpp"
@@ -230,23 +231,8 @@ TEST(NativeLibrary, StructuredSolveAgreesWithTheGeneralPath) {
     for (CaseId id : kAllCases) {
       const std::string what = std::string(shipped.name) + " Case " + std::to_string(case_number(id));
       MechanismDynamics native(system, id);
-      MechanismDynamics general(system, id);
       ASSERT_TRUE(native.attach_native().attached) << what;
-      native.solve_by_structure(true);
-      general.solve_by_structure(false);
-      for (int trial = 0; trial < 4; ++trial) {
-        const Eigen::VectorXd y = native.initial_state(built::random_state(system, rng));
-        if (trial == 3) {
-          native.set_baumgarte(5.0, 7.0);
-          general.set_baumgarte(5.0, 7.0);
-        }
-        Eigen::VectorXd dn, dg;
-        ASSERT_TRUE(general.derivative(0.1, y, dg)) << what;
-        ASSERT_TRUE(native.derivative(0.1, y, dn)) << what;
-        const double scale = dg.cwiseAbs().maxCoeff();
-        for (Eigen::Index k = 0; k < dg.size(); ++k)
-          EXPECT_NEAR(dn[k], dg[k], 1e-12 * scale) << what << " value " << k << " trial " << trial;
-      }
+      test::expect_structured_agrees(system, native, rng, what);
     }
   }
 }
