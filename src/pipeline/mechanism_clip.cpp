@@ -45,7 +45,11 @@ const sym::GeneralizedCoordinate& ensemble_coordinate(const sym::System& system)
   return system.coordinates().front();
 }
 
-constexpr int kTrailSteps = 4;          // trail samples per frame interval
+constexpr int kTrailSteps = 4;  // trail samples per frame interval, at least
+// A trail's samples closer where the bodies turn fast: no body turns more than this
+// between two (rad, 3 degrees: a circle drawn as a 120-gon), up to kMaxTrailSteps a frame.
+constexpr double kTrailTurn = std::numbers::pi / 60;
+constexpr int kMaxTrailSteps = 256;
 constexpr double kPanelSamples = 4000;  // a panel's samples over the clip, at least (one per frame when fewer)
 constexpr double kMargin = 0.1;         // of the view's larger side, around the whole motion
 constexpr double kTitleBand = 0.1;      // of the view's height
@@ -53,6 +57,17 @@ constexpr double kTitleBand = 0.1;      // of the view's height
 /// Trail samples per frame interval: only when a trail is drawn.
 int trail_steps(const MechanismClip& clip) {
   return clip.trails.empty() || !clip.settings.elements.has(Element::trail) ? 1 : kTrailSteps;
+}
+
+/// Trail samples over a frame interval of `span` s starting at `start`: at least
+/// `minimum`, and enough that no body turns more than kTrailTurn between two at the rates
+/// of `start` doubled (a body may speed up within the interval).
+int trail_steps_between(const eval::MechanismSample& start, double span, int minimum) {
+  double fastest = 0;
+  for (std::size_t k = 2; k < start.rates.size(); k += 3) fastest = std::max(fastest, std::fabs(start.rates[k]));
+  const double turns = std::ceil(2 * fastest * span / kTrailTurn);
+  if (!(turns > minimum)) return minimum;  // NaN rates too
+  return static_cast<int>(std::min<double>(turns, std::max(minimum, kMaxTrailSteps)));
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -425,8 +440,8 @@ MechanismMotion sample_mechanism_motion(const sym::System& system, const GiNaC::
     throw_if_interrupted();
     std::vector<std::pair<double, bool>> inner;  // (t, a trail's) between the frames, in time order
     const double span = i > 0 ? frame_times[i] - frame_times[i - 1] : 0;
-    for (int step = 1; fine && i > 0 && step < trail_steps; ++step)
-      inner.emplace_back(frame_times[i - 1] + span * step / trail_steps, true);
+    const int steps = i > 0 && fine ? trail_steps_between(motion.samples[i - 1], span, trail_steps) : 1;
+    for (int step = 1; step < steps; ++step) inner.emplace_back(frame_times[i - 1] + span * step / steps, true);
     const int panel_steps = columns.empty() || !(panel_step > 0) ? 1 : static_cast<int>(std::ceil(span / panel_step));
     for (int step = 1; i > 0 && step < panel_steps; ++step)
       inner.emplace_back(frame_times[i - 1] + span * step / panel_steps, false);

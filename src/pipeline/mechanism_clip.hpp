@@ -98,8 +98,10 @@ struct MechanismClip {
 [[nodiscard]] Camera mechanism_camera(const MechanismScene& scene, const RenderSettings& settings, CameraMode mode);
 
 /// The motion at `frame_times` (increasing) from one run; with `trail_steps` > 1 also the
-/// poses at that many steps per frame interval (trail_times, the frame times among them),
-/// so a trail stays smooth however fast a point moves between frames. Adds the run's
+/// poses at that many steps per frame interval or more (trail_times, the frame times among
+/// them), more where the bodies turn fast (no body more than 3 degrees between two at the
+/// interval's starting rates doubled, up to 256 a frame), so a trail stays smooth however
+/// fast a point moves between frames. Adds the run's
 /// samples, seconds and warning to `result`. With `panel`, also the panel's columns at
 /// every frame time and between them, at least 4000 samples over the clip (settings.panel,
 /// checked by validate()). `derived`: the system's case, used when it is the one `options`
