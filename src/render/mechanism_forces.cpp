@@ -453,8 +453,8 @@ ForceLayout layout_forces(cairo_t* cr, const DrawStyle& style, const Camera& cam
                          obstacles.boxes.begin() + static_cast<std::ptrdiff_t>(markers),
                          [&](const Rect& m) { return overlaps(b, m); });
     };
-    // At the centre, else halfway to a point of the outline, clear of the joints and the
-    // arrows; else just below the centre, clear of a joint there (a piston's pin).
+    // At the centre, else halfway to a point of the outline, clear of the joints, the
+    // arrows and the other bodies' names; else just below the centre, clear of a joint there (a piston's pin).
     const Vec2 centre = camera.to_pixels(label.at);
     std::vector<Vec2> places{centre};
     if (i < list.outlines.size()) {
@@ -467,7 +467,9 @@ ForceLayout layout_forces(cairo_t* cr, const DrawStyle& style, const Camera& cam
     bool placed = false;
     for (const Vec2& at : places) {
       const Rect candidate = box_around(cr, style, body_font(style), label.text, at);
-      if (!on_a_joint(candidate) && !touches(candidate, obstacles.segments)) {
+      const bool named_there = std::any_of(layout.body_labels.begin(), layout.body_labels.end(),
+                                           [&](const Rect& other) { return overlaps(candidate, other); });
+      if (!on_a_joint(candidate) && !named_there && !touches(candidate, obstacles.segments)) {
         box = candidate;
         placed = true;
         break;

@@ -848,6 +848,9 @@ TEST(MechanismForces, LabelsKeepClearOfEachOtherArrowsAndBodiesAndOnlyStubsGoUnl
                               camera.to_pixels(outline.points[(i + 1) % outline.points.size()]),
                               static_cast<int>(outline.body)});
         for (const Rect& body : layout.body_labels) EXPECT_FALSE(touches(body, arrows)) << "a body's name";
+        for (std::size_t i = 0; i < layout.body_labels.size(); ++i)
+          for (std::size_t j = i + 1; j < layout.body_labels.size(); ++j)
+            EXPECT_FALSE(overlaps(layout.body_labels[i], layout.body_labels[j])) << "two bodies' names";
         for (std::size_t i = 0; i < labels.size(); ++i) {
           for (std::size_t j = i + 1; j < labels.size(); ++j)
             EXPECT_FALSE(overlaps(labels[i].box, labels[j].box)) << labels[i].text << " / " << labels[j].text;
