@@ -43,6 +43,7 @@ void register_commands(CLI::App& app) {
   register_lesson(app);
   register_simulate(app);
   register_mechanisms(app);
+  register_modes(app);
   refuse_empty_values(app);
 }
 

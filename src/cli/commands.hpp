@@ -21,5 +21,6 @@ void register_bench(CLI::App& app);
 void register_lesson(CLI::App& app);
 void register_simulate(CLI::App& app);
 void register_mechanisms(CLI::App& app);
+void register_modes(CLI::App& app);
 
 }  // namespace linkage::cli
