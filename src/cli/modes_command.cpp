@@ -21,6 +21,7 @@ struct ModesOptions {
   std::string format = "text";
   std::string digits = "6";
   bool at_initial = false;
+  bool verify = false;
   bool ascii = false;
 };
 
@@ -40,11 +41,14 @@ void run_modes(const ModesOptions& options) {
   linearize_options.at_initial = options.at_initial;
   const Linearization linear = linearize(system, linearize_options);
   const ModalAnalysis modes = modal_analysis(linear);
+  std::vector<ModeCheck> checks;
+  if (options.verify) checks = verify_modes(system, linear, modes);
+  const std::vector<ModeCheck>* checked = options.verify ? &checks : nullptr;
   ReportOptions report;
   report.digits = static_cast<int>(digits);
   report.text_style = options.ascii ? Style::ascii : text_style_from_locale();
-  const std::string text =
-      options.format == "json" ? modes_json(system, linear, modes) : modes_text(system, linear, modes, report);
+  const std::string text = options.format == "json" ? modes_json(system, linear, modes, checked)
+                                                    : modes_text(system, linear, modes, report, checked);
   if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0)
     throw Error::failure("cannot write the modes to standard output");
 }
@@ -65,6 +69,9 @@ void register_modes(CLI::App& app) {
   sub->add_flag("--at-initial", options->at_initial,
                 "Linearize at the file's [initial] coordinates (rates zero) instead of the equilibrium found from "
                 "them; the text says how far from an equilibrium that is");
+  sub->add_flag("--verify", options->verify,
+                "Check each oscillating mode against the full equations: start them at rest on the mode's shape "
+                "(small amplitude) and compare the frequency of the motion's zero crossings with the computed one");
   sub->add_flag("--ascii", options->ascii, "Text in plain ASCII whatever the locale");
   add_runner(sub, [options] { run_modes(*options); });
 }

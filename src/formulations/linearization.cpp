@@ -328,10 +328,11 @@ ModalAnalysis modal_analysis(const Linearization& linear) {
     } else if (w2[k] <= tolerance) {
       mode.kind = Mode::Kind::neutral;
     } else {
-      mode.omega = std::sqrt(w2[k]);
+      mode.omega = mode.damped_omega = std::sqrt(w2[k]);
       if (out.damped && next_pair < pairs.size()) {
         const std::complex<double> s = pairs[next_pair++];
         mode.damping_ratio = -s.real() / std::abs(s);
+        mode.damped_omega = s.imag();
       }
     }
     Eigen::VectorXd v = undamped.eigenvectors().col(k);

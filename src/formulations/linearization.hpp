@@ -57,6 +57,7 @@ struct Mode {
   double omega = 0;            // rad/s, of the undamped system (oscillation)
   double growth_rate = 0;      // 1/s: the motion grows as exp(growth_rate t) (unstable)
   double damping_ratio = 0;    // of the damped system's pair nearest this mode (0 without C)
+  double damped_omega = 0;     // rad/s: that pair's imaginary part, the zero crossings' (omega without C)
   Eigen::VectorXd shape;       // in the independent coordinates, largest component +1
   Eigen::VectorXd tree_shape;  // R shape: every tree coordinate
 };

@@ -86,6 +86,20 @@ TEST(ModesCommand, TextShowsTheEquilibriumTheExpansionTheMatricesAndTheModes) {
   for (const std::string& line : test::lines_of(r.out)) EXPECT_LE(line.size(), 80U) << line;
 }
 
+TEST(ModesCommand, VerifyComparesEachModeWithTheMotion) {
+  const nlohmann::json j = modes_json({"--mechanism", "double-pendulum", "--verify"});
+  ASSERT_EQ(j["verify"].size(), 2U);
+  for (std::size_t k = 0; k < 2; ++k) {
+    const auto& check = j["verify"][k];
+    EXPECT_EQ(check["mode"], k + 1);
+    EXPECT_EQ(check["predicted"], j["modes"][k]["omega"]);
+    EXPECT_LE(check["relative_error"].get<double>(), 1e-5);
+  }
+  const test::RunResult r = test::run_linkage({"modes", "--mechanism", "double-pendulum", "--verify", "--ascii"});
+  EXPECT_NE(r.out.find("5. The check: the full equations"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("Every mode agrees with the motion to 1e-05."), std::string::npos) << r.out;
+}
+
 TEST(ModesCommand, BadInputIsOneLine) {
   expect_one_line_error(test::run_linkage({"modes"}), {"--mechanism", "double-pendulum"});
   expect_one_line_error(test::run_linkage({"modes", "--mechanism", "double-pendulum", "--format", "csv"}),
