@@ -46,13 +46,16 @@ std::vector<ModeCheck> verify_modes(const sym::System& system, const Linearizati
       }
       return sum;
     };
+    // Crossings one way only (upward), a period apart: a cubic term in the potential moves
+    // the motion's centre by O(amplitude^2), which shifts the upward and downward crossings
+    // opposite ways; over whole periods it cancels.
     const int samples = periods * kSamplesPerPeriod;
     double t_prev = 0, eta_prev = modal(simulation.state_at(0));
     double first = 0, last = 0;
     for (int s = 1; s <= samples; ++s) {
       const double t = options.duration * s / samples;
       const double eta = modal(simulation.state_at(t));
-      if ((eta_prev < 0) != (eta < 0) && eta_prev != 0) {
+      if (eta_prev < 0 && eta >= 0) {
         const double crossing = t_prev + (t - t_prev) * eta_prev / (eta_prev - eta);
         if (check.crossings == 0) first = crossing;
         last = crossing;
@@ -62,10 +65,10 @@ std::vector<ModeCheck> verify_modes(const sym::System& system, const Linearizati
       eta_prev = eta;
     }
     if (check.crossings < 2)
-      throw Error::diverged("modes --verify: mode " + std::to_string(k + 1) + " crossed its equilibrium " +
+      throw Error::diverged("modes --verify: mode " + std::to_string(k + 1) + " crossed its equilibrium upwards " +
                             std::to_string(check.crossings) + " times in " + std::to_string(periods) +
                             " of its periods; the motion is not the mode's");
-    check.measured = std::numbers::pi * (check.crossings - 1) / (last - first);
+    check.measured = 2 * std::numbers::pi * (check.crossings - 1) / (last - first);
     checks.push_back(check);
   }
   return checks;

@@ -183,11 +183,11 @@ std::string modes_text(const sym::System& system, const Linearization& linear, c
             "Each oscillating mode's shape, its largest coordinate moved by " +
                 format_significant(checks->front().amplitude, 3) +
                 " (rad or m), starts the nonlinear equations at rest (DOP853, tolerances 1e-13, loops closed); the "
-                "zero crossings of the mode's coordinate over ten periods give the frequency the motion has" +
+                "upward zero crossings of the mode's coordinate over ten periods give the frequency the motion has" +
                 std::string(modes.damped ? " (with damping, w sqrt(1 - zeta^2))." : "."),
             o);
   Table checked;
-  checked.headers = {"predicted (rad/s)", "measured (rad/s)", "relative difference", "crossings"};
+  checked.headers = {"predicted (rad/s)", "measured (rad/s)", "relative difference", "upward crossings"};
   bool agree = true;
   for (const ModeCheck& check : *checks) {
     checked.row_labels.push_back("mode " + std::to_string(check.mode + 1));

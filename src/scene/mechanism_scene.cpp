@@ -159,6 +159,8 @@ MechanismGeometry mechanism_geometry(const sym::System& system) {
     if (alias != j.name + ".force_x" && alias.size() > 2 && alias.ends_with("_x"))
       shape.force_name = alias.substr(0, alias.size() - 2);
     for (std::size_t k = 0; k < 2; ++k) shape.points[k] = point_of(system, j.bodies[k], j.points[k]);
+    shape.torsion = j.stiffness.has_value() || j.damping.has_value();
+    if (j.rest_angle) shape.rest = number(system, system.quantity(*j.rest_angle, false));
     if (j.axis) {
       const Vec2 axis{number(system, system.quantity(j.axis->x, false)),
                       number(system, system.quantity(j.axis->y, false))};
@@ -742,6 +744,27 @@ void MechanismScene::with_value(MechanismDrawList::Arrow& arrow, const char* uni
   arrow.label += ": " + format_quantity(arrow.force, unit);
 }
 
+void MechanismScene::add_torsion(const MechanismGeometry::JointShape& joint, const std::vector<double>& pose,
+                                 MechanismDrawList& out) const {
+  // A spiral about the pin, its inner end fixed to bodies[0], its outer end turning with
+  // bodies[1]: kTorsionTurns turns at the rest angle, winding up as the joint turns past it.
+  constexpr double kTorsionTurns = 2.5;
+  constexpr int kSteps = 120;
+  const auto angle = [&](int body) { return body < 0 ? 0.0 : pose[3 * static_cast<std::size_t>(body) + 2]; };
+  const double a = angle(joint.points[0].body), b = angle(joint.points[1].body);
+  const Vec2 centre = world_point(pose, joint.points[1]);
+  const double inner = extent_ / 40, outer = extent_ / 14;
+  const double sweep = 2 * std::numbers::pi * kTorsionTurns + (b - a - joint.rest);
+  MechanismDrawList::Line spiral{MechanismDrawList::Line::Kind::spring, {}};
+  for (int k = 0; k <= kSteps; ++k) {
+    const double f = static_cast<double>(k) / kSteps;
+    const double r = inner + f * (outer - inner),
+                 phi = a + joint.rest + f * sweep - 2 * std::numbers::pi * kTorsionTurns;
+    spiral.points.push_back(centre + r * Vec2(std::cos(phi), std::sin(phi)));
+  }
+  out.lines.push_back(std::move(spiral));
+}
+
 void MechanismScene::add_spring(const MechanismGeometry::SpringShape& spring, std::size_t index,
                                 const std::vector<double>& pose, MechanismDrawList& out) const {
   using Kind = MechanismDrawList::Line::Kind;
@@ -978,6 +1001,8 @@ void MechanismScene::frame(std::size_t k, MechanismDrawList& out) const {
   // In the free-body view a spring is the force it exerts, not a part.
   for (std::size_t i = 0; !free_body_ && i < geometry_.springs.size(); ++i)
     add_spring(geometry_.springs[i], i, pose, out);
+  for (const MechanismGeometry::JointShape& joint : geometry_.joints)
+    if (joint.torsion && !free_body_) add_torsion(joint, pose, out);
 
   const std::size_t first_marker = out.markers.size(), first_line = out.lines.size();
   for (std::size_t j = 0; j < geometry_.joints.size(); ++j) {

@@ -41,6 +41,8 @@ struct MechanismGeometry {
     /// The force's own name when the file's [aliases] give `<joint>.force_x` as
     /// `<name>_x` (two-blocks: P.force_x = F_x, so "F on 1", "−F on 2"); else empty.
     std::string force_name{};
+    bool torsion = false;  // a pin's torsional spring or damper: drawn as a spiral about it
+    double rest = 0;       // rad: the spring's rest angle (th_b - th_a), where the spiral is as drawn at rest
   };
   struct SpringShape {
     std::string name;
@@ -311,6 +313,8 @@ class MechanismScene {
   /// Per marked point on a body: its index in marked_ and in MechanismSample::points.
   std::vector<std::pair<std::size_t, std::size_t>> traced_points_;
 
+  void add_torsion(const MechanismGeometry::JointShape& joint, const std::vector<double>& pose,
+                   MechanismDrawList& out) const;
   void add_spring(const MechanismGeometry::SpringShape& spring, std::size_t index, const std::vector<double>& pose,
                   MechanismDrawList& out) const;
   void add_loads(std::size_t k, MechanismDrawList& out) const;

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <complex>
 #include <numbers>
@@ -192,6 +193,26 @@ TEST(Linearization, FourBarOnASpringMatchesTheEnergyMethodOnTheCrankAngle) {
   EXPECT_NEAR(modes.modes[0].tree_shape[2], hand.w4, 1e-12);
 }
 
+// tests/data/mechanisms/coupled-pendulums.toml: three rods (m, L) from pins d apart, springs k at a below the
+// pins, slack hanging: I th'' + (m g L / 2) th + k a^2 P th = 0 with I = m L^2 / 3 and P the
+// path graph's Laplacian, eigenvalues 0, 1, 3 with shapes (1, 1, 1), (1, 0, -1), (1, -2, 1).
+TEST(Linearization, CoupledPendulumsMatchThePathGraphsModes) {
+  const double m = 0.2, L = 0.4, a = 0.25, k = 1.5, g = 9.81, I = m * L * L / 3;
+  const sym::System system(
+      load_mechanism(std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/coupled-pendulums.toml"));
+  const ModalAnalysis modes = modal_analysis(linearize(system));
+  ASSERT_EQ(modes.modes.size(), 3U);
+  const std::array<double, 3> laplacian{0, 1, 3};
+  const std::array<std::array<double, 3>, 3> shapes{{{1, 1, 1}, {1, 0, -1}, {-0.5, 1, -0.5}}};
+  for (std::size_t n = 0; n < 3; ++n) {
+    SCOPED_TRACE(n);
+    EXPECT_NEAR(modes.modes[n].omega / std::sqrt((m * g * L / 2 + k * a * a * laplacian[n]) / I), 1, 1e-12);
+    const Eigen::VectorXd& v = modes.modes[n].shape;
+    const double sign = v.dot(Eigen::Vector3d(shapes[n][0], shapes[n][1], shapes[n][2])) > 0 ? 1 : -1;
+    for (Eigen::Index i = 0; i < 3; ++i) EXPECT_NEAR(v[i], sign * shapes[n][static_cast<std::size_t>(i)], 1e-12);
+  }
+}
+
 TEST(Linearization, AtInitialKeepsThePointAndReportsTheImbalance) {
   const sym::System system(load_mechanism("double-pendulum"));  // [initial]: -0.8, -1.2 rad
   LinearizeOptions options;
@@ -203,7 +224,7 @@ TEST(Linearization, AtInitialKeepsThePointAndReportsTheImbalance) {
   // The generalized forces of gravity there (absolute angles): (m1/2 + m2) g l1 cos(th1)
   // for th1, m2 g l2/2 cos(th2) for th2; the larger is left.
   const double g = 9.81;
-  const double first = (0.2 / 2 + 0.15) * g * 0.3 * std::cos(-0.8), second = 0.15 * g * 0.25 / 2 * std::cos(-1.2);
+  const double first = (0.2 / 2 + 0.15) * g * 0.3 * std::cos(-0.8), second = 0.25 * g * 0.25 / 2 * std::cos(-1.2);
   EXPECT_NEAR(linear.residual / std::max(first, second), 1, 1e-12);
 }
 

@@ -19,14 +19,16 @@ std::vector<ModeCheck> checks_of(const Mechanism& m, std::size_t expected_modes)
   EXPECT_EQ(checks.size(), expected_modes);
   for (const ModeCheck& check : checks) {
     EXPECT_LE(check.relative_error(), 1e-5) << m.name << " mode " << check.mode + 1;
-    EXPECT_GE(check.crossings, 19) << m.name;  // ten periods
+    EXPECT_GE(check.crossings, 9) << m.name;  // ten periods, upwards
   }
   return checks;
 }
 
-TEST(ModeVerification, ShippedPendulumsAgreeWithTheirMotion) {
+TEST(ModeVerification, ShippedExamplesAgreeWithTheirMotion) {
   (void)checks_of(load_mechanism("double-pendulum"), 2);
   (void)checks_of(load_mechanism("triple-pendulum"), 3);
+  (void)checks_of(load_mechanism(std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/coupled-pendulums.toml"), 3);
+  (void)checks_of(load_mechanism("four-bar-spring"), 1);
   // Damped: the bounce's crossings come at w sqrt(1 - zeta^2); the free turn is not checked.
   const std::vector<ModeCheck> elastic = checks_of(load_mechanism("spring-pendulum"), 2);
   EXPECT_LT(elastic.back().predicted, 10.0);

@@ -1099,6 +1099,36 @@ TEST(MechanismClip, AFastCranksTrailTurnsLittleBetweenSamples) {
   EXPECT_LE(worst, std::numbers::pi / 60 + 1e-9);
 }
 
+// A pin's torsional spring (four-bar-spring's at O4) is drawn as a spiral about the pin:
+// its inner end fixed to bodies[0] (the ground), its outer end turning with bodies[1], so
+// between two frames it winds by the rocker's turn.
+TEST(MechanismClip, ATorsionalSpringIsASpiralAboutItsPinThatTurnsWithTheBody) {
+  const sym::System system(load_mechanism("four-bar-spring"));
+  const MechanismMotion motion = clip_motion(system, 0.3, 30);
+  const MechanismGeometry geometry = mechanism_geometry(system);
+  const MechanismScene scene(geometry, motion, {}, 2.0);
+  const Vec2 pin = geometry.ground.back().second;  // O4
+  std::vector<double> outer_angles;
+  for (const std::size_t k : {std::size_t{0}, motion.samples.size() - 1}) {
+    MechanismDrawList list;
+    scene.frame(k, list);
+    const auto spiral = std::find_if(list.lines.begin(), list.lines.end(), [&](const MechanismDrawList::Line& l) {
+      return l.kind == MechanismDrawList::Line::Kind::spring && (l.points.front() - pin).norm() < 0.05;
+    });
+    ASSERT_NE(spiral, list.lines.end()) << "frame " << k;
+    double last = 0;
+    for (const Vec2& p : spiral->points) {  // outwards all the way
+      EXPECT_GE((p - pin).norm(), last - 1e-12);
+      last = (p - pin).norm();
+    }
+    const Vec2 end = spiral->points.back() - pin;
+    outer_angles.push_back(std::atan2(end.y(), end.x()));
+  }
+  const double rocker = motion.samples.back().pose[3 * 2 + 2] - motion.samples.front().pose[3 * 2 + 2];
+  EXPECT_GT(std::fabs(rocker), 0.01);
+  EXPECT_NEAR(std::remainder(outer_angles[1] - outer_angles[0] - rocker, 2 * std::numbers::pi), 0, 1e-9);
+}
+
 // Issue 23: every picture option on every shipped mechanism gives a still (SVG and PDF
 // whole and all vector), and the draw list holds what the options say.
 TEST(MechanismClip, EveryPictureOptionOnEveryShippedMechanism) {
