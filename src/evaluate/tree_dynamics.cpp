@@ -35,61 +35,62 @@ struct Node {
   double sign = 1;                   // slider: +1 when the body is bodies[1] of its joint
 };
 
-/// Per node, the numbers of one pass.
+/// A symmetric 3 x 3 matrix by its upper triangle.
+struct Sym3 {
+  double a00 = 0, a01 = 0, a02 = 0, a11 = 0, a12 = 0, a22 = 0;
+};
+
+/// Per node, the numbers of one evaluation, about the node's own point O (see the header).
 struct Work {
-  Vec2 centre = Vec2::Zero();
-  double angle = 0, cos_angle = 1, sin_angle = 0;                       // each angle's cosine and sine once
-  Eigen::Matrix<double, 3, 3> S = Eigen::Matrix<double, 3, 3>::Zero();  // first dof columns used
+  Vec2 centre = Vec2::Zero(), point = Vec2::Zero();  // the centre of mass and O, world
+  Vec2 t = Vec2::Zero();  // (-d_y, d_x), d = O - O_parent: motion to O is (w, v + w t), force to O_parent (n + t.F, F)
+  double angle = 0, cos_angle = 1, sin_angle = 0;  // each angle's cosine and sine once
+  Vec3 s = Vec3::Zero();                           // one-dof joints' motion subspace
   Vec3 v = Vec3::Zero(), c = Vec3::Zero(), a = Vec3::Zero();
-  Mat3 I0 = Mat3::Zero();                         // the body's own spatial inertia
-  Vec3 bias = Vec3::Zero(), load = Vec3::Zero();  // v x* I v, and the loads, as spatial forces
-  Mat3 IA = Mat3::Zero();
-  Vec3 pA = Vec3::Zero();
-  Eigen::Matrix<double, 3, 3> U = Eigen::Matrix<double, 3, 3>::Zero();
-  Mat3 Dinv = Mat3::Zero();
-  Vec3 u = Vec3::Zero();
-  Vec3 q_dot = Vec3::Zero(), q_ddot = Vec3::Zero();  // relative, first dof entries
-  double omega = 0, alpha = 0;                       // absolute angular velocity and acceleration
+  Sym3 IA;
+  Vec3 pA = Vec3::Zero(), U = Vec3::Zero(), u = Vec3::Zero();
+  double Dinv = 0;
+  // Pins: q''_relative = h - W . a_parent.
+  Vec3 W = Vec3::Zero();
+  double h = 0;
+};
+
+/// A floating root's solve: the rotating base's I^A, the point mass's translation block.
+struct RootFactor {
+  Eigen::LDLT<Mat3> full;
+  Eigen::Matrix2d translation_inverse = Eigen::Matrix2d::Zero();
 };
 
 /// R(angle) v, with cos and sin of the angle given.
 Vec2 rotate(double c, double s, const Vec2& v) { return {c * v.x() - s * v.y(), s * v.x() + c * v.y()}; }
 
-/// v x* u for planar motion vectors.
-Vec3 cross_motion(const Vec3& v, const Vec3& u) { return {0, -v[0] * u[2] + v[2] * u[0], v[0] * u[1] - v[1] * u[0]}; }
+/// X^T Ia X into `parent`: Ia = [A b^T; b K] about O moved to O_parent, X = [1 0; t 1].
+void add_shifted(Sym3& parent, const Sym3& ia, const Vec2& t) {
+  const double kt0 = ia.a11 * t[0] + ia.a12 * t[1], kt1 = ia.a12 * t[0] + ia.a22 * t[1];
+  parent.a00 += ia.a00 + 2 * (ia.a01 * t[0] + ia.a02 * t[1]) + t[0] * kt0 + t[1] * kt1;
+  parent.a01 += ia.a01 + kt0;
+  parent.a02 += ia.a02 + kt1;
+  parent.a11 += ia.a11;
+  parent.a12 += ia.a12;
+  parent.a22 += ia.a22;
+}
 
-Mat3 spatial_inertia(double m, double I, const Vec2& c) {
+/// X^T f into `parent`.
+void add_shifted(Vec3& parent, const Vec3& f, const Vec2& t) {
+  parent[0] += f[0] + t[0] * f[1] + t[1] * f[2];
+  parent[1] += f[1];
+  parent[2] += f[2];
+}
+
+Vec3 times(const Sym3& m, const Vec3& x) {
+  return {m.a00 * x[0] + m.a01 * x[1] + m.a02 * x[2], m.a01 * x[0] + m.a11 * x[1] + m.a12 * x[2],
+          m.a02 * x[0] + m.a12 * x[1] + m.a22 * x[2]};
+}
+
+Mat3 full(const Sym3& m) {
   Mat3 out;
-  out << I + m * c.squaredNorm(), -m * c.y(), m * c.x(), -m * c.y(), m, 0, m * c.x(), 0, m;
+  out << m.a00, m.a01, m.a02, m.a01, m.a11, m.a12, m.a02, m.a12, m.a22;
   return out;
-}
-
-}  // namespace
-
-namespace {
-
-/// The leaves-to-root step of a node with D > 1 degrees of freedom (a floating base),
-/// in fixed-size matrices.
-template <int D>
-void backward(Work& w, Work* p, const Vec3& c) {
-  const Eigen::Matrix<double, 3, D> S = w.S.leftCols<D>();
-  const Eigen::Matrix<double, 3, D> U = w.IA * S;
-  w.U.leftCols<D>() = U;
-  const Eigen::Matrix<double, D, D> Dinv = (S.transpose() * U).inverse();
-  w.Dinv.topLeftCorner<D, D>() = Dinv;
-  w.u.head<D>() -= S.transpose() * w.pA;
-  if (p == nullptr) return;
-  const Mat3 Ia = w.IA - U * Dinv * U.transpose();
-  p->IA += Ia;
-  p->pA += w.pA + Ia * c + U * (Dinv * w.u.head<D>());
-}
-
-/// The root-to-leaves step of such a node.
-template <int D>
-void forward(Work& w, const Vec3& a_in) {
-  const Eigen::Matrix<double, D, D> Dinv = w.Dinv.topLeftCorner<D, D>();
-  w.q_ddot.head<D>() = Dinv * (w.u.head<D>() - w.U.leftCols<D>().transpose() * a_in);
-  w.a = a_in + w.S.leftCols<D>() * w.q_ddot.head<D>();
 }
 
 }  // namespace
@@ -102,18 +103,26 @@ struct TreeDynamics::Impl {
   Program loads;  // per body Fx, Fy, moment about its centre; inputs: parameters, x y theta per body, rates, t
   Program loops;  // J (m x n, row major), then phi0 (m); inputs: parameters, q, q', t
   int loop_rows = 0;
+  // Allocated once: per node, in the tree's order.
   mutable std::vector<Work> work;
-  mutable Vec2 origin = Vec2::Zero();  // of the spatial quantities, world
+  mutable std::vector<RootFactor> roots;
   mutable std::vector<double> angle_force;
   mutable std::vector<double> load_inputs, load_outputs, loop_inputs, loop_outputs, scratch;
-  mutable Eigen::MatrixXd J, MinvJt;
-  mutable Eigen::VectorXd q_ddot0, tau, column;
+  mutable Eigen::MatrixXd J, MinvJt, schur;
+  mutable Eigen::VectorXd tau, column, phi0, lambda;
+  mutable Eigen::LDLT<Eigen::MatrixXd> factor;
 
-  /// Positions and velocities root to leaves from y = (q, q').
+  /// Positions, velocities and each body's inertia and velocity-product force root to
+  /// leaves from y = (q, q'), the loads' inputs filled.
   void kinematics(const Eigen::VectorXd& y) const;
-  /// Articulated inertias and biases leaves to root, accelerations root to leaves; with
-  /// `loaded` false: no velocity terms and no loads (q'' = M^-1 tau).
-  void recursion(bool loaded, const Eigen::VectorXd& tau_absolute, Eigen::VectorXd& out) const;
+  /// The loaded pass: articulated inertias and biases leaves to root (kept for the
+  /// unloaded passes), accelerations root to leaves.
+  void articulate(Eigen::VectorXd& out) const;
+  /// q'' = M^-1 tau (generalized forces on the absolute coordinates), on the articulated
+  /// inertias of the last loaded pass: no velocity terms and no loads.
+  void unloaded(const Eigen::VectorXd& tau_absolute, Eigen::VectorXd& out) const;
+  /// Root to leaves: each node's q'' from its parent's acceleration, into out.
+  void accelerate(bool loaded, Eigen::VectorXd& out) const;
 };
 
 std::vector<Program*> TreeDynamics::programs() { return {&impl_->loads, &impl_->loops}; }
@@ -263,11 +272,13 @@ TreeDynamics::TreeDynamics(const sym::System& system) : impl_(std::make_unique<I
   m.loop_outputs.resize(jacobian.size());
   m.scratch.resize(std::max(m.loads.scratch_size(), m.loops.scratch_size()));
   m.work.resize(m.nodes.size());
+  m.roots.resize(m.nodes.size());
   m.angle_force.resize(m.nodes.size());
   const auto n = static_cast<Eigen::Index>(m.coordinates);
   m.J.resize(m.loop_rows, n);
   m.MinvJt.resize(n, m.loop_rows);
-  m.q_ddot0.resize(n);
+  m.phi0.resize(m.loop_rows);
+  m.schur.resize(m.loop_rows, m.loop_rows);
   m.tau.resize(n);
   m.column.resize(n);
 }
@@ -278,185 +289,246 @@ TreeDynamics& TreeDynamics::operator=(TreeDynamics&&) noexcept = default;
 
 void TreeDynamics::Impl::kinematics(const Eigen::VectorXd& y) const {
   const auto n = static_cast<Eigen::Index>(coordinates);
-  auto q = [&](int i) { return y[i]; };
-  auto q_dot = [&](int i) { return y[n + i]; };
-  // Spatial quantities about a point near the mechanism, not the world origin: about a
-  // far origin I + m |c|^2 would swamp I and cost digits.
-  origin = nodes.front().kind == NodeKind::floating
-               ? Vec2(q(nodes.front().coordinate[0]), q(nodes.front().coordinate[1]))
-               : Vec2::Zero();
-  for (std::size_t k = 0; k < nodes.size(); ++k) {
+  const double* q = y.data();
+  const double* q_dot = q + n;
+  const std::size_t bodies = nodes.size(), first = parameters.size();
+  for (std::size_t k = 0; k < bodies; ++k) {
     const Node& node = nodes[k];
     Work& w = work[k];
     const Work* p = node.parent >= 0 ? &work[static_cast<std::size_t>(node.parent)] : nullptr;
-    const double parent_angle = p != nullptr ? p->angle : 0.0;
-    const double pc = p != nullptr ? p->cos_angle : 1.0, ps = p != nullptr ? p->sin_angle : 0.0;
-    const double parent_omega = p != nullptr ? p->omega : 0.0;
-    const Vec3 parent_v = p != nullptr ? p->v : Vec3::Zero();
-    const Vec2 parent_point = p != nullptr ? Vec2(p->centre + rotate(pc, ps, node.parent_point)) : node.parent_point;
+    // The joint's point on the parent, world.
+    const Vec2 joint =
+        p != nullptr ? Vec2(p->centre + rotate(p->cos_angle, p->sin_angle, node.parent_point)) : node.parent_point;
     switch (node.kind) {
       case NodeKind::floating: {
-        w.S.setZero();
-        w.c.setZero();
-        w.centre = {q(node.coordinate[0]), q(node.coordinate[1])};
-        w.angle = node.rotates ? q(node.coordinate[2]) : 0.0;
+        w.centre = {q[node.coordinate[0]], q[node.coordinate[1]]};
+        w.point = w.centre;
+        w.angle = node.rotates ? q[node.coordinate[2]] : 0.0;
         w.cos_angle = std::cos(w.angle);
         w.sin_angle = std::sin(w.angle);
-        w.q_dot[0] = q_dot(node.coordinate[0]);
-        w.q_dot[1] = q_dot(node.coordinate[1]);
-        w.q_dot[2] = node.rotates ? q_dot(node.coordinate[2]) : 0.0;
-        w.S(1, 0) = 1;
-        w.S(2, 1) = 1;
-        if (node.rotates) {
-          const Vec2 r = w.centre - origin;
-          w.S.col(2) << 1, r.y(), -r.x();
-          w.c << 0, w.q_dot[2] * w.q_dot[1], -w.q_dot[2] * w.q_dot[0];
-        }
-        w.v = w.S.leftCols(node.dof) * w.q_dot.head(node.dof);
-        w.omega = w.q_dot[2];
+        const double omega = node.rotates ? q_dot[node.coordinate[2]] : 0.0;
+        const double vx = q_dot[node.coordinate[0]], vy = q_dot[node.coordinate[1]];
+        w.t.setZero();
+        w.v = {omega, vx, vy};
+        // About the point where the centre is now: S' q' = (0, w y', -w x').
+        w.c = {0, omega * vy, -omega * vx};
         break;
       }
       case NodeKind::revolute: {
-        w.angle = q(node.coordinate[0]);
-        w.omega = q_dot(node.coordinate[0]);
-        w.q_dot[0] = w.omega - parent_omega;
+        w.angle = q[node.coordinate[0]];
         w.cos_angle = std::cos(w.angle);
         w.sin_angle = std::sin(w.angle);
-        w.centre = parent_point - rotate(w.cos_angle, w.sin_angle, node.child_point);
-        const Vec2 r = parent_point - origin;
-        w.S.col(0) << 1, r.y(), -r.x();
-        w.v = parent_v + w.S.col(0) * w.q_dot[0];
-        w.c = cross_motion(parent_v, w.S.col(0)) * w.q_dot[0];
+        w.point = joint;
+        w.centre = joint - rotate(w.cos_angle, w.sin_angle, node.child_point);
+        const double omega = q_dot[node.coordinate[0]];
+        if (p != nullptr) {
+          const Vec2 d = joint - p->point;
+          w.t = {-d.y(), d.x()};
+          // The joint's velocity, and S' q' = v_p x (1, 0, 0) q'_relative.
+          const Vec2 vj(p->v[1] + p->v[0] * w.t[0], p->v[2] + p->v[0] * w.t[1]);
+          const double relative = omega - p->v[0];
+          w.v = {omega, vj.x(), vj.y()};
+          w.c = {0, relative * vj.y(), -relative * vj.x()};
+        } else {
+          w.t.setZero();
+          w.v = {omega, 0, 0};
+          w.c.setZero();
+        }
+        w.s = {1, 0, 0};
         break;
       }
       case NodeKind::prismatic: {
+        const double pc = p != nullptr ? p->cos_angle : 1.0, ps = p != nullptr ? p->sin_angle : 0.0;
         const Vec2 u = rotate(pc, ps, node.axis);
-        w.angle = parent_angle;
+        w.angle = p != nullptr ? p->angle : 0.0;
         w.cos_angle = pc;
         w.sin_angle = ps;
-        w.omega = parent_omega;
-        w.q_dot[0] = q_dot(node.coordinate[0]);
-        w.centre = parent_point + node.sign * q(node.coordinate[0]) * u - rotate(pc, ps, node.child_point);
-        w.S.col(0) << 0, node.sign * u.x(), node.sign * u.y();
-        w.v = parent_v + w.S.col(0) * w.q_dot[0];
-        w.c = cross_motion(parent_v, w.S.col(0)) * w.q_dot[0];
+        w.point = joint + node.sign * q[node.coordinate[0]] * u;
+        w.centre = w.point - rotate(pc, ps, node.child_point);
+        w.s = {0, node.sign * u.x(), node.sign * u.y()};
+        const double rate = q_dot[node.coordinate[0]];
+        if (p != nullptr) {
+          const Vec2 d = w.point - p->point;
+          w.t = {-d.y(), d.x()};
+          const double omega = p->v[0];
+          w.v = {omega, p->v[1] + omega * w.t[0] + w.s[1] * rate, p->v[2] + omega * w.t[1] + w.s[2] * rate};
+          w.c = {0, -omega * w.s[2] * rate, omega * w.s[1] * rate};
+        } else {
+          w.t.setZero();
+          w.v = w.s * rate;
+          w.c.setZero();
+        }
         break;
       }
     }
+    // The body's inertia about O, and v x* (I v) written through the centre's velocity
+    // v_c: the momentum changes at m (omega x v_c), its moment about O at r x that.
+    const Vec2 r = w.centre - w.point;
+    const double m = node.mass, omega = w.v[0];
+    w.IA = {node.inertia + m * r.squaredNorm(), -m * r.y(), m * r.x(), m, 0, m};
+    const Vec2 vc(w.v[1] - omega * r.y(), w.v[2] + omega * r.x());
+    const Vec2 turn(-m * omega * vc.y(), m * omega * vc.x());
+    w.pA = {r.x() * turn.y() - r.y() * turn.x(), turn.x(), turn.y()};
+    if (loads_constant) continue;
+    const auto b = static_cast<std::size_t>(node.body);
+    load_inputs[first + 3 * b] = w.centre.x();
+    load_inputs[first + 3 * b + 1] = w.centre.y();
+    load_inputs[first + 3 * b + 2] = w.angle;
+    load_inputs[first + 3 * bodies + 3 * b] = vc.x();
+    load_inputs[first + 3 * bodies + 3 * b + 1] = vc.y();
+    load_inputs[first + 3 * bodies + 3 * b + 2] = omega;
   }
 }
 
-void TreeDynamics::Impl::recursion(bool loaded, const Eigen::VectorXd& tau_absolute, Eigen::VectorXd& out) const {
-  // Generalized forces on the relative coordinates: an absolute angle's force reaches
-  // every coordinate it depends on, so a pin's relative angle collects its subtree's.
-  // The motion itself has none (the loads act on the bodies).
-  if (loaded) {
-    for (Work& w : work) w.u.setZero();
-  } else {
-    std::fill(angle_force.begin(), angle_force.end(), 0.0);
-    for (std::size_t k = nodes.size(); k-- > 0;) {
-      const Node& node = nodes[k];
-      Work& w = work[k];
-      double own = 0;
-      switch (node.kind) {
-        case NodeKind::floating:
-          if (node.rotates) own = tau_absolute[node.coordinate[2]];
-          break;
-        case NodeKind::revolute:
-          own = tau_absolute[node.coordinate[0]];
-          break;
-        case NodeKind::prismatic:
-          break;
-      }
-      angle_force[k] += own;
-      if (node.parent >= 0 && node.kind != NodeKind::floating)
-        angle_force[static_cast<std::size_t>(node.parent)] += angle_force[k];
-      w.u.setZero();
-      switch (node.kind) {
-        case NodeKind::floating:
-          w.u[0] = tau_absolute[node.coordinate[0]];
-          w.u[1] = tau_absolute[node.coordinate[1]];
-          w.u[2] = angle_force[k];
-          break;
-        case NodeKind::revolute:
-          w.u[0] = angle_force[k];
-          break;
-        case NodeKind::prismatic:
-          w.u[0] = tau_absolute[node.coordinate[0]];
-          break;
-      }
-    }
-  }
-  for (std::size_t k = 0; k < nodes.size(); ++k) {
-    Work& w = work[k];
-    w.IA = w.I0;
-    if (loaded)
-      w.pA = w.bias - w.load;
-    else
-      w.pA.setZero();
-  }
+void TreeDynamics::Impl::articulate(Eigen::VectorXd& out) const {
+  // In a chain a node's parent is the node before it, the next one done: what it gets is
+  // carried in registers, not through memory (each step waits on the one before).
+  Sym3 carry_IA;
+  Vec3 carry_pA = Vec3::Zero();
+  bool carried = false;
   for (std::size_t k = nodes.size(); k-- > 0;) {
     const Node& node = nodes[k];
     Work& w = work[k];
-    const Vec3 c = loaded ? w.c : Vec3::Zero();
-    Work* p = node.parent >= 0 ? &work[static_cast<std::size_t>(node.parent)] : nullptr;
-    if (node.dof == 1) {  // pins and sliders: scalars, no matrix to invert
-      const Vec3 s = w.S.col(0);
-      w.U.col(0) = w.IA * s;
-      const double D = s.dot(w.U.col(0));
-      w.Dinv(0, 0) = 1 / D;
-      w.u[0] -= s.dot(w.pA);
-      if (p == nullptr) continue;
-      const Vec3 U = w.U.col(0);
-      const Mat3 Ia = w.IA - (U / D) * U.transpose();
-      p->IA += Ia;
-      p->pA += w.pA + Ia * c + U * (w.u[0] / D);
-      continue;
+    if (carried) {
+      w.IA.a00 += carry_IA.a00;
+      w.IA.a01 += carry_IA.a01;
+      w.IA.a02 += carry_IA.a02;
+      w.IA.a11 += carry_IA.a11;
+      w.IA.a12 += carry_IA.a12;
+      w.IA.a22 += carry_IA.a22;
+      w.pA += carry_pA;
     }
-    if (node.dof == 3) {
-      // A rotating floating base is a root: I^A a + p^A = f, with S^T f = tau; no D to
-      // form, one symmetric 3 x 3 solve (its forward step below).
-      const Vec2 r = w.centre - origin;
-      const Vec3 f(w.u[2] - r.y() * w.u[0] + r.x() * w.u[1], w.u[0], w.u[1]);
-      w.a = w.IA.ldlt().solve(f - w.pA);
-    } else {
-      backward<2>(w, p, c);
+    const bool to_next = node.parent >= 0 && static_cast<std::size_t>(node.parent) + 1 == k;
+    Work* p = node.parent >= 0 && !to_next ? &work[static_cast<std::size_t>(node.parent)] : nullptr;
+    Sym3& P = to_next ? carry_IA : p != nullptr ? p->IA : carry_IA;
+    Vec3& pP = to_next ? carry_pA : p != nullptr ? p->pA : carry_pA;
+    if (to_next) {
+      carry_IA = Sym3{};
+      carry_pA.setZero();
+    }
+    carried = to_next;
+    const bool has_parent = node.parent >= 0;
+    const Sym3& A = w.IA;
+    switch (node.kind) {
+      case NodeKind::revolute: {
+        // S = (1, 0, 0) about the joint: U is I^A's first column (a00, b), D = a00, and
+        // I^A - U D^-1 U^T keeps K = A22 - b b^T / a00 alone. Each product that needs
+        // no D^-1 is formed while the division runs.
+        w.Dinv = 1 / A.a00;
+        w.U = {A.a00, A.a01, A.a02};
+        w.u[0] = -w.pA[0];
+        const double bt = A.a01 * w.t[0] + A.a02 * w.t[1], bc = A.a01 * w.c[1] + A.a02 * w.c[2];
+        w.h = w.Dinv * (w.u[0] - bc);
+        w.W = {1 + bt * w.Dinv, A.a01 * w.Dinv, A.a02 * w.Dinv};
+        if (!has_parent) break;
+        const double at0 = A.a11 * w.t[0] + A.a12 * w.t[1], at1 = A.a12 * w.t[0] + A.a22 * w.t[1];
+        const double ac0 = A.a11 * w.c[1] + A.a12 * w.c[2], ac1 = A.a12 * w.c[1] + A.a22 * w.c[2];
+        const double f1 = w.pA[1] + ac0 + A.a01 * w.h, f2 = w.pA[2] + ac1 + A.a02 * w.h;
+        P.a00 += (w.t[0] * at0 + w.t[1] * at1) - bt * bt * w.Dinv;
+        P.a01 += at0 - A.a01 * bt * w.Dinv;
+        P.a02 += at1 - A.a02 * bt * w.Dinv;
+        P.a11 += A.a11 - A.a01 * A.a01 * w.Dinv;
+        P.a12 += A.a12 - A.a01 * A.a02 * w.Dinv;
+        P.a22 += A.a22 - A.a02 * A.a02 * w.Dinv;
+        pP[0] += w.t[0] * f1 + w.t[1] * f2;
+        pP[1] += f1;
+        pP[2] += f2;
+        break;
+      }
+      case NodeKind::prismatic: {
+        w.U = times(A, w.s);
+        w.Dinv = 1 / w.s.dot(w.U);
+        w.u[0] = -w.s.dot(w.pA);
+        if (!has_parent) break;
+        const Vec3 g = w.U * w.Dinv;
+        const Sym3 Ia{A.a00 - g[0] * w.U[0], A.a01 - g[0] * w.U[1], A.a02 - g[0] * w.U[2],
+                      A.a11 - g[1] * w.U[1], A.a12 - g[1] * w.U[2], A.a22 - g[2] * w.U[2]};
+        add_shifted(P, Ia, w.t);
+        add_shifted(pP, Vec3(w.pA + times(Ia, w.c) + g * w.u[0]), w.t);
+        break;
+      }
+      case NodeKind::floating:
+        // A root: its I^A a + p^A = S^-T tau solved in accelerate().
+        w.u.setZero();
+        if (node.rotates)
+          roots[k].full.compute(full(A));
+        else
+          roots[k].translation_inverse = (Eigen::Matrix2d() << A.a11, A.a12, A.a12, A.a22).finished().inverse();
+        break;
     }
   }
+  accelerate(true, out);
+}
+
+void TreeDynamics::Impl::unloaded(const Eigen::VectorXd& tau_absolute, Eigen::VectorXd& out) const {
+  // Generalized forces on the relative coordinates: an absolute angle's force reaches
+  // every coordinate it depends on, so a pin's relative angle collects its subtree's.
+  std::fill(angle_force.begin(), angle_force.end(), 0.0);
+  for (Work& w : work) w.pA.setZero();
+  for (std::size_t k = nodes.size(); k-- > 0;) {
+    const Node& node = nodes[k];
+    Work& w = work[k];
+    Work* p = node.parent >= 0 ? &work[static_cast<std::size_t>(node.parent)] : nullptr;
+    switch (node.kind) {
+      case NodeKind::floating:
+        if (node.rotates) angle_force[k] += tau_absolute[node.coordinate[2]];
+        w.u = {tau_absolute[node.coordinate[0]], tau_absolute[node.coordinate[1]], angle_force[k]};
+        continue;  // a root
+      case NodeKind::revolute:
+        angle_force[k] += tau_absolute[node.coordinate[0]];
+        w.u[0] = angle_force[k] - w.pA[0];
+        w.h = w.Dinv * w.u[0];
+        break;
+      case NodeKind::prismatic:
+        w.u[0] = tau_absolute[node.coordinate[0]] - w.s.dot(w.pA);
+        break;
+    }
+    if (p == nullptr) continue;
+    angle_force[static_cast<std::size_t>(node.parent)] += angle_force[k];
+    add_shifted(p->pA, Vec3(w.pA + w.U * (w.Dinv * w.u[0])), w.t);
+  }
+  accelerate(false, out);
+}
+
+void TreeDynamics::Impl::accelerate(bool loaded, Eigen::VectorXd& out) const {
+  Vec3 previous = Vec3::Zero();  // the acceleration of node k - 1, in registers
   for (std::size_t k = 0; k < nodes.size(); ++k) {
     const Node& node = nodes[k];
     Work& w = work[k];
-    const int d = node.dof;
-    const Work* p = node.parent >= 0 ? &work[static_cast<std::size_t>(node.parent)] : nullptr;
-    const Vec3 a_in = (p != nullptr ? p->a : Vec3::Zero()) + (loaded ? w.c : Vec3::Zero());
-    if (d == 1) {
-      w.q_ddot[0] = w.Dinv(0, 0) * (w.u[0] - w.U.col(0).dot(a_in));
-      w.a = a_in + w.S.col(0) * w.q_ddot[0];
-    } else if (d == 3) {
-      // q'' = S^-1 (a - c): S q'' = (theta'', x'' + r_y theta'', y'' - r_x theta'').
-      const Vec2 r = w.centre - origin;
-      const Vec3 e = w.a - a_in;
-      w.q_ddot << e[1] - r.y() * e[0], e[2] + r.x() * e[0], e[0];
-    } else {
-      forward<2>(w, a_in);
-    }
-    const double parent_alpha = p != nullptr ? p->alpha : 0.0;
+    Vec3 ap = Vec3::Zero();
+    if (node.parent >= 0)
+      ap = static_cast<std::size_t>(node.parent) + 1 == k ? previous : work[static_cast<std::size_t>(node.parent)].a;
+    const Vec3 c = loaded ? w.c : Vec3::Zero();
+    const Vec3 a_in(ap[0], ap[1] + ap[0] * w.t[0] + c[1], ap[2] + ap[0] * w.t[1] + c[2]);
     switch (node.kind) {
       case NodeKind::floating:
-        out[node.coordinate[0]] = w.q_ddot[0];
-        out[node.coordinate[1]] = w.q_ddot[1];
-        w.alpha = node.rotates ? w.q_ddot[2] : 0.0;
-        if (node.rotates) out[node.coordinate[2]] = w.alpha;
+        if (node.rotates) {
+          // S = 1 about the centre's point: f = (n, Fx, Fy) from tau = (Fx, Fy, n).
+          w.a = roots[k].full.solve(Vec3(w.u[2], w.u[0], w.u[1]) - w.pA);
+          out[node.coordinate[2]] = w.a[0];
+        } else {
+          const Eigen::Vector2d qdd =
+              roots[k].translation_inverse * Eigen::Vector2d(w.u[0] - w.pA[1], w.u[1] - w.pA[2]);
+          w.a = {0, qdd.x(), qdd.y()};
+        }
+        out[node.coordinate[0]] = w.a[1] - a_in[1];
+        out[node.coordinate[1]] = w.a[2] - a_in[2];
         break;
-      case NodeKind::revolute:
-        w.alpha = parent_alpha + w.q_ddot[0];
-        out[node.coordinate[0]] = w.alpha;
+      case NodeKind::revolute: {
+        // q''_relative = D^-1 (u - U^T a_in), its parts without the parent's a in h.
+        const double relative = w.h - (w.W[0] * ap[0] + w.W[1] * ap[1] + w.W[2] * ap[2]);
+        w.a = {ap[0] + relative, a_in[1], a_in[2]};
+        out[node.coordinate[0]] = w.a[0];  // the absolute angle's
         break;
-      case NodeKind::prismatic:
-        w.alpha = parent_alpha;
-        out[node.coordinate[0]] = w.q_ddot[0];
+      }
+      case NodeKind::prismatic: {
+        const double qdd = w.Dinv * (w.u[0] - w.U.dot(a_in));
+        w.a = a_in + w.s * qdd;
+        out[node.coordinate[0]] = qdd;
         break;
+      }
     }
+    previous = w.a;
   }
 }
 
@@ -465,43 +537,19 @@ bool TreeDynamics::accelerations(double t, const Eigen::VectorXd& y, Eigen::Vect
   const auto n = static_cast<Eigen::Index>(m.coordinates);
   q_ddot.resize(n);
   m.kinematics(y);
-  // The loads at every body's maximal coordinates and rates.
   const std::size_t bodies = m.work.size(), first = m.parameters.size();
-  for (std::size_t k = 0; k < bodies && !m.loads_constant; ++k) {
-    const Work& w = m.work[k];
-    const auto b = static_cast<std::size_t>(m.nodes[k].body);
-    m.load_inputs[first + 3 * b] = w.centre.x();
-    m.load_inputs[first + 3 * b + 1] = w.centre.y();
-    m.load_inputs[first + 3 * b + 2] = w.angle;
-    // The centre's velocity from the spatial velocity about the origin.
-    const Vec2 r = w.centre - m.origin;
-    m.load_inputs[first + 3 * bodies + 3 * b] = w.v[1] - w.v[0] * r.y();
-    m.load_inputs[first + 3 * bodies + 3 * b + 1] = w.v[2] + w.v[0] * r.x();
-    m.load_inputs[first + 3 * bodies + 3 * b + 2] = w.omega;
-  }
   if (!m.loads_constant) {
     m.load_inputs[first + 6 * bodies] = t;
     m.loads.run(m.load_inputs.data(), m.load_outputs.data(), m.scratch.data());
   }
-  // Each body's spatial inertia, velocity-product force and load about the origin, once:
-  // the loop-closure passes reuse the inertias.
+  // The loads as spatial forces about each body's point: p^A = v x* I v - f.
   for (std::size_t k = 0; k < bodies; ++k) {
-    const Node& node = m.nodes[k];
     Work& w = m.work[k];
-    const Vec2 r = w.centre - m.origin;
-    w.I0 = spatial_inertia(node.mass, node.inertia, r);
-    // v x* (I v) written through the centre's velocity v_c: the body's momentum changes
-    // at m (omega x v_c), its moment about the origin at r x that, so a body about its
-    // own centre (r = 0) gets exactly no moment, as Case 2's rows give it.
-    const double omega = w.v[0];
-    const Vec2 vc(w.v[1] - omega * r.y(), w.v[2] + omega * r.x());
-    const Vec2 turn(-omega * vc.y(), omega * vc.x());
-    w.bias = Vec3(node.mass * (r.x() * turn.y() - r.y() * turn.x()), node.mass * turn.x(), node.mass * turn.y());
-    const double* f = &m.load_outputs[3 * static_cast<std::size_t>(node.body)];
-    w.load = Vec3(f[2] + r.x() * f[1] - r.y() * f[0], f[0], f[1]);
+    const Vec2 r = w.centre - w.point;
+    const double* f = &m.load_outputs[3 * static_cast<std::size_t>(m.nodes[k].body)];
+    w.pA -= Vec3(f[2] + r.x() * f[1] - r.y() * f[0], f[0], f[1]);
   }
-  m.tau.setZero();
-  m.recursion(true, m.tau, q_ddot);
+  m.articulate(q_ddot);
   if (m.loop_rows == 0) return true;
 
   for (Eigen::Index i = 0; i < 2 * n; ++i) m.loop_inputs[first + static_cast<std::size_t>(i)] = y[i];
@@ -510,18 +558,19 @@ bool TreeDynamics::accelerations(double t, const Eigen::VectorXd& y, Eigen::Vect
   std::size_t k = 0;
   for (Eigen::Index r = 0; r < m.loop_rows; ++r)
     for (Eigen::Index c = 0; c < n; ++c) m.J(r, c) = m.loop_outputs[k++];
-  Eigen::VectorXd phi0(m.loop_rows);
-  for (Eigen::Index r = 0; r < m.loop_rows; ++r) phi0[r] = m.loop_outputs[k++];
+  for (Eigen::Index r = 0; r < m.loop_rows; ++r) m.phi0[r] = m.loop_outputs[k++];
   for (Eigen::Index r = 0; r < m.loop_rows; ++r) {
     m.tau = m.J.row(r).transpose();
-    m.recursion(false, m.tau, m.column);
+    m.unloaded(m.tau, m.column);
     m.MinvJt.col(r) = m.column;
   }
-  const Eigen::MatrixXd schur = m.J * m.MinvJt;
-  const Eigen::LDLT<Eigen::MatrixXd> factor(schur);
-  if (factor.info() != Eigen::Success || !(factor.rcond() > 1e3 * std::numeric_limits<double>::epsilon())) return false;
-  const Eigen::VectorXd lambda = factor.solve(-phi0 - m.J * q_ddot);
-  q_ddot += m.MinvJt * lambda;
+  m.schur.noalias() = m.J * m.MinvJt;
+  m.factor.compute(m.schur);
+  if (m.factor.info() != Eigen::Success || !(m.factor.rcond() > 1e3 * std::numeric_limits<double>::epsilon()))
+    return false;
+  m.phi0 += m.J * q_ddot;
+  m.lambda = m.factor.solve(-m.phi0);
+  q_ddot.noalias() += m.MinvJt * m.lambda;
   return q_ddot.allFinite();
 }
 
