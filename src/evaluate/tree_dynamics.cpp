@@ -18,6 +18,21 @@ using Vec2 = Eigen::Vector2d;
 using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
 
+/// Plain vectors for the recursion: GCC builds small Eigen vectors through the stack, and
+/// a vector load of two scalars just stored there stalls (store forwarding fails).
+struct P2 {
+  double x = 0, y = 0;
+};
+/// A planar spatial vector: motion (omega, vx, vy) or force (n, Fx, Fy).
+struct S3 {
+  double n = 0, x = 0, y = 0;
+};
+
+P2 plain(const Vec2& v) { return {v.x(), v.y()}; }
+
+/// R(angle) v, with cos and sin of the angle given.
+P2 rotate(double c, double s, const P2& v) { return {c * v.x - s * v.y, s * v.x + c * v.y}; }
+
 enum class NodeKind { floating, revolute, prismatic };  // model/joint_types.hpp: JointMotion
 
 /// One body of the tree, in the order the tree reached it (parents first).
@@ -26,13 +41,12 @@ struct Node {
   int parent = -1;  // node index, -1 for the ground or none
   NodeKind kind = NodeKind::floating;
   bool rotates = true;
-  int dof = 0;
   std::array<int, 3> coordinate{-1, -1, -1};  // generalized indices of the dof
   double mass = 0, inertia = 0;
-  Vec2 parent_point = Vec2::Zero();  // in the parent's frame (the world for the ground)
-  Vec2 child_point = Vec2::Zero();   // in the body's frame
-  Vec2 axis = Vec2::Zero();          // slider: unit, parent's frame (the world for the ground)
-  double sign = 1;                   // slider: +1 when the body is bodies[1] of its joint
+  P2 parent_point;  // in the parent's frame (the world for the ground)
+  P2 child_point;   // in the body's frame
+  P2 axis;          // slider: unit, parent's frame (the world for the ground)
+  double sign = 1;  // slider: +1 when the body is bodies[1] of its joint
 };
 
 /// A symmetric 3 x 3 matrix by its upper triangle.
@@ -40,18 +54,17 @@ struct Sym3 {
   double a00 = 0, a01 = 0, a02 = 0, a11 = 0, a12 = 0, a22 = 0;
 };
 
-/// Per node, the numbers of one evaluation, about the node's own point O (see the header).
+/// Per node, the numbers of one evaluation, spatial ones about the node's own point O.
 struct Work {
-  Vec2 centre = Vec2::Zero(), point = Vec2::Zero();  // the centre of mass and O, world
-  Vec2 t = Vec2::Zero();  // (-d_y, d_x), d = O - O_parent: motion to O is (w, v + w t), force to O_parent (n + t.F, F)
+  P2 centre, point;  // the centre of mass and O, world
+  P2 t;              // (-d_y, d_x), d = O - O_parent: motion to O is (w, v + w t), force to O_parent (n + t.F, F)
   double angle = 0, cos_angle = 1, sin_angle = 0;  // each angle's cosine and sine once
-  Vec3 s = Vec3::Zero();                           // one-dof joints' motion subspace
-  Vec3 v = Vec3::Zero(), c = Vec3::Zero(), a = Vec3::Zero();
+  S3 s;                                            // one-dof joints' motion subspace
+  S3 v, c, a;
   Sym3 IA;
-  Vec3 pA = Vec3::Zero(), U = Vec3::Zero(), u = Vec3::Zero();
+  S3 pA, U, u;  // U = I^A s; u: the dof's force less S^T p^A (a floating root's: tau, in x, y, theta)
   double Dinv = 0;
-  // Pins: q''_relative = h - W . a_parent.
-  Vec3 W = Vec3::Zero();
+  S3 W;  // pins: q''_relative = h - W . a_parent
   double h = 0;
 };
 
@@ -61,13 +74,10 @@ struct RootFactor {
   Eigen::Matrix2d translation_inverse = Eigen::Matrix2d::Zero();
 };
 
-/// R(angle) v, with cos and sin of the angle given.
-Vec2 rotate(double c, double s, const Vec2& v) { return {c * v.x() - s * v.y(), s * v.x() + c * v.y()}; }
-
 /// X^T Ia X into `parent`: Ia = [A b^T; b K] about O moved to O_parent, X = [1 0; t 1].
-void add_shifted(Sym3& parent, const Sym3& ia, const Vec2& t) {
-  const double kt0 = ia.a11 * t[0] + ia.a12 * t[1], kt1 = ia.a12 * t[0] + ia.a22 * t[1];
-  parent.a00 += ia.a00 + 2 * (ia.a01 * t[0] + ia.a02 * t[1]) + t[0] * kt0 + t[1] * kt1;
+void add_shifted(Sym3& parent, const Sym3& ia, const P2& t) {
+  const double kt0 = ia.a11 * t.x + ia.a12 * t.y, kt1 = ia.a12 * t.x + ia.a22 * t.y;
+  parent.a00 += ia.a00 + 2 * (ia.a01 * t.x + ia.a02 * t.y) + t.x * kt0 + t.y * kt1;
   parent.a01 += ia.a01 + kt0;
   parent.a02 += ia.a02 + kt1;
   parent.a11 += ia.a11;
@@ -76,15 +86,26 @@ void add_shifted(Sym3& parent, const Sym3& ia, const Vec2& t) {
 }
 
 /// X^T f into `parent`.
-void add_shifted(Vec3& parent, const Vec3& f, const Vec2& t) {
-  parent[0] += f[0] + t[0] * f[1] + t[1] * f[2];
-  parent[1] += f[1];
-  parent[2] += f[2];
+void add_shifted(S3& parent, const S3& f, const P2& t) {
+  parent.n += f.n + t.x * f.x + t.y * f.y;
+  parent.x += f.x;
+  parent.y += f.y;
 }
 
-Vec3 times(const Sym3& m, const Vec3& x) {
-  return {m.a00 * x[0] + m.a01 * x[1] + m.a02 * x[2], m.a01 * x[0] + m.a11 * x[1] + m.a12 * x[2],
-          m.a02 * x[0] + m.a12 * x[1] + m.a22 * x[2]};
+S3 times(const Sym3& m, const S3& v) {
+  return {m.a00 * v.n + m.a01 * v.x + m.a02 * v.y, m.a01 * v.n + m.a11 * v.x + m.a12 * v.y,
+          m.a02 * v.n + m.a12 * v.x + m.a22 * v.y};
+}
+
+double dot(const S3& a, const S3& b) { return a.n * b.n + a.x * b.x + a.y * b.y; }
+
+void add(Sym3& m, const Sym3& d) {
+  m.a00 += d.a00;
+  m.a01 += d.a01;
+  m.a02 += d.a02;
+  m.a11 += d.a11;
+  m.a12 += d.a12;
+  m.a22 += d.a22;
 }
 
 Mat3 full(const Sym3& m) {
@@ -115,6 +136,11 @@ struct TreeDynamics::Impl {
   /// Positions, velocities and each body's inertia and velocity-product force root to
   /// leaves from y = (q, q'), the loads' inputs filled.
   void kinematics(const Eigen::VectorXd& y) const;
+  /// The loads on the node's body as a spatial force about O, r = centre - O.
+  [[nodiscard]] S3 load_about(const Node& node, const P2& r) const {
+    const double* f = &load_outputs[3 * static_cast<std::size_t>(node.body)];
+    return {f[2] + r.x * f[1] - r.y * f[0], f[0], f[1]};
+  }
   /// The loaded pass: articulated inertias and biases leaves to root (kept for the
   /// unloaded passes), accelerations root to leaves.
   void articulate(Eigen::VectorXd& out) const;
@@ -163,8 +189,8 @@ TreeDynamics::TreeDynamics(const sym::System& system) : impl_(std::make_unique<I
       const Joint& joint = mechanism.joints[static_cast<std::size_t>(t.joint)];
       const bool child_is_b = mechanism.body_index(joint.bodies[1]) == b;
       const int parent_body = t.parent;
-      n.parent_point = local(parent_body, joint.points[child_is_b ? 0 : 1]);
-      n.child_point = local(b, joint.points[child_is_b ? 1 : 0]);
+      n.parent_point = plain(local(parent_body, joint.points[child_is_b ? 0 : 1]));
+      n.child_point = plain(local(b, joint.points[child_is_b ? 1 : 0]));
       switch (joint_type_info(joint.type).motion) {
         case JointMotion::revolute:
           n.kind = NodeKind::revolute;
@@ -172,7 +198,7 @@ TreeDynamics::TreeDynamics(const sym::System& system) : impl_(std::make_unique<I
         case JointMotion::prismatic: {
           const sym::Vec2 axis = sym::joint_axis(system, joint);
           n.kind = NodeKind::prismatic;
-          n.axis = Vec2(number(axis.x), number(axis.y)).normalized();
+          n.axis = plain(Vec2(number(axis.x), number(axis.y)).normalized());
           n.sign = child_is_b ? 1.0 : -1.0;
           break;
         }
@@ -189,7 +215,6 @@ TreeDynamics::TreeDynamics(const sym::System& system) : impl_(std::make_unique<I
                      : n.kind == NodeKind::floating ? 2
                                                     : 0;
     n.coordinate[static_cast<std::size_t>(slot)] = static_cast<int>(i);
-    n.dof = std::max(n.dof, slot + 1);
   }
   m.coordinates = system.coordinates().size();
 
@@ -292,90 +317,106 @@ void TreeDynamics::Impl::kinematics(const Eigen::VectorXd& y) const {
   const double* q = y.data();
   const double* q_dot = q + n;
   const std::size_t bodies = nodes.size(), first = parameters.size();
+  // Each angle's cosine and sine first, in a loop of their own: the calls clobber every
+  // register, and the recursion below then runs without them.
   for (std::size_t k = 0; k < bodies; ++k) {
     const Node& node = nodes[k];
     Work& w = work[k];
-    const Work* p = node.parent >= 0 ? &work[static_cast<std::size_t>(node.parent)] : nullptr;
+    switch (node.kind) {
+      case NodeKind::floating:
+        w.angle = node.rotates ? q[node.coordinate[2]] : 0.0;
+        break;
+      case NodeKind::revolute:
+        w.angle = q[node.coordinate[0]];
+        break;
+      case NodeKind::prismatic:
+        continue;  // its parent's, set below
+    }
+    w.cos_angle = std::cos(w.angle);
+    w.sin_angle = std::sin(w.angle);
+  }
+  for (std::size_t k = 0; k < bodies; ++k) {
+    const Node& node = nodes[k];
+    Work& w = work[k];
+    const bool has_parent = node.parent >= 0;
+    const Work* p = has_parent ? &work[static_cast<std::size_t>(node.parent)] : nullptr;
+    const double pc = p != nullptr ? p->cos_angle : 1.0, ps = p != nullptr ? p->sin_angle : 0.0;
+    const S3 pv = p != nullptr ? p->v : S3{};
+    const P2 pp = p != nullptr ? p->point : P2{};
     // The joint's point on the parent, world.
-    const Vec2 joint =
-        p != nullptr ? Vec2(p->centre + rotate(p->cos_angle, p->sin_angle, node.parent_point)) : node.parent_point;
+    P2 joint = node.parent_point;
+    if (p != nullptr) {
+      const P2 r = rotate(pc, ps, node.parent_point);
+      joint = {p->centre.x + r.x, p->centre.y + r.y};
+    }
+    P2 point, centre, t;
+    S3 v, c;
     switch (node.kind) {
       case NodeKind::floating: {
-        w.centre = {q[node.coordinate[0]], q[node.coordinate[1]]};
-        w.point = w.centre;
-        w.angle = node.rotates ? q[node.coordinate[2]] : 0.0;
-        w.cos_angle = std::cos(w.angle);
-        w.sin_angle = std::sin(w.angle);
+        centre = {q[node.coordinate[0]], q[node.coordinate[1]]};
+        point = centre;
         const double omega = node.rotates ? q_dot[node.coordinate[2]] : 0.0;
         const double vx = q_dot[node.coordinate[0]], vy = q_dot[node.coordinate[1]];
-        w.t.setZero();
-        w.v = {omega, vx, vy};
+        v = {omega, vx, vy};
         // About the point where the centre is now: S' q' = (0, w y', -w x').
-        w.c = {0, omega * vy, -omega * vx};
+        c = {0, omega * vy, -omega * vx};
         break;
       }
       case NodeKind::revolute: {
-        w.angle = q[node.coordinate[0]];
-        w.cos_angle = std::cos(w.angle);
-        w.sin_angle = std::sin(w.angle);
-        w.point = joint;
-        w.centre = joint - rotate(w.cos_angle, w.sin_angle, node.child_point);
+        const P2 r = rotate(w.cos_angle, w.sin_angle, node.child_point);
+        point = joint;
+        centre = {joint.x - r.x, joint.y - r.y};
         const double omega = q_dot[node.coordinate[0]];
-        if (p != nullptr) {
-          const Vec2 d = joint - p->point;
-          w.t = {-d.y(), d.x()};
-          // The joint's velocity, and S' q' = v_p x (1, 0, 0) q'_relative.
-          const Vec2 vj(p->v[1] + p->v[0] * w.t[0], p->v[2] + p->v[0] * w.t[1]);
-          const double relative = omega - p->v[0];
-          w.v = {omega, vj.x(), vj.y()};
-          w.c = {0, relative * vj.y(), -relative * vj.x()};
-        } else {
-          w.t.setZero();
-          w.v = {omega, 0, 0};
-          w.c.setZero();
-        }
+        // The joint's velocity, and S' q' = v_p x (1, 0, 0) q'_relative.
+        t = {pp.y - joint.y, joint.x - pp.x};
+        const double vx = pv.x + pv.n * t.x, vy = pv.y + pv.n * t.y, relative = omega - pv.n;
+        v = {omega, vx, vy};
+        c = {0, relative * vy, -relative * vx};
         w.s = {1, 0, 0};
         break;
       }
       case NodeKind::prismatic: {
-        const double pc = p != nullptr ? p->cos_angle : 1.0, ps = p != nullptr ? p->sin_angle : 0.0;
-        const Vec2 u = rotate(pc, ps, node.axis);
+        const P2 u = rotate(pc, ps, node.axis), r = rotate(pc, ps, node.child_point);
         w.angle = p != nullptr ? p->angle : 0.0;
         w.cos_angle = pc;
         w.sin_angle = ps;
-        w.point = joint + node.sign * q[node.coordinate[0]] * u;
-        w.centre = w.point - rotate(pc, ps, node.child_point);
-        w.s = {0, node.sign * u.x(), node.sign * u.y()};
-        const double rate = q_dot[node.coordinate[0]];
-        if (p != nullptr) {
-          const Vec2 d = w.point - p->point;
-          w.t = {-d.y(), d.x()};
-          const double omega = p->v[0];
-          w.v = {omega, p->v[1] + omega * w.t[0] + w.s[1] * rate, p->v[2] + omega * w.t[1] + w.s[2] * rate};
-          w.c = {0, -omega * w.s[2] * rate, omega * w.s[1] * rate};
-        } else {
-          w.t.setZero();
-          w.v = w.s * rate;
-          w.c.setZero();
-        }
+        const double along = node.sign * q[node.coordinate[0]], rate = q_dot[node.coordinate[0]];
+        point = {joint.x + along * u.x, joint.y + along * u.y};
+        centre = {point.x - r.x, point.y - r.y};
+        const S3 s{0, node.sign * u.x, node.sign * u.y};
+        w.s = s;
+        t = {pp.y - point.y, point.x - pp.x};
+        v = {pv.n, pv.x + pv.n * t.x + s.x * rate, pv.y + pv.n * t.y + s.y * rate};
+        c = {0, -pv.n * s.y * rate, pv.n * s.x * rate};
         break;
       }
     }
+    if (p == nullptr) t = {};  // the ground does not move: nothing to pass on
     // The body's inertia about O, and v x* (I v) written through the centre's velocity
     // v_c: the momentum changes at m (omega x v_c), its moment about O at r x that.
-    const Vec2 r = w.centre - w.point;
-    const double m = node.mass, omega = w.v[0];
-    w.IA = {node.inertia + m * r.squaredNorm(), -m * r.y(), m * r.x(), m, 0, m};
-    const Vec2 vc(w.v[1] - omega * r.y(), w.v[2] + omega * r.x());
-    const Vec2 turn(-m * omega * vc.y(), m * omega * vc.x());
-    w.pA = {r.x() * turn.y() - r.y() * turn.x(), turn.x(), turn.y()};
+    const P2 r{centre.x - point.x, centre.y - point.y};
+    const double m = node.mass, omega = v.n;
+    const P2 vc{v.x - omega * r.y, v.y + omega * r.x};
+    const P2 turn{-m * omega * vc.y, m * omega * vc.x};
+    S3 pA{r.x * turn.y - r.y * turn.x, turn.x, turn.y};
+    if (loads_constant) {
+      const S3 f = load_about(node, r);
+      pA = {pA.n - f.n, pA.x - f.x, pA.y - f.y};
+    }
+    w.centre = centre;
+    w.point = point;
+    w.t = t;
+    w.v = v;
+    w.c = c;
+    w.IA = {node.inertia + m * (r.x * r.x + r.y * r.y), -m * r.y, m * r.x, m, 0, m};
+    w.pA = pA;
     if (loads_constant) continue;
     const auto b = static_cast<std::size_t>(node.body);
-    load_inputs[first + 3 * b] = w.centre.x();
-    load_inputs[first + 3 * b + 1] = w.centre.y();
+    load_inputs[first + 3 * b] = centre.x;
+    load_inputs[first + 3 * b + 1] = centre.y;
     load_inputs[first + 3 * b + 2] = w.angle;
-    load_inputs[first + 3 * bodies + 3 * b] = vc.x();
-    load_inputs[first + 3 * bodies + 3 * b + 1] = vc.y();
+    load_inputs[first + 3 * bodies + 3 * b] = vc.x;
+    load_inputs[first + 3 * bodies + 3 * b + 1] = vc.y;
     load_inputs[first + 3 * bodies + 3 * b + 2] = omega;
   }
 }
@@ -384,77 +425,77 @@ void TreeDynamics::Impl::articulate(Eigen::VectorXd& out) const {
   // In a chain a node's parent is the node before it, the next one done: what it gets is
   // carried in registers, not through memory (each step waits on the one before).
   Sym3 carry_IA;
-  Vec3 carry_pA = Vec3::Zero();
-  bool carried = false;
+  S3 carry_pA;
   for (std::size_t k = nodes.size(); k-- > 0;) {
     const Node& node = nodes[k];
     Work& w = work[k];
-    if (carried) {
-      w.IA.a00 += carry_IA.a00;
-      w.IA.a01 += carry_IA.a01;
-      w.IA.a02 += carry_IA.a02;
-      w.IA.a11 += carry_IA.a11;
-      w.IA.a12 += carry_IA.a12;
-      w.IA.a22 += carry_IA.a22;
-      w.pA += carry_pA;
-    }
+    Sym3 A = w.IA;
+    S3 pA = w.pA;
+    add(A, carry_IA);
+    pA = {pA.n + carry_pA.n, pA.x + carry_pA.x, pA.y + carry_pA.y};
+    const P2 t = w.t;
+    const S3 c = w.c;
     const bool to_next = node.parent >= 0 && static_cast<std::size_t>(node.parent) + 1 == k;
-    Work* p = node.parent >= 0 && !to_next ? &work[static_cast<std::size_t>(node.parent)] : nullptr;
-    Sym3& P = to_next ? carry_IA : p != nullptr ? p->IA : carry_IA;
-    Vec3& pP = to_next ? carry_pA : p != nullptr ? p->pA : carry_pA;
-    if (to_next) {
-      carry_IA = Sym3{};
-      carry_pA.setZero();
-    }
-    carried = to_next;
-    const bool has_parent = node.parent >= 0;
-    const Sym3& A = w.IA;
+    Sym3 to_IA;  // what the parent gets
+    S3 to_pA;
     switch (node.kind) {
       case NodeKind::revolute: {
         // S = (1, 0, 0) about the joint: U is I^A's first column (a00, b), D = a00, and
         // I^A - U D^-1 U^T keeps K = A22 - b b^T / a00 alone. Each product that needs
         // no D^-1 is formed while the division runs.
-        w.Dinv = 1 / A.a00;
+        const double Dinv = 1 / A.a00, u = -pA.n;
+        const double bt = A.a01 * t.x + A.a02 * t.y, bc = A.a01 * c.x + A.a02 * c.y;
+        const double h = Dinv * (u - bc);
+        w.Dinv = Dinv;
         w.U = {A.a00, A.a01, A.a02};
-        w.u[0] = -w.pA[0];
-        const double bt = A.a01 * w.t[0] + A.a02 * w.t[1], bc = A.a01 * w.c[1] + A.a02 * w.c[2];
-        w.h = w.Dinv * (w.u[0] - bc);
-        w.W = {1 + bt * w.Dinv, A.a01 * w.Dinv, A.a02 * w.Dinv};
-        if (!has_parent) break;
-        const double at0 = A.a11 * w.t[0] + A.a12 * w.t[1], at1 = A.a12 * w.t[0] + A.a22 * w.t[1];
-        const double ac0 = A.a11 * w.c[1] + A.a12 * w.c[2], ac1 = A.a12 * w.c[1] + A.a22 * w.c[2];
-        const double f1 = w.pA[1] + ac0 + A.a01 * w.h, f2 = w.pA[2] + ac1 + A.a02 * w.h;
-        P.a00 += (w.t[0] * at0 + w.t[1] * at1) - bt * bt * w.Dinv;
-        P.a01 += at0 - A.a01 * bt * w.Dinv;
-        P.a02 += at1 - A.a02 * bt * w.Dinv;
-        P.a11 += A.a11 - A.a01 * A.a01 * w.Dinv;
-        P.a12 += A.a12 - A.a01 * A.a02 * w.Dinv;
-        P.a22 += A.a22 - A.a02 * A.a02 * w.Dinv;
-        pP[0] += w.t[0] * f1 + w.t[1] * f2;
-        pP[1] += f1;
-        pP[2] += f2;
+        w.u.n = u;
+        w.h = h;
+        w.W = {1 + bt * Dinv, A.a01 * Dinv, A.a02 * Dinv};
+        const double at0 = A.a11 * t.x + A.a12 * t.y, at1 = A.a12 * t.x + A.a22 * t.y;
+        const double ac0 = A.a11 * c.x + A.a12 * c.y, ac1 = A.a12 * c.x + A.a22 * c.y;
+        const double f1 = pA.x + ac0 + A.a01 * h, f2 = pA.y + ac1 + A.a02 * h;
+        to_IA = {(t.x * at0 + t.y * at1) - bt * bt * Dinv,
+                 at0 - A.a01 * bt * Dinv,
+                 at1 - A.a02 * bt * Dinv,
+                 A.a11 - A.a01 * A.a01 * Dinv,
+                 A.a12 - A.a01 * A.a02 * Dinv,
+                 A.a22 - A.a02 * A.a02 * Dinv};
+        to_pA = {t.x * f1 + t.y * f2, f1, f2};
         break;
       }
       case NodeKind::prismatic: {
-        w.U = times(A, w.s);
-        w.Dinv = 1 / w.s.dot(w.U);
-        w.u[0] = -w.s.dot(w.pA);
-        if (!has_parent) break;
-        const Vec3 g = w.U * w.Dinv;
-        const Sym3 Ia{A.a00 - g[0] * w.U[0], A.a01 - g[0] * w.U[1], A.a02 - g[0] * w.U[2],
-                      A.a11 - g[1] * w.U[1], A.a12 - g[1] * w.U[2], A.a22 - g[2] * w.U[2]};
-        add_shifted(P, Ia, w.t);
-        add_shifted(pP, Vec3(w.pA + times(Ia, w.c) + g * w.u[0]), w.t);
+        const S3 s = w.s, U = times(A, s);
+        const double Dinv = 1 / dot(s, U), u = -dot(s, pA);
+        w.U = U;
+        w.Dinv = Dinv;
+        w.u.n = u;
+        const S3 g{U.n * Dinv, U.x * Dinv, U.y * Dinv};
+        const Sym3 Ia{A.a00 - g.n * U.n, A.a01 - g.n * U.x, A.a02 - g.n * U.y,
+                      A.a11 - g.x * U.x, A.a12 - g.x * U.y, A.a22 - g.y * U.y};
+        const S3 Iac = times(Ia, c);
+        add_shifted(to_IA, Ia, t);
+        add_shifted(to_pA, S3{pA.n + Iac.n + g.n * u, pA.x + Iac.x + g.x * u, pA.y + Iac.y + g.y * u}, t);
         break;
       }
       case NodeKind::floating:
         // A root: its I^A a + p^A = S^-T tau solved in accelerate().
-        w.u.setZero();
+        w.u = {};
+        w.pA = pA;
         if (node.rotates)
           roots[k].full.compute(full(A));
         else
           roots[k].translation_inverse = (Eigen::Matrix2d() << A.a11, A.a12, A.a12, A.a22).finished().inverse();
         break;
+    }
+    carry_IA = {};
+    carry_pA = {};
+    if (to_next) {
+      carry_IA = to_IA;
+      carry_pA = to_pA;
+    } else if (node.parent >= 0) {
+      Work& p = work[static_cast<std::size_t>(node.parent)];
+      add(p.IA, to_IA);
+      add_shifted(p.pA, to_pA, P2{});
     }
   }
   accelerate(true, out);
@@ -464,11 +505,10 @@ void TreeDynamics::Impl::unloaded(const Eigen::VectorXd& tau_absolute, Eigen::Ve
   // Generalized forces on the relative coordinates: an absolute angle's force reaches
   // every coordinate it depends on, so a pin's relative angle collects its subtree's.
   std::fill(angle_force.begin(), angle_force.end(), 0.0);
-  for (Work& w : work) w.pA.setZero();
+  for (Work& w : work) w.pA = {};
   for (std::size_t k = nodes.size(); k-- > 0;) {
     const Node& node = nodes[k];
     Work& w = work[k];
-    Work* p = node.parent >= 0 ? &work[static_cast<std::size_t>(node.parent)] : nullptr;
     switch (node.kind) {
       case NodeKind::floating:
         if (node.rotates) angle_force[k] += tau_absolute[node.coordinate[2]];
@@ -476,59 +516,62 @@ void TreeDynamics::Impl::unloaded(const Eigen::VectorXd& tau_absolute, Eigen::Ve
         continue;  // a root
       case NodeKind::revolute:
         angle_force[k] += tau_absolute[node.coordinate[0]];
-        w.u[0] = angle_force[k] - w.pA[0];
-        w.h = w.Dinv * w.u[0];
+        w.u.n = angle_force[k] - w.pA.n;
+        w.h = w.Dinv * w.u.n;
         break;
       case NodeKind::prismatic:
-        w.u[0] = tau_absolute[node.coordinate[0]] - w.s.dot(w.pA);
+        w.u.n = tau_absolute[node.coordinate[0]] - dot(w.s, w.pA);
         break;
     }
-    if (p == nullptr) continue;
+    if (node.parent < 0) continue;
     angle_force[static_cast<std::size_t>(node.parent)] += angle_force[k];
-    add_shifted(p->pA, Vec3(w.pA + w.U * (w.Dinv * w.u[0])), w.t);
+    const double g = w.Dinv * w.u.n;
+    add_shifted(work[static_cast<std::size_t>(node.parent)].pA,
+                S3{w.pA.n + w.U.n * g, w.pA.x + w.U.x * g, w.pA.y + w.U.y * g}, w.t);
   }
   accelerate(false, out);
 }
 
 void TreeDynamics::Impl::accelerate(bool loaded, Eigen::VectorXd& out) const {
-  Vec3 previous = Vec3::Zero();  // the acceleration of node k - 1, in registers
+  S3 previous;  // the acceleration of node k - 1, in registers
   for (std::size_t k = 0; k < nodes.size(); ++k) {
     const Node& node = nodes[k];
     Work& w = work[k];
-    Vec3 ap = Vec3::Zero();
+    S3 ap;
     if (node.parent >= 0)
       ap = static_cast<std::size_t>(node.parent) + 1 == k ? previous : work[static_cast<std::size_t>(node.parent)].a;
-    const Vec3 c = loaded ? w.c : Vec3::Zero();
-    const Vec3 a_in(ap[0], ap[1] + ap[0] * w.t[0] + c[1], ap[2] + ap[0] * w.t[1] + c[2]);
+    const S3 c = loaded ? w.c : S3{};
+    const P2 t = w.t;
+    const S3 a_in{ap.n, ap.x + ap.n * t.x + c.x, ap.y + ap.n * t.y + c.y};
+    S3 a;
     switch (node.kind) {
       case NodeKind::floating:
         if (node.rotates) {
           // S = 1 about the centre's point: f = (n, Fx, Fy) from tau = (Fx, Fy, n).
-          w.a = roots[k].full.solve(Vec3(w.u[2], w.u[0], w.u[1]) - w.pA);
-          out[node.coordinate[2]] = w.a[0];
+          const Vec3 solved = roots[k].full.solve(Vec3(w.u.y - w.pA.n, w.u.n - w.pA.x, w.u.x - w.pA.y));
+          a = {solved[0], solved[1], solved[2]};
+          out[node.coordinate[2]] = a.n;
         } else {
-          const Eigen::Vector2d qdd =
-              roots[k].translation_inverse * Eigen::Vector2d(w.u[0] - w.pA[1], w.u[1] - w.pA[2]);
-          w.a = {0, qdd.x(), qdd.y()};
+          const Eigen::Vector2d qdd = roots[k].translation_inverse * Eigen::Vector2d(w.u.n - w.pA.x, w.u.x - w.pA.y);
+          a = {0, qdd.x(), qdd.y()};
         }
-        out[node.coordinate[0]] = w.a[1] - a_in[1];
-        out[node.coordinate[1]] = w.a[2] - a_in[2];
+        out[node.coordinate[0]] = a.x - a_in.x;
+        out[node.coordinate[1]] = a.y - a_in.y;
         break;
-      case NodeKind::revolute: {
+      case NodeKind::revolute:
         // q''_relative = D^-1 (u - U^T a_in), its parts without the parent's a in h.
-        const double relative = w.h - (w.W[0] * ap[0] + w.W[1] * ap[1] + w.W[2] * ap[2]);
-        w.a = {ap[0] + relative, a_in[1], a_in[2]};
-        out[node.coordinate[0]] = w.a[0];  // the absolute angle's
+        a = {ap.n + (w.h - (w.W.n * ap.n + w.W.x * ap.x + w.W.y * ap.y)), a_in.x, a_in.y};
+        out[node.coordinate[0]] = a.n;  // the absolute angle's
         break;
-      }
       case NodeKind::prismatic: {
-        const double qdd = w.Dinv * (w.u[0] - w.U.dot(a_in));
-        w.a = a_in + w.s * qdd;
+        const double qdd = w.Dinv * (w.u.n - dot(w.U, a_in));
+        a = {a_in.n + w.s.n * qdd, a_in.x + w.s.x * qdd, a_in.y + w.s.y * qdd};
         out[node.coordinate[0]] = qdd;
         break;
       }
     }
-    previous = w.a;
+    w.a = a;
+    previous = a;
   }
 }
 
@@ -542,13 +585,12 @@ bool TreeDynamics::accelerations(double t, const Eigen::VectorXd& y, Eigen::Vect
     m.load_inputs[first + 6 * bodies] = t;
     m.loads.run(m.load_inputs.data(), m.load_outputs.data(), m.scratch.data());
   }
-  // The loads as spatial forces about each body's point: p^A = v x* I v - f.
-  for (std::size_t k = 0; k < bodies; ++k) {
-    Work& w = m.work[k];
-    const Vec2 r = w.centre - w.point;
-    const double* f = &m.load_outputs[3 * static_cast<std::size_t>(m.nodes[k].body)];
-    w.pA -= Vec3(f[2] + r.x() * f[1] - r.y() * f[0], f[0], f[1]);
-  }
+  if (!m.loads_constant)  // p^A = v x* I v - f
+    for (std::size_t k = 0; k < bodies; ++k) {
+      Work& w = m.work[k];
+      const S3 f = m.load_about(m.nodes[k], P2{w.centre.x - w.point.x, w.centre.y - w.point.y});
+      w.pA = {w.pA.n - f.n, w.pA.x - f.x, w.pA.y - f.y};
+    }
   m.articulate(q_ddot);
   if (m.loop_rows == 0) return true;
 
