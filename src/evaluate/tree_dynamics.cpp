@@ -335,19 +335,31 @@ void TreeDynamics::Impl::kinematics(const Eigen::VectorXd& y) const {
     w.cos_angle = std::cos(w.angle);
     w.sin_angle = std::sin(w.angle);
   }
+  // A chain's parent is the node before: taken from the registers, not read back.
+  struct Parent {
+    P2 centre, point;
+    S3 v;
+    double angle = 0, cos_angle = 1, sin_angle = 0;
+  } previous;
   for (std::size_t k = 0; k < bodies; ++k) {
     const Node& node = nodes[k];
     Work& w = work[k];
     const bool has_parent = node.parent >= 0;
-    const Work* p = has_parent ? &work[static_cast<std::size_t>(node.parent)] : nullptr;
-    const double pc = p != nullptr ? p->cos_angle : 1.0, ps = p != nullptr ? p->sin_angle : 0.0;
-    const S3 pv = p != nullptr ? p->v : S3{};
-    const P2 pp = p != nullptr ? p->point : P2{};
+    Parent parent;
+    if (has_parent && static_cast<std::size_t>(node.parent) + 1 == k) {
+      parent = previous;
+    } else if (has_parent) {
+      const Work& p = work[static_cast<std::size_t>(node.parent)];
+      parent = {p.centre, p.point, p.v, p.angle, p.cos_angle, p.sin_angle};
+    }
+    const double pc = parent.cos_angle, ps = parent.sin_angle;
+    const S3 pv = parent.v;
+    const P2 pp = parent.point;
     // The joint's point on the parent, world.
     P2 joint = node.parent_point;
-    if (p != nullptr) {
+    if (has_parent) {
       const P2 r = rotate(pc, ps, node.parent_point);
-      joint = {p->centre.x + r.x, p->centre.y + r.y};
+      joint = {parent.centre.x + r.x, parent.centre.y + r.y};
     }
     P2 point, centre, t;
     S3 v, c;
@@ -377,7 +389,7 @@ void TreeDynamics::Impl::kinematics(const Eigen::VectorXd& y) const {
       }
       case NodeKind::prismatic: {
         const P2 u = rotate(pc, ps, node.axis), r = rotate(pc, ps, node.child_point);
-        w.angle = p != nullptr ? p->angle : 0.0;
+        w.angle = parent.angle;
         w.cos_angle = pc;
         w.sin_angle = ps;
         const double along = node.sign * q[node.coordinate[0]], rate = q_dot[node.coordinate[0]];
@@ -391,7 +403,7 @@ void TreeDynamics::Impl::kinematics(const Eigen::VectorXd& y) const {
         break;
       }
     }
-    if (p == nullptr) t = {};  // the ground does not move: nothing to pass on
+    if (!has_parent) t = {};  // the ground does not move: nothing to pass on
     // The body's inertia about O, and v x* (I v) written through the centre's velocity
     // v_c: the momentum changes at m (omega x v_c), its moment about O at r x that.
     const P2 r{centre.x - point.x, centre.y - point.y};
@@ -410,6 +422,7 @@ void TreeDynamics::Impl::kinematics(const Eigen::VectorXd& y) const {
     w.c = c;
     w.IA = {node.inertia + m * (r.x * r.x + r.y * r.y), -m * r.y, m * r.x, m, 0, m};
     w.pA = pA;
+    previous = {centre, point, v, w.angle, w.cos_angle, w.sin_angle};
     if (loads_constant) continue;
     const auto b = static_cast<std::size_t>(node.body);
     load_inputs[first + 3 * b] = centre.x;
