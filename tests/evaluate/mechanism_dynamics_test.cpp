@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <random>
 
+#include "model/mechanism_toml.hpp"
+#include "support/long_chain.hpp"
 #include "support/mechanisms_in_code.hpp"
 #include "symbolic/loop_closure.hpp"
 
@@ -85,6 +87,18 @@ TEST(MechanismDynamics, RecursionEqualsTheCompiledRowsOnBranchedTrees) {
   std::mt19937 rng(31);
   for (const built::Named& named : {built::Named{"branched", branched}, built::Named{"floating", floating_branched}})
     expect_recursion_equals_rows(named, rng);
+}
+
+// A chain of eight rods of different lengths and masses: every step of the recursion takes
+// its parent from the one before.
+TEST(MechanismDynamics, RecursionEqualsTheCompiledRowsOnAChain) {
+  std::vector<test::Rod> rods = test::leaning_rods(8);
+  for (std::size_t i = 0; i < rods.size(); ++i) {
+    rods[i].length = 0.1 + 0.02 * static_cast<double>(i);
+    rods[i].mass = 0.3 - 0.025 * static_cast<double>(i);
+  }
+  std::mt19937 rng(47);
+  expect_recursion_equals_rows({"chain", [&] { return read_mechanism(test::chain_toml(rods), "chain.toml"); }}, rng);
 }
 
 // Each case's sample reports the same bodies' motion and joint forces at the same state.
