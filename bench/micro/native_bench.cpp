@@ -20,10 +20,11 @@
 namespace linkage::bench {
 namespace {
 
-void general_rhs_of(benchmark::State& state, const sym::System& system, CaseId id, bool native) {
+void general_rhs_of(benchmark::State& state, const sym::System& system, CaseId id, bool native,
+                    bool derivative_only = false) {
   eval::MechanismDynamics dynamics(system, id);
   if (native) {
-    const eval::NativeAttachment a = dynamics.attach_native();
+    const eval::NativeAttachment a = derivative_only ? dynamics.attach_native_derivative() : dynamics.attach_native();
     if (!a.attached) {
       state.SkipWithError(("no native code: " + a.reason).c_str());
       return;
@@ -54,11 +55,21 @@ void four_bar_rhs(benchmark::State& state, CaseId id, bool native) {
   general_rhs_of(state, system, id, native);
 }
 
-void chain_rhs(benchmark::State& state, int links, bool native) {
+const sym::System& chain(int links) {
   static std::map<int, std::unique_ptr<sym::System>> systems;
   std::unique_ptr<sym::System>& system = systems[links];
   if (!system) system = std::make_unique<sym::System>(read_mechanism(pendulum_chain_toml(links), "chain.toml"));
-  general_rhs_of(state, *system, CaseId::reduced, native);
+  return *system;
+}
+
+void chain_rhs(benchmark::State& state, int links, bool native) {
+  general_rhs_of(state, chain(links), CaseId::reduced, native);
+}
+
+/// The chain's right-hand side as `linkage bench mechanisms` times its compiled row: the
+/// programs derivative() runs native (attach_native_derivative), the recursion's included.
+void chain_rhs_derivative(benchmark::State& state, int links) {
+  general_rhs_of(state, chain(links), CaseId::reduced, true, true);
 }
 
 BENCHMARK_CAPTURE(general_rhs, case1_interpreted, CaseId::maximal, false)->Name("rhs/general_case1_interpreted");
@@ -78,6 +89,9 @@ BENCHMARK_CAPTURE(chain_rhs, chain8_interpreted, 8, false)->Name("rhs/chain8_cas
 BENCHMARK_CAPTURE(chain_rhs, chain8_native, 8, true)->Name("rhs/chain8_case3_native");
 BENCHMARK_CAPTURE(chain_rhs, chain32_interpreted, 32, false)->Name("rhs/chain32_case3_interpreted");
 BENCHMARK_CAPTURE(chain_rhs, chain64_interpreted, 64, false)->Name("rhs/chain64_case3_interpreted");
+BENCHMARK_CAPTURE(chain_rhs_derivative, chain8_compiled, 8)->Name("rhs/chain8_case3_compiled");
+BENCHMARK_CAPTURE(chain_rhs_derivative, chain32_compiled, 32)->Name("rhs/chain32_case3_compiled");
+BENCHMARK_CAPTURE(chain_rhs_derivative, chain64_compiled, 64)->Name("rhs/chain64_case3_compiled");
 
 }  // namespace
 }  // namespace linkage::bench

@@ -18,6 +18,21 @@ using Vec2 = Eigen::Vector2d;
 using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
 
+/// Plain vectors for the recursion: GCC builds small Eigen vectors through the stack, and
+/// a vector load of two scalars just stored there stalls (store forwarding fails).
+struct P2 {
+  double x = 0, y = 0;
+};
+/// A planar spatial vector: motion (omega, vx, vy) or force (n, Fx, Fy).
+struct S3 {
+  double n = 0, x = 0, y = 0;
+};
+
+P2 plain(const Vec2& v) { return {v.x(), v.y()}; }
+
+/// R(angle) v, with cos and sin of the angle given.
+P2 rotate(double c, double s, const P2& v) { return {c * v.x - s * v.y, s * v.x + c * v.y}; }
+
 enum class NodeKind { floating, revolute, prismatic };  // model/joint_types.hpp: JointMotion
 
 /// One body of the tree, in the order the tree reached it (parents first).
@@ -26,70 +41,77 @@ struct Node {
   int parent = -1;  // node index, -1 for the ground or none
   NodeKind kind = NodeKind::floating;
   bool rotates = true;
-  int dof = 0;
   std::array<int, 3> coordinate{-1, -1, -1};  // generalized indices of the dof
   double mass = 0, inertia = 0;
-  Vec2 parent_point = Vec2::Zero();  // in the parent's frame (the world for the ground)
-  Vec2 child_point = Vec2::Zero();   // in the body's frame
-  Vec2 axis = Vec2::Zero();          // slider: unit, parent's frame (the world for the ground)
-  double sign = 1;                   // slider: +1 when the body is bodies[1] of its joint
+  P2 parent_point;  // in the parent's frame (the world for the ground)
+  P2 child_point;   // in the body's frame
+  P2 axis;          // slider: unit, parent's frame (the world for the ground)
+  double sign = 1;  // slider: +1 when the body is bodies[1] of its joint
 };
 
-/// Per node, the numbers of one pass.
+/// A symmetric 3 x 3 matrix by its upper triangle.
+struct Sym3 {
+  double a00 = 0, a01 = 0, a02 = 0, a11 = 0, a12 = 0, a22 = 0;
+};
+
+/// Per node, the numbers of one evaluation, spatial ones about the node's own point O.
 struct Work {
-  Vec2 centre = Vec2::Zero();
-  double angle = 0, cos_angle = 1, sin_angle = 0;                       // each angle's cosine and sine once
-  Eigen::Matrix<double, 3, 3> S = Eigen::Matrix<double, 3, 3>::Zero();  // first dof columns used
-  Vec3 v = Vec3::Zero(), c = Vec3::Zero(), a = Vec3::Zero();
-  Mat3 I0 = Mat3::Zero();                         // the body's own spatial inertia
-  Vec3 bias = Vec3::Zero(), load = Vec3::Zero();  // v x* I v, and the loads, as spatial forces
-  Mat3 IA = Mat3::Zero();
-  Vec3 pA = Vec3::Zero();
-  Eigen::Matrix<double, 3, 3> U = Eigen::Matrix<double, 3, 3>::Zero();
-  Mat3 Dinv = Mat3::Zero();
-  Vec3 u = Vec3::Zero();
-  Vec3 q_dot = Vec3::Zero(), q_ddot = Vec3::Zero();  // relative, first dof entries
-  double omega = 0, alpha = 0;                       // absolute angular velocity and acceleration
+  P2 centre, point;  // the centre of mass and O, world
+  P2 t;              // (-d_y, d_x), d = O - O_parent: motion to O is (w, v + w t), force to O_parent (n + t.F, F)
+  double angle = 0, cos_angle = 1, sin_angle = 0;  // each angle's cosine and sine once
+  S3 s;                                            // one-dof joints' motion subspace
+  S3 v, c, a;
+  Sym3 IA;
+  S3 pA, U, u;  // U = I^A s; u: the dof's force less S^T p^A (a floating root's: tau, in x, y, theta)
+  double Dinv = 0;
+  S3 W;  // pins: q''_relative = h - W . a_parent
+  double h = 0;
 };
 
-/// R(angle) v, with cos and sin of the angle given.
-Vec2 rotate(double c, double s, const Vec2& v) { return {c * v.x() - s * v.y(), s * v.x() + c * v.y()}; }
+/// A floating root's solve: the rotating base's I^A, the point mass's translation block.
+struct RootFactor {
+  Eigen::LDLT<Mat3> full;
+  Eigen::Matrix2d translation_inverse = Eigen::Matrix2d::Zero();
+};
 
-/// v x* u for planar motion vectors.
-Vec3 cross_motion(const Vec3& v, const Vec3& u) { return {0, -v[0] * u[2] + v[2] * u[0], v[0] * u[1] - v[1] * u[0]}; }
+/// X^T Ia X into `parent`: Ia = [A b^T; b K] about O moved to O_parent, X = [1 0; t 1].
+void add_shifted(Sym3& parent, const Sym3& ia, const P2& t) {
+  const double kt0 = ia.a11 * t.x + ia.a12 * t.y, kt1 = ia.a12 * t.x + ia.a22 * t.y;
+  parent.a00 += ia.a00 + 2 * (ia.a01 * t.x + ia.a02 * t.y) + t.x * kt0 + t.y * kt1;
+  parent.a01 += ia.a01 + kt0;
+  parent.a02 += ia.a02 + kt1;
+  parent.a11 += ia.a11;
+  parent.a12 += ia.a12;
+  parent.a22 += ia.a22;
+}
 
-Mat3 spatial_inertia(double m, double I, const Vec2& c) {
+/// X^T f into `parent`.
+void add_shifted(S3& parent, const S3& f, const P2& t) {
+  parent.n += f.n + t.x * f.x + t.y * f.y;
+  parent.x += f.x;
+  parent.y += f.y;
+}
+
+S3 times(const Sym3& m, const S3& v) {
+  return {m.a00 * v.n + m.a01 * v.x + m.a02 * v.y, m.a01 * v.n + m.a11 * v.x + m.a12 * v.y,
+          m.a02 * v.n + m.a12 * v.x + m.a22 * v.y};
+}
+
+double dot(const S3& a, const S3& b) { return a.n * b.n + a.x * b.x + a.y * b.y; }
+
+void add(Sym3& m, const Sym3& d) {
+  m.a00 += d.a00;
+  m.a01 += d.a01;
+  m.a02 += d.a02;
+  m.a11 += d.a11;
+  m.a12 += d.a12;
+  m.a22 += d.a22;
+}
+
+Mat3 full(const Sym3& m) {
   Mat3 out;
-  out << I + m * c.squaredNorm(), -m * c.y(), m * c.x(), -m * c.y(), m, 0, m * c.x(), 0, m;
+  out << m.a00, m.a01, m.a02, m.a01, m.a11, m.a12, m.a02, m.a12, m.a22;
   return out;
-}
-
-}  // namespace
-
-namespace {
-
-/// The leaves-to-root step of a node with D > 1 degrees of freedom (a floating base),
-/// in fixed-size matrices.
-template <int D>
-void backward(Work& w, Work* p, const Vec3& c) {
-  const Eigen::Matrix<double, 3, D> S = w.S.leftCols<D>();
-  const Eigen::Matrix<double, 3, D> U = w.IA * S;
-  w.U.leftCols<D>() = U;
-  const Eigen::Matrix<double, D, D> Dinv = (S.transpose() * U).inverse();
-  w.Dinv.topLeftCorner<D, D>() = Dinv;
-  w.u.head<D>() -= S.transpose() * w.pA;
-  if (p == nullptr) return;
-  const Mat3 Ia = w.IA - U * Dinv * U.transpose();
-  p->IA += Ia;
-  p->pA += w.pA + Ia * c + U * (Dinv * w.u.head<D>());
-}
-
-/// The root-to-leaves step of such a node.
-template <int D>
-void forward(Work& w, const Vec3& a_in) {
-  const Eigen::Matrix<double, D, D> Dinv = w.Dinv.topLeftCorner<D, D>();
-  w.q_ddot.head<D>() = Dinv * (w.u.head<D>() - w.U.leftCols<D>().transpose() * a_in);
-  w.a = a_in + w.S.leftCols<D>() * w.q_ddot.head<D>();
 }
 
 }  // namespace
@@ -102,18 +124,31 @@ struct TreeDynamics::Impl {
   Program loads;  // per body Fx, Fy, moment about its centre; inputs: parameters, x y theta per body, rates, t
   Program loops;  // J (m x n, row major), then phi0 (m); inputs: parameters, q, q', t
   int loop_rows = 0;
+  // Allocated once: per node, in the tree's order.
   mutable std::vector<Work> work;
-  mutable Vec2 origin = Vec2::Zero();  // of the spatial quantities, world
+  mutable std::vector<RootFactor> roots;
   mutable std::vector<double> angle_force;
   mutable std::vector<double> load_inputs, load_outputs, loop_inputs, loop_outputs, scratch;
-  mutable Eigen::MatrixXd J, MinvJt;
-  mutable Eigen::VectorXd q_ddot0, tau, column;
+  mutable Eigen::MatrixXd J, MinvJt, schur;
+  mutable Eigen::VectorXd tau, column, phi0, lambda;
+  mutable Eigen::LDLT<Eigen::MatrixXd> factor;
 
-  /// Positions and velocities root to leaves from y = (q, q').
+  /// Positions, velocities and each body's inertia and velocity-product force root to
+  /// leaves from y = (q, q'), the loads' inputs filled.
   void kinematics(const Eigen::VectorXd& y) const;
-  /// Articulated inertias and biases leaves to root, accelerations root to leaves; with
-  /// `loaded` false: no velocity terms and no loads (q'' = M^-1 tau).
-  void recursion(bool loaded, const Eigen::VectorXd& tau_absolute, Eigen::VectorXd& out) const;
+  /// The loads on the node's body as a spatial force about O, r = centre - O.
+  [[nodiscard]] S3 load_about(const Node& node, const P2& r) const {
+    const double* f = &load_outputs[3 * static_cast<std::size_t>(node.body)];
+    return {f[2] + r.x * f[1] - r.y * f[0], f[0], f[1]};
+  }
+  /// The loaded pass: articulated inertias and biases leaves to root (kept for the
+  /// unloaded passes), accelerations root to leaves.
+  void articulate(Eigen::VectorXd& out) const;
+  /// q'' = M^-1 tau (generalized forces on the absolute coordinates), on the articulated
+  /// inertias of the last loaded pass: no velocity terms and no loads.
+  void unloaded(const Eigen::VectorXd& tau_absolute, Eigen::VectorXd& out) const;
+  /// Root to leaves: each node's q'' from its parent's acceleration, into out.
+  void accelerate(bool loaded, Eigen::VectorXd& out) const;
 };
 
 std::vector<Program*> TreeDynamics::programs() { return {&impl_->loads, &impl_->loops}; }
@@ -154,8 +189,8 @@ TreeDynamics::TreeDynamics(const sym::System& system) : impl_(std::make_unique<I
       const Joint& joint = mechanism.joints[static_cast<std::size_t>(t.joint)];
       const bool child_is_b = mechanism.body_index(joint.bodies[1]) == b;
       const int parent_body = t.parent;
-      n.parent_point = local(parent_body, joint.points[child_is_b ? 0 : 1]);
-      n.child_point = local(b, joint.points[child_is_b ? 1 : 0]);
+      n.parent_point = plain(local(parent_body, joint.points[child_is_b ? 0 : 1]));
+      n.child_point = plain(local(b, joint.points[child_is_b ? 1 : 0]));
       switch (joint_type_info(joint.type).motion) {
         case JointMotion::revolute:
           n.kind = NodeKind::revolute;
@@ -163,7 +198,7 @@ TreeDynamics::TreeDynamics(const sym::System& system) : impl_(std::make_unique<I
         case JointMotion::prismatic: {
           const sym::Vec2 axis = sym::joint_axis(system, joint);
           n.kind = NodeKind::prismatic;
-          n.axis = Vec2(number(axis.x), number(axis.y)).normalized();
+          n.axis = plain(Vec2(number(axis.x), number(axis.y)).normalized());
           n.sign = child_is_b ? 1.0 : -1.0;
           break;
         }
@@ -180,7 +215,6 @@ TreeDynamics::TreeDynamics(const sym::System& system) : impl_(std::make_unique<I
                      : n.kind == NodeKind::floating ? 2
                                                     : 0;
     n.coordinate[static_cast<std::size_t>(slot)] = static_cast<int>(i);
-    n.dof = std::max(n.dof, slot + 1);
   }
   m.coordinates = system.coordinates().size();
 
@@ -263,11 +297,13 @@ TreeDynamics::TreeDynamics(const sym::System& system) : impl_(std::make_unique<I
   m.loop_outputs.resize(jacobian.size());
   m.scratch.resize(std::max(m.loads.scratch_size(), m.loops.scratch_size()));
   m.work.resize(m.nodes.size());
+  m.roots.resize(m.nodes.size());
   m.angle_force.resize(m.nodes.size());
   const auto n = static_cast<Eigen::Index>(m.coordinates);
   m.J.resize(m.loop_rows, n);
   m.MinvJt.resize(n, m.loop_rows);
-  m.q_ddot0.resize(n);
+  m.phi0.resize(m.loop_rows);
+  m.schur.resize(m.loop_rows, m.loop_rows);
   m.tau.resize(n);
   m.column.resize(n);
 }
@@ -278,185 +314,277 @@ TreeDynamics& TreeDynamics::operator=(TreeDynamics&&) noexcept = default;
 
 void TreeDynamics::Impl::kinematics(const Eigen::VectorXd& y) const {
   const auto n = static_cast<Eigen::Index>(coordinates);
-  auto q = [&](int i) { return y[i]; };
-  auto q_dot = [&](int i) { return y[n + i]; };
-  // Spatial quantities about a point near the mechanism, not the world origin: about a
-  // far origin I + m |c|^2 would swamp I and cost digits.
-  origin = nodes.front().kind == NodeKind::floating
-               ? Vec2(q(nodes.front().coordinate[0]), q(nodes.front().coordinate[1]))
-               : Vec2::Zero();
-  for (std::size_t k = 0; k < nodes.size(); ++k) {
+  const double* q = y.data();
+  const double* q_dot = q + n;
+  const std::size_t bodies = nodes.size(), first = parameters.size();
+  // Each angle's cosine and sine first, in a loop of their own: the calls clobber every
+  // register, and the recursion below then runs without them.
+  for (std::size_t k = 0; k < bodies; ++k) {
     const Node& node = nodes[k];
     Work& w = work[k];
-    const Work* p = node.parent >= 0 ? &work[static_cast<std::size_t>(node.parent)] : nullptr;
-    const double parent_angle = p != nullptr ? p->angle : 0.0;
-    const double pc = p != nullptr ? p->cos_angle : 1.0, ps = p != nullptr ? p->sin_angle : 0.0;
-    const double parent_omega = p != nullptr ? p->omega : 0.0;
-    const Vec3 parent_v = p != nullptr ? p->v : Vec3::Zero();
-    const Vec2 parent_point = p != nullptr ? Vec2(p->centre + rotate(pc, ps, node.parent_point)) : node.parent_point;
+    switch (node.kind) {
+      case NodeKind::floating:
+        w.angle = node.rotates ? q[node.coordinate[2]] : 0.0;
+        break;
+      case NodeKind::revolute:
+        w.angle = q[node.coordinate[0]];
+        break;
+      case NodeKind::prismatic:
+        continue;  // its parent's, set below
+    }
+    w.cos_angle = std::cos(w.angle);
+    w.sin_angle = std::sin(w.angle);
+  }
+  // A chain's parent is the node before: taken from the registers, not read back.
+  struct Parent {
+    P2 centre, point;
+    S3 v;
+    double angle = 0, cos_angle = 1, sin_angle = 0;
+  } previous;
+  for (std::size_t k = 0; k < bodies; ++k) {
+    const Node& node = nodes[k];
+    Work& w = work[k];
+    const bool has_parent = node.parent >= 0;
+    Parent parent;
+    if (has_parent && static_cast<std::size_t>(node.parent) + 1 == k) {
+      parent = previous;
+    } else if (has_parent) {
+      const Work& p = work[static_cast<std::size_t>(node.parent)];
+      parent = {p.centre, p.point, p.v, p.angle, p.cos_angle, p.sin_angle};
+    }
+    const double pc = parent.cos_angle, ps = parent.sin_angle;
+    const S3 pv = parent.v;
+    const P2 pp = parent.point;
+    // The joint's point on the parent, world.
+    P2 joint = node.parent_point;
+    if (has_parent) {
+      const P2 r = rotate(pc, ps, node.parent_point);
+      joint = {parent.centre.x + r.x, parent.centre.y + r.y};
+    }
+    P2 point, centre, t;
+    S3 v, c;
     switch (node.kind) {
       case NodeKind::floating: {
-        w.S.setZero();
-        w.c.setZero();
-        w.centre = {q(node.coordinate[0]), q(node.coordinate[1])};
-        w.angle = node.rotates ? q(node.coordinate[2]) : 0.0;
-        w.cos_angle = std::cos(w.angle);
-        w.sin_angle = std::sin(w.angle);
-        w.q_dot[0] = q_dot(node.coordinate[0]);
-        w.q_dot[1] = q_dot(node.coordinate[1]);
-        w.q_dot[2] = node.rotates ? q_dot(node.coordinate[2]) : 0.0;
-        w.S(1, 0) = 1;
-        w.S(2, 1) = 1;
-        if (node.rotates) {
-          const Vec2 r = w.centre - origin;
-          w.S.col(2) << 1, r.y(), -r.x();
-          w.c << 0, w.q_dot[2] * w.q_dot[1], -w.q_dot[2] * w.q_dot[0];
-        }
-        w.v = w.S.leftCols(node.dof) * w.q_dot.head(node.dof);
-        w.omega = w.q_dot[2];
+        centre = {q[node.coordinate[0]], q[node.coordinate[1]]};
+        point = centre;
+        const double omega = node.rotates ? q_dot[node.coordinate[2]] : 0.0;
+        const double vx = q_dot[node.coordinate[0]], vy = q_dot[node.coordinate[1]];
+        v = {omega, vx, vy};
+        // About the point where the centre is now: S' q' = (0, w y', -w x').
+        c = {0, omega * vy, -omega * vx};
         break;
       }
       case NodeKind::revolute: {
-        w.angle = q(node.coordinate[0]);
-        w.omega = q_dot(node.coordinate[0]);
-        w.q_dot[0] = w.omega - parent_omega;
-        w.cos_angle = std::cos(w.angle);
-        w.sin_angle = std::sin(w.angle);
-        w.centre = parent_point - rotate(w.cos_angle, w.sin_angle, node.child_point);
-        const Vec2 r = parent_point - origin;
-        w.S.col(0) << 1, r.y(), -r.x();
-        w.v = parent_v + w.S.col(0) * w.q_dot[0];
-        w.c = cross_motion(parent_v, w.S.col(0)) * w.q_dot[0];
+        const P2 r = rotate(w.cos_angle, w.sin_angle, node.child_point);
+        point = joint;
+        centre = {joint.x - r.x, joint.y - r.y};
+        const double omega = q_dot[node.coordinate[0]];
+        // The joint's velocity, and S' q' = v_p x (1, 0, 0) q'_relative.
+        t = {pp.y - joint.y, joint.x - pp.x};
+        const double vx = pv.x + pv.n * t.x, vy = pv.y + pv.n * t.y, relative = omega - pv.n;
+        v = {omega, vx, vy};
+        c = {0, relative * vy, -relative * vx};
+        w.s = {1, 0, 0};
         break;
       }
       case NodeKind::prismatic: {
-        const Vec2 u = rotate(pc, ps, node.axis);
-        w.angle = parent_angle;
+        const P2 u = rotate(pc, ps, node.axis), r = rotate(pc, ps, node.child_point);
+        w.angle = parent.angle;
         w.cos_angle = pc;
         w.sin_angle = ps;
-        w.omega = parent_omega;
-        w.q_dot[0] = q_dot(node.coordinate[0]);
-        w.centre = parent_point + node.sign * q(node.coordinate[0]) * u - rotate(pc, ps, node.child_point);
-        w.S.col(0) << 0, node.sign * u.x(), node.sign * u.y();
-        w.v = parent_v + w.S.col(0) * w.q_dot[0];
-        w.c = cross_motion(parent_v, w.S.col(0)) * w.q_dot[0];
+        const double along = node.sign * q[node.coordinate[0]], rate = q_dot[node.coordinate[0]];
+        point = {joint.x + along * u.x, joint.y + along * u.y};
+        centre = {point.x - r.x, point.y - r.y};
+        const S3 s{0, node.sign * u.x, node.sign * u.y};
+        w.s = s;
+        t = {pp.y - point.y, point.x - pp.x};
+        v = {pv.n, pv.x + pv.n * t.x + s.x * rate, pv.y + pv.n * t.y + s.y * rate};
+        c = {0, -pv.n * s.y * rate, pv.n * s.x * rate};
         break;
       }
     }
+    if (!has_parent) t = {};  // the ground does not move: nothing to pass on
+    // The body's inertia about O, and v x* (I v) written through the centre's velocity
+    // v_c: the momentum changes at m (omega x v_c), its moment about O at r x that.
+    const P2 r{centre.x - point.x, centre.y - point.y};
+    const double m = node.mass, omega = v.n;
+    const P2 vc{v.x - omega * r.y, v.y + omega * r.x};
+    const P2 turn{-m * omega * vc.y, m * omega * vc.x};
+    S3 pA{r.x * turn.y - r.y * turn.x, turn.x, turn.y};
+    if (loads_constant) {
+      const S3 f = load_about(node, r);
+      pA = {pA.n - f.n, pA.x - f.x, pA.y - f.y};
+    }
+    w.centre = centre;
+    w.point = point;
+    w.t = t;
+    w.v = v;
+    w.c = c;
+    w.IA = {node.inertia + m * (r.x * r.x + r.y * r.y), -m * r.y, m * r.x, m, 0, m};
+    w.pA = pA;
+    previous = {centre, point, v, w.angle, w.cos_angle, w.sin_angle};
+    if (loads_constant) continue;
+    const auto b = static_cast<std::size_t>(node.body);
+    load_inputs[first + 3 * b] = centre.x;
+    load_inputs[first + 3 * b + 1] = centre.y;
+    load_inputs[first + 3 * b + 2] = w.angle;
+    load_inputs[first + 3 * bodies + 3 * b] = vc.x;
+    load_inputs[first + 3 * bodies + 3 * b + 1] = vc.y;
+    load_inputs[first + 3 * bodies + 3 * b + 2] = omega;
   }
 }
 
-void TreeDynamics::Impl::recursion(bool loaded, const Eigen::VectorXd& tau_absolute, Eigen::VectorXd& out) const {
-  // Generalized forces on the relative coordinates: an absolute angle's force reaches
-  // every coordinate it depends on, so a pin's relative angle collects its subtree's.
-  // The motion itself has none (the loads act on the bodies).
-  if (loaded) {
-    for (Work& w : work) w.u.setZero();
-  } else {
-    std::fill(angle_force.begin(), angle_force.end(), 0.0);
-    for (std::size_t k = nodes.size(); k-- > 0;) {
-      const Node& node = nodes[k];
-      Work& w = work[k];
-      double own = 0;
-      switch (node.kind) {
-        case NodeKind::floating:
-          if (node.rotates) own = tau_absolute[node.coordinate[2]];
-          break;
-        case NodeKind::revolute:
-          own = tau_absolute[node.coordinate[0]];
-          break;
-        case NodeKind::prismatic:
-          break;
-      }
-      angle_force[k] += own;
-      if (node.parent >= 0 && node.kind != NodeKind::floating)
-        angle_force[static_cast<std::size_t>(node.parent)] += angle_force[k];
-      w.u.setZero();
-      switch (node.kind) {
-        case NodeKind::floating:
-          w.u[0] = tau_absolute[node.coordinate[0]];
-          w.u[1] = tau_absolute[node.coordinate[1]];
-          w.u[2] = angle_force[k];
-          break;
-        case NodeKind::revolute:
-          w.u[0] = angle_force[k];
-          break;
-        case NodeKind::prismatic:
-          w.u[0] = tau_absolute[node.coordinate[0]];
-          break;
-      }
-    }
-  }
-  for (std::size_t k = 0; k < nodes.size(); ++k) {
-    Work& w = work[k];
-    w.IA = w.I0;
-    if (loaded)
-      w.pA = w.bias - w.load;
-    else
-      w.pA.setZero();
-  }
+void TreeDynamics::Impl::articulate(Eigen::VectorXd& out) const {
+  // In a chain a node's parent is the node before it, the next one done: what it gets is
+  // carried in registers, not through memory (each step waits on the one before).
+  Sym3 carry_IA;
+  S3 carry_pA;
   for (std::size_t k = nodes.size(); k-- > 0;) {
     const Node& node = nodes[k];
     Work& w = work[k];
-    const Vec3 c = loaded ? w.c : Vec3::Zero();
-    Work* p = node.parent >= 0 ? &work[static_cast<std::size_t>(node.parent)] : nullptr;
-    if (node.dof == 1) {  // pins and sliders: scalars, no matrix to invert
-      const Vec3 s = w.S.col(0);
-      w.U.col(0) = w.IA * s;
-      const double D = s.dot(w.U.col(0));
-      w.Dinv(0, 0) = 1 / D;
-      w.u[0] -= s.dot(w.pA);
-      if (p == nullptr) continue;
-      const Vec3 U = w.U.col(0);
-      const Mat3 Ia = w.IA - (U / D) * U.transpose();
-      p->IA += Ia;
-      p->pA += w.pA + Ia * c + U * (w.u[0] / D);
-      continue;
+    Sym3 A = w.IA;
+    S3 pA = w.pA;
+    add(A, carry_IA);
+    pA = {pA.n + carry_pA.n, pA.x + carry_pA.x, pA.y + carry_pA.y};
+    const P2 t = w.t;
+    const S3 c = w.c;
+    const bool to_next = node.parent >= 0 && static_cast<std::size_t>(node.parent) + 1 == k;
+    Sym3 to_IA;  // what the parent gets
+    S3 to_pA;
+    switch (node.kind) {
+      case NodeKind::revolute: {
+        // S = (1, 0, 0) about the joint: U is I^A's first column (a00, b), D = a00, and
+        // I^A - U D^-1 U^T keeps K = A22 - b b^T / a00 alone. Each product that needs
+        // no D^-1 is formed while the division runs.
+        const double Dinv = 1 / A.a00, u = -pA.n;
+        const double bt = A.a01 * t.x + A.a02 * t.y, bc = A.a01 * c.x + A.a02 * c.y;
+        const double h = Dinv * (u - bc);
+        w.Dinv = Dinv;
+        w.U = {A.a00, A.a01, A.a02};
+        w.u.n = u;
+        w.h = h;
+        w.W = {1 + bt * Dinv, A.a01 * Dinv, A.a02 * Dinv};
+        const double at0 = A.a11 * t.x + A.a12 * t.y, at1 = A.a12 * t.x + A.a22 * t.y;
+        const double ac0 = A.a11 * c.x + A.a12 * c.y, ac1 = A.a12 * c.x + A.a22 * c.y;
+        const double f1 = pA.x + ac0 + A.a01 * h, f2 = pA.y + ac1 + A.a02 * h;
+        to_IA = {(t.x * at0 + t.y * at1) - bt * bt * Dinv,
+                 at0 - A.a01 * bt * Dinv,
+                 at1 - A.a02 * bt * Dinv,
+                 A.a11 - A.a01 * A.a01 * Dinv,
+                 A.a12 - A.a01 * A.a02 * Dinv,
+                 A.a22 - A.a02 * A.a02 * Dinv};
+        to_pA = {t.x * f1 + t.y * f2, f1, f2};
+        break;
+      }
+      case NodeKind::prismatic: {
+        const S3 s = w.s, U = times(A, s);
+        const double Dinv = 1 / dot(s, U), u = -dot(s, pA);
+        w.U = U;
+        w.Dinv = Dinv;
+        w.u.n = u;
+        const S3 g{U.n * Dinv, U.x * Dinv, U.y * Dinv};
+        const Sym3 Ia{A.a00 - g.n * U.n, A.a01 - g.n * U.x, A.a02 - g.n * U.y,
+                      A.a11 - g.x * U.x, A.a12 - g.x * U.y, A.a22 - g.y * U.y};
+        const S3 Iac = times(Ia, c);
+        add_shifted(to_IA, Ia, t);
+        add_shifted(to_pA, S3{pA.n + Iac.n + g.n * u, pA.x + Iac.x + g.x * u, pA.y + Iac.y + g.y * u}, t);
+        break;
+      }
+      case NodeKind::floating:
+        // A root: its I^A a + p^A = S^-T tau solved in accelerate().
+        w.u = {};
+        w.pA = pA;
+        if (node.rotates)
+          roots[k].full.compute(full(A));
+        else
+          roots[k].translation_inverse = (Eigen::Matrix2d() << A.a11, A.a12, A.a12, A.a22).finished().inverse();
+        break;
     }
-    if (node.dof == 3) {
-      // A rotating floating base is a root: I^A a + p^A = f, with S^T f = tau; no D to
-      // form, one symmetric 3 x 3 solve (its forward step below).
-      const Vec2 r = w.centre - origin;
-      const Vec3 f(w.u[2] - r.y() * w.u[0] + r.x() * w.u[1], w.u[0], w.u[1]);
-      w.a = w.IA.ldlt().solve(f - w.pA);
-    } else {
-      backward<2>(w, p, c);
+    carry_IA = {};
+    carry_pA = {};
+    if (to_next) {
+      carry_IA = to_IA;
+      carry_pA = to_pA;
+    } else if (node.parent >= 0) {
+      Work& p = work[static_cast<std::size_t>(node.parent)];
+      add(p.IA, to_IA);
+      add_shifted(p.pA, to_pA, P2{});
     }
   }
+  accelerate(true, out);
+}
+
+void TreeDynamics::Impl::unloaded(const Eigen::VectorXd& tau_absolute, Eigen::VectorXd& out) const {
+  // Generalized forces on the relative coordinates: an absolute angle's force reaches
+  // every coordinate it depends on, so a pin's relative angle collects its subtree's.
+  std::fill(angle_force.begin(), angle_force.end(), 0.0);
+  for (Work& w : work) w.pA = {};
+  for (std::size_t k = nodes.size(); k-- > 0;) {
+    const Node& node = nodes[k];
+    Work& w = work[k];
+    switch (node.kind) {
+      case NodeKind::floating:
+        if (node.rotates) angle_force[k] += tau_absolute[node.coordinate[2]];
+        w.u = {tau_absolute[node.coordinate[0]], tau_absolute[node.coordinate[1]], angle_force[k]};
+        continue;  // a root
+      case NodeKind::revolute:
+        angle_force[k] += tau_absolute[node.coordinate[0]];
+        w.u.n = angle_force[k] - w.pA.n;
+        w.h = w.Dinv * w.u.n;
+        break;
+      case NodeKind::prismatic:
+        w.u.n = tau_absolute[node.coordinate[0]] - dot(w.s, w.pA);
+        break;
+    }
+    if (node.parent < 0) continue;
+    angle_force[static_cast<std::size_t>(node.parent)] += angle_force[k];
+    const double g = w.Dinv * w.u.n;
+    add_shifted(work[static_cast<std::size_t>(node.parent)].pA,
+                S3{w.pA.n + w.U.n * g, w.pA.x + w.U.x * g, w.pA.y + w.U.y * g}, w.t);
+  }
+  accelerate(false, out);
+}
+
+void TreeDynamics::Impl::accelerate(bool loaded, Eigen::VectorXd& out) const {
+  S3 previous;  // the acceleration of node k - 1, in registers
   for (std::size_t k = 0; k < nodes.size(); ++k) {
     const Node& node = nodes[k];
     Work& w = work[k];
-    const int d = node.dof;
-    const Work* p = node.parent >= 0 ? &work[static_cast<std::size_t>(node.parent)] : nullptr;
-    const Vec3 a_in = (p != nullptr ? p->a : Vec3::Zero()) + (loaded ? w.c : Vec3::Zero());
-    if (d == 1) {
-      w.q_ddot[0] = w.Dinv(0, 0) * (w.u[0] - w.U.col(0).dot(a_in));
-      w.a = a_in + w.S.col(0) * w.q_ddot[0];
-    } else if (d == 3) {
-      // q'' = S^-1 (a - c): S q'' = (theta'', x'' + r_y theta'', y'' - r_x theta'').
-      const Vec2 r = w.centre - origin;
-      const Vec3 e = w.a - a_in;
-      w.q_ddot << e[1] - r.y() * e[0], e[2] + r.x() * e[0], e[0];
-    } else {
-      forward<2>(w, a_in);
-    }
-    const double parent_alpha = p != nullptr ? p->alpha : 0.0;
+    S3 ap;
+    if (node.parent >= 0)
+      ap = static_cast<std::size_t>(node.parent) + 1 == k ? previous : work[static_cast<std::size_t>(node.parent)].a;
+    const S3 c = loaded ? w.c : S3{};
+    const P2 t = w.t;
+    const S3 a_in{ap.n, ap.x + ap.n * t.x + c.x, ap.y + ap.n * t.y + c.y};
+    S3 a;
     switch (node.kind) {
       case NodeKind::floating:
-        out[node.coordinate[0]] = w.q_ddot[0];
-        out[node.coordinate[1]] = w.q_ddot[1];
-        w.alpha = node.rotates ? w.q_ddot[2] : 0.0;
-        if (node.rotates) out[node.coordinate[2]] = w.alpha;
+        if (node.rotates) {
+          // S = 1 about the centre's point: f = (n, Fx, Fy) from tau = (Fx, Fy, n).
+          const Vec3 solved = roots[k].full.solve(Vec3(w.u.y - w.pA.n, w.u.n - w.pA.x, w.u.x - w.pA.y));
+          a = {solved[0], solved[1], solved[2]};
+          out[node.coordinate[2]] = a.n;
+        } else {
+          const Eigen::Vector2d qdd = roots[k].translation_inverse * Eigen::Vector2d(w.u.n - w.pA.x, w.u.x - w.pA.y);
+          a = {0, qdd.x(), qdd.y()};
+        }
+        out[node.coordinate[0]] = a.x - a_in.x;
+        out[node.coordinate[1]] = a.y - a_in.y;
         break;
       case NodeKind::revolute:
-        w.alpha = parent_alpha + w.q_ddot[0];
-        out[node.coordinate[0]] = w.alpha;
+        // q''_relative = D^-1 (u - U^T a_in), its parts without the parent's a in h.
+        a = {ap.n + (w.h - (w.W.n * ap.n + w.W.x * ap.x + w.W.y * ap.y)), a_in.x, a_in.y};
+        out[node.coordinate[0]] = a.n;  // the absolute angle's
         break;
-      case NodeKind::prismatic:
-        w.alpha = parent_alpha;
-        out[node.coordinate[0]] = w.q_ddot[0];
+      case NodeKind::prismatic: {
+        const double qdd = w.Dinv * (w.u.n - dot(w.U, a_in));
+        a = {a_in.n + w.s.n * qdd, a_in.x + w.s.x * qdd, a_in.y + w.s.y * qdd};
+        out[node.coordinate[0]] = qdd;
         break;
+      }
     }
+    w.a = a;
+    previous = a;
   }
 }
 
@@ -465,43 +593,18 @@ bool TreeDynamics::accelerations(double t, const Eigen::VectorXd& y, Eigen::Vect
   const auto n = static_cast<Eigen::Index>(m.coordinates);
   q_ddot.resize(n);
   m.kinematics(y);
-  // The loads at every body's maximal coordinates and rates.
   const std::size_t bodies = m.work.size(), first = m.parameters.size();
-  for (std::size_t k = 0; k < bodies && !m.loads_constant; ++k) {
-    const Work& w = m.work[k];
-    const auto b = static_cast<std::size_t>(m.nodes[k].body);
-    m.load_inputs[first + 3 * b] = w.centre.x();
-    m.load_inputs[first + 3 * b + 1] = w.centre.y();
-    m.load_inputs[first + 3 * b + 2] = w.angle;
-    // The centre's velocity from the spatial velocity about the origin.
-    const Vec2 r = w.centre - m.origin;
-    m.load_inputs[first + 3 * bodies + 3 * b] = w.v[1] - w.v[0] * r.y();
-    m.load_inputs[first + 3 * bodies + 3 * b + 1] = w.v[2] + w.v[0] * r.x();
-    m.load_inputs[first + 3 * bodies + 3 * b + 2] = w.omega;
-  }
   if (!m.loads_constant) {
     m.load_inputs[first + 6 * bodies] = t;
     m.loads.run(m.load_inputs.data(), m.load_outputs.data(), m.scratch.data());
   }
-  // Each body's spatial inertia, velocity-product force and load about the origin, once:
-  // the loop-closure passes reuse the inertias.
-  for (std::size_t k = 0; k < bodies; ++k) {
-    const Node& node = m.nodes[k];
-    Work& w = m.work[k];
-    const Vec2 r = w.centre - m.origin;
-    w.I0 = spatial_inertia(node.mass, node.inertia, r);
-    // v x* (I v) written through the centre's velocity v_c: the body's momentum changes
-    // at m (omega x v_c), its moment about the origin at r x that, so a body about its
-    // own centre (r = 0) gets exactly no moment, as Case 2's rows give it.
-    const double omega = w.v[0];
-    const Vec2 vc(w.v[1] - omega * r.y(), w.v[2] + omega * r.x());
-    const Vec2 turn(-omega * vc.y(), omega * vc.x());
-    w.bias = Vec3(node.mass * (r.x() * turn.y() - r.y() * turn.x()), node.mass * turn.x(), node.mass * turn.y());
-    const double* f = &m.load_outputs[3 * static_cast<std::size_t>(node.body)];
-    w.load = Vec3(f[2] + r.x() * f[1] - r.y() * f[0], f[0], f[1]);
-  }
-  m.tau.setZero();
-  m.recursion(true, m.tau, q_ddot);
+  if (!m.loads_constant)  // p^A = v x* I v - f
+    for (std::size_t k = 0; k < bodies; ++k) {
+      Work& w = m.work[k];
+      const S3 f = m.load_about(m.nodes[k], P2{w.centre.x - w.point.x, w.centre.y - w.point.y});
+      w.pA = {w.pA.n - f.n, w.pA.x - f.x, w.pA.y - f.y};
+    }
+  m.articulate(q_ddot);
   if (m.loop_rows == 0) return true;
 
   for (Eigen::Index i = 0; i < 2 * n; ++i) m.loop_inputs[first + static_cast<std::size_t>(i)] = y[i];
@@ -510,18 +613,19 @@ bool TreeDynamics::accelerations(double t, const Eigen::VectorXd& y, Eigen::Vect
   std::size_t k = 0;
   for (Eigen::Index r = 0; r < m.loop_rows; ++r)
     for (Eigen::Index c = 0; c < n; ++c) m.J(r, c) = m.loop_outputs[k++];
-  Eigen::VectorXd phi0(m.loop_rows);
-  for (Eigen::Index r = 0; r < m.loop_rows; ++r) phi0[r] = m.loop_outputs[k++];
+  for (Eigen::Index r = 0; r < m.loop_rows; ++r) m.phi0[r] = m.loop_outputs[k++];
   for (Eigen::Index r = 0; r < m.loop_rows; ++r) {
     m.tau = m.J.row(r).transpose();
-    m.recursion(false, m.tau, m.column);
+    m.unloaded(m.tau, m.column);
     m.MinvJt.col(r) = m.column;
   }
-  const Eigen::MatrixXd schur = m.J * m.MinvJt;
-  const Eigen::LDLT<Eigen::MatrixXd> factor(schur);
-  if (factor.info() != Eigen::Success || !(factor.rcond() > 1e3 * std::numeric_limits<double>::epsilon())) return false;
-  const Eigen::VectorXd lambda = factor.solve(-phi0 - m.J * q_ddot);
-  q_ddot += m.MinvJt * lambda;
+  m.schur.noalias() = m.J * m.MinvJt;
+  m.factor.compute(m.schur);
+  if (m.factor.info() != Eigen::Success || !(m.factor.rcond() > 1e3 * std::numeric_limits<double>::epsilon()))
+    return false;
+  m.phi0 += m.J * q_ddot;
+  m.lambda = m.factor.solve(-m.phi0);
+  q_ddot.noalias() += m.MinvJt * m.lambda;
   return q_ddot.allFinite();
 }
 

@@ -8,32 +8,97 @@
 #include <algorithm>
 #include <random>
 
+#include "model/mechanism_toml.hpp"
+#include "support/long_chain.hpp"
 #include "support/mechanisms_in_code.hpp"
 #include "symbolic/loop_closure.hpp"
 
 namespace linkage {
 namespace {
 
-// Case 3 of a tree runs the O(n) recursion (and a Schur complement for loops); Case 2 the
-// compiled rows by LU. Same accelerations at random states, for every mechanism built in
-// code: pins, sliders, floating bases, springs, dampers, applied loads, closed loops.
-TEST(MechanismDynamics, RecursionEqualsTheCompiledRows) {
-  const std::vector<built::Named> mechanisms = built::all_mechanisms();
-  std::mt19937 rng(13);
-  for (const built::Named& named : mechanisms) {
-    const sym::System system(named.make());
-    const eval::MechanismDynamics reduced(system, CaseId::reduced), generalized(system, CaseId::generalized);
-    for (int trial = 0; trial < 5; ++trial) {
-      const GiNaC::exmap state = built::random_state(system, rng);
-      const Eigen::VectorXd y = reduced.initial_state(state);
-      Eigen::VectorXd fast, rows;
-      ASSERT_TRUE(reduced.derivative(0.3 * trial, y, fast)) << named.name;
-      ASSERT_TRUE(generalized.derivative(0.3 * trial, y, rows)) << named.name;
-      const double scale = 1 + rows.cwiseAbs().maxCoeff();
-      for (Eigen::Index i = 0; i < y.size(); ++i)
-        EXPECT_NEAR(fast[i], rows[i], 1e-12 * scale) << named.name << " entry " << i << " trial " << trial;
-    }
+/// Case 3 of a tree runs the O(n) recursion (and a Schur complement for loops); Case 2 the
+/// compiled rows by LU. Same accelerations at five random states.
+void expect_recursion_equals_rows(const built::Named& named, std::mt19937& rng) {
+  const sym::System system(named.make());
+  eval::MechanismDynamics reduced(system, CaseId::reduced);
+  const eval::MechanismDynamics generalized(system, CaseId::generalized);
+  reduced.solve_by_structure(false);  // small systems would take the structured solve
+  for (int trial = 0; trial < 5; ++trial) {
+    const GiNaC::exmap state = built::random_state(system, rng);
+    const Eigen::VectorXd y = reduced.initial_state(state);
+    Eigen::VectorXd fast, rows;
+    ASSERT_TRUE(reduced.derivative(0.3 * trial, y, fast)) << named.name;
+    ASSERT_TRUE(generalized.derivative(0.3 * trial, y, rows)) << named.name;
+    const double scale = 1 + rows.cwiseAbs().maxCoeff();
+    for (Eigen::Index i = 0; i < y.size(); ++i)
+      EXPECT_NEAR(fast[i], rows[i], 1e-12 * scale) << named.name << " entry " << i << " trial " << trial;
   }
+}
+
+// Every mechanism built in code: pins, sliders, floating bases, springs, dampers, applied
+// loads, closed loops.
+TEST(MechanismDynamics, RecursionEqualsTheCompiledRows) {
+  std::mt19937 rng(13);
+  for (const built::Named& named : built::all_mechanisms()) expect_recursion_equals_rows(named, rng);
+}
+
+/// A tree whose bodies have several children: an arm pinned to the ground off its centre,
+/// a rod and a plate pinned at its ends, a collar sliding along it on a spring-damper, a
+/// disc pinned to the rod's tip; a damped pin, a torque and a force that vary with t.
+Mechanism branched() {
+  Mechanism m;
+  m.name = "branched";
+  m.gravity = built::q("g");
+  m.parameters = {{"L", 0.8, {}}, {"l", 0.4, {}}, {"m", 0.6, {}}, {"R", 0.05, {}},
+                  {"k", 12, {}},  {"c", 0.3, {}}, {"g", 9.81, {}}};
+  m.ground_points = {{"O", {built::q("0.1"), built::q("-0.2")}, {}}};
+  m.bodies = {built::rod("arm", "m", "L", {{"O", {"-L/4", "0"}}, {"A", {"-L/2", "0"}}, {"B", {"L/2", "0"}}}),
+              built::rod("left", "0.3", "l", {{"A", {"-l/2", "0"}}, {"T", {"l/2", "0"}}}),
+              built::rectangle("right", "0.4", "l", "0.1", {{"B", {"-l/2", "0.05"}}, {"F", {"l/2", "0"}}}),
+              built::disc("collar", "0.2", "R", {{"C", {"0", "0"}}}),
+              built::disc("tip", "0.1", "R", {{"T", {"R", "0"}}})};
+  Joint slider;
+  slider.name = "sleeve";
+  slider.type = JointType::slider;
+  slider.bodies = {"arm", "collar"};
+  slider.points = {"O", "C"};
+  slider.axis = Vector2Quantity{built::q("1"), built::q("0")};
+  m.joints = {built::pin("O", "ground", "O", "arm", "O"), built::pin("A", "arm", "A", "left", "A"),
+              built::pin("B", "arm", "B", "right", "B"), slider, built::pin("T", "left", "T", "tip", "T")};
+  m.joints[2].damping = built::q("0.05");
+  m.springs = {built::spring("k1", "arm.O", "collar.C", "k", "0.2", "c")};
+  m.torques = {{"tip", built::q("0.2*sin(t)"), {}}};
+  m.forces = {{"right", "F", {built::q("0.3*cos(2*t)"), built::q("0")}, {}}};
+  return m;
+}
+
+/// The same tree floating free, no gravity: a rotating base with four children.
+Mechanism floating_branched() {
+  Mechanism m = branched();
+  m.name = "floating-branched";
+  m.gravity.reset();
+  m.joints.erase(m.joints.begin());
+  return m;
+}
+
+// Bodies with several children (the siblings' articulated inertias summed in the parent),
+// under the ground and on a floating base.
+TEST(MechanismDynamics, RecursionEqualsTheCompiledRowsOnBranchedTrees) {
+  std::mt19937 rng(31);
+  for (const built::Named& named : {built::Named{"branched", branched}, built::Named{"floating", floating_branched}})
+    expect_recursion_equals_rows(named, rng);
+}
+
+// A chain of eight rods of different lengths and masses: every step of the recursion takes
+// its parent from the one before.
+TEST(MechanismDynamics, RecursionEqualsTheCompiledRowsOnAChain) {
+  std::vector<test::Rod> rods = test::leaning_rods(8);
+  for (std::size_t i = 0; i < rods.size(); ++i) {
+    rods[i].length = 0.1 + 0.02 * static_cast<double>(i);
+    rods[i].mass = 0.3 - 0.025 * static_cast<double>(i);
+  }
+  std::mt19937 rng(47);
+  expect_recursion_equals_rows({"chain", [&] { return read_mechanism(test::chain_toml(rods), "chain.toml"); }}, rng);
 }
 
 // Each case's sample reports the same bodies' motion and joint forces at the same state.
