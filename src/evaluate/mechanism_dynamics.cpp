@@ -784,6 +784,11 @@ double MechanismDynamics::jacobian_spread(double t, const Eigen::VectorXd& y) co
   return s.size() == 0 || !(s[0] > 0) ? 0.0 : s[s.size() - 1] / s[0];
 }
 
+double MechanismDynamics::jacobian_determinant(double t, const Eigen::VectorXd& y) const {
+  evaluate_constraints(t, y);
+  return J_.partialPivLu().determinant();
+}
+
 void MechanismDynamics::sample(double t, const Eigen::VectorXd& y, MechanismSample& out, bool kinematics) const {
   compile_case();
   if (kinematics) compile_kinematics();

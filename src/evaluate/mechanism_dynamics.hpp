@@ -114,6 +114,8 @@ class MechanismDynamics {
   /// The kept rows' Jacobian J's smallest over its largest singular value at y's q (0:
   /// singular; 1 without kept rows).
   [[nodiscard]] double jacobian_spread(double t, const Eigen::VectorXd& y) const;
+  /// Kinematic only. det J at y's q: its sign changes where a path crosses a singular point.
+  [[nodiscard]] double jacobian_determinant(double t, const Eigen::VectorXd& y) const;
 
   /// Everything a sample reports at (t, y), from one evaluation of the unknowns; with
   /// `kinematics` the accelerations and the named points' motion too (compiled on first need).
