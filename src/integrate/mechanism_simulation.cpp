@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -33,6 +34,8 @@ constexpr double kOpenLoop = 1e-3;
 // singular value falls as the square root of the distance to a limit position, so a step
 // underflowing to round-off there leaves it near sqrt of a step's relative size.
 constexpr double kDrivenPastItsRange = 1e-4;
+// The largest |C| (m, rad) at which a projected state counts as closed.
+constexpr double kClosed = 1e-10;
 
 /// f(t, y) for the integrators; remembers where the case's matrix was singular.
 struct Rhs {
@@ -141,23 +144,57 @@ struct MechanismSimulation::Impl {
   void check_loop(double t) {
     if (dynamics.constraint_rows() == 0 || (stats.drift_allowed && !project)) return;
     const double violation = project ? dynamics.project(t, y) : dynamics.constraint_violation(t, y);
+    if (violation > kOpenLoop) stop_if_past_range(t);
     if (violation > kOpenLoop)
       fail(options,
            "joint " + dynamics.worst_joint(t, y) + " came " + format_significant(violation, 2) +
                " m apart (the loop opened)",
            project ? "try a smaller step or tighter rtol/atol" : "try stabilization by projection", t);
   }
+  /// A driven run that failed by t with fixed steps, which jump over the limit the
+  /// adaptive ones meet, or reached a sample at t: when the loops cannot close at t with
+  /// the drivers on their motion, stops with the limit's one line at the time bisection
+  /// finds from the last sample's state (the largest at which they still close).
+  void stop_if_past_range(double t) {
+    if (mechanism->drivers.empty() || dynamics.constraint_rows() == 0 || info(options.integrator).adaptive ||
+        !anchor.allFinite())
+      return;
+    Vector closed = anchor, trial;
+    const auto closes = [&](double at) {
+      trial = closed;
+      return dynamics.project(at, trial) <= kClosed;
+    };
+    double a = anchor_t, b = t;
+    if (closes(b)) return;
+    // A step may have carried the sample past the limit already: back from it until the
+    // loops close (the anchor's q is near the limit, so Newton starts near there too).
+    for (double back = options.dt; !closes(a); back *= 2) {
+      if (a <= 0) return;
+      b = a;
+      a = std::max(0.0, anchor_t - back);
+    }
+    closed = trial;
+    while (b - a > 1e-12 * std::max(1.0, b)) {
+      const double m = (a + b) / 2;
+      if (closes(m)) {
+        a = m;
+        closed = trial;
+      } else {
+        b = m;
+      }
+    }
+    stop_at_limit(a, closed);
+  }
+  [[noreturn]] void stop_at_limit(double t, const Vector& at) {
+    throw Error::input(driven_stop_message(
+        *system_ptr, t, past_the_limit(*system_ptr, dynamics, t, at) + "; " + case_text(options) + ")"));
+  }
   [[noreturn]] void fail_step(ode::StepStatus status, double t, double h) {
+    stop_if_past_range(t + (std::isnan(h) ? 0.0 : h));
     // Driven past the mechanism's range: the kept rows' Jacobian has nearly lost rank where
     // the step failed (a limit position or toggle), which no tolerance or step cures.
     if (!mechanism->drivers.empty() && dynamics.constraint_rows() > 0 && y.allFinite()) {
-      const double spread = dynamics.jacobian_spread(t, y);
-      if (spread < kDrivenPastItsRange)
-        throw Error::input(driven_stop_message(*system_ptr, t,
-                                               "cannot close beyond here (a limit position, its links in line: J's "
-                                               "smallest over largest singular value " +
-                                                   format_significant(spread, 2) + " there; " + case_text(options) +
-                                                   ")"));
+      if (dynamics.jacobian_spread(t, y) < kDrivenPastItsRange) stop_at_limit(t, y);
     }
     if (!std::isnan(rhs.singular_at))
       fail(options,
@@ -195,6 +232,8 @@ struct MechanismSimulation::Impl {
   std::unique_ptr<ode::Dopri5<double, kDynamic>> dopri5;
   std::unique_ptr<ode::Dop853<double, kDynamic>> dop853;
   std::int64_t k = 0;                        // fixed steps taken
+  Vector anchor;                             // fixed steps: the state at the last sample's grid time,
+  double anchor_t = 0;                       // and that time
   std::unique_ptr<KinematicPath> kinematic;  // instead of a step when the drivers take every degree of freedom
 };
 
@@ -323,6 +362,8 @@ void MechanismSimulation::Impl::advance(double t) {
   auto n = static_cast<std::int64_t>(std::llround(t / dt));
   const bool on_grid = std::fabs(t - static_cast<double>(n) * dt) <= tolerance;
   if (!on_grid) n = static_cast<std::int64_t>(std::floor(t / dt));
+  anchor = y;
+  anchor_t = static_cast<double>(k) * dt;
   while (k < n) {
     take(static_cast<double>(k) * dt, dt, y);
     ++k;
@@ -346,6 +387,9 @@ void MechanismSimulation::Impl::advance(double t) {
     partial(gauss);
     if (project) dynamics.project(t, sample_y);
   }
+  // A fixed step may carry a driven mechanism past its limit with its loops still near
+  // closed (a drift under kOpenLoop): no sample is written from there.
+  if (!mechanism->drivers.empty() && dynamics.constraint_rows() > 0) stop_if_past_range(t);
 }
 
 MechanismSimulation::MechanismSimulation(const sym::System& system, const GiNaC::exmap& initial,
