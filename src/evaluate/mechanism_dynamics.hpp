@@ -117,6 +117,14 @@ class MechanismDynamics {
   /// Kinematic only. det J at y's q: its sign changes where a path crosses a singular point.
   [[nodiscard]] double jacobian_determinant(double t, const Eigen::VectorXd& y) const;
 
+  /// `values` as sym::System::quantity() reads them (maximal coordinates, their rates, t)
+  /// compiled over this case's state, for evaluate_over_state().
+  [[nodiscard]] Program compile_over_state(const std::vector<GiNaC::ex>& values) const;
+  /// Runs such a program at (t, y): its output_count() values into `out`; `scratch` holds
+  /// its scratch_size() doubles.
+  void evaluate_over_state(const Program& program, double t, const Eigen::VectorXd& y, double* out,
+                           double* scratch) const;
+
   /// Everything a sample reports at (t, y), from one evaluation of the unknowns; with
   /// `kinematics` the accelerations and the named points' motion too (compiled on first need).
   void sample(double t, const Eigen::VectorXd& y, MechanismSample& out, bool kinematics = false) const;

@@ -17,6 +17,7 @@
 #include "integrate/explicit_rk.hpp"
 #include "integrate/gauss_legendre.hpp"
 #include "integrate/kinematic_path.hpp"
+#include "integrate/load_guard.hpp"
 #include "integrate/step_budget.hpp"
 #include "integrate/symplectic_euler.hpp"
 
@@ -37,12 +38,16 @@ constexpr double kDrivenPastItsRange = 1e-4;
 // The largest |C| (m, rad) at which a projected state counts as closed.
 constexpr double kClosed = 1e-10;
 
-/// f(t, y) for the integrators; remembers where the case's matrix was singular.
+/// f(t, y) for the integrators; remembers where the case's matrix was singular, and the
+/// first load out of its range where y' stopped being finite (a stage a step may reject).
 struct Rhs {
   const eval::MechanismDynamics* dynamics;
+  LoadGuard* loads;
   double singular_at = std::numeric_limits<double>::quiet_NaN();
+  std::string bad_load;
   void operator()(double t, const Vector& y, Vector& dydt) {
     if (!dynamics->derivative(t, y, dydt) && std::isnan(singular_at)) singular_at = t;
+    if (bad_load.empty() && !loads->empty() && !dydt.allFinite()) bad_load = loads->check(t, y);
   }
 };
 
@@ -68,7 +73,8 @@ struct MechanismSimulation::Impl {
         system_ptr(&system),
         mechanism(&system.mechanism()),
         dynamics(system, static_cast<CaseId>(o.case_id), std::move(derived)),
-        rhs{&dynamics, std::nan("")} {
+        loads(system, dynamics),
+        rhs{&dynamics, &loads, std::nan(""), {}} {
     // Kinematic analysis integrates nothing: the stabilization has nothing to stabilize.
     stats.kinematic = dynamics.kinematic();
     if (o.stabilization == Stabilization::baumgarte && !stats.kinematic)
@@ -190,6 +196,7 @@ struct MechanismSimulation::Impl {
         *system_ptr, t, past_the_limit(*system_ptr, dynamics, t, at) + "; " + case_text(options) + ")"));
   }
   [[noreturn]] void fail_step(ode::StepStatus status, double t, double h) {
+    if (!rhs.bad_load.empty()) throw Error::input(rhs.bad_load);
     stop_if_past_range(t + (std::isnan(h) ? 0.0 : h));
     // Driven past the mechanism's range: the kept rows' Jacobian has nearly lost rank where
     // the step failed (a limit position or toggle), which no tolerance or step cures.
@@ -215,6 +222,7 @@ struct MechanismSimulation::Impl {
   const sym::System* system_ptr;
   const Mechanism* mechanism;
   eval::MechanismDynamics dynamics;
+  LoadGuard loads;
   Rhs rhs;
   bool project = false;
   Vector y, sample_y;
@@ -321,15 +329,33 @@ void MechanismSimulation::Impl::start_stepper() {
 void MechanismSimulation::Impl::advance(double t) {
   if (kinematic) {
     kinematic->advance(t, y);
+    loads.require(t, y);
     sample_y = y;
     return;
   }
   if (dopri5 || dop853) {
     auto run = [&](auto& stepper) {
       while (stepper.t() < t) {
+        const double from = stepper.t();
         const ode::StepStatus status = stepper.step(rhs);
         if (status != ode::StepStatus::ok) fail_step(status, stepper.t(), stepper.next_step());  // the failed attempt
         y = stepper.y();
+        if (std::string bad = loads.check(stepper.t(), y); !bad.empty()) {
+          // Where in the step the value left its range: bisection on the dense output.
+          double a = from, b = stepper.t();
+          Vector between;
+          while (b - a > 1e-12 * std::max(1.0, b)) {
+            const double m = (a + b) / 2;
+            stepper.dense(rhs, m, between);
+            if (std::string at_m = loads.check(m, between); at_m.empty()) {
+              a = m;
+            } else {
+              b = m;
+              bad = std::move(at_m);
+            }
+          }
+          throw Error::input(bad);
+        }
         check_loop(stepper.t());
         if (project) stepper.replace_state(rhs, y);
         if (!after_step(stepper.t())) continue;
@@ -340,6 +366,7 @@ void MechanismSimulation::Impl::advance(double t) {
       }
       stepper.dense(rhs, t, sample_y);
       if (project && t != stepper.t()) dynamics.project(t, sample_y);
+      loads.require(t, sample_y);
     };
     if (dopri5)
       run(*dopri5);
@@ -367,6 +394,7 @@ void MechanismSimulation::Impl::advance(double t) {
   while (k < n) {
     take(static_cast<double>(k) * dt, dt, y);
     ++k;
+    loads.require(static_cast<double>(k) * dt, y);
     check_loop(static_cast<double>(k) * dt);
     after_step(static_cast<double>(k) * dt);
   }
@@ -386,6 +414,7 @@ void MechanismSimulation::Impl::advance(double t) {
     partial(rk4);
     partial(gauss);
     if (project) dynamics.project(t, sample_y);
+    loads.require(t, sample_y);
   }
   // A fixed step may carry a driven mechanism past its limit with its loops still near
   // closed (a drift under kOpenLoop): no sample is written from there.
