@@ -158,31 +158,39 @@ struct MechanismSimulation::Impl {
            project ? "try a smaller step or tighter rtol/atol" : "try stabilization by projection", t);
   }
   /// A driven run that failed by t with fixed steps, which jump over the limit the
-  /// adaptive ones meet, or reached a sample at t: when the loops cannot close at t with
-  /// the drivers on their motion, stops with the limit's one line at the time bisection
-  /// finds from the last sample's state (the largest at which they still close).
-  void stop_if_past_range(double t) {
+  /// adaptive ones meet, or reached a sample `at_t` at t: when the loops cannot close at t
+  /// with the drivers on their motion, stops with the limit's one line at the last time
+  /// they close, found by marching from the last sample's state in steps of dt (each
+  /// closed from the one before, so Newton starts near) and bisecting the step they fail in.
+  void stop_if_past_range(double t, const Vector* at_t = nullptr) {
     if (mechanism->drivers.empty() || dynamics.constraint_rows() == 0 || info(options.integrator).adaptive ||
         !anchor.allFinite())
       return;
-    Vector closed = anchor, trial;
-    const auto closes = [&](double at) {
-      trial = closed;
-      return dynamics.project(at, trial) <= kClosed;
+    Vector trial;
+    const auto closes = [&](const Vector& from, double when) {
+      trial = from;
+      return dynamics.project(when, trial) <= kClosed;
     };
-    double a = anchor_t, b = t;
-    if (closes(b)) return;
+    if (at_t != nullptr && closes(*at_t, t)) return;
     // A step may have carried the sample past the limit already: back from it until the
     // loops close (the anchor's q is near the limit, so Newton starts near there too).
-    for (double back = options.dt; !closes(a); back *= 2) {
+    double a = anchor_t;
+    for (double back = options.dt; !closes(anchor, a); back *= 2) {
       if (a <= 0) return;
-      b = a;
       a = std::max(0.0, anchor_t - back);
     }
-    closed = trial;
+    Vector closed = trial;
+    double b = a;
+    for (;;) {
+      if (a >= t) return;  // they close all the way to t: no limit
+      b = std::min(t, a + options.dt);
+      if (!closes(closed, b)) break;
+      a = b;
+      closed = trial;
+    }
     while (b - a > 1e-12 * std::max(1.0, b)) {
       const double m = (a + b) / 2;
-      if (closes(m)) {
+      if (closes(closed, m)) {
         a = m;
         closed = trial;
       } else {
@@ -418,7 +426,7 @@ void MechanismSimulation::Impl::advance(double t) {
   }
   // A fixed step may carry a driven mechanism past its limit with its loops still near
   // closed (a drift under kOpenLoop): no sample is written from there.
-  if (!mechanism->drivers.empty() && dynamics.constraint_rows() > 0) stop_if_past_range(t);
+  if (!mechanism->drivers.empty() && dynamics.constraint_rows() > 0) stop_if_past_range(t, &sample_y);
 }
 
 MechanismSimulation::MechanismSimulation(const sym::System& system, const GiNaC::exmap& initial,

@@ -177,6 +177,31 @@ INSTANTIATE_TEST_SUITE_P(EveryFixedStepIntegrator, FixedStepPastItsLimit,
                            return name;
                          });
 
+// crank-rocker-on-cart.toml: a driven mechanism that goes all the way round, integrated
+// by RK4 and sampled every 0.5 s (the crank turns 3 rad between samples): no limit is
+// claimed, and the samples are the ones a run sampled every 0.01 s gives on the same grid
+// of steps, to round-off. Euler's drift opens the loop there: "the loop opened", not a limit.
+TEST(SimulateKinematic, FixedStepCoarseSamplesOfAFullTurnAreNoLimit) {
+  const auto run = [](const std::string& integrator, const std::string& every) {
+    return run_linkage({"simulate", "--mechanism", mechanism_file("crank-rocker-on-cart.toml"), "--quiet",
+                        "--integrator", integrator, "--dt", "0.001", "--duration", "3", "--every", every, "--columns",
+                        "t,2.theta,4.theta,cart.x,M.torque"});
+  };
+  const RunResult coarse = run("rk4", "0.5"), fine = run("rk4", "0.01");
+  ASSERT_EQ(coarse.exit_code, 0) << coarse.err;
+  ASSERT_EQ(fine.exit_code, 0) << fine.err;
+  const Table a = parse_csv(coarse.out), b = parse_csv(fine.out);
+  ASSERT_EQ(a.rows.size(), 7U);
+  ASSERT_EQ(b.rows.size(), 301U);
+  for (std::size_t i = 0; i < a.rows.size(); ++i)
+    for (std::size_t c = 0; c < a.columns.size(); ++c)
+      EXPECT_NEAR(a.rows[i][c], b.rows[50 * i][c], 1e-9 * (1 + std::fabs(b.rows[50 * i][c])))
+          << a.columns[c] << " t " << a.rows[i][0];
+  const RunResult euler = run("euler", "0.5");
+  EXPECT_EQ(euler.exit_code, 3) << euler.err;
+  EXPECT_NE(euler.err.find("(the loop opened)"), std::string::npos) << euler.err;
+}
+
 // parallelogram-driven.toml: every link in line at th2 = pi (t = 1.320796 s), which no
 // output time (every 0.1 s, every 0.07 s) or continuation step lands on. The run stops
 // there with one line (not on into either assembly), every row before it finite.
