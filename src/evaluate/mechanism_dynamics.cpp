@@ -797,9 +797,16 @@ void MechanismDynamics::evaluate_over_state(const Program& program, double t, co
   program.run(inputs_.data(), out, scratch);
 }
 
-double MechanismDynamics::jacobian_determinant(double t, const Eigen::VectorXd& y) const {
+int MechanismDynamics::jacobian_sign(double t, const Eigen::VectorXd& y) const {
   evaluate_constraints(t, y);
-  return J_.partialPivLu().determinant();
+  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(J_);
+  int sign = static_cast<int>(lu.permutationP().determinant());
+  for (Eigen::Index i = 0; i < lu.matrixLU().rows(); ++i) {
+    const double pivot = lu.matrixLU()(i, i);
+    if (!(pivot != 0)) return 0;
+    if (pivot < 0) sign = -sign;
+  }
+  return sign;
 }
 
 void MechanismDynamics::sample(double t, const Eigen::VectorXd& y, MechanismSample& out, bool kinematics) const {

@@ -114,8 +114,10 @@ class MechanismDynamics {
   /// The kept rows' Jacobian J's smallest over its largest singular value at y's q (0:
   /// singular; 1 without kept rows).
   [[nodiscard]] double jacobian_spread(double t, const Eigen::VectorXd& y) const;
-  /// Kinematic only. det J at y's q: its sign changes where a path crosses a singular point.
-  [[nodiscard]] double jacobian_determinant(double t, const Eigen::VectorXd& y) const;
+  /// Kinematic only. The sign of det J at y's q (1, -1; 0 when singular), from J's LU so
+  /// that no product of pivots under- or overflows: it changes where a path crosses a
+  /// singular point.
+  [[nodiscard]] int jacobian_sign(double t, const Eigen::VectorXd& y) const;
 
   /// `values` as sym::System::quantity() reads them (maximal coordinates, their rates, t)
   /// compiled over this case's state, for evaluate_over_state().

@@ -56,7 +56,7 @@ KinematicPath::KinematicPath(const sym::System& system, const eval::MechanismDyn
   dynamics.solve_rates(0, y);
   if (dynamics.jacobian_spread(0, y) < kSingularSpread)
     stop(0, "is at a toggle or limit position at the start (" + in_line(0, y) + ")");
-  determinant_ = dynamics.jacobian_determinant(0, y);
+  sign_ = dynamics.jacobian_sign(0, y);
   y[y.size() - 1] = 0;
   dy_ = derivative(0, y);
 }
@@ -158,8 +158,7 @@ void KinematicPath::advance(double t, Eigen::VectorXd& y) {
     if (solve_at(t_, y, dy_, to, next)) {
       if (dynamics_->jacobian_spread(to, next) < kSingularSpread)
         stop(to, "reached a toggle or limit position (" + in_line(to, next) + ": the driver cannot move it on)");
-      if (std::signbit(dynamics_->jacobian_determinant(to, next)) != std::signbit(determinant_))
-        crossed(t_, y, to, next);
+      if (dynamics_->jacobian_sign(to, next) != sign_) crossed(t_, y, to, next);
       done = work(t_, y, to, next, std::nullopt, 0);
     }
     if (!done) {
@@ -171,7 +170,7 @@ void KinematicPath::advance(double t, Eigen::VectorXd& y) {
     next[next.size() - 1] = y[y.size() - 1] + *done;
     ++accepted_;
     y = next;
-    determinant_ = dynamics_->jacobian_determinant(to, next);
+    sign_ = dynamics_->jacobian_sign(to, next);
     dy_ = derivative(to, next);
     t_ = to;
     h_ = std::max(h_, 2 * h);
@@ -180,12 +179,12 @@ void KinematicPath::advance(double t, Eigen::VectorXd& y) {
 
 void KinematicPath::crossed(double a, Eigen::VectorXd ya, double b, Eigen::VectorXd yb) {
   // det J changed sign within the step: bisect on the path between its ends for where.
-  const bool sign_a = std::signbit(dynamics_->jacobian_determinant(a, ya));
+  const int sign_a = dynamics_->jacobian_sign(a, ya);
   Eigen::VectorXd ym;
   while (b - a > kShortestStep * std::max(1.0, b)) {
     const double m = (a + b) / 2;
     if (!solve_between(a, ya, b, yb, m, ym)) break;
-    if (std::signbit(dynamics_->jacobian_determinant(m, ym)) == sign_a) {
+    if (dynamics_->jacobian_sign(m, ym) == sign_a) {
       a = m;
       ya = ym;
     } else {

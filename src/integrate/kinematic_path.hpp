@@ -62,8 +62,8 @@ class KinematicPath {
   const eval::MechanismDynamics* dynamics_;
   double energy_scale_ = 1;
   double t_ = 0, h_ = 0;
-  Eigen::VectorXd dy_;      // y' at (t_, y)
-  double determinant_ = 0;  // det J at (t_, y)
+  Eigen::VectorXd dy_;  // y' at (t_, y)
+  int sign_ = 0;        // the sign of det J at (t_, y)
   std::vector<double> nodes_, weights_;
   std::int64_t accepted_ = 0, rejected_ = 0, solves_ = 0;
 };
