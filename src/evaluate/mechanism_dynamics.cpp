@@ -784,6 +784,31 @@ double MechanismDynamics::jacobian_spread(double t, const Eigen::VectorXd& y) co
   return s.size() == 0 || !(s[0] > 0) ? 0.0 : s[s.size() - 1] / s[0];
 }
 
+Program MechanismDynamics::compile_over_state(const std::vector<GiNaC::ex>& values) const {
+  std::vector<ex> prepared;
+  prepared.reserve(values.size());
+  for (const ex& e : values) prepared.push_back(prepare(e));
+  return compile(prepared, input_symbols_);
+}
+
+void MechanismDynamics::evaluate_over_state(const Program& program, double t, const Eigen::VectorXd& y, double* out,
+                                            double* scratch) const {
+  fill_inputs(t, y);
+  program.run(inputs_.data(), out, scratch);
+}
+
+int MechanismDynamics::jacobian_sign(double t, const Eigen::VectorXd& y) const {
+  evaluate_constraints(t, y);
+  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(J_);
+  int sign = static_cast<int>(lu.permutationP().determinant());
+  for (Eigen::Index i = 0; i < lu.matrixLU().rows(); ++i) {
+    const double pivot = lu.matrixLU()(i, i);
+    if (!(pivot != 0)) return 0;
+    if (pivot < 0) sign = -sign;
+  }
+  return sign;
+}
+
 void MechanismDynamics::sample(double t, const Eigen::VectorXd& y, MechanismSample& out, bool kinematics) const {
   compile_case();
   if (kinematics) compile_kinematics();

@@ -114,6 +114,18 @@ class MechanismDynamics {
   /// The kept rows' Jacobian J's smallest over its largest singular value at y's q (0:
   /// singular; 1 without kept rows).
   [[nodiscard]] double jacobian_spread(double t, const Eigen::VectorXd& y) const;
+  /// Kinematic only. The sign of det J at y's q (1, -1; 0 when singular), from J's LU so
+  /// that no product of pivots under- or overflows: it changes where a path crosses a
+  /// singular point.
+  [[nodiscard]] int jacobian_sign(double t, const Eigen::VectorXd& y) const;
+
+  /// `values` as sym::System::quantity() reads them (maximal coordinates, their rates, t)
+  /// compiled over this case's state, for evaluate_over_state().
+  [[nodiscard]] Program compile_over_state(const std::vector<GiNaC::ex>& values) const;
+  /// Runs such a program at (t, y): its output_count() values into `out`; `scratch` holds
+  /// its scratch_size() doubles.
+  void evaluate_over_state(const Program& program, double t, const Eigen::VectorXd& y, double* out,
+                           double* scratch) const;
 
   /// Everything a sample reports at (t, y), from one evaluation of the unknowns; with
   /// `kinematics` the accelerations and the named points' motion too (compiled on first need).

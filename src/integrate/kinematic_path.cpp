@@ -28,6 +28,16 @@ constexpr double kShortestStep = 1e-10;
 // residual of round-off moves q by its square root, so q is no longer fixed to the
 // digits the columns promise; the mechanism is at a toggle or limit position.
 const double kSingularSpread = std::sqrt(std::numeric_limits<double>::epsilon());
+// Two links are in line when the sine of the angle between their lines is below this.
+constexpr double kInLine = 1e-2;
+
+/// links_in_line() at the pose of (t, y).
+std::string links_in_line_at(const sym::System& system, const eval::MechanismDynamics& dynamics, double t,
+                             const Eigen::VectorXd& y) {
+  eval::MechanismSample s;
+  dynamics.sample(t, y, s);
+  return links_in_line(system, s.pose);
+}
 
 }  // namespace
 
@@ -44,7 +54,9 @@ KinematicPath::KinematicPath(const sym::System& system, const eval::MechanismDyn
   }
   if (!dynamics.close_positions(0, y)) stop(0, "cannot close at the start");
   dynamics.solve_rates(0, y);
-  if (dynamics.jacobian_spread(0, y) < kSingularSpread) stop(0, "is at a toggle or limit position at the start");
+  if (dynamics.jacobian_spread(0, y) < kSingularSpread)
+    stop(0, "is at a toggle or limit position at the start (" + in_line(0, y) + ")");
+  sign_ = dynamics.jacobian_sign(0, y);
   y[y.size() - 1] = 0;
   dy_ = derivative(0, y);
 }
@@ -145,31 +157,145 @@ void KinematicPath::advance(double t, Eigen::VectorXd& y) {
     std::optional<double> done;  // the work over the step, when it is taken
     if (solve_at(t_, y, dy_, to, next)) {
       if (dynamics_->jacobian_spread(to, next) < kSingularSpread)
-        stop(to, "reached a toggle or limit position (its links in line: the driver cannot move it on)");
+        stop(to, "reached a toggle or limit position (" + in_line(to, next) + ": the driver cannot move it on)");
+      if (dynamics_->jacobian_sign(to, next) != sign_) crossed(t_, y, to, next);
       done = work(t_, y, to, next, std::nullopt, 0);
     }
     if (!done) {
       ++rejected_;
       h_ = h / 2;
-      if (h_ < kShortestStep * std::max(1.0, t_))
-        stop(t_,
-             "cannot close beyond here (a limit position, its links in line: J's smallest over largest singular "
-             "value " +
-                 format_significant(dynamics_->jacobian_spread(t_, y), 2) + " there)");
+      if (h_ < kShortestStep * std::max(1.0, t_)) stop(t_, past_the_limit(*system_, *dynamics_, t_, y) + ")");
       continue;
     }
     next[next.size() - 1] = y[y.size() - 1] + *done;
     ++accepted_;
     y = next;
+    sign_ = dynamics_->jacobian_sign(to, next);
     dy_ = derivative(to, next);
     t_ = to;
     h_ = std::max(h_, 2 * h);
   }
 }
 
+void KinematicPath::crossed(double a, Eigen::VectorXd ya, double b, Eigen::VectorXd yb) {
+  // det J changed sign within the step: bisect on the path between its ends for where.
+  const int sign_a = dynamics_->jacobian_sign(a, ya);
+  Eigen::VectorXd ym;
+  while (b - a > kShortestStep * std::max(1.0, b)) {
+    const double m = (a + b) / 2;
+    if (!solve_between(a, ya, b, yb, m, ym)) break;
+    if (dynamics_->jacobian_sign(m, ym) == sign_a) {
+      a = m;
+      ya = ym;
+    } else {
+      b = m;
+      yb = ym;
+    }
+  }
+  const bool at_a = dynamics_->jacobian_spread(a, ya) < dynamics_->jacobian_spread(b, yb);
+  stop(at_a ? a : b, "passes a change point (" + in_line(at_a ? a : b, at_a ? ya : yb) +
+                         ": J is singular and the mechanism may go on in either assembly, which the driver "
+                         "cannot decide)");
+}
+
+std::string KinematicPath::in_line(double t, const Eigen::VectorXd& y) const {
+  return links_in_line_at(*system_, *dynamics_, t, y);
+}
+
 void KinematicPath::stop(double t, const std::string& what) const {
   throw Error::input(driven_stop_message(*system_, t, what) +
                      " (kinematic analysis: the drivers take every degree of freedom)");
+}
+
+std::string links_in_line(const sym::System& system, const std::vector<double>& pose) {
+  const Mechanism& mechanism = system.mechanism();
+  GiNaC::exmap at = system.parameter_values();
+  for (const auto& [symbol, expression] : system.constants()) at[symbol] = expression;
+  const std::size_t bodies = system.bodies().size();
+  for (std::size_t b = 0; b < bodies && 3 * b + 2 < pose.size(); ++b) {
+    const sym::BodySystem& body = system.bodies()[b];
+    at[body.x.q] = pose[3 * b];
+    at[body.y.q] = pose[3 * b + 1];
+    if (body.rotates) at[body.theta.q] = pose[3 * b + 2];
+  }
+  // Slot 0 the ground, slot b + 1 body b: its joints, then its line's unit direction.
+  const auto slot = [&](const std::string& name) { return static_cast<std::size_t>(mechanism.body_index(name) + 1); };
+  std::vector<std::vector<std::pair<std::size_t, int>>> joints(bodies + 1);  // (joint, side)
+  for (std::size_t j = 0; j < mechanism.joints.size(); ++j)
+    for (int side = 0; side < 2; ++side)
+      joints[slot(mechanism.joints[j].bodies[static_cast<std::size_t>(side)])].emplace_back(j, side);
+  std::vector<std::optional<Eigen::Vector2d>> line(bodies + 1);
+  for (std::size_t b = 0; b <= bodies; ++b) {
+    if (joints[b].size() != 2) continue;  // binary links only: two joints give one line
+    std::vector<Eigen::Vector2d> pins;
+    std::optional<Eigen::Vector2d> axis;
+    for (const auto& [j, side] : joints[b]) {
+      const Joint& joint = mechanism.joints[j];
+      switch (joint.type) {
+        case JointType::pin: {
+          const sym::Vec2 p =
+              system.point_position(static_cast<int>(b) - 1, joint.points[static_cast<std::size_t>(side)]);
+          pins.emplace_back(sym::evaluate(p.x, at), sym::evaluate(p.y, at));
+          break;
+        }
+        case JointType::slider: {
+          // The axis, in the frame of bodies[0], turned into the world.
+          const sym::Vec2 a = sym::rotate(
+              slot(joint.bodies[0]) == 0 ? GiNaC::ex(0) : GiNaC::ex(system.bodies()[slot(joint.bodies[0]) - 1].theta.q),
+              {system.quantity(joint.axis->x, false), system.quantity(joint.axis->y, false)});
+          axis = Eigen::Vector2d(sym::evaluate(a.x, at), sym::evaluate(a.y, at));
+          break;
+        }
+      }
+    }
+    const Eigen::Vector2d d = axis               ? *axis
+                              : pins.size() == 2 ? Eigen::Vector2d(pins[1] - pins[0])
+                                                 : Eigen::Vector2d::Zero();
+    if (d.norm() > 0 && d.allFinite()) line[b] = d.normalized();
+  }
+  // Bodies joined by a pin whose lines are parallel, grouped; else the pair nearest to it.
+  std::vector<std::size_t> group(bodies + 1);
+  for (std::size_t b = 0; b <= bodies; ++b) group[b] = b;
+  const auto root = [&](std::size_t b) {
+    while (group[b] != b) b = group[b];
+    return b;
+  };
+  double nearest = std::numeric_limits<double>::infinity();
+  std::array<std::size_t, 2> nearest_pair{};
+  for (const Joint& joint : mechanism.joints) {
+    if (joint.type != JointType::pin) continue;  // a slider's bodies share its axis always
+    const std::size_t a = slot(joint.bodies[0]), b = slot(joint.bodies[1]);
+    if (!line[a] || !line[b]) continue;
+    const double sine = std::fabs(line[a]->x() * line[b]->y() - line[a]->y() * line[b]->x());
+    if (sine < kInLine) group[root(a)] = root(b);
+    if (sine < nearest) {
+      nearest = sine;
+      nearest_pair = {a, b};
+    }
+  }
+  const auto name = [&](std::size_t b) { return b == 0 ? std::string(kGround) : mechanism.bodies[b - 1].name; };
+  const auto listed = [](const std::vector<std::string>& names) {
+    std::string text;
+    for (std::size_t k = 0; k < names.size(); ++k)
+      text += (k == 0 ? "" : k + 1 == names.size() ? " and " : ", ") + names[k];
+    return text + " in line";
+  };
+  std::string text;
+  for (std::size_t r = 0; r <= bodies; ++r) {
+    std::vector<std::string> names;
+    for (std::size_t b = 0; b <= bodies; ++b)
+      if (root(b) == r && line[b]) names.push_back(name(b));
+    if (names.size() >= 2) text += (text.empty() ? "" : "; ") + listed(names);
+  }
+  if (text.empty() && std::isfinite(nearest)) text = listed({name(nearest_pair[0]), name(nearest_pair[1])});
+  return text.empty() ? "its links in line" : text;
+}
+
+std::string past_the_limit(const sym::System& system, const eval::MechanismDynamics& dynamics, double t,
+                           const Eigen::VectorXd& y) {
+  return "cannot close beyond here (a limit position, " + links_in_line_at(system, dynamics, t, y) +
+         ": J's smallest over largest singular value " + format_significant(dynamics.jacobian_spread(t, y), 2) +
+         " there";
 }
 
 std::string driven_stop_message(const sym::System& system, double t, const std::string& what) {

@@ -51,6 +51,11 @@ class KinematicPath {
   std::optional<double> work(double a, const Eigen::VectorXd& ya, double b, const Eigen::VectorXd& yb,
                              std::optional<double> whole, int depth);
   std::optional<double> gauss(double a, const Eigen::VectorXd& ya, double b, const Eigen::VectorXd& yb);
+  /// Stops the run where det J changes sign between (a, ya) and (b, yb): a change point
+  /// (or any singular point) stepped over, found by bisection along the step.
+  [[noreturn]] void crossed(double a, Eigen::VectorXd ya, double b, Eigen::VectorXd yb);
+  /// links_in_line() at (t, y).
+  [[nodiscard]] std::string in_line(double t, const Eigen::VectorXd& y) const;
   [[noreturn]] void stop(double t, const std::string& what) const;
 
   const sym::System* system_;
@@ -58,9 +63,21 @@ class KinematicPath {
   double energy_scale_ = 1;
   double t_ = 0, h_ = 0;
   Eigen::VectorXd dy_;  // y' at (t_, y)
+  int sign_ = 0;        // the sign of det J at (t_, y)
   std::vector<double> nodes_, weights_;
   std::int64_t accepted_ = 0, rejected_ = 0, solves_ = 0;
 };
+
+/// "3 and 4 in line": the bodies joined by pins whose joint-to-joint lines (for a body on a
+/// slider, its axis) are parallel at `pose` (per body x, y, theta), grouped; the nearest pair
+/// when none is; "its links in line" when no body has a line. For a stop message.
+[[nodiscard]] std::string links_in_line(const sym::System& system, const std::vector<double>& pose);
+
+/// "cannot close beyond here (a limit position, 3 and 4 in line: J's smallest over largest
+/// singular value S there", at (t, y): what driven_stop_message() says at a limit position
+/// (the caller closes the parenthesis).
+[[nodiscard]] std::string past_the_limit(const sym::System& system, const eval::MechanismDynamics& dynamics, double t,
+                                         const Eigen::VectorXd& y);
 
 /// "at t = T s driver 'M' at V rad: the loop through B WHAT; valid: ...": where a driven
 /// mechanism cannot go on, for the one line that ends its run.

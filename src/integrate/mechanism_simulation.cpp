@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -16,6 +17,7 @@
 #include "integrate/explicit_rk.hpp"
 #include "integrate/gauss_legendre.hpp"
 #include "integrate/kinematic_path.hpp"
+#include "integrate/load_guard.hpp"
 #include "integrate/step_budget.hpp"
 #include "integrate/symplectic_euler.hpp"
 
@@ -33,13 +35,19 @@ constexpr double kOpenLoop = 1e-3;
 // singular value falls as the square root of the distance to a limit position, so a step
 // underflowing to round-off there leaves it near sqrt of a step's relative size.
 constexpr double kDrivenPastItsRange = 1e-4;
+// The largest |C| (m, rad) at which a projected state counts as closed.
+constexpr double kClosed = 1e-10;
 
-/// f(t, y) for the integrators; remembers where the case's matrix was singular.
+/// f(t, y) for the integrators; remembers where the case's matrix was singular, and the
+/// first load out of its range where y' stopped being finite (a stage a step may reject).
 struct Rhs {
   const eval::MechanismDynamics* dynamics;
+  LoadGuard* loads;
   double singular_at = std::numeric_limits<double>::quiet_NaN();
+  std::string bad_load;
   void operator()(double t, const Vector& y, Vector& dydt) {
     if (!dynamics->derivative(t, y, dydt) && std::isnan(singular_at)) singular_at = t;
+    if (bad_load.empty() && !loads->empty() && !dydt.allFinite()) bad_load = loads->check(t, y);
   }
 };
 
@@ -65,7 +73,8 @@ struct MechanismSimulation::Impl {
         system_ptr(&system),
         mechanism(&system.mechanism()),
         dynamics(system, static_cast<CaseId>(o.case_id), std::move(derived)),
-        rhs{&dynamics, std::nan("")} {
+        loads(system, dynamics),
+        rhs{&dynamics, &loads, std::nan(""), {}} {
     // Kinematic analysis integrates nothing: the stabilization has nothing to stabilize.
     stats.kinematic = dynamics.kinematic();
     if (o.stabilization == Stabilization::baumgarte && !stats.kinematic)
@@ -141,23 +150,66 @@ struct MechanismSimulation::Impl {
   void check_loop(double t) {
     if (dynamics.constraint_rows() == 0 || (stats.drift_allowed && !project)) return;
     const double violation = project ? dynamics.project(t, y) : dynamics.constraint_violation(t, y);
+    if (violation > kOpenLoop) stop_if_past_range(t);
     if (violation > kOpenLoop)
       fail(options,
            "joint " + dynamics.worst_joint(t, y) + " came " + format_significant(violation, 2) +
                " m apart (the loop opened)",
            project ? "try a smaller step or tighter rtol/atol" : "try stabilization by projection", t);
   }
+  /// A driven run that failed by t with fixed steps, which jump over the limit the
+  /// adaptive ones meet, or reached a sample `at_t` at t: when the loops cannot close at t
+  /// with the drivers on their motion, stops with the limit's one line at the last time
+  /// they close, found by marching from the last sample's state in steps of dt (each
+  /// closed from the one before, so Newton starts near) and bisecting the step they fail in.
+  void stop_if_past_range(double t, const Vector* at_t = nullptr) {
+    if (mechanism->drivers.empty() || dynamics.constraint_rows() == 0 || info(options.integrator).adaptive ||
+        !anchor.allFinite())
+      return;
+    Vector trial;
+    const auto closes = [&](const Vector& from, double when) {
+      trial = from;
+      return dynamics.project(when, trial) <= kClosed;
+    };
+    if (at_t != nullptr && closes(*at_t, t)) return;
+    // A step may have carried the sample past the limit already: back from it until the
+    // loops close (the anchor's q is near the limit, so Newton starts near there too).
+    double a = anchor_t;
+    for (double back = options.dt; !closes(anchor, a); back *= 2) {
+      if (a <= 0) return;
+      a = std::max(0.0, anchor_t - back);
+    }
+    Vector closed = trial;
+    double b = a;
+    for (;;) {
+      if (a >= t) return;  // they close all the way to t: no limit
+      b = std::min(t, a + options.dt);
+      if (!closes(closed, b)) break;
+      a = b;
+      closed = trial;
+    }
+    while (b - a > 1e-12 * std::max(1.0, b)) {
+      const double m = (a + b) / 2;
+      if (closes(closed, m)) {
+        a = m;
+        closed = trial;
+      } else {
+        b = m;
+      }
+    }
+    stop_at_limit(a, closed);
+  }
+  [[noreturn]] void stop_at_limit(double t, const Vector& at) {
+    throw Error::input(driven_stop_message(
+        *system_ptr, t, past_the_limit(*system_ptr, dynamics, t, at) + "; " + case_text(options) + ")"));
+  }
   [[noreturn]] void fail_step(ode::StepStatus status, double t, double h) {
+    if (!rhs.bad_load.empty()) throw Error::input(rhs.bad_load);
+    stop_if_past_range(t + (std::isnan(h) ? 0.0 : h));
     // Driven past the mechanism's range: the kept rows' Jacobian has nearly lost rank where
     // the step failed (a limit position or toggle), which no tolerance or step cures.
     if (!mechanism->drivers.empty() && dynamics.constraint_rows() > 0 && y.allFinite()) {
-      const double spread = dynamics.jacobian_spread(t, y);
-      if (spread < kDrivenPastItsRange)
-        throw Error::input(driven_stop_message(*system_ptr, t,
-                                               "cannot close beyond here (a limit position, its links in line: J's "
-                                               "smallest over largest singular value " +
-                                                   format_significant(spread, 2) + " there; " + case_text(options) +
-                                                   ")"));
+      if (dynamics.jacobian_spread(t, y) < kDrivenPastItsRange) stop_at_limit(t, y);
     }
     if (!std::isnan(rhs.singular_at))
       fail(options,
@@ -178,6 +230,7 @@ struct MechanismSimulation::Impl {
   const sym::System* system_ptr;
   const Mechanism* mechanism;
   eval::MechanismDynamics dynamics;
+  LoadGuard loads;
   Rhs rhs;
   bool project = false;
   Vector y, sample_y;
@@ -195,6 +248,8 @@ struct MechanismSimulation::Impl {
   std::unique_ptr<ode::Dopri5<double, kDynamic>> dopri5;
   std::unique_ptr<ode::Dop853<double, kDynamic>> dop853;
   std::int64_t k = 0;                        // fixed steps taken
+  Vector anchor;                             // fixed steps: the state at the last sample's grid time,
+  double anchor_t = 0;                       // and that time
   std::unique_ptr<KinematicPath> kinematic;  // instead of a step when the drivers take every degree of freedom
 };
 
@@ -282,15 +337,33 @@ void MechanismSimulation::Impl::start_stepper() {
 void MechanismSimulation::Impl::advance(double t) {
   if (kinematic) {
     kinematic->advance(t, y);
+    loads.require(t, y);
     sample_y = y;
     return;
   }
   if (dopri5 || dop853) {
     auto run = [&](auto& stepper) {
       while (stepper.t() < t) {
+        const double from = stepper.t();
         const ode::StepStatus status = stepper.step(rhs);
         if (status != ode::StepStatus::ok) fail_step(status, stepper.t(), stepper.next_step());  // the failed attempt
         y = stepper.y();
+        if (std::string bad = loads.check(stepper.t(), y); !bad.empty()) {
+          // Where in the step the value left its range: bisection on the dense output.
+          double a = from, b = stepper.t();
+          Vector between;
+          while (b - a > 1e-12 * std::max(1.0, b)) {
+            const double m = (a + b) / 2;
+            stepper.dense(rhs, m, between);
+            if (std::string at_m = loads.check(m, between); at_m.empty()) {
+              a = m;
+            } else {
+              b = m;
+              bad = std::move(at_m);
+            }
+          }
+          throw Error::input(bad);
+        }
         check_loop(stepper.t());
         if (project) stepper.replace_state(rhs, y);
         if (!after_step(stepper.t())) continue;
@@ -301,6 +374,7 @@ void MechanismSimulation::Impl::advance(double t) {
       }
       stepper.dense(rhs, t, sample_y);
       if (project && t != stepper.t()) dynamics.project(t, sample_y);
+      loads.require(t, sample_y);
     };
     if (dopri5)
       run(*dopri5);
@@ -323,9 +397,12 @@ void MechanismSimulation::Impl::advance(double t) {
   auto n = static_cast<std::int64_t>(std::llround(t / dt));
   const bool on_grid = std::fabs(t - static_cast<double>(n) * dt) <= tolerance;
   if (!on_grid) n = static_cast<std::int64_t>(std::floor(t / dt));
+  anchor = y;
+  anchor_t = static_cast<double>(k) * dt;
   while (k < n) {
     take(static_cast<double>(k) * dt, dt, y);
     ++k;
+    loads.require(static_cast<double>(k) * dt, y);
     check_loop(static_cast<double>(k) * dt);
     after_step(static_cast<double>(k) * dt);
   }
@@ -345,7 +422,11 @@ void MechanismSimulation::Impl::advance(double t) {
     partial(rk4);
     partial(gauss);
     if (project) dynamics.project(t, sample_y);
+    loads.require(t, sample_y);
   }
+  // A fixed step may carry a driven mechanism past its limit with its loops still near
+  // closed (a drift under kOpenLoop): no sample is written from there.
+  if (!mechanism->drivers.empty() && dynamics.constraint_rows() > 0) stop_if_past_range(t, &sample_y);
 }
 
 MechanismSimulation::MechanismSimulation(const sym::System& system, const GiNaC::exmap& initial,

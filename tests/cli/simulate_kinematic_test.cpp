@@ -1,9 +1,11 @@
 // Issue 25: a driven file's [initial] placed on the drivers' motion at t = 0 (simulate and
 // solve), kinematic analysis when the drivers take every degree of freedom (its summary
 // and the note on integrator flags), and a triple-rocker driven past its limit position
-// stopping with one line and no non-finite row.
+// stopping with one line and no non-finite row, with every integrator; a parallelogram
+// stepped over its change point; the links in line named.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <regex>
 #include <string>
@@ -106,7 +108,7 @@ TEST(SimulateKinematic, TripleRockerDrivenPastItsLimitStopsWithOneLine) {
     EXPECT_EQ(r.exit_code, 2) << "Case " << case_id;
     EXPECT_TRUE(std::regex_search(r.err, std::regex("^linkage: error: at t = 0\\.5687[0-9]* s driver 'M' at "
                                                     "1\\.6375[0-9]* rad: the loop through B cannot close beyond "
-                                                    "here \\(a limit position, its links in line: [^;]*; "
+                                                    "here \\(a limit position, 3 and 4 in line: J's [^;]*; "
                                                     "valid: [^\n]*\n$")))
         << r.err;
     EXPECT_EQ(r.out.find("nan"), std::string::npos);
@@ -129,7 +131,7 @@ TEST(SimulateKinematic, MixedRunDrivenPastItsLimitStopsWithOneLine) {
     EXPECT_EQ(r.exit_code, 2) << "Case " << case_id;
     EXPECT_TRUE(std::regex_search(
         r.err, std::regex("^linkage: error: at t = 0\\.5687[0-9]* s driver 'M' at 1\\.6375[0-9]* rad: the loop "
-                          "through B cannot close beyond here \\(a limit position, its links in line: [^;]*; "
+                          "through B cannot close beyond here \\(a limit position, 3 and 4 in line: J's [^;]*; "
                           "dop853, Case " +
                           case_id + "\\); valid: [^\n]*\n$")))
         << r.err;
@@ -138,6 +140,102 @@ TEST(SimulateKinematic, MixedRunDrivenPastItsLimitStopsWithOneLine) {
     for (const std::vector<double>& row : table.rows)
       for (double v : row) EXPECT_TRUE(std::isfinite(v)) << "Case " << case_id << " t " << row[0];
   }
+}
+
+// triple-rocker-on-cart.toml with each fixed-step integrator: the step jumps over the
+// limit (the loop opens, or the implicit method's Newton fails, past it, or it drifts
+// on past it), and the run stops with the adaptive runs' one line at the limit (t = 0.568756 s, th2 = 1.637512 rad),
+// exit 2, every row before it finite.
+class FixedStepPastItsLimit : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(FixedStepPastItsLimit, StopsWithTheLimitsOneLine) {
+  // Gauss-Legendre's Newton does not converge on Case 1's first step here, limit or not.
+  const std::vector<std::string> cases =
+      GetParam() == "gauss-legendre" ? std::vector<std::string>{"2", "3"} : std::vector<std::string>{"1", "2", "3"};
+  for (const std::string& case_id : cases) {
+    const RunResult r = run_linkage({"simulate", "--mechanism", mechanism_file("triple-rocker-on-cart.toml"), "--quiet",
+                                     "--integrator", GetParam(), "--dt", "0.001", "--case", case_id, "--duration", "1",
+                                     "--every", "0.01", "--columns", "t,2.theta,4.theta,cart.x,M.torque"});
+    EXPECT_EQ(r.exit_code, 2) << GetParam() << " Case " << case_id;
+    EXPECT_TRUE(std::regex_search(
+        r.err, std::regex("^linkage: error: at t = 0\\.5687[0-9]* s driver 'M' at 1\\.6375[0-9]* rad: the loop "
+                          "through B cannot close beyond here \\(a limit position, 3 and 4 in line: J's [^;]*; " +
+                          GetParam() + ", Case " + case_id + "\\); valid: [^\n]*\n$")))
+        << r.err;
+    const Table table = parse_csv(r.out);
+    ASSERT_EQ(table.rows.size(), 57U) << GetParam() << " Case " << case_id;
+    for (const std::vector<double>& row : table.rows)
+      for (double v : row) EXPECT_TRUE(std::isfinite(v)) << GetParam() << " Case " << case_id << " t " << row[0];
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryFixedStepIntegrator, FixedStepPastItsLimit,
+                         ::testing::Values("euler", "symplectic-euler", "rk4", "gauss-legendre"),
+                         [](const ::testing::TestParamInfo<std::string>& param) {
+                           std::string name = param.param;
+                           std::replace(name.begin(), name.end(), '-', '_');
+                           return name;
+                         });
+
+// crank-rocker-on-cart.toml: a driven mechanism that goes all the way round, integrated
+// by RK4 and sampled every 0.5 s (the crank turns 3 rad between samples): no limit is
+// claimed, and the samples are the ones a run sampled every 0.01 s gives on the same grid
+// of steps, to round-off. Euler's drift opens the loop there: "the loop opened", not a limit.
+TEST(SimulateKinematic, FixedStepCoarseSamplesOfAFullTurnAreNoLimit) {
+  const auto run = [](const std::string& integrator, const std::string& every) {
+    return run_linkage({"simulate", "--mechanism", mechanism_file("crank-rocker-on-cart.toml"), "--quiet",
+                        "--integrator", integrator, "--dt", "0.001", "--duration", "3", "--every", every, "--columns",
+                        "t,2.theta,4.theta,cart.x,M.torque"});
+  };
+  const RunResult coarse = run("rk4", "0.5"), fine = run("rk4", "0.01");
+  ASSERT_EQ(coarse.exit_code, 0) << coarse.err;
+  ASSERT_EQ(fine.exit_code, 0) << fine.err;
+  const Table a = parse_csv(coarse.out), b = parse_csv(fine.out);
+  ASSERT_EQ(a.rows.size(), 7U);
+  ASSERT_EQ(b.rows.size(), 301U);
+  for (std::size_t i = 0; i < a.rows.size(); ++i)
+    for (std::size_t c = 0; c < a.columns.size(); ++c)
+      EXPECT_NEAR(a.rows[i][c], b.rows[50 * i][c], 1e-9 * (1 + std::fabs(b.rows[50 * i][c])))
+          << a.columns[c] << " t " << a.rows[i][0];
+  const RunResult euler = run("euler", "0.5");
+  EXPECT_EQ(euler.exit_code, 3) << euler.err;
+  EXPECT_NE(euler.err.find("(the loop opened)"), std::string::npos) << euler.err;
+}
+
+// parallelogram-driven.toml: every link in line at th2 = pi (t = 1.320796 s), which no
+// output time (every 0.1 s, every 0.07 s) or continuation step lands on. The run stops
+// there with one line (not on into either assembly), every row before it finite.
+TEST(SimulateKinematic, ParallelogramSteppedOverItsChangePointStopsWithOneLine) {
+  for (const std::string every : {"0.1", "0.07"})
+    for (const std::string case_id : {"1", "2", "3"}) {
+      const RunResult r = run_linkage({"simulate", "--mechanism", mechanism_file("parallelogram-driven.toml"),
+                                       "--quiet", "--case", case_id, "--duration", "2.5", "--every", every, "--columns",
+                                       "t,crank.theta,coupler.theta,rocker.theta,M.torque"});
+      EXPECT_EQ(r.exit_code, 2) << "Case " << case_id << " every " << every;
+      EXPECT_TRUE(std::regex_search(r.err, std::regex("^linkage: error: at t = 1\\.3208[0-9]* s driver 'M' at "
+                                                      "3\\.1415[0-9]* rad: the loop through B passes a change "
+                                                      "point \\(ground, crank, coupler and rocker in line: [^;]*; "
+                                                      "valid: [^\n]*\n$")))
+          << r.err;
+      const Table table = parse_csv(r.out);
+      const std::size_t rows = every == "0.1" ? 14U : 19U;  // t = 0 to 1.3, 0 to 1.26
+      ASSERT_EQ(table.rows.size(), rows) << "Case " << case_id << " every " << every;
+      for (const std::vector<double>& row : table.rows)
+        for (double v : row) EXPECT_TRUE(std::isfinite(v)) << "Case " << case_id << " t " << row[0];
+    }
+}
+
+// piston-driven-slider-crank.toml: the piston driven past its reach sqrt((r + l)^2 - e^2)
+// = 0.448999 m (t = 0.48999 s), where crank and rod lie in line; the rail is not (offset e).
+TEST(SimulateKinematic, PistonDrivenPastItsDeadCentreNamesCrankAndRod) {
+  const RunResult r = run_linkage({"simulate", "--mechanism", mechanism_file("piston-driven-slider-crank.toml"),
+                                   "--quiet", "--duration", "1", "--every", "0.01"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(std::regex_search(r.err, std::regex("^linkage: error: at t = 0\\.4899[0-9]* s driver 'P' at "
+                                                  "0\\.448999 m: the loop through B cannot close beyond here "
+                                                  "\\(a limit position, crank and rod in line: J's [^;]*; "
+                                                  "valid: [^\n]*\n$")))
+      << r.err;
 }
 
 }  // namespace

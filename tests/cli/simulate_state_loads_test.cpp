@@ -1,10 +1,12 @@
 // Issue 25, Deliver 5: loads that depend on the state (tests/data/mechanisms/). A drag
 // torque written in the rate gives the pin damper's run, a motor's torque-speed line spins
 // a disc up as its closed form says, the energy balance holds with state-dependent
-// springs, dampers, forces and torques, and `solve` prints the loads as they are written.
+// springs, dampers, forces and torques, `solve` prints the loads as they are written, and
+// a value that leaves its range during a run stops it with one line.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -118,6 +120,65 @@ TEST(SimulateStateLoads, SolvePrintsTheLoadAsWrittenInEveryFormat) {
     ASSERT_EQ(r.exit_code, 0) << format << ": " << r.err;
     EXPECT_NE(r.out.find("\\ddot{\\theta}_{\\mathrm{disc}} &= " + tex), std::string::npos) << format << "\n" << r.out;
   }
+}
+
+// A state-dependent value that leaves its range later in a run stops it with one line:
+// FILE:LINE:COLUMN, the value as written, its value and the time; exit 2; every row
+// before finite. softening-spring-cart.toml's stiffness turns negative at the closed
+// form's t* = 0.2072126 s: DOP853 bisects its dense output there (to its tolerance,
+// 1e-6 s), RK4 stops at the end of the step that crosses it (dt = 1 ms).
+TEST(SimulateStateLoads, AStiffnessThatTurnsNegativeInTheRunStopsIt) {
+  const double crossing = 0.2072126;
+  for (const std::string integrator : {"dop853", "rk4"})
+    for (const std::string case_id : {"1", "3"}) {
+      const RunResult r = run_linkage({"simulate", "--mechanism", mechanism_file("softening-spring-cart.toml"),
+                                       "--quiet", "--integrator", integrator, "--case", case_id, "--duration", "1",
+                                       "--every", "0.05", "--columns", "t,S.s,energy"});
+      EXPECT_EQ(r.exit_code, 2) << integrator << " Case " << case_id;
+      std::smatch m;
+      ASSERT_TRUE(std::regex_search(r.err, m,
+                                    std::regex("^linkage: error: [^\n]*softening-spring-cart\\.toml:32:13: "
+                                               "stiffness of spring k1 \"k\\*\\(1 - S\\.s/a\\)\" is "
+                                               "-[0-9.e+-]+ at t = ([0-9.]+) s; valid: >= 0 [^\n]*\n$")))
+          << r.err;
+      const double t = std::stod(m[1].str());
+      if (integrator == "dop853")
+        EXPECT_NEAR(t, crossing, 1e-6) << "Case " << case_id;
+      else
+        EXPECT_TRUE(t >= crossing && t <= crossing + 0.001) << "Case " << case_id << " t " << t;
+      const Table table = parse_csv(r.out);
+      ASSERT_GE(table.rows.size(), 4U) << integrator << " Case " << case_id;
+      for (const std::vector<double>& row : table.rows) {
+        for (double v : row) EXPECT_TRUE(std::isfinite(v)) << integrator << " t " << row[0];
+        EXPECT_LT(row[1], 0.2) << integrator << " t " << row[0];  // no row past the range
+      }
+    }
+}
+
+// root-force-cart.toml's force -sqrt(0.25 - S.s) has no value past S.s = 0.25, reached
+// at t* = 0.3188163 s: the first state met past it is a stage of the step that crosses
+// it, within 2 ms of t* (RK4's step is 1 ms; DOP853's there is shorter).
+TEST(SimulateStateLoads, ALoadThatTurnsNonFiniteInTheRunStopsIt) {
+  const double crossing = 0.3188163;
+  for (const std::string integrator : {"dop853", "rk4"})
+    for (const std::string case_id : {"1", "3"}) {
+      const RunResult r = run_linkage({"simulate", "--mechanism", mechanism_file("root-force-cart.toml"), "--quiet",
+                                       "--integrator", integrator, "--case", case_id, "--duration", "1", "--every",
+                                       "0.05", "--columns", "t,S.s,energy,work"});
+      EXPECT_EQ(r.exit_code, 2) << integrator << " Case " << case_id;
+      std::smatch m;
+      ASSERT_TRUE(std::regex_search(r.err, m,
+                                    std::regex("^linkage: error: [^\n]*root-force-cart\\.toml:37:10: force on cart "
+                                               "x \"-sqrt\\(0\\.25 - S\\.s\\)\" is nan at t = ([0-9.]+) s "
+                                               "\\([^)]*\\); valid: a finite number [^\n]*\n$")))
+          << r.err;
+      EXPECT_NEAR(std::stod(m[1].str()), crossing, 0.002) << integrator << " Case " << case_id;
+      EXPECT_EQ(r.out.find("nan"), std::string::npos) << r.out;
+      const Table table = parse_csv(r.out);
+      ASSERT_GE(table.rows.size(), 6U) << integrator << " Case " << case_id;
+      for (const std::vector<double>& row : table.rows)
+        for (double v : row) EXPECT_TRUE(std::isfinite(v)) << integrator << " t " << row[0];
+    }
 }
 
 }  // namespace
