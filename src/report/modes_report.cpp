@@ -187,7 +187,7 @@ std::string modes_text(const sym::System& system, const Linearization& linear, c
                 std::string(modes.damped ? " (with damping, w sqrt(1 - zeta^2))." : "."),
             o);
   Table checked;
-  checked.headers = {"predicted (rad/s)", "measured (rad/s)", "relative difference", "upward crossings"};
+  checked.headers = {"predicted (rad/s)", "measured (rad/s)", "relative difference", "crossings"};
   bool agree = true;
   for (const ModeCheck& check : *checks) {
     checked.row_labels.push_back("mode " + std::to_string(check.mode + 1));
