@@ -369,6 +369,22 @@ class DerivationWriter {
       new_paragraph(
           "A spring of length $l$ (above) between points $A$ and $B$ pulls each towards the other with "
           "$k (l - l_0) + c \\dot{l}$, $\\dot{l} = (B - A) \\cdot (\\dot{B} - \\dot{A}) / l$.");
+    const WrittenValues written = written_state_values(system_);
+    if (!written.values.empty()) {
+      new_paragraph(text("Values that read the state, as the file writes them:"));
+      std::vector<std::string> items;
+      for (const WrittenValue& v : written.values)
+        items.push_back(concat(
+            {text(v.what), ": ", latex() ? concat({"\\texttt{", text(v.text), "}"}) : concat({"`", v.text, "`"})}));
+      list(items);
+      std::string rewritten;
+      for (const auto& [name, expression] : written.rewritten)
+        rewritten +=
+            concat({rewritten.empty() ? "" : ", ", text(name), " ", inline_math(concat({"= ", tex(expression)}))});
+      if (!rewritten.empty())
+        new_paragraph(concat({text("Case 1 writes them in maximal coordinates: "), rewritten,
+                              text("; Cases 2 and 3 keep a slider's travel and rate as their own coordinate.")}));
+    }
     const Mechanism& m = system_.mechanism();
     for (std::size_t b = 0; b < system_.bodies().size(); ++b) {
       new_paragraph(text(concat({"On ", body_label(static_cast<int>(b)), ":"})));

@@ -8,6 +8,7 @@
 #include "formulations/case_system.hpp"
 #include "model/joint_types.hpp"
 #include "report/expression_print.hpp"
+#include "symbolic/state_values.hpp"
 
 namespace linkage {
 
@@ -114,6 +115,36 @@ EquationSides acceleration_form(const sym::System& system, const GiNaC::ex& phi,
   const GiNaC::ex second = system.time_derivative(system.time_derivative(phi));
   const CaseSystem row = linear_system(CaseId::maximal, {second}, symbols);
   return equation_sides(row.A[0], row.B[0], accelerations, system.table(), style);
+}
+
+WrittenValues written_state_values(const sym::System& system) {
+  WrittenValues out;
+  const std::vector<sym::StateValue> values = sym::state_values(system);
+  for (const sym::StateValue& v : values) out.values.push_back({v.what, v.quantity->text});
+  // A name used as a token of some value's text: not followed by a name's character.
+  const auto used = [&](const std::string& name) {
+    return std::any_of(values.begin(), values.end(), [&](const sym::StateValue& v) {
+      const std::string& text = v.quantity->text;
+      for (std::size_t at = text.find(name); at != std::string::npos; at = text.find(name, at + 1)) {
+        const std::size_t end = at + name.size();
+        const bool starts = at == 0 || !(std::isalnum(static_cast<unsigned char>(text[at - 1])) ||
+                                         text[at - 1] == '_' || text[at - 1] == '.');
+        const bool ends = end == text.size() || !(std::isalnum(static_cast<unsigned char>(text[end])) ||
+                                                  text[end] == '_' || text[end] == '.');
+        if (starts && ends) return true;
+      }
+      return false;
+    });
+  };
+  // A joint's names (a slider's s, s_dot): no maximal coordinate, even where one equals it.
+  const auto of_a_joint = [&](const std::string& name) {
+    const std::string owner = name.substr(0, name.find('.'));
+    const auto& joints = system.mechanism().joints;
+    return std::any_of(joints.begin(), joints.end(), [&](const Joint& j) { return j.name == owner; });
+  };
+  for (const auto& [name, expression] : system.state_names())
+    if (of_a_joint(name) && used(name)) out.rewritten.emplace_back(name, expression);
+  return out;
 }
 
 }  // namespace linkage

@@ -42,6 +42,18 @@ struct PinInertia {
 /// square replaced by its symbol (l_k1), so energies print with the symbol the loads use.
 [[nodiscard]] GiNaC::ex with_lengths(const sym::System& system, const GiNaC::ex& e);
 
+/// A value of the file that reads the state, as the file writes it ("stiffness of spring
+/// k1", "k*(1 + (S.s/a)^2)"), and the names in it that are no maximal coordinate (a slider's
+/// travel and rate) with their expressions in maximal coordinates, as Case 1 writes them.
+struct WrittenValue {
+  std::string what, text;
+};
+struct WrittenValues {
+  std::vector<WrittenValue> values;
+  std::vector<std::pair<std::string, GiNaC::ex>> rewritten;  // "S.s" -> x_cart
+};
+[[nodiscard]] WrittenValues written_state_values(const sym::System& system);
+
 /// Whether a joint or spring holds the mechanism to the ground, or an applied force or
 /// torque acts: otherwise its horizontal momentum stays constant.
 [[nodiscard]] bool touches_ground(const Mechanism& mechanism);

@@ -242,6 +242,19 @@ class MechanismWriter {
           "A spring of length l (above) between points A and B pulls each towards the other with k (l - l0) + "
           "c l', l' = (B - A) . (B' - A') / l.");
     }
+    const WrittenValues written = written_state_values(system_);
+    if (!written.values.empty()) {
+      blank();
+      prose("Values that read the state, as the file writes them:");
+      for (const WrittenValue& v : written.values)
+        lines(wrap("    ", concat({v.what, ": ", v.text}), "      ", o_.width));
+      std::string rewritten;
+      for (const auto& [name, expression] : written.rewritten)
+        rewritten += concat({rewritten.empty() ? "" : ", ", name, " = ", math(expression)});
+      if (!rewritten.empty())
+        prose(concat({"Case 1 writes them in maximal coordinates: ", rewritten,
+                      "; Cases 2 and 3 keep a slider's travel and rate as their own coordinate."}));
+    }
     const Mechanism& m = system_.mechanism();
     for (std::size_t b = 0; b < system_.bodies().size(); ++b) {
       blank();

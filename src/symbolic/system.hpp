@@ -123,6 +123,9 @@ class System {
   /// y, theta and their _dot as the maximal symbols, a slider's s and s_dot as their
   /// expressions in them; elsewhere such a name is refused.
   [[nodiscard]] GiNaC::ex quantity(const Quantity& q, bool time_allowed, bool state_allowed = false) const;
+  /// The state's names a load's value may use (its columns: "1.theta", "S.s_dot") -> their
+  /// expressions in maximal coordinates and rates.
+  [[nodiscard]] const GiNaC::symtab& state_names() const { return state_; }
   /// Whether `e` holds a maximal coordinate or rate (a load that depends on the state).
   [[nodiscard]] bool depends_on_state(const GiNaC::ex& e) const;
 

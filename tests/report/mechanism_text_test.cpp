@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
+#include "model/mechanism_toml.hpp"
+#include "report/mechanism_latex.hpp"
 #include "support/mechanisms_in_code.hpp"
 #include "support/test_support.hpp"
 
@@ -25,6 +27,27 @@ ReportOptions ascii() {
   ReportOptions o;
   o.text_style = Style::ascii;
   return o;
+}
+
+// Issue 25: the derivation shows a value that reads the state as the file writes it
+// (S.s, rod.theta), and how Case 1, which has no slider coordinate, writes the slider's
+// names; in text, LaTeX and Markdown alike.
+TEST(MechanismText, StateValuesPrintAsTheFileWritesThem) {
+  const Mechanism m = load_mechanism(std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/state-loads-cart.toml");
+  const MechanismSolution s = work_out_mechanism(m, {CaseId::maximal});
+  const std::string text = mechanism_text(s, ascii());
+  for (const char* piece :
+       {"  Values that read the state, as the file writes them:\n", "    damping of joint P: c*(1 + rod.theta^2)\n",
+        "    stiffness of spring k1: k*(1 + (S.s/a)^2)\n", "    torque on rod: -0.2*S.s*rod.theta_dot\n",
+        "Case 1 writes them in maximal coordinates: S.s = x_cart, S.s_dot = x_cart';"})
+    EXPECT_NE(text.find(piece), std::string::npos) << piece;
+  EXPECT_NE(mechanism_markdown(s, ascii()).find("- stiffness of spring k1: `k*(1 + (S.s/a)^2)`"), std::string::npos);
+  const std::string latex = mechanism_latex(s, ascii());
+  EXPECT_NE(latex.find("\\item stiffness of spring k1: \\texttt{"), std::string::npos);
+  EXPECT_NE(latex.find("S.s $= x_{\\mathrm{cart}}$"), std::string::npos);
+  // A mechanism whose values read no state prints no such part.
+  EXPECT_EQ(mechanism_text(work_out_mechanism(built::four_bar(), {CaseId::maximal}), ascii()).find("Values that read"),
+            std::string::npos);
 }
 
 TEST(MechanismText, HomeworkCaseEquationsAsTheGolden) {
