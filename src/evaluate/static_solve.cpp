@@ -164,19 +164,4 @@ std::optional<StaticSolve> plan_static_solve(const std::vector<GiNaC::ex>& entri
   return std::nullopt;
 }
 
-double static_solve_spread(const double* pivots, std::size_t fixed, std::size_t symmetric) {
-  double largest = 0, smallest = std::numeric_limits<double>::infinity();
-  for (std::size_t k = 0; k < fixed + symmetric; ++k) {
-    const double a = std::fabs(pivots[k]);
-    if (!(a > 0) || !std::isfinite(a)) return 0;  // zero or NaN
-    largest = std::max(largest, a);
-    smallest = std::min(smallest, a);
-  }
-  // A symmetric remainder with pivots of both signs is indefinite: no pivoting there is unsafe.
-  for (std::size_t k = 1; k < symmetric; ++k)
-    if ((pivots[fixed + k] > 0) != (pivots[fixed] > 0)) return 0;
-  const double spread = smallest / largest;
-  return spread > std::numeric_limits<double>::epsilon() ? spread : 0;
-}
-
 }  // namespace linkage::eval

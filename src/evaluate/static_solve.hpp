@@ -11,7 +11,10 @@
 // sign and spread above round-off) and otherwise solves by a pivoting LU.
 #include <ginac/ginac.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -35,7 +38,20 @@ struct StaticSolve {
 
 /// Whether a static solve's pivots at run time (its outputs after u) allow its u: all
 /// finite and non-zero, the remainder's of one sign, and the smallest over the largest
-/// magnitude above round-off; that ratio, else 0.
-[[nodiscard]] double static_solve_spread(const double* pivots, std::size_t fixed, std::size_t symmetric);
+/// magnitude above round-off; that ratio, else 0. Inline: it runs on every right-hand side.
+[[nodiscard]] inline double static_solve_spread(const double* pivots, std::size_t fixed, std::size_t symmetric) {
+  double largest = 0, smallest = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < fixed + symmetric; ++k) {
+    const double a = std::fabs(pivots[k]);
+    if (!(a > 0) || !std::isfinite(a)) return 0;  // zero or NaN
+    largest = std::max(largest, a);
+    smallest = std::min(smallest, a);
+  }
+  // A symmetric remainder with pivots of both signs is indefinite: no pivoting there is unsafe.
+  for (std::size_t k = 1; k < symmetric; ++k)
+    if ((pivots[fixed + k] > 0) != (pivots[fixed] > 0)) return 0;
+  const double spread = smallest / largest;
+  return spread > std::numeric_limits<double>::epsilon() ? spread : 0;
+}
 
 }  // namespace linkage::eval
