@@ -380,8 +380,19 @@ void MechanismDynamics::compile_case() const {
   if (rows_ <= kFixedRows) {
     const std::vector<GiNaC::symbol> state(input_symbols_.begin() + static_cast<std::ptrdiff_t>(parameters_),
                                            input_symbols_.end());
-    if (const std::optional<StaticSolve> plan = plan_static_solve(rhs, rows_, state, system.parameter_values())) {
-      solve_ = compile(plan->outputs, input_symbols_, plan->definitions);
+    // The parameters' factors as inputs of their own, computed here once.
+    const Hoisted hoisted = hoist_parameters(rhs, state);
+    GiNaC::exmap values = system.parameter_values();
+    std::vector<GiNaC::symbol> inputs = input_symbols_;
+    solve_inputs_ = inputs_;
+    for (const auto& [symbol, factor] : hoisted.factors) {
+      const double value = sym::evaluate(factor, system.parameter_values());
+      values[symbol] = value;
+      inputs.push_back(symbol);
+      solve_inputs_.push_back(value);
+    }
+    if (const std::optional<StaticSolve> plan = plan_static_solve(hoisted.entries, rows_, state, values)) {
+      solve_ = compile(plan->outputs, inputs, plan->definitions);
       fixed_pivots_ = plan->fixed_pivots;
       symmetric_pivots_ = plan->symmetric_pivots;
       solve_values_.resize(solve_.output_count());
@@ -634,8 +645,9 @@ double MechanismDynamics::general_unknowns(Eigen::VectorXd& u) const {
 bool MechanismDynamics::static_unknowns(double t, const Eigen::VectorXd& y) const {
   compile_case();
   if (solve_.output_count() == 0) return false;
-  fill_inputs(t, y);
-  solve_.run(inputs_.data(), solve_values_.data(), scratch_.data());
+  for (std::size_t i = 0; i < 2 * n_; ++i) solve_inputs_[parameters_ + i] = y[idx(i)];
+  solve_inputs_[parameters_ + 2 * n_] = t;
+  solve_.run(solve_inputs_.data(), solve_values_.data(), scratch_.data());
   if (!(static_solve_spread(solve_values_.data() + cols_, fixed_pivots_, symmetric_pivots_) > 0)) return false;
   std::copy_n(solve_values_.data(), cols_, u_.data());
   return true;

@@ -196,10 +196,10 @@ class MechanismDynamics {
   mutable Program rhs_;                         // A (row major), B
   mutable Program solve_;                       // up to kFixedRows rows: u, then the pivots (static_solve.hpp)
   mutable std::size_t fixed_pivots_ = 0, symmetric_pivots_ = 0;
-  mutable std::vector<double> solve_values_;
-  Program constraints_;         // C, dC/dq (row major), M (row major)
-  mutable Program outputs_;     // the sample, with the unknowns as inputs too
-  mutable Program kinematics_;  // accelerations and points, with the same inputs
+  mutable std::vector<double> solve_inputs_, solve_values_;  // solve_'s inputs: inputs_, then the hoisted factors
+  Program constraints_;                                      // C, dC/dq (row major), M (row major)
+  mutable Program outputs_;                                  // the sample, with the unknowns as inputs too
+  mutable Program kinematics_;                               // accelerations and points, with the same inputs
   mutable bool kinematics_compiled_ = false;
   bool builtin_ = false;  // attach_builtin succeeded: the kinematics too, once compiled
   mutable std::vector<GiNaC::symbol> output_symbols_;

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <limits>
+#include <map>
 #include <string>
 #include <tuple>
 
@@ -12,6 +15,30 @@ namespace linkage::eval {
 namespace {
 
 using GiNaC::ex;
+
+bool depends_on(const ex& v, const std::vector<GiNaC::symbol>& state) {
+  for (const GiNaC::symbol& s : state)
+    if (v.has(s)) return true;
+  return false;
+}
+
+// A name for a state-independent factor that is the same on every run and machine (GiNaC's
+// own order of terms is not): its value with each symbol set to a number made from the
+// symbol's name, to 12 digits. Distinct factors of one system collide with no real chance.
+std::string canonical_key(const ex& factor) {
+  GiNaC::exmap probe;
+  for (auto it = factor.preorder_begin(); it != factor.preorder_end(); ++it)
+    if (GiNaC::is_a<GiNaC::symbol>(*it)) {
+      std::uint64_t h = 0xcbf29ce484222325ULL;
+      for (const char c : GiNaC::ex_to<GiNaC::symbol>(*it).get_name())
+        h = (h ^ static_cast<unsigned char>(c)) * 0x100000001b3ULL;
+      probe[*it] = GiNaC::numeric(static_cast<long>(h % 1000003 + 1000003), 1000003L);  // in [1, 2)
+    }
+  const double v = sym::to_double(factor.subs(probe, GiNaC::subs_options::no_pattern).evalf());
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%+.11e", v);
+  return buffer;
+}
 
 // Which entries the first phase may pivot on: numbers before parameters' expressions,
 // numbers alone, parameters' alone, or none (A itself symmetric). Tried in this order.
@@ -133,11 +160,7 @@ class Planner {
     return s;
   }
 
-  bool state_free(const ex& v) const {
-    for (const GiNaC::symbol& s : state_)
-      if (v.has(s)) return false;
-    return true;
-  }
+  bool state_free(const ex& v) const { return !depends_on(v, state_); }
 
   bool nonzero_at_parameters(const ex& v) const {
     const ex value = v.subs(parameters_, GiNaC::subs_options::no_pattern).evalf();
@@ -156,6 +179,61 @@ class Planner {
 };
 
 }  // namespace
+
+Hoisted hoist_parameters(const std::vector<GiNaC::ex>& entries, const std::vector<GiNaC::symbol>& state) {
+  // Per entry: its terms grouped by their state-dependent part, each group's parameters
+  // summed into one factor.
+  std::vector<std::vector<std::pair<ex, ex>>> grouped;  // per entry: (state part, factor)
+  for (const ex& entry : entries) {
+    const ex e = GiNaC::expand(entry);
+    std::vector<std::pair<ex, ex>> groups;
+    const std::size_t terms = GiNaC::is_a<GiNaC::add>(e) ? e.nops() : 1;
+    for (std::size_t k = 0; k < terms; ++k) {
+      const ex term = GiNaC::is_a<GiNaC::add>(e) ? e.op(k) : e;
+      ex varying = 1, fixed = 1;
+      const std::size_t factors = GiNaC::is_a<GiNaC::mul>(term) ? term.nops() : 1;
+      for (std::size_t j = 0; j < factors; ++j) {
+        const ex f = GiNaC::is_a<GiNaC::mul>(term) ? term.op(j) : term;
+        (depends_on(f, state) ? varying : fixed) *= f;
+      }
+      auto it = std::find_if(groups.begin(), groups.end(), [&](const auto& g) { return g.first.is_equal(varying); });
+      if (it == groups.end())
+        groups.emplace_back(varying, fixed);
+      else
+        it->second += fixed;
+    }
+    for (auto& [varying, fixed] : groups) fixed = GiNaC::expand(fixed);
+    grouped.push_back(std::move(groups));
+  }
+  // One symbol per factor up to sign (the one of positive key), numbered in key order.
+  std::map<std::string, ex> by_key;
+  for (const auto& groups : grouped)
+    for (const auto& [varying, fixed] : groups)
+      if (!fixed.is_zero() && !GiNaC::is_a<GiNaC::numeric>(fixed)) {
+        const std::string key = canonical_key(fixed);
+        by_key.emplace(key[0] == '-' ? canonical_key(-fixed) : key, key[0] == '-' ? GiNaC::expand(-fixed) : fixed);
+      }
+  Hoisted out;
+  std::map<std::string, ex> symbol_of;
+  for (const auto& [key, factor] : by_key) {
+    GiNaC::symbol s("hoisted." + std::to_string(out.factors.size()));
+    out.factors.emplace_back(s, factor);
+    symbol_of.emplace(key, s);
+  }
+  for (const auto& groups : grouped) {
+    ex hoisted = 0;
+    for (const auto& [varying, fixed] : groups) {
+      if (fixed.is_zero() || GiNaC::is_a<GiNaC::numeric>(fixed)) {
+        hoisted += fixed * varying;
+        continue;
+      }
+      const std::string key = canonical_key(fixed);
+      hoisted += key[0] == '-' ? -symbol_of.at(canonical_key(-fixed)) * varying : symbol_of.at(key) * varying;
+    }
+    out.entries.push_back(hoisted);
+  }
+  return out;
+}
 
 std::optional<StaticSolve> plan_static_solve(const std::vector<GiNaC::ex>& entries, std::size_t n,
                                              const std::vector<GiNaC::symbol>& state, const GiNaC::exmap& parameters) {

@@ -29,6 +29,16 @@ struct StaticSolve {
   std::size_t symmetric_pivots = 0;     // pivots of the symmetric remainder's LDL^T
 };
 
+/// `entries` with each term's state-independent factor (a product of parameters, or their
+/// sum over the terms of one state-dependent part) a symbol of its own, computed once per
+/// run instead of on every call: m D sin(th1), expanded to (m L / 2 - m b) sin(th1), is
+/// c sin(th1). Numbers stay; a factor and its negative share one symbol.
+struct Hoisted {
+  std::vector<GiNaC::ex> entries;
+  std::vector<Definition> factors;  // each symbol and its expression in the parameters
+};
+[[nodiscard]] Hoisted hoist_parameters(const std::vector<GiNaC::ex>& entries, const std::vector<GiNaC::symbol>& state);
+
 /// The plan for A (`n` x `n`, row major) and B of `entries`, whose state (and time)
 /// symbols are `state`; `parameters` the values of the remaining symbols (a pivot of the
 /// first phase must be non-zero there). nullopt when no plan leaves a symmetric remainder.

@@ -71,6 +71,35 @@ TEST(StaticSolve, HomeworkCase3EliminatesTheForceRowsThenSolvesTheSymmetricRemai
   }
 }
 
+TEST(StaticSolve, HoistedFactorsAreTheParametersOfEachStateTermOnceUpToSign) {
+  // D = L / 2 - b expanded into the rows, as the mechanism's lengths are.
+  const GiNaC::symbol m("m"), L("L"), b("b"), th("th"), w("w");
+  const ex D = L / 2 - b;
+  const std::vector<ex> entries{GiNaC::expand(m * D * sin(th)), GiNaC::expand(-m * D * cos(th)),
+                                GiNaC::expand(D * w * w * cos(th) + 2 * m * D * sin(th)), 2, 0};
+  const Hoisted h = hoist_parameters(entries, {th, w});
+  ASSERT_EQ(h.factors.size(), 3U);  // m D (and -m D), 2 m D, D; the numbers stay
+  GiNaC::exmap back;
+  for (const auto& [symbol, factor] : h.factors) back[symbol] = factor;
+  for (std::size_t k = 0; k < entries.size(); ++k)
+    EXPECT_TRUE(GiNaC::expand(h.entries[k].subs(back) - entries[k]).is_zero()) << k << ": " << h.entries[k];
+  // The same rows get the same names whatever GiNaC's order of terms: fresh symbols made in
+  // another order (other serial numbers, so another order of terms) name them alike.
+  const GiNaC::symbol w2("w"), th2("th"), b2("b"), L2("L"), m2("m");
+  const ex D2 = L2 / 2 - b2;
+  const std::vector<ex> again{GiNaC::expand(m2 * D2 * sin(th2)), GiNaC::expand(-m2 * D2 * cos(th2)),
+                              GiNaC::expand(D2 * w2 * w2 * cos(th2) + 2 * m2 * D2 * sin(th2)), 2, 0};
+  const Hoisted h2 = hoist_parameters(again, {th2, w2});
+  ASSERT_EQ(h2.factors.size(), h.factors.size());
+  const GiNaC::exmap rename{{m2, m}, {L2, L}, {b2, b}};
+  for (const auto& [symbol, factor] : h2.factors) {
+    bool found = false;
+    for (const auto& [s1, f1] : h.factors)
+      found = found || (s1.get_name() == symbol.get_name() && GiNaC::expand(f1 - factor.subs(rename)).is_zero());
+    EXPECT_TRUE(found) << symbol << " = " << factor;
+  }
+}
+
 TEST(StaticSolve, NoPlanWhenTheRemainderIsNotSymmetric) {
   const GiNaC::symbol x("x");
   const std::vector<ex> entries{sin(x), cos(x), -cos(x), sin(x), 1, x};
