@@ -643,7 +643,7 @@ double MechanismDynamics::general_unknowns(Eigen::VectorXd& u) const {
 }
 
 bool MechanismDynamics::static_unknowns(double t, const Eigen::VectorXd& y) const {
-  compile_case();
+  if (!compiled_) compile_case();
   if (solve_.output_count() == 0) return false;
   for (std::size_t i = 0; i < 2 * n_; ++i) solve_inputs_[parameters_ + i] = y[idx(i)];
   solve_inputs_[parameters_ + 2 * n_] = t;
@@ -727,7 +727,7 @@ bool MechanismDynamics::derivative(double t, const Eigen::VectorXd& y, Eigen::Ve
     power_.run(inputs_.data(), power_values_.data(), scratch_.data());
     dydt[idx(2 * n_)] = power_values_[0];
   }
-  dydt[idx(2 * n_)] += driver_power(t, y, u_);
+  if (drivers_ > 0) dydt[idx(2 * n_)] += driver_power(t, y, u_);
   return true;
 }
 
