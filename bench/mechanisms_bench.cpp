@@ -329,7 +329,8 @@ void judge(const MechanismsBenchOptions& o, MechanismsBenchResult& r) {
   line("homework Case 3: compiled / closed form", compiled3 / closed3, kMaxCompiledOverClosed, true, "x", no_compiled,
        "the closed form is the two blocks' four equations solved by hand and inlined by the compiler (" + sig(closed3) +
            " ns, two sincos and about 35 operations); the compiled path computes A and B from the expanded "
-           "rows with the parameters as inputs, eliminates the force rows' constant pivots and solves the symmetric "
+           "rows (each term's parameter factor computed once per run), eliminates the force rows' constant pivots and "
+           "solves the symmetric "
            "2 x 2 remainder by LDL^T in one program (evaluate/static_solve.hpp), then checks its pivots (" +
            sig(compiled3) + " ns; evaluator " + sig(ns_of("two-blocks", 3, "evaluator")) + " ns)" +
            structured("two-blocks Case 3"));
