@@ -650,9 +650,7 @@ bool MechanismDynamics::static_unknowns(double t, const Eigen::VectorXd& y) cons
   for (std::size_t i = 0; i < 2 * n_; ++i) solve_inputs_[parameters_ + i] = y[idx(i)];
   solve_inputs_[parameters_ + 2 * n_] = t;
   solve_.run(solve_inputs_.data(), solve_values_.data(), scratch_.data());
-  if (!(static_solve_spread(solve_values_.data() + cols_, fixed_pivots_, symmetric_pivots_) > 0)) return false;
-  std::copy_n(solve_values_.data(), cols_, u_.data());
-  return true;
+  return static_solve_spread(solve_values_.data() + cols_, fixed_pivots_, symmetric_pivots_) > 0;
 }
 
 double MechanismDynamics::diagonal_schur(Eigen::VectorXd& u) const {
@@ -701,10 +699,11 @@ double MechanismDynamics::diagonal_schur(Eigen::VectorXd& u) const {
 bool MechanismDynamics::derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) const {
   dydt.resize(y.size());
   const bool baumgarte = constraint_rows_ > 0 && (two_alpha_ != 0 || beta_squared_ != 0);
-  bool solved = false, rows = true;
+  bool solved = false, rows = true, straight = false;
   if (structured_ && (!tree_ || n_ + static_cast<std::size_t>(constraint_rows_) <= kFixedRows)) {
     // Straight-line code first; where its pivots do not vouch for it, the pivoting LU decides.
-    solved = (!baumgarte && static_unknowns(t, y)) || structured_unknowns(t, y, u_) > 0;
+    solved = straight = !baumgarte && static_unknowns(t, y);
+    if (!straight) solved = structured_unknowns(t, y, u_) > 0;
   } else if (tree_ && !baumgarte) {
     solved = tree_->accelerations(t, y, u_);
     rows = false;
@@ -720,8 +719,12 @@ bool MechanismDynamics::derivative(double t, const Eigen::VectorXd& y, Eigen::Ve
              (!rows || std::all_of(values_.begin(),
                                    values_.begin() + static_cast<std::ptrdiff_t>(rows_ * cols_ + rows_), finite)));
   }
-  dydt.head(idx(n_)) = y.segment(idx(n_), idx(n_));
-  dydt.segment(idx(n_), idx(n_)) = u_.head(idx(n_));
+  const double* u = straight ? solve_values_.data() : u_.data();
+  // Plain loops: n is a handful, and Eigen's dynamic-size copies cost more than they move.
+  for (std::size_t i = 0; i < n_; ++i) {
+    dydt[idx(i)] = y[idx(n_ + i)];
+    dydt[idx(n_ + i)] = u[i];
+  }
   if (power_zero_) {
     dydt[idx(2 * n_)] = 0;
   } else {
@@ -729,7 +732,10 @@ bool MechanismDynamics::derivative(double t, const Eigen::VectorXd& y, Eigen::Ve
     power_.run(inputs_.data(), power_values_.data(), scratch_.data());
     dydt[idx(2 * n_)] = power_values_[0];
   }
-  if (drivers_ > 0) dydt[idx(2 * n_)] += driver_power(t, y, u_);
+  if (drivers_ > 0) {
+    if (straight) std::copy_n(u, cols_, u_.data());
+    dydt[idx(2 * n_)] += driver_power(t, y, u_);
+  }
   return true;
 }
 
