@@ -211,7 +211,10 @@ Hoisted hoist_parameters(const std::vector<GiNaC::ex>& entries, const std::vecto
     for (const auto& [varying, fixed] : groups)
       if (!fixed.is_zero() && !GiNaC::is_a<GiNaC::numeric>(fixed)) {
         const std::string key = canonical_key(fixed);
-        by_key.emplace(key[0] == '-' ? canonical_key(-fixed) : key, key[0] == '-' ? GiNaC::expand(-fixed) : fixed);
+        const ex positive = key[0] == '-' ? GiNaC::expand(-fixed) : fixed;
+        const auto [it, fresh] = by_key.emplace(key[0] == '-' ? canonical_key(-fixed) : key, positive);
+        // Two different factors of one key would be one symbol: hoist nothing rather.
+        if (!fresh && !GiNaC::expand(it->second - positive).is_zero()) return {entries, {}};
       }
   Hoisted out;
   std::map<std::string, ex> symbol_of;
