@@ -116,6 +116,13 @@ class Builder {
     return value(e);
   }
 
+  /// From now on `s` stands for the value of `e` (computed once, where first needed).
+  void define(const GiNaC::symbol& s, const GiNaC::ex& e) {
+    if (inputs_.count(s) != 0 || definitions_.count(s) != 0)
+      throw std::invalid_argument("compile: symbol '" + s.get_name() + "' is defined twice");
+    definitions_.emplace(s, value(e));
+  }
+
   [[nodiscard]] Parts finish(const std::vector<Index>& outputs) const;
 
   /// Frees the walk's maps with a signal check between batches (their destructors cannot
@@ -148,6 +155,7 @@ class Builder {
 
   Index compute(const GiNaC::ex& e) {
     if (GiNaC::is_a<GiNaC::symbol>(e)) {
+      if (const auto defined = definitions_.find(e); defined != definitions_.end()) return defined->second;
       const auto it = inputs_.find(e);
       if (it == inputs_.end())
         throw std::invalid_argument("compile: symbol '" + printed(e) + "' in output " + std::to_string(output_) +
@@ -430,6 +438,7 @@ class Builder {
   std::vector<Node> nodes_;
   std::vector<std::string> names_;
   std::map<GiNaC::ex, Index, GiNaC::ex_is_less> inputs_;
+  std::map<GiNaC::ex, Index, GiNaC::ex_is_less> definitions_;
   GiNaC::exhashmap<Index> cache_;
   GiNaC::exhashmap<Shape> shapes_;
   // Looked up once per operation emitted: hashed, as a long chain's case emits 10^5 of them.
@@ -523,7 +532,13 @@ Parts Builder::finish(const std::vector<Index>& outputs) const {
 }  // namespace
 
 Program compile(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::symbol>& inputs) {
+  return compile(outputs, inputs, {});
+}
+
+Program compile(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::symbol>& inputs,
+                const std::vector<Definition>& definitions) {
   Builder builder(inputs);
+  for (const auto& [symbol, expression] : definitions) builder.define(symbol, expression);
   std::vector<Index> nodes;
   nodes.reserve(outputs.size());
   for (std::size_t k = 0; k < outputs.size(); ++k) {

@@ -12,6 +12,7 @@
 
 #include "core/interrupt.hpp"
 #include "evaluate/native_builtin.hpp"
+#include "evaluate/static_solve.hpp"
 #include "evaluate/substitute.hpp"
 #include "evaluate/tree_dynamics.hpp"
 #include "symbolic/energy.hpp"
@@ -272,7 +273,7 @@ std::vector<Program*> MechanismDynamics::programs(bool kinematics) {
   compile_case();
   if (kinematics) compile_kinematics();
   std::vector<Program*> out;
-  for (Program* p : {&power_, &constraints_, &rhs_, &outputs_, &kinematics_, &time_rates_})
+  for (Program* p : {&power_, &constraints_, &rhs_, &solve_, &outputs_, &kinematics_, &time_rates_})
     if (p->output_count() > 0) out.push_back(p);
   if (tree_)
     for (Program* p : tree_->programs())
@@ -287,7 +288,9 @@ NativeAttachment MechanismDynamics::attach_native(bool kinematics, bool may_comp
 NativeAttachment MechanismDynamics::attach_native_derivative(bool may_compile) {
   if (!tree_) return attach_native(false, may_compile);
   std::vector<Program*> programs;
-  for (Program* p : {&power_, &time_rates_})
+  // A small tree solves A u = B, not by the recursion (derivative()).
+  if (n_ + static_cast<std::size_t>(constraint_rows_) <= kFixedRows) compile_case();
+  for (Program* p : {&power_, &time_rates_, &rhs_, &solve_})
     if (p->output_count() > 0) programs.push_back(p);
   for (Program* p : tree_->programs())
     if (p->output_count() > 0) programs.push_back(p);
@@ -374,6 +377,28 @@ void MechanismDynamics::compile_case() const {
   }
   rhs_ = compile(rhs, input_symbols_);
   find_structure(rhs);
+  if (rows_ <= kFixedRows) {
+    const std::vector<GiNaC::symbol> state(input_symbols_.begin() + static_cast<std::ptrdiff_t>(parameters_),
+                                           input_symbols_.end());
+    // The parameters' factors as inputs of their own, computed here once.
+    const Hoisted hoisted = hoist_parameters(rhs, state);
+    GiNaC::exmap values = system.parameter_values();
+    std::vector<GiNaC::symbol> inputs = input_symbols_;
+    solve_inputs_ = inputs_;
+    for (const auto& [symbol, factor] : hoisted.factors) {
+      const double value = sym::evaluate(factor, system.parameter_values());
+      values[symbol] = value;
+      inputs.push_back(symbol);
+      solve_inputs_.push_back(value);
+    }
+    if (const std::optional<StaticSolve> plan = plan_static_solve(hoisted.entries, rows_, state, values)) {
+      solve_ = compile(plan->outputs, inputs, plan->definitions);
+      fixed_pivots_ = plan->fixed_pivots;
+      symmetric_pivots_ = plan->symmetric_pivots;
+      solve_values_.resize(solve_.output_count());
+      u_.resize(idx(cols_));
+    }
+  }
   free_checking(rhs);
 
   // The sample: with the unknowns as inputs, and the eliminated forces recovered from them.
@@ -436,7 +461,7 @@ void MechanismDynamics::compile_case() const {
 
   output_inputs_.assign(output_inputs.size(), 0.0);
   values_.resize(std::max({values_.size(), rhs_.output_count(), outputs_.output_count()}));
-  scratch_.resize(std::max({scratch_.size(), rhs_.scratch_size(), outputs_.scratch_size()}));
+  scratch_.resize(std::max({scratch_.size(), rhs_.scratch_size(), solve_.scratch_size(), outputs_.scratch_size()}));
   A_.resize(idx(rows_), idx(cols_));
   B_.resize(idx(rows_));
   compiled_ = true;
@@ -617,6 +642,17 @@ double MechanismDynamics::general_unknowns(Eigen::VectorXd& u) const {
   return rcond;
 }
 
+bool MechanismDynamics::static_unknowns(double t, const Eigen::VectorXd& y) const {
+  if (!compiled_) compile_case();
+  // Interpreted, the solve's steps cost more than the A and B program and the compiled LU
+  // together (a chain of 8: 827 instructions against 593).
+  if (!solve_.native()) return false;
+  for (std::size_t i = 0; i < 2 * n_; ++i) solve_inputs_[parameters_ + i] = y[idx(i)];
+  solve_inputs_[parameters_ + 2 * n_] = t;
+  solve_.run(solve_inputs_.data(), solve_values_.data(), scratch_.data());
+  return static_solve_spread(solve_values_.data() + cols_, fixed_pivots_, symmetric_pivots_) > 0;
+}
+
 double MechanismDynamics::diagonal_schur(Eigen::VectorXd& u) const {
   const std::size_t m = rows_ - n_;
   const double* a = values_.data();
@@ -663,9 +699,11 @@ double MechanismDynamics::diagonal_schur(Eigen::VectorXd& u) const {
 bool MechanismDynamics::derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) const {
   dydt.resize(y.size());
   const bool baumgarte = constraint_rows_ > 0 && (two_alpha_ != 0 || beta_squared_ != 0);
-  bool solved = false, rows = true;
+  bool solved = false, rows = true, straight = false;
   if (structured_ && (!tree_ || n_ + static_cast<std::size_t>(constraint_rows_) <= kFixedRows)) {
-    solved = structured_unknowns(t, y, u_) > 0;
+    // Straight-line code first; where its pivots do not vouch for it, the pivoting LU decides.
+    solved = straight = !baumgarte && static_unknowns(t, y);
+    if (!straight) solved = structured_unknowns(t, y, u_) > 0;
   } else if (tree_ && !baumgarte) {
     solved = tree_->accelerations(t, y, u_);
     rows = false;
@@ -681,8 +719,12 @@ bool MechanismDynamics::derivative(double t, const Eigen::VectorXd& y, Eigen::Ve
              (!rows || std::all_of(values_.begin(),
                                    values_.begin() + static_cast<std::ptrdiff_t>(rows_ * cols_ + rows_), finite)));
   }
-  dydt.head(idx(n_)) = y.segment(idx(n_), idx(n_));
-  dydt.segment(idx(n_), idx(n_)) = u_.head(idx(n_));
+  const double* u = straight ? solve_values_.data() : u_.data();
+  // Plain loops: n is a handful, and Eigen's dynamic-size copies cost more than they move.
+  for (std::size_t i = 0; i < n_; ++i) {
+    dydt[idx(i)] = y[idx(n_ + i)];
+    dydt[idx(n_ + i)] = u[i];
+  }
   if (power_zero_) {
     dydt[idx(2 * n_)] = 0;
   } else {
@@ -690,7 +732,10 @@ bool MechanismDynamics::derivative(double t, const Eigen::VectorXd& y, Eigen::Ve
     power_.run(inputs_.data(), power_values_.data(), scratch_.data());
     dydt[idx(2 * n_)] = power_values_[0];
   }
-  dydt[idx(2 * n_)] += driver_power(t, y, u_);
+  if (drivers_ > 0) {
+    if (straight) std::copy_n(u, cols_, u_.data());
+    dydt[idx(2 * n_)] += driver_power(t, y, u_);
+  }
   return true;
 }
 

@@ -180,6 +180,9 @@ class MechanismDynamics {
   double diagonal_schur(Eigen::VectorXd& u) const;
   /// The general LU of A and B at values_.
   double general_unknowns(Eigen::VectorXd& u) const;
+  /// u_ by solve_ (A, B and their solve in one program, static_solve.hpp) as native code,
+  /// without Baumgarte's terms; false when there is no such code or its pivots reject it.
+  bool static_unknowns(double t, const Eigen::VectorXd& y) const;
 
   CaseId id_;
   const sym::System* system_;
@@ -203,9 +206,12 @@ class MechanismDynamics {
   std::vector<GiNaC::ex> initial_expressions_;  // the state in generalized coordinates and rates
   GiNaC::exmap constants_;                      // parameters, definitions and inertias
   mutable Program rhs_;                         // A (row major), B
-  Program constraints_;                         // C, dC/dq (row major), M (row major)
-  mutable Program outputs_;                     // the sample, with the unknowns as inputs too
-  mutable Program kinematics_;                  // accelerations and points, with the same inputs
+  mutable Program solve_;                       // up to kFixedRows rows: u, then the pivots (static_solve.hpp)
+  mutable std::size_t fixed_pivots_ = 0, symmetric_pivots_ = 0;
+  mutable std::vector<double> solve_inputs_, solve_values_;  // solve_'s inputs: inputs_, then the hoisted factors
+  Program constraints_;                                      // C, dC/dq (row major), M (row major)
+  mutable Program outputs_;                                  // the sample, with the unknowns as inputs too
+  mutable Program kinematics_;                               // accelerations and points, with the same inputs
   mutable bool kinematics_compiled_ = false;
   bool builtin_ = false;  // attach_builtin succeeded: the kinematics too, once compiled
   mutable std::vector<GiNaC::symbol> output_symbols_;

@@ -33,6 +33,9 @@ struct Instruction {
   std::uint32_t b = 0;
 };
 
+/// A symbol standing for the value of an expression (compile()'s third argument).
+using Definition = std::pair<GiNaC::symbol, GiNaC::ex>;
+
 class Program {
  public:
   Program() = default;  // no inputs, no outputs
@@ -69,7 +72,8 @@ class Program {
   [[nodiscard]] std::string dump() const;
 
  private:
-  friend Program compile(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::symbol>& inputs);
+  friend Program compile(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::symbol>& inputs,
+                         const std::vector<Definition>& definitions);
   Program(std::vector<std::string> input_names, std::vector<double> constants, std::vector<Instruction> code,
           std::vector<std::uint32_t> output_registers, std::size_t register_count)
       : input_names_(std::move(input_names)),
@@ -90,6 +94,11 @@ class Program {
 /// std::invalid_argument naming a symbol that is not an input, a duplicate input, a
 /// function it cannot compile or a non-real number.
 [[nodiscard]] Program compile(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::symbol>& inputs);
+/// As compile(outputs, inputs), where each definition's symbol (in order: a definition may
+/// use earlier ones) stands for its expression's value, computed once: steps written over
+/// intermediate values, as a linear solve over the entries of A and B (static_solve.hpp).
+[[nodiscard]] Program compile(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::symbol>& inputs,
+                              const std::vector<Definition>& definitions);
 /// The entries of `outputs`, row by row.
 [[nodiscard]] Program compile(const GiNaC::matrix& outputs, const std::vector<GiNaC::symbol>& inputs);
 /// The entries of a matrix, row by row; append several to compile A and B as one program.
