@@ -180,8 +180,9 @@ class MechanismDynamics {
   double diagonal_schur(Eigen::VectorXd& u) const;
   /// The general LU of A and B at values_.
   double general_unknowns(Eigen::VectorXd& u) const;
-  /// u_ by solve_ (A, B and their solve in one program, static_solve.hpp) as native code,
-  /// without Baumgarte's terms; false when there is no such code or its pivots reject it.
+  /// u_ by solve_ (A, B and their solve in one program, static_solve.hpp), native or
+  /// interpreted alike, without Baumgarte's terms; false when there is no such program or
+  /// its pivots reject it.
   bool static_unknowns(double t, const Eigen::VectorXd& y) const;
 
   CaseId id_;

@@ -110,7 +110,7 @@ TEST(Linearization, ElasticPendulumBouncesAtSqrtKOverMAndSwingsAtSqrtGOverL) {
   EXPECT_NEAR(modes.modes[2].damping_ratio / (c / (2 * std::sqrt(k * m))), 1, 1e-10);
 }
 
-// The four-bar of four-bar.toml with a torsional spring at the rocker's ground pin O4,
+// four-bar-spring.toml, the four-bar with a torsional spring at the rocker's ground pin O4,
 // reduced by hand to its one coordinate, the crank angle: the loop closed by the two
 // circles' intersection, the velocity and acceleration coefficients (theta2' = 1,
 // theta2'' = 0) from the loop equation's derivatives, the potential's second derivative
@@ -167,13 +167,7 @@ struct FourBarByHand {
 };
 
 TEST(Linearization, FourBarOnASpringMatchesTheEnergyMethodOnTheCrankAngle) {
-  Mechanism m = load_mechanism("four-bar");
-  for (Joint& joint : m.joints)
-    if (joint.name == "O4") {
-      joint.stiffness = Quantity{"0.8", {}};
-      joint.rest_angle = Quantity{"1.2", {}};
-    }
-  const sym::System system(m);
+  const sym::System system(load_mechanism("four-bar-spring"));  // k = 0.8 N m/rad at O4, slack at 1.2 rad
   const Linearization linear = linearize(system);
   ASSERT_EQ(linear.coordinates, (std::vector<std::string>{"2.theta"}));  // the file's independent coordinate
   const double th2 = linear.equilibrium[0];
