@@ -22,23 +22,24 @@ const std::vector<CompareColumn> kAll{
     CompareColumn::rejected,    CompareColumn::rhs_evaluations, CompareColumn::run_time};
 
 TEST(RunCompare, HalvingTheStepCutsTheFinalErrorAndDoublesTheCost) {
-  const std::vector<linkage::Run> runs{rk4("dt, 0.02", 0.02), rk4("dt 0.01", 0.01)};
+  const std::vector<linkage::Run> runs{rk4("dt, 0.1", 0.1), rk4("dt 0.05", 0.05)};
   const Comparison c = compare_runs(runs, kAll, 0.5);
   ASSERT_EQ(c.figures.size(), 2u);
+  // Steps large enough that both errors stand far above the reference's own (~1e-13).
   EXPECT_GT(c.figures[0].final_error / c.figures[1].final_error, 12);
-  EXPECT_EQ(c.figures[0].steps, 100);
-  EXPECT_EQ(c.figures[1].steps, 200);
-  EXPECT_EQ(c.figures[1].rhs_evaluations, 4 * 200);  // four stages a step
+  EXPECT_EQ(c.figures[0].steps, 20);
+  EXPECT_EQ(c.figures[1].steps, 40);
+  EXPECT_EQ(c.figures[1].rhs_evaluations, 4 * 40);  // four stages a step
   EXPECT_TRUE(c.warnings.empty());
   EXPECT_EQ(c.table.headers, (std::vector<std::string>{"run", "final error", "energy error", "constraint error (m)",
                                                        "steps", "rejected", "RHS evaluations", "run time (ms)"}));
   ASSERT_EQ(c.table.rows.size(), 2u);
-  EXPECT_EQ(c.table.rows[1][4], "200");
+  EXPECT_EQ(c.table.rows[1][4], "40");
   // The CSV: names, the label quoted for its comma, numbers round-trip.
   const std::string head = "run,final_error,energy_error,constraint_error,steps,rejected,rhs_evaluations,run_time\n";
   ASSERT_EQ(c.csv.substr(0, head.size()), head);
-  EXPECT_EQ(c.csv.substr(head.size(), 11), "\"dt, 0.02\",");
-  EXPECT_NE(c.csv.find("\ndt 0.01,"), std::string::npos);
+  EXPECT_EQ(c.csv.substr(head.size(), 10), "\"dt, 0.1\",");
+  EXPECT_NE(c.csv.find("\ndt 0.05,"), std::string::npos);
 }
 
 TEST(RunCompare, ThePlotOfCostGroupsRunsBySeries) {
