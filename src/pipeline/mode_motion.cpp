@@ -11,18 +11,6 @@
 namespace linkage {
 namespace {
 
-std::string kind_word(Mode::Kind kind) {
-  switch (kind) {
-    case Mode::Kind::oscillation:
-      return "oscillation";
-    case Mode::Kind::neutral:
-      return "neutral";
-    case Mode::Kind::unstable:
-      return "unstable";
-  }
-  return {};
-}
-
 /// "3 modes: 1 unstable, 2 oscillations", in their order (unstable first).
 std::string modes_in_words(const ModalAnalysis& modes) {
   const std::size_t n = modes.modes.size();
