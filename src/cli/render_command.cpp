@@ -21,9 +21,11 @@
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
 #include "core/progress.hpp"
+#include "formulations/linearization.hpp"
 #include "model/spanning_tree.hpp"
 #include "pipeline/clip_request.hpp"
 #include "pipeline/mechanism_clip.hpp"
+#include "pipeline/mode_motion.hpp"
 #include "pipeline/render_options.hpp"
 #include "render/settings.hpp"
 #include "render/theme.hpp"
@@ -43,6 +45,9 @@ struct RenderFlags {
   CLI::Option* out_option = nullptr;
   CLI::Option* duration_option = nullptr;
   MechanismOptions mechanism;
+  std::string mode, amplitude;  // --mode N, --amplitude A as given
+  bool nonlinear = false;
+  CLI::Option* amplitude_option = nullptr;
   // The picture's options (pipeline/render_options), each flag's values as given.
   std::vector<std::vector<std::string>> values = std::vector<std::vector<std::string>>(render_options().size());
   std::vector<CLI::Option*> flags;
@@ -120,19 +125,60 @@ void print_stats(const RenderStats& s, const std::string& evaluator) {
   std::printf("%s\n", json.dump(2).c_str());
 }
 
+/// The picture's flag `name` was given.
+bool given(const RenderFlags& f, std::string_view name) {
+  const std::span<const RenderOption> options = render_options();
+  for (std::size_t i = 0; i < options.size(); ++i)
+    if (options[i].name == name) return f.flags[i]->count() > 0;
+  return false;
+}
+
+/// --mode N, checked against the other flags before any work: the mode's number; 0 without --mode.
+int mode_number(const RenderFlags& f, const SimulationOptions& simulation) {
+  if (f.mode.empty()) {
+    if (f.amplitude_option->count() > 0) throw Error::input("--amplitude: applies only with --mode N");
+    if (f.nonlinear) throw Error::input("--nonlinear: applies only with --mode N");
+    return 0;
+  }
+  const double n = parse_number(f.mode, "--mode", "");
+  if (n != std::floor(n) || n < 1 || n > 1e6)
+    throw Error::input("--mode: '" + f.mode +
+                       "' is not a mode's number; valid: a whole number from 1, as linkage modes numbers them");
+  for (const char* other : {"ensemble", "compare"})
+    if (given(f, other))
+      throw Error::input("--mode: draws one mode about the equilibrium; it does not combine with " + flag_name(other));
+  if (!f.nonlinear && simulation.case_id != 3)
+    throw Error::input("--case: " + std::to_string(simulation.case_id) +
+                       " applies to --mode only with --nonlinear; the linear motion is in Case 3's coordinates");
+  return static_cast<int>(n);
+}
+
 /// The mechanism's clip (the homework's flags and --config are settings of two-blocks.toml):
 /// its scene and camera, its outputs, every check before any work.
 ClipResult render_mechanism(const RenderFlags& f, const ClipProgress& progress) {
-  const RenderRequest request = resolve_request(f);
+  RenderRequest request = resolve_request(f);
   const ClipPlan plan = plan_of(f);
   const SimulationOptions simulation = resolve_simulation_flags(f.simulation, request.settings.duration);
+  const int mode = mode_number(f, simulation);
+  const double amplitude = f.amplitude.empty() ? 0.1 : parse_number(f.amplitude, "--amplitude", "rad or m");
   Deriving deriving(f.quiet);
   // The initial state worked out as solve does, so a value that breaks it is named the same way.
   const MechanismSolution checked =
       work_out_mechanism(chosen_mechanism(f.mechanism, f.inputs), {static_cast<CaseId>(simulation.case_id)});
   const sym::System& system = *checked.system;
-  CheckedMechanismClip made = mechanism_clip(request, system, checked.state, simulation, plan);
+  std::optional<ModeMotion> shown;  // --mode: the motion drawn instead of the file's initial state's
+  if (mode > 0) {
+    const Linearization linear = linearize(system);
+    shown = mode_motion(system, linear, modal_analysis(linear), mode, amplitude, f.nonlinear);
+    if (f.caption.empty()) request.settings.captions = {{0.0, shown->caption}};
+  }
+  const GiNaC::exmap& initial = shown ? shown->initial : checked.state;
+  CheckedMechanismClip made = mechanism_clip(request, system, initial, simulation, plan);
   made.clip.derived = checked.cases.front().system;
+  if (shown) {
+    made.clip.prescribed = shown->prescribed;
+    made.clip.hud_run = shown->hud;
+  }
   const MechanismClip& clip = made.clip;
   deriving.done();
   note_duration(f, clip.is_still(), clip.frames.has_value());
@@ -149,7 +195,7 @@ ClipResult render_mechanism(const RenderFlags& f, const ClipProgress& progress) 
   // Sampling the motion compiles more of a long chain's expressions: until the output is
   // begun (file_begun), a signal still ends the run at once.
   const EndAtOnceOnSignal until_a_file_is_begun;
-  return produce_mechanism_clip(system, checked.state, clip, progress);
+  return produce_mechanism_clip(system, initial, clip, progress);
 }
 
 void run_render(const RenderFlags& flags) {
@@ -216,6 +262,20 @@ void register_render(CLI::App& app) {
                                                            : CLI::MultiOptionPolicy::TakeLast);
     f->flags.push_back(flag);
   }
+  const std::string modes = "Mode (linkage modes)";
+  sub->add_option("--mode", f->mode,
+                  "Draw mode N (from 1, as linkage modes numbers them) about the equilibrium: the linear motion "
+                  "q0 + A shape cos(omega t), prescribed, not integrated")
+      ->type_name("N")
+      ->group(modes);
+  f->amplitude_option =
+      sub->add_option("--amplitude", f->amplitude,
+                      "The mode's amplitude: the largest coordinate's displacement, rad or m (default 0.1)")
+          ->type_name("A")
+          ->group(modes);
+  sub->add_flag("--nonlinear", f->nonlinear,
+                "With --mode: the full equations started at rest on the equilibrium displaced along the mode")
+      ->group(modes);
   add_simulation_flags(sub, f->simulation);
   add_input_options(sub, f->inputs);
   add_mechanism_options(sub, f->mechanism);

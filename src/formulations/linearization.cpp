@@ -294,6 +294,18 @@ Linearization linearize(const sym::System& system, const LinearizeOptions& optio
   return out;
 }
 
+std::string kind_word(Mode::Kind kind) {
+  switch (kind) {
+    case Mode::Kind::oscillation:
+      return "oscillation";
+    case Mode::Kind::neutral:
+      return "neutral";
+    case Mode::Kind::unstable:
+      return "unstable";
+  }
+  return {};
+}
+
 ModalAnalysis modal_analysis(const Linearization& linear) {
   ModalAnalysis out;
   const Eigen::MatrixXd M = 0.5 * (linear.M + linear.M.transpose());

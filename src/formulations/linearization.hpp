@@ -62,6 +62,9 @@ struct Mode {
   Eigen::VectorXd tree_shape;  // R shape: every tree coordinate
 };
 
+/// "oscillation", "neutral" or "unstable", as `linkage modes` names a mode's kind.
+[[nodiscard]] std::string kind_word(Mode::Kind kind);
+
 struct ModalAnalysis {
   std::vector<Mode> modes;  // by increasing omega^2 (unstable first, then neutral, then oscillations)
   bool damped = false;      // C is not zero

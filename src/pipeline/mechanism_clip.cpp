@@ -174,7 +174,8 @@ class MechanismFrames {
                mechanism_camera_mode(settings, geometry) == CameraMode::follow, resolve_points(geometry, clip.points)),
         motion_(motion),
         settings_(settings),
-        labels_{clip.settings.title, run_label(clip.simulation, motion.kinematic)},
+        labels_{clip.settings.title,
+                clip.hud_run.empty() ? run_label(clip.simulation, motion.kinematic) : clip.hud_run},
         overlays_(overlays),
         shown_(clip.settings.elements) {
     labels_.ensemble = std::move(ensemble_row);
@@ -319,7 +320,7 @@ void produce_still(const sym::System& system, const GiNaC::exmap& initial, const
   PanelData panel;
   const MechanismMotion motion =
       sample_mechanism_motion(system, initial, options, times, trail_steps(clip), result, progress, s.panel, &panel,
-                              clip.derived, s.elements.has(Element::acceleration));
+                              clip.derived, s.elements.has(Element::acceleration), clip.prescribed);
   panel.t_end = s.at;
   const std::vector<Overlay> overlays = sample_overlays(system, initial, clip, options, times, result);
   FrameLayout layout(s, clip.theme, std::move(panel));
@@ -401,7 +402,8 @@ MechanismMotion sample_mechanism_motion(const sym::System& system, const GiNaC::
                                         const SimulationOptions& options, const std::vector<double>& frame_times,
                                         int trail_steps, ClipResult& result, const ClipProgress& progress,
                                         const std::vector<std::string>& panel_names, PanelData* panel,
-                                        const std::optional<CaseSystem>& derived, bool accelerations) {
+                                        const std::optional<CaseSystem>& derived, bool accelerations,
+                                        const PrescribedState& prescribed) {
   const auto start = std::chrono::steady_clock::now();
   const bool same_case = derived && derived->id == static_cast<CaseId>(options.case_id);
   std::vector<MechanismColumn> columns;
@@ -416,6 +418,17 @@ MechanismMotion sample_mechanism_motion(const sym::System& system, const GiNaC::
   MechanismMotion motion;
   motion.times = frame_times;
   motion.samples.resize(frame_times.size());
+  motion.prescribed = static_cast<bool>(prescribed);
+  // A prescribed motion fills Case 3's (q, q') in a copy of the initial state; nothing is integrated.
+  if (prescribed && options.case_id != 3)
+    throw Error::failure("a prescribed motion is in Case 3's coordinates, not Case " + std::to_string(options.case_id) +
+                         "'s");
+  Eigen::VectorXd given = prescribed ? simulation.state_at(0) : Eigen::VectorXd();
+  const auto state_at = [&](double t) -> const Eigen::VectorXd& {
+    if (!prescribed) return simulation.state_at(t);
+    prescribed(t, given);
+    return given;
+  };
   const bool fine = trail_steps > 1;
   // The HUD's energy balance, as the energy_error column gives it; and whether the case
   // keeps a constraint whose error is worth showing (Case 1 every joint, else loops).
@@ -447,7 +460,7 @@ MechanismMotion sample_mechanism_motion(const sym::System& system, const GiNaC::
       inner.emplace_back(frame_times[i - 1] + span * step / panel_steps, false);
     std::sort(inner.begin(), inner.end());
     for (const auto& [t, trail] : inner) {
-      const Eigen::VectorXd& y = simulation.state_at(t);
+      const Eigen::VectorXd& y = state_at(t);
       simulation.sample(t, y, between, !trail && kinematics);
       if (trail) {
         motion.trail_times.push_back(t);
@@ -456,9 +469,10 @@ MechanismMotion sample_mechanism_motion(const sym::System& system, const GiNaC::
         add_panel(t, y, between);
       }
     }
-    const Eigen::VectorXd& y = simulation.state_at(frame_times[i]);
+    const Eigen::VectorXd& y = state_at(frame_times[i]);
     simulation.sample(frame_times[i], y, motion.samples[i], kinematics);
-    motion.energy_error.push_back(column_value(balance, frame_times[i], y, motion.samples[i], simulation.origin()));
+    if (!prescribed)
+      motion.energy_error.push_back(column_value(balance, frame_times[i], y, motion.samples[i], simulation.origin()));
     if (!columns.empty()) add_panel(frame_times[i], y, motion.samples[i]);
     if (fine) {
       motion.trail_times.push_back(frame_times[i]);
@@ -469,7 +483,8 @@ MechanismMotion sample_mechanism_motion(const sym::System& system, const GiNaC::
   const std::size_t between_frames = fine ? motion.trail_times.size() - frame_times.size() : 0;
   result.stats.samples += static_cast<std::int64_t>(frame_times.size() + between_frames);
   result.stats.simulate_seconds += seconds_since(start);
-  const std::string warning = mechanism_result_warning(options, simulation.stats());
+  // A prescribed motion's energy does not balance: nothing to warn about.
+  const std::string warning = prescribed ? std::string() : mechanism_result_warning(options, simulation.stats());
   if (!warning.empty()) result.warnings.push_back(warning);
   if (result.evaluator.empty()) result.evaluator = simulation.stats().evaluator;
   return motion;
@@ -672,7 +687,7 @@ struct MechanismClipFrames::Drawn {
         times(frame_times(clip.settings)),
         motion(sample_mechanism_motion(system, initial, clip.simulation, times, trail_steps(clip), result, progress,
                                        clip.settings.panel, &panel, clip.derived,
-                                       clip.settings.elements.has(Element::acceleration))),
+                                       clip.settings.elements.has(Element::acceleration), clip.prescribed)),
         overlays(sample_overlays(system, initial, clip, clip.simulation, times, result)),
         layout(clip.settings, clip.theme, ending(std::move(panel), clip.settings.duration)),
         frames(mechanism_geometry(system), motion, clip, layout.scene_settings(), overlays,

@@ -14,6 +14,7 @@
 #include "core/frame.hpp"
 #include "integrate/simulation_options.hpp"
 #include "pipeline/clip_result.hpp"
+#include "pipeline/mode_motion.hpp"
 #include "pipeline/trajectory_csv.hpp"
 #include "render/panel.hpp"
 #include "render/settings.hpp"
@@ -75,6 +76,10 @@ struct MechanismClip {
   /// The system's case as derive_case gives it, when the caller derived it already (to
   /// check the initial state): the runs of that case reuse it rather than derive again.
   std::optional<CaseSystem> derived;
+  /// A motion drawn instead of the simulation's (a mode's linear motion, Case 3's state):
+  /// samples, trails, arrows and the panel come from it; the HUD shows no energy balance.
+  PrescribedState prescribed{};
+  std::string hud_run;  // the HUD's run row instead of the case and integrator ("mode 1 · linear, 0.819 Hz")
 
   [[nodiscard]] bool is_still() const;
   /// Checks the outputs, settings, simulation and trails before any work: Error::invalid
@@ -106,12 +111,14 @@ struct MechanismClip {
 /// every frame time and between them, at least 4000 samples over the clip (settings.panel,
 /// checked by validate()). `derived`: the system's case, used when it is the one `options`
 /// runs (MechanismClip::derived). `accelerations`: every sample with its kinematics
-/// (the acceleration arrows'). Records each frame's energy balance (MechanismMotion).
+/// (the acceleration arrows'). Records each frame's energy balance (MechanismMotion), except
+/// for a `prescribed` motion (MechanismClip::prescribed), which replaces the simulation's states.
 MechanismMotion sample_mechanism_motion(const sym::System& system, const GiNaC::exmap& initial,
                                         const SimulationOptions& options, const std::vector<double>& frame_times,
                                         int trail_steps, ClipResult& result, const ClipProgress& progress = {},
                                         const std::vector<std::string>& panel_names = {}, PanelData* panel = nullptr,
-                                        const std::optional<CaseSystem>& derived = {}, bool accelerations = false);
+                                        const std::optional<CaseSystem>& derived = {}, bool accelerations = false,
+                                        const PrescribedState& prescribed = {});
 
 /// The ensemble's other runs: `initial` with the first generalized coordinate moved by
 /// spread k / (n - 1), k = 1 .. n - 1 (evenly spaced, no randomness), loops closed again.

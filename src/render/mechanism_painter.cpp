@@ -228,7 +228,7 @@ void paint_body_labels(cairo_t* cr, const DrawStyle& style, const List& list, co
   }
 }
 
-// The HUD (top right): the time, the run, the energy balance and, when the case keeps a
+// The HUD (top right): the time, the run, the energy balance (not of a prescribed motion) and, when the case keeps a
 // constraint, its error; under it a row per other run with a swatch of its colour. The
 // box they take.
 Rect paint_time(cairo_t* cr, const DrawStyle& style, double t, const MechanismLabels& labels, const List::Hud& errors,
@@ -239,6 +239,7 @@ Rect paint_time(cairo_t* cr, const DrawStyle& style, double t, const MechanismLa
     const std::size_t end = std::strlen(hud.energy.data());
     std::snprintf(hud.energy.data() + end, hud.energy.size() - end, " J");
     if (!errors.constraint) hud.constraint[0] = '\0';
+    if (!errors.energy) hud.energy[0] = '\0';
   };
   HudText hud, widest;
   fill(hud, t, errors.energy_error, errors.constraint_error);

@@ -629,7 +629,8 @@ Rect hud_rect(cairo_t* cr, const DrawStyle& style, const HudText& hud, int width
   const double labels = std::max(text::width(cr, font, kEnergyLabel), text::width(cr, font, kConstraintLabel));
   const double inner_width = std::max({text::width(cr, hud_time_font(style), hud.time.data()),
                                        text::width(cr, font, hud.run.data()), labels + 14 * u + values});
-  const int rows = hud.constraint[0] == '\0' ? 2 : 3;  // no constraint kept: no constraint row
+  // No constraint kept, or a prescribed motion: no constraint row, no energy row.
+  const int rows = 1 + (hud.energy[0] == '\0' ? 0 : 1) + (hud.constraint[0] == '\0' ? 0 : 1);
   const double inner_height = 1.5 * hud_time_font(style).size + rows * 1.6 * font.size;
   const double box_width = inner_width + 2 * 10 * u, box_height = inner_height + 2 * 6 * u;
   return snapped(width - style.padding() - box_width, style.padding(), box_width, box_height);
@@ -651,9 +652,11 @@ void paint_hud(cairo_t* cr, const DrawStyle& style, const HudText& hud, const Re
   const double offset = 0.5 * (row + m.ascent - m.descent);
   text::draw(cr, font, left, y + offset, hud.run.data(), theme.text_muted);
   y += row;
-  text::draw(cr, font, left, y + offset, kEnergyLabel, theme.text_muted);
-  text::draw(cr, font, right, y + offset, hud.energy.data(), theme.text, text::Align::right);
-  y += row;
+  if (hud.energy[0] != '\0') {
+    text::draw(cr, font, left, y + offset, kEnergyLabel, theme.text_muted);
+    text::draw(cr, font, right, y + offset, hud.energy.data(), theme.text, text::Align::right);
+    y += row;
+  }
   if (hud.constraint[0] == '\0') return;
   text::draw(cr, font, left, y + offset, kConstraintLabel, theme.text_muted);
   text::draw(cr, font, right, y + offset, hud.constraint.data(), theme.text, text::Align::right);

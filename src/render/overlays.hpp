@@ -114,7 +114,7 @@ void paint_scale_bar(cairo_t* cr, const DrawStyle& style, const std::string& lab
 struct HudText {
   std::array<char, 32> time{};        // "t = 1.23 s"
   std::array<char, 64> run{};         // "Case 3 · dop853"
-  std::array<char, 32> energy{};      // "+1.2e−13"
+  std::array<char, 32> energy{};      // "+1.2e−13"; empty: no energy row
   std::array<char, 32> constraint{};  // "3.4e−16 m"; empty: no constraint row
 };
 /// Fills the time and error fields.

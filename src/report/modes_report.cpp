@@ -53,18 +53,6 @@ void symbolic_entries(std::string& out, const std::string& name, const std::vect
   if (!any) out += "  " + name + " = 0\n";
 }
 
-std::string kind_word(const Mode& mode) {
-  switch (mode.kind) {
-    case Mode::Kind::oscillation:
-      return "oscillation";
-    case Mode::Kind::neutral:
-      return "neutral";
-    case Mode::Kind::unstable:
-      return "unstable";
-  }
-  return {};
-}
-
 }  // namespace
 
 std::string modes_text(const sym::System& system, const Linearization& linear, const ModalAnalysis& modes,
@@ -163,7 +151,7 @@ std::string modes_text(const sym::System& system, const Linearization& linear, c
     const Mode& mode = modes.modes[k];
     const bool oscillates = mode.kind == Mode::Kind::oscillation;
     table.row_labels.push_back("mode " + std::to_string(k + 1));
-    std::vector<std::string> row{kind_word(mode), oscillates ? number(mode.omega, o) : "-",
+    std::vector<std::string> row{kind_word(mode.kind), oscillates ? number(mode.omega, o) : "-",
                                  oscillates ? number(mode.omega / (2 * std::numbers::pi), o) : "-",
                                  oscillates ? number(2 * std::numbers::pi / mode.omega, o) : "-"};
     if (modes.damped) row.push_back(oscillates ? number(mode.damping_ratio, o) : "-");
@@ -231,7 +219,7 @@ std::string modes_json(const sym::System& system, const Linearization& linear, c
   json list = json::array();
   for (const Mode& mode : modes.modes) {
     json one;
-    one["kind"] = kind_word(mode);
+    one["kind"] = kind_word(mode.kind);
     if (mode.kind == Mode::Kind::unstable) {
       one["growth_rate"] = mode.growth_rate;
     } else {

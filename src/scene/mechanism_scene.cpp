@@ -980,6 +980,7 @@ void MechanismScene::frame(std::size_t k, MechanismDrawList& out) const {
   out.hud = {};
   if (k < motion_.energy_error.size()) out.hud.energy_error = motion_.energy_error[k];
   out.hud.constraint = motion_.constraints_kept;
+  out.hud.energy = !motion_.prescribed;
   for (const double c : s.constraint) out.hud.constraint_error = std::max(out.hud.constraint_error, c);
   const std::vector<double>& pose = s.pose;
   const bool bodies = shown_.has(Element::blocks);

@@ -207,6 +207,7 @@ struct MechanismDrawList {
   struct Hud {
     double energy_error = 0, constraint_error = 0;
     bool constraint = false;
+    bool energy = true;  // false: the motion is prescribed, its energy balance means nothing
   };
   Hud hud;
   Vec2 centre_of_mass = Vec2::Zero();         // of the whole mechanism, world
@@ -222,6 +223,7 @@ struct MechanismMotion {
   std::vector<double> energy_error;  // per sample: E − E0 − W, J (empty: not recorded)
   bool constraints_kept = false;     // the case keeps a joint's constraint (its error is worth showing)
   bool kinematic = false;            // the drivers fixed the motion: nothing was integrated
+  bool prescribed = false;           // a motion given, not integrated (a mode's linear motion): no energy balance
   std::vector<double> trail_times;
   std::vector<std::vector<double>> trail_poses;
 };
