@@ -1,11 +1,11 @@
 // `linkage mechanisms [NAME|FILE]`: the shipped mechanisms as a table, or one described.
 #include <algorithm>
-#include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/write_stdout.hpp"
 #include "core/error.hpp"
 #include "core/number_format.hpp"
 #include "model/mechanism_toml.hpp"
@@ -15,11 +15,6 @@ namespace linkage::cli {
 namespace {
 
 constexpr std::size_t kWidth = 80;
-
-void write_stdout(const std::string& text) {
-  if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0)
-    throw Error::failure("cannot write to standard output");
-}
 
 std::string pad(const std::string& text, std::size_t width) {
   return text.size() >= width ? text : text + std::string(width - text.size(), ' ');
@@ -185,11 +180,11 @@ std::string describe_mechanism(const Mechanism& m) {
 
 void run_mechanisms(const std::string& which) {
   if (which.empty()) {
-    write_stdout(list_mechanisms());
+    write_stdout(list_mechanisms(), "the list of mechanisms");
     return;
   }
   try {
-    write_stdout(describe_mechanism(load_mechanism(which)));
+    write_stdout(describe_mechanism(load_mechanism(which)), "the description");
   } catch (const Error& e) {
     // The mechanism is the command's argument here, not a --mechanism flag.
     if (e.setting() == "mechanism") throw e.rephrased("mechanisms: " + e.detail());

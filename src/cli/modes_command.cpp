@@ -1,10 +1,10 @@
 // `linkage modes`: a mechanism's small vibrations about its equilibrium (issue 26).
-#include <cstdio>
 #include <memory>
 
 #include "cli/commands.hpp"
 #include "cli/input_options.hpp"
 #include "cli/mechanism_options.hpp"
+#include "cli/write_stdout.hpp"
 #include "core/error.hpp"
 #include "core/number_format.hpp"
 #include "formulations/linearization.hpp"
@@ -49,8 +49,7 @@ void run_modes(const ModesOptions& options) {
   report.text_style = options.ascii ? Style::ascii : text_style_from_locale();
   const std::string text = options.format == "json" ? modes_json(system, linear, modes, checked)
                                                     : modes_text(system, linear, modes, report, checked);
-  if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0)
-    throw Error::failure("cannot write the modes to standard output");
+  write_stdout(text, "the modes");
 }
 
 }  // namespace

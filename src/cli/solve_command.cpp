@@ -1,15 +1,14 @@
 // `linkage solve`: the worked solution of the spec at any parameters and state.
 #include <algorithm>
-#include <cstdio>
 #include <memory>
 
 #include "cli/angle_option.hpp"
 #include "cli/commands.hpp"
 #include "cli/input_options.hpp"
 #include "cli/mechanism_options.hpp"
+#include "cli/write_stdout.hpp"
 #include "core/deriving.hpp"
 #include "core/error.hpp"
-#include "core/interrupt.hpp"
 #include "report/code_export.hpp"
 #include "report/mechanism_latex.hpp"
 #include "report/mechanism_solution.hpp"
@@ -32,17 +31,6 @@ struct SolveOptions {
   std::string form = "newton-euler";
   MechanismOptions mechanism;
 };
-
-/// In pieces, with a signal check between them: a long chain's solution is megabytes.
-void write_stdout(const std::string& text) {
-  constexpr std::size_t kPiece = 1 << 16;
-  for (std::size_t at = 0; at < text.size(); at += kPiece) {
-    throw_if_interrupted();
-    const std::size_t n = std::min(kPiece, text.size() - at);
-    if (std::fwrite(text.data() + at, 1, n, stdout) != n || std::fflush(stdout) != 0)
-      throw Error::failure("cannot write the worked solution to standard output");
-  }
-}
 
 std::vector<int> parse_case_selection(const std::string& which) {
   if (which == "all") return {1, 2, 3};
@@ -101,7 +89,7 @@ void run_solve(const SolveOptions& options) {
   else
     text = mechanism_text(solution, report);
   deriving.done();
-  write_stdout(text);
+  write_stdout(text, "the worked solution");
 }
 
 }  // namespace
