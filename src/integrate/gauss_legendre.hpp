@@ -12,7 +12,7 @@
 // by simplified Newton iteration with J ~ df/dy from forward differences:
 //   (I - h A (x) J) dZ = -Z + h (A (x) I) F(Z),    Z <- Z + dZ
 // It stops when the update is at the round-off of the residual (eps |Y| propagated
-// through h |J|); it fails (and the step is refused) when the update stops shrinking
+// through h |J|, at least eps max |Y|); it fails (and the step is refused) when the update stops shrinking
 // before that, or after `max_iterations`: h is too large for the problem.
 //
 // Work saved between steps of equal size that continue each other: the iteration starts
@@ -142,6 +142,11 @@ class GaussLegendre2 {
       // eps |Y_j| of rounding, which reaches component i through h |J_ij|.
       magnitude_ = y.cwiseAbs() + z1_.cwiseAbs() + z2_.cwiseAbs();
       noise_ = eps * (magnitude_ + h * (jacobian_.cwiseAbs() * magnitude_));
+      // A component that is zero by symmetry (a cart's y, a hanging rod's vertical rate)
+      // has no round-off of its own, yet the right-hand side's linear solve leaves eps of
+      // the other components in it: judge it against eps times the state's largest, as a
+      // scalar atol does.
+      noise_ = noise_.cwiseMax(eps * magnitude_.maxCoeff());
       Scalar change = 0;
       for (Eigen::Index i = 0; i < n; ++i) {
         const Scalar d = std::max(std::fabs(delta_[i]), std::fabs(delta_[n + i]));
