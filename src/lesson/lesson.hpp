@@ -24,9 +24,9 @@
 
 namespace linkage::lesson {
 
-enum class StepKind { say, set, pause, exercise, solve, simulate, render, plot, compare };
-inline constexpr std::array<std::string_view, 9> kStepKindNames{"say",      "set",    "pause", "exercise", "solve",
-                                                                "simulate", "render", "plot",  "compare"};
+enum class StepKind { say, set, pause, exercise, solve, modes, simulate, render, plot, compare };
+inline constexpr std::array<std::string_view, 10> kStepKindNames{"say",   "set",      "pause",  "exercise", "solve",
+                                                                 "modes", "simulate", "render", "plot",     "compare"};
 [[nodiscard]] constexpr std::string_view name(StepKind k) { return kStepKindNames[static_cast<std::size_t>(k)]; }
 
 /// The parts of a worked solution a solve step can show, in the order they print (the
@@ -60,6 +60,12 @@ struct ExerciseStep {
 struct SolveStep {
   std::vector<int> cases;
   std::array<bool, kSolvePartNames.size()> parts{};
+};
+/// `linkage modes` of the step's mechanism: its options.
+struct ModesStep {
+  bool at_initial = false;
+  bool verify = false;
+  int digits = 6;
 };
 struct SimulateStep {
   Run run;
@@ -95,8 +101,8 @@ struct CompareStep {
   int width = 900, height = 600;
 };
 
-using StepBody =
-    std::variant<SayStep, SetStep, PauseStep, ExerciseStep, SolveStep, SimulateStep, RenderStep, PlotStep, CompareStep>;
+using StepBody = std::variant<SayStep, SetStep, PauseStep, ExerciseStep, SolveStep, ModesStep, SimulateStep, RenderStep,
+                              PlotStep, CompareStep>;
 
 struct Step {
   StepKind kind = StepKind::say;

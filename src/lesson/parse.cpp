@@ -30,6 +30,7 @@
 #include "report/markdown.hpp"
 #include "report/mechanism_solution.hpp"
 #include "report/mechanism_text.hpp"
+#include "report/modes_report.hpp"
 #include "report/quotable_values.hpp"
 #include "symbolic/loop_closure.hpp"
 #include "symbolic/system.hpp"
@@ -187,7 +188,7 @@ class Parser {
     if (auto m = r.string("mechanism")) {
       if (kind == StepKind::set || kind == StepKind::pause)
         r.fail("mechanism",
-               "'mechanism' applies to the steps that work on one (say, exercise, solve, simulate, "
+               "'mechanism' applies to the steps that work on one (say, exercise, solve, modes, simulate, "
                "render, plot, compare); give it at the top to change the lesson's");
       const std::string spec = mechanism_spec(r, "mechanism", *m);
       if (spec != lesson_mechanism_) {
@@ -279,6 +280,7 @@ class Parser {
         [&] { return StepBody(PauseStep{r.string("prompt").value_or("Press Enter to continue")}); },
         [&] { return StepBody(parse_exercise(r, inputs)); },
         [&] { return StepBody(parse_solve(r, inputs, step)); },
+        [&] { return StepBody(parse_modes(r, step)); },
         [&] { return StepBody(parse_simulate(r, inputs)); },
         [&] { return StepBody(parse_render(r, inputs)); },
         [&] { return StepBody(parse_plot(r, inputs)); },
@@ -426,6 +428,26 @@ class Parser {
     const std::vector<std::string_view> parts(kSolvePartNames.begin(), kSolvePartNames.end());
     if (!r.has("show")) s.parts.fill(true);
     for (std::size_t i : r.choice_list("show", parts)) s.parts[i] = true;
+    return s;
+  }
+
+  /// A modes step: `linkage modes` on the step's mechanism (the homework's blocks fall
+  /// freely: no equilibrium), linearized now so a lesson without one fails when it is read.
+  static ModesStep parse_modes(const TableReader& r, const Step& step) {
+    ModesStep s;
+    s.at_initial = r.boolean("at_initial").value_or(false);
+    s.verify = r.boolean("verify").value_or(false);
+    s.digits = static_cast<int>(r.integer("digits", 1, 17).value_or(6));
+    if (!step.mechanism)
+      throw Error::input(r.prefix("") +
+                         "a modes step needs a mechanism with an equilibrium (the homework's two blocks fall "
+                         "freely); give mechanism = \"NAME\" here or at the top, e.g. \"double-pendulum\"");
+    try {
+      (void)analyse_modes(*step.mechanism->system, s.at_initial, false);
+    } catch (const Error& e) {
+      if (e.code() != ExitCode::bad_input) throw;
+      throw e.rephrased(r.prefix("") + e.what());
+    }
     return s;
   }
 

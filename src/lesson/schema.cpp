@@ -73,6 +73,12 @@ constexpr std::array<KeySpec, 2> kSolveKeys{{
     {"show", "list of strings", "all parts"},
 }};
 
+constexpr std::array<KeySpec, 3> kModesKeys{{
+    {"at_initial", "boolean", "false"},
+    {"digits", "integer", "6"},
+    {"verify", "boolean", "false"},
+}};
+
 constexpr std::array<KeySpec, 3> kSimulateKeys{{
     {"trajectory", "string", "none"},
     {"every", "number", "duration / 100"},
@@ -135,13 +141,14 @@ struct KindEntry {
   bool run_keys;
 };
 
-const std::array<KindEntry, 9>& kinds() {
-  static const std::array<KindEntry, 9> table{{
+const std::array<KindEntry, 10>& kinds() {
+  static const std::array<KindEntry, 10> table{{
       {"say", kSayKeys, false},
       {"set", kSetKeys, false},
       {"pause", kPauseKeys, false},
       {"exercise", kExerciseKeys, false},
       {"solve", kSolveKeys, false},
+      {"modes", kModesKeys, false},
       {"simulate", kSimulateKeys, true},
       {"render", render_keys(), true},
       {"plot", kPlotKeys, true},
