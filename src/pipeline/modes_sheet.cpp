@@ -241,7 +241,30 @@ void ModesSheet::paint(cairo_t* cr) const {
   const RenderSettings& s = clip_.settings;
   const DrawStyle style{&clip_.theme, DrawStyle::unit_for(s.width, s.height)};
   const Theme& theme = clip_.theme;
-  paint_background(cr, style, s.width, s.height);
+  // The panels first: each one's background is then the first paint where it lies, which a
+  // vector surface keeps a shape (over anything drawn before it, a bitmap).
+  const MechanismLabels labels;  // no title, run or HUD in a panel
+  for (std::size_t i = 0; i < panels_.size(); ++i) {
+    const Cell c = cell(i);
+    cairo_save(cr);
+    cairo_translate(cr, c.picture.x, c.picture.y);
+    cairo_rectangle(cr, 0, 0, c.picture.width, c.picture.height);
+    cairo_clip(cr);
+    paint_mechanism_frame(cr, style, camera_, panels_[i].list, labels, 0, static_cast<int>(c.picture.width),
+                          static_cast<int>(c.picture.height));
+    cairo_restore(cr);
+  }
+  // The sheet's background around them.
+  cairo_save(cr);
+  cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
+  cairo_rectangle(cr, 0, 0, s.width, s.height);
+  for (std::size_t i = 0; i < panels_.size(); ++i) {
+    const Cell c = cell(i);
+    cairo_rectangle(cr, c.picture.x, c.picture.y, c.picture.width, c.picture.height);
+  }
+  set_colour(cr, theme.background);
+  cairo_fill(cr);
+  cairo_restore(cr);
   double below = style.padding();
   if (!s.title.empty() && s.elements.has(Element::title)) {
     const TitleLayout title = title_layout(cr, style, s.title, s.width);
@@ -250,23 +273,15 @@ void ModesSheet::paint(cairo_t* cr) const {
   }
   const text::Font small{style.small_size(), false};
   text::draw(cr, small, style.padding(), below + 1.2 * style.small_size(), subtitle_.c_str(), theme.text_muted);
-  const MechanismLabels labels;  // no title, run or HUD in a panel
+  const text::Font bold{style.text_size(), true}, plain{style.text_size(), false};
   for (std::size_t i = 0; i < panels_.size(); ++i) {
     const ModesSheetPanel& panel = panels_[i];
     const Cell c = cell(i);
-    cairo_save(cr);
-    cairo_translate(cr, c.picture.x, c.picture.y);
-    cairo_rectangle(cr, 0, 0, c.picture.width, c.picture.height);
-    cairo_clip(cr);
-    paint_mechanism_frame(cr, style, camera_, panel.list, labels, 0, static_cast<int>(c.picture.width),
-                          static_cast<int>(c.picture.height));
-    cairo_restore(cr);
     cairo_rectangle(cr, c.picture.x, c.picture.y, c.picture.width, c.picture.height);
     set_colour(cr, with_alpha(theme.text_muted, 0.6));
     cairo_set_line_width(cr, style.grid_width());
     cairo_stroke(cr);
     // The heading, then the shape wrapped to the panel's width.
-    const text::Font bold{style.text_size(), true}, plain{style.text_size(), false};
     const double centre = c.caption.x + 0.5 * c.caption.width, step = 1.45 * style.text_size();
     double y = c.caption.y + step;
     text::draw(cr, bold, centre, y, panel.heading.c_str(), theme.text, text::Align::centre);

@@ -179,6 +179,11 @@ TEST(ModesSheet, WritesAPngSvgOrPdfWholeAndRefusesAVideo) {
     EXPECT_GT(fs::file_size(dir.path() / name), 1000U) << name;
   }
   EXPECT_EQ(test::read_text(dir.path() / "sheet.png").substr(1, 3), "PNG");
+  // A vector sheet keeps every panel a shape: no bitmap fallback (each panel's background,
+  // painted with the SOURCE operator, must come before anything under it).
+  const std::string svg = test::read_text(dir.path() / "sheet.svg");
+  EXPECT_NE(svg.find("<path"), std::string::npos);
+  EXPECT_EQ(svg.find("<image"), std::string::npos);
   try {
     sheet.write(dir.path() / "sheet.mp4", "modes_sheet");
     FAIL() << "a video was written";
