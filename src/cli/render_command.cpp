@@ -161,10 +161,11 @@ int mode_number(const RenderFlags& f, const SimulationOptions& simulation) {
 /// --modes-sheet FILE: every mode in one still, its flags checked before any work.
 ClipResult render_modes_sheet(const RenderFlags& f) {
   const std::string alone = "--modes-sheet: draws every mode in one still; it does not combine with ";
-  if (!f.mode.empty()) throw Error::input(alone + "--mode (one mode's clip)");
-  if (f.nonlinear) throw Error::input(alone + "--nonlinear (the sheet shows the linear modes)");
-  for (const char* other : {"ensemble", "compare", "at"})
-    if (given(f, other)) throw Error::input(alone + flag_name(other));
+  for (const std::string_view other : kModesSheetConflicts)
+    if (given(f, other) || (other == "mode" && !f.mode.empty()) || (other == "nonlinear" && f.nonlinear))
+      throw Error::input(alone + flag_name(other));
+  if (!f.caption.empty()) throw Error::input(alone + "--caption (each panel has its own)");
+  if (f.duration_option->count() > 0) throw Error::input(alone + "--duration");
   if (f.out_option->count() > 0) throw Error::input(alone + "--out '" + f.out + "'; the sheet is its own output");
   if (!f.frames.empty()) throw Error::input(alone + "--frames");
   const fs::path out(f.modes_sheet);

@@ -24,6 +24,7 @@
 #include "pipeline/clip_request.hpp"
 #include "pipeline/clip_result.hpp"
 #include "pipeline/mode_motion.hpp"
+#include "pipeline/modes_sheet.hpp"
 #include "pipeline/panel_data.hpp"
 #include "pipeline/render_options.hpp"
 #include "pipeline/run_samples.hpp"
@@ -670,10 +671,14 @@ class Parser {
     s.nonlinear = r.boolean("nonlinear").value_or(false);
     s.modes_sheet = r.boolean("modes_sheet").value_or(false);
     if (s.modes_sheet) {
-      for (const char* other : {"mode", "nonlinear", "ensemble", "compare", "at"})
+      const auto refuse = [&](std::string_view other) {
         if (r.has(other))
           r.fail(other, "'" + std::string(other) +
                             "' does not combine with 'modes_sheet', which draws every mode in one still");
+      };
+      for (const std::string_view other : kModesSheetConflicts) refuse(other);
+      refuse("captions");  // each panel has its own
+      refuse("duration");
       if (!is_still(s.kind))
         r.fail("out", "'" + s.out + "' is a video; a step with 'modes_sheet' writes one still: .png, .svg or .pdf");
     } else if (s.mode == 0) {

@@ -8,8 +8,10 @@
 #include <cairo.h>
 
 #include <Eigen/Core>
+#include <array>
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "formulations/linearization.hpp"
@@ -66,6 +68,11 @@ class ModesSheet {
   double top_ = 0, caption_ = 0;  // px: the title band's and each caption band's height
   Camera camera_;
 };
+
+/// What a sheet does not combine with, as render options and lesson keys name them: a
+/// motion of its own (a mode's, overlaid runs, a time) or what only a motion draws.
+inline constexpr std::array<std::string_view, 11> kModesSheetConflicts{
+    "mode", "nonlinear", "ensemble", "compare", "at", "panel", "trail", "trail_length", "points", "view", "camera"};
 
 /// The sheet of `system`'s modes about its equilibrium (linearize, modal_analysis) written
 /// to `out`; linearize's Error::input when it has none (no degree of freedom, no equilibrium).
