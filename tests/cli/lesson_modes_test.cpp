@@ -33,6 +33,12 @@ TEST(LessonModes, RendersTheSheetAndAModesClipAndLinksThem) {
                                      "--amplitude", "0.2", "--modes-sheet", (dir.path() / "cli.png").string()});
   ASSERT_EQ(cli.exit_code, 0) << cli.err;
   EXPECT_EQ(read_text(dir.path() / "cli.png"), read_text(out / "modes.png"));
+  // And the mode's still is render --mode's at draft size and rate.
+  const RunResult mode = run_linkage({"render", "--quiet", "--mechanism", "double-pendulum", "--mode", "1",
+                                      "--nonlinear", "--amplitude", "0.5", "--at", "0.5", "--size", "480x270", "--fps",
+                                      "15", "--out", (dir.path() / "mode.png").string()});
+  ASSERT_EQ(mode.exit_code, 0) << mode.err;
+  EXPECT_EQ(read_text(dir.path() / "mode.png"), read_text(out / "mode-1-nonlinear.png"));
 }
 
 struct BadModeKeys {
