@@ -227,6 +227,7 @@ ClipResult render_mechanism(const RenderFlags& f, const ClipProgress& progress) 
   if (mode > 0) {
     const Linearization linear = linearize(system);
     shown = mode_motion(system, linear, modal_analysis(linear), mode, amplitude, f.nonlinear);
+    if (f.caption.empty()) request.settings.captions = {{0.0, shown->caption}};
   }
   const GiNaC::exmap& initial = shown ? shown->initial : checked.state;
   CheckedMechanismClip made = mechanism_clip(request, system, initial, simulation, plan);

@@ -41,10 +41,14 @@ ClipPlan step_plan(const std::filesystem::path& out, const std::filesystem::path
 }  // namespace
 
 CheckedMechanismClip render_clip(const RenderStep& render, Quality quality, const std::filesystem::path& out_dir,
-                                 const std::filesystem::path& assets, const GiNaC::exmap* initial) {
+                                 const std::filesystem::path& assets, const ModeMotion* mode) {
   const BuiltMechanism& built = *render.run.built;
-  return mechanism_clip(step_request(render, quality), *built.system, initial != nullptr ? *initial : built.initial,
-                        render.run.options, step_plan(out_dir / render.out, assets, quality));
+  RenderRequest request = step_request(render, quality);
+  if (mode != nullptr && request.settings.captions.empty()) request.settings.captions = {{0.0, mode->caption}};
+  CheckedMechanismClip made = mechanism_clip(request, *built.system, mode != nullptr ? mode->initial : built.initial,
+                                             render.run.options, step_plan(out_dir / render.out, assets, quality));
+  if (mode != nullptr) show_mode(made.clip, *mode);
+  return made;
 }
 
 void run_render(RunContext& c, const Step& step, const RenderStep& s) {
@@ -61,15 +65,13 @@ void run_render(RunContext& c, const Step& step, const RenderStep& s) {
       const Linearization linear = linearize(system);
       mode = mode_motion(system, linear, modal_analysis(linear), s.mode, s.amplitude, s.nonlinear);
     }
-    CheckedMechanismClip clip =
-        render_clip(s, c.options.quality, c.options.out_dir, c.options.assets, mode ? &mode->initial : nullptr);
+    const CheckedMechanismClip clip =
+        render_clip(s, c.options.quality, c.options.out_dir, c.options.assets, mode ? &*mode : nullptr);
     ClipResult made;
-    if (s.modes_sheet) {
+    if (s.modes_sheet)
       produce_modes_sheet(system, clip.clip, s.amplitude, c.options.out_dir / s.out, "modes_sheet");
-    } else {
-      if (mode) show_mode(clip.clip, *mode);
+    else
       made = produce_mechanism_clip(system, mode ? mode->initial : s.run.built->initial, clip.clip, report);
-    }
     nlohmann::json made_results = nlohmann::json::object();
     if (!made.warnings.empty()) made_results["warnings"] = made.warnings;
     return made_results;

@@ -650,7 +650,6 @@ std::vector<GiNaC::exmap> ensemble_states(const sym::System& system, const GiNaC
 void show_mode(MechanismClip& clip, const ModeMotion& motion) {
   clip.prescribed = motion.prescribed;
   clip.hud_run = motion.hud;
-  if (clip.settings.captions.empty()) clip.settings.captions = {{0.0, motion.caption}};
 }
 
 bool MechanismClip::is_still() const { return out && linkage::is_still(output_kind(*out, "out")); }

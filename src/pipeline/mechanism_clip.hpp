@@ -88,7 +88,7 @@ struct MechanismClip {
 };
 
 /// `clip` made to draw `motion` (a mode's, mode_motion): its prescribed states (none for the
-/// nonlinear one), the HUD's run row, and its caption unless the clip has captions.
+/// nonlinear one) and the HUD's run row. (Its caption, the default, goes into the request.)
 void show_mode(MechanismClip& clip, const ModeMotion& motion);
 
 /// One period of the drivers' motion, s: 2 pi/|omega| when every driver turns a pin at a
