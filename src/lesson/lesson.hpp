@@ -82,6 +82,10 @@ struct RenderStep {
   // The picture as render_options read it (the settings with the mechanism's title and the
   // equations shown, trails, ensemble, compare); --quality draft shrinks size and fps.
   RenderRequest request;
+  int mode = 0;              // a mode drawn about the equilibrium (render --mode N); 0: the run's motion
+  double amplitude = 0.1;    // the mode's largest coordinate's displacement, rad or m (--amplitude)
+  bool nonlinear = false;    // the full equations started on the mode (--nonlinear)
+  bool modes_sheet = false;  // out is every mode in one still (--modes-sheet)
 };
 struct PlotStep {
   std::string out;  // base name: out.png and out.svg

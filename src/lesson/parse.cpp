@@ -23,6 +23,8 @@
 #include "model/mechanism_toml.hpp"
 #include "pipeline/clip_request.hpp"
 #include "pipeline/clip_result.hpp"
+#include "pipeline/mode_motion.hpp"
+#include "pipeline/modes_sheet.hpp"
 #include "pipeline/panel_data.hpp"
 #include "pipeline/render_options.hpp"
 #include "pipeline/run_samples.hpp"
@@ -683,6 +685,44 @@ class Parser {
     return out;
   }
 
+  /// A render step's mode keys (render --mode, --modes-sheet), checked as the command
+  /// checks its flags; the mode's number and amplitude against the mechanism's modes.
+  static void mode_keys(const TableReader& r, RenderStep& s) {
+    if (r.has("mode")) s.mode = static_cast<int>(*r.integer("mode", 1, 1000000));
+    if (r.has("amplitude")) s.amplitude = *r.number("amplitude", -kInf, kInf, "");
+    s.nonlinear = r.boolean("nonlinear").value_or(false);
+    s.modes_sheet = r.boolean("modes_sheet").value_or(false);
+    if (s.modes_sheet) {
+      const auto refuse = [&](std::string_view other) {
+        if (r.has(other))
+          r.fail(other, "'" + std::string(other) +
+                            "' does not combine with 'modes_sheet', which draws every mode in one still");
+      };
+      for (const std::string_view other : kModesSheetConflicts) refuse(other);
+      refuse("captions");  // each panel has its own
+      refuse("duration");
+      if (!is_still(s.kind))
+        r.fail("out", "'" + s.out + "' is a video; a step with 'modes_sheet' writes one still: .png, .svg or .pdf");
+    } else if (s.mode == 0) {
+      for (const char* other : {"amplitude", "nonlinear"})
+        if (r.has(other)) r.fail(other, "'" + std::string(other) + "' applies only with 'mode' or 'modes_sheet'");
+    } else {
+      for (const char* other : {"ensemble", "compare"})
+        if (r.has(other)) r.fail(other, "'" + std::string(other) + "' does not combine with 'mode'");
+      if (!s.nonlinear && s.run.options.case_id != 3)
+        r.fail("case", "case = " + std::to_string(s.run.options.case_id) +
+                           " applies to 'mode' only with 'nonlinear'; the linear motion is in Case 3's coordinates");
+    }
+    if (!s.modes_sheet && s.mode == 0) return;
+    if (s.modes_sheet && s.run.options.case_id != 3)
+      r.fail("case", "case = " + std::to_string(s.run.options.case_id) +
+                         " does not apply to 'modes_sheet'; the modes are in Case 3's coordinates");
+    check_amplitude(s.amplitude);
+    const sym::System& system = *s.run.built->system;
+    const Linearization linear = linearize(system);
+    if (s.mode > 0) (void)mode_motion(system, linear, modal_analysis(linear), s.mode, s.amplitude, s.nonlinear);
+  }
+
   RenderStep parse_render(const TableReader& r, const Inputs& inputs) const {
     RenderStep s;
     s.out = artifact_name(r, "out");
@@ -732,6 +772,7 @@ class Parser {
       request.settings =
           mechanism_clip(request, *s.run.built->system, s.run.built->initial, s.run.options, plan).clip.settings;
       if (is_video(s.kind)) VideoWriter::validate(clip_video_options(request.settings, s.kind));
+      mode_keys(r, s);
     } catch (const Error& e) {
       if (e.code() != ExitCode::bad_input) throw;
       const std::string what = e.what();

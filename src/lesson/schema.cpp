@@ -86,7 +86,7 @@ constexpr std::array<KeySpec, 3> kSimulateKeys{{
 }};
 
 /// A render step's keys: its output and caption, every option of `linkage render`
-/// (pipeline/render_options), and its timed captions.
+/// (pipeline/render_options), a mode's, and its timed captions.
 std::span<const KeySpec> render_keys() {
   static const std::vector<KeySpec> keys = [] {
     std::vector<KeySpec> out{
@@ -94,6 +94,11 @@ std::span<const KeySpec> render_keys() {
         {"caption", "string", "none"},
     };
     for (const RenderOption& o : render_options()) out.push_back({o.name, o.type, o.default_text});
+    // A mode of small vibration (render --mode, --modes-sheet; issue 26).
+    out.push_back({"mode", "integer", "none"});
+    out.push_back({"amplitude", "number", "0.1"});
+    out.push_back({"nonlinear", "boolean", "false"});
+    out.push_back({"modes_sheet", "boolean", "false"});
     out.push_back({"captions", "array of tables", "none"});
     return out;
   }();

@@ -647,6 +647,11 @@ std::vector<GiNaC::exmap> ensemble_states(const sym::System& system, const GiNaC
   return states;
 }
 
+void show_mode(MechanismClip& clip, const ModeMotion& motion) {
+  clip.prescribed = motion.prescribed;
+  clip.hud_run = motion.hud;
+}
+
 bool MechanismClip::is_still() const { return out && linkage::is_still(output_kind(*out, "out")); }
 
 void MechanismClip::validate(const sym::System& system) const {

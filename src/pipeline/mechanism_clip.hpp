@@ -87,6 +87,10 @@ struct MechanismClip {
   void validate(const sym::System& system) const;
 };
 
+/// `clip` made to draw `motion` (a mode's, mode_motion): its prescribed states (none for the
+/// nonlinear one) and the HUD's run row. (Its caption, the default, goes into the request.)
+void show_mode(MechanismClip& clip, const ModeMotion& motion);
+
 /// One period of the drivers' motion, s: 2 pi/|omega| when every driver turns a pin at a
 /// constant rate omega (theta0 + omega*t) with one period; else Error::invalid("trail_length")
 /// naming the motion and why (`--trail-length cycle`).
