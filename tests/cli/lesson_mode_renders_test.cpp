@@ -13,7 +13,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kLesson = fs::path(LINKAGE_SOURCE_DIR) / "tests/data/mechanism-lessons/double-pendulum-mode-renders.toml";
+const fs::path kLesson =
+    fs::path(LINKAGE_SOURCE_DIR) / "tests/data/mechanism-lessons/double-pendulum-mode-renders.toml";
 
 TEST(LessonModeRenders, RendersTheSheetAndAModesClipAndLinksThem) {
   const TempDir dir;
