@@ -110,7 +110,9 @@ Placement place_label(const Rect& size, const Vec2& head, const Vec2& direction,
     return Rect{at.x() - 0.5 * size.width, at.y() - 0.5 * size.height, size.width, size.height};
   };
   for (int pass = 0; pass < 4; ++pass)
-    for (int ring = 0; ring < 10; ++ring)
+    // A place clear of everything is looked for further out (a crowded middle rod's
+    // spring labels find one only past its neighbours), with a line to the head.
+    for (int ring = 0; ring < (pass == 0 ? 30 : 10); ++ring)
       for (const double turn : kTurns) {
         const Rect box = candidate(ring, turn);
         if (pass < 3 && !inside_frame(box, width, height)) continue;
