@@ -611,7 +611,6 @@ void for_each_drawn_frame(const std::vector<std::string>& names, std::size_t eve
 TEST(MechanismForces, TheLegendAndItsScaleBarCoverNothingDrawnAndLabelsKeepOffTheCoilsAtEverySize) {
   std::vector<std::string> names = shipped_mechanism_names();
   names.push_back(test_mechanism("ladder.toml"));
-  names.push_back(test_mechanism("coupled-pendulums.toml"));
   std::size_t legends = 0, coils = 0;
   for_each_drawn_frame(names, 8, [&](const DrawnFrame& f) {
     const ForceLayout& layout = f.layout;
