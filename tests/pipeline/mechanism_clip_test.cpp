@@ -561,22 +561,13 @@ TEST(MechanismForces, TheCentresOfMassSymbolSitsInTheLegendAtNoCostOfRoom) {
   EXPECT_FALSE(list.legend.com);
 }
 
-// One frame of a clip as produce_mechanism_clip draws it: its camera, draw list and layout.
-struct DrawnFrame {
-  const std::string& name;
-  int width, height;
-  std::size_t k;
-  const Camera& camera;
-  const MechanismDrawList& list;
-  const ForceLayout& layout;
-};
-
 // Every `every`th frame of a 4 s clip at 10 frames a second of each mechanism in `names`
 // (with its [picture]'s title and trails, as `linkage render` draws it) at every size the
-// tool offers: --quality low, medium and high, and a lesson's draft (480x270). Frames of
-// a 4k clip are a 1080p one's at twice the unit.
+// tool offers: --quality low, medium and high, and a lesson's draft (480x270), as
+// produce_mechanism_clip draws it. Frames of a 4k clip are a 1080p one's at twice the unit.
 void for_each_drawn_frame(const std::vector<std::string>& names, std::size_t every,
-                          const std::function<void(const DrawnFrame&)>& check) {
+                          const std::function<void(const LaidOutFrame&)>& check) {
+  const Theme theme = load_theme("light", {}, "theme");
   for (const auto& [width, height] :
        {std::pair{854, 480}, std::pair{1280, 720}, std::pair{1920, 1080}, std::pair{480, 270}}) {
     for (const std::string& name : names) {
@@ -590,15 +581,16 @@ void for_each_drawn_frame(const std::vector<std::string>& names, std::size_t eve
       clip.settings.title = picture.title.empty() ? system.mechanism().title : picture.title;
       clip.simulation.duration = 4;
       clip.trails = picture.trails;
-      clip.theme = load_theme("light", {}, "theme");
+      clip.theme = theme;
       ClipResult result;
       MechanismClipFrames frames(system, sym::checked_initial_state(system).state, clip, result);
+      const DrawStyle style = style_at(theme, width, height);
       Frame frame(width, height);
       for (std::size_t k = 0; k < static_cast<std::size_t>(frames.count()); k += every) {
         SCOPED_TRACE(name + " at " + std::to_string(width) + "x" + std::to_string(height) + " frame " +
                      std::to_string(k));
         frames.draw(k, frame);
-        check({name, width, height, k, frames.camera(k), frames.list(), frames.layout()});
+        check({name, width, height, k, style, frames.camera(k), frames.list(), frames.layout()});
       }
     }
   }
@@ -612,7 +604,7 @@ TEST(MechanismForces, TheLegendAndItsScaleBarCoverNothingDrawnAndLabelsKeepOffTh
   std::vector<std::string> names = shipped_mechanism_names();
   names.push_back(test_mechanism("ladder.toml"));
   std::size_t legends = 0, coils = 0;
-  for_each_drawn_frame(names, 8, [&](const DrawnFrame& f) {
+  for_each_drawn_frame(names, 8, [&](const LaidOutFrame& f) {
     const ForceLayout& layout = f.layout;
     const auto box = [&](const std::vector<Vec2>& world) {
       Bounds b;
