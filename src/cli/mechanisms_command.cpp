@@ -51,7 +51,8 @@ std::string points_text(const std::vector<NamedPoint>& points) {
   return out.empty() ? "none" : out;
 }
 
-// Rows of cells as aligned columns, two spaces apart, each line indented.
+// Rows of cells as aligned columns, two spaces apart (one before a right-aligned column,
+// whose short numbers stand apart already), each line indented.
 std::string table(const std::vector<std::vector<std::string>>& rows, const std::string& indent,
                   const std::vector<bool>& right = {}) {
   std::vector<std::size_t> widths;
@@ -67,7 +68,7 @@ std::string table(const std::vector<std::vector<std::string>>& rows, const std::
       const bool last = i + 1 == row.size();
       const bool align_right = i < right.size() && right[i];
       line += align_right ? pad_left(row[i], widths[i]) : last ? row[i] : pad(row[i], widths[i]);
-      if (!last) line += "  ";
+      if (!last) line += i + 1 < right.size() && right[i + 1] ? " " : "  ";
     }
     out += line + "\n";
   }

@@ -176,13 +176,12 @@ TEST(Linearization, FourBarOnASpringMatchesTheEnergyMethodOnTheCrankAngle) {
   EXPECT_NEAR(modes.modes[0].tree_shape[2], hand.w4, 1e-12);
 }
 
-// tests/data/mechanisms/coupled-pendulums.toml: three rods (m, L) from pins d apart, springs k at a below the
+// coupled-pendulums.toml: three rods (m, L) from pins d apart, springs k at a below the
 // pins, slack hanging: I th'' + (m g L / 2) th + k a^2 P th = 0 with I = m L^2 / 3 and P the
 // path graph's Laplacian, eigenvalues 0, 1, 3 with shapes (1, 1, 1), (1, 0, -1), (1, -2, 1).
 TEST(Linearization, CoupledPendulumsMatchThePathGraphsModes) {
   const double m = 0.2, L = 0.4, a = 0.25, k = 1.5, g = 9.81, I = m * L * L / 3;
-  const sym::System system(
-      load_mechanism(std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/coupled-pendulums.toml"));
+  const sym::System system(load_mechanism("coupled-pendulums"));
   const ModalAnalysis modes = modal_analysis(linearize(system));
   ASSERT_EQ(modes.modes.size(), 3U);
   const std::array<double, 3> laplacian{0, 1, 3};
