@@ -140,7 +140,7 @@ TEST(MechanismToml, EveryShippedMechanismReads) {
   EXPECT_EQ(names, files);
   EXPECT_EQ(names, (std::vector<std::string>{"cart-pendulum", "double-pendulum", "engine", "four-bar",
                                              "four-bar-driven", "four-bar-spring", "slider-crank", "spring-pendulum",
-                                             "triple-pendulum", "two-blocks", "unequal-blocks"}));
+                                             "triple-pendulum", "two-blocks", "unequal-blocks", "welded-pendulum"}));
   for (const std::string& name : names) {
     SCOPED_TRACE(name);
     const Mechanism built_in = load_mechanism(name);
@@ -175,7 +175,8 @@ TEST(MechanismToml, ShippedMechanismsHaveTheDocumentedStructure) {
                                                  {"spring-pendulum", 1, 0, 3, 0},
                                                  {"slider-crank", 3, 4, 1, 1},
                                                  {"four-bar", 3, 4, 1, 1},
-                                                 {"four-bar-spring", 3, 4, 1, 1}}) {
+                                                 {"four-bar-spring", 3, 4, 1, 1},
+                                                 {"welded-pendulum", 2, 2, 1, 0}}) {
     SCOPED_TRACE(e.name);
     const Mechanism m = load_mechanism(e.name);
     EXPECT_EQ(m.bodies.size(), e.bodies);
@@ -705,8 +706,9 @@ TEST(MechanismToml, LoadByNameOrFile) {
   EXPECT_EQ(invalid("for-bar"),
             "'for-bar' is not a shipped mechanism (did you mean 'four-bar'?); valid: cart-pendulum, double-pendulum, "
             "engine, four-bar, four-bar-driven, four-bar-spring, "
-            "slider-crank, spring-pendulum, triple-pendulum, two-blocks, unequal-blocks, or a file path (with '/' or "
-            "ending in .toml)");
+            "slider-crank, spring-pendulum, triple-pendulum, two-blocks, unequal-blocks, "
+            "welded-pendulum, "
+            "or a file path (with '/' or ending in .toml)");
   EXPECT_FALSE(is_mechanism_file("four-bar"));
   EXPECT_TRUE(is_mechanism_file("my.toml"));
   EXPECT_TRUE(is_mechanism_file("sub/four-bar"));
