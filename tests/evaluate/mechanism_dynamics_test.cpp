@@ -104,7 +104,8 @@ TEST(MechanismDynamics, RecursionEqualsTheCompiledRowsOnAChain) {
 // Two rods welded square (welded_pendulum: rod 1 of l1, m1 from the pin O; rod 2 of l2, m2
 // welded at rod 1's tip at +pi/2) swing as one rigid L about O: I_O th'' = -g sum m x_c,
 // I_O = m1 l1^2/3 + m2 l2^2/12 + m2 (l1^2 + l2^2/4), x_c of rod 2 = l1 cos th - (l2/2) sin th.
-// Every case, the recursion and the structured solve among them, at any rate.
+// Every case's sample (a dense solve) at any rate; Case 3's derivative by the structured
+// solve and by the O(n) recursion.
 TEST(JointWeld, LPendulumSwingsAsOneRigidBody) {
   const sym::System system(built::welded_pendulum());
   const double l1 = 0.3, m1 = 0.2, l2 = 0.2, m2 = 0.15, g = 9.81;
@@ -128,6 +129,11 @@ TEST(JointWeld, LPendulumSwingsAsOneRigidBody) {
         EXPECT_NEAR(s.accelerations[2], expected, 1e-12) << "Case " << static_cast<int>(id) + 1 << " th " << theta;
         EXPECT_NEAR(s.accelerations[5], expected, 1e-12) << "rod 2 turns with rod 1";
         EXPECT_NEAR(s.pose[5] - s.pose[2], M_PI / 2, 1e-12);
+        if (id == CaseId::reduced) {  // y = (th1, th1'): the O(n) recursion unstructured
+          Eigen::VectorXd dydt;
+          ASSERT_TRUE(dynamics.derivative(0, y, dydt));
+          EXPECT_NEAR(dydt[1], expected, 1e-12) << "structured " << structured;
+        }
         EXPECT_NEAR(s.rates[5], 1.7, 1e-12);
         // The weld's force and moment on rod 1 (what rod 2 exerts): rod 2's Newton-Euler
         // rows with its centre r2 = l1 e(th) + (l2/2) e(th + pi/2).
