@@ -127,6 +127,7 @@ std::string describe_mechanism(const Mechanism& m) {
     std::string role = "loop";
     for (std::size_t i = 0; i < m.bodies.size(); ++i) {
       if (tree.bodies[i].joint != static_cast<int>(j)) continue;
+      role = "tree, adds no coordinate";  // a weld's child (or a point mass on a pin)
       for (const Coordinate& c : tree.coordinates)
         if (c.body == static_cast<int>(i)) role = "tree, adds " + c.key;
     }
@@ -135,6 +136,7 @@ std::string describe_mechanism(const Mechanism& m) {
     if (joint.stiffness) extra += ", stiffness " + joint.stiffness->text;
     if (joint.damping) extra += ", damping " + joint.damping->text;
     if (joint.rest_angle) extra += ", rest angle " + joint.rest_angle->text;
+    if (joint.angle) extra += ", angle " + joint.angle->text;
     rows.push_back({joint.name, kJointTypeNames[static_cast<std::size_t>(joint.type)],
                     joint.bodies[0] + "." + joint.points[0] + " - " + joint.bodies[1] + "." + joint.points[1],
                     role + extra});

@@ -31,6 +31,8 @@ bool has_own_coordinate(JointMotion motion) {
       return false;
     case JointMotion::prismatic:
       return true;
+    case JointMotion::fixed:
+      return false;
   }
   throw std::logic_error("joint motion out of range");
 }

@@ -63,6 +63,7 @@ struct Joint {
   // rest_angle) - damping*(th_b' - th_a'), the opposite on bodies[0].
   std::optional<Quantity> stiffness, damping, rest_angle;
   std::optional<Vector2Quantity> axis;  // slider only: direction in the frame of bodies[0]
+  std::optional<Quantity> angle;        // weld only: the relative angle th_b - th_a it holds (absent: 0)
   SourcePos pos;
 };
 

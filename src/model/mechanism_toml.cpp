@@ -36,7 +36,8 @@ constexpr MechanismKey kKeys[] = {
     {"top level", "definitions", "table of expressions", "none", "named expressions, printed as their own symbol"},
     {"top level", "ground", "table", "none", "the fixed frame's named points"},
     {"top level", "body", "list of tables", "(required)", "the moving bodies, at least one"},
-    {"top level", "joint", "list of tables", "none", "pins and sliders between two bodies or a body and the ground"},
+    {"top level", "joint", "list of tables", "none",
+     "pins, sliders and welds between two bodies or a body and the ground"},
     {"top level", "driver", "list of tables", "none", "motors: the prescribed motion of a pin or slider joint"},
     {"top level", "spring", "list of tables", "none", "linear spring-dampers between two points"},
     {"top level", "force", "list of tables", "none", "applied forces at points, world frame"},
@@ -66,7 +67,7 @@ constexpr MechanismKey kKeys[] = {
     {"[[body]]", "points", "table of [x, y]", "none",
      "named points in the body frame (origin at the centre of mass, x along the length), m"},
     {"[[joint]]", "name", "string", "(required)", "the joint's name: letters, digits, '_' or '-'"},
-    {"[[joint]]", "type", "string", "(required)", "pin or slider"},
+    {"[[joint]]", "type", "string", "(required)", "pin, slider or weld"},
     {"[[joint]]", "bodies", "list of two strings", "(required)", "two different bodies, or a body and \"ground\""},
     {"[[joint]]", "points", "list of two strings", "(required)", "a named point of each body, in the order of bodies"},
     {"[[joint]]", "stiffness", kQuantity, "none", "pin only: torsional spring stiffness, N m/rad, >= 0"},
@@ -74,6 +75,8 @@ constexpr MechanismKey kKeys[] = {
     {"[[joint]]", "rest_angle", kQuantity, "0", "pin only: relative angle at which the torsional spring is slack, rad"},
     {"[[joint]]", "axis", kVector, "(required by slider)",
      "slider only: the sliding direction in the frame of bodies[0], any length but not zero"},
+    {"[[joint]]", "angle", kQuantity, "0",
+     "weld only: the relative angle th_b - th_a it holds, rad; neither body may be a point mass"},
     {"[[driver]]", "name", "string", "(required)",
      "the driver's name, naming its column NAME.torque (pin) or NAME.force (slider): letters, digits, '_' or '-'"},
     {"[[driver]]", "joint", "string", "(required)", "the pin or slider joint it drives"},
@@ -596,6 +599,10 @@ class MechanismReader {
       } else {
         joint.rest_angle = read->quantity;
       }
+    }
+    if (r.has("angle")) {
+      if (!info.angle) r.fail("angle", "'angle' is for " + joint_types_with(&JointTypeInfo::angle) + " only; " + takes);
+      joint.angle = quantity_at(r, "angle")->quantity;
     }
     if (!info.axis && r.has("axis"))
       r.fail("axis", "'axis' is for " + joint_types_with(&JointTypeInfo::axis) + " only; " + takes);

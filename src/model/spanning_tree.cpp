@@ -82,6 +82,8 @@ SpanningTree spanning_tree(const Mechanism& mechanism) {
       case JointMotion::prismatic:
         tree.coordinates.push_back({CoordinateKind::s, index, node.joint, joint.name + ".s"});
         break;
+      case JointMotion::fixed:  // placed by its parent: no coordinate
+        break;
     }
   }
   return tree;
@@ -92,7 +94,8 @@ bool body_rotates(const Body& body) { return body.shape != Shape::point || body.
 int degrees_of_freedom(const Mechanism& mechanism) {
   int dof = 0;
   for (const Body& body : mechanism.bodies) dof += body_rotates(body) ? 3 : 2;
-  return dof - 2 * static_cast<int>(mechanism.joints.size()) - static_cast<int>(mechanism.drivers.size());
+  for (const Joint& joint : mechanism.joints) dof -= joint_type_info(joint.type).rows;
+  return dof - static_cast<int>(mechanism.drivers.size());
 }
 
 }  // namespace linkage

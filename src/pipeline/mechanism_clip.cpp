@@ -455,7 +455,7 @@ double driver_cycle_seconds(const sym::System& system) {
     const std::string named = "driver " + d.name + "'s motion '" + d.motion.text + "'";
     const auto joint =
         std::find_if(m.joints.begin(), m.joints.end(), [&](const Joint& j) { return j.name == d.joint; });
-    if (joint != m.joints.end() && joint->type != JointType::pin)
+    if (joint != m.joints.end() && joint_type_info(joint->type).motion != JointMotion::revolute)
       throw Error::invalid("trail_length", "cycle: " + named + " moves slider " + d.joint +
                                                ", whose travel does not come round; give seconds");
     const GiNaC::ex motion = system.quantity(d.motion, true)

@@ -195,6 +195,37 @@ void paint_guide(cairo_t* cr, const DrawStyle& style, const Vec2& at, const Vec2
   cairo_stroke(cr);
 }
 
+// A weld's bracket: an L-shaped plate with its corner at the point, a leg along each body
+// (world directions), a rivet in each leg.
+void paint_bracket(cairo_t* cr, const DrawStyle& style, const Vec2& at, const Vec2& first_world,
+                   const Vec2& second_world) {
+  const Vec2 first = Vec2(first_world.x(), -first_world.y()).normalized();  // y flips in pixels
+  const Vec2 second = Vec2(second_world.x(), -second_world.y()).normalized();
+  const double leg = 26 * style.u, plate = 9 * style.u;
+  const Vec2 ends[] = {at + leg * first, at, at + leg * second};
+  const auto trace = [&] {
+    cairo_new_path(cr);
+    for (const Vec2& p : ends) cairo_line_to(cr, p.x(), p.y());
+  };
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_MITER);
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_SQUARE);
+  trace();
+  set_colour(cr, style.theme->pin_edge);
+  cairo_set_line_width(cr, plate + 2 * style.edge_width());
+  cairo_stroke(cr);
+  trace();
+  set_colour(cr, style.theme->panel);
+  cairo_set_line_width(cr, plate);
+  cairo_stroke(cr);
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+  set_colour(cr, style.theme->pin_edge);
+  for (const Vec2& rivet : {Vec2(at + 0.65 * leg * first), Vec2(at + 0.65 * leg * second)}) {
+    cairo_new_path(cr);
+    cairo_arc(cr, rivet.x(), rivet.y(), 2 * style.u, 0, 2 * std::numbers::pi);
+    cairo_fill(cr);
+  }
+}
+
 void paint_markers(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List& list,
                    List::Marker::Kind kind) {
   for (const List::Marker& marker : list.markers) {
@@ -212,6 +243,9 @@ void paint_markers(cairo_t* cr, const DrawStyle& style, const Camera& camera, co
         break;
       case List::Marker::Kind::com:
         paint_com_symbol(cr, style, at, style.com_radius());
+        break;
+      case List::Marker::Kind::bracket:
+        paint_bracket(cr, style, at, marker.direction, marker.across);
         break;
     }
   }
@@ -449,6 +483,7 @@ ForceLayout paint_mechanism_frame(cairo_t* cr, const DrawStyle& style, const Cam
   paint_markers(cr, style, camera, list, List::Marker::Kind::guide);
   paint_motors(cr, style, camera, list);
   paint_markers(cr, style, camera, list, List::Marker::Kind::pin);
+  paint_markers(cr, style, camera, list, List::Marker::Kind::bracket);
   paint_markers(cr, style, camera, list, List::Marker::Kind::com);
   const FramePanels panels = frame_panels(cr, style, list, labels, width);
   if (!panels.hud.box.empty()) paint_time(cr, style, t, labels, list.hud, panels.hud.box, width);

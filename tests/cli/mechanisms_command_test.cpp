@@ -40,7 +40,8 @@ TEST(MechanismsCommand, ListsTheShippedMechanismsAsATable) {
       "spring-pendulum        1      0   3  Spring pendulum: a disc on a spring-damper from a fixed point",
       "triple-pendulum        3      3   3  Triple compound pendulum: a rod, a plate and a disc",
       "two-blocks             2      1   4  Two identical uniform blocks joined by a frictionless pin",
-      "unequal-blocks         2      1   4  Two different blocks joined by a pin away from their middles"};
+      "unequal-blocks         2      1   4  Two different blocks joined by a pin away from their middles",
+      "welded-pendulum        2      2   1  Welded pendulum: two rods welded square into one swinging L"};
   for (std::size_t i = 0; i < rows.size(); ++i) EXPECT_EQ(lines[i + 1], rows[i]);
   for (const std::string& line : lines) EXPECT_LE(line.size(), 100u) << line;
 }
