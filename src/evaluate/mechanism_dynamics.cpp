@@ -400,6 +400,8 @@ void MechanismDynamics::compile_case() const {
         pivots.push_back(constant ? std::optional<double>(sym::evaluate(p, values)) : std::nullopt);
       }
       pivot_check_ = PivotCheck(plan->fixed_pivots, pivots);
+      static_plain_ =
+          power_zero_ && drivers_ == 0 && (!tree_ || n_ + static_cast<std::size_t>(constraint_rows_) <= kFixedRows);
       solve_values_.resize(solve_.output_count());
       u_.resize(idx(cols_));
     }
@@ -705,6 +707,25 @@ double MechanismDynamics::diagonal_schur(Eigen::VectorXd& u) const {
 bool MechanismDynamics::derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) const {
   dydt.resize(y.size());
   const bool baumgarte = constraint_rows_ > 0 && (two_alpha_ != 0 || beta_squared_ != 0);
+  if (static_plain_ && structured_ && !baumgarte) {
+    // The common case with nothing else to decide: the static solve's one program and no
+    // power to add. Raw pointers: the copies are a handful of values.
+    const std::size_t n = n_;
+    const double* in = y.data();
+    double* inputs = solve_inputs_.data() + parameters_;
+    for (std::size_t i = 0; i < 2 * n; ++i) inputs[i] = in[i];
+    inputs[2 * n] = t;
+    solve_.run(solve_inputs_.data(), solve_values_.data(), scratch_.data());
+    if (pivot_check_.accepts(solve_values_.data() + cols_)) {
+      double* out = dydt.data();
+      const double* u = solve_values_.data();
+      for (std::size_t i = 0; i < n; ++i) out[i] = in[n + i];
+      for (std::size_t i = 0; i < n; ++i) out[n + i] = u[i];
+      out[2 * n] = 0;
+      return true;
+    }
+    // Pivots that do not vouch for u: the pivoting LU below decides.
+  }
   bool solved = false, rows = true, straight = false;
   if (structured_ && (!tree_ || n_ + static_cast<std::size_t>(constraint_rows_) <= kFixedRows)) {
     // Straight-line code first; where its pivots do not vouch for it, the pivoting LU decides.

@@ -209,6 +209,7 @@ class MechanismDynamics {
   GiNaC::exmap constants_;                      // parameters, definitions and inertias
   mutable Program rhs_;                         // A (row major), B
   mutable Program solve_;                       // up to kFixedRows rows: u, then the pivots (static_solve.hpp)
+  mutable bool static_plain_ = false;           // derivative() is solve_ alone: no power, no drivers
   mutable PivotCheck pivot_check_;              // whether solve_'s pivots allow its u
   mutable std::vector<double> solve_inputs_, solve_values_;  // solve_'s inputs: inputs_, then the hoisted factors
   Program constraints_;                                      // C, dC/dq (row major), M (row major)
