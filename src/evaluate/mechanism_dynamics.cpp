@@ -707,7 +707,8 @@ double MechanismDynamics::diagonal_schur(Eigen::VectorXd& u) const {
 bool MechanismDynamics::derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) const {
   dydt.resize(y.size());
   const bool baumgarte = constraint_rows_ > 0 && (two_alpha_ != 0 || beta_squared_ != 0);
-  if (static_plain_ && structured_ && !baumgarte) {
+  const bool plain = static_plain_ && structured_ && !baumgarte;
+  if (plain) {
     // The common case with nothing else to decide: the static solve's one program and no
     // power to add. Raw pointers: the copies are a handful of values.
     const std::size_t n = n_;
@@ -729,7 +730,7 @@ bool MechanismDynamics::derivative(double t, const Eigen::VectorXd& y, Eigen::Ve
   bool solved = false, rows = true, straight = false;
   if (structured_ && (!tree_ || n_ + static_cast<std::size_t>(constraint_rows_) <= kFixedRows)) {
     // Straight-line code first; where its pivots do not vouch for it, the pivoting LU decides.
-    solved = straight = !baumgarte && static_unknowns(t, y);
+    solved = straight = !baumgarte && !plain && static_unknowns(t, y);  // not twice
     if (!straight) solved = structured_unknowns(t, y, u_) > 0;
   } else if (tree_ && !baumgarte) {
     solved = tree_->accelerations(t, y, u_);
