@@ -380,21 +380,28 @@ void MechanismDynamics::compile_case() const {
   if (rows_ <= kFixedRows) {
     const std::vector<GiNaC::symbol> state(input_symbols_.begin() + static_cast<std::ptrdiff_t>(parameters_),
                                            input_symbols_.end());
-    // The parameters' factors as inputs of their own, computed here once.
-    const Hoisted hoisted = hoist_parameters(rhs, state);
-    GiNaC::exmap values = system.parameter_values();
-    std::vector<GiNaC::symbol> inputs = input_symbols_;
-    solve_inputs_ = inputs_;
-    for (const auto& [symbol, factor] : hoisted.factors) {
-      const double value = sym::evaluate(factor, system.parameter_values());
-      values[symbol] = value;
-      inputs.push_back(symbol);
-      solve_inputs_.push_back(value);
-    }
-    if (const std::optional<StaticSolve> plan = plan_static_solve(hoisted.entries, rows_, state, values)) {
+    if (const std::optional<StaticSolve> plan = plan_static_solve(rhs, rows_, state, system.parameter_values())) {
+      // The run's constants as inputs of their own, computed here once.
+      GiNaC::exmap values = system.parameter_values();
+      std::vector<GiNaC::symbol> inputs = input_symbols_;
+      solve_inputs_ = inputs_;
+      for (const auto& [symbol, definition] : plan->constants) {
+        const double value = sym::evaluate(definition, values);
+        values[symbol] = value;
+        inputs.push_back(symbol);
+        solve_inputs_.push_back(value);
+      }
       solve_ = compile(plan->outputs, inputs, plan->definitions);
-      fixed_pivots_ = plan->fixed_pivots;
-      symmetric_pivots_ = plan->symmetric_pivots;
+      // The pivots that are constants of the run (numbers, parameters' factors) checked now.
+      std::vector<std::optional<double>> pivots;
+      for (std::size_t k = cols_; k < plan->outputs.size(); ++k) {
+        const ex& p = plan->outputs[k];
+        const bool constant = GiNaC::is_a<GiNaC::numeric>(p) || (GiNaC::is_a<GiNaC::symbol>(p) && values.count(p) > 0);
+        pivots.push_back(constant ? std::optional<double>(sym::evaluate(p, values)) : std::nullopt);
+      }
+      pivot_check_ = PivotCheck(plan->fixed_pivots, pivots);
+      static_plain_ =
+          power_zero_ && drivers_ == 0 && (!tree_ || n_ + static_cast<std::size_t>(constraint_rows_) <= kFixedRows);
       solve_values_.resize(solve_.output_count());
       u_.resize(idx(cols_));
     }
@@ -651,7 +658,7 @@ bool MechanismDynamics::static_unknowns(double t, const Eigen::VectorXd& y) cons
   for (std::size_t i = 0; i < 2 * n_; ++i) solve_inputs_[parameters_ + i] = y[idx(i)];
   solve_inputs_[parameters_ + 2 * n_] = t;
   solve_.run(solve_inputs_.data(), solve_values_.data(), scratch_.data());
-  return static_solve_spread(solve_values_.data() + cols_, fixed_pivots_, symmetric_pivots_) > 0;
+  return pivot_check_.accepts(solve_values_.data() + cols_);
 }
 
 double MechanismDynamics::diagonal_schur(Eigen::VectorXd& u) const {
@@ -700,10 +707,30 @@ double MechanismDynamics::diagonal_schur(Eigen::VectorXd& u) const {
 bool MechanismDynamics::derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) const {
   dydt.resize(y.size());
   const bool baumgarte = constraint_rows_ > 0 && (two_alpha_ != 0 || beta_squared_ != 0);
+  const bool plain = static_plain_ && structured_ && !baumgarte;
+  if (plain) {
+    // The common case with nothing else to decide: the static solve's one program and no
+    // power to add. Raw pointers: the copies are a handful of values.
+    const std::size_t n = n_;
+    const double* in = y.data();
+    double* inputs = solve_inputs_.data() + parameters_;
+    for (std::size_t i = 0; i < 2 * n; ++i) inputs[i] = in[i];
+    inputs[2 * n] = t;
+    solve_.run(solve_inputs_.data(), solve_values_.data(), scratch_.data());
+    if (pivot_check_.accepts(solve_values_.data() + cols_)) {
+      double* out = dydt.data();
+      const double* u = solve_values_.data();
+      for (std::size_t i = 0; i < n; ++i) out[i] = in[n + i];
+      for (std::size_t i = 0; i < n; ++i) out[n + i] = u[i];
+      out[2 * n] = 0;
+      return true;
+    }
+    // Pivots that do not vouch for u: the pivoting LU below decides.
+  }
   bool solved = false, rows = true, straight = false;
   if (structured_ && (!tree_ || n_ + static_cast<std::size_t>(constraint_rows_) <= kFixedRows)) {
     // Straight-line code first; where its pivots do not vouch for it, the pivoting LU decides.
-    solved = straight = !baumgarte && static_unknowns(t, y);
+    solved = straight = !baumgarte && !plain && static_unknowns(t, y);  // not twice
     if (!straight) solved = structured_unknowns(t, y, u_) > 0;
   } else if (tree_ && !baumgarte) {
     solved = tree_->accelerations(t, y, u_);

@@ -25,6 +25,7 @@
 
 #include "evaluate/native_library.hpp"
 #include "evaluate/program.hpp"
+#include "evaluate/static_solve.hpp"
 #include "formulations/case_system.hpp"
 
 namespace linkage::eval {
@@ -208,7 +209,8 @@ class MechanismDynamics {
   GiNaC::exmap constants_;                      // parameters, definitions and inertias
   mutable Program rhs_;                         // A (row major), B
   mutable Program solve_;                       // up to kFixedRows rows: u, then the pivots (static_solve.hpp)
-  mutable std::size_t fixed_pivots_ = 0, symmetric_pivots_ = 0;
+  mutable bool static_plain_ = false;           // derivative() is solve_ alone: no power, no drivers
+  mutable PivotCheck pivot_check_;              // whether solve_'s pivots allow its u
   mutable std::vector<double> solve_inputs_, solve_values_;  // solve_'s inputs: inputs_, then the hoisted factors
   Program constraints_;                                      // C, dC/dq (row major), M (row major)
   mutable Program outputs_;                                  // the sample, with the unknowns as inputs too

@@ -9,10 +9,29 @@
 #include <random>
 #include <vector>
 
+#include "symbolic/system.hpp"
+
 namespace linkage::eval {
 namespace {
 
 using GiNaC::ex;
+
+// A plan compiled as MechanismDynamics compiles it: its constants evaluated once at
+// `parameters` and passed after `inputs`.
+struct Planned {
+  Program program;
+  std::vector<double> constants;
+};
+Planned compiled(const StaticSolve& plan, std::vector<GiNaC::symbol> inputs, GiNaC::exmap parameters) {
+  Planned out;
+  for (const auto& [symbol, definition] : plan.constants) {
+    out.constants.push_back(sym::evaluate(definition, parameters));
+    parameters[symbol] = out.constants.back();
+    inputs.push_back(symbol);
+  }
+  out.program = compile(plan.outputs, inputs, plan.definitions);
+  return out;
+}
 
 // The homework's Case 3 rows (docs/problem.md): moments about the pin, then the force
 // balance of both blocks, whose 2 x1'' and 2 y1'' are state-independent pivots.
@@ -51,16 +70,19 @@ TEST(StaticSolve, HomeworkCase3EliminatesTheForceRowsThenSolvesTheSymmetricRemai
   ASSERT_TRUE(plan.has_value());
   EXPECT_EQ(plan->fixed_pivots, 2U);  // the two 2s
   EXPECT_EQ(plan->symmetric_pivots, 2U);
-  const Program p = compile(plan->outputs, h.inputs(), plan->definitions);
+  const Planned solve = compiled(*plan, h.inputs(), parameters);
+  const Program& p = solve.program;
   const Program rows = compile(h.entries(), h.inputs());
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> angle(-3.0, 3.0);
   for (int trial = 0; trial < 20; ++trial) {
-    const std::vector<double> in{0.1, 0.11, 1.0 / 1200, 9.81, angle(rng), angle(rng), angle(rng), angle(rng)};
+    const std::vector<double> state_in{0.1, 0.11, 1.0 / 1200, 9.81, angle(rng), angle(rng), angle(rng), angle(rng)};
+    std::vector<double> in = state_in;
+    in.insert(in.end(), solve.constants.begin(), solve.constants.end());
     std::vector<double> out(p.output_count()), scratch(p.scratch_size()), ab(rows.output_count()),
         scratch_rows(rows.scratch_size());
     p.run(in.data(), out.data(), scratch.data());
-    rows.run(in.data(), ab.data(), scratch_rows.data());
+    rows.run(state_in.data(), ab.data(), scratch_rows.data());
     const Eigen::Map<const Eigen::Matrix<double, 4, 4, Eigen::RowMajor>> A(ab.data());
     const Eigen::Map<const Eigen::Vector4d> B(ab.data() + 16);
     const Eigen::Vector4d u = A.fullPivLu().solve(B);
@@ -69,6 +91,27 @@ TEST(StaticSolve, HomeworkCase3EliminatesTheForceRowsThenSolvesTheSymmetricRemai
     // The reduced mass matrix is positive definite: the pivots vouch for the answer.
     EXPECT_GT(static_solve_spread(out.data() + 4, 2, 2), 0) << trial;
   }
+}
+
+TEST(StaticSolve, HomeworkCase3PerCallCodeDividesOnce) {
+  // Eliminated symbolically, the force rows leave the reduced mass matrix [I + k, k c; k c,
+  // I + k] (sin^2 + cos^2 = 1), as in the closed form (bench/closed_form/case3_fast.hpp):
+  // its first pivot and that pivot's inverse are constants of the run, so each call
+  // divides once, by the last pivot.
+  const Homework h;
+  const GiNaC::exmap parameters{{h.m, 0.1}, {h.D, 0.11}, {h.I, 1.0 / 1200}, {h.g, 9.81}};
+  const std::optional<StaticSolve> plan = plan_static_solve(h.entries(), 4, {h.th1, h.th2, h.w1, h.w2}, parameters);
+  ASSERT_TRUE(plan.has_value());
+  const Planned solve = compiled(*plan, h.inputs(), parameters);
+  std::size_t divisions = 0;
+  for (const Instruction& i : solve.program.instructions()) divisions += i.op == Op::div ? 1 : 0;
+  EXPECT_EQ(divisions, 1U) << solve.program.dump();
+  // The remainder's first pivot, I + k, is a constant: an input, not a step.
+  ASSERT_EQ(plan->fixed_pivots, 2U);
+  const ex first = plan->outputs[4 + 2];
+  bool constant = false;
+  for (const Definition& c : plan->constants) constant = constant || ex(c.first).is_equal(first);
+  EXPECT_TRUE(constant) << first;
 }
 
 TEST(StaticSolve, HoistedFactorsAreTheParametersOfEachStateTermOnceUpToSign) {
@@ -114,6 +157,29 @@ TEST(StaticSolve, PivotsOfBothSignsOrZeroOrNaNAreRefused) {
   EXPECT_EQ(static_solve_spread(nan, 1, 2), 0);
   const double negative_definite[] = {-1, -2};  // -J M^-1 J^T: as good as positive
   EXPECT_DOUBLE_EQ(static_solve_spread(negative_definite, 0, 2), 0.5);
+}
+
+TEST(StaticSolve, PivotCheckWithConstantsFoldedInGivesTheSpreadsVerdict) {
+  // Every pivot constant or varying, at values drawn to hit each rule: zero, NaN, mixed
+  // signs, a spread below round-off, and sound ones.
+  std::mt19937 rng(11);
+  const double values[] = {2, 0.5, -1, -3, 0, NAN, 1e-17, 7, -7e-18, INFINITY};
+  std::uniform_int_distribution<std::size_t> pick(0, std::size(values) - 1);
+  std::size_t accepted = 0, rejected = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    const std::size_t fixed = static_cast<std::size_t>(trial % 3), symmetric = static_cast<std::size_t>(trial / 3 % 4);
+    std::vector<double> pivots(fixed + symmetric);
+    std::vector<std::optional<double>> known(pivots.size());
+    for (std::size_t k = 0; k < pivots.size(); ++k) {
+      pivots[k] = values[trial % 5 == 0 ? pick(rng) : pick(rng) % 4];  // mostly sound values
+      if (rng() % 2 == 0) known[k] = pivots[k];
+    }
+    const bool expected = static_solve_spread(pivots.data(), fixed, symmetric) > 0;
+    EXPECT_EQ(PivotCheck(fixed, known).accepts(pivots.data()), expected) << trial;
+    (expected ? accepted : rejected) += 1;
+  }
+  EXPECT_GT(accepted, 100U);
+  EXPECT_GT(rejected, 100U);
 }
 
 }  // namespace
