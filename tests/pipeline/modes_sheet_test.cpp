@@ -196,7 +196,7 @@ TEST(ModesSheet, WritesAPngSvgOrPdfWholeAndRefusesAVideo) {
 }
 
 TEST(ModesSheet, ThreeModesFillOneRowAndABadAmplitudeIsRefused) {
-  const Modes m(load_mechanism(std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/coupled-pendulums.toml"));
+  const Modes m(load_mechanism("coupled-pendulums"));
   ASSERT_EQ(m.modes.modes.size(), 3U);
   const MechanismClip clip = sheet_clip();
   const ModesSheet sheet(m.system, m.linear, m.modes, 0.1, clip);
