@@ -232,7 +232,8 @@ std::string links_in_line(const sym::System& system, const std::vector<double>& 
     for (const auto& [j, side] : joints[b]) {
       const Joint& joint = mechanism.joints[j];
       switch (joint.type) {
-        case JointType::pin: {
+        case JointType::pin:
+        case JointType::rolling: {
           const sym::Vec2 p =
               system.point_position(static_cast<int>(b) - 1, joint.points[static_cast<std::size_t>(side)]);
           pins.emplace_back(sym::evaluate(p.x, at), sym::evaluate(p.y, at));
@@ -316,6 +317,8 @@ std::string driven_stop_message(const sym::System& system, double t, const std::
         break;
       case JointType::slider:
         unit = " m";
+        break;
+      case JointType::rolling:  // not drivable
         break;
     }
     drivers += std::string(drivers.empty() ? "" : ", ") + "driver '" + driver.name + "' at " +

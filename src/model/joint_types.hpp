@@ -10,13 +10,18 @@
 
 namespace linkage {
 
-enum class JointType { pin, slider };
+enum class JointType {
+  pin,
+  slider,
+  rolling,
+};
 
 /// How the body a tree joint carries moves relative to its parent: which coordinate the
 /// joint adds to the spanning tree, and its joint model in the O(n) recursion.
 enum class JointMotion {
   revolute,   // the child's own absolute angle theta (a point mass adds none)
   prismatic,  // the joint's own travel s along its axis; the child keeps its parent's angle
+  rolling,    // the child's own absolute angle theta, turning about the contact point
 };
 
 struct JointTypeInfo {
@@ -31,6 +36,8 @@ struct JointTypeInfo {
   // it cannot be driven.
   const char* driven = "";         // "the relative angle th_b - th_a, rad"
   const char* driver_column = "";  // "torque"
+  bool radius = false;             // takes radius (a rolling's: default its rolling body's disc radius)
+  int rows = 2;                    // its position constraint rows: the degrees of freedom it takes
 };
 
 /// One row per JointType, in the enum's order (checked below; symbolic/joints.cpp checks
@@ -40,6 +47,8 @@ inline constexpr std::array kJointTypes{
                   "the relative angle th_b - th_a, rad", "torque"},
     JointTypeInfo{JointType::slider, "slider", JointMotion::prismatic, "axis", false, true, true, "the travel s, m",
                   "force"},
+    JointTypeInfo{JointType::rolling, "rolling", JointMotion::rolling, "axis, radius", false, true, false, "", "", true,
+                  2},
 };
 
 static_assert(
@@ -65,7 +74,7 @@ inline constexpr std::array<const char*, kJointTypes.size()> kJointTypeNames = [
 /// "pin", "slider": the TOML `type`.
 [[nodiscard]] constexpr const char* joint_type_name(JointType type) { return joint_type_info(type).name; }
 
-/// The types whose row has `takes`, for messages: "pins", "pins and sliders".
+/// The types whose row has `takes`, for messages: "pins", "sliders and rolling joints".
 [[nodiscard]] std::string joint_types_with(bool JointTypeInfo::*takes);
 
 /// Whether a [[driver]] may drive a joint of this type (its row names a driver column).

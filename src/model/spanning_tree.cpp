@@ -77,6 +77,7 @@ SpanningTree spanning_tree(const Mechanism& mechanism) {
     const Joint& joint = mechanism.joints[static_cast<std::size_t>(node.joint)];
     switch (joint_type_info(joint.type).motion) {
       case JointMotion::revolute:
+      case JointMotion::rolling:
         if (rotates) tree.coordinates.push_back({CoordinateKind::theta, index, -1, body.name + ".theta"});
         break;
       case JointMotion::prismatic:
@@ -92,7 +93,8 @@ bool body_rotates(const Body& body) { return body.shape != Shape::point || body.
 int degrees_of_freedom(const Mechanism& mechanism) {
   int dof = 0;
   for (const Body& body : mechanism.bodies) dof += body_rotates(body) ? 3 : 2;
-  return dof - 2 * static_cast<int>(mechanism.joints.size()) - static_cast<int>(mechanism.drivers.size());
+  for (const Joint& joint : mechanism.joints) dof -= joint_type_info(joint.type).rows;
+  return dof - static_cast<int>(mechanism.drivers.size());
 }
 
 }  // namespace linkage
