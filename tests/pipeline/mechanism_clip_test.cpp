@@ -1137,7 +1137,7 @@ TEST(MechanismClip, ARollingJointIsASurfaceWithTheContactPointMarked) {
   const MechanismMotion motion = clip_motion(system, 0.5, 10);
   const MechanismGeometry geometry = mechanism_geometry(system);
   const MechanismScene scene(geometry, motion, {}, 2.0);
-  const double alpha = 0.05, r = 0.25;
+  const double alpha = 0.03, r = 0.3;
   const Vec2 u(std::cos(alpha), -std::sin(alpha)), n(std::sin(alpha), std::cos(alpha));
   for (const std::size_t k : {std::size_t{0}, motion.samples.size() - 1}) {
     MechanismDrawList list;
