@@ -51,7 +51,8 @@ std::string points_text(const std::vector<NamedPoint>& points) {
   return out.empty() ? "none" : out;
 }
 
-// Rows of cells as aligned columns, two spaces apart, each line indented.
+// Rows of cells as aligned columns, two spaces apart (one before a right-aligned column,
+// whose short numbers stand apart already), each line indented.
 std::string table(const std::vector<std::vector<std::string>>& rows, const std::string& indent,
                   const std::vector<bool>& right = {}) {
   std::vector<std::size_t> widths;
@@ -67,7 +68,7 @@ std::string table(const std::vector<std::vector<std::string>>& rows, const std::
       const bool last = i + 1 == row.size();
       const bool align_right = i < right.size() && right[i];
       line += align_right ? pad_left(row[i], widths[i]) : last ? row[i] : pad(row[i], widths[i]);
-      if (!last) line += "  ";
+      if (!last) line += i + 1 < right.size() && right[i + 1] ? " " : "  ";
     }
     out += line + "\n";
   }
@@ -126,6 +127,7 @@ std::string describe_mechanism(const Mechanism& m) {
     std::string role = "loop";
     for (std::size_t i = 0; i < m.bodies.size(); ++i) {
       if (tree.bodies[i].joint != static_cast<int>(j)) continue;
+      role = "tree, adds no coordinate";  // a weld's child (or a point mass on a pin)
       for (const Coordinate& c : tree.coordinates)
         if (c.body == static_cast<int>(i)) role = "tree, adds " + c.key;
     }
@@ -135,6 +137,7 @@ std::string describe_mechanism(const Mechanism& m) {
     if (joint.stiffness) extra += ", stiffness " + joint.stiffness->text;
     if (joint.damping) extra += ", damping " + joint.damping->text;
     if (joint.rest_angle) extra += ", rest angle " + joint.rest_angle->text;
+    if (joint.angle) extra += ", angle " + joint.angle->text;
     rows.push_back({joint.name, kJointTypeNames[static_cast<std::size_t>(joint.type)],
                     joint.bodies[0] + "." + joint.points[0] + " - " + joint.bodies[1] + "." + joint.points[1],
                     role + extra});

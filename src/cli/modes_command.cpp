@@ -26,8 +26,9 @@ struct ModesOptions {
 };
 
 void run_modes(const ModesOptions& options) {
-  if (options.format != "text" && options.format != "json")
-    throw Error::input("--format: '" + options.format + "' is not a format of modes; valid: text, json");
+  if (options.format != "text" && options.format != "latex" && options.format != "markdown" && options.format != "json")
+    throw Error::input("--format: '" + options.format +
+                       "' is not a format of modes; valid: text, latex, markdown, json");
   const double digits = parse_number(options.digits, "--digits", "");
   if (digits != static_cast<int>(digits) || digits < kMinDigits || digits > kMaxDigits)
     throw Error::input("--digits: '" + options.digits + "' is out of range; valid: a whole number from " +
@@ -37,18 +38,15 @@ void run_modes(const ModesOptions& options) {
         "--mechanism: modes needs a mechanism with an equilibrium (the homework's two blocks fall "
         "freely); e.g. --mechanism double-pendulum");
   const sym::System system(chosen_mechanism(options.mechanism, options.inputs));
-  LinearizeOptions linearize_options;
-  linearize_options.at_initial = options.at_initial;
-  const Linearization linear = linearize(system, linearize_options);
-  const ModalAnalysis modes = modal_analysis(linear);
-  std::vector<ModeCheck> checks;
-  if (options.verify) checks = verify_modes(system, linear, modes);
-  const std::vector<ModeCheck>* checked = options.verify ? &checks : nullptr;
+  const ModesAnalysis a = analyse_modes(system, options.at_initial, options.verify);
   ReportOptions report;
   report.digits = static_cast<int>(digits);
   report.text_style = options.ascii ? Style::ascii : text_style_from_locale();
-  const std::string text = options.format == "json" ? modes_json(system, linear, modes, checked)
-                                                    : modes_text(system, linear, modes, report, checked);
+  const std::string text = options.format == "json"    ? modes_json(system, a.linear, a.modes, a.checked())
+                           : options.format == "latex" ? modes_latex(system, a.linear, a.modes, report, a.checked())
+                           : options.format == "markdown"
+                               ? modes_markdown(system, a.linear, a.modes, report, a.checked())
+                               : modes_text(system, a.linear, a.modes, report, a.checked());
   write_stdout(text, "the modes");
 }
 
@@ -63,8 +61,11 @@ void register_modes(CLI::App& app) {
       "constraints), M z'' + C z' + K z = 0, and its modes: natural frequencies, damping ratios, mode shapes; an "
       "unstable equilibrium with its growth rates");
   add_mechanism_options(sub, options->mechanism);
-  sub->add_option("--format", options->format, "Output: text or json (default text)")->type_name("text|json");
-  sub->add_option("--digits", options->digits, "Significant digits in text, 1 to 17 (default 6)")->type_name("N");
+  sub->add_option("--format", options->format,
+                  "Output: text, latex (a fragment needing amsmath), markdown or json (default text)")
+      ->type_name("text|latex|markdown|json");
+  sub->add_option("--digits", options->digits, "Significant digits in text, LaTeX and Markdown, 1 to 17 (default 6)")
+      ->type_name("N");
   sub->add_flag("--at-initial", options->at_initial,
                 "Linearize at the file's [initial] coordinates (rates zero) instead of the equilibrium found from "
                 "them; the text says how far from an equilibrium that is");

@@ -26,6 +26,7 @@
 #include "pipeline/clip_request.hpp"
 #include "pipeline/mechanism_clip.hpp"
 #include "pipeline/mode_motion.hpp"
+#include "pipeline/modes_sheet.hpp"
 #include "pipeline/render_options.hpp"
 #include "render/settings.hpp"
 #include "render/theme.hpp"
@@ -46,6 +47,7 @@ struct RenderFlags {
   CLI::Option* duration_option = nullptr;
   MechanismOptions mechanism;
   std::string mode, amplitude;  // --mode N, --amplitude A as given
+  std::string modes_sheet;      // --modes-sheet FILE
   bool nonlinear = false;
   CLI::Option* amplitude_option = nullptr;
   // The picture's options (pipeline/render_options), each flag's values as given.
@@ -53,8 +55,10 @@ struct RenderFlags {
   std::vector<CLI::Option*> flags;
 };
 
-/// The output --out names: by default linkage.mp4, unless only a PNG sequence was asked for.
+/// The output --out names: by default linkage.mp4, unless only a PNG sequence was asked
+/// for; the sheet's file with --modes-sheet.
 std::optional<fs::path> chosen_out(const RenderFlags& f) {
+  if (!f.modes_sheet.empty()) return fs::path(f.modes_sheet);
   if (f.out_option->count() > 0 || f.frames.empty()) return fs::path(f.out);
   return std::nullopt;
 }
@@ -80,6 +84,7 @@ RenderRequest resolve_request(const RenderFlags& f) {
     if (out) target.still = is_still(output_kind(*out, "out"));
   } catch (const Error&) {  // a bad --out is the clip's checks' to report
   }
+  if (!f.modes_sheet.empty()) target.still = true;
   target.spell = [](std::string_view name) { return flag_name(name); };
   try {
     return resolve_render_options(given, target, base);
@@ -153,9 +158,61 @@ int mode_number(const RenderFlags& f, const SimulationOptions& simulation) {
   return static_cast<int>(n);
 }
 
+/// --modes-sheet FILE: every mode in one still, its flags checked before any work.
+ClipResult render_modes_sheet(const RenderFlags& f) {
+  const std::string alone = "--modes-sheet: draws every mode in one still; it does not combine with ";
+  for (const std::string_view other : kModesSheetConflicts)
+    if (given(f, other) || (other == "mode" && !f.mode.empty()) || (other == "nonlinear" && f.nonlinear))
+      throw Error::input(alone + flag_name(other));
+  if (!f.caption.empty()) throw Error::input(alone + "--caption (each panel has its own)");
+  if (f.duration_option->count() > 0) throw Error::input(alone + "--duration");
+  if (f.out_option->count() > 0) throw Error::input(alone + "--out '" + f.out + "'; the sheet is its own output");
+  if (!f.frames.empty()) throw Error::input(alone + "--frames");
+  const fs::path out(f.modes_sheet);
+  bool still = false;
+  try {
+    still = is_still(output_kind(out, "modes_sheet"));
+  } catch (const Error&) {  // not a picture at all: the same answer
+  }
+  if (!still)
+    throw Error::invalid("modes_sheet", "'" + f.modes_sheet + "' is not a still; valid: a .png, .svg or .pdf file");
+  const double amplitude = f.amplitude.empty() ? 0.1 : parse_number(f.amplitude, "--amplitude", "rad or m");
+  check_amplitude(amplitude);
+  const RenderRequest request = resolve_request(f);
+  const SimulationOptions simulation = resolve_simulation_flags(f.simulation, request.settings.duration);
+  if (simulation.case_id != 3)
+    throw Error::input("--case: " + std::to_string(simulation.case_id) +
+                       " does not apply to --modes-sheet; the modes are in Case 3's coordinates");
+  Deriving deriving(f.quiet);
+  const MechanismSolution checked = work_out_mechanism(chosen_mechanism(f.mechanism, f.inputs), {CaseId::reduced});
+  ClipPlan plan = plan_of(f);
+  plan.frames.reset();
+  CheckedMechanismClip made;
+  try {
+    made = mechanism_clip(request, *checked.system, checked.state, simulation, plan);
+  } catch (const Error& e) {
+    if (e.setting() == "out") throw e.rephrased("--modes-sheet: " + e.detail());
+    throw;
+  }
+  deriving.done();
+  const EndAtOnceOnSignal until_a_file_is_begun;
+  try {
+    produce_modes_sheet(*checked.system, made.clip, amplitude, out, "modes_sheet");
+  } catch (const Error& e) {  // what linearize refuses, named by the flag that asked for it
+    const std::string what = e.what();
+    if (e.code() == ExitCode::bad_input && what.rfind("modes: ", 0) == 0)
+      throw e.rephrased("--modes-sheet: " + what.substr(7));
+    throw;
+  }
+  ClipResult result;
+  result.stats.png_files_written = output_kind(out, "modes_sheet") == OutputKind::png ? 1 : 0;
+  return result;
+}
+
 /// The mechanism's clip (the homework's flags and --config are settings of two-blocks.toml):
 /// its scene and camera, its outputs, every check before any work.
 ClipResult render_mechanism(const RenderFlags& f, const ClipProgress& progress) {
+  if (!f.modes_sheet.empty()) return render_modes_sheet(f);
   RenderRequest request = resolve_request(f);
   const ClipPlan plan = plan_of(f);
   const SimulationOptions simulation = resolve_simulation_flags(f.simulation, request.settings.duration);
@@ -175,10 +232,7 @@ ClipResult render_mechanism(const RenderFlags& f, const ClipProgress& progress) 
   const GiNaC::exmap& initial = shown ? shown->initial : checked.state;
   CheckedMechanismClip made = mechanism_clip(request, system, initial, simulation, plan);
   made.clip.derived = checked.cases.front().system;
-  if (shown) {
-    made.clip.prescribed = shown->prescribed;
-    made.clip.hud_run = shown->hud;
-  }
+  if (shown) show_mode(made.clip, *shown);
   const MechanismClip& clip = made.clip;
   deriving.done();
   note_duration(f, clip.is_still(), clip.frames.has_value());
@@ -273,6 +327,11 @@ void register_render(CLI::App& app) {
                       "The mode's amplitude: the largest coordinate's displacement, rad or m (default 0.1)")
           ->type_name("A")
           ->group(modes);
+  sub->add_option("--modes-sheet", f->modes_sheet,
+                  "Instead of a clip, every mode in one still (.png, .svg or .pdf): a panel per mode, the mechanism "
+                  "at +A and -A about the equilibrium, its frequency and shape; --amplitude sets A")
+      ->type_name("FILE")
+      ->group(modes);
   sub->add_flag("--nonlinear", f->nonlinear,
                 "With --mode: the full equations started at rest on the equilibrium displaced along the mode")
       ->group(modes);

@@ -33,7 +33,7 @@ P2 plain(const Vec2& v) { return {v.x(), v.y()}; }
 /// R(angle) v, with cos and sin of the angle given.
 P2 rotate(double c, double s, const P2& v) { return {c * v.x - s * v.y, s * v.x + c * v.y}; }
 
-enum class NodeKind { floating, revolute, prismatic };  // model/joint_types.hpp: JointMotion
+enum class NodeKind { floating, revolute, prismatic, fixed };  // model/joint_types.hpp: JointMotion
 
 /// One body of the tree, in the order the tree reached it (parents first).
 struct Node {
@@ -43,10 +43,11 @@ struct Node {
   bool rotates = true;
   std::array<int, 3> coordinate{-1, -1, -1};  // generalized indices of the dof
   double mass = 0, inertia = 0;
-  P2 parent_point;  // in the parent's frame (the world for the ground)
-  P2 child_point;   // in the body's frame
-  P2 axis;          // slider: unit, parent's frame (the world for the ground)
-  double sign = 1;  // slider: +1 when the body is bodies[1] of its joint
+  P2 parent_point;                              // in the parent's frame (the world for the ground)
+  P2 child_point;                               // in the body's frame
+  P2 axis;                                      // slider: unit, parent's frame (the world for the ground)
+  double sign = 1;                              // slider: +1 when the body is bodies[1] of its joint
+  double held = 0, cos_held = 1, sin_held = 0;  // weld: the angle it holds, child less parent
 };
 
 /// A symmetric 3 x 3 matrix by its upper triangle.
@@ -163,6 +164,7 @@ bool TreeDynamics::applies(const sym::System& system) {
     switch (joint_type_info(system.mechanism().joints[static_cast<std::size_t>(j)].type).motion) {
       case JointMotion::revolute:
       case JointMotion::prismatic:
+      case JointMotion::fixed:
         break;
       case JointMotion::rolling:
         return false;
@@ -212,6 +214,14 @@ TreeDynamics::TreeDynamics(const sym::System& system) : impl_(std::make_unique<I
           n.kind = NodeKind::prismatic;
           n.axis = plain(Vec2(number(axis.x), number(axis.y)).normalized());
           n.sign = child_is_b ? 1.0 : -1.0;
+          break;
+        }
+        case JointMotion::fixed: {  // part of its parent's rigid body: no dof of its own
+          const double held = (child_is_b ? 1.0 : -1.0) * number(sym::joint_angle(system, joint));
+          n.kind = NodeKind::fixed;
+          n.held = held;
+          n.cos_held = std::cos(held);
+          n.sin_held = std::sin(held);
           break;
         }
       }
@@ -342,7 +352,8 @@ void TreeDynamics::Impl::kinematics(const Eigen::VectorXd& y) const {
         w.angle = q[node.coordinate[0]];
         break;
       case NodeKind::prismatic:
-        continue;  // its parent's, set below
+      case NodeKind::fixed:
+        continue;  // from its parent's, set below
     }
     w.cos_angle = std::cos(w.angle);
     w.sin_angle = std::sin(w.angle);
@@ -412,6 +423,19 @@ void TreeDynamics::Impl::kinematics(const Eigen::VectorXd& y) const {
         t = {pp.y - point.y, point.x - pp.x};
         v = {pv.n, pv.x + pv.n * t.x + s.x * rate, pv.y + pv.n * t.y + s.y * rate};
         c = {0, -pv.n * s.y * rate, pv.n * s.x * rate};
+        break;
+      }
+      case NodeKind::fixed: {
+        // Its parent's motion carried to the joint, turned by the angle it holds.
+        w.angle = parent.angle + node.held;
+        w.cos_angle = pc * node.cos_held - ps * node.sin_held;
+        w.sin_angle = ps * node.cos_held + pc * node.sin_held;
+        const P2 r = rotate(w.cos_angle, w.sin_angle, node.child_point);
+        point = joint;
+        centre = {joint.x - r.x, joint.y - r.y};
+        t = {pp.y - joint.y, joint.x - pp.x};
+        v = {pv.n, pv.x + pv.n * t.x, pv.y + pv.n * t.y};
+        w.s = {};
         break;
       }
     }
@@ -502,6 +526,14 @@ void TreeDynamics::Impl::articulate(Eigen::VectorXd& out) const {
         add_shifted(to_pA, S3{pA.n + Iac.n + g.n * u, pA.x + Iac.x + g.x * u, pA.y + Iac.y + g.y * u}, t);
         break;
       }
+      case NodeKind::fixed:
+        // Its inertia and loads are its parent's, moved to the parent's point.
+        w.U = {};
+        w.Dinv = 0;
+        w.u = {};
+        add_shifted(to_IA, A, t);
+        add_shifted(to_pA, pA, t);
+        break;
       case NodeKind::floating:
         // A root: its I^A a + p^A = S^-T tau solved in accelerate().
         w.u = {};
@@ -546,6 +578,8 @@ void TreeDynamics::Impl::unloaded(const Eigen::VectorXd& tau_absolute, Eigen::Ve
         break;
       case NodeKind::prismatic:
         w.u.n = tau_absolute[node.coordinate[0]] - dot(w.s, w.pA);
+        break;
+      case NodeKind::fixed:  // no coordinate: its subtree's forces pass to its parent whole
         break;
     }
     if (node.parent < 0) continue;
@@ -594,6 +628,9 @@ void TreeDynamics::Impl::accelerate(bool loaded, Eigen::VectorXd& out) const {
         out[node.coordinate[0]] = qdd;
         break;
       }
+      case NodeKind::fixed:
+        a = a_in;
+        break;
     }
     w.a = a;
     previous = a;

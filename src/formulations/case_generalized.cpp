@@ -50,6 +50,7 @@ GeneralizedRows generalized_rows(const sym::System& system) {
     const Joint& joint = system.mechanism().joints[static_cast<std::size_t>(node.joint)];
     switch (joint_type_info(joint.type).motion) {
       case JointMotion::revolute:
+      case JointMotion::fixed:
       case JointMotion::rolling:
         break;
       case JointMotion::prismatic: {

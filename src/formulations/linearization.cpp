@@ -156,6 +156,13 @@ std::vector<std::size_t> dependent_columns(const Eigen::MatrixXd& J, const std::
 
 }  // namespace
 
+std::size_t mode_count(const sym::System& system) {
+  std::size_t rows = system.drivers().size();
+  for (int j : system.tree().loop_joints) rows += system.joints()[static_cast<std::size_t>(j)].constraints.size();
+  const std::size_t n = system.coordinates().size();
+  return rows >= n ? 0 : n - rows;
+}
+
 Linearization linearize(const sym::System& system, const LinearizeOptions& options) {
   const Mechanism& mechanism = system.mechanism();
   const StaticForm form = static_form(system);

@@ -51,6 +51,10 @@ struct Linearization {
 /// definite.
 [[nodiscard]] Linearization linearize(const sym::System& system, const LinearizeOptions& options = {});
 
+/// How many modes `system` has, its degrees of freedom: the tree coordinates less the
+/// loop and driver rows (0 when the rows take them all), without linearizing.
+[[nodiscard]] std::size_t mode_count(const sym::System& system);
+
 struct Mode {
   enum class Kind { oscillation, neutral, unstable };
   Kind kind = Kind::oscillation;

@@ -231,15 +231,16 @@ std::string links_in_line(const sym::System& system, const std::vector<double>& 
     std::optional<Eigen::Vector2d> axis;
     for (const auto& [j, side] : joints[b]) {
       const Joint& joint = mechanism.joints[j];
-      switch (joint.type) {
-        case JointType::pin:
-        case JointType::rolling: {
+      switch (joint_type_info(joint.type).motion) {
+        case JointMotion::revolute:
+        case JointMotion::fixed:  // a point the link is joined at
+        case JointMotion::rolling: {
           const sym::Vec2 p =
               system.point_position(static_cast<int>(b) - 1, joint.points[static_cast<std::size_t>(side)]);
           pins.emplace_back(sym::evaluate(p.x, at), sym::evaluate(p.y, at));
           break;
         }
-        case JointType::slider: {
+        case JointMotion::prismatic: {
           // The axis, in the frame of bodies[0], turned into the world.
           const sym::Vec2 a = sym::rotate(
               slot(joint.bodies[0]) == 0 ? GiNaC::ex(0) : GiNaC::ex(system.bodies()[slot(joint.bodies[0]) - 1].theta.q),
@@ -264,7 +265,8 @@ std::string links_in_line(const sym::System& system, const std::vector<double>& 
   double nearest = std::numeric_limits<double>::infinity();
   std::array<std::size_t, 2> nearest_pair{};
   for (const Joint& joint : mechanism.joints) {
-    if (joint.type != JointType::pin) continue;  // a slider's bodies share its axis always
+    // A slider's bodies share its axis always, a weld's keep their angle.
+    if (joint_type_info(joint.type).motion != JointMotion::revolute) continue;
     const std::size_t a = slot(joint.bodies[0]), b = slot(joint.bodies[1]);
     if (!line[a] || !line[b]) continue;
     const double sine = std::fabs(line[a]->x() * line[b]->y() - line[a]->y() * line[b]->x());
@@ -310,17 +312,8 @@ std::string driven_stop_message(const sym::System& system, double t, const std::
   at[system.time()] = t;
   for (const sym::DriverSystem& d : system.drivers()) {
     const Driver& driver = mechanism.drivers[static_cast<std::size_t>(d.index)];
-    std::string unit;
-    switch (mechanism.joints[static_cast<std::size_t>(d.joint)].type) {
-      case JointType::pin:
-        unit = " rad";
-        break;
-      case JointType::slider:
-        unit = " m";
-        break;
-      case JointType::rolling:  // not drivable
-        break;
-    }
+    const std::string unit =
+        std::string(" ") + joint_type_info(mechanism.joints[static_cast<std::size_t>(d.joint)].type).driven_unit;
     drivers += std::string(drivers.empty() ? "" : ", ") + "driver '" + driver.name + "' at " +
                format_significant(sym::evaluate(system.quantity(driver.motion, true), at), 6) + unit;
   }

@@ -11,6 +11,9 @@
 #include "symbolic/system.hpp"
 
 namespace linkage::lesson {
+namespace {
+constexpr std::size_t kLongestNameList = 600;  // characters
+}  // namespace
 
 struct Expression::Value {
   GiNaC::ex expression;
@@ -26,7 +29,11 @@ Expression Expression::parse(std::string_view text, const std::string& origin, c
   if (names != nullptr)
     for (const std::string& name : names->names()) table[name] = GiNaC::symbol(name);
   if (!table.contains("pi")) table["pi"] = GiNaC::Pi;
-  const GiNaC::ex read = sym::read_expression(text, origin, {table});
+  // A mechanism's names run to hundreds (each coordinate's rates and share of each mode):
+  // an unknown one lists the undotted and those beside the nearest.
+  sym::ExpressionNames known{table};
+  known.longest_valid_list = kLongestNameList;
+  const GiNaC::ex read = sym::read_expression(text, origin, known);
   if (GiNaC::is_a<GiNaC::symbol>(read)) e.single_name_ = GiNaC::ex_to<GiNaC::symbol>(read).get_name();
   GiNaC::exmap at;
   try {  // a case worked out now may be singular at these values

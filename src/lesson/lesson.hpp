@@ -24,9 +24,9 @@
 
 namespace linkage::lesson {
 
-enum class StepKind { say, set, pause, exercise, solve, simulate, render, plot, compare };
-inline constexpr std::array<std::string_view, 9> kStepKindNames{"say",      "set",    "pause", "exercise", "solve",
-                                                                "simulate", "render", "plot",  "compare"};
+enum class StepKind { say, set, pause, exercise, solve, modes, simulate, render, plot, compare };
+inline constexpr std::array<std::string_view, 10> kStepKindNames{"say",   "set",      "pause",  "exercise", "solve",
+                                                                 "modes", "simulate", "render", "plot",     "compare"};
 [[nodiscard]] constexpr std::string_view name(StepKind k) { return kStepKindNames[static_cast<std::size_t>(k)]; }
 
 /// The parts of a worked solution a solve step can show, in the order they print (the
@@ -61,6 +61,12 @@ struct SolveStep {
   std::vector<int> cases;
   std::array<bool, kSolvePartNames.size()> parts{};
 };
+/// `linkage modes` of the step's mechanism: its options.
+struct ModesStep {
+  bool at_initial = false;
+  bool verify = false;
+  int digits = 6;
+};
 struct SimulateStep {
   Run run;
   double every = 0;        // s between trajectory rows
@@ -76,6 +82,10 @@ struct RenderStep {
   // The picture as render_options read it (the settings with the mechanism's title and the
   // equations shown, trails, ensemble, compare); --quality draft shrinks size and fps.
   RenderRequest request;
+  int mode = 0;              // a mode drawn about the equilibrium (render --mode N); 0: the run's motion
+  double amplitude = 0.1;    // the mode's largest coordinate's displacement, rad or m (--amplitude)
+  bool nonlinear = false;    // the full equations started on the mode (--nonlinear)
+  bool modes_sheet = false;  // out is every mode in one still (--modes-sheet)
 };
 struct PlotStep {
   std::string out;  // base name: out.png and out.svg
@@ -95,8 +105,8 @@ struct CompareStep {
   int width = 900, height = 600;
 };
 
-using StepBody =
-    std::variant<SayStep, SetStep, PauseStep, ExerciseStep, SolveStep, SimulateStep, RenderStep, PlotStep, CompareStep>;
+using StepBody = std::variant<SayStep, SetStep, PauseStep, ExerciseStep, SolveStep, ModesStep, SimulateStep, RenderStep,
+                              PlotStep, CompareStep>;
 
 struct Step {
   StepKind kind = StepKind::say;

@@ -23,6 +23,8 @@
 #include "model/mechanism_toml.hpp"
 #include "pipeline/clip_request.hpp"
 #include "pipeline/clip_result.hpp"
+#include "pipeline/mode_motion.hpp"
+#include "pipeline/modes_sheet.hpp"
 #include "pipeline/panel_data.hpp"
 #include "pipeline/render_options.hpp"
 #include "pipeline/run_samples.hpp"
@@ -30,6 +32,7 @@
 #include "report/markdown.hpp"
 #include "report/mechanism_solution.hpp"
 #include "report/mechanism_text.hpp"
+#include "report/modes_report.hpp"
 #include "report/quotable_values.hpp"
 #include "symbolic/loop_closure.hpp"
 #include "symbolic/system.hpp"
@@ -187,7 +190,7 @@ class Parser {
     if (auto m = r.string("mechanism")) {
       if (kind == StepKind::set || kind == StepKind::pause)
         r.fail("mechanism",
-               "'mechanism' applies to the steps that work on one (say, exercise, solve, simulate, "
+               "'mechanism' applies to the steps that work on one (say, exercise, solve, modes, simulate, "
                "render, plot, compare); give it at the top to change the lesson's");
       const std::string spec = mechanism_spec(r, "mechanism", *m);
       if (spec != lesson_mechanism_) {
@@ -279,6 +282,7 @@ class Parser {
         [&] { return StepBody(PauseStep{r.string("prompt").value_or("Press Enter to continue")}); },
         [&] { return StepBody(parse_exercise(r, inputs)); },
         [&] { return StepBody(parse_solve(r, inputs, step)); },
+        [&] { return StepBody(parse_modes(r, step)); },
         [&] { return StepBody(parse_simulate(r, inputs)); },
         [&] { return StepBody(parse_render(r, inputs)); },
         [&] { return StepBody(parse_plot(r, inputs)); },
@@ -426,6 +430,26 @@ class Parser {
     const std::vector<std::string_view> parts(kSolvePartNames.begin(), kSolvePartNames.end());
     if (!r.has("show")) s.parts.fill(true);
     for (std::size_t i : r.choice_list("show", parts)) s.parts[i] = true;
+    return s;
+  }
+
+  /// A modes step: `linkage modes` on the step's mechanism (the homework's blocks fall
+  /// freely: no equilibrium), linearized now so a lesson without one fails when it is read.
+  static ModesStep parse_modes(const TableReader& r, const Step& step) {
+    ModesStep s;
+    s.at_initial = r.boolean("at_initial").value_or(false);
+    s.verify = r.boolean("verify").value_or(false);
+    s.digits = static_cast<int>(r.integer("digits", 1, 17).value_or(6));
+    if (!step.mechanism)
+      throw Error::input(r.prefix("") +
+                         "a modes step needs a mechanism with an equilibrium (the homework's two blocks fall "
+                         "freely); give mechanism = \"NAME\" here or at the top, e.g. \"double-pendulum\"");
+    try {
+      (void)analyse_modes(*step.mechanism->system, s.at_initial, false);
+    } catch (const Error& e) {
+      if (e.code() != ExitCode::bad_input) throw;
+      throw e.rephrased(r.prefix("") + e.what());
+    }
     return s;
   }
 
@@ -661,6 +685,44 @@ class Parser {
     return out;
   }
 
+  /// A render step's mode keys (render --mode, --modes-sheet), checked as the command
+  /// checks its flags; the mode's number and amplitude against the mechanism's modes.
+  static void mode_keys(const TableReader& r, RenderStep& s) {
+    if (r.has("mode")) s.mode = static_cast<int>(*r.integer("mode", 1, 1000000));
+    if (r.has("amplitude")) s.amplitude = *r.number("amplitude", -kInf, kInf, "");
+    s.nonlinear = r.boolean("nonlinear").value_or(false);
+    s.modes_sheet = r.boolean("modes_sheet").value_or(false);
+    if (s.modes_sheet) {
+      const auto refuse = [&](std::string_view other) {
+        if (r.has(other))
+          r.fail(other, "'" + std::string(other) +
+                            "' does not combine with 'modes_sheet', which draws every mode in one still");
+      };
+      for (const std::string_view other : kModesSheetConflicts) refuse(other);
+      refuse("captions");  // each panel has its own
+      refuse("duration");
+      if (!is_still(s.kind))
+        r.fail("out", "'" + s.out + "' is a video; a step with 'modes_sheet' writes one still: .png, .svg or .pdf");
+    } else if (s.mode == 0) {
+      for (const char* other : {"amplitude", "nonlinear"})
+        if (r.has(other)) r.fail(other, "'" + std::string(other) + "' applies only with 'mode' or 'modes_sheet'");
+    } else {
+      for (const char* other : {"ensemble", "compare"})
+        if (r.has(other)) r.fail(other, "'" + std::string(other) + "' does not combine with 'mode'");
+      if (!s.nonlinear && s.run.options.case_id != 3)
+        r.fail("case", "case = " + std::to_string(s.run.options.case_id) +
+                           " applies to 'mode' only with 'nonlinear'; the linear motion is in Case 3's coordinates");
+    }
+    if (!s.modes_sheet && s.mode == 0) return;
+    if (s.modes_sheet && s.run.options.case_id != 3)
+      r.fail("case", "case = " + std::to_string(s.run.options.case_id) +
+                         " does not apply to 'modes_sheet'; the modes are in Case 3's coordinates");
+    check_amplitude(s.amplitude);
+    const sym::System& system = *s.run.built->system;
+    const Linearization linear = linearize(system);
+    if (s.mode > 0) (void)mode_motion(system, linear, modal_analysis(linear), s.mode, s.amplitude, s.nonlinear);
+  }
+
   RenderStep parse_render(const TableReader& r, const Inputs& inputs) const {
     RenderStep s;
     s.out = artifact_name(r, "out");
@@ -710,6 +772,7 @@ class Parser {
       request.settings =
           mechanism_clip(request, *s.run.built->system, s.run.built->initial, s.run.options, plan).clip.settings;
       if (is_video(s.kind)) VideoWriter::validate(clip_video_options(request.settings, s.kind));
+      mode_keys(r, s);
     } catch (const Error& e) {
       if (e.code() != ExitCode::bad_input) throw;
       const std::string what = e.what();

@@ -1,5 +1,5 @@
 // The lesson runner: the order of things, the cache, and the steps that only print
-// (say, set, pause, exercise, solve). Steps that simulate or draw live in
+// (say, set, pause, exercise, solve, modes). Steps that simulate or draw live in
 // step_runs.cpp and step_render.cpp.
 #include "lesson/runner.hpp"
 
@@ -23,6 +23,7 @@
 #include "lesson/runner_context.hpp"
 #include "linkage/version.hpp"
 #include "model/mechanism_toml.hpp"
+#include "report/modes_report.hpp"
 
 namespace linkage::lesson {
 
@@ -197,6 +198,16 @@ void run_solve(RunContext& c, const Step& step, const SolveStep& s) {
   c.both([&](Writer& w) { w.worked_solution(worked, options); });
 }
 
+void run_modes(RunContext& c, const Step& step, const ModesStep& s) {
+  const sym::System& system = *step.mechanism->system;  // parse_modes refuses a step without one
+  const ModesAnalysis a = analyse_modes(system, s.at_initial, s.verify);
+  ReportOptions options;
+  options.width = c.options.width;
+  options.text_style = c.options.style;
+  options.digits = s.digits;
+  c.both([&](Writer& w) { w.modes(system, a.linear, a.modes, a.checked(), options); });
+}
+
 void run_step(RunContext& c, const Step& step) {
   if (!step.heading.empty()) c.both([&](Writer& w) { w.heading(step.heading); });
   std::visit(
@@ -213,6 +224,8 @@ void run_step(RunContext& c, const Step& step) {
           run_exercise(c, body);
         } else if constexpr (std::is_same_v<T, SolveStep>) {
           run_solve(c, step, body);
+        } else if constexpr (std::is_same_v<T, ModesStep>) {
+          run_modes(c, step, body);
         } else if constexpr (std::is_same_v<T, SimulateStep>) {
           run_simulate(c, step, body);
         } else if constexpr (std::is_same_v<T, RenderStep>) {

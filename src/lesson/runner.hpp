@@ -51,9 +51,11 @@ RunSummary run_lesson(const Lesson& lesson, const RunnerOptions& options, std::i
 [[nodiscard]] std::string step_hash(const Step& step, Quality quality);
 
 /// The clip a render step makes at `quality` into `out_dir`: the step's inputs, run and
-/// picture; at draft quality 480x270 and at most 15 fps.
+/// picture; at draft quality 480x270 and at most 15 fps. `mode`: the motion drawn instead
+/// of the run's (mode_motion), its caption the default.
 [[nodiscard]] CheckedMechanismClip render_clip(const RenderStep& render, Quality quality,
                                                const std::filesystem::path& out_dir,
-                                               const std::filesystem::path& assets = {});
+                                               const std::filesystem::path& assets = {},
+                                               const ModeMotion* mode = nullptr);
 
 }  // namespace linkage::lesson

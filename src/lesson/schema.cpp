@@ -73,6 +73,12 @@ constexpr std::array<KeySpec, 2> kSolveKeys{{
     {"show", "list of strings", "all parts"},
 }};
 
+constexpr std::array<KeySpec, 3> kModesKeys{{
+    {"at_initial", "boolean", "false"},
+    {"digits", "integer", "6"},
+    {"verify", "boolean", "false"},
+}};
+
 constexpr std::array<KeySpec, 3> kSimulateKeys{{
     {"trajectory", "string", "none"},
     {"every", "number", "duration / 100"},
@@ -80,7 +86,7 @@ constexpr std::array<KeySpec, 3> kSimulateKeys{{
 }};
 
 /// A render step's keys: its output and caption, every option of `linkage render`
-/// (pipeline/render_options), and its timed captions.
+/// (pipeline/render_options), a mode's, and its timed captions.
 std::span<const KeySpec> render_keys() {
   static const std::vector<KeySpec> keys = [] {
     std::vector<KeySpec> out{
@@ -88,6 +94,11 @@ std::span<const KeySpec> render_keys() {
         {"caption", "string", "none"},
     };
     for (const RenderOption& o : render_options()) out.push_back({o.name, o.type, o.default_text});
+    // A mode of small vibration (render --mode, --modes-sheet; issue 26).
+    out.push_back({"mode", "integer", "none"});
+    out.push_back({"amplitude", "number", "0.1"});
+    out.push_back({"nonlinear", "boolean", "false"});
+    out.push_back({"modes_sheet", "boolean", "false"});
     out.push_back({"captions", "array of tables", "none"});
     return out;
   }();
@@ -135,13 +146,14 @@ struct KindEntry {
   bool run_keys;
 };
 
-const std::array<KindEntry, 9>& kinds() {
-  static const std::array<KindEntry, 9> table{{
+const std::array<KindEntry, 10>& kinds() {
+  static const std::array<KindEntry, 10> table{{
       {"say", kSayKeys, false},
       {"set", kSetKeys, false},
       {"pause", kPauseKeys, false},
       {"exercise", kExerciseKeys, false},
       {"solve", kSolveKeys, false},
+      {"modes", kModesKeys, false},
       {"simulate", kSimulateKeys, true},
       {"render", render_keys(), true},
       {"plot", kPlotKeys, true},

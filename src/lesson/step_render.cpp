@@ -1,10 +1,14 @@
 // The render step: the step's clip or still assembled and produced in process by the same
-// pipeline as the render command (src/pipeline), so a lesson's clips are exactly what it gives.
+// pipeline as the render command (src/pipeline), so a lesson's clips are exactly what it gives:
+// a mode's (mode, amplitude, nonlinear) and every mode's sheet (modes_sheet) among them.
 #include <algorithm>
+#include <optional>
 
 #include "core/progress.hpp"
 #include "lesson/runner_context.hpp"
 #include "pipeline/clip_request.hpp"
+#include "pipeline/mode_motion.hpp"
+#include "pipeline/modes_sheet.hpp"
 #include "report/mechanism_text.hpp"
 
 namespace linkage::lesson {
@@ -37,10 +41,14 @@ ClipPlan step_plan(const std::filesystem::path& out, const std::filesystem::path
 }  // namespace
 
 CheckedMechanismClip render_clip(const RenderStep& render, Quality quality, const std::filesystem::path& out_dir,
-                                 const std::filesystem::path& assets) {
+                                 const std::filesystem::path& assets, const ModeMotion* mode) {
   const BuiltMechanism& built = *render.run.built;
-  return mechanism_clip(step_request(render, quality), *built.system, built.initial, render.run.options,
-                        step_plan(out_dir / render.out, assets, quality));
+  RenderRequest request = step_request(render, quality);
+  if (mode != nullptr && request.settings.captions.empty()) request.settings.captions = {{0.0, mode->caption}};
+  CheckedMechanismClip made = mechanism_clip(request, *built.system, mode != nullptr ? mode->initial : built.initial,
+                                             render.run.options, step_plan(out_dir / render.out, assets, quality));
+  if (mode != nullptr) show_mode(made.clip, *mode);
+  return made;
 }
 
 void run_render(RunContext& c, const Step& step, const RenderStep& s) {
@@ -51,8 +59,19 @@ void run_render(RunContext& c, const Step& step, const RenderStep& s) {
       if (!progress) progress.emplace("render " + s.out, total, "frames");
       progress->update(done);
     };
-    const CheckedMechanismClip clip = render_clip(s, c.options.quality, c.options.out_dir, c.options.assets);
-    const ClipResult made = produce_mechanism_clip(*s.run.built->system, s.run.built->initial, clip.clip, report);
+    const sym::System& system = *s.run.built->system;
+    std::optional<ModeMotion> mode;  // the mode drawn instead of the run's motion
+    if (s.mode > 0) {
+      const Linearization linear = linearize(system);
+      mode = mode_motion(system, linear, modal_analysis(linear), s.mode, s.amplitude, s.nonlinear);
+    }
+    const CheckedMechanismClip clip =
+        render_clip(s, c.options.quality, c.options.out_dir, c.options.assets, mode ? &*mode : nullptr);
+    ClipResult made;
+    if (s.modes_sheet)
+      produce_modes_sheet(system, clip.clip, s.amplitude, c.options.out_dir / s.out, "modes_sheet");
+    else
+      made = produce_mechanism_clip(system, mode ? mode->initial : s.run.built->initial, clip.clip, report);
     nlohmann::json made_results = nlohmann::json::object();
     if (!made.warnings.empty()) made_results["warnings"] = made.warnings;
     return made_results;

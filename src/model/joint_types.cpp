@@ -33,6 +33,7 @@ bool has_own_coordinate(JointMotion motion) {
       return false;
     case JointMotion::prismatic:
       return true;
+    case JointMotion::fixed:
     case JointMotion::rolling:
       return false;
   }

@@ -13,6 +13,7 @@ namespace linkage {
 enum class JointType {
   pin,
   slider,
+  weld,
   rolling,
 };
 
@@ -21,6 +22,7 @@ enum class JointType {
 enum class JointMotion {
   revolute,   // the child's own absolute angle theta (a point mass adds none)
   prismatic,  // the joint's own travel s along its axis; the child keeps its parent's angle
+  fixed,      // none: the child is placed rigidly on its parent (a weld)
   rolling,    // the child's own absolute angle theta, turning about the contact point
 };
 
@@ -31,24 +33,27 @@ struct JointTypeInfo {
   const char* options = "";       // its own [[joint]] keys, for messages: "axis"
   bool torsional_spring = false;  // takes stiffness, damping, rest_angle
   bool axis = false;              // needs axis, a direction in the frame of bodies[0]
-  bool keeps_angle = false;       // holds both angles equal: neither body may be a point mass
+  bool keeps_angle = false;       // holds the bodies' relative angle: neither may be a point mass
   // What a [[driver]] on it prescribes, and its column ("torque": NAME.torque); "" when
   // it cannot be driven.
   const char* driven = "";         // "the relative angle th_b - th_a, rad"
+  const char* driven_unit = "";    // its unit: "rad"
   const char* driver_column = "";  // "torque"
+  int rows = 2;                    // its position rows, for the count of degrees of freedom
+  bool angle = false;              // takes `angle`, the relative angle th_b - th_a it holds
   bool radius = false;             // takes radius (a rolling's: default its rolling body's disc radius)
-  int rows = 2;                    // its position constraint rows: the degrees of freedom it takes
 };
 
 /// One row per JointType, in the enum's order (checked below; symbolic/joints.cpp checks
 /// that no enum entry lacks its row).
 inline constexpr std::array kJointTypes{
     JointTypeInfo{JointType::pin, "pin", JointMotion::revolute, "stiffness, damping, rest_angle", true, false, false,
-                  "the relative angle th_b - th_a, rad", "torque"},
+                  "the relative angle th_b - th_a, rad", "rad", "torque"},
     JointTypeInfo{JointType::slider, "slider", JointMotion::prismatic, "axis", false, true, true, "the travel s, m",
-                  "force"},
-    JointTypeInfo{JointType::rolling, "rolling", JointMotion::rolling, "axis, radius", false, true, false, "", "", true,
-                  2},
+                  "m", "force"},
+    JointTypeInfo{JointType::weld, "weld", JointMotion::fixed, "angle", false, false, true, "", "", "", 3, true},
+    JointTypeInfo{JointType::rolling, "rolling", JointMotion::rolling, "axis, radius", false, true, false, "", "", "",
+                  2, false, true},
 };
 
 static_assert(

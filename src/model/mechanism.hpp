@@ -64,6 +64,7 @@ struct Joint {
   std::optional<Quantity> stiffness, damping, rest_angle;
   std::optional<Vector2Quantity> axis;  // slider, rolling: direction in the frame of bodies[0]
   std::optional<Quantity> radius;       // rolling only: the rolling radius (read: the disc's when not given)
+  std::optional<Quantity> angle;        // weld only: the relative angle th_b - th_a it holds (absent: 0)
   SourcePos pos;
 };
 

@@ -37,7 +37,7 @@ constexpr MechanismKey kKeys[] = {
     {"top level", "ground", "table", "none", "the fixed frame's named points"},
     {"top level", "body", "list of tables", "(required)", "the moving bodies, at least one"},
     {"top level", "joint", "list of tables", "none",
-     "pins, sliders and rolling joints between two bodies or a body and the ground"},
+     "pins, sliders, welds and rolling joints between two bodies or a body and the ground"},
     {"top level", "driver", "list of tables", "none", "motors: the prescribed motion of a pin or slider joint"},
     {"top level", "spring", "list of tables", "none", "linear spring-dampers between two points"},
     {"top level", "force", "list of tables", "none", "applied forces at points, world frame"},
@@ -67,7 +67,7 @@ constexpr MechanismKey kKeys[] = {
     {"[[body]]", "points", "table of [x, y]", "none",
      "named points in the body frame (origin at the centre of mass, x along the length), m"},
     {"[[joint]]", "name", "string", "(required)", "the joint's name: letters, digits, '_' or '-'"},
-    {"[[joint]]", "type", "string", "(required)", "pin, slider or rolling"},
+    {"[[joint]]", "type", "string", "(required)", "pin, slider, weld or rolling"},
     {"[[joint]]", "bodies", "list of two strings", "(required)", "two different bodies, or a body and \"ground\""},
     {"[[joint]]", "points", "list of two strings", "(required)", "a named point of each body, in the order of bodies"},
     {"[[joint]]", "stiffness", kQuantity, "none", "pin only: torsional spring stiffness, N m/rad, >= 0"},
@@ -77,6 +77,8 @@ constexpr MechanismKey kKeys[] = {
      "slider: the sliding direction; rolling: the line's direction (the disc on its side turned +90 degrees); in the "
      "frame of bodies[0], any length but not zero"},
     {"[[joint]]", "radius", kQuantity, "the rolling body's disc radius", "rolling only: the rolling radius, m, > 0"},
+    {"[[joint]]", "angle", kQuantity, "0",
+     "weld only: the relative angle th_b - th_a it holds, rad; neither body may be a point mass"},
     {"[[driver]]", "name", "string", "(required)",
      "the driver's name, naming its column NAME.torque (pin) or NAME.force (slider): letters, digits, '_' or '-'"},
     {"[[driver]]", "joint", "string", "(required)", "the pin or slider joint it drives"},
@@ -599,6 +601,10 @@ class MechanismReader {
       } else {
         joint.rest_angle = read->quantity;
       }
+    }
+    if (r.has("angle")) {
+      if (!info.angle) r.fail("angle", "'angle' is for " + joint_types_with(&JointTypeInfo::angle) + " only; " + takes);
+      joint.angle = quantity_at(r, "angle")->quantity;
     }
     read_radius(r, joint, takes);
     if (!info.axis && r.has("axis"))

@@ -83,6 +83,8 @@ SpanningTree spanning_tree(const Mechanism& mechanism) {
       case JointMotion::prismatic:
         tree.coordinates.push_back({CoordinateKind::s, index, node.joint, joint.name + ".s"});
         break;
+      case JointMotion::fixed:  // placed by its parent: no coordinate
+        break;
     }
   }
   return tree;

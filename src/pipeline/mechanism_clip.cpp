@@ -54,6 +54,26 @@ constexpr double kPanelSamples = 4000;  // a panel's samples over the clip, at l
 constexpr double kMargin = 0.1;         // of the view's larger side, around the whole motion
 constexpr double kTitleBand = 0.1;      // of the view's height
 
+/// What the first frame shows for `mode`: follow, the widest reach about the centroid;
+/// fixed, settings.view; fit, the whole motion and its arrows with a margin, and room at
+/// the top for the title and the time, which would hide what is under them.
+View mechanism_view(const MechanismScene& scene, const RenderSettings& settings, CameraMode mode) {
+  View view;
+  switch (mode) {
+    case CameraMode::follow:
+      view = view_around(scene.centroid(0), (1 + kMargin) * scene.view_reach());
+      break;
+    case CameraMode::fixed:
+      view = settings.view;
+      break;
+    case CameraMode::fit:
+      view = view_of(scene.view_bounds(), kMargin);
+      view.ymax += kTitleBand * (view.ymax - view.ymin);
+      break;
+  }
+  return view;
+}
+
 /// Trail samples per frame interval: only when a trail is drawn.
 int trail_steps(const MechanismClip& clip) {
   return clip.trails.empty() || !clip.settings.elements.has(Element::trail) ? 1 : kTrailSteps;
@@ -196,6 +216,7 @@ class MechanismFrames {
     scene_.set_shortest_arrow(shortest_labelled_arrow_px(style_) / camera_.scale(),
                               stretched_arrow_px(style_) / camera_.scale());
     scene_.set_trail_fades(!clip.trail_cycle);
+    if (mode != CameraMode::fixed) keep_legend_room(mechanism_view(scene_, settings_, mode));
   }
 
   void draw(std::size_t k, Frame& frame) {
@@ -213,20 +234,17 @@ class MechanismFrames {
   /// `backdrop_painted`, over the backdrop already there; `cache`: a raster clip's, kept across frames.
   void paint(std::size_t k, cairo_t* cr, bool backdrop_painted = false, MechanismPaintCache* cache = nullptr) {
     const auto start = std::chrono::steady_clock::now();
-    scene_.frame(k, list_);
+    fill_list(k);
     for (const MechanismDrawList::Line& line : list_.lines)
       if (line.kind == MechanismDrawList::Line::Kind::trail)
         stats_.trail_points_drawn += static_cast<std::int64_t>(line.points.size());
-    if (labels_.follows || list_.legend.relative_velocity)  // naming G when the velocities are relative to it
-      list_.legend.note = list_.legend.relative_velocity ? "the view follows the centre of mass G; the grid stays put"
-                                                         : "the view follows the centre of mass; the grid stays put";
     add_ghosts(k);
     const Camera camera = camera_at(k);
     // The camera a frame earlier (the samples are a frame apart): the grid streaks from there.
     const Camera earlier = k > 0 ? camera_at(k - 1) : camera;
     cairo_save(cr);
-    paint_mechanism_frame(cr, style_, camera, list_, labels_, motion_.times[k], settings_.width, settings_.height,
-                          &earlier, backdrop_painted, cache);
+    layout_ = paint_mechanism_frame(cr, style_, camera, list_, labels_, motion_.times[k], settings_.width,
+                                    settings_.height, &earlier, backdrop_painted, cache);
     cairo_restore(cr);
     cairo::check(cr, "drawing a frame");
     ++stats_.frames_drawn;
@@ -235,11 +253,102 @@ class MechanismFrames {
 
   [[nodiscard]] const RenderStats& stats() const { return stats_; }
   [[nodiscard]] const MechanismDrawList& list() const { return list_; }
+  [[nodiscard]] const ForceLayout& layout() const { return layout_; }
   [[nodiscard]] Camera camera_at(std::size_t k) const {
     return follow_ ? camera_.centred_at(scene_.centroid(k)) : camera_;
   }
 
  private:
+  // Sample k's draw list, the legend's note included.
+  void fill_list(std::size_t k) {
+    scene_.frame(k, list_);
+    if (labels_.follows || list_.legend.relative_velocity)  // naming G when the velocities are relative to it
+      list_.legend.note = list_.legend.relative_velocity ? "the view follows the centre of mass G; the grid stays put"
+                                                         : "the view follows the centre of mass; the grid stays put";
+  }
+
+  // The largest legend and scale bar over every frame under `camera`, and whether each
+  // frame found both a place covering nothing drawn. Sets the scene's shortest arrows to
+  // the camera's scale, as drawing with it does.
+  struct LegendRoom {
+    double legend_width = 0, legend_height = 0, bar_width = 0, bar_height = 0;
+    bool clear = true;
+  };
+  LegendRoom legend_room(cairo_t* cr, const Camera& camera) {
+    scene_.set_shortest_arrow(shortest_labelled_arrow_px(style_) / camera.scale(),
+                              stretched_arrow_px(style_) / camera.scale());
+    LegendRoom room;
+    for (std::size_t k = 0; k < motion_.times.size(); ++k) {
+      fill_list(k);
+      const std::vector<Rect> panels = mechanism_frame_panels(cr, style_, list_, labels_, settings_.width);
+      const Camera at = follow_ ? camera.centred_at(scene_.centroid(k)) : camera;
+      const LegendFit fit = fit_legend(cr, style_, at, list_, settings_.width, settings_.height, panels);
+      room.clear = room.clear && fit.clear;
+      room.legend_width = std::max(room.legend_width, fit.legend.width);
+      room.legend_height = std::max(room.legend_height, fit.legend.height);
+      room.bar_width = std::max(room.bar_width, fit.scale_bar.width);
+      room.bar_height = std::max(room.bar_height, fit.scale_bar.height);
+    }
+    return room;
+  }
+
+  // A fit or following camera under which some frame leaves the legend or its scale bar
+  // no place clear of the drawing (a wide swing covering every corner in turn) shows
+  // `view` beside a strip kept for them instead: at the left, the right or the bottom,
+  // whichever clears every frame with the mechanism largest, then least under the title
+  // and HUD. A following camera takes only a strip its frame has room for at its scale.
+  void keep_legend_room(const View& view) {
+    if (!shown_.has(Element::legend)) return;
+    const cairo::SurfacePtr scratch = cairo::image_surface(1, 1);
+    const cairo::ContextPtr cr = cairo::context(scratch.get());
+    const LegendRoom needed = legend_room(cr.get(), camera_);
+    if (needed.clear) return;
+    fill_list(0);
+    const std::vector<Rect> panels = mechanism_frame_panels(cr.get(), style_, list_, labels_, settings_.width);
+    const double w = settings_.width, h = settings_.height, gap = style_.padding() + 8 * style_.u;
+    enum class Side { left, right, bottom };
+    const auto beside = [&](Side side, const LegendRoom& room) {
+      const double across = gap + std::max(room.legend_width, room.bar_width);
+      const double up = gap + std::max(room.legend_height, room.bar_height);
+      Bounds area;
+      area.include({side == Side::left ? across : 0.0, 0.0});
+      area.include({side == Side::right ? w - across : w, side == Side::bottom ? h - up : h});
+      return Camera(view, area, settings_.width, settings_.height);
+    };
+    const auto under_panels = [&](const Camera& camera) {  // the first frame's view, px^2
+      const Vec2 low = camera.to_pixels({view.xmin, view.ymax}), high = camera.to_pixels({view.xmax, view.ymin});
+      const Rect shown{low.x(), low.y(), high.x() - low.x(), high.y() - low.y()};
+      double area = 0;
+      for (const Rect& panel : panels) area += overlap_area(shown, panel);
+      return area;
+    };
+    std::optional<Camera> best;
+    double best_under = 0;
+    for (const Side side : {Side::left, Side::right, Side::bottom}) {
+      Camera camera = beside(side, needed);
+      LegendRoom room = legend_room(cr.get(), camera);
+      if (!room.clear) {  // a smaller scale may draw more arrows dashed: a taller legend
+        room.legend_width = std::max(room.legend_width, needed.legend_width);
+        room.legend_height = std::max(room.legend_height, needed.legend_height);
+        room.bar_width = std::max(room.bar_width, needed.bar_width);
+        room.bar_height = std::max(room.bar_height, needed.bar_height);
+        camera = beside(side, room);
+        room.clear = legend_room(cr.get(), camera).clear;
+      }
+      if (!room.clear || (follow_ && camera.scale() < camera_.scale() * (1 - 1e-12))) continue;
+      const double under = under_panels(camera);
+      const bool larger = best && camera.scale() > best->scale() * (1 + 1e-12);
+      const bool as_large = best && camera.scale() >= best->scale() * (1 - 1e-12);
+      if (!best || larger || (as_large && under < best_under)) {
+        best = camera;
+        best_under = under;
+      }
+    }
+    if (best) camera_ = *best;
+    scene_.set_shortest_arrow(shortest_labelled_arrow_px(style_) / camera_.scale(),
+                              stretched_arrow_px(style_) / camera_.scale());
+  }
+
   // A fixed camera's backdrop (background and grid) is the same in every frame: painted
   // once, then copied byte for byte. False (nothing copied) for a following camera.
   bool copy_backdrop(Frame& frame) {
@@ -295,6 +404,7 @@ class MechanismFrames {
   ElementSet shown_;  // the scene's elements, as its draw lists give them
   Frame backdrop_;    // a fixed camera's background and grid, once drawn
   MechanismPaintCache paint_cache_;
+  ForceLayout layout_;  // the frame drawn last's
   RenderStats stats_;
 };
 
@@ -345,7 +455,7 @@ double driver_cycle_seconds(const sym::System& system) {
     const std::string named = "driver " + d.name + "'s motion '" + d.motion.text + "'";
     const auto joint =
         std::find_if(m.joints.begin(), m.joints.end(), [&](const Joint& j) { return j.name == d.joint; });
-    if (joint != m.joints.end() && joint->type != JointType::pin)
+    if (joint != m.joints.end() && joint_type_info(joint->type).motion != JointMotion::revolute)
       throw Error::invalid("trail_length", "cycle: " + named + " moves slider " + d.joint +
                                                ", whose travel does not come round; give seconds");
     const GiNaC::ex motion = system.quantity(d.motion, true)
@@ -381,21 +491,7 @@ CameraMode mechanism_camera_mode(const RenderSettings& settings, const Mechanism
 }
 
 Camera mechanism_camera(const MechanismScene& scene, const RenderSettings& settings, CameraMode mode) {
-  View view;
-  switch (mode) {
-    case CameraMode::follow:
-      view = view_around(scene.centroid(0), (1 + kMargin) * scene.view_reach());
-      break;
-    case CameraMode::fixed:
-      view = settings.view;
-      break;
-    case CameraMode::fit:
-      view = view_of(scene.view_bounds(), kMargin);
-      // Room at the top for the title and the time, which would hide what is under them.
-      view.ymax += kTitleBand * (view.ymax - view.ymin);
-      break;
-  }
-  return {view, settings.width, settings.height};
+  return {mechanism_view(scene, settings, mode), settings.width, settings.height};
 }
 
 MechanismMotion sample_mechanism_motion(const sym::System& system, const GiNaC::exmap& initial,
@@ -647,6 +743,11 @@ std::vector<GiNaC::exmap> ensemble_states(const sym::System& system, const GiNaC
   return states;
 }
 
+void show_mode(MechanismClip& clip, const ModeMotion& motion) {
+  clip.prescribed = motion.prescribed;
+  clip.hud_run = motion.hud;
+}
+
 bool MechanismClip::is_still() const { return out && linkage::is_still(output_kind(*out, "out")); }
 
 void MechanismClip::validate(const sym::System& system) const {
@@ -734,6 +835,8 @@ const RenderStats& MechanismClipFrames::stats() const { return drawn_->frames.st
 Camera MechanismClipFrames::camera(std::size_t k) const { return drawn_->frames.camera_at(k); }
 
 const MechanismDrawList& MechanismClipFrames::list() const { return drawn_->frames.list(); }
+
+const ForceLayout& MechanismClipFrames::layout() const { return drawn_->frames.layout(); }
 
 ClipResult produce_mechanism_clip(const sym::System& system, const GiNaC::exmap& initial, const MechanismClip& clip,
                                   const ClipProgress& progress) {

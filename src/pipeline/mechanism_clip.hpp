@@ -16,6 +16,7 @@
 #include "pipeline/clip_result.hpp"
 #include "pipeline/mode_motion.hpp"
 #include "pipeline/trajectory_csv.hpp"
+#include "render/mechanism_forces.hpp"
 #include "render/panel.hpp"
 #include "render/settings.hpp"
 #include "render/theme.hpp"
@@ -87,6 +88,10 @@ struct MechanismClip {
   void validate(const sym::System& system) const;
 };
 
+/// `clip` made to draw `motion` (a mode's, mode_motion): its prescribed states (none for the
+/// nonlinear one) and the HUD's run row. (Its caption, the default, goes into the request.)
+void show_mode(MechanismClip& clip, const ModeMotion& motion);
+
 /// One period of the drivers' motion, s: 2 pi/|omega| when every driver turns a pin at a
 /// constant rate omega (theta0 + omega*t) with one period; else Error::invalid("trail_length")
 /// naming the motion and why (`--trail-length cycle`).
@@ -99,7 +104,8 @@ struct MechanismClip {
 [[nodiscard]] CameraMode mechanism_camera_mode(const RenderSettings& settings, const MechanismGeometry& geometry);
 /// The camera of the first frame for `mode`: follow, about the centroid at the zoom that
 /// holds the widest reach (each frame re-centres it on scene.centroid(k)); fixed,
-/// settings.view; fit, the whole motion and its arrows with a band on top for the title.
+/// settings.view; fit, the whole motion and its arrows with a band on top for the title
+/// (a clip keeps a strip beside it for the legend when some frame has no clear corner).
 [[nodiscard]] Camera mechanism_camera(const MechanismScene& scene, const RenderSettings& settings, CameraMode mode);
 
 /// The motion at `frame_times` (increasing) from one run; with `trail_steps` > 1 also the
@@ -154,6 +160,8 @@ class MechanismClipFrames {
   /// streaks from where frame k - 1's put it), and the draw list of the frame drawn last.
   [[nodiscard]] Camera camera(std::size_t k) const;
   [[nodiscard]] const MechanismDrawList& list() const;
+  /// Where the frame drawn last put its legend, scale bar and labels.
+  [[nodiscard]] const ForceLayout& layout() const;
 
  private:
   struct Drawn;

@@ -29,6 +29,12 @@ std::string modes_in_words(const ModalAnalysis& modes) {
 
 }  // namespace
 
+void check_amplitude(double amplitude) {
+  if (!(amplitude > 0) || !std::isfinite(amplitude))
+    throw Error::invalid("amplitude", format_significant(amplitude, 6) +
+                                          "; valid: the largest coordinate's displacement, rad or m, > 0");
+}
+
 ModeMotion mode_motion(const sym::System& system, const Linearization& linear, const ModalAnalysis& modes, int number,
                        double amplitude, bool nonlinear) {
   const int count = static_cast<int>(modes.modes.size());
@@ -41,9 +47,7 @@ ModeMotion mode_motion(const sym::System& system, const Linearization& linear, c
                                      (mode.kind == Mode::Kind::unstable ? "it grows from the equilibrium"
                                                                         : "it drifts without coming back") +
                                      ", so it has no frequency to show; " + modes_in_words(modes));
-  if (!(amplitude > 0) || !std::isfinite(amplitude))
-    throw Error::invalid("amplitude", format_significant(amplitude, 6) +
-                                          "; valid: the largest coordinate's displacement, rad or m, > 0");
+  check_amplitude(amplitude);
   Eigen::Index largest = 0;
   mode.tree_shape.cwiseAbs().maxCoeff(&largest);
   const double scale = amplitude / std::fabs(mode.tree_shape[largest]);

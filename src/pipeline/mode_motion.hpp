@@ -29,6 +29,10 @@ struct ModeMotion {
   std::string caption;           // the default caption: the mode, its frequency and amplitude
 };
 
+/// Error::invalid("amplitude", ...) unless `amplitude` (a mode's largest tree coordinate's
+/// displacement, rad or m) is finite and > 0.
+void check_amplitude(double amplitude);
+
 /// Mode `number` (from 1, as `linkage modes` numbers them) of `modes` at `amplitude` (the
 /// largest tree coordinate's displacement, rad or m). Error::invalid("mode", ...) for a
 /// number out of range or a mode that does not oscillate, ("amplitude", ...) for an

@@ -8,7 +8,16 @@ Camera::Camera(const View& view, int width, int height)
     : width_(width),
       height_(height),
       scale_(std::min(width / (view.xmax - view.xmin), height / (view.ymax - view.ymin))),
-      centre_(0.5 * (view.xmin + view.xmax), 0.5 * (view.ymin + view.ymax)) {}
+      centre_(0.5 * (view.xmin + view.xmax), 0.5 * (view.ymin + view.ymax)),
+      anchor_(0.5 * width, 0.5 * height) {}
+
+Camera::Camera(const View& view, const Bounds& area, int width, int height)
+    : width_(width),
+      height_(height),
+      scale_(std::min((area.max.x() - area.min.x()) / (view.xmax - view.xmin),
+                      (area.max.y() - area.min.y()) / (view.ymax - view.ymin))),
+      centre_(0.5 * (view.xmin + view.xmax), 0.5 * (view.ymin + view.ymax)),
+      anchor_(0.5 * (area.min + area.max)) {}
 
 View Camera::visible() const {
   const Vec2 low = to_world({0.0, static_cast<double>(height_)});

@@ -38,6 +38,12 @@ bool overlaps(const Rect& a, const Rect& b) {
   return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
 }
 
+double overlap_area(const Rect& a, const Rect& b) {
+  const double w = std::min(a.x + a.width, b.x + b.width) - std::max(a.x, b.x);
+  const double h = std::min(a.y + a.height, b.y + b.height) - std::max(a.y, b.y);
+  return w > 0 && h > 0 ? w * h : 0;
+}
+
 bool crosses(const Rect& r, const Vec2& a, const Vec2& b) {
   // Liang-Barsky clipping.
   double t0 = 0, t1 = 1;
@@ -103,17 +109,21 @@ Placement place_label(const Rect& size, const Vec2& head, const Vec2& direction,
     const Vec2 at = head + std::min(along_x, along_y) * d;
     return Rect{at.x() - 0.5 * size.width, at.y() - 0.5 * size.height, size.width, size.height};
   };
-  for (int pass = 0; pass < 3; ++pass)
-    for (int ring = 0; ring < 10; ++ring)
+  for (int pass = 0; pass < 4; ++pass)
+    // A place clear of everything is looked for further out (a crowded middle rod's
+    // spring labels find one only past its neighbours), with a line to the head.
+    for (int ring = 0; ring < (pass == 0 ? 30 : 10); ++ring)
       for (const double turn : kTurns) {
         const Rect box = candidate(ring, turn);
-        if (pass < 2 && !inside_frame(box, width, height)) continue;
+        if (pass < 3 && !inside_frame(box, width, height)) continue;
         if (std::any_of(obstacles.boxes.begin(), obstacles.boxes.end(),
                         [&](const Rect& r) { return overlaps(box, r); }))
           continue;
         // Lines are kept off by an arrow head's half width, as heads and shafts have width.
-        if (pass == 0 && touches(grown(box, style.arrow_head_half_width()), obstacles.segments)) continue;
-        if (pass < 2 && obstacles.own != nullptr) {
+        const Rect apart = grown(box, style.arrow_head_half_width());
+        if (pass == 0 && touches(apart, obstacles.segments)) continue;
+        if (pass < 2 && touches(apart, obstacles.coils)) continue;
+        if (pass < 3 && obstacles.own != nullptr) {
           const double mine = distance_to(box, obstacles.own->a, obstacles.own->b);
           if (std::any_of(obstacles.rivals.begin(), obstacles.rivals.end(), [&](const Segment& rival) {
                 return distance_to(box, rival.a, rival.b) < mine + kPlainlyNearer * style.u;

@@ -24,6 +24,8 @@ struct LabelObstacles {
   // `rivals` (arrows it could be taken for), unless there is no other place.
   const Segment* own = nullptr;
   std::span<const Segment> rivals{};
+  // Springs' coils: avoided as the segments are, and still when those cannot be.
+  std::span<const Segment> coils{};
 };
 
 /// The shortest distance between a box and the segment a-b (0 when they meet).
@@ -31,6 +33,8 @@ struct LabelObstacles {
 
 /// Whether two boxes share any area.
 [[nodiscard]] bool overlaps(const Rect& a, const Rect& b);
+/// The area of a and b's intersection (zero when apart).
+[[nodiscard]] double overlap_area(const Rect& a, const Rect& b);
 /// Whether the segment a-b passes through r.
 [[nodiscard]] bool crosses(const Rect& r, const Vec2& a, const Vec2& b);
 /// Whether r crosses any segment or lies inside a body's outline.
@@ -44,8 +48,9 @@ struct Placement {
 
 /// The first place for a box of `size` (only its width and height count) around `head`:
 /// along `direction` first, then turning away from it, then further out; clear of every
-/// box and segment and inside the frame if possible, else clear of the boxes inside the
-/// frame, else clear of the boxes; the plain place past the head if none.
+/// box, segment and coil and inside the frame if possible, else clear of the boxes and
+/// coils inside the frame, else clear of the boxes inside the frame, else clear of the
+/// boxes; the plain place past the head if none.
 [[nodiscard]] Placement place_label(const Rect& size, const Vec2& head, const Vec2& direction,
                                     const LabelObstacles& obstacles, const DrawStyle& style, int width, int height);
 

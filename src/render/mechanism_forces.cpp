@@ -59,7 +59,7 @@ std::vector<Vec2> arc_points(const Camera& camera, const List::Torque& torque, i
 
 struct Obstacles {
   std::vector<Rect> boxes;
-  std::vector<Segment> segments;
+  std::vector<Segment> segments, coils;
 };
 
 // The double bar across a cut arrow's shaft, a third of the way from its tail: a gap in
@@ -265,13 +265,6 @@ Vec2 legend_rows(cairo_t* cr, const DrawStyle& style, const Camera& camera, cons
   return {widest, y - at.y()};
 }
 
-// The area of a and b's intersection (zero when apart).
-double overlap_area(const Rect& a, const Rect& b) {
-  const double w = std::min(a.x + a.width, b.x + b.width) - std::max(a.x, b.x);
-  const double h = std::min(a.y + a.height, b.y + b.height) - std::max(a.y, b.y);
-  return w > 0 && h > 0 ? w * h : 0;
-}
-
 // What the legend must not cover, in pixels: each body's, arrow's, joint's and torque's box.
 std::vector<Rect> drawn_boxes(const DrawStyle& style, const Camera& camera, const List& list) {
   std::vector<Rect> boxes;
@@ -348,8 +341,9 @@ std::vector<Segment> arrows_apart(const DrawStyle& style, const Camera& camera, 
 
 // A w x h box where it covers least of `drawn` (and none of `taken`): bottom left when
 // clear, else another corner or a place along the frame's edge, below the title and time.
+// `covered`: the area of `drawn` it covers there.
 Rect clear_place(const DrawStyle& style, double w, double h, int width, int height, const std::vector<Rect>& occupied,
-                 const std::vector<Rect>& drawn, const std::vector<Rect>& taken) {
+                 const std::vector<Rect>& drawn, const std::vector<Rect>& taken, double& covered) {
   const double pad = 8 * style.u;
   const double left = std::floor(style.padding()), right = std::floor(width - style.padding() - w);
   const double bottom = std::floor(height - style.padding() - h);
@@ -373,39 +367,42 @@ Rect clear_place(const DrawStyle& style, double w, double h, int width, int heig
     for (int k = 1; k < kSteps; ++k) places.push_back({x, std::floor(top + (bottom - top) * k / kSteps), w, h});
   }
   Rect best = places.front();
-  double least = -1;
+  covered = -1;
   for (const Rect& place : places) {
     const Rect grown{place.x - pad, place.y - pad, place.width + 2 * pad, place.height + 2 * pad};
     if (std::any_of(taken.begin(), taken.end(), [&](const Rect& t) { return overlap_area(grown, t) > 0; })) continue;
-    double covered = 0;
-    for (const Rect& box : drawn) covered += overlap_area(place, box);
-    if (least < 0 || covered < least) {
-      least = covered;
+    double here = 0;
+    for (const Rect& box : drawn) here += overlap_area(place, box);
+    if (covered < 0 || here < covered) {
+      covered = here;
       best = place;
     }
-    if (covered == 0) break;
+    if (here == 0) break;
   }
   return best;
 }
 
 // The legend, and a scale bar to read its "1 cm" off (the grid's spacing, as the
-// homework's), each where it covers nothing drawn.
-void place_legend(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List& list, int width, int height,
+// homework's), each where it covers nothing drawn if it can; whether both could.
+bool place_legend(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List& list, int width, int height,
                   const std::vector<Rect>& occupied, ForceLayout& layout) {
   const List::Legend& legend = list.legend;
   if ((!(legend.metres > 0) || !(legend.joint || legend.applied)) && legend.rows.empty() && legend.trails.empty() &&
       legend.note.empty())
-    return;
+    return true;
   const double pad = 8 * style.u;
   const Vec2 content = legend_rows(cr, style, camera, legend, Vec2::Zero(), false);
   const double w = std::ceil(content.x() + 2 * pad), h = std::ceil(content.y() + 2 * 0.6 * pad);
   const std::vector<Rect> drawn = drawn_boxes(style, camera, list);
-  layout.legend = clear_place(style, w, h, width, height, occupied, drawn, {});
+  double covered = 0, bar_covered = 0;
+  layout.legend = clear_place(style, w, h, width, height, occupied, drawn, {}, covered);
   const RoundLength spacing = grid_spacing_for(camera, width, height);
   layout.scale_label = describe_length(spacing.mantissa, spacing.exponent);
   layout.scale_px = spacing.metres() * camera.scale();
   const Rect bar = scale_bar_rect(cr, style, layout.scale_label, layout.scale_px, width, height);
-  layout.scale_bar = clear_place(style, bar.width, bar.height, width, height, occupied, drawn, {layout.legend});
+  layout.scale_bar =
+      clear_place(style, bar.width, bar.height, width, height, occupied, drawn, {layout.legend}, bar_covered);
+  return covered == 0 && bar_covered == 0;
 }
 
 void paint_legend(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List::Legend& legend,
@@ -425,10 +422,18 @@ void paint_legend(cairo_t* cr, const DrawStyle& style, const Camera& camera, con
 
 }  // namespace
 
+LegendFit fit_legend(cairo_t* cr, const DrawStyle& style, const Camera& camera, const MechanismDrawList& list,
+                     int width, int height, const std::vector<Rect>& occupied) {
+  ForceLayout layout;
+  if (!list.shown.has(Element::legend)) return {};
+  const bool clear = place_legend(cr, style, camera, list, width, height, occupied, layout);
+  return {layout.legend, layout.scale_bar, clear};
+}
+
 ForceLayout layout_forces(cairo_t* cr, const DrawStyle& style, const Camera& camera, const MechanismDrawList& list,
                           int width, int height, const std::vector<Rect>& occupied) {
   ForceLayout layout;
-  if (list.shown.has(Element::legend)) place_legend(cr, style, camera, list, width, height, occupied, layout);
+  if (list.shown.has(Element::legend)) (void)place_legend(cr, style, camera, list, width, height, occupied, layout);
   Obstacles obstacles;
   obstacles.boxes = occupied;
   if (!layout.legend.empty()) obstacles.boxes.push_back(layout.legend);
@@ -446,6 +451,11 @@ ForceLayout layout_forces(cairo_t* cr, const DrawStyle& style, const Camera& cam
   }
   layout.arrows = arrows_apart(style, camera, list);
   for (const Segment& arrow : layout.arrows) obstacles.segments.push_back(arrow);
+  // Springs and dashpots, zig-zag by zig-zag: a name on a coil hides it and is hard to read.
+  for (const List::Line& line : list.lines)
+    if (line.kind == List::Line::Kind::spring || line.kind == List::Line::Kind::dashpot)
+      for (std::size_t i = 1; i < line.points.size(); ++i)
+        obstacles.coils.push_back({camera.to_pixels(line.points[i - 1]), camera.to_pixels(line.points[i])});
   for (std::size_t i = 0; i < list.labels.size(); ++i) {
     const List::Label& label = list.labels[i];
     const auto on_a_joint = [&](const Rect& b) {
@@ -469,7 +479,8 @@ ForceLayout layout_forces(cairo_t* cr, const DrawStyle& style, const Camera& cam
       const Rect candidate = box_around(cr, style, body_font(style), label.text, at);
       const bool named_there = std::any_of(layout.body_labels.begin(), layout.body_labels.end(),
                                            [&](const Rect& other) { return overlaps(candidate, other); });
-      if (!on_a_joint(candidate) && !named_there && !touches(candidate, obstacles.segments)) {
+      if (!on_a_joint(candidate) && !named_there && !touches(candidate, obstacles.segments) &&
+          !touches(candidate, obstacles.coils)) {
         box = candidate;
         placed = true;
         break;
@@ -478,7 +489,8 @@ ForceLayout layout_forces(cairo_t* cr, const DrawStyle& style, const Camera& cam
     if (!placed) {
       // Beside the body, as near its centre as the arrows along it allow.
       const Placement beside =
-          place_label(box, centre, {0, -1}, {obstacles.boxes, obstacles.segments}, style, width, height);
+          place_label(box, centre, {0, -1}, {obstacles.boxes, obstacles.segments, nullptr, {}, obstacles.coils}, style,
+                      width, height);
       placed = beside.clear;
       if (placed) box = beside.box;
     }
@@ -502,7 +514,8 @@ ForceLayout layout_forces(cairo_t* cr, const DrawStyle& style, const Camera& cam
     if (text.empty()) return;  // labels hidden
     const Rect size = box_around(cr, style, font, text, head);
     const Placement at =
-        place_label(size, head, direction, {obstacles.boxes, obstacles.segments}, style, width, height);
+        place_label(size, head, direction, {obstacles.boxes, obstacles.segments, nullptr, {}, obstacles.coils}, style,
+                    width, height);
     const bool applied = kind == List::Arrow::Kind::applied;
     PlacedLabel placed{at.box, head, text, applied, at.leader, kind};
     obstacles.boxes.push_back(placed.box);

@@ -46,6 +46,16 @@ struct ForceLayout {
                                         const MechanismDrawList& list, int width, int height,
                                         const std::vector<Rect>& occupied);
 
+/// Where layout_forces puts the legend and its scale bar (empty without them), and
+/// whether it found both a place covering nothing drawn.
+struct LegendFit {
+  Rect legend, scale_bar;
+  bool clear = true;
+};
+[[nodiscard]] LegendFit fit_legend(cairo_t* cr, const DrawStyle& style, const Camera& camera,
+                                   const MechanismDrawList& list, int width, int height,
+                                   const std::vector<Rect>& occupied);
+
 /// The shortest arrow that carries its label (pixels): the scene draws a shorter joint
 /// force stretched (dashed) to stretched_arrow_px, its label giving the value.
 [[nodiscard]] double shortest_labelled_arrow_px(const DrawStyle& style);

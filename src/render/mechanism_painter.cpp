@@ -210,6 +210,37 @@ void paint_guide(cairo_t* cr, const DrawStyle& style, const Vec2& at, const Vec2
   cairo_stroke(cr);
 }
 
+// A weld's bracket: an L-shaped plate with its corner at the point, a leg along each body
+// (world directions), a rivet in each leg.
+void paint_bracket(cairo_t* cr, const DrawStyle& style, const Vec2& at, const Vec2& first_world,
+                   const Vec2& second_world) {
+  const Vec2 first = Vec2(first_world.x(), -first_world.y()).normalized();  // y flips in pixels
+  const Vec2 second = Vec2(second_world.x(), -second_world.y()).normalized();
+  const double leg = 26 * style.u, plate = 9 * style.u;
+  const Vec2 ends[] = {at + leg * first, at, at + leg * second};
+  const auto trace = [&] {
+    cairo_new_path(cr);
+    for (const Vec2& p : ends) cairo_line_to(cr, p.x(), p.y());
+  };
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_MITER);
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_SQUARE);
+  trace();
+  set_colour(cr, style.theme->pin_edge);
+  cairo_set_line_width(cr, plate + 2 * style.edge_width());
+  cairo_stroke(cr);
+  trace();
+  set_colour(cr, style.theme->panel);
+  cairo_set_line_width(cr, plate);
+  cairo_stroke(cr);
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+  set_colour(cr, style.theme->pin_edge);
+  for (const Vec2& rivet : {Vec2(at + 0.65 * leg * first), Vec2(at + 0.65 * leg * second)}) {
+    cairo_new_path(cr);
+    cairo_arc(cr, rivet.x(), rivet.y(), 2 * style.u, 0, 2 * std::numbers::pi);
+    cairo_fill(cr);
+  }
+}
+
 void paint_markers(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List& list,
                    List::Marker::Kind kind) {
   for (const List::Marker& marker : list.markers) {
@@ -228,6 +259,9 @@ void paint_markers(cairo_t* cr, const DrawStyle& style, const Camera& camera, co
       case List::Marker::Kind::com:
         paint_com_symbol(cr, style, at, style.com_radius());
         break;
+      case List::Marker::Kind::bracket:
+        paint_bracket(cr, style, at, marker.direction, marker.across);
+        break;
     }
   }
 }
@@ -243,29 +277,52 @@ void paint_body_labels(cairo_t* cr, const DrawStyle& style, const List& list, co
   }
 }
 
-// The HUD (top right): the time, the run, the energy balance (not of a prescribed motion) and, when the case keeps a
-// constraint, its error; under it a row per other run with a swatch of its colour. The
-// box they take.
-Rect paint_time(cairo_t* cr, const DrawStyle& style, double t, const MechanismLabels& labels, const List::Hud& errors,
-                int width) {
-  const auto fill = [&](HudText& hud, double time, double energy, double constraint) {
-    format_hud(hud, time, energy, constraint);
-    std::snprintf(hud.run.data(), hud.run.size(), "%s", labels.run.c_str());
-    const std::size_t end = std::strlen(hud.energy.data());
-    std::snprintf(hud.energy.data() + end, hud.energy.size() - end, " J");
-    if (!errors.constraint) hud.constraint[0] = '\0';
-    if (!errors.energy) hud.energy[0] = '\0';
-  };
-  HudText hud, widest;
-  fill(hud, t, errors.energy_error, errors.constraint_error);
-  fill(widest, -std::max(9.99, labels.duration), -8.8e-88, 8.8e-88);  // one box for every frame
+void fill_hud(HudText& hud, double time, const MechanismLabels& labels, const List::Hud& errors) {
+  format_hud(hud, time, errors.energy_error, errors.constraint_error);
+  std::snprintf(hud.run.data(), hud.run.size(), "%s", labels.run.c_str());
+  const std::size_t end = std::strlen(hud.energy.data());
+  std::snprintf(hud.energy.data() + end, hud.energy.size() - end, " J");
+  if (!errors.constraint) hud.constraint[0] = '\0';
+  if (!errors.energy) hud.energy[0] = '\0';
+}
+
+// The HUD's box, one for every frame (its widest time and errors), and the rows under it
+// for the other runs (empty when none).
+struct HudBoxes {
+  Rect box, all;
+};
+HudBoxes hud_boxes(cairo_t* cr, const DrawStyle& style, const MechanismLabels& labels, const List::Hud& errors,
+                   int width) {
+  HudText widest;
+  List::Hud largest = errors;
+  largest.energy_error = -8.8e-88;
+  largest.constraint_error = 8.8e-88;
+  fill_hud(widest, -std::max(9.99, labels.duration), labels, largest);
   const Rect box = hud_rect(cr, style, widest, width);
+  const text::Font small{style.small_size(), false};
+  double wide = box.width, under = box.y + box.height + 0.4 * style.padding(), bottom = box.y + box.height;
+  for (const std::string* row : {&labels.ensemble, &labels.compare}) {
+    if (row->empty()) continue;
+    under += 1.4 * style.small_size();
+    wide = std::max(wide, text::width(cr, small, row->c_str()) + 1.4 * 0.8 * style.small_size());
+    bottom = under + text::metrics(cr, small).descent;
+  }
+  const double x = width - style.padding();
+  return {box, {x - wide, box.y, wide, bottom - box.y}};
+}
+
+// The HUD (top right): the time, the run, the energy balance (not of a prescribed motion) and, when the case keeps a
+// constraint, its error; under it a row per other run with a swatch of its colour.
+void paint_time(cairo_t* cr, const DrawStyle& style, double t, const MechanismLabels& labels, const List::Hud& errors,
+                const Rect& box, int width) {
+  HudText hud;
+  fill_hud(hud, t, labels, errors);
   paint_hud(cr, style, hud, box);
   const text::Font small{style.small_size(), false};
   const double x = width - style.padding();
   const Theme& theme = *style.theme;
   const Rgba ensemble = ensemble_colour(theme, 0.5), compare = compare_colour(theme);
-  double wide = box.width, under = box.y + box.height + 0.4 * style.padding(), bottom = box.y + box.height;
+  double under = box.y + box.height + 0.4 * style.padding();
   const std::pair<const std::string*, const Rgba*> rows[] = {{&labels.ensemble, &ensemble},
                                                              {&labels.compare, &compare}};
   for (const auto& [row, swatch] : rows) {
@@ -278,23 +335,54 @@ Rect paint_time(cairo_t* cr, const DrawStyle& style, double t, const MechanismLa
     cairo_rectangle(cr, x - row_wide, under - side, side, side);
     set_colour(cr, *swatch);
     cairo_fill(cr);
-    wide = std::max(wide, row_wide);
-    bottom = under + text::metrics(cr, small).descent;
   }
-  return {x - wide, box.y, wide, bottom - box.y};
 }
 
-// The inset of the centre of mass's whole path under `top`, the part travelled by `t`
-// drawn strong and the centre of mass now marked on it; the box it takes.
-Rect paint_com_inset(cairo_t* cr, const DrawStyle& style, const MechanismLabels& labels, const Vec2& now, double t,
-                     double top, int width) {
+std::string com_inset_caption(const MechanismLabels& labels) {
   char caption[96];
   std::snprintf(caption, sizeof caption, "path of the centre of mass, 0\u2013%g s", labels.duration);
-  const PathInset inset = path_inset(inset_layout(cr, style, caption, top, width), labels.com_path);
+  return caption;
+}
+
+bool shows_com_inset(const MechanismLabels& labels) {
+  return labels.follows && labels.com_path.size() >= 2 && labels.duration > 0;
+}
+
+// The inset of the centre of mass's whole path in `inset`, the part travelled by `t`
+// drawn strong and the centre of mass now marked on it.
+void paint_com_inset(cairo_t* cr, const DrawStyle& style, const MechanismLabels& labels, const Vec2& now, double t,
+                     Inset inset) {
+  const PathInset path = path_inset(std::move(inset), labels.com_path);
   const double steps = static_cast<double>(labels.com_path.size() - 1);
   const auto travelled = static_cast<std::size_t>(std::floor(std::clamp(t / labels.duration, 0.0, 1.0) * steps)) + 1;
-  paint_path_inset(cr, style, inset, now, travelled);
-  return inset.inset.rect;
+  paint_path_inset(cr, style, path, now, travelled);
+}
+
+// Where paint_mechanism_frame puts the HUD, the inset and the title (each empty when not drawn).
+struct FramePanels {
+  HudBoxes hud;
+  Inset inset;
+  TitleLayout title;
+};
+FramePanels frame_panels(cairo_t* cr, const DrawStyle& style, const MechanismDrawList& list,
+                         const MechanismLabels& labels, int width) {
+  FramePanels panels;
+  double inset_top = style.padding();
+  if (list.shown.has(Element::hud)) {
+    panels.hud = hud_boxes(cr, style, labels, list.hud, width);
+    inset_top = panels.hud.all.y + panels.hud.all.height + 0.6 * style.padding();
+  }
+  if (shows_com_inset(labels)) panels.inset = inset_layout(cr, style, com_inset_caption(labels), inset_top, width);
+  if (!labels.title.empty() && list.shown.has(Element::title))
+    panels.title = title_layout(cr, style, labels.title, width);
+  return panels;
+}
+
+std::vector<Rect> occupied_by(const FramePanels& panels) {
+  std::vector<Rect> occupied;
+  for (const Rect& r : {panels.hud.all, panels.inset.rect, panels.title.rect})
+    if (!r.empty()) occupied.push_back(r);
+  return occupied;
 }
 
 }  // namespace
@@ -389,9 +477,10 @@ void paint_mechanism_backdrop(cairo_t* cr, const DrawStyle& style, const Camera&
     paint_grid(cr, style, camera, frame_grid(camera, shown, labels, width, height), width, height, earlier);
 }
 
-void paint_mechanism_frame(cairo_t* cr, const DrawStyle& style, const Camera& camera, const MechanismDrawList& list,
-                           const MechanismLabels& labels, double t, int width, int height, const Camera* earlier,
-                           bool backdrop_painted, MechanismPaintCache* cache) {
+ForceLayout paint_mechanism_frame(cairo_t* cr, const DrawStyle& style, const Camera& camera,
+                                  const MechanismDrawList& list, const MechanismLabels& labels, double t, int width,
+                                  int height, const Camera* earlier, bool backdrop_painted,
+                                  MechanismPaintCache* cache) {
   const ElementSet& shown = list.shown;
   const GridSpec grid = frame_grid(camera, shown, labels, width, height);
   if (!backdrop_painted) paint_mechanism_backdrop(cr, style, camera, shown, labels, width, height, earlier);
@@ -410,20 +499,13 @@ void paint_mechanism_frame(cairo_t* cr, const DrawStyle& style, const Camera& ca
   paint_markers(cr, style, camera, list, List::Marker::Kind::guide);
   paint_motors(cr, style, camera, list);
   paint_markers(cr, style, camera, list, List::Marker::Kind::pin);
+  paint_markers(cr, style, camera, list, List::Marker::Kind::bracket);
   paint_markers(cr, style, camera, list, List::Marker::Kind::com);
-  std::vector<Rect> occupied;
-  double inset_top = style.padding();
-  if (shown.has(Element::hud)) {
-    occupied.push_back(paint_time(cr, style, t, labels, list.hud, width));
-    inset_top = occupied.back().y + occupied.back().height + 0.6 * style.padding();
-  }
-  if (labels.follows && labels.com_path.size() >= 2 && labels.duration > 0)
-    occupied.push_back(paint_com_inset(cr, style, labels, list.centre_of_mass, t, inset_top, width));
-  if (!labels.title.empty() && shown.has(Element::title)) {
-    const TitleLayout title = title_layout(cr, style, labels.title, width);
-    paint_title_cached(cr, style, labels.title, title, cache);
-    occupied.push_back(title.rect);
-  }
+  const FramePanels panels = frame_panels(cr, style, list, labels, width);
+  if (!panels.hud.box.empty()) paint_time(cr, style, t, labels, list.hud, panels.hud.box, width);
+  if (!panels.inset.rect.empty()) paint_com_inset(cr, style, labels, list.centre_of_mass, t, panels.inset);
+  if (!panels.title.rect.empty()) paint_title_cached(cr, style, labels.title, panels.title, cache);
+  const std::vector<Rect> occupied = occupied_by(panels);
   const ForceLayout layout = layout_forces(cr, style, camera, list, width, height, occupied);
   // The grid's names and the axes' ticks clear of every panel.
   if (shown.has(Element::axes) || (labels.follows && shown.has(Element::grid))) {
@@ -434,6 +516,12 @@ void paint_mechanism_frame(cairo_t* cr, const DrawStyle& style, const Camera& ca
   }
   paint_body_labels(cr, style, list, layout);
   paint_forces(cr, style, camera, list, layout);
+  return layout;
+}
+
+std::vector<Rect> mechanism_frame_panels(cairo_t* cr, const DrawStyle& style, const MechanismDrawList& list,
+                                         const MechanismLabels& labels, int width) {
+  return occupied_by(frame_panels(cr, style, list, labels, width));
 }
 
 }  // namespace linkage

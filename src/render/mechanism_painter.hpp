@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "render/camera.hpp"
+#include "render/mechanism_forces.hpp"
 #include "render/style.hpp"
 #include "scene/mechanism_scene.hpp"
 
@@ -44,10 +45,17 @@ void paint_mechanism_backdrop(cairo_t* cr, const DrawStyle& style, const Camera&
 
 /// Paints the whole frame (it is fully covered) for the mechanism at time `t`; over a
 /// backdrop already there (`backdrop_painted`: a fixed camera's, copied from a cache) only
-/// what comes after it, so the pixels are the same either way.
-void paint_mechanism_frame(cairo_t* cr, const DrawStyle& style, const Camera& camera, const MechanismDrawList& list,
-                           const MechanismLabels& labels, double t, int width, int height,
-                           const Camera* earlier = nullptr, bool backdrop_painted = false,
-                           MechanismPaintCache* cache = nullptr);
+/// what comes after it, so the pixels are the same either way. Returns where it put the
+/// legend and the labels.
+ForceLayout paint_mechanism_frame(cairo_t* cr, const DrawStyle& style, const Camera& camera,
+                                  const MechanismDrawList& list, const MechanismLabels& labels, double t, int width,
+                                  int height, const Camera* earlier = nullptr, bool backdrop_painted = false,
+                                  MechanismPaintCache* cache = nullptr);
+
+/// The boxes of the HUD, the centre of mass's inset and the title as paint_mechanism_frame
+/// places them (those it draws): what the legend and labels keep off. Nothing is painted.
+[[nodiscard]] std::vector<Rect> mechanism_frame_panels(cairo_t* cr, const DrawStyle& style,
+                                                       const MechanismDrawList& list, const MechanismLabels& labels,
+                                                       int width);
 
 }  // namespace linkage

@@ -65,6 +65,14 @@ class TextWriter final : public Writer {
     out_ += "\n";
     out_ += mechanism_text(worked, o);
   }
+  void modes(const sym::System& system, const Linearization& linear, const ModalAnalysis& modes,
+             const std::vector<ModeCheck>* checks, const ReportOptions& options) override {
+    ReportOptions o = options;
+    o.width = width_;
+    o.text_style = style_;
+    out_ += "\n";
+    out_ += modes_text(system, linear, modes, o, checks);
+  }
   void table(const ResultTable& table, const std::string& caption) override {
     Table t;
     t.headers.assign(table.headers.begin() + 1, table.headers.end());
@@ -96,6 +104,22 @@ class TextWriter final : public Writer {
 };
 
 class MarkdownWriter final : public Writer {
+ private:
+  // A report's headings two levels below the lesson's step headings.
+  static std::string shifted(const std::string& report) {
+    std::string out;
+    std::size_t start = 0;
+    while (start < report.size()) {
+      std::size_t end = report.find('\n', start);
+      if (end == std::string::npos) end = report.size();
+      const std::string_view line(report.data() + start, end - start);
+      if (line.starts_with("#")) out += "##";
+      out += std::string(line) + "\n";
+      start = end + 1;
+    }
+    return out;
+  }
+
  public:
   void title(const std::string& title, const std::string& description) override {
     out_ += "# " + title + "\n";
@@ -104,19 +128,13 @@ class MarkdownWriter final : public Writer {
   void heading(const std::string& text) override { out_ += "\n## " + text + "\n"; }
   void markdown(const std::string& text) override { out_ += "\n" + text + "\n"; }
   void worked_solution(const MechanismSolution& worked, const ReportOptions& options) override {
-    const std::string report = mechanism_markdown(worked, options);
-    // The report's headings sit two levels below the lesson's step headings.
-    std::string shifted;
-    std::size_t start = 0;
-    while (start < report.size()) {
-      std::size_t end = report.find('\n', start);
-      if (end == std::string::npos) end = report.size();
-      const std::string_view line(report.data() + start, end - start);
-      if (line.starts_with("#")) shifted += "##";
-      shifted += std::string(line) + "\n";
-      start = end + 1;
-    }
-    out_ += "\n" + shifted;
+    out_ += "\n";
+    out_ += shifted(mechanism_markdown(worked, options));
+  }
+  void modes(const sym::System& system, const Linearization& linear, const ModalAnalysis& modes,
+             const std::vector<ModeCheck>* checks, const ReportOptions& options) override {
+    out_ += "\n";
+    out_ += shifted(modes_markdown(system, linear, modes, options, checks));
   }
   void table(const ResultTable& table, const std::string& caption) override {
     out_ += "\n";
@@ -168,6 +186,10 @@ class LatexWriter final : public Writer {
   void markdown(const std::string& text) override { out_ += markdown_to_latex(text); }
   void worked_solution(const MechanismSolution& worked, const ReportOptions& options) override {
     out_ += mechanism_latex(worked, options) + "\n";
+  }
+  void modes(const sym::System& system, const Linearization& linear, const ModalAnalysis& modes,
+             const std::vector<ModeCheck>* checks, const ReportOptions& options) override {
+    out_ += modes_latex(system, linear, modes, options, checks) + "\n";
   }
   void table(const ResultTable& table, const std::string& caption) override {
     std::string tabular = markdown_to_latex(pipe_table(table));

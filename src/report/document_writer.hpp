@@ -10,6 +10,7 @@
 
 #include "core/result_table.hpp"
 #include "report/mechanism_solution.hpp"
+#include "report/modes_report.hpp"
 #include "report/report_options.hpp"
 
 namespace linkage {
@@ -36,6 +37,9 @@ class Writer {
   virtual void markdown(const std::string& text) = 0;
   /// The worked solution of a solve step.
   virtual void worked_solution(const MechanismSolution& worked, const ReportOptions& options) = 0;
+  /// The small vibrations of a modes step, as `linkage modes` prints them (`checks`: --verify's).
+  virtual void modes(const sym::System& system, const Linearization& linear, const ModalAnalysis& modes,
+                     const std::vector<ModeCheck>* checks, const ReportOptions& options) = 0;
   virtual void table(const ResultTable& table, const std::string& caption) = 0;
   /// A still, a clip, a plot or a data file. Writers that link files link only files
   /// that exist.

@@ -8,6 +8,7 @@
 
 #include "report/expression_print.hpp"
 #include "report/latex_math.hpp"
+#include "report/math_document.hpp"
 #include "report/mechanism_parts.hpp"
 #include "report/notation.hpp"
 #include "symbolic/energy.hpp"
@@ -15,8 +16,6 @@
 namespace linkage {
 
 namespace {
-
-enum class Format { latex, markdown };
 
 // Equation rows wrap beyond this many visible characters (latex_math's visible_length,
 // which counts no spaces): the homework's longest row, (6.2), takes 50 and stays whole
@@ -35,15 +34,6 @@ using Matrix = std::vector<std::vector<std::string>>;
 struct ColumnBlock {
   std::size_t begin = 0, end = 0;
 };
-
-std::string markdown_escape(std::string_view text) {
-  std::string out;
-  for (char c : text) {
-    if (std::string_view("\\`*_[]<>|").find(c) != std::string_view::npos) out += '\\';
-    out += c;
-  }
-  return out;
-}
 
 // A_1 ... A_9, then A_{10}.
 std::string subscript(std::string_view base, std::size_t index) {
@@ -90,10 +80,10 @@ std::vector<ColumnBlock> column_blocks(const Matrix& symbolic, const Matrix& num
   return blocks;
 }
 
-class DerivationWriter {
+class DerivationWriter : private MathDocument {
  public:
   DerivationWriter(const MechanismSolution& s, const ReportOptions& options, Format format)
-      : s_(s), system_(*s.system), o_(options), format_(format) {}
+      : MathDocument(format), s_(s), system_(*s.system), o_(options) {}
 
   std::string run() {
     write_mechanism_sections(*this, s_, o_);
@@ -103,92 +93,6 @@ class DerivationWriter {
  private:
   template <class Writer>
   friend void linkage::write_mechanism_sections(Writer& w, const MechanismSolution& s, const ReportOptions& o);
-
-  [[nodiscard]] bool latex() const { return format_ == Format::latex; }
-  [[nodiscard]] std::string pad() const { return latex() ? "  " : ""; }
-
-  // ---- the two formats' building blocks ----
-
-  [[nodiscard]] std::string text(std::string_view plain) const {
-    return latex() ? latex_escape(plain) : markdown_escape(plain);
-  }
-  // `note` is already in the format (it may hold $...$ math).
-  void heading(std::string_view title, std::string_view note) {
-    if (latex()) {
-      out_ += latex_heading(title, note);
-      return;
-    }
-    out_ += concat({"\n## ", markdown_escape(title), "\n"});
-    if (!note.empty()) paragraph(note);
-  }
-  void paragraph(std::string_view formatted) {
-    out_ += latex() ? concat({formatted, "\n"}) : concat({"\n", formatted, "\n"});
-  }
-  // A paragraph that starts afresh in LaTeX rather than continuing after a display.
-  void new_paragraph(std::string_view formatted) {
-    paragraph(latex() ? concat({"\\par\\noindent ", formatted}) : std::string(formatted));
-  }
-  void math(std::string_view body) { out_ += concat({"\n$$\n", body, "$$\n"}); }
-  void display(std::string_view body) {
-    if (latex())
-      out_ += concat({"\\begin{equation*}\n", body, "\\end{equation*}\n"});
-    else
-      math(body);
-  }
-  void aligned(std::string_view rows) {
-    if (latex())
-      out_ += concat({"\\begin{align*}\n", rows, "\\end{align*}\n"});
-    else
-      math(concat({"\\begin{aligned}\n", rows, "\\end{aligned}\n"}));
-  }
-  [[nodiscard]] std::string tag(std::string_view label) const {
-    return latex() ? concat({" \\tag{", label, "}"}) : concat({" && \\text{(", label, ")}"});
-  }
-  void list(const std::vector<std::string>& items) {
-    if (latex()) {
-      out_ += "\\begin{itemize}\n";
-      for (const std::string& item : items) out_ += concat({"  \\item ", item, "\n"});
-      out_ += "\\end{itemize}\n";
-      return;
-    }
-    out_ += "\n";
-    for (const std::string& item : items) out_ += concat({"- ", item, "\n"});
-  }
-  // `align` holds one of l, r per column; cells are already in the format.
-  void table(const std::vector<std::string>& headers, std::string_view align, const Matrix& rows) {
-    if (latex()) {
-      out_ += concat({"\\begin{center}\n\\begin{tabular}{", align, "}\n  "});
-      for (std::size_t c = 0; c < headers.size(); ++c) out_ += concat({c == 0 ? "" : " & ", headers[c]});
-      out_ += " \\\\\n  \\hline\n";
-      for (const auto& row : rows) {
-        out_ += "  ";
-        for (std::size_t c = 0; c < row.size(); ++c) out_ += concat({c == 0 ? "" : " & ", row[c]});
-        out_ += " \\\\\n";
-      }
-      out_ += "\\end{tabular}\n\\end{center}\n";
-      return;
-    }
-    out_ += "\n|";
-    for (const std::string& h : headers) out_ += concat({" ", h, " |"});
-    out_ += "\n|";
-    for (char a : align) out_ += a == 'r' ? " --: |" : " :-- |";
-    out_ += "\n";
-    for (const auto& row : rows) {
-      out_ += "|";
-      for (const std::string& cell : row) out_ += concat({" ", cell, " |"});
-      out_ += "\n";
-    }
-  }
-  [[nodiscard]] std::string inline_math(std::string_view tex) const { return concat({"$", tex, "$"}); }
-  // A number in a table cell: LaTeX math, or plain Markdown as the homework's tables.
-  [[nodiscard]] std::string number_cell(double value, int digits) const {
-    return latex() ? inline_math(format_number(value, Style::latex, digits))
-                   : format_number(value, Style::unicode, digits);
-  }
-  [[nodiscard]] std::string unit_cell(const std::string& ascii) const {
-    if (ascii.empty()) return "";
-    return latex() ? inline_math(unit_text(ascii, Style::latex)) : unit_text(ascii, Style::unicode);
-  }
 
   // ---- the mechanism's expressions ----
 
@@ -554,18 +458,16 @@ class DerivationWriter {
   const MechanismSolution& s_;
   const sym::System& system_;
   const ReportOptions& o_;
-  Format format_;
-  std::string out_;
 };
 
 }  // namespace
 
 std::string mechanism_latex(const MechanismSolution& solution, const ReportOptions& options) {
-  return DerivationWriter(solution, options, Format::latex).run();
+  return DerivationWriter(solution, options, MathDocument::Format::latex).run();
 }
 
 std::string mechanism_markdown(const MechanismSolution& solution, const ReportOptions& options) {
-  return DerivationWriter(solution, options, Format::markdown).run();
+  return DerivationWriter(solution, options, MathDocument::Format::markdown).run();
 }
 
 }  // namespace linkage

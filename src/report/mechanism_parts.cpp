@@ -49,6 +49,7 @@ std::vector<PinInertia> pin_inertias(const sym::System& system) {
         case JointMotion::revolute:
           break;
         case JointMotion::prismatic:
+        case JointMotion::fixed:
         case JointMotion::rolling:  // it turns about its contact point, not a point of the body
           continue;
       }

@@ -1,12 +1,21 @@
 #include "report/quotable_values.hpp"
 
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <stdexcept>
 
+#include "core/error.hpp"
+#include "core/number_format.hpp"
+#include "formulations/linearization.hpp"
 #include "report/mechanism_solution.hpp"
 #include "symbolic/energy.hpp"
 
 namespace linkage {
+
+struct QuotableValues::Modes {
+  Linearization linear;
+  ModalAnalysis analysis;
+};
 
 QuotableValues::QuotableValues(std::shared_ptr<const sym::System> system) : system_(std::move(system)) {
   const sym::System& s = *system_;
@@ -41,6 +50,7 @@ QuotableValues::QuotableValues(std::shared_ptr<const sym::System> system) : syst
     add("cond" + std::to_string(c), c == 3 ? GiNaC::ex(cases_[3].first) : GiNaC::ex(0), "", c == 3 ? 0 : c);
     add("residual" + std::to_string(c), c == 3 ? GiNaC::ex(cases_[3].second) : GiNaC::ex(0), "", c == 3 ? 0 : c);
   }
+  add_modes();
   const Mechanism& m = s.mechanism();
   for (const auto& [key, entry] : entries_) {
     keys_[key] = key;
@@ -50,7 +60,46 @@ QuotableValues::QuotableValues(std::shared_ptr<const sym::System> system) : syst
 }
 
 void QuotableValues::add(const std::string& key, const GiNaC::ex& value, const std::string& unit, int case_number) {
-  entries_.try_emplace(key, Entry{value, unit, case_number});  // the first of a name wins
+  entries_.try_emplace(key, Entry{value, unit, case_number, {}});  // the first of a name wins
+}
+
+void QuotableValues::add_modes() {
+  const std::size_t count = mode_count(*system_);
+  add("modes.count", static_cast<int>(count), "");
+  const std::string mechanism = system_->mechanism().name;
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::string mode = "mode" + std::to_string(k + 1);
+    // The mode's value when it is of a kind that has it, else the reason in one line.
+    const auto quantity = [&](const std::string& name, const std::string& unit, Mode::Kind kind,
+                              std::function<double(const Mode&)> of) {
+      entries_.try_emplace(
+          mode + "." + name,
+          Entry{0, unit, 0, [=](const Modes& modes) {
+                  const Mode& m = modes.analysis.modes.at(k);
+                  if (m.kind == kind) return of(m);
+                  const std::string is =
+                      m.kind == Mode::Kind::unstable
+                          ? "is unstable (it grows at " + format_significant(m.growth_rate, 3) + " 1/s)"
+                      : m.kind == Mode::Kind::neutral
+                          ? "is neutral (it moves freely, no stiffness)"
+                          : "oscillates (omega " + format_significant(m.omega, 6) + " rad/s)";
+                  throw Error::input(mode + "." + name + ": mode " + std::to_string(k + 1) + " of " + mechanism + " " +
+                                     is + ": it has no " + name + "; valid: " + mode +
+                                     (m.kind == Mode::Kind::unstable ? ".growth_rate" : ".omega"));
+                }});
+    };
+    constexpr double kTwoPi = 2 * std::numbers::pi;
+    quantity("omega", "rad/s", Mode::Kind::oscillation, [](const Mode& m) { return m.omega; });
+    quantity("frequency_hz", "Hz", Mode::Kind::oscillation, [=](const Mode& m) { return m.omega / kTwoPi; });
+    quantity("period", "s", Mode::Kind::oscillation, [=](const Mode& m) { return kTwoPi / m.omega; });
+    quantity("damping_ratio", "", Mode::Kind::oscillation, [](const Mode& m) { return m.damping_ratio; });
+    quantity("growth_rate", "1/s", Mode::Kind::unstable, [](const Mode& m) { return m.growth_rate; });
+    for (std::size_t i = 0; i < system_->coordinates().size(); ++i)
+      entries_.try_emplace(system_->coordinates()[i].coordinate.key + "_" + mode,
+                           Entry{0, "", 0, [=](const Modes& modes) {
+                                   return modes.analysis.modes.at(k).tree_shape[static_cast<Eigen::Index>(i)];
+                                 }});
+  }
 }
 
 bool QuotableValues::has(const std::string& name) const { return keys_.contains(name); }
@@ -63,6 +112,15 @@ const QuotableValues::Entry& QuotableValues::entry(const std::string& name) cons
 
 GiNaC::ex QuotableValues::value(const std::string& name) const {
   const Entry& e = entry(name);
+  if (e.mode) {
+    if (!modes_) {
+      auto modes = std::make_shared<Modes>();
+      modes->linear = linearize(*system_);
+      modes->analysis = modal_analysis(modes->linear);
+      modes_ = std::move(modes);
+    }
+    return GiNaC::numeric(e.mode(*modes_));
+  }
   if (e.case_number == 0) return e.value;
   auto [it, fresh] = cases_.try_emplace(e.case_number);
   if (fresh) {

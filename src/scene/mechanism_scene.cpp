@@ -394,7 +394,8 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
         reach_ = std::max(reach_, (p - c).norm());
       }
     for (std::size_t d = 0; d < geometry_.drivers.size() && d < s.drivers.size(); ++d) {
-      const bool slider = geometry_.joints[geometry_.drivers[d].joint].type == JointType::slider;
+      const bool slider =
+          joint_type_info(geometry_.joints[geometry_.drivers[d].joint].type).motion == JointMotion::prismatic;
       double& largest = slider ? largest_driver_force[k] : largest_driver_torque[k];
       largest = std::max(largest, std::fabs(s.drivers[d]));
     }
@@ -404,6 +405,7 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
         largest_force[k] = std::max(largest_force[k], std::hypot(s.force[3 * j], s.force[3 * j + 1]));
       switch (sym::joint_stages(joint.type).drawing) {  // the drawing's extent: a rail spans the travel
         case sym::JointDrawing::marker:
+        case sym::JointDrawing::bracket:
           continue;
         case sym::JointDrawing::rail:
         case sym::JointDrawing::rolling:
@@ -866,11 +868,12 @@ void MechanismScene::add_motors(std::size_t k, MechanismDrawList& out) const {
     const int moved = joint.points[1].body, held = joint.points[0].body;
     const double theta1 = moved < 0 ? 0 : s.pose[3 * static_cast<std::size_t>(moved) + 2];
     const double theta0 = held < 0 ? 0 : s.pose[3 * static_cast<std::size_t>(held) + 2];
-    const bool slider = joint.type == JointType::slider;
     const std::string label =
-        shown_.has(Element::labels) ? driver.name + ": " + format_quantity(value, slider ? "N" : "N m") : "";
-    switch (joint.type) {
-      case JointType::pin: {
+        shown_.has(Element::labels)
+            ? driver.name + ": " + format_quantity(value, sym::joint_stages(joint.type).driver_unit)
+            : "";
+    switch (joint_type_info(joint.type).motion) {
+      case JointMotion::revolute: {
         const Vec2 at = world_point(s.pose, joint.points[0]);
         // With the body it turns in the free-body view, as the joint's pin on the ground is.
         out.motors.push_back({at, Vec2::UnitX(), false, moved});
@@ -882,7 +885,7 @@ void MechanismScene::add_motors(std::size_t k, MechanismDrawList& out) const {
         out.torques.push_back({at, radius, theta1 + std::numbers::pi - 0.5 * sweep, sweep, label, moved, true});
         break;
       }
-      case JointType::slider: {
+      case JointMotion::prismatic: {
         // At the slider's guide on its rail when the joints are drawn (placed under the body).
         Vec2 at = world_point(s.pose, joint.points[1]);
         const Vec2 axis = rotated(theta0, joint.axis), point = at;
@@ -896,7 +899,8 @@ void MechanismScene::add_motors(std::size_t k, MechanismDrawList& out) const {
         out.arrows.back().body = moved;
         break;
       }
-      case JointType::rolling:  // not drivable
+      case JointMotion::fixed:  // not drivable
+      case JointMotion::rolling:
         break;
     }
   }
@@ -1045,6 +1049,23 @@ void MechanismScene::frame(std::size_t k, MechanismDrawList& out) const {
         force_at = {contact, contact};
         break;
       }
+      case sym::JointDrawing::bracket: {
+        // A leg toward each body's centre (along its x axis when the centre is at the point),
+        // the second turned square when both would lie along one line.
+        const auto leg = [&](std::size_t side) {
+          const int body = joint.points[side].body;
+          if (body < 0) return Vec2(Vec2::UnitX());
+          const auto b = 3 * static_cast<std::size_t>(body);
+          const Vec2 towards = Vec2(pose[b], pose[b + 1]) - p0;
+          return towards.norm() > 1e-9 * extent_ ? Vec2(towards.normalized()) : rotated(pose[b + 2], Vec2::UnitX());
+        };
+        const Vec2 first = leg(0);
+        Vec2 second = leg(1);
+        if (std::fabs(first.x() * second.y() - first.y() * second.x()) < 0.5) second = Vec2(-first.y(), first.x());
+        out.markers.push_back({MechanismDrawList::Marker::Kind::bracket, p0, first, -1, second});
+        if (shown_.has(Element::labels) && !free_body_) out.joint_labels.push_back({p0, joint.name});
+        break;
+      }
     }
     if (force_scale_ <= 0) continue;
     const Vec2 force(s.force[3 * j], s.force[3 * j + 1]);
@@ -1128,8 +1149,10 @@ void MechanismScene::place_joints(const std::vector<double>& pose, std::size_t f
       marker.at = world_point(pose, points[1]);
       marker.body = points[1].body;
     } else if (points[1].body >= 0) {
-      halves.push_back(
-          {MechanismDrawList::Marker::Kind::pin, world_point(pose, points[1]), Vec2::UnitX(), points[1].body});
+      MechanismDrawList::Marker half = marker;  // a pin's circle or a weld's bracket
+      half.at = world_point(pose, points[1]);
+      half.body = points[1].body;
+      halves.push_back(half);
     }
   }
   out.markers.insert(out.markers.end(), halves.begin(), halves.end());

@@ -126,10 +126,11 @@ struct MechanismDrawList {
     int body = -1;               // the body it moves with in the free-body view (-1: the world)
   };
   struct Marker {
-    enum class Kind { ground, pin, guide, com } kind = Kind::pin;
+    enum class Kind { ground, pin, guide, com, bracket } kind = Kind::pin;
     Vec2 at = Vec2::Zero();
-    Vec2 direction = Vec2::UnitX();  // guide: along the rail
+    Vec2 direction = Vec2::UnitX();  // guide: along the rail; bracket: its leg on bodies[0]
     int body = -1;                   // the body it moves with in the free-body view (-1: the world)
+    Vec2 across = Vec2::UnitY();     // bracket: its leg on bodies[1]
   };
   struct Arrow {
     enum class Kind { joint, applied, gravity, spring, velocity, acceleration, driver } kind = Kind::joint;

@@ -10,6 +10,7 @@ Vec2 world_point(const Placement& body, const Vec2& local) { return body.positio
 // Each type's stages: its file's one definition.
 extern const JointStages kPinJoint;
 extern const JointStages kSliderJoint;
+extern const JointStages kWeldJoint;
 extern const JointStages kRollingJoint;
 
 namespace {
@@ -22,6 +23,8 @@ constexpr const JointStages* registered(JointType type) {
       return &kPinJoint;
     case JointType::slider:
       return &kSliderJoint;
+    case JointType::weld:
+      return &kWeldJoint;
     case JointType::rolling:
       return &kRollingJoint;
   }
@@ -53,6 +56,11 @@ Vec2 joint_axis(const System& system, const Joint& joint) {
   return axis;
 }
 
+GiNaC::ex joint_angle(const System& system, const Joint& joint) {
+  if (!joint_type_info(joint.type).angle || !joint.angle) return 0;
+  return system.quantity(*joint.angle, false);
+}
+
 GiNaC::ex joint_radius(const System& system, const Joint& joint) {
   if (!joint_type_info(joint.type).radius || !joint.radius) return 0;
   return system.quantity(*joint.radius, false);
@@ -75,6 +83,7 @@ JointEnds maximal_ends(const System& system, int joint) {
   place(j.bodies[0], j.points[0], ends.a, ends.point_a);
   place(j.bodies[1], j.points[1], ends.b, ends.point_b);
   ends.axis = joint_axis(system, j);
+  ends.angle = joint_angle(system, j);
   ends.radius = joint_radius(system, j);
   return ends;
 }

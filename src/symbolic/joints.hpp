@@ -36,6 +36,7 @@ struct JointEnds {
   Vec2 point_a, point_b;  // body frames
   Vec2 axis;              // slider, rolling: direction in the frame of a (any length)
   GiNaC::ex radius = 0;   // rolling: the rolling radius
+  GiNaC::ex angle = 0;    // weld: the relative angle th_b - th_a it holds
 };
 
 /// The world position of a point of a placed body.
@@ -62,6 +63,7 @@ enum class JointDrawing {
   marker,   // a pin's circle at its point on bodies[0]
   rolling,  // the line as a hatched surface of bodies[0], the contact point on bodies[1]'s circle
   rail,     // a rail along the axis through bodies[0]'s point over the travel, a guide at bodies[1]'s
+  bracket,  // an L-shaped plate over the point, a leg along each body
 };
 
 struct JointStages {
@@ -90,7 +92,8 @@ struct JointStages {
   /// drawing: how the scene draws it.
   JointDrawing drawing;
   /// driver: what a [[driver]] on it prescribes, in the ends' placements (a pin: the
-  /// relative angle th_b - th_a; a slider: its travel, the `coordinate` above).
+  /// relative angle th_b - th_a; a slider: its travel, the `coordinate` above); null
+  /// when the type is not drivable (its row names no driver column).
   GiNaC::ex (*driven)(const JointEnds& ends);
   /// driver: its multiplier's letter and unit ("tau", "N m"); the column is the row's
   /// `driver_column` (model/joint_types.hpp).
@@ -110,6 +113,9 @@ struct JointStages {
 
 /// The joint's axis in the frame of bodies[0] as parsed (zero when its type takes none).
 [[nodiscard]] Vec2 joint_axis(const System& system, const Joint& joint);
+
+/// The relative angle a weld holds, as parsed (0 when absent or its type takes none).
+[[nodiscard]] GiNaC::ex joint_angle(const System& system, const Joint& joint);
 
 /// The joint's radius as parsed (zero when its type takes none).
 [[nodiscard]] GiNaC::ex joint_radius(const System& system, const Joint& joint);

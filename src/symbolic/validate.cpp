@@ -83,6 +83,7 @@ void validate_quantities(const System& system) {
     if (j.stiffness) require_non_negative(system, *j.stiffness, "stiffness of joint " + j.name, true);
     if (j.damping) require_non_negative(system, *j.damping, "damping of joint " + j.name, true);
     if (j.rest_angle) (void)checked_value(system, *j.rest_angle, false, "rest angle of joint " + j.name, true);
+    if (j.angle) (void)checked_value(system, *j.angle, false, "angle of joint " + j.name);
     if (j.stiffness || j.damping)
       for (const std::string& body : j.bodies) {
         const Body* b = m.find_body(body);

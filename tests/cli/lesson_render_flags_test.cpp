@@ -24,10 +24,7 @@ TEST(LessonRenderStep, TakesEveryRenderFlag) {
   for (const auto& k : kInputKeys) keys.insert(std::string(k.key));
   // Not lesson keys: the lesson names the output (out) in its folder, takes its inputs
   // from [parameters], [state] and set steps, and manages progress itself.
-  // Not yet: --mode, --amplitude, --nonlinear (render --mode, issue 26 D2) wait for the
-  // modes lesson (D4), which makes them render step keys.
-  const std::set<std::string> not_in_lessons{"help",   "out",  "frames",    "quiet",    "stats",
-                                             "config", "mode", "amplitude", "nonlinear"};
+  const std::set<std::string> not_in_lessons{"help", "out", "frames", "quiet", "stats", "config"};
 
   const std::regex option(R"(^\s+(?:-h,)?--([A-Za-z0-9][A-Za-z0-9-]*))");
   int flags = 0;

@@ -382,15 +382,15 @@ TEST(LessonErrors, ABrokenLessonMakesNothing) {
   const RunResult r = run_linkage({"lesson", broken.string(), "--out", out.string()});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.out, "");
-  EXPECT_EQ(
-      r.err,
-      "linkage: error: " + broken.string() +
-          ":11:1: step 2 (render): unknown key 'fsp' (did you mean 'fps'?); valid keys: kind, heading, "
-          "mechanism, out, caption, quality, size, fps, speed, at, camera, view, show, hide, theme, title, "
-          "arrow_scale, panel, angles, trail, trail_length, points, ensemble, spread, compare, captions, set, case, "
-          "integrator, dt, "
-          "rtol, atol, duration, stabilize, baumgarte_alpha, baumgarte_beta, evaluator, L, w, b, m, g, x1, y1, "
-          "theta1, theta2, x1_dot, y1_dot, theta1_dot, theta2_dot\n");
+  EXPECT_EQ(r.err,
+            "linkage: error: " + broken.string() +
+                ":11:1: step 2 (render): unknown key 'fsp' (did you mean 'fps'?); valid keys: kind, heading, "
+                "mechanism, out, caption, quality, size, fps, speed, at, camera, view, show, hide, theme, title, "
+                "arrow_scale, panel, angles, trail, trail_length, points, ensemble, spread, compare, mode, amplitude, "
+                "nonlinear, modes_sheet, captions, set, case, "
+                "integrator, dt, "
+                "rtol, atol, duration, stabilize, baumgarte_alpha, baumgarte_beta, evaluator, L, w, b, m, g, x1, y1, "
+                "theta1, theta2, x1_dot, y1_dot, theta1_dot, theta2_dot\n");
   EXPECT_FALSE(fs::exists(out));
 
   const RunResult missing = run_linkage({"lesson", (dir / "nope.toml").string()});

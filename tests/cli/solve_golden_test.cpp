@@ -1,7 +1,8 @@
 // Golden files of `linkage solve` for the spec's example, in tests/data/solve/. Text is
 // checked in ASCII and in Unicode (forced, so the locale does not matter), LaTeX,
 // Markdown and JSON byte for byte: the output is deterministic. Two more hold Case 3 in
-// Lagrange's form (--form lagrange) for a tree and a closed loop.
+// Lagrange's form (--form lagrange) for a tree and a closed loop. And `linkage modes` in
+// LaTeX and Markdown (tests/data/modes/): the double pendulum and the four-bar on a spring.
 //
 // Regenerate after an intended change, then review the diff:
 //   LINKAGE_UPDATE_GOLDENS=1 ctest --test-dir build -R SolveGolden
@@ -18,6 +19,7 @@ namespace {
 struct Golden {
   const char* file;
   std::vector<std::string> args;
+  const char* folder = "solve";  // under tests/data
 };
 
 const std::vector<Golden>& goldens() {
@@ -32,12 +34,16 @@ const std::vector<Golden>& goldens() {
        {"solve", "--mechanism", "double-pendulum", "--case", "3", "--form", "lagrange", "--unicode"}},
       {"lagrange-slider-crank-ascii.txt",
        {"solve", "--mechanism", "slider-crank", "--case", "3", "--form", "lagrange", "--ascii"}},
+      {"double-pendulum.tex", {"modes", "--mechanism", "double-pendulum", "--format", "latex"}, "modes"},
+      {"double-pendulum.md", {"modes", "--mechanism", "double-pendulum", "--format", "markdown"}, "modes"},
+      {"four-bar-spring.tex", {"modes", "--mechanism", "four-bar-spring", "--format", "latex"}, "modes"},
+      {"four-bar-spring.md", {"modes", "--mechanism", "four-bar-spring", "--format", "markdown"}, "modes"},
   };
   return list;
 }
 
-std::filesystem::path golden_path(const char* file) {
-  return std::filesystem::path(LINKAGE_SOURCE_DIR) / "tests" / "data" / "solve" / file;
+std::filesystem::path golden_path(const Golden& golden) {
+  return std::filesystem::path(LINKAGE_SOURCE_DIR) / "tests" / "data" / golden.folder / golden.file;
 }
 
 // The first line where two texts differ, for a readable failure.
@@ -60,7 +66,7 @@ TEST_P(SolveGolden, MatchesTheFile) {
   const Golden& golden = GetParam();
   const test::RunResult r = test::run_linkage(golden.args);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto path = golden_path(golden.file);
+  const auto path = golden_path(golden);
   const char* update = std::getenv("LINKAGE_UPDATE_GOLDENS");
   if (update != nullptr && std::string(update) == "1") {
     test::write_text(path, r.out);
@@ -76,7 +82,7 @@ TEST_P(SolveGolden, MatchesTheFile) {
 
 INSTANTIATE_TEST_SUITE_P(Example, SolveGolden, testing::ValuesIn(goldens()),
                          [](const testing::TestParamInfo<Golden>& param) {
-                           std::string name;
+                           std::string name = param.param.folder == std::string("solve") ? "" : "modes_";
                            for (const char* c = param.param.file; *c != '\0'; ++c)
                              name += std::isalnum(static_cast<unsigned char>(*c)) != 0 ? *c : '_';
                            return name;

@@ -109,10 +109,11 @@ TEST(SolveOutput, HelpExplainsEveryOptionWithUnitAndDefault) {
 
 // Finds `program` on PATH.
 
-TEST(SolveOutput, LatexCompilesInAStandardDocument) {
-  if (!on_path("pdflatex")) GTEST_SKIP() << "pdflatex is not installed";
+// `args`' LaTeX \input into a standard document compiles, with no line wider than the page.
+void expect_latex_compiles(const std::vector<std::string>& args) {
+  SCOPED_TRACE(args[0]);
   test::TempDir dir;
-  const test::RunResult r = test::run_linkage({"solve", "--format", "latex"});
+  const test::RunResult r = test::run_linkage(args);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   test::write_text(dir / "solution.tex", r.out);
   test::write_text(dir / "doc.tex",
@@ -124,6 +125,17 @@ TEST(SolveOutput, LatexCompilesInAStandardDocument) {
   EXPECT_TRUE(std::filesystem::exists(dir / "doc.pdf"));
   const std::string log = test::read_text(dir / "doc.log");
   EXPECT_EQ(log.find("Overfull \\hbox"), std::string::npos) << "a line is wider than the page";
+}
+
+TEST(SolveOutput, LatexCompilesInAStandardDocument) {
+  if (!on_path("pdflatex")) GTEST_SKIP() << "pdflatex is not installed";
+  expect_latex_compiles({"solve", "--format", "latex"});
+  // `linkage modes` too: a loop's reduction and each body's motion, an unstable
+  // equilibrium's growth rates, and the check of --verify.
+  expect_latex_compiles({"modes", "--mechanism", "four-bar-spring", "--format", "latex"});
+  expect_latex_compiles(
+      {"modes", "--mechanism", "double-pendulum", "--set", "1.theta=1.4", "--set", "2.theta=1.7", "--format", "latex"});
+  expect_latex_compiles({"modes", "--mechanism", "spring-pendulum", "--verify", "--format", "latex"});
 }
 
 }  // namespace

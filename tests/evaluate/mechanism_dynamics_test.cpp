@@ -110,6 +110,54 @@ TEST(MechanismDynamics, RecursionEqualsTheCompiledRowsOnAChain) {
   expect_recursion_equals_rows({"chain", [&] { return read_mechanism(test::chain_toml(rods), "chain.toml"); }}, rng);
 }
 
+// Two rods welded square (welded_pendulum: rod 1 of l1, m1 from the pin O; rod 2 of l2, m2
+// welded at rod 1's tip at +pi/2) swing as one rigid L about O: I_O th'' = -g sum m x_c,
+// I_O = m1 l1^2/3 + m2 l2^2/12 + m2 (l1^2 + l2^2/4), x_c of rod 2 = l1 cos th - (l2/2) sin th.
+// Every case's sample (a dense solve) at any rate; Case 3's derivative by the structured
+// solve and by the O(n) recursion.
+TEST(JointWeld, LPendulumSwingsAsOneRigidBody) {
+  const sym::System system(built::welded_pendulum());
+  const double l1 = 0.3, m1 = 0.2, l2 = 0.2, m2 = 0.15, g = 9.81;
+  const double inertia = m1 * l1 * l1 / 3 + m2 * l2 * l2 / 12 + m2 * (l1 * l1 + l2 * l2 / 4);
+  for (const double theta : {-0.9, 0.4, 2.5})
+    for (CaseId id : kAllCases)
+      for (const bool structured : {true, false}) {
+        eval::MechanismDynamics dynamics(system, id);
+        dynamics.solve_by_structure(structured);
+        GiNaC::exmap state = system.initial_state();
+        for (auto& [symbol, value] : state) {
+          const std::string name = GiNaC::ex_to<GiNaC::symbol>(symbol).get_name();
+          if (name == "1.theta") value = theta;
+          if (name == "1.theta_dot") value = 1.7;
+        }
+        const Eigen::VectorXd y = dynamics.initial_state(state);
+        eval::MechanismSample s;
+        dynamics.sample(0, y, s, true);
+        const double expected =
+            -g * (m1 * l1 / 2 * std::cos(theta) + m2 * (l1 * std::cos(theta) - l2 / 2 * std::sin(theta))) / inertia;
+        EXPECT_NEAR(s.accelerations[2], expected, 1e-12) << "Case " << static_cast<int>(id) + 1 << " th " << theta;
+        EXPECT_NEAR(s.accelerations[5], expected, 1e-12) << "rod 2 turns with rod 1";
+        EXPECT_NEAR(s.pose[5] - s.pose[2], M_PI / 2, 1e-12);
+        if (id == CaseId::reduced) {  // y = (th1, th1'): the O(n) recursion unstructured
+          Eigen::VectorXd dydt;
+          ASSERT_TRUE(dynamics.derivative(0, y, dydt));
+          EXPECT_NEAR(dydt[1], expected, 1e-12) << "structured " << structured;
+        }
+        EXPECT_NEAR(s.rates[5], 1.7, 1e-12);
+        // The weld's force and moment on rod 1 (what rod 2 exerts): rod 2's Newton-Euler
+        // rows with its centre r2 = l1 e(th) + (l2/2) e(th + pi/2).
+        const double c = std::cos(theta), sn = std::sin(theta), w2 = 1.7 * 1.7;
+        const double r2x = l1 * c - l2 / 2 * sn, r2y = l1 * sn + l2 / 2 * c;
+        const double a2x = -expected * r2y - w2 * r2x, a2y = expected * r2x - w2 * r2y;
+        const double fx = -m2 * a2x, fy = -m2 * (a2y + g);
+        const double dx = l2 / 2 * sn, dy = -l2 / 2 * c;  // the corner A from rod 2's centre
+        const double moment = -m2 * l2 * l2 / 12 * expected - (dx * fy - dy * fx);
+        EXPECT_NEAR(s.force[3], fx, 1e-11);
+        EXPECT_NEAR(s.force[4], fy, 1e-11);
+        EXPECT_NEAR(s.force[5], moment, 1e-11);
+      }
+}
+
 // Each case's sample reports the same bodies' motion and joint forces at the same state.
 TEST(MechanismDynamics, CasesAgreeOnEveryBodyAndJoint) {
   const std::vector<built::Named> mechanisms = built::all_mechanisms();

@@ -14,29 +14,18 @@
 
 #include "core/error.hpp"
 #include "model/mechanism_toml.hpp"
+#include "support/closed_forms.hpp"
 #include "support/test_support.hpp"
 
 namespace linkage {
 namespace {
 
+using test::double_pendulum_w2;
+
 Mechanism with(const std::string& name, const std::vector<std::string>& settings) {
   Mechanism m = load_mechanism(name);
   for (const std::string& s : settings) apply_setting(m, s, "test");
   return m;
-}
-
-// The double pendulum's omega^2 from det(K - w M) = 0: M = [[(m1/3 + m2) l1^2, m2 l1 l2 / 2],
-// [m2 l1 l2 / 2, m2 l2^2 / 3]], K = s diag((m1/2 + m2) g l1, m2 g l2 / 2), s = 1 hanging and
-// -1 upright.
-std::array<double, 2> double_pendulum_w2(double l1, double m1, double l2, double m2, double g, double s) {
-  const double M11 = (m1 / 3 + m2) * l1 * l1, M12 = m2 * l1 * l2 / 2, M22 = m2 * l2 * l2 / 3;
-  const double K11 = s * (m1 / 2 + m2) * g * l1, K22 = s * m2 * g * l2 / 2;
-  const double a = M11 * M22 - M12 * M12, b = -(K11 * M22 + K22 * M11), c = K11 * K22;
-  const double root = std::sqrt(b * b - 4 * a * c);
-  // The root without cancellation, the other from the product c / a.
-  const double big = (-b - std::copysign(root, b)) / (2 * a);
-  const double small = c / (a * big);
-  return {std::min(big, small), std::max(big, small)};
 }
 
 TEST(Linearization, DoublePendulumHangingMatchesTheClosedForm) {
@@ -187,13 +176,12 @@ TEST(Linearization, FourBarOnASpringMatchesTheEnergyMethodOnTheCrankAngle) {
   EXPECT_NEAR(modes.modes[0].tree_shape[2], hand.w4, 1e-12);
 }
 
-// tests/data/mechanisms/coupled-pendulums.toml: three rods (m, L) from pins d apart, springs k at a below the
+// coupled-pendulums.toml: three rods (m, L) from pins d apart, springs k at a below the
 // pins, slack hanging: I th'' + (m g L / 2) th + k a^2 P th = 0 with I = m L^2 / 3 and P the
 // path graph's Laplacian, eigenvalues 0, 1, 3 with shapes (1, 1, 1), (1, 0, -1), (1, -2, 1).
 TEST(Linearization, CoupledPendulumsMatchThePathGraphsModes) {
   const double m = 0.2, L = 0.4, a = 0.25, k = 1.5, g = 9.81, I = m * L * L / 3;
-  const sym::System system(
-      load_mechanism(std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/coupled-pendulums.toml"));
+  const sym::System system(load_mechanism("coupled-pendulums"));
   const ModalAnalysis modes = modal_analysis(linearize(system));
   ASSERT_EQ(modes.modes.size(), 3U);
   const std::array<double, 3> laplacian{0, 1, 3};

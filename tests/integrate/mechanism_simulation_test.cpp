@@ -18,7 +18,7 @@ namespace linkage {
 namespace {
 
 const char* const kShipped[] = {"two-blocks",      "unequal-blocks", "double-pendulum", "triple-pendulum",
-                                "spring-pendulum", "slider-crank",   "four-bar"};
+                                "spring-pendulum", "slider-crank",   "four-bar",        "welded-pendulum"};
 
 struct RunResult {
   MechanismStats stats;

@@ -28,7 +28,7 @@ std::vector<ModeCheck> checks_of(const Mechanism& m, std::size_t expected_modes)
 TEST(ModeVerification, ShippedExamplesAgreeWithTheirMotion) {
   (void)checks_of(load_mechanism("double-pendulum"), 2);
   (void)checks_of(load_mechanism("triple-pendulum"), 3);
-  (void)checks_of(load_mechanism(std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/coupled-pendulums.toml"), 3);
+  (void)checks_of(load_mechanism("coupled-pendulums"), 3);
   (void)checks_of(load_mechanism("four-bar-spring"), 1);
   // Damped: the bounce's crossings come at w sqrt(1 - zeta^2); the free turn is not checked.
   const std::vector<ModeCheck> elastic = checks_of(load_mechanism("spring-pendulum"), 2);

@@ -138,9 +138,10 @@ TEST(MechanismToml, EveryShippedMechanismReads) {
     if (entry.path().extension() == ".toml") files.push_back(entry.path().stem().string());
   std::sort(files.begin(), files.end());
   EXPECT_EQ(names, files);
-  EXPECT_EQ(names, (std::vector<std::string>{"cart-pendulum", "double-pendulum", "engine", "four-bar",
-                                             "four-bar-driven", "four-bar-spring", "rolling-disc", "slider-crank",
-                                             "spring-pendulum", "triple-pendulum", "two-blocks", "unequal-blocks"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"cart-pendulum", "coupled-pendulums", "double-pendulum", "engine",
+                                             "four-bar", "four-bar-driven", "four-bar-spring", "rolling-disc",
+                                             "slider-crank", "spring-pendulum", "triple-pendulum", "two-blocks",
+                                             "unequal-blocks", "welded-pendulum"}));
   for (const std::string& name : names) {
     SCOPED_TRACE(name);
     const Mechanism built_in = load_mechanism(name);
@@ -176,6 +177,8 @@ TEST(MechanismToml, ShippedMechanismsHaveTheDocumentedStructure) {
                                                  {"slider-crank", 3, 4, 1, 1},
                                                  {"four-bar", 3, 4, 1, 1},
                                                  {"four-bar-spring", 3, 4, 1, 1},
+                                                 {"coupled-pendulums", 3, 3, 3, 0},
+                                                 {"welded-pendulum", 2, 2, 1, 0},
                                                  {"rolling-disc", 2, 2, 2, 0}}) {
     SCOPED_TRACE(e.name);
     const Mechanism m = load_mechanism(e.name);
@@ -724,9 +727,10 @@ TEST(MechanismToml, LoadByNameOrFile) {
     return std::string();
   };
   EXPECT_EQ(invalid("for-bar"),
-            "'for-bar' is not a shipped mechanism (did you mean 'four-bar'?); valid: cart-pendulum, double-pendulum, "
-            "engine, four-bar, four-bar-driven, four-bar-spring, rolling-disc, "
-            "slider-crank, spring-pendulum, triple-pendulum, two-blocks, unequal-blocks, or a file path (with '/' or "
+            "'for-bar' is not a shipped mechanism (did you mean 'four-bar'?); valid: cart-pendulum, coupled-pendulums, "
+            "double-pendulum, engine, four-bar, four-bar-driven, four-bar-spring, rolling-disc, "
+            "slider-crank, spring-pendulum, triple-pendulum, two-blocks, unequal-blocks, welded-pendulum, or a file "
+            "path (with '/' or "
             "ending in .toml)");
   EXPECT_FALSE(is_mechanism_file("four-bar"));
   EXPECT_TRUE(is_mechanism_file("my.toml"));

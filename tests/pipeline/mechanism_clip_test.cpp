@@ -561,14 +561,64 @@ TEST(MechanismForces, TheCentresOfMassSymbolSitsInTheLegendAtNoCostOfRoom) {
   EXPECT_FALSE(list.legend.com);
 }
 
+// Every `every`th frame of a 4 s clip at 10 frames a second of each mechanism in `names`
+// (with its [picture]'s title and trails, as `linkage render` draws it) at every size the
+// tool offers: --quality low, medium and high, and a lesson's draft (480x270), as
+// produce_mechanism_clip draws it. Frames of a 4k clip are a 1080p one's at twice the unit.
+void for_each_drawn_frame(const std::vector<std::string>& names, std::size_t every,
+                          const std::function<void(const LaidOutFrame&)>& check) {
+  const Theme theme = load_theme("light", {}, "theme");
+  for (const auto& [width, height] :
+       {std::pair{854, 480}, std::pair{1280, 720}, std::pair{1920, 1080}, std::pair{480, 270}}) {
+    for (const std::string& name : names) {
+      const sym::System system(load_mechanism(name));
+      const Picture& picture = system.mechanism().picture;
+      MechanismClip clip;
+      clip.settings.width = width;
+      clip.settings.height = height;
+      clip.settings.fps = 10;
+      clip.settings.duration = 4;
+      clip.settings.title = picture.title.empty() ? system.mechanism().title : picture.title;
+      clip.simulation.duration = 4;
+      clip.trails = picture.trails;
+      clip.theme = theme;
+      ClipResult result;
+      MechanismClipFrames frames(system, sym::checked_initial_state(system).state, clip, result);
+      const DrawStyle style = style_at(theme, width, height);
+      Frame frame(width, height);
+      for (std::size_t k = 0; k < static_cast<std::size_t>(frames.count()); k += every) {
+        SCOPED_TRACE(name + " at " + std::to_string(width) + "x" + std::to_string(height) + " frame " +
+                     std::to_string(k));
+        frames.draw(k, frame);
+        check({name, width, height, k, style, frames.camera(k), frames.list(), frames.layout()});
+      }
+    }
+  }
+}
+
 // Issue 23 D1: the legend over the triple pendulum's disc, a ladder sliding down a wall
-// and the four-bar's "A on 2"; D5: a legend stating "1 cm = ..." with no scale bar.
-TEST(MechanismForces, TheLegendAndItsScaleBarCoverNoBodyArrowOrJointAt720pAndAtQualityLow) {
+// and the four-bar's "A on 2"; D5: a legend stating "1 cm = ..." with no scale bar. Issue
+// 26: the coupled pendulums' swing covered every corner (the legend over a rod) and the
+// springs' labels sat on their coils. Over a clip's frames at every size.
+TEST(MechanismForces, TheLegendAndItsScaleBarCoverNothingDrawnAndLabelsKeepOffTheCoilsAtEverySize) {
   std::vector<std::string> names = shipped_mechanism_names();
   names.push_back(test_mechanism("ladder.toml"));
-  std::size_t legends = 0;
-  for_each_laid_out_frame(names, 3, [&](const LaidOutFrame& f) {
+  std::size_t legends = 0, coils = 0;
+  for_each_drawn_frame(names, 8, [&](const LaidOutFrame& f) {
     const ForceLayout& layout = f.layout;
+    const auto box = [&](const std::vector<Vec2>& world) {
+      Bounds b;
+      for (const Vec2& p : world) b.include(f.camera.to_pixels(p));
+      return Rect{b.min.x(), b.min.y(), b.max.x() - b.min.x(), b.max.y() - b.min.y()};
+    };
+    std::vector<Segment> springs;  // every spring's and dashpot's strokes, as drawn
+    for (const MechanismDrawList::Line& line : f.list.lines)
+      if (line.kind == MechanismDrawList::Line::Kind::spring || line.kind == MechanismDrawList::Line::Kind::dashpot)
+        for (std::size_t i = 1; i < line.points.size(); ++i)
+          springs.push_back({f.camera.to_pixels(line.points[i - 1]), f.camera.to_pixels(line.points[i])});
+    coils += springs.empty() ? 0 : 1;
+    for (const PlacedLabel& label : layout.labels) EXPECT_FALSE(touches(label.box, springs)) << label.text;
+    for (const Rect& name : layout.body_labels) EXPECT_FALSE(touches(name, springs)) << "a body's name";
     if (layout.legend.empty()) return;
     ++legends;
     // D5: the legend's "1 cm = ..." has a scale bar to measure with: the grid's spacing.
@@ -577,14 +627,11 @@ TEST(MechanismForces, TheLegendAndItsScaleBarCoverNoBodyArrowOrJointAt720pAndAtQ
     EXPECT_NEAR(layout.scale_px, spacing.metres() * f.camera.scale(), 1e-9);
     EXPECT_EQ(layout.scale_label, describe_length(spacing.mantissa, spacing.exponent));
     EXPECT_FALSE(overlaps(layout.legend, layout.scale_bar));
-    const auto box = [&](const std::vector<Vec2>& world) {
-      Bounds b;
-      for (const Vec2& p : world) b.include(f.camera.to_pixels(p));
-      return Rect{b.min.x(), b.min.y(), b.max.x() - b.min.x(), b.max.y() - b.min.y()};
-    };
     for (const Rect& legend : {layout.legend, layout.scale_bar}) {
       EXPECT_GE(legend.x, 0);
+      EXPECT_GE(legend.y, 0);
       EXPECT_LE(legend.x + legend.width, f.width);
+      EXPECT_LE(legend.y + legend.height, f.height);
       for (const MechanismDrawList::Outline& outline : f.list.outlines)
         EXPECT_FALSE(overlaps(legend, box(outline.points))) << "body " << outline.body;
       for (const Segment& arrow : layout.arrows)
@@ -593,9 +640,16 @@ TEST(MechanismForces, TheLegendAndItsScaleBarCoverNoBodyArrowOrJointAt720pAndAtQ
                                   std::fabs(arrow.b.x() - arrow.a.x()), std::fabs(arrow.b.y() - arrow.a.y())}));
       for (const MechanismDrawList::Marker& marker : f.list.markers)
         EXPECT_FALSE(overlaps(legend, box({marker.at}))) << "a joint";
+      for (const MechanismDrawList::Line& line : f.list.lines) {
+        const bool spring =
+            line.kind == MechanismDrawList::Line::Kind::spring || line.kind == MechanismDrawList::Line::Kind::dashpot;
+        EXPECT_FALSE(spring && overlaps(legend, box(line.points))) << "a spring";
+      }
+      for (const PlacedLabel& label : layout.labels) EXPECT_FALSE(overlaps(legend, label.box)) << label.text;
     }
   });
-  EXPECT_GT(legends, 100U);
+  EXPECT_GT(legends, 200U);
+  EXPECT_GT(coils, 20U);  // the spring-pendulum's, the four-bar-spring's and the coupled pendulums' frames
 }
 
 // Issue 23 D12: the cart-pendulum's "P on rod" labels, there at 720p, gone at --quality

@@ -32,6 +32,27 @@ TEST(Camera, FollowingMovesTheCentreKeepsTheScale) {
   EXPECT_EQ(moved.to_pixels({5.0, -20.0}), Vec2(320.0, 180.0));
 }
 
+TEST(Camera, AViewFittedBesideAKeptStripFillsTheRestOfTheFrame) {
+  // A 2 x 1 view in the right 600 of an 800 x 400 frame: 300 px per metre (the width
+  // decides), centred in that part; the left 200 px show what lies left of the view.
+  Bounds area;
+  area.include({200.0, 0.0});
+  area.include({800.0, 400.0});
+  const Camera camera({0.0, 0.0, 2.0, 1.0}, area, 800, 400);
+  EXPECT_DOUBLE_EQ(camera.scale(), 300.0);
+  EXPECT_NEAR((camera.to_pixels({1.0, 0.5}) - Vec2(500.0, 200.0)).norm(), 0, 1e-12);  // the centres
+  EXPECT_NEAR((camera.to_pixels({0.0, 0.0}) - Vec2(200.0, 350.0)).norm(), 0, 1e-12);
+  EXPECT_NEAR((camera.to_pixels({2.0, 1.0}) - Vec2(800.0, 50.0)).norm(), 0, 1e-12);
+  const View visible = camera.visible();
+  EXPECT_NEAR(visible.xmin, -2.0 / 3.0, 1e-12);
+  EXPECT_NEAR(visible.ymax, 1.0 + 1.0 / 6.0, 1e-12);
+  // Following moves what the area's middle shows, not the area.
+  const Camera moved = camera.centred_at({5.0, -20.0});
+  EXPECT_EQ(moved.scale(), camera.scale());
+  EXPECT_NEAR((moved.to_pixels({5.0, -20.0}) - Vec2(500.0, 200.0)).norm(), 0, 1e-12);
+  EXPECT_NEAR((moved.to_world(moved.to_pixels({4.0, -19.0})) - Vec2(4.0, -19.0)).norm(), 0, 1e-12);
+}
+
 TEST(Camera, ViewsAroundAPointAndOfBounds) {
   const View around = view_around({1.0, 2.0}, 0.5);
   EXPECT_DOUBLE_EQ(around.xmin, 0.5);

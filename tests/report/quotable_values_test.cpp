@@ -1,16 +1,20 @@
 // The values a lesson may quote about a mechanism: the names and numbers of `linkage solve
 // --mechanism --format json` and the parameters, inertias, centre of mass and each case's
 // condition number and residual besides; on two-blocks also by its [aliases], the
-// homework's names, which keep the spec's worked example and their relations.
+// homework's names, which keep the spec's worked example and their relations; the
+// modes' numbers, against the double pendulum's closed form.
 #include "report/quotable_values.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <numbers>
 
+#include "core/error.hpp"
 #include "model/mechanism_toml.hpp"
 #include "report/mechanism_solution.hpp"
+#include "support/closed_forms.hpp"
 #include "support/test_support.hpp"
 #include "symbolic/system.hpp"
 
@@ -92,6 +96,61 @@ TEST(QuotableValues, HoldTheHomeworksRelations) {
   EXPECT_GE(number(v, "cond1"), 1.0);
   EXPECT_GE(number(v, "cond3"), 1.0);
   EXPECT_LT(number(v, "residual1"), 1e-12);
+}
+
+TEST(QuotableValues, TheModesMatchTheDoublePendulumsClosedForm) {
+  Mechanism m = load_mechanism("double-pendulum");
+  for (const char* s : {"l1=0.7", "m1=1.3", "l2=0.4", "m2=0.55"}) apply_setting(m, s, "test");
+  const QuotableValues values(std::make_shared<const sym::System>(m));
+  EXPECT_EQ(number(values, "modes.count"), 2);
+  const auto w2 = test::double_pendulum_w2(0.7, 1.3, 0.4, 0.55, 9.81, 1);
+  for (int k = 1; k <= 2; ++k) {
+    const std::string mode = "mode" + std::to_string(k);
+    const double omega = std::sqrt(w2[static_cast<std::size_t>(k - 1)]);
+    EXPECT_NEAR(number(values, mode + ".omega") / omega, 1, 1e-10) << mode;
+    EXPECT_NEAR(number(values, mode + ".frequency_hz") * 2 * std::numbers::pi / omega, 1, 1e-10) << mode;
+    EXPECT_NEAR(number(values, mode + ".period") * omega / (2 * std::numbers::pi), 1, 1e-10) << mode;
+    EXPECT_EQ(number(values, mode + ".damping_ratio"), 0) << mode;
+    // The shape: rod 2 leads (1), rod 1 in phase in mode 1 and against it in mode 2; K v = w^2 M v's
+    // first row, (K11 - w^2 M11) v1 = w^2 M12 v2, gives v1.
+    const double M11 = (1.3 / 3 + 0.55) * 0.49, M12 = 0.55 * 0.7 * 0.4 / 2, K11 = (1.3 / 2 + 0.55) * 9.81 * 0.7;
+    const double w = omega * omega;
+    EXPECT_EQ(number(values, "2.theta_" + mode), 1) << mode;
+    EXPECT_NEAR(number(values, "1.theta_" + mode), w * M12 / (K11 - w * M11), 1e-10) << mode;
+  }
+  EXPECT_EQ(values.unit("mode2.frequency_hz"), "Hz");
+  EXPECT_EQ(values.unit("mode1.omega"), "rad/s");
+  EXPECT_EQ(values.unit("mode1.period"), "s");
+  EXPECT_EQ(values.unit("mode1.growth_rate"), "1/s");
+  EXPECT_FALSE(values.has("mode3.omega"));
+  // A hanging pendulum oscillates: no growth rate.
+  try {
+    (void)values.value("mode1.growth_rate");
+    ADD_FAILURE() << "mode1.growth_rate of an oscillation";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()).find("mode1.growth_rate: mode 1 of double-pendulum oscillates (omega 3.70069 "
+                                         "rad/s): it has no growth_rate; valid: mode1.omega"),
+              0U)
+        << e.what();
+  }
+}
+
+TEST(QuotableValues, AnUprightPendulumsModesGrowAndHaveNoFrequency) {
+  Mechanism m = load_mechanism("double-pendulum");
+  for (const char* s : {"1.theta=1.4", "2.theta=1.7"}) apply_setting(m, s, "test");
+  const QuotableValues values(std::make_shared<const sym::System>(m));
+  const auto w2 = test::double_pendulum_w2(0.3, 0.2, 0.25, 0.15, 9.81, -1);
+  // Upright the roots are negative: sigma = sqrt(-w^2), the faster first.
+  EXPECT_NEAR(number(values, "mode1.growth_rate") / std::sqrt(-w2[0]), 1, 1e-10);
+  for (const char* name : {"mode1.omega", "mode2.frequency_hz", "mode2.period", "mode1.damping_ratio"}) {
+    try {
+      (void)values.value(name);
+      ADD_FAILURE() << name << " of an unstable mode";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("is unstable (it grows at "), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(".growth_rate"), std::string::npos) << e.what();
+    }
+  }
 }
 
 }  // namespace

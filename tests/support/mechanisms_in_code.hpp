@@ -60,6 +60,14 @@ inline Joint pin(const std::string& name, const std::string& a, const std::strin
   return j;
 }
 
+inline Joint weld(const std::string& name, const std::string& a, const std::string& pa, const std::string& b,
+                  const std::string& pb, const std::string& angle) {
+  Joint j = pin(name, a, pa, b, pb);
+  j.type = JointType::weld;
+  j.angle = q(angle);
+  return j;
+}
+
 inline Spring spring(const std::string& name, const std::string& a, const std::string& b, const std::string& k,
                      const std::string& l0, const std::string& c) {
   auto ref = [](const std::string& text) {
@@ -286,6 +294,57 @@ inline Mechanism floating_pair() {
   return m;
 }
 
+/// Two rods welded square into an L at rod 1's tip A, swinging from the ground pin O
+/// (mechanisms/welded-pendulum.toml).
+inline Mechanism welded_pendulum() {
+  Mechanism m;
+  m.name = "welded-pendulum";
+  m.gravity = q("g");
+  m.parameters = {{"l1", 0.3, {}}, {"m1", 0.2, {}}, {"l2", 0.2, {}}, {"m2", 0.15, {}}, {"g", 9.81, {}}};
+  m.ground_points = {{"O", {q("0"), q("0")}, {}}};
+  m.bodies = {rod("1", "m1", "l1", {{"O", {"-l1/2", "0"}}, {"A", {"l1/2", "0"}}}),
+              rod("2", "m2", "l2", {{"A", {"-l2/2", "0"}}})};
+  m.joints = {pin("O", "ground", "O", "1", "O"), weld("A", "1", "A", "2", "A", "pi/2")};
+  m.initial = {{"1.theta", -0.9, {}}};
+  return m;
+}
+
+/// A weld inside a chain, written child first: rod 1 from a ground pin, plate 2 welded to
+/// its tip at pi/3 (bodies = [2, 1]) off the plate's centre, a disc pinned to the plate's
+/// corner; a spring from the ground and a torque on the plate that depends on t.
+inline Mechanism welded_chain() {
+  Mechanism m;
+  m.name = "welded-chain";
+  m.gravity = q("g");
+  m.parameters = {{"L", 0.4, {}},   {"m1", 0.3, {}}, {"m2", 0.5, {}}, {"a", 0.2, {}}, {"h", 0.1, {}},
+                  {"m3", 0.25, {}}, {"R", 0.05, {}}, {"k", 20, {}},   {"c", 0.4, {}}, {"g", 9.81, {}}};
+  m.ground_points = {{"O", {q("0"), q("0")}, {}}, {"S", {q("0.3"), q("0.2")}, {}}};
+  m.bodies = {rod("1", "m1", "L", {{"O", {"-L/2", "0"}}, {"A", {"L/2", "0"}}}),
+              rectangle("2", "m2", "a", "h", {{"A", {"-a/2", "h/4"}}, {"B", {"a/2", "-h/2"}}}),
+              disc("3", "m3", "R", {{"B", {"R", "0"}}})};
+  m.joints = {pin("O", "ground", "O", "1", "O"), weld("W", "2", "A", "1", "A", "pi/3"), pin("B", "2", "B", "3", "B")};
+  m.springs = {spring("k1", "ground.S", "2.B", "k", "0.2", "c")};
+  m.torques = {{"2", q("0.3*cos(2*t)"), {}}};
+  m.initial = {{"1.theta", -1.0, {}}, {"3.theta", 0.4, {}}};
+  return m;
+}
+
+/// A rectangle and a disc welded at -0.7 rad, floating free with a pin-free spring to the
+/// ground: a floating root with a welded child.
+inline Mechanism welded_floating() {
+  Mechanism m;
+  m.name = "welded-floating";
+  m.gravity = q("g");
+  m.parameters = {{"m1", 0.4, {}}, {"m2", 0.7, {}}, {"L", 0.5, {}}, {"w", 0.1, {}},
+                  {"R", 0.12, {}}, {"k", 30, {}},   {"c", 0.6, {}}, {"g", 9.81, {}}};
+  m.ground_points = {{"S", {q("0"), q("0.5")}, {}}};
+  m.bodies = {rectangle("1", "m1", "L", "w", {{"P", {"L/2", "0"}}, {"S", {"-L/2", "w/2"}}}),
+              disc("2", "m2", "R", {{"P", {"-R", "0"}}})};
+  m.joints = {weld("W", "1", "P", "2", "P", "-0.7")};
+  m.springs = {spring("k1", "ground.S", "1.S", "k", "0.3", "c")};
+  return m;
+}
+
 /// A free rod with a collar sliding along it on a spring-damper, no gravity: a floating
 /// base with a slider child.
 inline Mechanism floating_collar() {
@@ -371,6 +430,9 @@ inline std::vector<Named> all_mechanisms() {
           {"floating_collar", floating_collar},
           {"four_bar_loaded", four_bar_loaded},
           {"spring_pendulum", [] { return spring_pendulum(true); }},
+          {"welded_pendulum", welded_pendulum},
+          {"welded_chain", welded_chain},
+          {"welded_floating", welded_floating},
           {"rolling", rolling_wheel_and_plank}};
 }
 

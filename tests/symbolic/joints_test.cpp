@@ -45,6 +45,7 @@ JointEnds ends_of(JointType type, const Placement& a, const Placement& b) {
   ends.point_a = {ex(0.3), ex(-0.1)};
   ends.point_b = {ex(-0.2), ex(0.15)};
   if (joint_type_info(type).axis) ends.axis = {ex(2), ex(1)};
+  if (joint_type_info(type).angle) ends.angle = ex(0.6);
   if (joint_type_info(type).radius) ends.radius = ex(0.4);
   return ends;
 }
@@ -105,11 +106,20 @@ TEST_P(JointStagesTest, CoordinateInvertsThePlacement) {
   for (const bool child_is_b : {true, false}) {
     const JointEnds ends = placed(GetParam(), parent, child_is_b, c);
     const Placement& child = child_is_b ? ends.b : ends.a;
-    if (stages.own != nullptr) {
-      EXPECT_NEAR(evaluate(stages.coordinate(ends), at), 0.35, kExact) << "child_is_b " << child_is_b;
-    } else {  // revolute: the coordinate is the child's own angle
-      EXPECT_TRUE(stages.coordinate(ends).is_zero());
-      EXPECT_NEAR(evaluate(child.angle, at), 0.35, kExact);
+    switch (joint_type_info(GetParam()).motion) {
+      case JointMotion::prismatic:
+        EXPECT_NEAR(evaluate(stages.coordinate(ends), at), 0.35, kExact) << "child_is_b " << child_is_b;
+        break;
+      case JointMotion::revolute:  // the coordinate is the child's own angle
+      case JointMotion::rolling:
+        EXPECT_TRUE(stages.coordinate(ends).is_zero());
+        EXPECT_NEAR(evaluate(child.angle, at), 0.35, kExact);
+        break;
+      case JointMotion::fixed:  // none: the child is placed by the parent alone
+        EXPECT_TRUE(stages.coordinate(ends).is_zero());
+        EXPECT_FALSE(child.position.x.has(c) || child.position.y.has(c) || child.angle.has(c));
+        EXPECT_NEAR(evaluate(child.angle, at), 0.9 + (child_is_b ? 0.6 : -0.6), kExact) << child_is_b;
+        break;
     }
   }
 }
@@ -119,14 +129,15 @@ TEST_P(JointStagesTest, CoordinateInvertsThePlacement) {
 // ideal joint.
 TEST_P(JointStagesTest, ForceDoesNoWorkOnTheMotionItAllows) {
   const JointStages& stages = joint_stages(GetParam());
-  const symbol t("t"), f0("f0"), f1("f1");
+  const symbol t("t"), f0("f0"), f1("f1"), f2("f2");
   const Placement parent{{0.3 + 0.2 * GiNaC::sin(1.3 * t), -0.4 + 0.1 * GiNaC::cos(0.7 * t)},
                          0.2 + 0.5 * GiNaC::sin(0.9 * t)};
   const ex coordinate = 0.25 + 0.3 * GiNaC::sin(1.1 * t);
   for (const bool child_is_b : {true, false}) {
     const JointEnds ends = placed(GetParam(), parent, child_is_b, coordinate);
     JointSystem js;
-    js.unknowns = {f0, f1};
+    js.unknowns = {f0, f1, f2};
+    js.unknowns.resize(stages.rows(ends).size());
     stages.force(js, ends);
     // The velocity of body p's material point at world point r.
     auto velocity = [&](const Placement& p, const Vec2& r) {
@@ -140,7 +151,7 @@ TEST_P(JointStagesTest, ForceDoesNoWorkOnTheMotionItAllows) {
     const ex power = js.force.x * (va.x - vb.x) + js.force.y * (va.y - vb.y) +
                      js.moment * (GiNaC::diff(ends.a.angle, t) - GiNaC::diff(ends.b.angle, t));
     for (const double time : {0.1, 0.7, 1.9})
-      EXPECT_NEAR(evaluate(power, {{t, time}, {f0, 1.7}, {f1, -0.6}}), 0, kExact)
+      EXPECT_NEAR(evaluate(power, {{t, time}, {f0, 1.7}, {f1, -0.6}, {f2, 0.8}}), 0, kExact)
           << "t " << time << " child_is_b " << child_is_b;
   }
 }
@@ -279,6 +290,51 @@ TEST(JointSlider, ForceAcrossTheAxisAndAMoment) {
   EXPECT_TRUE(slider.moment_column);
   ASSERT_NE(slider.own, nullptr);
   EXPECT_STREQ(slider.own->base, "s");
+}
+
+// --- joint_weld.cpp -----------------------------------------------------------------
+
+TEST(JointWeld, DrawnAsABracket) { EXPECT_EQ(joint_stages(JointType::weld).drawing, JointDrawing::bracket); }
+
+TEST(JointWeld, RowsAreTheGapAndTheAngleItHolds) {
+  // a at (1, 2) turned a quarter: its point (0.3, -0.1) is at (1.1, 2.3); b at 0.6 more
+  // (the angle it holds): its point (-0.2, 0.15) is R(pi/2 + 0.6) (-0.2, 0.15) from b's centre.
+  const double th_b = M_PI / 2 + 0.6;
+  const double bx = -0.2 * std::cos(th_b) - 0.15 * std::sin(th_b), by = -0.2 * std::sin(th_b) + 0.15 * std::cos(th_b);
+  const Placement a{{1, 2}, GiNaC::Pi / 2};
+  const JointEnds ends = ends_of(JointType::weld, a, {{ex(1.1 - bx), ex(2.3 - by)}, GiNaC::Pi / 2 + 0.6});
+  const std::vector<ex> rows = joint_stages(JointType::weld).rows(ends);
+  ASSERT_EQ(rows.size(), 3U);
+  for (const ex& row : rows) EXPECT_NEAR(evaluate(row, {}), 0, kExact) << row;
+  // b turned 0.2 further: the angle row reads 0.2; b moved up by 0.5: the y row -0.5.
+  const JointEnds moved = ends_of(JointType::weld, a, {{ex(1.1 - bx), ex(2.3 - by + 0.5)}, GiNaC::Pi / 2 + 0.8});
+  EXPECT_NEAR(evaluate(joint_stages(JointType::weld).rows(moved)[2], {}), 0.2, kExact);
+  const JointEnds shifted = ends_of(JointType::weld, a, {{ex(1.1 - bx), ex(2.3 - by + 0.5)}, GiNaC::Pi / 2 + 0.6});
+  EXPECT_NEAR(evaluate(joint_stages(JointType::weld).rows(shifted)[1], {}), -0.5, kExact);
+}
+
+TEST(JointWeld, ForceAndMomentAreItsThreeUnknowns) {
+  const JointStages& weld = joint_stages(JointType::weld);
+  const std::vector<ForceUnknown> unknowns = weld.unknowns(joint_of(JointType::weld), true, "body 1");
+  ASSERT_EQ(unknowns.size(), 3U);
+  EXPECT_EQ(unknowns[0].key, "force_x");
+  EXPECT_EQ(unknowns[1].key, "force_y");
+  EXPECT_EQ(unknowns[2].key, "moment");
+  EXPECT_EQ(unknowns[2].unit, "N m");
+  EXPECT_EQ(unknowns[0].meaning, "weld force on body 1, x");
+  const symbol fx("fx"), fy("fy"), m("m");
+  JointSystem js;
+  js.unknowns = {fx, fy, m};
+  weld.force(js, ends_of(JointType::weld, {}, {}));
+  EXPECT_TRUE((js.force.x - fx).is_zero());
+  EXPECT_TRUE((js.force.y - fy).is_zero());
+  EXPECT_TRUE((js.moment - m).is_zero());
+  EXPECT_FALSE(weld.force_at_point_b);
+  EXPECT_TRUE(weld.moment_column);
+  EXPECT_EQ(weld.own, nullptr);
+  EXPECT_EQ(weld.driven, nullptr);
+  EXPECT_FALSE(drivable(JointType::weld));
+  EXPECT_EQ(joint_type_info(JointType::weld).rows, 3);
 }
 
 // --- joint_rolling.cpp ----------------------------------------------------------------
