@@ -133,6 +133,7 @@ std::string describe_mechanism(const Mechanism& m) {
     }
     std::string extra;
     if (joint.axis) extra += ", axis " + vector_text(*joint.axis);
+    if (joint.radius) extra += ", radius " + joint.radius->text;
     if (joint.stiffness) extra += ", stiffness " + joint.stiffness->text;
     if (joint.damping) extra += ", damping " + joint.damping->text;
     if (joint.rest_angle) extra += ", rest angle " + joint.rest_angle->text;

@@ -80,6 +80,13 @@ std::vector<MechanismColumn> mechanism_columns(const sym::System& system) {
     const sym::JointStages& stages = sym::joint_stages(joint.type);
     if (stages.moment_column)
       out.push_back({joint.name + ".moment", "N m", "moment of joint " + joint.name, Q::force, 3 * j + 2, false});
+    if (stages.unknown_columns) {
+      const std::vector<sym::ForceUnknown> unknowns = stages.unknowns(joint, false, on.substr(on.find(" on ") + 4));
+      for (std::size_t u = 0; u < 2 && u < unknowns.size(); ++u)
+        out.push_back({joint.name + "." + unknowns[u].key, unknowns[u].unit,
+                       unknowns[u].meaning + " (joint " + joint.name + ")", Q::force, 3 * m.joints.size() + 2 * j + u,
+                       false});
+    }
     out.push_back({joint.name + ".constraint_error", stages.constraint_unit,
                    "|C| of joint " + joint.name + "'s position constraint", Q::constraint, j, false});
     out.push_back({joint.name + ".constraint_velocity_error", stages.constraint_rate_unit,

@@ -441,6 +441,11 @@ void MechanismDynamics::compile_case() const {
     out.push_back(prepare_output(j.force.x));
     out.push_back(prepare_output(j.force.y));
     out.push_back(prepare_output(j.moment));
+    // Its first two unknowns as they stand, for a type that writes them (a rolling's N, f).
+    const bool written =
+        sym::joint_stages(system.mechanism().joints[static_cast<std::size_t>(j.index)].type).unknown_columns;
+    for (std::size_t u = 0; u < 2; ++u)
+      out.push_back(written && u < j.unknowns.size() ? prepare_output(j.unknowns[u]) : ex(0));
     // Each row on its own: |C| of an expanded C^2 would cancel to sqrt(round-off).
     for (std::size_t r = 0; r < 2; ++r) out.push_back(r < j.constraints.size() ? prepare(j.constraints[r]) : ex(0));
     for (std::size_t r = 0; r < 2; ++r) out.push_back(r < j.constraints.size() ? rate_of(j.constraints[r]) : ex(0));
@@ -901,12 +906,13 @@ void MechanismDynamics::sample(double t, const Eigen::VectorXd& y, MechanismSamp
                    values.begin() + static_cast<std::ptrdiff_t>(k + 3 * bodies_));
   k += 3 * bodies_;
   out.slider.assign(joints_, 0.0);
-  out.force.assign(3 * joints_, 0.0);
+  out.force.assign(5 * joints_, 0.0);
   out.constraint.assign(joints_, 0.0);
   out.constraint_rate.assign(joints_, 0.0);
   for (std::size_t j = 0; j < joints_; ++j) {
     out.slider[j] = values[k++];
     for (std::size_t c = 0; c < 3; ++c) out.force[3 * j + c] = values[k++];
+    for (std::size_t c = 0; c < 2; ++c) out.force[3 * joints_ + 2 * j + c] = values[k++];
     out.constraint[j] = std::hypot(values[k], values[k + 1]);
     out.constraint_rate[j] = std::hypot(values[k + 2], values[k + 3]);
     k += 4;

@@ -34,10 +34,12 @@ class TreeDynamics;
 
 /// What one sample of a run reports, for the columns of `simulate` and the drawing.
 struct MechanismSample {
-  std::vector<double> pose;             // per body: x, y, theta (0 for a point mass)
-  std::vector<double> rates;            // per body: x', y', theta'
-  std::vector<double> slider;           // per joint: s for a slider, 0 for a pin
-  std::vector<double> force;            // per joint: force x, force y, moment (the force bodies[1] exerts on bodies[0])
+  std::vector<double> pose;    // per body: x, y, theta (0 for a point mass)
+  std::vector<double> rates;   // per body: x', y', theta'
+  std::vector<double> slider;  // per joint: s for a slider, 0 for a pin
+  // Per joint: force x, force y, moment (the force bodies[1] exerts on bodies[0]); then per
+  // joint its first two force unknowns when its type writes them (a rolling's normal, friction), else 0.
+  std::vector<double> force;
   std::vector<double> constraint;       // per joint: |C| of its position rows, m (and rad)
   std::vector<double> constraint_rate;  // per joint: |C'|, m/s (and rad/s)
   double kinetic = 0, potential = 0;

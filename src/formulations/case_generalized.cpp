@@ -51,6 +51,7 @@ GeneralizedRows generalized_rows(const sym::System& system) {
     switch (joint_type_info(joint.type).motion) {
       case JointMotion::revolute:
       case JointMotion::fixed:
+      case JointMotion::rolling:
         break;
       case JointMotion::prismatic: {
         const sym::Vec2 axis = sym::joint_axis(system, joint);

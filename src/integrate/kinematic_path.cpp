@@ -233,7 +233,8 @@ std::string links_in_line(const sym::System& system, const std::vector<double>& 
       const Joint& joint = mechanism.joints[j];
       switch (joint_type_info(joint.type).motion) {
         case JointMotion::revolute:
-        case JointMotion::fixed: {  // a point the link is joined at
+        case JointMotion::fixed:  // a point the link is joined at
+        case JointMotion::rolling: {
           const sym::Vec2 p =
               system.point_position(static_cast<int>(b) - 1, joint.points[static_cast<std::size_t>(side)]);
           pins.emplace_back(sym::evaluate(p.x, at), sym::evaluate(p.y, at));

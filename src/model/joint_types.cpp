@@ -1,6 +1,7 @@
 #include "model/joint_types.hpp"
 
 #include <stdexcept>
+#include <string_view>
 #include <vector>
 
 namespace linkage {
@@ -8,7 +9,8 @@ namespace linkage {
 std::string joint_types_with(bool JointTypeInfo::*takes) {
   std::vector<std::string> names;
   for (const JointTypeInfo& info : kJointTypes)
-    if (info.*takes) names.push_back(std::string(info.name) + "s");
+    if (info.*takes)  // "pins", "rolling joints"
+      names.push_back(std::string(info.name) + (std::string_view(info.name).ends_with("ing") ? " joints" : "s"));
   std::string out;
   for (std::size_t i = 0; i < names.size(); ++i)
     out += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
@@ -32,6 +34,7 @@ bool has_own_coordinate(JointMotion motion) {
     case JointMotion::prismatic:
       return true;
     case JointMotion::fixed:
+    case JointMotion::rolling:
       return false;
   }
   throw std::logic_error("joint motion out of range");

@@ -10,7 +10,12 @@
 
 namespace linkage {
 
-enum class JointType { pin, slider, weld };
+enum class JointType {
+  pin,
+  slider,
+  weld,
+  rolling,
+};
 
 /// How the body a tree joint carries moves relative to its parent: which coordinate the
 /// joint adds to the spanning tree, and its joint model in the O(n) recursion.
@@ -18,6 +23,7 @@ enum class JointMotion {
   revolute,   // the child's own absolute angle theta (a point mass adds none)
   prismatic,  // the joint's own travel s along its axis; the child keeps its parent's angle
   fixed,      // none: the child is placed rigidly on its parent (a weld)
+  rolling,    // the child's own absolute angle theta, turning about the contact point
 };
 
 struct JointTypeInfo {
@@ -35,6 +41,7 @@ struct JointTypeInfo {
   const char* driver_column = "";  // "torque"
   int rows = 2;                    // its position rows, for the count of degrees of freedom
   bool angle = false;              // takes `angle`, the relative angle th_b - th_a it holds
+  bool radius = false;             // takes radius (a rolling's: default its rolling body's disc radius)
 };
 
 /// One row per JointType, in the enum's order (checked below; symbolic/joints.cpp checks
@@ -45,6 +52,8 @@ inline constexpr std::array kJointTypes{
     JointTypeInfo{JointType::slider, "slider", JointMotion::prismatic, "axis", false, true, true, "the travel s, m",
                   "m", "force"},
     JointTypeInfo{JointType::weld, "weld", JointMotion::fixed, "angle", false, false, true, "", "", "", 3, true},
+    JointTypeInfo{JointType::rolling, "rolling", JointMotion::rolling, "axis, radius", false, true, false, "", "", "",
+                  2, false, true},
 };
 
 static_assert(
@@ -70,7 +79,7 @@ inline constexpr std::array<const char*, kJointTypes.size()> kJointTypeNames = [
 /// "pin", "slider": the TOML `type`.
 [[nodiscard]] constexpr const char* joint_type_name(JointType type) { return joint_type_info(type).name; }
 
-/// The types whose row has `takes`, for messages: "pins", "pins and sliders".
+/// The types whose row has `takes`, for messages: "pins", "sliders and rolling joints".
 [[nodiscard]] std::string joint_types_with(bool JointTypeInfo::*takes);
 
 /// Whether a [[driver]] may drive a joint of this type (its row names a driver column).

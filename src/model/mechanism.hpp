@@ -62,7 +62,8 @@ struct Joint {
   // Pin only: a torsional spring-damper; torque on bodies[1] = -stiffness*(th_b - th_a -
   // rest_angle) - damping*(th_b' - th_a'), the opposite on bodies[0].
   std::optional<Quantity> stiffness, damping, rest_angle;
-  std::optional<Vector2Quantity> axis;  // slider only: direction in the frame of bodies[0]
+  std::optional<Vector2Quantity> axis;  // slider, rolling: direction in the frame of bodies[0]
+  std::optional<Quantity> radius;       // rolling only: the rolling radius (read: the disc's when not given)
   std::optional<Quantity> angle;        // weld only: the relative angle th_b - th_a it holds (absent: 0)
   SourcePos pos;
 };

@@ -37,7 +37,7 @@ constexpr MechanismKey kKeys[] = {
     {"top level", "ground", "table", "none", "the fixed frame's named points"},
     {"top level", "body", "list of tables", "(required)", "the moving bodies, at least one"},
     {"top level", "joint", "list of tables", "none",
-     "pins, sliders and welds between two bodies or a body and the ground"},
+     "pins, sliders, welds and rolling joints between two bodies or a body and the ground"},
     {"top level", "driver", "list of tables", "none", "motors: the prescribed motion of a pin or slider joint"},
     {"top level", "spring", "list of tables", "none", "linear spring-dampers between two points"},
     {"top level", "force", "list of tables", "none", "applied forces at points, world frame"},
@@ -67,14 +67,16 @@ constexpr MechanismKey kKeys[] = {
     {"[[body]]", "points", "table of [x, y]", "none",
      "named points in the body frame (origin at the centre of mass, x along the length), m"},
     {"[[joint]]", "name", "string", "(required)", "the joint's name: letters, digits, '_' or '-'"},
-    {"[[joint]]", "type", "string", "(required)", "pin, slider or weld"},
+    {"[[joint]]", "type", "string", "(required)", "pin, slider, weld or rolling"},
     {"[[joint]]", "bodies", "list of two strings", "(required)", "two different bodies, or a body and \"ground\""},
     {"[[joint]]", "points", "list of two strings", "(required)", "a named point of each body, in the order of bodies"},
     {"[[joint]]", "stiffness", kQuantity, "none", "pin only: torsional spring stiffness, N m/rad, >= 0"},
     {"[[joint]]", "damping", kQuantity, "none", "pin only: torsional damping, N m s/rad, >= 0"},
     {"[[joint]]", "rest_angle", kQuantity, "0", "pin only: relative angle at which the torsional spring is slack, rad"},
-    {"[[joint]]", "axis", kVector, "(required by slider)",
-     "slider only: the sliding direction in the frame of bodies[0], any length but not zero"},
+    {"[[joint]]", "axis", kVector, "(required by slider and rolling)",
+     "slider: the sliding direction; rolling: the line's direction (the disc on its side turned +90 degrees); in the "
+     "frame of bodies[0], any length but not zero"},
+    {"[[joint]]", "radius", kQuantity, "the rolling body's disc radius", "rolling only: the rolling radius, m, > 0"},
     {"[[joint]]", "angle", kQuantity, "0",
      "weld only: the relative angle th_b - th_a it holds, rad; neither body may be a point mass"},
     {"[[driver]]", "name", "string", "(required)",
@@ -604,6 +606,7 @@ class MechanismReader {
       if (!info.angle) r.fail("angle", "'angle' is for " + joint_types_with(&JointTypeInfo::angle) + " only; " + takes);
       joint.angle = quantity_at(r, "angle")->quantity;
     }
+    read_radius(r, joint, takes);
     if (!info.axis && r.has("axis"))
       r.fail("axis", "'axis' is for " + joint_types_with(&JointTypeInfo::axis) + " only; " + takes);
     if (!info.axis) return;
@@ -620,6 +623,28 @@ class MechanismReader {
     if (is_zero(joint.axis->x) && is_zero(joint.axis->y))
       fail(joint.axis->x.pos,
            r.context() + ": 'axis' = [0, 0] has no direction; valid: a nonzero vector such as [1, 0]");
+  }
+
+  // A rolling joint's radius: given, or its rolling body's (bodies[1]) disc radius.
+  void read_radius(const TableReader& r, Joint& joint, const std::string& takes) const {
+    if (!joint_type_info(joint.type).radius) {
+      if (r.has("radius"))
+        r.fail("radius", "'radius' is for " + joint_types_with(&JointTypeInfo::radius) + " only; " + takes);
+      return;
+    }
+    if (const auto read = quantity_at(r, "radius")) {
+      require_bound(*read, "radius", r.context(), true, "m");
+      joint.radius = read->quantity;
+      return;
+    }
+    const Body* rolling = m_.find_body(joint.bodies[1]);
+    if (rolling != nullptr && rolling->shape == Shape::disc && rolling->radius) {
+      joint.radius = rolling->radius;
+      return;
+    }
+    fail(joint.pos, r.context() + ": the rolling body " + q(joint.bodies[1]) +
+                        " is not a disc and the joint gives no 'radius'; valid: a 'radius' > 0 (m), or a disc as "
+                        "bodies[1]");
   }
 
   // [[driver]]: a joint whose type's row is drivable, at most one driver each, a name no

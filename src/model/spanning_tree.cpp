@@ -77,6 +77,7 @@ SpanningTree spanning_tree(const Mechanism& mechanism) {
     const Joint& joint = mechanism.joints[static_cast<std::size_t>(node.joint)];
     switch (joint_type_info(joint.type).motion) {
       case JointMotion::revolute:
+      case JointMotion::rolling:
         if (rotates) tree.coordinates.push_back({CoordinateKind::theta, index, -1, body.name + ".theta"});
         break;
       case JointMotion::prismatic:

@@ -2,9 +2,9 @@
 // The spanning tree of a mechanism and its generalized coordinates (the contract in
 // mechanisms/README.md): grown breadth first from the ground, taking joints in file
 // order; a body the ground does not reach starts its own tree as a floating base (x, y,
-// theta; a point mass has no theta), the first such body in file order. A body reached through a pin adds its
-// absolute angle theta, one reached through a slider adds the slider's s. A joint outside
-// the tree closes a loop.
+// theta; a point mass has no theta), the first such body in file order. A body reached through a pin or a rolling joint
+// adds its absolute angle theta, one reached through a slider adds the slider's s. A joint outside the tree closes a
+// loop.
 #include <string>
 #include <vector>
 
@@ -47,7 +47,7 @@ struct SpanningTree {
 [[nodiscard]] bool body_rotates(const Body& body);
 
 /// Degrees of freedom when no constraint is redundant: 3 per body (2 per point mass),
-/// minus 2 per pin or slider, minus 1 per driver.
+/// minus each joint's rows (its type's `rows`), minus 1 per driver.
 [[nodiscard]] int degrees_of_freedom(const Mechanism& mechanism);
 
 }  // namespace linkage

@@ -37,6 +37,7 @@ void paint_lines(cairo_t* cr, const DrawStyle& style, const Camera& camera, cons
         cairo_set_line_width(cr, style.trail_width());
         break;
       case List::Line::Kind::rail:
+      case List::Line::Kind::surface:
         set_colour(cr, theme.text_muted);
         cairo_set_line_width(cr, 1.5 * style.edge_width());
         break;
@@ -65,6 +66,20 @@ void paint_lines(cairo_t* cr, const DrawStyle& style, const Camera& camera, cons
     }
     path_through(cr, camera, line.points, false);
     cairo_stroke(cr);
+    if (kind == List::Line::Kind::surface && line.points.size() == 2) {
+      // Hatching on the right of the line's direction, under the surface (pixels flip y).
+      const Vec2 a = camera.to_pixels(line.points[0]), b = camera.to_pixels(line.points[1]);
+      const double length = (b - a).norm(), hatch = 6 * style.u;
+      if (!(length > 0)) continue;
+      const Vec2 along = (b - a) / length, under(-along.y(), along.x());
+      for (double x = 0; x <= length; x += hatch) {
+        const Vec2 p = a + x * along;
+        cairo_move_to(cr, p.x(), p.y());
+        cairo_line_to(cr, p.x() - hatch * along.x() + hatch * under.x(), p.y() - hatch * along.y() + hatch * under.y());
+      }
+      cairo_set_line_width(cr, 0.7 * style.edge_width());
+      cairo_stroke(cr);
+    }
   }
 }
 
@@ -472,6 +487,7 @@ ForceLayout paint_mechanism_frame(cairo_t* cr, const DrawStyle& style, const Cam
   cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
   paint_lines(cr, style, camera, list, List::Line::Kind::trail);
   paint_lines(cr, style, camera, list, List::Line::Kind::rail);
+  paint_lines(cr, style, camera, list, List::Line::Kind::surface);
   paint_lines(cr, style, camera, list, List::Line::Kind::spring);
   paint_lines(cr, style, camera, list, List::Line::Kind::dashpot);
   paint_ghosts(cr, style, camera, list, false);

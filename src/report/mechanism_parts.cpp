@@ -50,6 +50,7 @@ std::vector<PinInertia> pin_inertias(const sym::System& system) {
           break;
         case JointMotion::prismatic:
         case JointMotion::fixed:
+        case JointMotion::rolling:  // it turns about its contact point, not a point of the body
           continue;
       }
       for (std::size_t end = 0; end < 2; ++end) {

@@ -166,6 +166,7 @@ MechanismGeometry mechanism_geometry(const sym::System& system) {
                       number(system, system.quantity(j.axis->y, false))};
       if (axis.norm() > 0) shape.axis = axis.normalized();
     }
+    if (j.radius) shape.radius = number(system, system.quantity(*j.radius, false));
     g.joints.push_back(std::move(shape));
   }
   for (const Driver& d : m.drivers)
@@ -407,6 +408,7 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
         case sym::JointDrawing::bracket:
           continue;
         case sym::JointDrawing::rail:
+        case sym::JointDrawing::rolling:
           break;
       }
       const Vec2 p0 = world_point(s.pose, joint.points[0]), p1 = world_point(s.pose, joint.points[1]);
@@ -898,6 +900,7 @@ void MechanismScene::add_motors(std::size_t k, MechanismDrawList& out) const {
         break;
       }
       case JointMotion::fixed:  // not drivable
+      case JointMotion::rolling:
         break;
     }
   }
@@ -1014,6 +1017,7 @@ void MechanismScene::frame(std::size_t k, MechanismDrawList& out) const {
   for (std::size_t j = 0; j < geometry_.joints.size(); ++j) {
     const MechanismGeometry::JointShape& joint = geometry_.joints[j];
     const Vec2 p0 = world_point(pose, joint.points[0]), p1 = world_point(pose, joint.points[1]);
+    std::array<Vec2, 2> force_at{p0, p1};
     switch (sym::joint_stages(joint.type).drawing) {  // the drawing of each joint type
       case sym::JointDrawing::marker:
         out.markers.push_back({MechanismDrawList::Marker::Kind::pin, p0});
@@ -1028,6 +1032,21 @@ void MechanismScene::frame(std::size_t k, MechanismDrawList& out) const {
                              {p0 + (rail_span_[j][0] - margin) * axis, p0 + (rail_span_[j][1] + margin) * axis}});
         out.markers.push_back({MechanismDrawList::Marker::Kind::guide, p1, axis});
         if (shown_.has(Element::labels) && !free_body_) out.joint_labels.push_back({p1, joint.name});
+        break;
+      }
+      case sym::JointDrawing::rolling: {  // the line as a surface under the contact point K
+        const double theta0 =
+            joint.points[0].body < 0 ? 0 : pose[3 * static_cast<std::size_t>(joint.points[0].body) + 2];
+        const Vec2 axis = rotated(theta0, joint.axis), normal(-axis.y(), axis.x());
+        const Vec2 contact = p1 - joint.radius * normal;
+        const double margin = 0.1 * extent_ + joint.radius;
+        out.lines.push_back({MechanismDrawList::Line::Kind::surface,
+                             {p0 + (rail_span_[j][0] - margin) * axis, p0 + (rail_span_[j][1] + margin) * axis},
+                             {},
+                             joint.points[0].body});
+        out.markers.push_back({MechanismDrawList::Marker::Kind::pin, contact, axis, joint.points[1].body});
+        if (shown_.has(Element::labels) && !free_body_) out.joint_labels.push_back({contact, joint.name});
+        force_at = {contact, contact};
         break;
       }
       case sym::JointDrawing::bracket: {
@@ -1056,7 +1075,7 @@ void MechanismScene::frame(std::size_t k, MechanismDrawList& out) const {
       // Named by its alias when it has one ("F on 1", "−F on 2"), else by its joint.
       const std::string by = joint.force_name.empty() ? joint.name : (side == 0 ? "" : "\u2212") + joint.force_name;
       out.arrows.push_back(force_arrow(
-          MechanismDrawList::Arrow::Kind::joint, side == 0 ? p0 : p1, side == 0 ? force : Vec2(-force),
+          MechanismDrawList::Arrow::Kind::joint, force_at[side], side == 0 ? force : Vec2(-force),
           shown_.has(Element::labels) ? by + " on " + geometry_.bodies[static_cast<std::size_t>(body)].name : ""));
       out.arrows.back().body = body;
     }

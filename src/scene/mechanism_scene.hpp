@@ -37,7 +37,8 @@ struct MechanismGeometry {
     std::string name;
     JointType type = JointType::pin;
     std::array<BodyPoint, 2> points;  // the joint's point on bodies[0] and bodies[1]
-    Vec2 axis = Vec2::UnitX();        // slider: unit, in the frame of bodies[0]
+    Vec2 axis = Vec2::UnitX();        // slider, rolling: unit, in the frame of bodies[0]
+    double radius = 0;                // rolling: m
     /// The force's own name when the file's [aliases] give `<joint>.force_x` as
     /// `<name>_x` (two-blocks: P.force_x = F_x, so "F on 1", "−F on 2"); else empty.
     std::string force_name{};
@@ -119,7 +120,7 @@ struct MechanismDrawList {
     Shape shape = Shape::point;
   };
   struct Line {
-    enum class Kind { spin, rail, spring, dashpot, trail } kind = Kind::rail;
+    enum class Kind { spin, rail, spring, dashpot, trail, surface } kind = Kind::rail;  // surface: hatched on its right
     std::vector<Vec2> points;
     std::vector<double> fade{};  // a trail's, per point: 1 now, falling to 0 with age
     int body = -1;               // the body it moves with in the free-body view (-1: the world)
@@ -301,7 +302,7 @@ class MechanismScene {
   double reach_ = 0, view_reach_ = 0, force_scale_ = 0, applied_scale_ = 0, arrow_cap_ = 0, torque_scale_ = 0,
          extent_ = 1, shortest_ = 0, stretched_ = 0;
   MechanismDrawList::Legend legend_;
-  std::vector<std::array<double, 2>> rail_span_;     // per joint: slider travel range along the axis
+  std::vector<std::array<double, 2>> rail_span_;     // per joint: slider (rolling contact) travel range along the axis
   std::vector<std::array<double, 2>> spring_span_;   // per spring: shortest and longest length
   std::vector<std::vector<Vec2>> applied_;           // per sample, per applied force: N
   std::vector<std::vector<double>> torque_;          // per sample, per applied torque: N m

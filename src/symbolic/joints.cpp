@@ -11,6 +11,7 @@ Vec2 world_point(const Placement& body, const Vec2& local) { return body.positio
 extern const JointStages kPinJoint;
 extern const JointStages kSliderJoint;
 extern const JointStages kWeldJoint;
+extern const JointStages kRollingJoint;
 
 namespace {
 
@@ -24,6 +25,8 @@ constexpr const JointStages* registered(JointType type) {
       return &kSliderJoint;
     case JointType::weld:
       return &kWeldJoint;
+    case JointType::rolling:
+      return &kRollingJoint;
   }
   return nullptr;
 }
@@ -58,6 +61,11 @@ GiNaC::ex joint_angle(const System& system, const Joint& joint) {
   return system.quantity(*joint.angle, false);
 }
 
+GiNaC::ex joint_radius(const System& system, const Joint& joint) {
+  if (!joint_type_info(joint.type).radius || !joint.radius) return 0;
+  return system.quantity(*joint.radius, false);
+}
+
 JointEnds maximal_ends(const System& system, int joint) {
   const Joint& j = system.mechanism().joints.at(static_cast<std::size_t>(joint));
   auto place = [&](const std::string& name, const std::string& point, Placement& placement, Vec2& local) {
@@ -76,6 +84,7 @@ JointEnds maximal_ends(const System& system, int joint) {
   place(j.bodies[1], j.points[1], ends.b, ends.point_b);
   ends.axis = joint_axis(system, j);
   ends.angle = joint_angle(system, j);
+  ends.radius = joint_radius(system, j);
   return ends;
 }
 

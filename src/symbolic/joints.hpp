@@ -1,5 +1,5 @@
 #pragma once
-// The joint types, one file each (joint_pin.cpp, joint_slider.cpp), every one filling the
+// The joint types, one file each (joint_pin.cpp, joint_slider.cpp, joint_rolling.cpp), every one filling the
 // same stages (JointStages), registered in joints.cpp (a declaration and a case each):
 //   rows     its position constraint rows Phi = 0 in its bodies' placements; the velocity
 //            and acceleration rows are their time derivatives (System::time_derivative),
@@ -34,7 +34,8 @@ struct Placement {
 struct JointEnds {
   Placement a, b;
   Vec2 point_a, point_b;  // body frames
-  Vec2 axis;              // slider: direction in the frame of a (any length)
+  Vec2 axis;              // slider, rolling: direction in the frame of a (any length)
+  GiNaC::ex radius = 0;   // rolling: the rolling radius
   GiNaC::ex angle = 0;    // weld: the relative angle th_b - th_a it holds
 };
 
@@ -60,6 +61,7 @@ struct OwnCoordinate {
 /// How the scene draws a joint of the type (scene/mechanism_scene.cpp switches on it).
 enum class JointDrawing {
   marker,   // a pin's circle at its point on bodies[0]
+  rolling,  // the line as a hatched surface of bodies[0], the contact point on bodies[1]'s circle
   rail,     // a rail along the axis through bodies[0]'s point over the travel, a guide at bodies[1]'s
   bracket,  // an L-shaped plate over the point, a leg along each body
 };
@@ -97,6 +99,9 @@ struct JointStages {
   /// `driver_column` (model/joint_types.hpp).
   const char* driver_letter;
   const char* driver_unit;
+  /// columns: whether each force unknown is written as `JOINT.<key>` too (a rolling
+  /// joint's normal and friction).
+  bool unknown_columns = false;
 };
 
 /// Every joint type's stages, from the registration in joints.cpp.
@@ -111,5 +116,8 @@ struct JointStages {
 
 /// The relative angle a weld holds, as parsed (0 when absent or its type takes none).
 [[nodiscard]] GiNaC::ex joint_angle(const System& system, const Joint& joint);
+
+/// The joint's radius as parsed (zero when its type takes none).
+[[nodiscard]] GiNaC::ex joint_radius(const System& system, const Joint& joint);
 
 }  // namespace linkage::sym

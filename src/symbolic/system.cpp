@@ -530,6 +530,7 @@ void System::add_generalized() {
     (child_is_b ? ends.a : ends.b) = parent;
     ends.axis = joint_axis(*this, joint);
     ends.angle = joint_angle(*this, joint);
+    ends.radius = joint_radius(*this, joint);
     const JointStages& stages = joint_stages(joint.type);
     ex coordinate = bs.rotates ? ex(bs.theta.q) : ex(0);
     if (stages.own != nullptr) {  // the joint's own coordinate: s

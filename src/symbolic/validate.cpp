@@ -101,6 +101,13 @@ void validate_quantities(const System& system) {
         throw Error::input(where(j.axis->x.pos) + "the axis of " + type + " " + j.name +
                            " is zero at the parameters; valid: a direction of non-zero length");
     }
+    if (info.radius && j.radius) {
+      require_positive(system, *j.radius, "radius of " + type + " joint " + j.name);
+      const Body* rolling = m.find_body(j.bodies[1]);
+      if (rolling != nullptr && !body_rotates(*rolling))
+        throw Error::input(where(j.pos) + type + " joint " + j.name + " rolls the point mass '" + j.bodies[1] +
+                           "', which has no angle; valid: a rolling body with a shape or an inertia");
+    }
     if (info.keeps_angle)
       for (const std::string& body : j.bodies) {
         const Body* b = m.find_body(body);

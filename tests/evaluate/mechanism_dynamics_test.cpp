@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <random>
 
+#include "evaluate/tree_dynamics.hpp"
 #include "model/mechanism_toml.hpp"
 #include "support/long_chain.hpp"
 #include "support/mechanisms_in_code.hpp"
@@ -40,6 +41,14 @@ void expect_recursion_equals_rows(const built::Named& named, std::mt19937& rng) 
 TEST(MechanismDynamics, RecursionEqualsTheCompiledRows) {
   std::mt19937 rng(13);
   for (const built::Named& named : built::all_mechanisms()) expect_recursion_equals_rows(named, rng);
+}
+
+// A rolling joint in the tree turns its child about the moving contact point, which the
+// recursion does not model: it declines, and Case 3 solves the compiled rows (checked
+// against Case 2 above, against the closed forms in tests/cli/simulate_rolling_test.cpp).
+TEST(MechanismDynamics, RecursionDeclinesARollingJoint) {
+  EXPECT_FALSE(eval::TreeDynamics::applies(sym::System(built::rolling_wheel_and_plank())));
+  EXPECT_TRUE(eval::TreeDynamics::applies(sym::System(built::double_pendulum())));
 }
 
 /// A tree whose bodies have several children: an arm pinned to the ground off its centre,

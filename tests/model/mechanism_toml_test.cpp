@@ -138,10 +138,10 @@ TEST(MechanismToml, EveryShippedMechanismReads) {
     if (entry.path().extension() == ".toml") files.push_back(entry.path().stem().string());
   std::sort(files.begin(), files.end());
   EXPECT_EQ(names, files);
-  EXPECT_EQ(names,
-            (std::vector<std::string>{"cart-pendulum", "coupled-pendulums", "double-pendulum", "engine", "four-bar",
-                                      "four-bar-driven", "four-bar-spring", "slider-crank", "spring-pendulum",
-                                      "triple-pendulum", "two-blocks", "unequal-blocks", "welded-pendulum"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"cart-pendulum", "coupled-pendulums", "double-pendulum", "engine",
+                                             "four-bar", "four-bar-driven", "four-bar-spring", "rolling-disc",
+                                             "slider-crank", "spring-pendulum", "triple-pendulum", "two-blocks",
+                                             "unequal-blocks", "welded-pendulum"}));
   for (const std::string& name : names) {
     SCOPED_TRACE(name);
     const Mechanism built_in = load_mechanism(name);
@@ -178,7 +178,8 @@ TEST(MechanismToml, ShippedMechanismsHaveTheDocumentedStructure) {
                                                  {"four-bar", 3, 4, 1, 1},
                                                  {"four-bar-spring", 3, 4, 1, 1},
                                                  {"coupled-pendulums", 3, 3, 3, 0},
-                                                 {"welded-pendulum", 2, 2, 1, 0}}) {
+                                                 {"welded-pendulum", 2, 2, 1, 0},
+                                                 {"rolling-disc", 2, 2, 2, 0}}) {
     SCOPED_TRACE(e.name);
     const Mechanism m = load_mechanism(e.name);
     EXPECT_EQ(m.bodies.size(), e.bodies);
@@ -481,7 +482,8 @@ TEST(MechanismToml, DuplicateNames) {
 // their keys: every type that does not take a key is told which types do.
 TEST(MechanismToml, JointKeyMessagesNameTheTypesThatTakeThem) {
   EXPECT_EQ(joint_types_with(&JointTypeInfo::torsional_spring), "pins");
-  EXPECT_EQ(joint_types_with(&JointTypeInfo::axis), "sliders");
+  EXPECT_EQ(joint_types_with(&JointTypeInfo::axis), "sliders and rolling joints");
+  EXPECT_EQ(joint_types_with(&JointTypeInfo::radius), "rolling joints");
   int checked = 0;
   for (const JointTypeInfo& info : kJointTypes) {
     const std::string type = std::string("type = \"") + info.name + "\"\naxis = [1, 0]\n";
@@ -501,6 +503,24 @@ TEST(MechanismToml, JointKeyMessagesNameTheTypesThatTakeThem) {
   EXPECT_GT(checked, 0);
 }
 
+// A rolling joint's radius is its own, or by default its rolling body's disc radius (the
+// quantity with its position); the line's axis is required as a slider's; two rows.
+TEST(MechanismToml, RollingJointRadius) {
+  const std::string head =
+      "[parameters]\nr = 0.2\n[ground]\npoints = { O = [0, 0] }\n[[body]]\nname = \"w\"\nshape = \"disc\"\n"
+      "mass = 1\nradius = \"r\"\npoints = { C = [0, 0] }\n[[joint]]\nname = \"R\"\ntype = \"rolling\"\n"
+      "bodies = [\"ground\", \"w\"]\npoints = [\"O\", \"C\"]\n";
+  const std::string initial = "[initial]\nw = { theta = 0 }\n";
+  const Mechanism by_default = read_mechanism(head + "axis = [1, 0]\n" + initial, "m.toml");
+  ASSERT_TRUE(by_default.joints[0].radius.has_value());
+  EXPECT_EQ(by_default.joints[0].radius->text, "r");
+  EXPECT_EQ(by_default.joints[0].radius->pos.line, 9);
+  EXPECT_EQ(degrees_of_freedom(by_default), 1);
+  const Mechanism own = read_mechanism(head + "axis = [1, 0]\nradius = \"r/2\"\n" + initial, "m.toml");
+  EXPECT_EQ(own.joints[0].radius->text, "r/2");
+  expect_error(head + initial, "11:1", {"joint 'R': a rolling needs 'axis'"});
+}
+
 TEST(MechanismToml, Joints) {
   expect_error(pendulum_with(18, "bodies = [\"ground\", \"2\"]"), "18:21",
                {"joint 'O': '2' is not a body; valid: ground, 1"});
@@ -512,8 +532,9 @@ TEST(MechanismToml, Joints) {
                {"joint 'O' joins '1' to itself; give two different bodies"});
   expect_error(pendulum_with(17, "type = \"hinge\""), "17:8",
                {"joint 'O': 'type' = 'hinge' is not valid; valid: pin, slider"});
-  expect_error(pendulum_with(19, "points = [\"O\", \"O\"]\naxis = [1, 0]"), "20:8",
-               {"joint 'O': 'axis' is for sliders only; a pin takes: stiffness, damping, rest_angle"});
+  expect_error(
+      pendulum_with(19, "points = [\"O\", \"O\"]\naxis = [1, 0]"), "20:8",
+      {"joint 'O': 'axis' is for sliders and rolling joints only; a pin takes: stiffness, damping, rest_angle"});
   expect_error(pendulum_with(17, "type = \"slider\""), "15:1",
                {"joint 'O': a slider needs 'axis', its direction [x, y] in the frame of 'ground'"});
   expect_error(pendulum_with(17, "type = \"slider\"\naxis = [1, 0]\nstiffness = 2"), "19:13",
@@ -707,7 +728,7 @@ TEST(MechanismToml, LoadByNameOrFile) {
   };
   EXPECT_EQ(invalid("for-bar"),
             "'for-bar' is not a shipped mechanism (did you mean 'four-bar'?); valid: cart-pendulum, coupled-pendulums, "
-            "double-pendulum, engine, four-bar, four-bar-driven, four-bar-spring, "
+            "double-pendulum, engine, four-bar, four-bar-driven, four-bar-spring, rolling-disc, "
             "slider-crank, spring-pendulum, triple-pendulum, two-blocks, unequal-blocks, welded-pendulum, or a file "
             "path (with '/' or "
             "ending in .toml)");

@@ -1183,6 +1183,38 @@ TEST(MechanismClip, ATorsionalSpringIsASpiralAboutItsPinThatTurnsWithTheBody) {
   EXPECT_NEAR(std::remainder(outer_angles[1] - outer_angles[0] - rocker, 2 * std::numbers::pi), 0, 1e-9);
 }
 
+// Issue 27: a rolling joint (rolling-disc's R1) is its line drawn as a surface along the
+// axis, the disc's centre at the radius over it, and the contact point marked on it under
+// the centre, in every frame.
+TEST(MechanismClip, ARollingJointIsASurfaceWithTheContactPointMarked) {
+  const sym::System system(load_mechanism("rolling-disc"));
+  const MechanismMotion motion = clip_motion(system, 0.5, 10);
+  const MechanismGeometry geometry = mechanism_geometry(system);
+  const MechanismScene scene(geometry, motion, {}, 2.0);
+  const double alpha = 0.03, r = 0.3;
+  const Vec2 u(std::cos(alpha), -std::sin(alpha)), n(std::sin(alpha), std::cos(alpha));
+  for (const std::size_t k : {std::size_t{0}, motion.samples.size() - 1}) {
+    MechanismDrawList list;
+    scene.frame(k, list);
+    const Vec2 centre(motion.samples[k].pose[0], motion.samples[k].pose[1]), contact = centre - r * n;
+    const auto surface = std::find_if(list.lines.begin(), list.lines.end(), [&](const MechanismDrawList::Line& l) {
+      return l.kind == MechanismDrawList::Line::Kind::surface && std::fabs((l.points.front()).dot(n)) < 1e-12;
+    });
+    ASSERT_NE(surface, list.lines.end()) << "frame " << k;
+    ASSERT_EQ(surface->points.size(), 2U);
+    const Vec2 along = surface->points[1] - surface->points[0];
+    EXPECT_NEAR(along.normalized().dot(u), 1, 1e-12);
+    const double at = contact.dot(u);  // the contact point lies within the surface drawn
+    EXPECT_LT(surface->points[0].dot(u), at);
+    EXPECT_GT(surface->points[1].dot(u), at);
+    EXPECT_TRUE(std::any_of(list.markers.begin(), list.markers.end(),
+                            [&](const MechanismDrawList::Marker& m) {
+                              return m.kind == MechanismDrawList::Marker::Kind::pin && (m.at - contact).norm() < 1e-12;
+                            }))
+        << "frame " << k;
+  }
+}
+
 // Issue 23: every picture option on every shipped mechanism gives a still (SVG and PDF
 // whole and all vector), and the draw list holds what the options say.
 TEST(MechanismClip, EveryPictureOptionOnEveryShippedMechanism) {

@@ -378,6 +378,33 @@ inline Mechanism four_bar_loaded() {
   return m;
 }
 
+inline Joint rolling(const std::string& name, const std::string& a, const std::string& pa, const std::string& b,
+                     const std::string& pb, std::array<std::string, 2> axis, const std::string& radius) {
+  Joint j = pin(name, a, pa, b, pb);
+  j.type = JointType::rolling;
+  j.axis = Vector2Quantity{q(axis[0]), q(axis[1])};
+  j.radius = q(radius);
+  return j;
+}
+
+/// A wheel rolling down an incline of the ground with a rod hanging from its centre, and a
+/// plank rolling on a drum pinned to the ground (the line's body is the tree's child).
+inline Mechanism rolling_wheel_and_plank() {
+  Mechanism m;
+  m.name = "rolling";
+  m.gravity = q("g");
+  m.parameters = {{"r", 0.2, {}}, {"alpha", 0.3, {}}, {"l", 0.5, {}}, {"m", 0.7, {}}, {"g", 9.81, {}}};
+  m.ground_points = {{"O", {q("0.1"), q("-0.2")}, {}}, {"G", {q("1.5"), q("0.3")}, {}}};
+  m.bodies = {disc("wheel", "m", "r", {{"C", {"0", "0"}}}), rod("bob", "0.3", "l", {{"A", {"-l/2", "0"}}}),
+              disc("drum", "1.2", "0.3", {{"C", {"0", "0"}}}),
+              rectangle("plank", "0.5", "1", "0.05", {{"K", {"0.1", "-0.025"}}})};
+  m.joints = {rolling("R1", "ground", "O", "wheel", "C", {"cos(alpha)", "-sin(alpha)"}, "r"),
+              pin("D", "ground", "G", "drum", "C"), pin("A", "wheel", "C", "bob", "A"),
+              rolling("R2", "plank", "K", "drum", "C", {"-1", "0"}, "0.3")};
+  m.initial = {{"wheel.theta", 0.3, {}}, {"bob.theta", -1.2, {}}, {"drum.theta", 0.1, {}}, {"plank.theta", 0.05, {}}};
+  return m;
+}
+
 /// A named mechanism for parameterized tests.
 struct Named {
   std::string name;
@@ -405,7 +432,8 @@ inline std::vector<Named> all_mechanisms() {
           {"spring_pendulum", [] { return spring_pendulum(true); }},
           {"welded_pendulum", welded_pendulum},
           {"welded_chain", welded_chain},
-          {"welded_floating", welded_floating}};
+          {"welded_floating", welded_floating},
+          {"rolling", rolling_wheel_and_plank}};
 }
 
 /// A random state of `system`: with no loop, every generalized coordinate and rate drawn

@@ -46,6 +46,7 @@ JointEnds ends_of(JointType type, const Placement& a, const Placement& b) {
   ends.point_b = {ex(-0.2), ex(0.15)};
   if (joint_type_info(type).axis) ends.axis = {ex(2), ex(1)};
   if (joint_type_info(type).angle) ends.angle = ex(0.6);
+  if (joint_type_info(type).radius) ends.radius = ex(0.4);
   return ends;
 }
 
@@ -73,8 +74,10 @@ class JointStagesTest : public ::testing::TestWithParam<JointType> {};
 TEST_P(JointStagesTest, RegisteredConsistently) {
   const JointStages& stages = joint_stages(GetParam());
   EXPECT_EQ(stages.own != nullptr, has_own_coordinate(joint_type_info(GetParam()).motion));
-  // The scene draws a rail along the joint's axis: only a type that takes one has it.
-  EXPECT_EQ(stages.drawing == JointDrawing::rail, joint_type_info(GetParam()).axis);
+  // The scene draws a rail (a rolling surface) along the joint's axis: only a type that
+  // takes one has it.
+  EXPECT_EQ(stages.drawing == JointDrawing::rail || stages.drawing == JointDrawing::rolling,
+            joint_type_info(GetParam()).axis);
   const JointEnds ends = ends_of(GetParam(), {}, {});
   // One multiplier per row: the unknowns are the force's components along the rows.
   EXPECT_EQ(stages.unknowns(joint_of(GetParam()), false, "body 1").size(), stages.rows(ends).size());
@@ -108,6 +111,7 @@ TEST_P(JointStagesTest, CoordinateInvertsThePlacement) {
         EXPECT_NEAR(evaluate(stages.coordinate(ends), at), 0.35, kExact) << "child_is_b " << child_is_b;
         break;
       case JointMotion::revolute:  // the coordinate is the child's own angle
+      case JointMotion::rolling:
         EXPECT_TRUE(stages.coordinate(ends).is_zero());
         EXPECT_NEAR(evaluate(child.angle, at), 0.35, kExact);
         break;
@@ -331,6 +335,48 @@ TEST(JointWeld, ForceAndMomentAreItsThreeUnknowns) {
   EXPECT_EQ(weld.driven, nullptr);
   EXPECT_FALSE(drivable(JointType::weld));
   EXPECT_EQ(joint_type_info(JointType::weld).rows, 3);
+}
+
+// --- joint_rolling.cpp ----------------------------------------------------------------
+
+TEST(JointRolling, DrawnAsASurface) { EXPECT_EQ(joint_stages(JointType::rolling).drawing, JointDrawing::rolling); }
+
+// On the ground's line along x through the origin, radius R: the centre at height R and at
+// -R th_b along the line (rolling without slip, counter-clockwise rolls to -x).
+TEST(JointRolling, RowsAreTheHeightAndTheRolledDistance) {
+  const symbol x("x"), y("y"), th("th");
+  JointEnds ends;
+  ends.b = {{x, y}, th};
+  ends.axis = {ex(3), ex(0)};
+  ends.radius = ex(0.4);
+  const std::vector<ex> rows = joint_stages(JointType::rolling).rows(ends);
+  ASSERT_EQ(rows.size(), 2U);
+  EXPECT_TRUE((rows[0] - (y - 0.4)).expand().is_zero()) << rows[0];
+  EXPECT_TRUE((rows[1] - (x + 0.4 * th)).expand().is_zero()) << rows[1];
+}
+
+// F = N n + f u on bodies[0], as if at C with the moment R f (the force at the contact point).
+TEST(JointRolling, ForceIsNormalAndFrictionAtTheContactPoint) {
+  const JointStages& rolling = joint_stages(JointType::rolling);
+  const std::vector<ForceUnknown> unknowns = rolling.unknowns(joint_of(JointType::rolling), false, "body 1");
+  ASSERT_EQ(unknowns.size(), 2U);
+  EXPECT_EQ(unknowns[0].key, "normal");
+  EXPECT_EQ(unknowns[1].key, "friction");
+  const symbol n("N"), f("f"), th("th");
+  JointEnds ends;
+  ends.a.angle = th;
+  ends.axis = {ex(0), ex(2)};  // u = (0, 1) turned by th, n = (-1, 0) turned by th
+  ends.radius = ex(0.4);
+  JointSystem js;
+  js.unknowns = {n, f};
+  rolling.force(js, ends);
+  EXPECT_TRUE((js.force.x - (-n * GiNaC::cos(th) - f * GiNaC::sin(th))).expand().is_zero()) << js.force.x;
+  EXPECT_TRUE((js.force.y - (-n * GiNaC::sin(th) + f * GiNaC::cos(th))).expand().is_zero()) << js.force.y;
+  EXPECT_TRUE((js.moment - 0.4 * f).expand().is_zero()) << js.moment;
+  EXPECT_TRUE(rolling.force_at_point_b);
+  EXPECT_FALSE(rolling.moment_column);
+  EXPECT_TRUE(rolling.unknown_columns);
+  EXPECT_EQ(joint_type_info(JointType::rolling).rows, 2);
 }
 
 }  // namespace
