@@ -62,7 +62,7 @@ TEST(ShippedLessons, TheCourseIsComplete) {
                                       "04-case2-six-equations", "05-case3-four-equations", "06-numerical-example",
                                       "07-constraint-drift", "08-accuracy-and-cost", "09-beyond-the-equations",
                                       "10-double-pendulum-chaos", "11-unequal-blocks", "12-slider-crank", "13-four-bar",
-                                      "14-kinematic-analysis", "15-inverse-dynamics"}));
+                                      "14-kinematic-analysis", "15-inverse-dynamics", "16-small-vibrations"}));
 }
 
 TEST(ShippedLessons, RunAtDraftQualityAndCache) {
