@@ -111,6 +111,7 @@ struct MechanismSimulation::Impl {
           if (body.length) half = number(system.quantity(*body.length, false)) / 2;
           break;
         case Shape::disc:
+        case Shape::ring:
           if (body.radius) half = number(system.quantity(*body.radius, false));
           break;
         case Shape::point:

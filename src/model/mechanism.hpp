@@ -36,8 +36,8 @@ struct NamedPoint {
   SourcePos pos;
 };
 
-enum class Shape { rectangle, rod, disc, point };
-inline constexpr std::array<const char*, 4> kShapeNames{"rectangle", "rod", "disc", "point"};
+enum class Shape { rectangle, rod, disc, ring, point };
+inline constexpr std::array<const char*, 5> kShapeNames{"rectangle", "rod", "disc", "ring", "point"};
 
 struct Body {
   std::string name;
@@ -45,7 +45,7 @@ struct Body {
   Quantity mass;
   std::optional<Quantity> length;   // rectangle, rod
   std::optional<Quantity> width;    // rectangle
-  std::optional<Quantity> radius;   // disc
+  std::optional<Quantity> radius;   // disc, ring
   std::optional<Quantity> inertia;  // about the centre of mass; overrides the shape's formula
   std::vector<NamedPoint> points;
   SourcePos pos;

@@ -57,7 +57,7 @@ constexpr MechanismKey kKeys[] = {
      "\"energy\")"},
     {"[ground]", "points", "table of [x, y]", "none", "named points of the fixed frame, world coordinates, m"},
     {"[[body]]", "name", "string", "(required)", "the body's name: letters, digits, '_' or '-' (e.g. \"1\")"},
-    {"[[body]]", "shape", "string", "(required)", "rectangle, rod, disc or point"},
+    {"[[body]]", "shape", "string", "(required)", "rectangle, rod, disc, ring or point"},
     {"[[body]]", "mass", kQuantity, "(required)", "mass, kg, > 0"},
     {"[[body]]", "length", kQuantity, "(required by rectangle and rod)", "length along the body x axis, m, > 0"},
     {"[[body]]", "width", kQuantity, "(required by rectangle)", "width across the body x axis, m, > 0"},
@@ -507,7 +507,7 @@ class MechanismReader {
     std::vector<std::string> takes;
     if (body.shape == Shape::rectangle) takes = {"length", "width"};
     if (body.shape == Shape::rod) takes = {"length"};
-    if (body.shape == Shape::disc) takes = {"radius"};
+    if (body.shape == Shape::disc || body.shape == Shape::ring) takes = {"radius"};
     const std::string shape = kShapeNames[static_cast<std::size_t>(body.shape)];
     for (const Size& size : kSizes) {
       const bool used = std::find(takes.begin(), takes.end(), size.key) != takes.end();
@@ -638,13 +638,14 @@ class MechanismReader {
       return;
     }
     const Body* rolling = m_.find_body(joint.bodies[1]);
-    if (rolling != nullptr && rolling->shape == Shape::disc && rolling->radius) {
+    if (rolling != nullptr && (rolling->shape == Shape::disc || rolling->shape == Shape::ring) && rolling->radius) {
       joint.radius = rolling->radius;
       return;
     }
-    fail(joint.pos, r.context() + ": the rolling body " + q(joint.bodies[1]) +
-                        " is not a disc and the joint gives no 'radius'; valid: a 'radius' > 0 (m), or a disc as "
-                        "bodies[1]");
+    fail(joint.pos,
+         r.context() + ": the rolling body " + q(joint.bodies[1]) +
+             " is not a disc or a ring and the joint gives no 'radius'; valid: a 'radius' > 0 (m), or a disc "
+             "or a ring as bodies[1]");
   }
 
   // [[driver]]: a joint whose type's row is drivable, at most one driver each, a name no

@@ -131,6 +131,7 @@ std::vector<BodyPoint> moving_points(const MechanismGeometry& geometry, const Me
         break;
       case Shape::rectangle:
       case Shape::disc:
+      case Shape::ring:
       case Shape::point:
         break;
     }

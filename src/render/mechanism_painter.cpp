@@ -100,7 +100,8 @@ void paint_trail_heads(cairo_t* cr, const DrawStyle& style, const Camera& camera
   }
 }
 
-// A body's outline as the current path: a point mass as a dot, any other shape closed.
+// A body's outline as the current path: a point mass as a dot, a ring with its hole, any
+// other shape closed.
 void outline_path(cairo_t* cr, const DrawStyle& style, const Camera& camera, const List::Outline& outline) {
   if (outline.shape == Shape::point) {
     const Vec2 p = camera.to_pixels(outline.points.front());
@@ -108,6 +109,23 @@ void outline_path(cairo_t* cr, const DrawStyle& style, const Camera& camera, con
     cairo_arc(cr, p.x(), p.y(), 1.6 * style.com_radius(), 0, 2 * std::numbers::pi);
   } else {
     path_through(cr, camera, outline.points, true);
+  }
+  if (outline.shape == Shape::ring) {  // a rim a fifth of the radius wide: the hole turns the other way
+    Vec2 centre = Vec2::Zero();
+    double turn = 0;  // twice the signed area in pixels: > 0 turns as cairo_arc does
+    for (std::size_t k = 0; k < outline.points.size(); ++k) {
+      const Vec2 a = camera.to_pixels(outline.points[k]);
+      const Vec2 b = camera.to_pixels(outline.points[(k + 1) % outline.points.size()]);
+      centre += a;
+      turn += a.x() * b.y() - b.x() * a.y();
+    }
+    centre /= static_cast<double>(outline.points.size());
+    const double hole = 0.8 * (camera.to_pixels(outline.points.front()) - centre).norm();
+    cairo_new_sub_path(cr);
+    if (turn > 0)
+      cairo_arc_negative(cr, centre.x(), centre.y(), hole, 0, -2 * std::numbers::pi);
+    else
+      cairo_arc(cr, centre.x(), centre.y(), hole, 0, 2 * std::numbers::pi);
   }
 }
 

@@ -279,6 +279,7 @@ std::vector<Vec2> body_outline(const MechanismGeometry::BodyShape& body, const s
       break;
     }
     case Shape::disc:
+    case Shape::ring:  // the painter cuts the hole
       for (int k = 0; k < kDiscSides; ++k) {
         const double angle = 2 * pi * k / kDiscSides;
         local.emplace_back(body.radius * std::cos(angle), body.radius * std::sin(angle));
@@ -996,7 +997,7 @@ void MechanismScene::frame(std::size_t k, MechanismDrawList& out) const {
     const MechanismGeometry::BodyShape& body = geometry_.bodies[i];
     out.outlines.push_back({i, body_outline(body, pose, i), body.shape});
     const Vec2 centre(pose[3 * i], pose[3 * i + 1]);
-    if (body.shape == Shape::disc)  // a radius along body x, so the spin shows
+    if (body.shape == Shape::disc || body.shape == Shape::ring)  // a radius along body x, so the spin shows
       out.lines.push_back({MechanismDrawList::Line::Kind::spin,
                            {centre, centre + rotated(pose[3 * i + 2], {body.radius, 0.0})},
                            {},

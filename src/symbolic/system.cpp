@@ -142,6 +142,8 @@ std::string shape_noun(Shape shape) {
       return "rod";
     case Shape::disc:
       return "disc";
+    case Shape::ring:
+      return "ring";
     case Shape::point:
       return "mass";
   }
@@ -264,6 +266,9 @@ void System::add_bodies() {
           break;
         case Shape::disc:
           formula = mass * GiNaC::pow(size(body.radius), 2) / 2;
+          break;
+        case Shape::ring:  // all the mass at the rim
+          formula = mass * GiNaC::pow(size(body.radius), 2);
           break;
         case Shape::point:
           formula = 0;

@@ -101,7 +101,7 @@ TEST(MechanismsCommand, BadFileOrNameExitsTwoInOneLine) {
   test::write_text(dir / "bad.toml", "[[body]]\nname = \"1\"\nshape = \"circle\"\nmass = 1\n");
   expect_one_line_error(
       test::run_linkage({"mechanisms", file}),
-      {file + ":3:9: body '1': 'shape' = 'circle' is not valid", "valid: rectangle, rod, disc, point"});
+      {file + ":3:9: body '1': 'shape' = 'circle' is not valid", "valid: rectangle, rod, disc, ring, point"});
   expect_one_line_error(
       test::run_linkage({"mechanisms", "to-blocks"}),
       {"mechanisms: 'to-blocks' is not a shipped mechanism (did you mean 'two-blocks'?)",

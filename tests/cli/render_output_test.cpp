@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -286,6 +287,51 @@ TEST(RenderCli, HelpListsElementsQualitiesAndThemes) {
   EXPECT_EQ(r.exit_code, 0);
   for (const char* text : {"pin-force", "1920x1080@60", "dark, light, print", "--camera", "--view", "--frames", "--at"})
     EXPECT_NE(r.out.find(text), std::string::npos) << text;
+}
+
+}  // namespace
+}  // namespace linkage::test
+
+namespace linkage::test {
+namespace {
+
+// A ring (a hoop: inertia m r^2) is drawn as a rim around a hole, a disc filled: the
+// picture tells them apart as the physics does. 100 px per m; the centres at (50, 50) and
+// (150, 50) px, the ring's hole out to 0.8 r = 0.24 m.
+TEST(RenderCli, ARingIsARimAroundAHoleADiscIsFilled) {
+  TempDir dir;
+  std::ofstream(dir / "ring.toml") << R"(title = "A ring and a disc"
+[parameters]
+r = { value = 0.3, unit = "m", meaning = "radius" }
+[[body]]
+name = "ring"
+shape = "ring"
+mass = 1
+radius = "r"
+[[body]]
+name = "disc"
+shape = "disc"
+mass = 1
+radius = "r"
+[initial]
+ring = { x = -0.5, y = 0, theta = 0, x_dot = 0, y_dot = 0, theta_dot = 0 }
+disc = { x = 0.5, y = 0, theta = 0, x_dot = 0, y_dot = 0, theta_dot = 0 }
+)";
+  const RunResult r = run_linkage({"render", "--quiet", "--mechanism", (dir / "ring.toml").string(), "--at", "0",
+                                   "--view=-1,-0.5,1,0.5", "--size", "200x100", "--hide",
+                                   "grid,labels,com,hud,legend,title", "--out", (dir / "ring.png").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const DecodedPng png = decode_png(dir / "ring.png");
+  ASSERT_EQ(png.width, 200u);
+  const auto pixel = [&](std::uint32_t x, std::uint32_t y) {
+    const std::size_t at = 4 * (static_cast<std::size_t>(y) * png.width + x);
+    return std::vector<std::uint8_t>(png.rgba.begin() + static_cast<std::ptrdiff_t>(at),
+                                     png.rgba.begin() + static_cast<std::ptrdiff_t>(at + 4));
+  };
+  const auto background = pixel(100, 10);
+  EXPECT_EQ(pixel(50, 38), background) << "0.12 m above the ring's centre: its hole";
+  EXPECT_NE(pixel(50, 23), background) << "0.27 m above the ring's centre: its rim";
+  EXPECT_NE(pixel(150, 38), background) << "0.12 m above the disc's centre: filled";
 }
 
 }  // namespace

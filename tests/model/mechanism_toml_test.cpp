@@ -373,7 +373,7 @@ TEST(MechanismToml, WrongTypes) {
 
 TEST(MechanismToml, ShapesAndTheirSizes) {
   expect_error(pendulum_with(11, "shape = \"circle\""), "11:9",
-               {"body '1': 'shape' = 'circle' is not valid", "valid: rectangle, rod, disc, point"});
+               {"body '1': 'shape' = 'circle' is not valid", "valid: rectangle, rod, disc, ring, point"});
   expect_error(pendulum_with(11, "shape = \"dics\""), "11:9", {"(did you mean 'disc'?)"});
   expect_error(pendulum_with(11, "shape = \"disc\""), "13:10", {"a disc has no 'length'; a disc takes radius"});
   expect_error(pendulum_with(11, "shape = \"point\""), "13:10", {"a point has no 'length'; a point takes no sizes"});
