@@ -84,7 +84,11 @@ double evaluate(const ex& e, const GiNaC::exmap& values) {
       parts.push_back(evaluate(e.op(k), values));
       if (std::isnan(parts.back())) return std::nan("");
     }
-    std::sort(parts.begin(), parts.end());
+    // By magnitude, so the order does not depend on the signs: GiNaC writes (b - a)^2 or
+    // (a - b)^2 as its hash order falls from run to run, and a sum of the negated parts in
+    // ascending order would round differently.
+    std::sort(parts.begin(), parts.end(),
+              [](double x, double y) { return std::fabs(x) != std::fabs(y) ? std::fabs(x) < std::fabs(y) : x > y; });
     double acc = sum ? 0.0 : 1.0;
     for (const double p : parts) acc = sum ? acc + p : acc * p;
     return acc;
