@@ -17,8 +17,20 @@ std::string body_label(const Mechanism& mechanism, int body) {
   const Body& b = mechanism.bodies[static_cast<std::size_t>(body)];
   bool numeric = !b.name.empty();
   for (char c : b.name) numeric = numeric && std::isdigit(static_cast<unsigned char>(c)) != 0;
-  static constexpr std::array<const char*, 4> kNoun{"block", "rod", "disc", "mass"};
-  return numeric ? std::string(kNoun[static_cast<std::size_t>(b.shape)]) + " " + b.name : b.name;
+  if (!numeric) return b.name;
+  switch (b.shape) {  // exhaustive: a shape added to the enum must name its noun here
+    case Shape::rectangle:
+      return "block " + b.name;
+    case Shape::rod:
+      return "rod " + b.name;
+    case Shape::disc:
+      return "disc " + b.name;
+    case Shape::ring:
+      return "ring " + b.name;
+    case Shape::point:
+      return "mass " + b.name;
+  }
+  return b.name;
 }
 
 std::string body_label(const Mechanism& mechanism, const std::string& name) {
