@@ -6,6 +6,7 @@
 
 #include "core/number_format.hpp"
 #include "formulations/case_system.hpp"
+#include "model/body_phrase.hpp"
 #include "model/joint_types.hpp"
 #include "report/expression_print.hpp"
 #include "symbolic/state_values.hpp"
@@ -14,23 +15,7 @@ namespace linkage {
 
 std::string body_label(const Mechanism& mechanism, int body) {
   if (body < 0) return "the ground";
-  const Body& b = mechanism.bodies[static_cast<std::size_t>(body)];
-  bool numeric = !b.name.empty();
-  for (char c : b.name) numeric = numeric && std::isdigit(static_cast<unsigned char>(c)) != 0;
-  if (!numeric) return b.name;
-  switch (b.shape) {  // exhaustive: a shape added to the enum must name its noun here
-    case Shape::rectangle:
-      return "block " + b.name;
-    case Shape::rod:
-      return "rod " + b.name;
-    case Shape::disc:
-      return "disc " + b.name;
-    case Shape::ring:
-      return "ring " + b.name;
-    case Shape::point:
-      return "mass " + b.name;
-  }
-  return b.name;
+  return body_phrase(mechanism.bodies[static_cast<std::size_t>(body)]);
 }
 
 std::string body_label(const Mechanism& mechanism, const std::string& name) {

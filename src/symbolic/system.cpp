@@ -10,6 +10,7 @@
 
 #include "core/error.hpp"
 #include "core/interrupt.hpp"
+#include "model/body_phrase.hpp"
 #include "model/joint_types.hpp"
 #include "symbolic/expression_reader.hpp"
 #include "symbolic/joints.hpp"
@@ -136,29 +137,6 @@ ex in_double_range(const ex& e) {
 }
 
 namespace {
-
-// The noun a report uses for a body of this shape: "block 1", "rod 2".
-std::string shape_noun(Shape shape) {
-  switch (shape) {
-    case Shape::rectangle:
-      return "block";
-    case Shape::rod:
-      return "rod";
-    case Shape::disc:
-      return "disc";
-    case Shape::ring:
-      return "ring";
-    case Shape::point:
-      return "mass";
-  }
-  return "body";
-}
-
-std::string body_phrase(const Body& body) {
-  bool numeric = !body.name.empty();
-  for (char c : body.name) numeric = numeric && std::isdigit(static_cast<unsigned char>(c)) != 0;
-  return numeric ? shape_noun(body.shape) + " " + body.name : body.name;
-}
 
 int body_index(const Mechanism& m, const std::string& name) {
   for (std::size_t i = 0; i < m.bodies.size(); ++i)
