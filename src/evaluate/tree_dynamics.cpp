@@ -33,7 +33,7 @@ P2 plain(const Vec2& v) { return {v.x(), v.y()}; }
 /// R(angle) v, with cos and sin of the angle given.
 P2 rotate(double c, double s, const P2& v) { return {c * v.x - s * v.y, s * v.x + c * v.y}; }
 
-enum class NodeKind { floating, revolute, prismatic, fixed };  // model/joint_types.hpp: JointMotion
+enum class NodeKind { floating, revolute, prismatic, fixed, rolling };  // model/joint_types.hpp: JointMotion
 
 /// One body of the tree, in the order the tree reached it (parents first).
 struct Node {
@@ -43,10 +43,11 @@ struct Node {
   bool rotates = true;
   std::array<int, 3> coordinate{-1, -1, -1};  // generalized indices of the dof
   double mass = 0, inertia = 0;
-  P2 parent_point;                              // in the parent's frame (the world for the ground)
-  P2 child_point;                               // in the body's frame
-  P2 axis;                                      // slider: unit, parent's frame (the world for the ground)
-  double sign = 1;                              // slider: +1 when the body is bodies[1] of its joint
+  P2 parent_point;  // in the parent's frame (the world for the ground)
+  P2 child_point;   // in the body's frame
+  P2 axis;          // slider: unit, parent's frame (the world for the ground); rolling: the line's, its body's frame
+  double sign = 1;  // slider: +1 when the body is bodies[1] of its joint; rolling: +1 for the disc, -1 the line's body
+  double radius = 0;                            // rolling: the rolling radius
   double held = 0, cos_held = 1, sin_held = 0;  // weld: the angle it holds, child less parent
 };
 
@@ -60,7 +61,7 @@ struct Work {
   P2 centre, point;  // the centre of mass and O, world
   P2 t;              // (-d_y, d_x), d = O - O_parent: motion to O is (w, v + w t), force to O_parent (n + t.F, F)
   double angle = 0, cos_angle = 1, sin_angle = 0;  // each angle's cosine and sine once
-  S3 s;                                            // one-dof joints' motion subspace
+  S3 s;                                            // one-dof joints' motion subspace (relative)
   S3 v, c, a;
   Sym3 IA;
   S3 pA, U, u;  // U = I^A s; u: the dof's force less S^T p^A (a floating root's: tau, in x, y, theta)
@@ -158,17 +159,6 @@ bool TreeDynamics::applies(const sym::System& system) {
   const SpanningTree& tree = system.tree();
   for (std::size_t b = 0; b < tree.bodies.size(); ++b)
     if (!tree.bodies[b].floating && !system.bodies()[b].rotates) return false;
-  // A rolling joint's motion subspace (a rotation about the moving contact point) is not
-  // modelled: such a tree runs the structured/LU path.
-  for (int j : tree.tree_joints)
-    switch (joint_type_info(system.mechanism().joints[static_cast<std::size_t>(j)].type).motion) {
-      case JointMotion::revolute:
-      case JointMotion::prismatic:
-      case JointMotion::fixed:
-        break;
-      case JointMotion::rolling:
-        return false;
-    }
   return true;
 }
 
@@ -207,8 +197,14 @@ TreeDynamics::TreeDynamics(const sym::System& system) : impl_(std::make_unique<I
         case JointMotion::revolute:
           n.kind = NodeKind::revolute;
           break;
-        case JointMotion::rolling:
-          throw std::logic_error("TreeDynamics: a rolling joint in the tree (applies() declines it)");
+        case JointMotion::rolling: {  // a one-dof joint turning about the contact point
+          const sym::Vec2 axis = sym::joint_axis(system, joint);
+          n.kind = NodeKind::rolling;
+          n.axis = plain(Vec2(number(axis.x), number(axis.y)).normalized());
+          n.sign = child_is_b ? 1.0 : -1.0;
+          n.radius = number(sym::joint_radius(system, joint));
+          break;
+        }
         case JointMotion::prismatic: {
           const sym::Vec2 axis = sym::joint_axis(system, joint);
           n.kind = NodeKind::prismatic;
@@ -349,6 +345,7 @@ void TreeDynamics::Impl::kinematics(const Eigen::VectorXd& y) const {
         w.angle = node.rotates ? q[node.coordinate[2]] : 0.0;
         break;
       case NodeKind::revolute:
+      case NodeKind::rolling:
         w.angle = q[node.coordinate[0]];
         break;
       case NodeKind::prismatic:
@@ -438,6 +435,36 @@ void TreeDynamics::Impl::kinematics(const Eigen::VectorXd& y) const {
         w.s = {};
         break;
       }
+      case NodeKind::rolling: {
+        // The relative motion is a turn about the contact point K: S = (1, k x (O - K))
+        // about the node's point O, and S' q' = (0, -k x K') q'_relative with K' the
+        // contact point's own velocity, K = C - R n, n = k x u turning with the line.
+        const double omega = q_dot[node.coordinate[0]], relative = omega - pv.n, radius = node.radius;
+        const bool disc = node.sign > 0;
+        const double line_cos = disc ? pc : w.cos_angle, line_sin = disc ? ps : w.sin_angle;
+        const P2 u = rotate(line_cos, line_sin, node.axis), normal{-u.y, u.x};
+        const double turned = disc ? w.angle - parent.angle : parent.angle - w.angle;  // th_disc - th_line
+        P2 away;                                                                       // O - K
+        if (disc) {  // O = C = O_line + R n - R turned u, on the line's parent
+          point = {joint.x + radius * (normal.x - turned * u.x), joint.y + radius * (normal.y - turned * u.y)};
+          away = {radius * normal.x, radius * normal.y};
+        } else {  // O = the line's point, C - R n + R turned u, under the parent's disc
+          point = {joint.x + radius * (turned * u.x - normal.x), joint.y + radius * (turned * u.y - normal.y)};
+          away = {radius * turned * u.x, radius * turned * u.y};
+        }
+        const P2 r = rotate(w.cos_angle, w.sin_angle, node.child_point);
+        centre = {point.x - r.x, point.y - r.y};
+        const S3 s{1, -away.y, away.x};
+        w.s = s;
+        t = {pp.y - point.y, point.x - pp.x};
+        v = {omega, pv.x + pv.n * t.x + s.x * relative, pv.y + pv.n * t.y + s.y * relative};
+        // The disc's centre's velocity, and the line's rate.
+        const P2 centre_rate = disc ? P2{v.x, v.y} : P2{pv.x + pv.n * (pp.y - joint.y), pv.y + pv.n * (joint.x - pp.x)};
+        const double line_rate = disc ? pv.n : omega;
+        const P2 contact_rate{centre_rate.x + radius * line_rate * u.x, centre_rate.y + radius * line_rate * u.y};
+        c = {0, relative * contact_rate.y, -relative * contact_rate.x};
+        break;
+      }
     }
     if (!has_parent) t = {};  // the ground does not move: nothing to pass on
     // The body's inertia about O, and v x* (I v) written through the centre's velocity
@@ -512,7 +539,8 @@ void TreeDynamics::Impl::articulate(Eigen::VectorXd& out) const {
         to_pA = {t.x * f1 + t.y * f2, f1, f2};
         break;
       }
-      case NodeKind::prismatic: {
+      case NodeKind::prismatic:
+      case NodeKind::rolling: {
         const S3 s = w.s, U = times(A, s);
         const double Dinv = 1 / dot(s, U), u = -dot(s, pA);
         w.U = U;
@@ -579,6 +607,10 @@ void TreeDynamics::Impl::unloaded(const Eigen::VectorXd& tau_absolute, Eigen::Ve
       case NodeKind::prismatic:
         w.u.n = tau_absolute[node.coordinate[0]] - dot(w.s, w.pA);
         break;
+      case NodeKind::rolling:  // an absolute angle, as a pin's
+        angle_force[k] += tau_absolute[node.coordinate[0]];
+        w.u.n = angle_force[k] - dot(w.s, w.pA);
+        break;
       case NodeKind::fixed:  // no coordinate: its subtree's forces pass to its parent whole
         break;
     }
@@ -626,6 +658,12 @@ void TreeDynamics::Impl::accelerate(bool loaded, Eigen::VectorXd& out) const {
         const double qdd = w.Dinv * (w.u.n - dot(w.U, a_in));
         a = {a_in.n + w.s.n * qdd, a_in.x + w.s.x * qdd, a_in.y + w.s.y * qdd};
         out[node.coordinate[0]] = qdd;
+        break;
+      }
+      case NodeKind::rolling: {
+        const double qdd = w.Dinv * (w.u.n - dot(w.U, a_in));  // relative
+        a = {a_in.n + qdd, a_in.x + w.s.x * qdd, a_in.y + w.s.y * qdd};
+        out[node.coordinate[0]] = a.n;  // the absolute angle's
         break;
       }
       case NodeKind::fixed:

@@ -40,7 +40,7 @@ namespace linkage::eval {
 class TreeDynamics {
  public:
   /// Whether the recursion applies: every body reached through a joint rotates (a point
-  /// mass hanging from a pin has no angle to give the recursion), and no tree joint rolls.
+  /// mass hanging from a pin has no angle to give the recursion).
   [[nodiscard]] static bool applies(const sym::System& system);
 
   explicit TreeDynamics(const sym::System& system);

@@ -43,12 +43,43 @@ TEST(MechanismDynamics, RecursionEqualsTheCompiledRows) {
   for (const built::Named& named : built::all_mechanisms()) expect_recursion_equals_rows(named, rng);
 }
 
-// A rolling joint in the tree turns its child about the moving contact point, which the
-// recursion does not model: it declines, and Case 3 solves the compiled rows (checked
-// against Case 2 above, against the closed forms in tests/cli/simulate_rolling_test.cpp).
-TEST(MechanismDynamics, RecursionDeclinesARollingJoint) {
-  EXPECT_FALSE(eval::TreeDynamics::applies(sym::System(built::rolling_wheel_and_plank())));
-  EXPECT_TRUE(eval::TreeDynamics::applies(sym::System(built::double_pendulum())));
+// A rolling joint in the tree turns its child about the moving contact point: the
+// recursion takes it as a one-dof joint whose axis is that point (built::rolling_wheel_and_plank,
+// above, has a disc on the ground's line and a line's body under a pinned drum).
+TEST(MechanismDynamics, RecursionTakesARollingJoint) {
+  EXPECT_TRUE(eval::TreeDynamics::applies(sym::System(built::rolling_wheel_and_plank())));
+}
+
+/// A disc rolling on a plank that swings on a pin (the line turns and its point moves), a
+/// rod hanging from the disc, and a second disc under which a plank rolls, pinned to the
+/// first plank's end: each of the recursion's rolling cases on a moving parent.
+Mechanism rolling_on_moving_lines() {
+  using namespace built;
+  Mechanism m;
+  m.name = "rolling_on_moving_lines";
+  m.gravity = q("g");
+  m.parameters = {{"g", 9.81, {}}, {"r", 0.15, {}}};
+  m.ground_points = {{"O", {q("0"), q("0")}, {}}};
+  m.bodies = {
+      rectangle("plank", "2", "1.2", "0.05", {{"P", {"-0.4", "0"}}, {"T", {"0.1", "0.025"}}, {"E", {"0.6", "0"}}}),
+      disc("wheel", "0.7", "r", {{"C", {"0", "0"}}}), rod("bob", "0.3", "0.4", {{"A", {"-0.2", "0"}}}),
+      disc("drum", "0.9", "0.2", {{"C", {"0", "0"}}}),
+      rectangle("board", "0.4", "0.8", "0.04", {{"K", {"0.2", "-0.02"}}})};
+  m.joints = {pin("P", "ground", "O", "plank", "P"), rolling("R1", "plank", "T", "wheel", "C", {"1", "0.2"}, "r"),
+              pin("A", "wheel", "C", "bob", "A"), pin("E", "plank", "E", "drum", "C"),
+              rolling("R2", "board", "K", "drum", "C", {"-1", "0"}, "0.2")};
+  m.initial = {{"plank.theta", 0.2, {}},
+               {"wheel.theta", 0.5, {}},
+               {"bob.theta", -1.0, {}},
+               {"drum.theta", 0.1, {}},
+               {"board.theta", -0.3, {}}};
+  return m;
+}
+
+TEST(MechanismDynamics, RecursionEqualsTheCompiledRowsRollingOnMovingLines) {
+  std::mt19937 rng(29);
+  ASSERT_TRUE(eval::TreeDynamics::applies(sym::System(rolling_on_moving_lines())));
+  expect_recursion_equals_rows({"rolling_on_moving_lines", rolling_on_moving_lines}, rng);
 }
 
 /// A tree whose bodies have several children: an arm pinned to the ground off its centre,
