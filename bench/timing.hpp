@@ -18,6 +18,16 @@ struct Timing {
   int repeats = 0;
 };
 
+/// Makes the compiler forget what it knows of `value` (an empty asm statement that may
+/// read and write it). A timed loop over one state nudged in one entry calls this on the
+/// state each time, so the work on its other entries cannot be hoisted out of the loop:
+/// GCC did that with the inlined closed form's sincos of theta1, which then cost one
+/// sincos a call, not two.
+template <class T>
+inline void forget(T& value) {
+  asm volatile("" : : "r"(&value) : "memory");
+}
+
 /// CPU time consumed by the calling thread, s.
 [[nodiscard]] inline double thread_cpu_seconds() {
   timespec ts{};

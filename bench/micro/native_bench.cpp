@@ -13,8 +13,11 @@
 #include <vector>
 
 #include "bench/mechanisms_bench.hpp"
+#include "bench/rhs.hpp"
+#include "bench/timing.hpp"
 #include "evaluate/mechanism_dynamics.hpp"
 #include "model/mechanism_toml.hpp"
+#include "symbolic/loop_closure.hpp"
 #include "symbolic/system.hpp"
 
 namespace linkage::bench {
@@ -71,6 +74,50 @@ void chain_rhs(benchmark::State& state, int links, bool native) {
 void chain_rhs_derivative(benchmark::State& state, int links) {
   general_rhs_of(state, chain(links), CaseId::reduced, true, true);
 }
+
+// At the homework's initial state, as `linkage bench mechanisms` times its rows: one state,
+// theta2 nudged by round-off each call, one entry of y' kept. Its angles (0.1, 0.2 rad) take
+// sincos's short path, so what the path spends besides the arithmetic weighs more than at
+// the random states above.
+void general_case3_at_start(benchmark::State& state) {
+  static const sym::System system(load_mechanism("two-blocks"));
+  eval::MechanismDynamics dynamics(system, CaseId::reduced);
+  if (const eval::NativeAttachment a = dynamics.attach_native(); !a.attached) {
+    state.SkipWithError(("no native code: " + a.reason).c_str());
+    return;
+  }
+  Eigen::VectorXd y = dynamics.initial_state(sym::checked_initial_state(system).state), dy(y.size());
+  const double base = y[3];
+  double sink = 0;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    y[3] = base + 1e-15 * static_cast<double>(i++ & 7U);
+    dynamics.derivative(0.0, y, dy);
+    sink += dy[dy.size() - 1];
+  }
+  benchmark::DoNotOptimize(sink);
+}
+BENCHMARK(general_case3_at_start)->Name("rhs/general_case3_native_at_start");
+
+void case3_fast_at_start(benchmark::State& state) {
+  static const sym::System system(load_mechanism("two-blocks"));
+  const eval::MechanismDynamics dynamics(system, CaseId::reduced);
+  const Eigen::VectorXd start = dynamics.initial_state(sym::checked_initial_state(system).state);
+  const FastCase3Rhs<double> f{Params{}};
+  Vec<8> y = start.head<8>(), dy;
+  const double base = y[3];
+  double sink = 0;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    y[3] = base + 1e-15 * static_cast<double>(i++ & 7U);
+    forget(y);  // as bench mechanisms: theta1's sincos not hoisted out of the loop
+    f(0.0, y, dy);
+    forget(dy);
+    sink += dy[7];
+  }
+  benchmark::DoNotOptimize(sink);
+}
+BENCHMARK(case3_fast_at_start)->Name("rhs/case3_fast_at_start");
 
 BENCHMARK_CAPTURE(general_rhs, case1_interpreted, CaseId::maximal, false)->Name("rhs/general_case1_interpreted");
 BENCHMARK_CAPTURE(general_rhs, case1_native, CaseId::maximal, true)->Name("rhs/general_case1_native");

@@ -210,6 +210,7 @@ class Builder {
 
   Index emit(Op op, Index a, Index b = 0) {
     if (!is_binary(op)) b = 0;
+    if (const std::optional<Index> absorbed = absorb_negation(op, a, b)) return *absorbed;
     if (is_commutative(op) && b < a) std::swap(a, b);
     const bool constant_operands =
         nodes_[a].kind == Kind::constant && (!is_binary(op) || nodes_[b].kind == Kind::constant);
@@ -220,6 +221,59 @@ class Builder {
     nodes_.push_back({Kind::operation, op, a, b, 0.0});
     numbering_.emplace(key, node);
     return node;
+  }
+
+  // The operand of a negation node, if `k` is one.
+  std::optional<Index> negated(Index k) const {
+    if (nodes_[k].kind == Kind::operation && nodes_[k].op == Op::neg) return nodes_[k].a;
+    return std::nullopt;
+  }
+
+  // op on a negation, rewritten where IEEE arithmetic gives the same bits, signed zeros
+  // included: a + (-y) is a - y and a - (-y) is a + y by definition, addition commutes,
+  // (-x) y = -(x y) and (-x) / y = -(x / y) exactly, -(-x) = x, |-x| = |x|. The negation
+  // then moves out of products into the sum that takes it in, so the code does not spend
+  // an instruction on it. (-x) - b is left alone: -(x + b) differs where x + b cancels
+  // (+0 against -0).
+  std::optional<Index> absorb_negation(Op op, Index a, Index b) {
+    const std::optional<Index> x = negated(a);
+    const std::optional<Index> y = is_binary(op) ? negated(b) : std::nullopt;
+    const auto constant_value = [&](Index k) -> std::optional<double> {
+      if (nodes_[k].kind == Kind::constant) return nodes_[k].value;
+      return std::nullopt;
+    };
+    switch (op) {
+      case Op::neg:
+      case Op::abs:
+        if (x) return op == Op::neg ? *x : emit(Op::abs, *x);
+        break;
+      case Op::add:
+        if (y) return emit(Op::sub, a, *y);
+        if (x) return emit(Op::sub, b, *x);
+        break;
+      case Op::sub:
+        if (y) return emit(Op::add, a, *y);
+        break;
+      case Op::mul:
+      case Op::div:
+        if (x && y) return emit(op, *x, *y);
+        // A constant takes the sign: (-x) c = x (-c), c / (-y) = (-c) / y.
+        if (x && constant_value(b)) return emit(op, *x, constant(-*constant_value(b)));
+        if (y && constant_value(a)) return emit(op, constant(-*constant_value(a)), *y);
+        if (x) return emit(Op::neg, emit(op, *x, b));
+        if (y) return emit(Op::neg, emit(op, a, *y));
+        break;
+      case Op::sqrt:
+      case Op::pow:
+      case Op::sin:
+      case Op::cos:
+      case Op::sincos:
+      case Op::tan:
+      case Op::exp:
+      case Op::log:
+        break;
+    }
+    return std::nullopt;
   }
 
   // acc op operand, or the operand alone for the first; each term or factor is folded in

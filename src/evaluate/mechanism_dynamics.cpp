@@ -35,6 +35,21 @@ constexpr int kProjectionIterations = 12;
 // B: the compiler unrolls the LU, and nothing is allocated or sized at run time.
 constexpr std::size_t kFixedRows = 8;
 
+// y's q and q' into a program's inputs, one value at a time. GCC vectorizes a plain loop
+// into 16-byte loads, and a 16-byte load that overlaps a value just stored alone (a
+// caller that set one entry of y, as a nudged state in `bench mechanisms` or a column
+// written by hand) waits for the store to retire instead of taking it from the store
+// buffer: that stall was a fifth of the homework's right-hand side at its initial state.
+void copy_state_in(const double* from, double* to, std::size_t n) {
+  for (std::size_t i = 0; i < n; ++i) {
+    double v = from[i];
+#if defined(__GNUC__) && defined(__x86_64__)
+    asm("" : "+x"(v));  // one value per load: the loop is not paired into vectors
+#endif
+    to[i] = v;
+  }
+}
+
 /// The pivots' spread of an LU (see unknowns()).
 template <class Lu>
 double pivot_spread(const Lu& lu) {
@@ -533,7 +548,7 @@ void MechanismDynamics::set_baumgarte(double alpha, double beta) {
 }
 
 void MechanismDynamics::fill_inputs(double t, const Eigen::VectorXd& y) const {
-  for (std::size_t i = 0; i < 2 * n_; ++i) inputs_[parameters_ + i] = y[idx(i)];
+  copy_state_in(y.data(), inputs_.data() + parameters_, 2 * n_);
   inputs_[parameters_ + 2 * n_] = t;
 }
 
@@ -660,7 +675,7 @@ bool MechanismDynamics::static_unknowns(double t, const Eigen::VectorXd& y) cons
   // compiled LU (a chain of 8: 827 instructions against 593): both evaluators then run the
   // same arithmetic, so a run's numbers do not depend on whether a compiler was found.
   if (solve_.output_count() == 0) return false;
-  for (std::size_t i = 0; i < 2 * n_; ++i) solve_inputs_[parameters_ + i] = y[idx(i)];
+  copy_state_in(y.data(), solve_inputs_.data() + parameters_, 2 * n_);
   solve_inputs_[parameters_ + 2 * n_] = t;
   solve_.run(solve_inputs_.data(), solve_values_.data(), scratch_.data());
   return pivot_check_.accepts(solve_values_.data() + cols_);
@@ -719,7 +734,7 @@ bool MechanismDynamics::derivative(double t, const Eigen::VectorXd& y, Eigen::Ve
     const std::size_t n = n_;
     const double* in = y.data();
     double* inputs = solve_inputs_.data() + parameters_;
-    for (std::size_t i = 0; i < 2 * n; ++i) inputs[i] = in[i];
+    copy_state_in(in, inputs, 2 * n);
     inputs[2 * n] = t;
     solve_.run(solve_inputs_.data(), solve_values_.data(), scratch_.data());
     if (pivot_check_.accepts(solve_values_.data() + cols_)) {

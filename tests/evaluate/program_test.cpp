@@ -251,6 +251,27 @@ TEST(Program, CommonFactorsAndSignsShareTheirProduct) {
   EXPECT_EQ(run(scaled, {3.0, 5.0}), (std::vector<double>{15.0, -30.0}));
 }
 
+TEST(Program, NegationsAreTakenIntoSumsAndProductsWithTheSameBits) {
+  const symbol x("x"), y("y"), z("z"), w("w"), s("s"), r("r");
+  // s and r are each other's negation, so one of them is a negated sum (as a static
+  // solve's steps are): the products and sums reading it take its sign in.
+  const std::vector<Definition> definitions{{s, x - y}, {r, y - x}};
+  // Sums of positive terms only: their orientation is their own (compile's canonical one).
+  const std::vector<ex> outputs{s * z + w, r * z + w, s * s, 3 * r, -3 * s, w / r + z, w + r, w + s, s / x + z};
+  const Program p = compile(outputs, {x, y, z, w}, definitions);
+  EXPECT_EQ(count(p, Op::neg), 0u) << p.dump();
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-2.0, 2.0);
+  for (int trial = 0; trial < 50; ++trial) {
+    const double a = u(rng), b = u(rng), c = u(rng), d = u(rng);
+    const double sv = a - b, rv = b - a;
+    // What the expressions say, operation by operation: the same bits.
+    const std::vector<double> expected{sv * c + d, rv * c + d, sv * sv, 3 * rv,    -3 * sv,
+                                       d / rv + c, d + rv,     d + sv,  sv / a + c};
+    EXPECT_EQ(run(p, {a, b, c, d}), expected) << trial;
+  }
+}
+
 TEST(Program, ProductsOverTheSameEarlyFactorsShareThem) {
   const symbol m("m"), d("d"), g("g"), t("t");
   // m d once, whatever order GiNaC keeps the factors in.
