@@ -50,10 +50,10 @@ JointEnds ends_of(JointType type, const Placement& a, const Placement& b) {
   return ends;
 }
 
-// `child_is_b`: b placed by the joint from a and `coordinate`, else a from b.
-JointEnds placed(JointType type, const Placement& parent, bool child_is_b, const ex& coordinate) {
+// `child_is_b`: b placed by the joint from a and the tree's coordinates, else a from b.
+JointEnds placed(JointType type, const Placement& parent, bool child_is_b, const TreeCoordinates& coordinates) {
   JointEnds ends = ends_of(type, parent, parent);
-  const Placement child = joint_stages(type).place(ends, child_is_b, coordinate);
+  const Placement child = joint_stages(type).place(ends, child_is_b, coordinates);
   (child_is_b ? ends.b : ends.a) = child;
   return ends;
 }
@@ -84,15 +84,15 @@ TEST_P(JointStagesTest, RegisteredConsistently) {
 }
 
 TEST_P(JointStagesTest, TreePlacementSatisfiesTheRows) {
-  const symbol x("x"), y("y"), theta("theta"), c("c");
+  const symbol x("x"), y("y"), theta("theta"), c("c"), s("s");
   const Placement parent{{x, y}, theta};
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> draw(-2, 2);
   for (const bool child_is_b : {true, false}) {
-    const std::vector<ex> rows = joint_stages(GetParam()).rows(placed(GetParam(), parent, child_is_b, c));
+    const std::vector<ex> rows = joint_stages(GetParam()).rows(placed(GetParam(), parent, child_is_b, {c, s}));
     ASSERT_FALSE(rows.empty());
     for (int k = 0; k < 5; ++k) {
-      const GiNaC::exmap at{{x, draw(rng)}, {y, draw(rng)}, {theta, draw(rng)}, {c, draw(rng)}};
+      const GiNaC::exmap at{{x, draw(rng)}, {y, draw(rng)}, {theta, draw(rng)}, {c, draw(rng)}, {s, draw(rng)}};
       for (const ex& row : rows) EXPECT_NEAR(evaluate(row, at), 0, kExact) << row << " child_is_b " << child_is_b;
     }
   }
@@ -100,24 +100,27 @@ TEST_P(JointStagesTest, TreePlacementSatisfiesTheRows) {
 
 TEST_P(JointStagesTest, CoordinateInvertsThePlacement) {
   const JointStages& stages = joint_stages(GetParam());
-  const symbol x("x"), y("y"), theta("theta"), c("c");
+  const symbol x("x"), y("y"), theta("theta"), c("c"), s("s");
   const Placement parent{{x, y}, theta};
-  const GiNaC::exmap at{{x, 0.4}, {y, -0.7}, {theta, 0.9}, {c, 0.35}};
+  const GiNaC::exmap at{{x, 0.4}, {y, -0.7}, {theta, 0.9}, {c, 0.35}, {s, -0.45}};
   for (const bool child_is_b : {true, false}) {
-    const JointEnds ends = placed(GetParam(), parent, child_is_b, c);
+    const JointEnds ends = placed(GetParam(), parent, child_is_b, {c, s});
     const Placement& child = child_is_b ? ends.b : ends.a;
     switch (joint_type_info(GetParam()).motion) {
-      case JointMotion::prismatic:
-        EXPECT_NEAR(evaluate(stages.coordinate(ends), at), 0.35, kExact) << "child_is_b " << child_is_b;
+      case JointMotion::prismatic:  // the travel; the child keeps its parent's angle
+        EXPECT_NEAR(evaluate(stages.coordinate(ends), at), -0.45, kExact) << "child_is_b " << child_is_b;
+        EXPECT_FALSE(child.angle.has(c));
         break;
       case JointMotion::revolute:  // the coordinate is the child's own angle
       case JointMotion::rolling:
         EXPECT_TRUE(stages.coordinate(ends).is_zero());
         EXPECT_NEAR(evaluate(child.angle, at), 0.35, kExact);
+        EXPECT_FALSE(child.position.x.has(s) || child.position.y.has(s));
         break;
       case JointMotion::fixed:  // none: the child is placed by the parent alone
         EXPECT_TRUE(stages.coordinate(ends).is_zero());
-        EXPECT_FALSE(child.position.x.has(c) || child.position.y.has(c) || child.angle.has(c));
+        EXPECT_FALSE(child.position.x.has(c) || child.position.y.has(c) || child.angle.has(c) ||
+                     child.position.x.has(s) || child.position.y.has(s));
         EXPECT_NEAR(evaluate(child.angle, at), 0.9 + (child_is_b ? 0.6 : -0.6), kExact) << child_is_b;
         break;
     }
@@ -132,9 +135,9 @@ TEST_P(JointStagesTest, ForceDoesNoWorkOnTheMotionItAllows) {
   const symbol t("t"), f0("f0"), f1("f1"), f2("f2");
   const Placement parent{{0.3 + 0.2 * GiNaC::sin(1.3 * t), -0.4 + 0.1 * GiNaC::cos(0.7 * t)},
                          0.2 + 0.5 * GiNaC::sin(0.9 * t)};
-  const ex coordinate = 0.25 + 0.3 * GiNaC::sin(1.1 * t);
+  const TreeCoordinates coordinates{0.25 + 0.3 * GiNaC::sin(1.1 * t), -0.1 + 0.4 * GiNaC::cos(0.8 * t)};
   for (const bool child_is_b : {true, false}) {
-    const JointEnds ends = placed(GetParam(), parent, child_is_b, coordinate);
+    const JointEnds ends = placed(GetParam(), parent, child_is_b, coordinates);
     JointSystem js;
     js.unknowns = {f0, f1, f2};
     js.unknowns.resize(stages.rows(ends).size());
