@@ -1141,6 +1141,7 @@ void MechanismScene::place_joints(const std::vector<double>& pose, std::size_t f
     MechanismDrawList::Marker& marker = out.markers[m];
     const bool guide = marker.kind == MechanismDrawList::Marker::Kind::guide;
     if (guide) {
+      while (out.lines[l].kind != MechanismDrawList::Line::Kind::rail) ++l;  // past another joint's line
       out.lines[l].body = points[0].body;
       rail_under_body(geometry_.joints, j, out.lines[l++], marker, out);
     }
