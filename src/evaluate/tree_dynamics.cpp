@@ -158,8 +158,9 @@ bool TreeDynamics::applies(const sym::System& system) {
   const SpanningTree& tree = system.tree();
   for (std::size_t b = 0; b < tree.bodies.size(); ++b)
     if (!tree.bodies[b].floating && !system.bodies()[b].rotates) return false;
-  // A rolling joint's motion subspace (a rotation about the moving contact point) is not
-  // modelled: such a tree runs the structured/LU path.
+  // A rolling joint's motion subspace (a rotation about the moving contact point) and a
+  // pin-slot's (a travel and a turn: two coordinates in one node) are not modelled: such a
+  // tree runs the structured/LU path.
   for (int j : tree.tree_joints)
     switch (joint_type_info(system.mechanism().joints[static_cast<std::size_t>(j)].type).motion) {
       case JointMotion::revolute:
@@ -167,6 +168,7 @@ bool TreeDynamics::applies(const sym::System& system) {
       case JointMotion::fixed:
         break;
       case JointMotion::rolling:
+      case JointMotion::slotted:
         return false;
     }
   return true;
@@ -208,7 +210,8 @@ TreeDynamics::TreeDynamics(const sym::System& system) : impl_(std::make_unique<I
           n.kind = NodeKind::revolute;
           break;
         case JointMotion::rolling:
-          throw std::logic_error("TreeDynamics: a rolling joint in the tree (applies() declines it)");
+        case JointMotion::slotted:
+          throw std::logic_error("TreeDynamics: a rolling or pin-slot joint in the tree (applies() declines it)");
         case JointMotion::prismatic: {
           const sym::Vec2 axis = sym::joint_axis(system, joint);
           n.kind = NodeKind::prismatic;

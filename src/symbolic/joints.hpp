@@ -1,5 +1,5 @@
 #pragma once
-// The joint types, one file each (joint_pin.cpp, joint_slider.cpp, joint_rolling.cpp), every one filling the
+// The joint types, one file each (joint_pin.cpp, joint_slider.cpp, joint_pin_slot.cpp, ...), every one filling the
 // same stages (JointStages), registered in joints.cpp (a declaration and a case each):
 //   rows     its position constraint rows Phi = 0 in its bodies' placements; the velocity
 //            and acceleration rows are their time derivatives (System::time_derivative),
@@ -40,8 +40,8 @@ struct JointEnds {
 };
 
 /// What the spanning tree gives a tree joint to place the body it carries with: the
-/// child's own angle (revolute, rolling; 0 for a point mass) and the joint's own travel
-/// (prismatic: its `own` coordinate; 0 without one).
+/// child's own angle (revolute, rolling, slotted; 0 for a point mass) and the joint's own
+/// travel (prismatic, slotted: its `own` coordinate; 0 without one).
 struct TreeCoordinates {
   GiNaC::ex angle = 0;
   GiNaC::ex travel = 0;
@@ -72,6 +72,7 @@ enum class JointDrawing {
   rolling,  // the line as a hatched surface of bodies[0], the contact point on bodies[1]'s circle
   rail,     // a rail along the axis through bodies[0]'s point over the travel, a guide at bodies[1]'s
   bracket,  // an L-shaped plate over the point, a leg along each body
+  slot,     // a channel of bodies[0] along the axis over the travel, the pin at bodies[1]'s point
 };
 
 struct JointStages {

@@ -482,7 +482,7 @@ TEST(MechanismToml, DuplicateNames) {
 // their keys: every type that does not take a key is told which types do.
 TEST(MechanismToml, JointKeyMessagesNameTheTypesThatTakeThem) {
   EXPECT_EQ(joint_types_with(&JointTypeInfo::torsional_spring), "pins");
-  EXPECT_EQ(joint_types_with(&JointTypeInfo::axis), "sliders and rolling joints");
+  EXPECT_EQ(joint_types_with(&JointTypeInfo::axis), "sliders, rolling joints and pin-slots");
   EXPECT_EQ(joint_types_with(&JointTypeInfo::radius), "rolling joints");
   int checked = 0;
   for (const JointTypeInfo& info : kJointTypes) {
@@ -532,9 +532,9 @@ TEST(MechanismToml, Joints) {
                {"joint 'O' joins '1' to itself; give two different bodies"});
   expect_error(pendulum_with(17, "type = \"hinge\""), "17:8",
                {"joint 'O': 'type' = 'hinge' is not valid; valid: pin, slider"});
-  expect_error(
-      pendulum_with(19, "points = [\"O\", \"O\"]\naxis = [1, 0]"), "20:8",
-      {"joint 'O': 'axis' is for sliders and rolling joints only; a pin takes: stiffness, damping, rest_angle"});
+  expect_error(pendulum_with(19, "points = [\"O\", \"O\"]\naxis = [1, 0]"), "20:8",
+               {"joint 'O': 'axis' is for sliders, rolling joints and pin-slots only; a pin takes: stiffness, damping, "
+                "rest_angle"});
   expect_error(pendulum_with(17, "type = \"slider\""), "15:1",
                {"joint 'O': a slider needs 'axis', its direction [x, y] in the frame of 'ground'"});
   expect_error(pendulum_with(17, "type = \"slider\"\naxis = [1, 0]\nstiffness = 2"), "19:13",
