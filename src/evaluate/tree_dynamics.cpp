@@ -159,6 +159,18 @@ bool TreeDynamics::applies(const sym::System& system) {
   const SpanningTree& tree = system.tree();
   for (std::size_t b = 0; b < tree.bodies.size(); ++b)
     if (!tree.bodies[b].floating && !system.bodies()[b].rotates) return false;
+  // A pin-slot's motion (a travel and a turn: two coordinates in one node) is not
+  // modelled: such a tree runs the structured/LU path.
+  for (int j : tree.tree_joints)
+    switch (joint_type_info(system.mechanism().joints[static_cast<std::size_t>(j)].type).motion) {
+      case JointMotion::revolute:
+      case JointMotion::prismatic:
+      case JointMotion::fixed:
+      case JointMotion::rolling:
+        break;
+      case JointMotion::slotted:
+        return false;
+    }
   return true;
 }
 
@@ -205,6 +217,8 @@ TreeDynamics::TreeDynamics(const sym::System& system) : impl_(std::make_unique<I
           n.radius = number(sym::joint_radius(system, joint));
           break;
         }
+        case JointMotion::slotted:
+          throw std::logic_error("TreeDynamics: a pin-slot joint in the tree (applies() declines it)");
         case JointMotion::prismatic: {
           const sym::Vec2 axis = sym::joint_axis(system, joint);
           n.kind = NodeKind::prismatic;

@@ -44,7 +44,7 @@ GeneralizedRows generalized_rows(const sym::System& system) {
     for (const GiNaC::ex& r : ne.rows)
       rows.rows.push_back(GiNaC::expand(r.subs(to_q, GiNaC::subs_options::no_pattern)));
     rows.own.assign(rows.rows.size(), -1);
-    // A prismatic joint's child: its translation rows along and across the axis.
+    // A prismatic or slotted joint's child: its translation rows along and across the axis.
     const TreeBody& node = tree.bodies[b];
     if (node.floating || node.joint < 0) continue;
     const Joint& joint = system.mechanism().joints[static_cast<std::size_t>(node.joint)];
@@ -53,12 +53,16 @@ GeneralizedRows generalized_rows(const sym::System& system) {
       case JointMotion::fixed:
       case JointMotion::rolling:
         break;
-      case JointMotion::prismatic: {
+      case JointMotion::prismatic:
+      case JointMotion::slotted: {
         const sym::Vec2 axis = sym::joint_axis(system, joint);
         const GiNaC::ex length = GiNaC::sqrt(axis.x * axis.x + axis.y * axis.y);
-        // The axis turns with bodies[0]; the child keeps that angle.
-        const GiNaC::ex angle =
-            bodies[b].rotates ? GiNaC::ex(bodies[b].theta.q).subs(to_q, GiNaC::subs_options::no_pattern) : GiNaC::ex(0);
+        // The axis turns with bodies[0] (a slider's child keeps that angle).
+        const int holder = system.mechanism().body_index(joint.bodies[0]);
+        const GiNaC::ex angle = holder >= 0 && bodies[static_cast<std::size_t>(holder)].rotates
+                                    ? GiNaC::ex(bodies[static_cast<std::size_t>(holder)].theta.q)
+                                          .subs(to_q, GiNaC::subs_options::no_pattern)
+                                    : GiNaC::ex(0);
         const sym::Vec2 u = sym::rotate(angle, {axis.x / length, axis.y / length});
         const GiNaC::ex rx = rows.rows[0], ry = rows.rows[1];
         rows.rows[0] = GiNaC::expand(u.x * rx + u.y * ry);

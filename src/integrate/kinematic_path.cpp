@@ -248,6 +248,19 @@ std::string links_in_line(const sym::System& system, const std::vector<double>& 
           axis = Eigen::Vector2d(sym::evaluate(a.x, at), sym::evaluate(a.y, at));
           break;
         }
+        case JointMotion::slotted: {  // the slot's body lies along it; the pin's is joined at a point
+          if (side == 0) {
+            const sym::Vec2 a =
+                sym::rotate(slot(joint.bodies[0]) == 0 ? GiNaC::ex(0)
+                                                       : GiNaC::ex(system.bodies()[slot(joint.bodies[0]) - 1].theta.q),
+                            {system.quantity(joint.axis->x, false), system.quantity(joint.axis->y, false)});
+            axis = Eigen::Vector2d(sym::evaluate(a.x, at), sym::evaluate(a.y, at));
+          } else {
+            const sym::Vec2 p = system.point_position(static_cast<int>(b) - 1, joint.points[1]);
+            pins.emplace_back(sym::evaluate(p.x, at), sym::evaluate(p.y, at));
+          }
+          break;
+        }
       }
     }
     const Eigen::Vector2d d = axis               ? *axis

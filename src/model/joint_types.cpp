@@ -32,6 +32,7 @@ bool has_own_coordinate(JointMotion motion) {
     case JointMotion::revolute:
       return false;
     case JointMotion::prismatic:
+    case JointMotion::slotted:
       return true;
     case JointMotion::fixed:
     case JointMotion::rolling:

@@ -15,6 +15,7 @@ enum class JointType {
   slider,
   weld,
   rolling,
+  pin_slot,
 };
 
 /// How the body a tree joint carries moves relative to its parent: which coordinate the
@@ -24,6 +25,7 @@ enum class JointMotion {
   prismatic,  // the joint's own travel s along its axis; the child keeps its parent's angle
   fixed,      // none: the child is placed rigidly on its parent (a weld)
   rolling,    // the child's own absolute angle theta, turning about the contact point
+  slotted,    // the joint's own travel s along its axis, then the child's own angle theta (a point mass: s alone)
 };
 
 struct JointTypeInfo {
@@ -54,6 +56,7 @@ inline constexpr std::array kJointTypes{
     JointTypeInfo{JointType::weld, "weld", JointMotion::fixed, "angle", false, false, true, "", "", "", 3, true},
     JointTypeInfo{JointType::rolling, "rolling", JointMotion::rolling, "axis, radius", false, true, false, "", "", "",
                   2, false, true},
+    JointTypeInfo{JointType::pin_slot, "pin-slot", JointMotion::slotted, "axis", false, true, false, "", "", "", 1},
 };
 
 static_assert(

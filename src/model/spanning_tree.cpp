@@ -85,6 +85,10 @@ SpanningTree spanning_tree(const Mechanism& mechanism) {
         break;
       case JointMotion::fixed:  // placed by its parent: no coordinate
         break;
+      case JointMotion::slotted:  // the travel, then the child's own angle
+        tree.coordinates.push_back({CoordinateKind::s, index, node.joint, joint.name + ".s"});
+        if (rotates) tree.coordinates.push_back({CoordinateKind::theta, index, -1, body.name + ".theta"});
+        break;
     }
   }
   return tree;

@@ -38,6 +38,7 @@ void paint_lines(cairo_t* cr, const DrawStyle& style, const Camera& camera, cons
         break;
       case List::Line::Kind::rail:
       case List::Line::Kind::surface:
+      case List::Line::Kind::slot:
         set_colour(cr, theme.text_muted);
         cairo_set_line_width(cr, 1.5 * style.edge_width());
         break;
@@ -64,7 +65,7 @@ void paint_lines(cairo_t* cr, const DrawStyle& style, const Camera& camera, cons
       cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
       continue;
     }
-    path_through(cr, camera, line.points, false);
+    path_through(cr, camera, line.points, kind == List::Line::Kind::slot);
     cairo_stroke(cr);
     if (kind == List::Line::Kind::surface && line.points.size() == 2) {
       // Hatching on the right of the line's direction, under the surface (pixels flip y).
@@ -148,6 +149,14 @@ void paint_bodies(cairo_t* cr, const DrawStyle& style, const Camera& camera, con
     outline_path(cr, style, camera, *drawn);
     set_colour(cr, theme.block_fill[drawn->body % 2]);
     cairo_fill(cr);
+    // Its slots cut out of its fill, under the smaller bodies filled after it (the crank
+    // whose pin runs in the slot); their edges are painted over every body.
+    for (const List::Line& line : list.lines)
+      if (line.kind == List::Line::Kind::slot && line.body == static_cast<int>(drawn->body)) {
+        path_through(cr, camera, line.points, true);
+        set_colour(cr, theme.background);
+        cairo_fill(cr);
+      }
   }
   for (const List::Outline* drawn : order) {
     outline_path(cr, style, camera, *drawn);
@@ -511,6 +520,7 @@ ForceLayout paint_mechanism_frame(cairo_t* cr, const DrawStyle& style, const Cam
   paint_ghosts(cr, style, camera, list, false);
   paint_bodies(cr, style, camera, list);
   paint_ghosts(cr, style, camera, list, true);
+  paint_lines(cr, style, camera, list, List::Line::Kind::slot);
   paint_lines(cr, style, camera, list, List::Line::Kind::spin);
   paint_trail_heads(cr, style, camera, list);
   paint_markers(cr, style, camera, list, List::Marker::Kind::ground);

@@ -410,6 +410,7 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
           continue;
         case sym::JointDrawing::rail:
         case sym::JointDrawing::rolling:
+        case sym::JointDrawing::slot:
           break;
       }
       const Vec2 p0 = world_point(s.pose, joint.points[0]), p1 = world_point(s.pose, joint.points[1]);
@@ -902,6 +903,7 @@ void MechanismScene::add_motors(std::size_t k, MechanismDrawList& out) const {
       }
       case JointMotion::fixed:  // not drivable
       case JointMotion::rolling:
+      case JointMotion::slotted:
         break;
     }
   }
@@ -1050,6 +1052,27 @@ void MechanismScene::frame(std::size_t k, MechanismDrawList& out) const {
         force_at = {contact, contact};
         break;
       }
+      case sym::JointDrawing::slot: {  // a channel in bodies[0] over the pin's travel, the pin in it
+        const double theta0 =
+            joint.points[0].body < 0 ? 0 : pose[3 * static_cast<std::size_t>(joint.points[0].body) + 2];
+        const Vec2 axis = rotated(theta0, joint.axis), normal(-axis.y(), axis.x());
+        const double half = 0.025 * extent_;  // the channel's half width, a round end past each end of the travel
+        const Vec2 start = p0 + rail_span_[j][0] * axis, end = p0 + rail_span_[j][1] * axis;
+        MechanismDrawList::Line channel{MechanismDrawList::Line::Kind::slot, {}, {}, joint.points[0].body};
+        constexpr int kArc = 12;
+        for (int side = 0; side < 2; ++side)  // half a circle round each end, the sides between
+          for (int i = 0; i <= kArc; ++i) {
+            const double a = std::numbers::pi * (static_cast<double>(i) / kArc - 0.5);
+            const Vec2 rim = side == 0 ? Vec2(std::cos(a) * axis + std::sin(a) * normal)
+                                       : Vec2(-std::cos(a) * axis - std::sin(a) * normal);
+            channel.points.push_back((side == 0 ? end : start) + half * rim);
+          }
+        out.lines.push_back(std::move(channel));
+        out.markers.push_back({MechanismDrawList::Marker::Kind::pin, p1});
+        if (shown_.has(Element::labels) && !free_body_) out.joint_labels.push_back({p1, joint.name});
+        force_at = {p1, p1};
+        break;
+      }
       case sym::JointDrawing::bracket: {
         // A leg toward each body's centre (along its x axis when the centre is at the point),
         // the second turned square when both would lie along one line.
@@ -1141,6 +1164,7 @@ void MechanismScene::place_joints(const std::vector<double>& pose, std::size_t f
     MechanismDrawList::Marker& marker = out.markers[m];
     const bool guide = marker.kind == MechanismDrawList::Marker::Kind::guide;
     if (guide) {
+      while (out.lines[l].kind != MechanismDrawList::Line::Kind::rail) ++l;  // past another joint's line
       out.lines[l].body = points[0].body;
       rail_under_body(geometry_.joints, j, out.lines[l++], marker, out);
     }

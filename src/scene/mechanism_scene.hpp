@@ -120,7 +120,8 @@ struct MechanismDrawList {
     Shape shape = Shape::point;
   };
   struct Line {
-    enum class Kind { spin, rail, spring, dashpot, trail, surface } kind = Kind::rail;  // surface: hatched on its right
+    // surface: hatched on its right; slot: a closed channel cut out of its body's fill
+    enum class Kind { spin, rail, spring, dashpot, trail, surface, slot } kind = Kind::rail;
     std::vector<Vec2> points;
     std::vector<double> fade{};  // a trail's, per point: 1 now, falling to 0 with age
     int body = -1;               // the body it moves with in the free-body view (-1: the world)

@@ -28,7 +28,8 @@ void force(JointSystem& joint, const JointEnds&) {
   joint.moment = 0;
 }
 
-Placement place(const JointEnds& ends, bool child_is_b, const GiNaC::ex& child_angle) {
+Placement place(const JointEnds& ends, bool child_is_b, const TreeCoordinates& coordinates) {
+  const GiNaC::ex& child_angle = coordinates.angle;
   const Placement& parent = child_is_b ? ends.a : ends.b;
   const Vec2& parent_point = child_is_b ? ends.point_a : ends.point_b;
   const Vec2& child_point = child_is_b ? ends.point_b : ends.point_a;

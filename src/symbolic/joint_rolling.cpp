@@ -43,7 +43,8 @@ void force(JointSystem& joint, const JointEnds& ends) {
   joint.moment = ends.radius * friction;
 }
 
-Placement place(const JointEnds& ends, bool child_is_b, const GiNaC::ex& child_angle) {
+Placement place(const JointEnds& ends, bool child_is_b, const TreeCoordinates& coordinates) {
+  const GiNaC::ex& child_angle = coordinates.angle;
   Placement child;
   child.angle = child_angle;
   if (child_is_b) {

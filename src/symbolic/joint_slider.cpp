@@ -37,7 +37,8 @@ void force(JointSystem& joint, const JointEnds& ends) {
   joint.moment = joint.unknowns.at(1);
 }
 
-Placement place(const JointEnds& ends, bool child_is_b, const GiNaC::ex& s) {
+Placement place(const JointEnds& ends, bool child_is_b, const TreeCoordinates& coordinates) {
+  const GiNaC::ex& s = coordinates.travel;
   Placement child;
   if (child_is_b) {
     child.angle = ends.a.angle;

@@ -31,7 +31,7 @@ void force(JointSystem& joint, const JointEnds&) {
   joint.moment = joint.unknowns.at(2);
 }
 
-Placement place(const JointEnds& ends, bool child_is_b, const GiNaC::ex&) {
+Placement place(const JointEnds& ends, bool child_is_b, const TreeCoordinates&) {
   const Placement& parent = child_is_b ? ends.a : ends.b;
   const Vec2& parent_point = child_is_b ? ends.point_a : ends.point_b;
   const Vec2& child_point = child_is_b ? ends.point_b : ends.point_a;

@@ -12,6 +12,7 @@ extern const JointStages kPinJoint;
 extern const JointStages kSliderJoint;
 extern const JointStages kWeldJoint;
 extern const JointStages kRollingJoint;
+extern const JointStages kPinSlotJoint;
 
 namespace {
 
@@ -27,6 +28,8 @@ constexpr const JointStages* registered(JointType type) {
       return &kWeldJoint;
     case JointType::rolling:
       return &kRollingJoint;
+    case JointType::pin_slot:
+      return &kPinSlotJoint;
   }
   return nullptr;
 }

@@ -1,5 +1,5 @@
 #pragma once
-// The joint types, one file each (joint_pin.cpp, joint_slider.cpp, joint_rolling.cpp), every one filling the
+// The joint types, one file each (joint_pin.cpp, joint_slider.cpp, joint_pin_slot.cpp, ...), every one filling the
 // same stages (JointStages), registered in joints.cpp (a declaration and a case each):
 //   rows     its position constraint rows Phi = 0 in its bodies' placements; the velocity
 //            and acceleration rows are their time derivatives (System::time_derivative),
@@ -39,6 +39,14 @@ struct JointEnds {
   GiNaC::ex angle = 0;    // weld: the relative angle th_b - th_a it holds
 };
 
+/// What the spanning tree gives a tree joint to place the body it carries with: the
+/// child's own angle (revolute, rolling, slotted; 0 for a point mass) and the joint's own
+/// travel (prismatic, slotted: its `own` coordinate; 0 without one).
+struct TreeCoordinates {
+  GiNaC::ex angle = 0;
+  GiNaC::ex travel = 0;
+};
+
 /// The world position of a point of a placed body.
 [[nodiscard]] Vec2 world_point(const Placement& body, const Vec2& local);
 
@@ -64,6 +72,7 @@ enum class JointDrawing {
   rolling,  // the line as a hatched surface of bodies[0], the contact point on bodies[1]'s circle
   rail,     // a rail along the axis through bodies[0]'s point over the travel, a guide at bodies[1]'s
   bracket,  // an L-shaped plate over the point, a leg along each body
+  slot,     // a channel of bodies[0] along the axis over the travel, the pin at bodies[1]'s point
 };
 
 struct JointStages {
@@ -77,8 +86,8 @@ struct JointStages {
   /// force: whether the force on bodies[0] acts at bodies[1]'s point (else at its own).
   bool force_at_point_b;
   /// tree: the placement of the child (bodies[1] when `child_is_b`) from its parent's and
-  /// `coordinate`: the child's own angle (revolute) or the joint's coordinate (prismatic).
-  Placement (*place)(const JointEnds& ends, bool child_is_b, const GiNaC::ex& coordinate);
+  /// the tree's coordinates: the child's own angle (revolute) or the joint's travel (prismatic).
+  Placement (*place)(const JointEnds& ends, bool child_is_b, const TreeCoordinates& coordinates);
   /// tree: the joint's own coordinate, null when it adds none
   /// (model/joint_types.hpp: has_own_coordinate).
   const OwnCoordinate* own;

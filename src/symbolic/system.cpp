@@ -519,7 +519,7 @@ void System::add_generalized() {
     ends.angle = joint_angle(*this, joint);
     ends.radius = joint_radius(*this, joint);
     const JointStages& stages = joint_stages(joint.type);
-    ex coordinate = bs.rotates ? ex(bs.theta.q) : ex(0);
+    TreeCoordinates coordinates{bs.rotates ? ex(bs.theta.q) : ex(0), 0};
     if (stages.own != nullptr) {  // the joint's own coordinate: s
       const OwnCoordinate& own = *stages.own;
       const std::string stem = joint.name + "." + own.base;
@@ -538,9 +538,9 @@ void System::add_generalized() {
       derivative_[c.q] = c.q_dot;
       derivative_[c.q_dot] = c.q_ddot;
       slider_symbols_[node.joint] = c;
-      coordinate = c.q;
+      coordinates.travel = c.q;
     }
-    placed[i] = stages.place(ends, child_is_b, coordinate);
+    placed[i] = stages.place(ends, child_is_b, coordinates);
   }
 
   for (const Coordinate& c : tree_.coordinates) {

@@ -82,6 +82,16 @@ TEST(MechanismDynamics, RecursionEqualsTheCompiledRowsRollingOnMovingLines) {
   expect_recursion_equals_rows({"rolling_on_moving_lines", rolling_on_moving_lines}, rng);
 }
 
+// A pin-slot in the tree adds two coordinates to one node (its travel, then the child's
+// angle), which the recursion's nodes do not model: it declines such a tree (checked
+// against Case 2 above, against the closed forms in tests/cli/simulate_pin_slot_test.cpp);
+// one closing a loop leaves the tree's recursion to apply.
+TEST(MechanismDynamics, RecursionDeclinesAPinSlotInTheTree) {
+  EXPECT_FALSE(eval::TreeDynamics::applies(sym::System(built::pin_slot_tree())));
+  EXPECT_FALSE(eval::TreeDynamics::applies(sym::System(built::pin_slot_loop())));
+  EXPECT_TRUE(eval::TreeDynamics::applies(sym::System(built::scotch_yoke())));
+}
+
 /// A tree whose bodies have several children: an arm pinned to the ground off its centre,
 /// a rod and a plate pinned at its ends, a collar sliding along it on a spring-damper, a
 /// disc pinned to the rod's tip; a damped pin, a torque and a force that vary with t.

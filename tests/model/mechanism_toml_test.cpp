@@ -139,9 +139,9 @@ TEST(MechanismToml, EveryShippedMechanismReads) {
   std::sort(files.begin(), files.end());
   EXPECT_EQ(names, files);
   EXPECT_EQ(names, (std::vector<std::string>{"cart-pendulum", "coupled-pendulums", "double-pendulum", "engine",
-                                             "four-bar", "four-bar-driven", "four-bar-spring", "rolling-disc",
-                                             "slider-crank", "spring-pendulum", "triple-pendulum", "two-blocks",
-                                             "unequal-blocks", "welded-pendulum"}));
+                                             "four-bar", "four-bar-driven", "four-bar-spring", "quick-return",
+                                             "rolling-disc", "slider-crank", "spring-pendulum", "triple-pendulum",
+                                             "two-blocks", "unequal-blocks", "welded-pendulum"}));
   for (const std::string& name : names) {
     SCOPED_TRACE(name);
     const Mechanism built_in = load_mechanism(name);
@@ -179,7 +179,8 @@ TEST(MechanismToml, ShippedMechanismsHaveTheDocumentedStructure) {
                                                  {"four-bar-spring", 3, 4, 1, 1},
                                                  {"coupled-pendulums", 3, 3, 3, 0},
                                                  {"welded-pendulum", 2, 2, 1, 0},
-                                                 {"rolling-disc", 2, 2, 2, 0}}) {
+                                                 {"rolling-disc", 2, 2, 2, 0},
+                                                 {"quick-return", 4, 6, 0, 2}}) {
     SCOPED_TRACE(e.name);
     const Mechanism m = load_mechanism(e.name);
     EXPECT_EQ(m.bodies.size(), e.bodies);
@@ -482,7 +483,7 @@ TEST(MechanismToml, DuplicateNames) {
 // their keys: every type that does not take a key is told which types do.
 TEST(MechanismToml, JointKeyMessagesNameTheTypesThatTakeThem) {
   EXPECT_EQ(joint_types_with(&JointTypeInfo::torsional_spring), "pins");
-  EXPECT_EQ(joint_types_with(&JointTypeInfo::axis), "sliders and rolling joints");
+  EXPECT_EQ(joint_types_with(&JointTypeInfo::axis), "sliders, rolling joints and pin-slots");
   EXPECT_EQ(joint_types_with(&JointTypeInfo::radius), "rolling joints");
   int checked = 0;
   for (const JointTypeInfo& info : kJointTypes) {
@@ -532,9 +533,9 @@ TEST(MechanismToml, Joints) {
                {"joint 'O' joins '1' to itself; give two different bodies"});
   expect_error(pendulum_with(17, "type = \"hinge\""), "17:8",
                {"joint 'O': 'type' = 'hinge' is not valid; valid: pin, slider"});
-  expect_error(
-      pendulum_with(19, "points = [\"O\", \"O\"]\naxis = [1, 0]"), "20:8",
-      {"joint 'O': 'axis' is for sliders and rolling joints only; a pin takes: stiffness, damping, rest_angle"});
+  expect_error(pendulum_with(19, "points = [\"O\", \"O\"]\naxis = [1, 0]"), "20:8",
+               {"joint 'O': 'axis' is for sliders, rolling joints and pin-slots only; a pin takes: stiffness, damping, "
+                "rest_angle"});
   expect_error(pendulum_with(17, "type = \"slider\""), "15:1",
                {"joint 'O': a slider needs 'axis', its direction [x, y] in the frame of 'ground'"});
   expect_error(pendulum_with(17, "type = \"slider\"\naxis = [1, 0]\nstiffness = 2"), "19:13",
@@ -728,7 +729,7 @@ TEST(MechanismToml, LoadByNameOrFile) {
   };
   EXPECT_EQ(invalid("for-bar"),
             "'for-bar' is not a shipped mechanism (did you mean 'four-bar'?); valid: cart-pendulum, coupled-pendulums, "
-            "double-pendulum, engine, four-bar, four-bar-driven, four-bar-spring, rolling-disc, "
+            "double-pendulum, engine, four-bar, four-bar-driven, four-bar-spring, quick-return, rolling-disc, "
             "slider-crank, spring-pendulum, triple-pendulum, two-blocks, unequal-blocks, welded-pendulum, or a file "
             "path (with '/' or "
             "ending in .toml)");

@@ -405,6 +405,77 @@ inline Mechanism rolling_wheel_and_plank() {
   return m;
 }
 
+inline Joint pin_slot(const std::string& name, const std::string& a, const std::string& pa, const std::string& b,
+                      const std::string& pb, std::array<std::string, 2> axis) {
+  Joint j = pin(name, a, pa, b, pb);
+  j.type = JointType::pin_slot;
+  j.axis = Vector2Quantity{q(axis[0]), q(axis[1])};
+  return j;
+}
+
+/// Pin-slots in the tree: a block whose pin P slides in the slot of a bar pinned to the
+/// ground (Q adds Q.s and block.theta), a point-mass bead in a slanted slot of the ground
+/// (Q2 adds Q2.s alone), and a disc whose slot, off its centre, carries the bar's end B
+/// as the tree's child (bar2 reached from the disc: Q3.s and bar2.theta).
+inline Mechanism pin_slot_tree() {
+  Mechanism m;
+  m.name = "pin-slot-tree";
+  m.gravity = q("g");
+  m.parameters = {{"l", 0.6, {}}, {"g", 9.81, {}}};
+  m.ground_points = {{"O", {q("0"), q("0")}, {}}, {"S", {q("0.5"), q("-0.3")}, {}}, {"D", {q("-0.8"), q("0.2")}, {}}};
+  Body bead = body("bead", Shape::point, "0.2", {{"P", {"0", "0"}}});
+  m.bodies = {rod("bar", "0.4", "l", {{"O", {"-l/2", "0"}}, {"A", {"0.1", "0.02"}}}),
+              rectangle("block", "0.3", "0.1", "0.06", {{"P", {"0.02", "-0.01"}}}), bead,
+              disc("wheel", "0.5", "0.2", {{"C", {"0", "0"}}, {"T", {"0.05", "0.03"}}}),
+              rod("bar2", "0.25", "0.4", {{"B", {"0.2", "0"}}})};
+  m.joints = {pin("O", "ground", "O", "bar", "O"), pin_slot("Q", "bar", "A", "block", "P", {"1", "0"}),
+              pin_slot("Q2", "ground", "S", "bead", "P", {"1", "1"}), pin("D", "ground", "D", "wheel", "C"),
+              pin_slot("Q3", "wheel", "T", "bar2", "B", {"-0.3", "1"})};
+  m.initial = {{"bar.theta", -0.7, {}},  {"Q.s", 0.12, {}},  {"block.theta", 0.4, {}}, {"Q2.s", -0.1, {}},
+               {"wheel.theta", 0.3, {}}, {"Q3.s", 0.05, {}}, {"bar2.theta", -1.2, {}}, {"bar.theta_dot", 1.1, {}}};
+  return m;
+}
+
+/// A Scotch yoke: crank of radius r pinned to the ground at O, the yoke on the ground
+/// slider X along x, the crank's pin A in the yoke's vertical slot: Q closes the loop and
+/// the yoke's x is r cos(crank.theta).
+inline Mechanism scotch_yoke() {
+  Mechanism m;
+  m.name = "scotch-yoke";
+  m.gravity = q("g");
+  m.parameters = {{"r", 0.1, {}}, {"m", 0.3, {}}, {"g", 9.81, {}}};
+  m.ground_points = {{"O", {q("0"), q("0")}, {}}, {"R", {q("0"), q("-0.05")}, {}}};
+  m.bodies = {rod("crank", "m", "r", {{"O", {"-r/2", "0"}}, {"A", {"r/2", "0"}}}),
+              rectangle("yoke", "2*m", "0.05", "0.3", {{"B", {"0", "-0.05"}}, {"S", {"0", "0"}}})};
+  Joint along_x = pin("X", "ground", "R", "yoke", "B");
+  along_x.type = JointType::slider;
+  along_x.axis = Vector2Quantity{q("1"), q("0")};
+  m.joints = {pin("O", "ground", "O", "crank", "O"), along_x, pin_slot("Q", "yoke", "S", "crank", "A", {"0", "1"})};
+  m.initial = {{"crank.theta", 0.5, {}}, {"X.s", 0.0878, {}}, {"crank.theta_dot", 2.0, {}}};
+  m.independent = {"crank.theta"};
+  return m;
+}
+
+/// A pin-slot in the tree of a loop, its slotted body the child: a crank and a rocker
+/// pinned to the ground, a slotted bar reached through Q from the crank's pin (Q.s and
+/// yoke.theta), the pin F between the bar and the rocker closing the loop.
+inline Mechanism pin_slot_loop() {
+  Mechanism m;
+  m.name = "pin-slot-loop";
+  m.gravity = q("g");
+  m.parameters = {{"g", 9.81, {}}};
+  m.ground_points = {{"O", {q("0"), q("0")}, {}}, {"E", {q("0.4"), q("0")}, {}}};
+  m.bodies = {rod("crank", "0.2", "0.1", {{"O", {"-0.05", "0"}}, {"A", {"0.05", "0"}}}),
+              rod("rocker", "0.3", "0.3", {{"E", {"-0.15", "0"}}, {"F", {"0.15", "0"}}}),
+              rod("yoke", "0.4", "0.4", {{"S", {"-0.2", "0"}}, {"F", {"0.2", "0"}}})};
+  m.joints = {pin("O", "ground", "O", "crank", "O"), pin("E", "ground", "E", "rocker", "E"),
+              pin_slot("Q", "yoke", "S", "crank", "A", {"1", "0"}), pin("F", "yoke", "F", "rocker", "F")};
+  m.initial = {{"crank.theta", 1.0, {}}, {"rocker.theta", 1.5, {}},    {"Q.s", -0.0255, {}},
+               {"yoke.theta", 0.53, {}}, {"crank.theta_dot", 1.5, {}}, {"rocker.theta_dot", -0.8, {}}};
+  m.independent = {"crank.theta", "rocker.theta"};
+  return m;
+}
+
 /// A named mechanism for parameterized tests.
 struct Named {
   std::string name;
@@ -433,7 +504,10 @@ inline std::vector<Named> all_mechanisms() {
           {"welded_pendulum", welded_pendulum},
           {"welded_chain", welded_chain},
           {"welded_floating", welded_floating},
-          {"rolling", rolling_wheel_and_plank}};
+          {"rolling", rolling_wheel_and_plank},
+          {"pin_slot_tree", pin_slot_tree},
+          {"scotch_yoke", scotch_yoke},
+          {"pin_slot_loop", pin_slot_loop}};
 }
 
 /// A random state of `system`: with no loop, every generalized coordinate and rate drawn

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <random>
@@ -50,10 +51,10 @@ JointEnds ends_of(JointType type, const Placement& a, const Placement& b) {
   return ends;
 }
 
-// `child_is_b`: b placed by the joint from a and `coordinate`, else a from b.
-JointEnds placed(JointType type, const Placement& parent, bool child_is_b, const ex& coordinate) {
+// `child_is_b`: b placed by the joint from a and the tree's coordinates, else a from b.
+JointEnds placed(JointType type, const Placement& parent, bool child_is_b, const TreeCoordinates& coordinates) {
   JointEnds ends = ends_of(type, parent, parent);
-  const Placement child = joint_stages(type).place(ends, child_is_b, coordinate);
+  const Placement child = joint_stages(type).place(ends, child_is_b, coordinates);
   (child_is_b ? ends.b : ends.a) = child;
   return ends;
 }
@@ -76,7 +77,8 @@ TEST_P(JointStagesTest, RegisteredConsistently) {
   EXPECT_EQ(stages.own != nullptr, has_own_coordinate(joint_type_info(GetParam()).motion));
   // The scene draws a rail (a rolling surface) along the joint's axis: only a type that
   // takes one has it.
-  EXPECT_EQ(stages.drawing == JointDrawing::rail || stages.drawing == JointDrawing::rolling,
+  EXPECT_EQ(stages.drawing == JointDrawing::rail || stages.drawing == JointDrawing::rolling ||
+                stages.drawing == JointDrawing::slot,
             joint_type_info(GetParam()).axis);
   const JointEnds ends = ends_of(GetParam(), {}, {});
   // One multiplier per row: the unknowns are the force's components along the rows.
@@ -84,15 +86,15 @@ TEST_P(JointStagesTest, RegisteredConsistently) {
 }
 
 TEST_P(JointStagesTest, TreePlacementSatisfiesTheRows) {
-  const symbol x("x"), y("y"), theta("theta"), c("c");
+  const symbol x("x"), y("y"), theta("theta"), c("c"), s("s");
   const Placement parent{{x, y}, theta};
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> draw(-2, 2);
   for (const bool child_is_b : {true, false}) {
-    const std::vector<ex> rows = joint_stages(GetParam()).rows(placed(GetParam(), parent, child_is_b, c));
+    const std::vector<ex> rows = joint_stages(GetParam()).rows(placed(GetParam(), parent, child_is_b, {c, s}));
     ASSERT_FALSE(rows.empty());
     for (int k = 0; k < 5; ++k) {
-      const GiNaC::exmap at{{x, draw(rng)}, {y, draw(rng)}, {theta, draw(rng)}, {c, draw(rng)}};
+      const GiNaC::exmap at{{x, draw(rng)}, {y, draw(rng)}, {theta, draw(rng)}, {c, draw(rng)}, {s, draw(rng)}};
       for (const ex& row : rows) EXPECT_NEAR(evaluate(row, at), 0, kExact) << row << " child_is_b " << child_is_b;
     }
   }
@@ -100,24 +102,31 @@ TEST_P(JointStagesTest, TreePlacementSatisfiesTheRows) {
 
 TEST_P(JointStagesTest, CoordinateInvertsThePlacement) {
   const JointStages& stages = joint_stages(GetParam());
-  const symbol x("x"), y("y"), theta("theta"), c("c");
+  const symbol x("x"), y("y"), theta("theta"), c("c"), s("s");
   const Placement parent{{x, y}, theta};
-  const GiNaC::exmap at{{x, 0.4}, {y, -0.7}, {theta, 0.9}, {c, 0.35}};
+  const GiNaC::exmap at{{x, 0.4}, {y, -0.7}, {theta, 0.9}, {c, 0.35}, {s, -0.45}};
   for (const bool child_is_b : {true, false}) {
-    const JointEnds ends = placed(GetParam(), parent, child_is_b, c);
+    const JointEnds ends = placed(GetParam(), parent, child_is_b, {c, s});
     const Placement& child = child_is_b ? ends.b : ends.a;
     switch (joint_type_info(GetParam()).motion) {
-      case JointMotion::prismatic:
-        EXPECT_NEAR(evaluate(stages.coordinate(ends), at), 0.35, kExact) << "child_is_b " << child_is_b;
+      case JointMotion::prismatic:  // the travel; the child keeps its parent's angle
+        EXPECT_NEAR(evaluate(stages.coordinate(ends), at), -0.45, kExact) << "child_is_b " << child_is_b;
+        EXPECT_FALSE(child.angle.has(c));
         break;
       case JointMotion::revolute:  // the coordinate is the child's own angle
       case JointMotion::rolling:
         EXPECT_TRUE(stages.coordinate(ends).is_zero());
         EXPECT_NEAR(evaluate(child.angle, at), 0.35, kExact);
+        EXPECT_FALSE(child.position.x.has(s) || child.position.y.has(s));
+        break;
+      case JointMotion::slotted:  // the travel and the child's own angle
+        EXPECT_NEAR(evaluate(stages.coordinate(ends), at), -0.45, kExact) << "child_is_b " << child_is_b;
+        EXPECT_NEAR(evaluate(child.angle, at), 0.35, kExact);
         break;
       case JointMotion::fixed:  // none: the child is placed by the parent alone
         EXPECT_TRUE(stages.coordinate(ends).is_zero());
-        EXPECT_FALSE(child.position.x.has(c) || child.position.y.has(c) || child.angle.has(c));
+        EXPECT_FALSE(child.position.x.has(c) || child.position.y.has(c) || child.angle.has(c) ||
+                     child.position.x.has(s) || child.position.y.has(s));
         EXPECT_NEAR(evaluate(child.angle, at), 0.9 + (child_is_b ? 0.6 : -0.6), kExact) << child_is_b;
         break;
     }
@@ -132,9 +141,9 @@ TEST_P(JointStagesTest, ForceDoesNoWorkOnTheMotionItAllows) {
   const symbol t("t"), f0("f0"), f1("f1"), f2("f2");
   const Placement parent{{0.3 + 0.2 * GiNaC::sin(1.3 * t), -0.4 + 0.1 * GiNaC::cos(0.7 * t)},
                          0.2 + 0.5 * GiNaC::sin(0.9 * t)};
-  const ex coordinate = 0.25 + 0.3 * GiNaC::sin(1.1 * t);
+  const TreeCoordinates coordinates{0.25 + 0.3 * GiNaC::sin(1.1 * t), -0.1 + 0.4 * GiNaC::cos(0.8 * t)};
   for (const bool child_is_b : {true, false}) {
-    const JointEnds ends = placed(GetParam(), parent, child_is_b, coordinate);
+    const JointEnds ends = placed(GetParam(), parent, child_is_b, coordinates);
     JointSystem js;
     js.unknowns = {f0, f1, f2};
     js.unknowns.resize(stages.rows(ends).size());
@@ -208,7 +217,9 @@ TEST_P(JointStagesTest, VelocityAndAccelerationRowsAreTheRowsDerivatives) {
 
 INSTANTIATE_TEST_SUITE_P(EveryType, JointStagesTest, ::testing::ValuesIn(all_types()),
                          [](const ::testing::TestParamInfo<JointType>& type) {
-                           return std::string(joint_type_name(type.param));
+                           std::string name = joint_type_name(type.param);  // "pin-slot" as pin_slot
+                           std::replace(name.begin(), name.end(), '-', '_');
+                           return name;
                          });
 
 // --- joint_pin.cpp ------------------------------------------------------------------
@@ -377,6 +388,79 @@ TEST(JointRolling, ForceIsNormalAndFrictionAtTheContactPoint) {
   EXPECT_FALSE(rolling.moment_column);
   EXPECT_TRUE(rolling.unknown_columns);
   EXPECT_EQ(joint_type_info(JointType::rolling).rows, 2);
+}
+
+// --- joint_pin_slot.cpp ---------------------------------------------------------------
+
+TEST(JointPinSlot, DrawnAsASlot) { EXPECT_EQ(joint_stages(JointType::pin_slot).drawing, JointDrawing::slot); }
+
+// The slot of a (at (1, 2), turned pi/2: its axis [2, 0] points along +y in the world,
+// n along -x) through its point A at (0.3, 0) of a's frame, so at (1, 2.3) in the world:
+// the row is n . (P - A) = -(P.x - 1), the travel u . (P - A) = P.y - 2.3, whatever b's angle.
+TEST(JointPinSlot, RowIsTheDistanceAcrossTheSlotAndTheTravelAlongIt) {
+  const symbol x("x"), y("y"), th("th");
+  JointEnds ends;
+  ends.a = {{ex(1), ex(2)}, GiNaC::Pi / 2};
+  ends.b = {{x, y}, th};
+  ends.point_a = {ex(0.3), ex(0)};
+  ends.axis = {ex(2), ex(0)};
+  const JointStages& slot = joint_stages(JointType::pin_slot);
+  const std::vector<ex> rows = slot.rows(ends);
+  ASSERT_EQ(rows.size(), 1U);
+  EXPECT_TRUE((rows[0] + (x - 1)).expand().is_zero()) << rows[0];
+  for (const double at : {-0.4, 0.9})  // 2.3 in binary: compared as numbers
+    EXPECT_NEAR(evaluate(slot.coordinate(ends), {{x, 0.2}, {y, at}, {th, 0.7}}), at - 2.3, kExact);
+  EXPECT_EQ(joint_type_info(JointType::pin_slot).rows, 1);
+}
+
+// N n on bodies[0] at the pin, no moment; written as JOINT.normal; not drivable; in the
+// tree the travel s and the child's own angle.
+TEST(JointPinSlot, ForceIsAcrossTheSlotAtThePin) {
+  const JointStages& slot = joint_stages(JointType::pin_slot);
+  const std::vector<ForceUnknown> unknowns = slot.unknowns(joint_of(JointType::pin_slot), false, "body 1");
+  ASSERT_EQ(unknowns.size(), 1U);
+  EXPECT_EQ(unknowns[0].key, "normal");
+  const symbol n("N"), th("th");
+  JointEnds ends;
+  ends.a.angle = th;
+  ends.axis = {ex(3), ex(0)};  // u = (cos th, sin th), n = (-sin th, cos th)
+  JointSystem js;
+  js.unknowns = {n};
+  slot.force(js, ends);
+  EXPECT_TRUE((js.force.x + n * GiNaC::sin(th)).expand().is_zero()) << js.force.x;
+  EXPECT_TRUE((js.force.y - n * GiNaC::cos(th)).expand().is_zero()) << js.force.y;
+  EXPECT_TRUE(js.moment.is_zero());
+  EXPECT_TRUE(slot.force_at_point_b);
+  EXPECT_FALSE(slot.moment_column);
+  EXPECT_TRUE(slot.unknown_columns);
+  EXPECT_FALSE(drivable(JointType::pin_slot));
+  EXPECT_EQ(slot.driven, nullptr);
+  EXPECT_EQ(joint_type_info(JointType::pin_slot).motion, JointMotion::slotted);
+  EXPECT_FALSE(joint_type_info(JointType::pin_slot).keeps_angle);
+}
+
+// In the tree it adds its travel, then the child's angle (a point mass: the travel alone);
+// closing a loop it is one row.
+TEST(JointPinSlot, TreeCoordinatesAndLoopRows) {
+  const auto keys = [](const System& system) {
+    std::vector<std::string> out;
+    for (const GeneralizedCoordinate& g : system.coordinates()) out.push_back(g.coordinate.key);
+    return out;
+  };
+  const System tree(built::pin_slot_tree());
+  EXPECT_EQ(keys(tree),
+            (std::vector<std::string>{"bar.theta", "Q.s", "block.theta", "Q2.s", "wheel.theta", "Q3.s", "bar2.theta"}));
+  EXPECT_TRUE(tree.tree().loop_joints.empty());
+  const System loop(built::scotch_yoke());
+  EXPECT_EQ(keys(loop), (std::vector<std::string>{"crank.theta", "X.s"}));
+  ASSERT_EQ(loop.tree().loop_joints, std::vector<int>{2});
+  EXPECT_EQ(loop.joints()[2].constraints.size(), 1U);
+  EXPECT_EQ(degrees_of_freedom(loop.mechanism()), 1);
+  // The slotted bar as the child (bodies[0] of Q), the pin F closing the loop.
+  const System child_slotted(built::pin_slot_loop());
+  EXPECT_EQ(keys(child_slotted), (std::vector<std::string>{"crank.theta", "rocker.theta", "Q.s", "yoke.theta"}));
+  EXPECT_EQ(child_slotted.tree().loop_joints, std::vector<int>{3});
+  EXPECT_EQ(degrees_of_freedom(child_slotted.mechanism()), 2);
 }
 
 }  // namespace
