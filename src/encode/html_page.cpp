@@ -51,18 +51,35 @@ constexpr std::string_view kScript = R"js(
   const shown = new Set(data.toggles);
   slider.max = String(count - 1);
 
-  const images = new Map();  // each distinct SVG decoded once, when first needed
-  function image(svg) {
-    let entry = images.get(svg);
-    if (!entry) {
-      const img = new Image();
-      // Each subpath's commands are an entry of the page's book of paths: put back.
-      const text = data.svgs[svg].replace(/ d="([^"]*)"/g, (_, d) =>
+  // A frame is one SVG document of its shown layers' contents, in the painter's order:
+  // the browser draws it at once. The last few are kept decoded.
+  const bodies = new Map();
+  function body(svg) {  // each subpath's commands are an entry of the page's book of paths: put back
+    let text = bodies.get(svg);
+    if (text === undefined) {
+      text = data.svgs[svg].replace(/ d="([^"]*)"/g, (_, d) =>
         ' d="' + d.replace(/@(\d+)/g, (__, i) => data.paths[Number(i)]) + '"');
-      img.src = URL.createObjectURL(new Blob([text], { type: "image/svg+xml" }));
-      entry = img.decode().then(() => img);
-      images.set(svg, entry);
+      bodies.set(svg, text);
     }
+    return text;
+  }
+  function decoded(svgs) {
+    const text = '<svg xmlns="http://www.w3.org/2000/svg" xmlns:xlink="http://www.w3.org/1999/xlink" width="' +
+      data.width + '" height="' + data.height + '" viewBox="0 0 ' + data.width + " " + data.height + '">' +
+      svgs.map(body).join("") + "</svg>";
+    const url = URL.createObjectURL(new Blob([text], { type: "image/svg+xml" }));
+    const img = new Image();
+    img.src = url;
+    return img.decode().then(() => { URL.revokeObjectURL(url); return img; });
+  }
+  const pictures = new Map();
+  function picture(svgs) {
+    const key = svgs.join(",");
+    let entry = pictures.get(key);
+    if (entry) pictures.delete(key);  // kept as the newest
+    else entry = decoded(svgs);
+    pictures.set(key, entry);
+    while (pictures.size > 12) pictures.delete(pictures.keys().next().value);
     return entry;
   }
   const visible = (layer) => data.layers[layer].needs.every((e) => shown.has(e));
@@ -73,14 +90,14 @@ constexpr std::string_view kScript = R"js(
   }
   async function draw(k) {
     const request = ++page.requested;
-    const imgs = await Promise.all(layersOf(k).map(image));
+    const img = await picture(layersOf(k));
     if (request !== page.requested) return;  // a later frame was asked for meanwhile
     ctx.clearRect(0, 0, canvas.width, canvas.height);
-    for (const img of imgs) ctx.drawImage(img, 0, 0);
+    ctx.drawImage(img, 0, 0);
     page.drawn = k;
     page.completed = request;
     // The next frames decoded ahead, so playing does not wait for them.
-    for (let j = k + 1; j < Math.min(count, k + 4); ++j) layersOf(j).forEach(image);
+    for (let j = k + 1; j < Math.min(count, k + 3); ++j) picture(layersOf(j));
   }
   function show(k) {
     k = Math.max(0, Math.min(count - 1, Math.round(k)));
@@ -187,6 +204,18 @@ constexpr std::string_view kScript = R"js(
   });
   canvas.addEventListener("mouseleave", () => { hover.hidden = true; });
 
+  // For tests: the pixels of frame k's layers that need `element`, drawn alone.
+  page.layersAlone = async (k, element) => {
+    const needs = (layer) => data.layers[layer].needs;
+    const svgs = data.frames[k].filter((svg, layer) => svg >= 0 && needs(layer).includes(element) &&
+                                       needs(layer).every((e) => e === element || shown.has(e)));
+    const alone = document.createElement("canvas");
+    alone.width = data.width;
+    alone.height = data.height;
+    const c = alone.getContext("2d");
+    c.drawImage(await decoded(svgs), 0, 0);
+    return c.getImageData(0, 0, data.width, data.height).data;
+  };
   page.count = count;
   page.times = data.times;
   page.arrows = (k) => data.arrows[k];

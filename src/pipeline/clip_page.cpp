@@ -169,13 +169,28 @@ class PathBook {
   std::vector<std::string> entries_;
 };
 
-/// Cairo numbers each SVG surface it makes; without that number, a layer the same in two
+void replace_all(std::string& text, std::string_view from, std::string_view to) {
+  for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+    text.replace(at, from.size(), to);
+}
+
+/// What a layer's SVG draws: its content without the document around it, its ids (glyphs,
+/// clips) prefixed by the layer's number, so a frame's layers go into one document, which
+/// the browser draws at once. Cairo's surface number is left out: a layer the same in two
 /// frames is the same text.
-std::string without_surface_id(std::string svg) {
-  const std::size_t at = svg.find("<g id=\"surface");
-  if (at == std::string::npos) return svg;
-  const std::size_t end = svg.find('>', at);
-  return svg.replace(at, end - at, "<g");
+std::string layer_body(std::string svg, std::size_t layer) {
+  const std::size_t surface = svg.find("<g id=\"surface");
+  if (surface != std::string::npos) svg.replace(surface, svg.find('>', surface) - surface, "<g");
+  const std::string number = std::to_string(layer);
+  for (const std::string_view reference : {"id=\"", "href=\"#", "url(#"}) {
+    std::string prefixed(reference);
+    prefixed.append("l").append(number).append("-");
+    replace_all(svg, reference, prefixed);
+  }
+  const std::size_t open = svg.find("<svg ");
+  const std::size_t begin = open == std::string::npos ? 0 : svg.find('>', open) + 1;
+  const std::size_t end = svg.rfind("</svg>");
+  return svg.substr(begin, end == std::string::npos || end < begin ? std::string::npos : end - begin);
 }
 
 }  // namespace
@@ -185,7 +200,7 @@ void produce_clip_page(MechanismClipFrames& frames, const MechanismClip& clip, c
   const RenderSettings& s = clip.settings;
   const auto start = std::chrono::steady_clock::now();
   PathBook paths;
-  const std::string blank = paths.compact(without_surface_id(empty_layer(s.width, s.height)));
+  const std::string blank = paths.compact(layer_body(empty_layer(s.width, s.height), 0));
   std::unordered_map<std::string, int> index;  // each distinct SVG once
   nlohmann::json svgs = nlohmann::json::array(), frame_layers = nlohmann::json::array(),
                  arrows = nlohmann::json::array(), times = nlohmann::json::array();
@@ -200,7 +215,7 @@ void produce_clip_page(MechanismClipFrames& frames, const MechanismClip& clip, c
     nlohmann::json row = nlohmann::json::array();
     std::array<std::string, kPaintLayers>& texts = layers.finish();
     for (std::size_t i = 0; i < kPaintLayers; ++i) {
-      std::string text = paths.compact(without_surface_id(std::move(texts[i])));
+      std::string text = paths.compact(layer_body(std::move(texts[i]), i));
       if (text == blank) {
         row.push_back(-1);
         continue;
