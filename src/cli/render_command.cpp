@@ -82,6 +82,7 @@ RenderRequest resolve_request(const RenderFlags& f) {
   target.still = out.has_value();
   try {
     if (out) target.still = is_still(output_kind(*out, "out"));
+    if (out) target.page = output_kind(*out, "out") == OutputKind::html;
   } catch (const Error&) {  // a bad --out is the clip's checks' to report
   }
   if (!f.modes_sheet.empty()) target.still = true;
