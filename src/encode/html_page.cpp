@@ -111,9 +111,11 @@ constexpr std::string_view kScript = R"js(
 
   // Playing: the frames at the clip's rate times the chosen speed, from where it is.
   let started = 0, from = 0;
-  function tick(now) {
+  function tick() {
     if (!page.playing) return;
-    const k = from + Math.floor((now - started) / 1000 * data.fps * page.rate);
+    // performance.now(), not the callback's time: that is the frame's start, which can come
+    // before play() was pressed.
+    const k = from + Math.max(0, Math.floor((performance.now() - started) / 1000 * data.fps * page.rate));
     if (k >= count - 1) {
       show(count - 1);
       pause();

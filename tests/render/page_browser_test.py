@@ -1,12 +1,12 @@
 #!/usr/bin/env python3
 """`linkage render --out clip.html` driven in headless Chromium (issue 28).
 
-Makes pages of the four-bar, the homework (two-blocks) and a mechanism titled with a
-script tag, opens each from file:// in one browser, and checks: no console errors; the
-canvas scrubbed to t = 3 s is the clip's frame at 3 s as Cairo draws it, to the tolerance
-below; hiding the
-joint forces changes exactly the pixels of their layers; the keys step and play; the
-title shows as text and runs nothing. With --stills DIR, also writes the screenshots
+Makes pages of the four-bar, the homework (two-blocks), every shipped mechanism (short)
+and a mechanism titled with a script tag, opens each from file:// in one browser, and
+checks: no console errors; the canvas scrubbed to t = 3 s is the clip's frame at 3 s as
+Cairo draws it, to the tolerance below; hiding the joint forces changes exactly the
+pixels of their layers; the keys step and play; the title shows as text and runs
+nothing. With --stills DIR, also writes the screenshots
 docs/stills/page-four-bar-t0.png and -t3.png.
 
     page_browser_test.py LINKAGE SOURCE_DIR WORK_DIR [--stills DIR]
@@ -179,6 +179,12 @@ def main():
                                     "title = " + json.dumps(XSS_TITLE), 1))
     hostile_page = WORK / "hostile.html"
     linkage("render", "--mechanism", str(hostile), "--duration", "1", "--out", str(hostile_page))
+    # Every shipped mechanism's page, short and small: it opens, draws, logs no error.
+    shipped = []
+    for toml in sorted((SOURCE / "mechanisms").glob("*.toml")):
+        shipped.append(WORK / ("shipped-" + toml.stem + ".html"))
+        linkage("render", "--mechanism", str(toml), "--duration", "0.2", "--size", "320x180", "--out",
+                str(shipped[-1]))
     size = four_bar.stat().st_size
     check(size < 2_000_000, f"the four-bar's 10 s page is under 2 MB ({size} bytes)")
 
@@ -261,6 +267,14 @@ def main():
         check(open_page(driver, homework), "the homework's page opens")
         check(errors(driver) == [], "no console errors on the homework's page")
         check(driver.execute_script("return window.linkagePage.count") == 60, "the homework's 2 s: 60 frames")
+
+        for page in shipped:
+            opened = open_page(driver, page)
+            if opened:
+                driver.execute_script("window.linkagePage.show(window.linkagePage.count - 1)")
+                settle(driver)
+            check(opened and driver.execute_script("return window.linkagePage.drawn") == 5 and errors(driver) == [],
+                  f"{page.name}: opens, draws its last frame (the 6th: 0.2 s at 30 fps), no console errors")
 
         check(open_page(driver, hostile_page), "the page of a mechanism titled with a script opens")
         try:
