@@ -1,7 +1,7 @@
 // `linkage render`: the flags turned into a Clip (src/pipeline), produced with progress
-// on stderr: an MP4 (H.264), GIF or WebM (VP9) through the FFmpeg libraries, a numbered PNG sequence, or
-// one still (PNG, SVG, PDF). Everything is checked before any work starts; outputs
-// appear whole or not at all.
+// on stderr: an MP4 (H.264), GIF or WebM (VP9) through the FFmpeg libraries, an interactive
+// HTML page (pipeline/clip_page), a numbered PNG sequence, or one still (PNG, SVG, PDF). Everything is checked before
+// any work starts; outputs appear whole or not at all.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -82,6 +82,7 @@ RenderRequest resolve_request(const RenderFlags& f) {
   target.still = out.has_value();
   try {
     if (out) target.still = is_still(output_kind(*out, "out"));
+    if (out) target.page = output_kind(*out, "out") == OutputKind::html;
   } catch (const Error&) {  // a bad --out is the clip's checks' to report
   }
   if (!f.modes_sheet.empty()) target.still = true;
@@ -276,11 +277,14 @@ void run_render(const RenderFlags& flags) {
 
 void register_render(CLI::App& app) {
   auto f = std::make_shared<RenderFlags>();
-  CLI::App* sub = app.add_subcommand("render", "Draw the motion: an MP4 clip, a PNG sequence, or a PNG/SVG/PDF still");
+  CLI::App* sub = app.add_subcommand("render",
+                                     "Draw the motion: an MP4 clip, an interactive HTML page, a PNG sequence, or a "
+                                     "PNG/SVG/PDF still");
   const std::string output = "Output";
   f->out_option = sub->add_option("--out", f->out,
-                                  "Output file: .mp4 (H.264), .gif or .webm (VP9) clip, .png (still), .svg or .pdf "
-                                  "(vector still); "
+                                  "Output file: .mp4 (H.264), .gif or .webm (VP9) clip, .html (interactive page: play, "
+                                  "scrub, toggle forces, read values; one self-contained file), .png (still), .svg or "
+                                  ".pdf (vector still); "
                                   "written atomically (default linkage.mp4, or none with --frames alone)")
                       ->type_name("FILE")
                       ->group(output);

@@ -753,6 +753,7 @@ class Parser {
       base.captions = captions(r, s.kind, base.duration);
       RenderTarget target;
       target.still = is_still(s.kind);
+      target.page = s.kind == OutputKind::html;
       target.spell = [](std::string_view key) { return std::string(key); };
       RenderRequest& request = s.request = resolve_render_options(given, target, base);
       if (is_still(s.kind) && r.has("duration"))

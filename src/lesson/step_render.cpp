@@ -38,6 +38,24 @@ ClipPlan step_plan(const std::filesystem::path& out, const std::filesystem::path
   return plan;
 }
 
+/// How a handout shows a render step's output: a still as a figure, a clip as a video, a
+/// page (.html) as a link to open.
+FigureRef::Kind figure_kind(OutputKind kind) {
+  switch (kind) {
+    case OutputKind::png:
+    case OutputKind::svg:
+    case OutputKind::pdf:
+      return FigureRef::Kind::image;
+    case OutputKind::mp4:
+    case OutputKind::gif:
+    case OutputKind::webm:
+      return FigureRef::Kind::video;
+    case OutputKind::html:
+      return FigureRef::Kind::file;
+  }
+  return FigureRef::Kind::file;
+}
+
 }  // namespace
 
 CheckedMechanismClip render_clip(const RenderStep& render, Quality quality, const std::filesystem::path& out_dir,
@@ -77,8 +95,7 @@ void run_render(RunContext& c, const Step& step, const RenderStep& s) {
     return made_results;
   });
   c.warn(step, results);
-  const FigureRef::Kind kind = is_still(s.kind) ? FigureRef::Kind::image : FigureRef::Kind::video;
-  c.both([&](Writer& w) { w.figure(c.figure(s.out, kind, s.caption)); });
+  c.both([&](Writer& w) { w.figure(c.figure(s.out, figure_kind(s.kind), s.caption)); });
 }
 
 }  // namespace linkage::lesson

@@ -16,6 +16,7 @@
 #include "core/parse_text.hpp"
 #include "integrate/mechanism_simulation.hpp"
 #include "model/mechanism_toml.hpp"
+#include "pipeline/clip_page.hpp"
 #include "pipeline/encode_frames.hpp"
 #include "pipeline/panel_data.hpp"
 #include "render/cairo_util.hpp"
@@ -233,6 +234,15 @@ class MechanismFrames {
   /// Sample k onto any surface's context (a vector still's), at the origin; with
   /// `backdrop_painted`, over the backdrop already there; `cache`: a raster clip's, kept across frames.
   void paint(std::size_t k, cairo_t* cr, bool backdrop_painted = false, MechanismPaintCache* cache = nullptr) {
+    cairo_save(cr);
+    paint(
+        k, [cr](PaintLayer) { return cr; }, backdrop_painted, cache);
+    cairo_restore(cr);
+    cairo::check(cr, "drawing a frame");
+  }
+  /// The same, each of the painter's steps onto its layer's context.
+  void paint(std::size_t k, const LayerContexts& at, bool backdrop_painted = false,
+             MechanismPaintCache* cache = nullptr) {
     const auto start = std::chrono::steady_clock::now();
     fill_list(k);
     for (const MechanismDrawList::Line& line : list_.lines)
@@ -242,11 +252,8 @@ class MechanismFrames {
     const Camera camera = camera_at(k);
     // The camera a frame earlier (the samples are a frame apart): the grid streaks from there.
     const Camera earlier = k > 0 ? camera_at(k - 1) : camera;
-    cairo_save(cr);
-    layout_ = paint_mechanism_frame(cr, style_, camera, list_, labels_, motion_.times[k], settings_.width,
+    layout_ = paint_mechanism_frame(at, style_, camera, list_, labels_, motion_.times[k], settings_.width,
                                     settings_.height, &earlier, backdrop_painted, cache);
-    cairo_restore(cr);
-    cairo::check(cr, "drawing a frame");
     ++stats_.frames_drawn;
     stats_.draw_seconds += seconds_since(start);
   }
@@ -761,7 +768,8 @@ void MechanismClip::validate(const sym::System& system) const {
   settings.validate();
   simulation.validate();
   if (out) {
-    if (!is_still()) VideoWriter::validate(clip_video_options(settings, output_kind(*out, "out")));
+    if (is_video(output_kind(*out, "out")))
+      VideoWriter::validate(clip_video_options(settings, output_kind(*out, "out")));
     require_writable_directory(out->parent_path(), "out");
   }
   if (frames && fs::exists(*frames, ec) && !fs::is_directory(*frames, ec))
@@ -830,6 +838,16 @@ void MechanismClipFrames::draw(std::size_t k, Frame& frame) {
   drawn_->layout.draw(k, drawn_->times[k], frame, [&](Frame& scene) { drawn_->frames.draw(k, scene); });
 }
 
+void MechanismClipFrames::draw_layers(std::size_t k, const LayerContexts& at) {
+  if (k >= drawn_->times.size())
+    throw Error::failure("frame " + std::to_string(k) + " of a clip of " + std::to_string(drawn_->times.size()));
+  drawn_->layout.draw_layers(drawn_->times[k], at, [&](const LayerContexts& scene) { drawn_->frames.paint(k, scene); });
+}
+
+double MechanismClipFrames::time(std::size_t k) const { return drawn_->times.at(k); }
+
+Rect MechanismClipFrames::scene_rect() const { return drawn_->layout.scene_rect(); }
+
 const RenderStats& MechanismClipFrames::stats() const { return drawn_->frames.stats(); }
 
 Camera MechanismClipFrames::camera(std::size_t k) const { return drawn_->frames.camera_at(k); }
@@ -844,9 +862,12 @@ ClipResult produce_mechanism_clip(const sym::System& system, const GiNaC::exmap&
   ClipResult result;
   if (clip.frames || (clip.out && !clip.is_still())) {
     MechanismClipFrames frames(system, initial, clip, result, progress);
-    encode_frames(
-        clip.out && is_video(output_kind(*clip.out, "out")) ? clip.out : std::nullopt, clip.frames, clip.settings,
-        frames.count(), [&](std::size_t k, Frame& frame) { frames.draw(k, frame); }, progress, result);
+    const bool page = clip.out && output_kind(*clip.out, "out") == OutputKind::html;
+    if (page) produce_clip_page(frames, clip, *clip.out, progress, result);
+    if (clip.frames || !page)
+      encode_frames(
+          clip.out && is_video(output_kind(*clip.out, "out")) ? clip.out : std::nullopt, clip.frames, clip.settings,
+          frames.count(), [&](std::size_t k, Frame& frame) { frames.draw(k, frame); }, progress, result);
     add_drawing(result.stats, frames.stats());
   }
   if (clip.is_still()) produce_still(system, initial, clip, progress, result);

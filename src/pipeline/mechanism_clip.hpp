@@ -17,6 +17,7 @@
 #include "pipeline/mode_motion.hpp"
 #include "pipeline/trajectory_csv.hpp"
 #include "render/mechanism_forces.hpp"
+#include "render/paint_layer.hpp"
 #include "render/panel.hpp"
 #include "render/settings.hpp"
 #include "render/theme.hpp"
@@ -154,6 +155,12 @@ class MechanismClipFrames {
   [[nodiscard]] long count() const;
   /// Frame k (0 .. count() - 1) into `frame`, of the settings' size.
   void draw(std::size_t k, Frame& frame);
+  /// Frame k's painting, each step onto its layer's context (render/paint_layer.hpp), the
+  /// panel, equations and caption onto PaintLayer::around's: composited, frame k.
+  void draw_layers(std::size_t k, const LayerContexts& at);
+  /// Frame k's time, s; where in the frame the motion is drawn (the arrows' pixels are in it).
+  [[nodiscard]] double time(std::size_t k) const;
+  [[nodiscard]] Rect scene_rect() const;
   /// The drawing's figures so far (frames, trail points, seconds).
   [[nodiscard]] const RenderStats& stats() const;
   /// The camera of frame k (a following one is centred on the centroid at k; the grid

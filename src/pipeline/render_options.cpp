@@ -263,6 +263,10 @@ RenderRequest resolve_render_options(const std::vector<std::pair<std::string, st
   }
   apply_show_hide(s.elements, d.show, d.hide);
   s.validate();
+  if (d.at && target.page)
+    throw Error::invalid("at", "a page shows every time 0 .. " + target.spell("duration") + " on its slider; " +
+                                   target.spell("at") + " applies to a still (" + target.spell("out") +
+                                   " FILE.png, .svg or .pdf)");
   if (d.at && !target.still)
     throw Error::invalid("at", "applies to a still (" + target.spell("out") + " FILE.png, .svg or .pdf" +
                                    "); a clip shows 0 .. " + target.spell("duration"));

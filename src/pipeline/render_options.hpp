@@ -40,6 +40,7 @@ struct RenderOption {
 /// The picture the options are for, and how its reader spells things in messages.
 struct RenderTarget {
   bool still = false;  // the output is one still
+  bool page = false;   // the output is an interactive page (.html): every time on its slider
   /// How the reader names an option when a message points to another: "--view" or "view".
   std::function<std::string(std::string_view name)> spell;
 };

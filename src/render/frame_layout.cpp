@@ -135,4 +135,17 @@ void FrameLayout::draw_vector(std::size_t /*index*/, double t, cairo_t* cr,
   paint_around(t, cr);
 }
 
+void FrameLayout::draw_layers(double t, const LayerContexts& at,
+                              const std::function<void(const LayerContexts&)>& scene) {
+  for (std::size_t i = 0; i < kPaintLayers; ++i) {
+    cairo_t* cr = at(static_cast<PaintLayer>(i));
+    cairo_save(cr);
+    cairo_rectangle(cr, scene_.x, scene_.y, scene_.width, scene_.height);
+    cairo_clip(cr);
+  }
+  scene(at);
+  for (std::size_t i = 0; i < kPaintLayers; ++i) cairo_restore(at(static_cast<PaintLayer>(i)));
+  paint_around(t, at(PaintLayer::around));
+}
+
 }  // namespace linkage

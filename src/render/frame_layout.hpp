@@ -13,6 +13,7 @@
 
 #include "core/frame.hpp"
 #include "render/equations_overlay.hpp"
+#include "render/paint_layer.hpp"
 #include "render/panel.hpp"
 #include "render/settings.hpp"
 #include "render/style.hpp"
@@ -55,6 +56,9 @@ class FrameLayout {
   void draw(std::size_t index, double t, Frame& frame, const std::function<void(Frame&)>& scene);
   /// The same onto a vector surface's context, `scene` drawing at the origin.
   void draw_vector(std::size_t index, double t, cairo_t* cr, const std::function<void(cairo_t*)>& scene);
+  /// The same with each step of the painting onto its layer's context: `scene` paints the
+  /// motion (clipped to its part), the panel, equations and caption go onto PaintLayer::around's.
+  void draw_layers(double t, const LayerContexts& at, const std::function<void(const LayerContexts&)>& scene);
 
  private:
   /// The panel (its sample at t: it may be sampled more finely than the frames), equations, caption.

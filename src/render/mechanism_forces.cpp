@@ -575,10 +575,17 @@ const Rgba& arrow_colour(const Theme& theme, MechanismDrawList::Arrow::Kind kind
 
 void paint_forces(cairo_t* cr, const DrawStyle& style, const Camera& camera, const MechanismDrawList& list,
                   const ForceLayout& layout) {
+  paint_forces([cr](PaintLayer) { return cr; }, style, camera, list, layout);
+}
+
+void paint_forces(const LayerContexts& at, const DrawStyle& style, const Camera& camera, const MechanismDrawList& list,
+                  const ForceLayout& layout) {
   const Theme& theme = *style.theme;
-  for (const List::Torque& torque : list.torques) paint_torque(cr, style, camera, torque);
+  for (const List::Torque& torque : list.torques)
+    paint_torque(at(torque.driver ? PaintLayer::torque_driver : PaintLayer::torque_applied), style, camera, torque);
   for (std::size_t i = 0; i < list.arrows.size(); ++i) {
     const List::Arrow& arrow = list.arrows[i];
+    cairo_t* cr = at(arrow_layer(arrow.kind));
     const Rgba& colour = arrow_colour(theme, arrow.kind);
     const bool laid_out = layout.arrows.size() == list.arrows.size();
     const Vec2 tail = laid_out ? layout.arrows[i].a : camera.to_pixels(arrow.tail);
@@ -592,8 +599,9 @@ void paint_forces(cairo_t* cr, const DrawStyle& style, const Camera& camera, con
   // Labels after every arrow, so no shaft crosses a label.
   const text::Font font = label_font(style);
   for (const PlacedLabel& label : layout.labels) {
+    cairo_t* cr = at(label.joint ? PaintLayer::joint_names : label_layer(label.kind));
     const Rgba& colour = label.joint ? theme.text : arrow_colour(theme, label.kind);
-    const Vec2 at = centre_of(label.box);
+    const Vec2 centre = centre_of(label.box);
     if (label.leader) {
       // A thin line from the head to the box's nearest point.
       const Vec2 near(std::clamp(label.head.x(), label.box.x, label.box.x + label.box.width),
@@ -604,8 +612,10 @@ void paint_forces(cairo_t* cr, const DrawStyle& style, const Camera& camera, con
       cairo_line_to(cr, near.x(), near.y());
       cairo_stroke(cr);
     }
-    text::draw_centred_with_halo(cr, font, at.x(), at.y(), label.text.c_str(), colour, theme.background, 2.5 * style.u);
+    text::draw_centred_with_halo(cr, font, centre.x(), centre.y(), label.text.c_str(), colour, theme.background,
+                                 2.5 * style.u);
   }
+  cairo_t* cr = at(PaintLayer::legend);
   paint_legend(cr, style, camera, list.legend, layout.legend);
   if (!layout.scale_bar.empty()) paint_scale_bar(cr, style, layout.scale_label, layout.scale_px, layout.scale_bar);
 }

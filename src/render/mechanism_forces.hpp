@@ -11,6 +11,7 @@
 #include "render/camera.hpp"
 #include "render/label_layout.hpp"
 #include "render/overlays.hpp"
+#include "render/paint_layer.hpp"
 #include "render/style.hpp"
 #include "scene/mechanism_scene.hpp"
 
@@ -70,6 +71,9 @@ void paint_motors(cairo_t* cr, const DrawStyle& style, const Camera& camera, con
 
 /// The arrows and torque arcs, then the laid-out labels and the legend.
 void paint_forces(cairo_t* cr, const DrawStyle& style, const Camera& camera, const MechanismDrawList& list,
+                  const ForceLayout& layout);
+/// The same, each arrow, torque and label onto its layer's context, the legend onto the legend's.
+void paint_forces(const LayerContexts& at, const DrawStyle& style, const Camera& camera, const MechanismDrawList& list,
                   const ForceLayout& layout);
 
 }  // namespace linkage

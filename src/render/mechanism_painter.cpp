@@ -499,51 +499,70 @@ GridSpec frame_grid(const Camera& camera, const ElementSet& shown, const Mechani
 
 void paint_mechanism_backdrop(cairo_t* cr, const DrawStyle& style, const Camera& camera, const ElementSet& shown,
                               const MechanismLabels& labels, int width, int height, const Camera* earlier) {
-  paint_background(cr, style, width, height);
+  paint_mechanism_backdrop([cr](PaintLayer) { return cr; }, style, camera, shown, labels, width, height, earlier);
+}
+
+void paint_mechanism_backdrop(const LayerContexts& at, const DrawStyle& style, const Camera& camera,
+                              const ElementSet& shown, const MechanismLabels& labels, int width, int height,
+                              const Camera* earlier) {
+  paint_background(at(PaintLayer::backdrop), style, width, height);
   if (shown.has(Element::grid))  // streaking past a following camera
-    paint_grid(cr, style, camera, frame_grid(camera, shown, labels, width, height), width, height, earlier);
+    paint_grid(at(PaintLayer::grid), style, camera, frame_grid(camera, shown, labels, width, height), width, height,
+               earlier);
 }
 
 ForceLayout paint_mechanism_frame(cairo_t* cr, const DrawStyle& style, const Camera& camera,
                                   const MechanismDrawList& list, const MechanismLabels& labels, double t, int width,
                                   int height, const Camera* earlier, bool backdrop_painted,
                                   MechanismPaintCache* cache) {
+  return paint_mechanism_frame([cr](PaintLayer) { return cr; }, style, camera, list, labels, t, width, height, earlier,
+                               backdrop_painted, cache);
+}
+
+ForceLayout paint_mechanism_frame(const LayerContexts& at, const DrawStyle& style, const Camera& camera,
+                                  const MechanismDrawList& list, const MechanismLabels& labels, double t, int width,
+                                  int height, const Camera* earlier, bool backdrop_painted,
+                                  MechanismPaintCache* cache) {
   const ElementSet& shown = list.shown;
   const GridSpec grid = frame_grid(camera, shown, labels, width, height);
-  if (!backdrop_painted) paint_mechanism_backdrop(cr, style, camera, shown, labels, width, height, earlier);
-  cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
-  paint_lines(cr, style, camera, list, List::Line::Kind::trail);
-  paint_lines(cr, style, camera, list, List::Line::Kind::rail);
-  paint_lines(cr, style, camera, list, List::Line::Kind::surface);
-  paint_lines(cr, style, camera, list, List::Line::Kind::spring);
-  paint_lines(cr, style, camera, list, List::Line::Kind::dashpot);
-  paint_ghosts(cr, style, camera, list, false);
-  paint_bodies(cr, style, camera, list);
-  paint_ghosts(cr, style, camera, list, true);
-  paint_lines(cr, style, camera, list, List::Line::Kind::slot);
-  paint_lines(cr, style, camera, list, List::Line::Kind::spin);
-  paint_trail_heads(cr, style, camera, list);
-  paint_markers(cr, style, camera, list, List::Marker::Kind::ground);
-  paint_markers(cr, style, camera, list, List::Marker::Kind::guide);
-  paint_motors(cr, style, camera, list);
-  paint_markers(cr, style, camera, list, List::Marker::Kind::pin);
-  paint_markers(cr, style, camera, list, List::Marker::Kind::bracket);
-  paint_markers(cr, style, camera, list, List::Marker::Kind::com);
-  const FramePanels panels = frame_panels(cr, style, list, labels, width);
-  if (!panels.hud.box.empty()) paint_time(cr, style, t, labels, list.hud, panels.hud.box, width);
-  if (!panels.inset.rect.empty()) paint_com_inset(cr, style, labels, list.centre_of_mass, t, panels.inset);
-  if (!panels.title.rect.empty()) paint_title_cached(cr, style, labels.title, panels.title, cache);
+  if (!backdrop_painted) paint_mechanism_backdrop(at, style, camera, shown, labels, width, height, earlier);
+  for (std::size_t i = 0; i < kPaintLayers; ++i)
+    cairo_set_antialias(at(static_cast<PaintLayer>(i)), CAIRO_ANTIALIAS_DEFAULT);
+  cairo_t* scene = at(PaintLayer::scene);
+  paint_lines(at(PaintLayer::trail), style, camera, list, List::Line::Kind::trail);
+  paint_lines(scene, style, camera, list, List::Line::Kind::rail);
+  paint_lines(scene, style, camera, list, List::Line::Kind::surface);
+  paint_lines(scene, style, camera, list, List::Line::Kind::spring);
+  paint_lines(scene, style, camera, list, List::Line::Kind::dashpot);
+  paint_ghosts(scene, style, camera, list, false);
+  paint_bodies(scene, style, camera, list);
+  paint_ghosts(scene, style, camera, list, true);
+  paint_lines(scene, style, camera, list, List::Line::Kind::slot);
+  paint_lines(scene, style, camera, list, List::Line::Kind::spin);
+  paint_trail_heads(at(PaintLayer::trail_head), style, camera, list);
+  paint_markers(scene, style, camera, list, List::Marker::Kind::ground);
+  paint_markers(scene, style, camera, list, List::Marker::Kind::guide);
+  paint_motors(at(PaintLayer::motor), style, camera, list);
+  cairo_t* markers = at(PaintLayer::markers);
+  paint_markers(markers, style, camera, list, List::Marker::Kind::pin);
+  paint_markers(markers, style, camera, list, List::Marker::Kind::bracket);
+  paint_markers(markers, style, camera, list, List::Marker::Kind::com);
+  cairo_t* hud = at(PaintLayer::hud);
+  const FramePanels panels = frame_panels(hud, style, list, labels, width);
+  if (!panels.hud.box.empty()) paint_time(hud, style, t, labels, list.hud, panels.hud.box, width);
+  if (!panels.inset.rect.empty()) paint_com_inset(hud, style, labels, list.centre_of_mass, t, panels.inset);
+  if (!panels.title.rect.empty()) paint_title_cached(at(PaintLayer::title), style, labels.title, panels.title, cache);
   const std::vector<Rect> occupied = occupied_by(panels);
-  const ForceLayout layout = layout_forces(cr, style, camera, list, width, height, occupied);
+  const ForceLayout layout = layout_forces(hud, style, camera, list, width, height, occupied);
   // The grid's names and the axes' ticks clear of every panel.
   if (shown.has(Element::axes) || (labels.follows && shown.has(Element::grid))) {
     std::vector<Rect> avoid = occupied;
     avoid.push_back(layout.legend);
     avoid.push_back(layout.scale_bar);
-    paint_axes(cr, style, camera, grid, width, height, avoid);
+    paint_axes(at(PaintLayer::axes), style, camera, grid, width, height, avoid);
   }
-  paint_body_labels(cr, style, list, layout);
-  paint_forces(cr, style, camera, list, layout);
+  paint_body_labels(at(PaintLayer::body_labels), style, list, layout);
+  paint_forces(at, style, camera, list, layout);
   return layout;
 }
 

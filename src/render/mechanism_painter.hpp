@@ -11,6 +11,7 @@
 
 #include "render/camera.hpp"
 #include "render/mechanism_forces.hpp"
+#include "render/paint_layer.hpp"
 #include "render/style.hpp"
 #include "scene/mechanism_scene.hpp"
 
@@ -42,12 +43,21 @@ struct MechanismPaintCache {
 /// background and the grid (`earlier`: the camera a frame before, which the grid streaks from).
 void paint_mechanism_backdrop(cairo_t* cr, const DrawStyle& style, const Camera& camera, const ElementSet& shown,
                               const MechanismLabels& labels, int width, int height, const Camera* earlier = nullptr);
+void paint_mechanism_backdrop(const LayerContexts& at, const DrawStyle& style, const Camera& camera,
+                              const ElementSet& shown, const MechanismLabels& labels, int width, int height,
+                              const Camera* earlier = nullptr);
 
 /// Paints the whole frame (it is fully covered) for the mechanism at time `t`; over a
 /// backdrop already there (`backdrop_painted`: a fixed camera's, copied from a cache) only
 /// what comes after it, so the pixels are the same either way. Returns where it put the
 /// legend and the labels.
 ForceLayout paint_mechanism_frame(cairo_t* cr, const DrawStyle& style, const Camera& camera,
+                                  const MechanismDrawList& list, const MechanismLabels& labels, double t, int width,
+                                  int height, const Camera* earlier = nullptr, bool backdrop_painted = false,
+                                  MechanismPaintCache* cache = nullptr);
+/// The same, each step onto its layer's context (render/paint_layer.hpp): composited in
+/// the layers' order they are the frame paint_mechanism_frame draws onto one.
+ForceLayout paint_mechanism_frame(const LayerContexts& at, const DrawStyle& style, const Camera& camera,
                                   const MechanismDrawList& list, const MechanismLabels& labels, double t, int width,
                                   int height, const Camera* earlier = nullptr, bool backdrop_painted = false,
                                   MechanismPaintCache* cache = nullptr);

@@ -172,15 +172,18 @@ OutputKind output_kind(const std::filesystem::path& file, const std::string& ori
   if (extension == ".png") return OutputKind::png;
   if (extension == ".svg") return OutputKind::svg;
   if (extension == ".pdf") return OutputKind::pdf;
-  throw Error::invalid(origin, "'" + file.string() + "' has " +
-                                   (extension.empty() ? std::string("no extension") : "extension '" + extension + "'") +
-                                   "; valid: .mp4, .gif or .webm (clip), .png (still), .svg or .pdf (vector still)");
+  if (extension == ".html") return OutputKind::html;
+  throw Error::invalid(origin,
+                       "'" + file.string() + "' has " +
+                           (extension.empty() ? std::string("no extension") : "extension '" + extension + "'") +
+                           "; valid: .mp4, .gif or .webm (clip), .html (interactive page), .png (still), .svg or .pdf "
+                           "(vector still)");
 }
 
 bool is_video(OutputKind kind) {
   return kind == OutputKind::mp4 || kind == OutputKind::gif || kind == OutputKind::webm;
 }
 
-bool is_still(OutputKind kind) { return !is_video(kind); }
+bool is_still(OutputKind kind) { return kind == OutputKind::png || kind == OutputKind::svg || kind == OutputKind::pdf; }
 
 }  // namespace linkage

@@ -35,7 +35,7 @@ inline constexpr int kMaxWidth = 7680, kMaxHeight = 4320, kMaxFps = 240;
 inline constexpr double kMaxVideoSeconds = 3600;  // an hour of video
 inline constexpr double kMaxStillTime = 3600;     // s of simulated time before a still
 
-enum class OutputKind { mp4, gif, webm, png, svg, pdf };
+enum class OutputKind { mp4, gif, webm, png, svg, pdf, html };  // html: an interactive page of the clip
 
 /// A case's equations as the text report prints them (report/mechanism_text's
 /// case_equations), drawn in a band under the motion with Element::equations.
@@ -91,10 +91,11 @@ void parse_size(std::string_view text, const std::string& origin, int& width, in
 [[nodiscard]] CameraMode parse_camera(std::string_view name, const std::string& origin);
 /// "xmin,ymin,xmax,ymax" in metres with xmin < xmax and ymin < ymax, each within ±1e9 m.
 [[nodiscard]] View parse_view(std::string_view text, const std::string& origin);
-/// The output kind from a file's extension (.mp4, .gif, .webm, .png, .svg, .pdf).
+/// The output kind from a file's extension (.mp4, .gif, .webm, .png, .svg, .pdf, .html).
 [[nodiscard]] OutputKind output_kind(const std::filesystem::path& file, const std::string& origin);
 /// A moving picture: .mp4, .gif or .webm.
 [[nodiscard]] bool is_video(OutputKind kind);
+/// One picture: .png, .svg or .pdf.
 [[nodiscard]] bool is_still(OutputKind kind);
 
 }  // namespace linkage

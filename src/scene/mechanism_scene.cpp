@@ -648,12 +648,26 @@ MechanismDrawList::Arrow MechanismScene::force_arrow(MechanismDrawList::Arrow::K
     arrow.cut = length > arrow_cap_;
     arrow.stretched = !arrow.cut;
     arrow.vector *= (arrow.cut ? arrow_cap_ : stretched_) / length;
-    if (!applied && !arrow.label.empty())
-      arrow.label += ": " + format_quantity(arrow.force, kind == MechanismDrawList::Arrow::Kind::velocity       ? "m/s"
-                                                         : kind == MechanismDrawList::Arrow::Kind::acceleration ? "m/s²"
-                                                                                                                : "N");
+    if (!applied && !arrow.label.empty()) arrow.label += ": " + format_quantity(arrow.force, arrow_unit(kind));
   }
   return arrow;
+}
+
+const char* arrow_unit(MechanismDrawList::Arrow::Kind kind) {
+  using Kind = MechanismDrawList::Arrow::Kind;
+  switch (kind) {
+    case Kind::joint:
+    case Kind::applied:
+    case Kind::gravity:
+    case Kind::spring:
+    case Kind::driver:
+      return "N";
+    case Kind::velocity:
+      return "m/s";
+    case Kind::acceleration:
+      return "m/s²";
+  }
+  return "N";
 }
 
 double MechanismScene::scale_of(MechanismDrawList::Arrow::Kind kind) const {

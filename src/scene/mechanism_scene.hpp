@@ -233,6 +233,8 @@ struct MechanismMotion {
 
 /// "0.42 N", "23 N": three significant digits at most, no exponent in the usual range.
 [[nodiscard]] std::string format_quantity(double value, const char* unit);
+/// The unit of an arrow of `kind`'s magnitude (MechanismDrawList::Arrow::force): "N", "m/s", "m/s²".
+[[nodiscard]] const char* arrow_unit(MechanismDrawList::Arrow::Kind kind);
 
 /// A whole clip's frames: scales and camera bounds come from every sample.
 class MechanismScene {

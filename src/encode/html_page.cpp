@@ -1,0 +1,306 @@
+#include "encode/html_page.hpp"
+
+#include <string_view>
+
+#include "core/atomic_file.hpp"
+#include "core/sha256.hpp"
+#include "encode/gzip.hpp"
+
+namespace linkage {
+namespace {
+
+constexpr std::string_view kStyle = R"(
+body { font-family: "DejaVu Sans", sans-serif; margin: 1em; color: #222; background: #fafafa; }
+h1 { font-size: 1.3em; margin: 0 0 0.5em; }
+#stage { position: relative; display: inline-block; max-width: 100%; }
+#clip { display: block; max-width: 100%; height: auto; border: 1px solid #ccc; }
+#hover { position: absolute; pointer-events: none; background: #fff; border: 1px solid #888; padding: 2px 6px;
+         font-size: 0.9em; white-space: nowrap; }
+#controls { display: flex; flex-wrap: wrap; align-items: center; gap: 0.5em; margin: 0.5em 0; }
+#slider { flex: 1 1 20em; }
+#time { font-variant-numeric: tabular-nums; min-width: 8em; }
+#layers label { margin-right: 1em; white-space: nowrap; }
+#status { color: #555; font-size: 0.9em; }
+)";
+
+// The player: opens the data, paints frame k's shown layers (Cairo's SVG) onto the canvas
+// in the painter's order, and drives the controls. Nothing here reaches the network.
+constexpr std::string_view kScript = R"js(
+"use strict";
+(async function () {
+  const $ = (id) => document.getElementById(id);
+  const status = $("status");
+  const page = { ready: false, frame: 0, time: 0, drawn: -1, requested: 0, completed: 0, playing: false, rate: 1 };
+  window.linkagePage = page;
+  let data;
+  try {
+    const raw = atob($("linkage-data").textContent.replace(/\s+/g, ""));
+    const bytes = new Uint8Array(raw.length);
+    for (let i = 0; i < raw.length; ++i) bytes[i] = raw.charCodeAt(i);
+    const stream = new Blob([bytes]).stream().pipeThrough(new DecompressionStream("gzip"));
+    data = JSON.parse(await new Response(stream).text());
+  } catch (e) {
+    status.textContent = "This browser cannot open the clip (it needs DecompressionStream: Chrome 80, " +
+      "Firefox 113, Safari 16.4 or later): " + e;
+    return;
+  }
+  const canvas = $("clip"), ctx = canvas.getContext("2d"), slider = $("slider"), hover = $("hover");
+  canvas.width = data.width;
+  canvas.height = data.height;
+  const count = data.frames.length;
+  const shown = new Set(data.toggles);
+  slider.max = String(count - 1);
+
+  // A frame is one SVG document of its shown layers' contents, in the painter's order:
+  // the browser draws it at once. The last few are kept decoded.
+  const bodies = new Map();
+  function body(svg) {  // each subpath's commands are an entry of the page's book of paths: put back
+    let text = bodies.get(svg);
+    if (text === undefined) {
+      text = data.svgs[svg].replace(/ d="([^"]*)"/g, (_, d) =>
+        ' d="' + d.replace(/@(\d+)/g, (__, i) => data.paths[Number(i)]) + '"');
+      bodies.set(svg, text);
+    }
+    return text;
+  }
+  function decoded(svgs) {
+    const text = '<svg xmlns="http://www.w3.org/2000/svg" xmlns:xlink="http://www.w3.org/1999/xlink" width="' +
+      data.width + '" height="' + data.height + '" viewBox="0 0 ' + data.width + " " + data.height + '">' +
+      svgs.map(body).join("") + "</svg>";
+    const url = URL.createObjectURL(new Blob([text], { type: "image/svg+xml" }));
+    const img = new Image();
+    img.src = url;
+    return img.decode().then(() => { URL.revokeObjectURL(url); return img; });
+  }
+  const pictures = new Map();
+  function picture(svgs) {
+    const key = svgs.join(",");
+    let entry = pictures.get(key);
+    if (entry) pictures.delete(key);  // kept as the newest
+    else entry = decoded(svgs);
+    pictures.set(key, entry);
+    while (pictures.size > 12) pictures.delete(pictures.keys().next().value);
+    return entry;
+  }
+  const visible = (layer) => data.layers[layer].needs.every((e) => shown.has(e));
+  function layersOf(k) {
+    const out = [];
+    data.frames[k].forEach((svg, layer) => { if (svg >= 0 && visible(layer)) out.push(svg); });
+    return out;
+  }
+  async function draw(k) {
+    const request = ++page.requested;
+    const img = await picture(layersOf(k));
+    if (request !== page.requested) return;  // a later frame was asked for meanwhile
+    ctx.clearRect(0, 0, canvas.width, canvas.height);
+    ctx.drawImage(img, 0, 0);
+    page.drawn = k;
+    page.completed = request;
+    // The next frames decoded ahead, so playing does not wait for them.
+    for (let j = k + 1; j < Math.min(count, k + 3); ++j) picture(layersOf(j));
+  }
+  function show(k) {
+    k = Math.max(0, Math.min(count - 1, Math.round(k)));
+    page.frame = k;
+    page.time = data.times[k];
+    slider.value = String(k);
+    $("time").textContent = "t = " + data.times[k].toFixed(3) + " s";
+    hover.hidden = true;
+    return draw(k);
+  }
+
+  // Playing: the frames at the clip's rate times the chosen speed, from where it is.
+  let started = 0, from = 0;
+  function tick() {
+    if (!page.playing) return;
+    // performance.now(), not the callback's time: that is the frame's start, which can come
+    // before play() was pressed.
+    const k = from + Math.max(0, Math.floor((performance.now() - started) / 1000 * data.fps * page.rate));
+    if (k >= count - 1) {
+      show(count - 1);
+      pause();
+      return;
+    }
+    if (k !== page.frame) show(k);
+    requestAnimationFrame(tick);
+  }
+  function play() {
+    if (page.frame >= count - 1) show(0);
+    page.playing = true;
+    from = page.frame;
+    started = performance.now();
+    $("play").textContent = "Pause";
+    requestAnimationFrame(tick);
+  }
+  function pause() {
+    page.playing = false;
+    $("play").textContent = "Play";
+  }
+  const toggle = () => (page.playing ? pause() : play());
+  function step(by) {
+    pause();
+    return show(page.frame + by);
+  }
+  $("play").addEventListener("click", toggle);
+  $("back").addEventListener("click", () => step(-1));
+  $("next").addEventListener("click", () => step(1));
+  slider.addEventListener("input", () => { pause(); show(Number(slider.value)); });
+  $("speed").addEventListener("change", () => {
+    page.rate = Number($("speed").value);
+    if (page.playing) { from = page.frame; started = performance.now(); }
+  });
+  document.addEventListener("keydown", (event) => {
+    if (event.target instanceof HTMLSelectElement) return;
+    if (event.key === "ArrowLeft") step(-1);
+    else if (event.key === "ArrowRight") step(1);
+    else if (event.key === " ") toggle();
+    else return;
+    event.preventDefault();
+  });
+
+  // A checkbox per element drawn somewhere in the clip.
+  for (const name of data.toggles) {
+    const label = document.createElement("label"), box = document.createElement("input");
+    box.type = "checkbox";
+    box.checked = true;
+    box.dataset.element = name;
+    box.addEventListener("change", () => {
+      if (box.checked) shown.add(name); else shown.delete(name);
+      draw(page.frame);
+    });
+    label.append(box, " " + name);
+    $("layers").append(label);
+  }
+  page.setShown = (name, on) => {
+    const box = [...document.querySelectorAll("#layers input")].find((b) => b.dataset.element === name);
+    if (!box) return false;
+    if (box.checked !== on) box.click();
+    return true;
+  };
+
+  // The arrow under the cursor (within 6 px of its shaft), nearest first.
+  function distance(p, a, b) {
+    const dx = b[0] - a[0], dy = b[1] - a[1], len = dx * dx + dy * dy;
+    const s = len > 0 ? Math.max(0, Math.min(1, ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len)) : 0;
+    return Math.hypot(p[0] - a[0] - s * dx, p[1] - a[1] - s * dy);
+  }
+  function arrowAt(x, y) {
+    let best = null, nearest = 6;
+    for (const arrow of data.arrows[page.frame]) {
+      if (!visible(arrow.layer)) continue;
+      const d = distance([x, y], arrow.a, arrow.b);
+      if (d <= nearest) { nearest = d; best = arrow; }
+    }
+    return best && (best.kind + (best.label ? " " + best.label : "") + ": " + best.value);
+  }
+  canvas.addEventListener("mousemove", (event) => {
+    const box = canvas.getBoundingClientRect();
+    const x = (event.clientX - box.left) * canvas.width / box.width;
+    const y = (event.clientY - box.top) * canvas.height / box.height;
+    const text = arrowAt(x, y);
+    hover.hidden = !text;
+    if (!text) return;
+    hover.textContent = text;
+    hover.style.left = (event.clientX - box.left + 12) + "px";
+    hover.style.top = (event.clientY - box.top + 12) + "px";
+  });
+  canvas.addEventListener("mouseleave", () => { hover.hidden = true; });
+
+  // For tests: the pixels of frame k's layers that need `element`, drawn alone.
+  page.layersAlone = async (k, element) => {
+    const needs = (layer) => data.layers[layer].needs;
+    const svgs = data.frames[k].filter((svg, layer) => svg >= 0 && needs(layer).includes(element) &&
+                                       needs(layer).every((e) => e === element || shown.has(e)));
+    const alone = document.createElement("canvas");
+    alone.width = data.width;
+    alone.height = data.height;
+    const c = alone.getContext("2d");
+    c.drawImage(await decoded(svgs), 0, 0);
+    return c.getImageData(0, 0, data.width, data.height).data;
+  };
+  page.count = count;
+  page.times = data.times;
+  page.arrows = (k) => data.arrows[k];
+  page.arrowAt = arrowAt;
+  page.show = show;
+  page.toggles = data.toggles;
+  status.textContent = count + " frames at " + data.fps + " fps. Keys: \u2190 \u2192 step a frame, space plays " +
+    "or pauses; the cursor on an arrow shows its value.";
+  await show(0);
+  page.ready = true;
+})();
+)js";
+
+std::string csp_hash(std::string_view text) {
+  const std::array<std::uint8_t, 32> digest = sha256(text);
+  return "'sha256-" + base64(std::string_view(reinterpret_cast<const char*>(digest.data()), digest.size())) + "'";
+}
+
+}  // namespace
+
+std::string escape_html(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  for (const char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&#39;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+std::string html_page(const PageText& text, const std::string& data) {
+  // Nothing from the network: only this page's own script and style (by their hashes), and
+  // the frames' images, made in the page from its data.
+  const std::string policy = "default-src 'none'; script-src " + csp_hash(kScript) + "; style-src " + csp_hash(kStyle) +
+                             "; img-src blob: data:; base-uri 'none'; form-action 'none'";
+  const std::string title = escape_html(text.title.empty() ? std::string("linkage clip") : text.title);
+  std::string page;
+  page += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
+  page.append("<meta http-equiv=\"Content-Security-Policy\" content=\"").append(policy).append("\">\n");
+  page += "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n";
+  page += "<link rel=\"icon\" href=\"data:,\">\n";
+  page.append("<title>").append(title).append("</title>\n<style>").append(kStyle).append("</style>\n</head>\n<body>\n");
+  page.append("<h1 id=\"title\">").append(title).append("</h1>\n");
+  page +=
+      "<div id=\"stage\"><canvas id=\"clip\" width=\"1\" height=\"1\"></canvas><div id=\"hover\" hidden></div></div>\n";
+  page += "<div id=\"controls\">\n<button id=\"play\" type=\"button\">Play</button>\n";
+  page += "<button id=\"back\" type=\"button\" title=\"One frame back (left arrow key)\">&#9664;</button>\n";
+  page += "<button id=\"next\" type=\"button\" title=\"One frame on (right arrow key)\">&#9654;</button>\n";
+  page += "<input id=\"slider\" type=\"range\" min=\"0\" max=\"0\" step=\"1\" value=\"0\" aria-label=\"Time\">\n";
+  page += "<output id=\"time\">t = 0.000 s</output>\n<label>Speed <select id=\"speed\">";
+  for (const char* rate : {"0.25", "0.5", "1", "2", "4"})
+    page += std::string("<option value=\"") + rate + "\"" + (std::string_view(rate) == "1" ? " selected" : "") + ">" +
+            rate + "x</option>";
+  page += "</select></label>\n</div>\n<fieldset id=\"layers\"><legend>Show</legend></fieldset>\n";
+  page += "<p id=\"status\">Opening the clip&hellip;</p>\n";
+  // Base64 holds no markup: the data cannot end the element early.
+  page += "<script id=\"linkage-data\" type=\"application/octet-stream\">\n";
+  const std::string packed = base64(gzip(data));
+  for (std::size_t i = 0; i < packed.size(); i += 120) page.append(packed, i, 120).append("\n");
+  page.append("</script>\n<script>").append(kScript).append("</script>\n</body>\n</html>\n");
+  return page;
+}
+
+void write_html_page(const PageText& text, const std::string& data, const std::filesystem::path& target,
+                     const std::string& setting) {
+  write_file_atomically(target, html_page(text, data), setting);
+}
+
+}  // namespace linkage

@@ -1,0 +1,32 @@
+#pragma once
+// One self-contained HTML page that plays a clip (`linkage render --out clip.html`): no
+// network at all (a Content-Security-Policy allowing only its own inline script and style,
+// and images from blob: and data:), so it works from file://, inside a learning-management
+// system or offline. The clip's data (its frames' layers as SVG, their times, the arrows'
+// values) is gzip-compressed and base64-encoded inside the page; the browser's own
+// DecompressionStream('gzip') opens it. The page's script paints the frames' layers onto
+// a canvas and gives play/pause, a time slider, speed, frame steps (keys <- -> and space),
+// layer toggles and the value of the arrow under the cursor; it exposes window.linkagePage
+// for tests.
+#include <filesystem>
+#include <string>
+
+namespace linkage {
+
+/// The words the page shows around the clip; each is escaped where the page puts it.
+struct PageText {
+  std::string title;
+};
+
+/// The page's HTML for `data` (JSON: width, height, fps, speed, times, layers, toggles,
+/// svgs, frames, arrows; see pipeline/clip_page.cpp).
+[[nodiscard]] std::string html_page(const PageText& text, const std::string& data);
+
+/// Writes html_page(text, data) to `target` atomically; `setting` names the output in errors.
+void write_html_page(const PageText& text, const std::string& data, const std::filesystem::path& target,
+                     const std::string& setting);
+
+/// `text` with &, <, >, " and ' as character references: safe in an element or an attribute.
+[[nodiscard]] std::string escape_html(const std::string& text);
+
+}  // namespace linkage

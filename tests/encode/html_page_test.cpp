@@ -1,0 +1,53 @@
+#include "encode/html_page.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "core/sha256.hpp"
+
+namespace linkage {
+namespace {
+
+std::string between(const std::string& text, const std::string& open, const std::string& close) {
+  const std::size_t a = text.find(open);
+  if (a == std::string::npos) return {};
+  const std::size_t b = text.find(close, a + open.size());
+  return b == std::string::npos ? std::string() : text.substr(a + open.size(), b - a - open.size());
+}
+
+std::string csp_source(const std::string& content) {
+  const std::array<std::uint8_t, 32> digest = sha256(content);
+  return "'sha256-" + base64(std::string(reinterpret_cast<const char*>(digest.data()), digest.size())) + "'";
+}
+
+TEST(HtmlPage, EscapesMarkupCharacters) {
+  EXPECT_EQ(escape_html("</script><script>alert(1)</script>"), "&lt;/script&gt;&lt;script&gt;alert(1)&lt;/script&gt;");
+  EXPECT_EQ(escape_html("a & \"b\" 'c'"), "a &amp; &quot;b&quot; &#39;c&#39;");
+  EXPECT_EQ(escape_html("θ₁ = 0.1 rad"), "θ₁ = 0.1 rad");
+}
+
+// The policy allows exactly the page's own script and style (by their hashes), images it
+// makes itself, and nothing from the network.
+TEST(HtmlPage, PolicyAllowsOnlyItsOwnScriptAndStyle) {
+  const std::string page = html_page({"A <b>title</b>"}, R"({"width": 2})");
+  const std::string policy = between(page, "http-equiv=\"Content-Security-Policy\" content=\"", "\"");
+  ASSERT_FALSE(policy.empty());
+  EXPECT_EQ(policy.rfind("default-src 'none'; ", 0), 0u) << policy;
+  const std::string script = between(page, "\n<script>", "</script>");
+  const std::string style = between(page, "<style>", "</style>");
+  ASSERT_FALSE(script.empty());
+  ASSERT_FALSE(style.empty());
+  EXPECT_NE(policy.find("script-src " + csp_source(script) + ";"), std::string::npos) << policy;
+  EXPECT_NE(policy.find("style-src " + csp_source(style) + ";"), std::string::npos) << policy;
+  EXPECT_NE(policy.find("img-src blob: data:;"), std::string::npos) << policy;
+  EXPECT_EQ(policy.find("http"), std::string::npos) << policy;
+  EXPECT_EQ(policy.find("unsafe"), std::string::npos) << policy;
+  // The title only escaped, in the title and the heading.
+  EXPECT_EQ(page.find("<b>"), std::string::npos);
+  EXPECT_NE(page.find("<title>A &lt;b&gt;title&lt;/b&gt;</title>"), std::string::npos);
+  EXPECT_NE(page.find("<h1 id=\"title\">A &lt;b&gt;title&lt;/b&gt;</h1>"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace linkage
