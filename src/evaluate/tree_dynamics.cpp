@@ -165,6 +165,7 @@ bool TreeDynamics::applies(const sym::System& system) {
       case JointMotion::revolute:
       case JointMotion::prismatic:
       case JointMotion::fixed:
+      case JointMotion::loop:  // never in the tree
         break;
       case JointMotion::rolling:
         return false;
@@ -209,6 +210,8 @@ TreeDynamics::TreeDynamics(const sym::System& system) : impl_(std::make_unique<I
           break;
         case JointMotion::rolling:
           throw std::logic_error("TreeDynamics: a rolling joint in the tree (applies() declines it)");
+        case JointMotion::loop:
+          throw std::logic_error("TreeDynamics: a loop-only joint in the tree");
         case JointMotion::prismatic: {
           const sym::Vec2 axis = sym::joint_axis(system, joint);
           n.kind = NodeKind::prismatic;

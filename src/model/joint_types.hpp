@@ -24,6 +24,7 @@ enum class JointMotion {
   prismatic,  // the joint's own travel s along its axis; the child keeps its parent's angle
   fixed,      // none: the child is placed rigidly on its parent (a weld)
   rolling,    // the child's own absolute angle theta, turning about the contact point
+  loop,       // none: it never carries a body (the tree does not grow through it), it closes a loop
 };
 
 struct JointTypeInfo {
@@ -90,5 +91,8 @@ inline constexpr std::array<const char*, kJointTypes.size()> kJointTypeNames = [
 
 /// Whether the motion has a coordinate of the joint's own (keyed "JOINT.s" in [initial]).
 [[nodiscard]] bool has_own_coordinate(JointMotion motion);
+
+/// Whether a joint with the motion may carry a body in the spanning tree (all but `loop`).
+[[nodiscard]] bool carries_body(JointMotion motion);
 
 }  // namespace linkage

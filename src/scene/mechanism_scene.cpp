@@ -902,6 +902,7 @@ void MechanismScene::add_motors(std::size_t k, MechanismDrawList& out) const {
       }
       case JointMotion::fixed:  // not drivable
       case JointMotion::rolling:
+      case JointMotion::loop:
         break;
     }
   }

@@ -66,6 +66,16 @@ GiNaC::ex joint_radius(const System& system, const Joint& joint) {
   return system.quantity(*joint.radius, false);
 }
 
+std::array<Vec2, 2> force_points(const System& system, int joint) {
+  const Mechanism& m = system.mechanism();
+  const Joint& j = m.joints.at(static_cast<std::size_t>(joint));
+  const JointStages& stages = joint_stages(j.type);
+  const Vec2 own_a = system.point_position(m.body_index(j.bodies[0]), j.points[0]);
+  const Vec2 own_b = system.point_position(m.body_index(j.bodies[1]), j.points[1]);
+  const Vec2 at_a = stages.force_at_point_b ? own_b : own_a;
+  return {at_a, stages.opposite_at_point_a ? at_a : own_b};
+}
+
 JointEnds maximal_ends(const System& system, int joint) {
   const Joint& j = system.mechanism().joints.at(static_cast<std::size_t>(joint));
   auto place = [&](const std::string& name, const std::string& point, Placement& placement, Vec2& local) {

@@ -102,10 +102,18 @@ struct JointStages {
   /// columns: whether each force unknown is written as `JOINT.<key>` too (a rolling
   /// joint's normal and friction).
   bool unknown_columns = false;
+  /// force: whether the opposite force and moment on bodies[1] act at the point where they
+  /// act on bodies[0] (a gear's mesh: one wrench at gear 1's centre), not at its own point.
+  bool opposite_at_point_a = false;
 };
 
 /// Every joint type's stages, from the registration in joints.cpp.
 [[nodiscard]] const JointStages& joint_stages(JointType type);
+
+/// Where the joint's force and moment act, world frame, maximal coordinates: [0] on
+/// bodies[0] (`force_at_point_b`), [1] the opposite on bodies[1] (`opposite_at_point_a`).
+/// Newton-Euler, Lagrange's generalized forces and the ground reaction all read these.
+[[nodiscard]] std::array<Vec2, 2> force_points(const System& system, int joint);
 
 /// The joint's ends in maximal coordinates (the ground's placement is zero), its axis
 /// checked: one that is zero whatever the parameters is an input error.

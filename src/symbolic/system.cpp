@@ -596,9 +596,7 @@ void System::add_newton_euler() {
     const Joint& joint = mechanism_.joints[static_cast<std::size_t>(js.index)];
     const int a = body_index(mechanism_, joint.bodies[0]);
     const int b = body_index(mechanism_, joint.bodies[1]);
-    const Vec2 at_a = joint_stages(joint.type).force_at_point_b ? point_position(b, joint.points[1])
-                                                                : point_position(a, joint.points[0]);
-    const Vec2 at_b = point_position(b, joint.points[1]);
+    const auto [at_a, at_b] = force_points(*this, js.index);
     apply(a, js.force, at_a, js.moment);
     apply(b, ex(-1) * js.force, at_b, -js.moment);
   }
