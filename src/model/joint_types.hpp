@@ -15,6 +15,7 @@ enum class JointType {
   slider,
   weld,
   rolling,
+  gear,
 };
 
 /// How the body a tree joint carries moves relative to its parent: which coordinate the
@@ -43,6 +44,9 @@ struct JointTypeInfo {
   int rows = 2;                    // its position rows, for the count of degrees of freedom
   bool angle = false;              // takes `angle`, the relative angle th_b - th_a it holds
   bool radius = false;             // takes radius (a rolling's: default its rolling body's disc radius)
+  // Takes carrier, radii and internal, and no points: its points are where its bodies are
+  // pinned to the carrier (a gear's mesh).
+  bool mesh = false;
 };
 
 /// One row per JointType, in the enum's order (checked below; symbolic/joints.cpp checks
@@ -55,6 +59,8 @@ inline constexpr std::array kJointTypes{
     JointTypeInfo{JointType::weld, "weld", JointMotion::fixed, "angle", false, false, true, "", "", "", 3, true},
     JointTypeInfo{JointType::rolling, "rolling", JointMotion::rolling, "axis, radius", false, true, false, "", "", "",
                   2, false, true},
+    JointTypeInfo{JointType::gear, "gear", JointMotion::loop, "carrier, radii, internal", false, false, true, "", "",
+                  "", 1, false, false, true},
 };
 
 static_assert(

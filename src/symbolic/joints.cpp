@@ -12,6 +12,7 @@ extern const JointStages kPinJoint;
 extern const JointStages kSliderJoint;
 extern const JointStages kWeldJoint;
 extern const JointStages kRollingJoint;
+extern const JointStages kGearJoint;
 
 namespace {
 
@@ -27,6 +28,8 @@ constexpr const JointStages* registered(JointType type) {
       return &kWeldJoint;
     case JointType::rolling:
       return &kRollingJoint;
+    case JointType::gear:
+      return &kGearJoint;
   }
   return nullptr;
 }
@@ -59,6 +62,11 @@ Vec2 joint_axis(const System& system, const Joint& joint) {
 GiNaC::ex joint_angle(const System& system, const Joint& joint) {
   if (!joint_type_info(joint.type).angle || !joint.angle) return 0;
   return system.quantity(*joint.angle, false);
+}
+
+std::array<GiNaC::ex, 2> joint_radii(const System& system, const Joint& joint) {
+  if (!joint_type_info(joint.type).mesh || !joint.radii) return {};
+  return {system.quantity((*joint.radii)[0], false), system.quantity((*joint.radii)[1], false)};
 }
 
 GiNaC::ex joint_radius(const System& system, const Joint& joint) {
@@ -95,6 +103,13 @@ JointEnds maximal_ends(const System& system, int joint) {
   ends.axis = joint_axis(system, j);
   ends.angle = joint_angle(system, j);
   ends.radius = joint_radius(system, j);
+  ends.radii = joint_radii(system, j);
+  ends.mesh = j.internal ? -1 : 1;
+  ends.constant = system.joint_constant(joint);
+  if (const int carrier = system.mechanism().body_index(j.carrier); carrier >= 0) {
+    const BodySystem& c = system.bodies()[static_cast<std::size_t>(carrier)];
+    ends.carrier = {{c.x.q, c.y.q}, c.rotates ? GiNaC::ex(c.theta.q) : GiNaC::ex(0)};
+  }
   return ends;
 }
 

@@ -17,8 +17,9 @@
 namespace linkage {
 namespace {
 
-const char* const kShipped[] = {"two-blocks",      "unequal-blocks", "double-pendulum", "triple-pendulum",
-                                "spring-pendulum", "slider-crank",   "four-bar",        "welded-pendulum"};
+const char* const kShipped[] = {"two-blocks",      "unequal-blocks",  "double-pendulum",
+                                "triple-pendulum", "spring-pendulum", "slider-crank",
+                                "four-bar",        "welded-pendulum", "gear-train"};
 
 struct RunResult {
   MechanismStats stats;

@@ -139,9 +139,9 @@ TEST(MechanismToml, EveryShippedMechanismReads) {
   std::sort(files.begin(), files.end());
   EXPECT_EQ(names, files);
   EXPECT_EQ(names, (std::vector<std::string>{"cart-pendulum", "coupled-pendulums", "double-pendulum", "engine",
-                                             "four-bar", "four-bar-driven", "four-bar-spring", "rolling-disc",
-                                             "slider-crank", "spring-pendulum", "triple-pendulum", "two-blocks",
-                                             "unequal-blocks", "welded-pendulum"}));
+                                             "four-bar", "four-bar-driven", "four-bar-spring", "gear-train",
+                                             "rolling-disc", "slider-crank", "spring-pendulum", "triple-pendulum",
+                                             "two-blocks", "unequal-blocks", "welded-pendulum"}));
   for (const std::string& name : names) {
     SCOPED_TRACE(name);
     const Mechanism built_in = load_mechanism(name);
@@ -179,7 +179,8 @@ TEST(MechanismToml, ShippedMechanismsHaveTheDocumentedStructure) {
                                                  {"four-bar-spring", 3, 4, 1, 1},
                                                  {"coupled-pendulums", 3, 3, 3, 0},
                                                  {"welded-pendulum", 2, 2, 1, 0},
-                                                 {"rolling-disc", 2, 2, 2, 0}}) {
+                                                 {"rolling-disc", 2, 2, 2, 0},
+                                                 {"gear-train", 2, 3, 1, 1}}) {
     SCOPED_TRACE(e.name);
     const Mechanism m = load_mechanism(e.name);
     EXPECT_EQ(m.bodies.size(), e.bodies);
@@ -728,7 +729,7 @@ TEST(MechanismToml, LoadByNameOrFile) {
   };
   EXPECT_EQ(invalid("for-bar"),
             "'for-bar' is not a shipped mechanism (did you mean 'four-bar'?); valid: cart-pendulum, coupled-pendulums, "
-            "double-pendulum, engine, four-bar, four-bar-driven, four-bar-spring, rolling-disc, "
+            "double-pendulum, engine, four-bar, four-bar-driven, four-bar-spring, gear-train, rolling-disc, "
             "slider-crank, spring-pendulum, triple-pendulum, two-blocks, unequal-blocks, welded-pendulum, or a file "
             "path (with '/' or "
             "ending in .toml)");
