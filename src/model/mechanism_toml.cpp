@@ -581,6 +581,7 @@ class MechanismReader {
         fail(bodies[1].second, r.context() + " joins " + q(bodies[0].first) +
                                    " to itself; give two different bodies (or a body and \"ground\")");
       for (std::size_t i = 0; i < 2; ++i) joint.bodies[i] = bodies[i].first;
+      read_joint_options(r, joint);  // before the points: a key of another type is named first
       if (joint_type_info(joint.type).mesh) {
         if (r.has("points"))
           r.fail("points", std::string("a ") + joint_type_name(joint.type) +
@@ -592,7 +593,6 @@ class MechanismReader {
           check_point(bodies[i].first, points[i].first, points[i].second, r.context());
         }
       }
-      read_joint_options(r, joint);
       m_.joints.push_back(std::move(joint));
     }
     for (Joint& joint : m_.joints)
@@ -680,9 +680,9 @@ class MechanismReader {
       joint.angle = quantity_at(r, "angle")->quantity;
     }
     read_radius(r, joint, takes);
-    read_mesh(r, joint, takes);
     if (!info.axis && r.has("axis"))
       r.fail("axis", "'axis' is for " + joint_types_with(&JointTypeInfo::axis) + " only; " + takes);
+    read_mesh(r, joint, takes);
     if (!info.axis) return;
     if (!r.has("axis"))
       r.fail("axis", std::string("a ") + joint_type_name(joint.type) +

@@ -17,9 +17,8 @@
 namespace linkage {
 namespace {
 
-const char* const kShipped[] = {"two-blocks",      "unequal-blocks",  "double-pendulum",
-                                "triple-pendulum", "spring-pendulum", "slider-crank",
-                                "four-bar",        "welded-pendulum", "gear-train"};
+const char* const kShipped[] = {"two-blocks",      "unequal-blocks", "double-pendulum", "triple-pendulum",
+                                "spring-pendulum", "slider-crank",   "four-bar",        "welded-pendulum"};
 
 struct RunResult {
   MechanismStats stats;

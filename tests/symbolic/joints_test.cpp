@@ -28,9 +28,11 @@ std::vector<JointType> all_types() {
   return out;
 }
 
+// The name moved in, not assigned from a literal: GCC 12 at -O3 sees a false
+// -Wstringop-overflow in that assignment to a Joint built just before.
 Joint joint_of(JointType type) {
   Joint joint;
-  joint.name = "J";
+  joint.name = std::string(1, 'J');
   joint.type = type;
   joint.bodies = {"1", "2"};
   joint.points = {"A", "B"};
