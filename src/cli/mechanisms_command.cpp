@@ -138,6 +138,9 @@ std::string describe_mechanism(const Mechanism& m) {
     if (joint.damping) extra += ", damping " + joint.damping->text;
     if (joint.rest_angle) extra += ", rest angle " + joint.rest_angle->text;
     if (joint.angle) extra += ", angle " + joint.angle->text;
+    if (joint.radii)
+      extra += ", radii " + (*joint.radii)[0].text + ", " + (*joint.radii)[1].text + ", carrier " + joint.carrier +
+               (joint.internal ? ", internal" : "");
     rows.push_back({joint.name, kJointTypeNames[static_cast<std::size_t>(joint.type)],
                     joint.bodies[0] + "." + joint.points[0] + " - " + joint.bodies[1] + "." + joint.points[1],
                     role + extra});

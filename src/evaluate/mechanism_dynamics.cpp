@@ -169,6 +169,7 @@ MechanismDynamics::MechanismDynamics(const sym::System& system, CaseId id, std::
   const bool maximal = id == CaseId::maximal;
   bodies_ = system.bodies().size();
   joints_ = system.joints().size();
+  for (const sym::JointSystem& j : system.joints()) joint_rows_.push_back(j.constraints.size());
 
   // The state's coordinates: every body's own for Case 1, the tree's otherwise.
   std::vector<GiNaC::symbol> q, q_dot;
@@ -461,9 +462,10 @@ void MechanismDynamics::compile_case() const {
         sym::joint_stages(system.mechanism().joints[static_cast<std::size_t>(j.index)].type).unknown_columns;
     for (std::size_t u = 0; u < 2; ++u)
       out.push_back(written && u < j.unknowns.size() ? prepare_output(j.unknowns[u]) : ex(0));
-    // Each row on its own: |C| of an expanded C^2 would cancel to sqrt(round-off).
-    for (std::size_t r = 0; r < 2; ++r) out.push_back(r < j.constraints.size() ? prepare(j.constraints[r]) : ex(0));
-    for (std::size_t r = 0; r < 2; ++r) out.push_back(r < j.constraints.size() ? rate_of(j.constraints[r]) : ex(0));
+    // Each row on its own (as many as its type has): |C| of an expanded C^2 would cancel to
+    // sqrt(round-off).
+    for (const ex& phi : j.constraints) out.push_back(prepare(phi));
+    for (const ex& phi : j.constraints) out.push_back(rate_of(phi));
   }
   // The kinetic energy and the angular momentum are sums over the bodies of products of
   // their rates, each a sum over the body's ancestors: expanded, a chain of n links has
@@ -928,9 +930,12 @@ void MechanismDynamics::sample(double t, const Eigen::VectorXd& y, MechanismSamp
     out.slider[j] = values[k++];
     for (std::size_t c = 0; c < 3; ++c) out.force[3 * j + c] = values[k++];
     for (std::size_t c = 0; c < 2; ++c) out.force[3 * joints_ + 2 * j + c] = values[k++];
-    out.constraint[j] = std::hypot(values[k], values[k + 1]);
-    out.constraint_rate[j] = std::hypot(values[k + 2], values[k + 3]);
-    k += 4;
+    const std::size_t rows = joint_rows_[j];
+    for (std::size_t r = 0; r < rows; ++r) {
+      out.constraint[j] = std::hypot(out.constraint[j], values[k + r]);
+      out.constraint_rate[j] = std::hypot(out.constraint_rate[j], values[k + rows + r]);
+    }
+    k += 2 * rows;
   }
   out.kinetic = values[k++];
   out.potential = values[k++];

@@ -191,6 +191,7 @@ class MechanismDynamics {
   CaseId id_;
   const sym::System* system_;
   std::size_t parameters_ = 0, n_ = 0, bodies_ = 0, joints_ = 0;
+  std::vector<std::size_t> joint_rows_;  // each joint's position rows, in its constraint error
   mutable std::size_t rows_ = 0, cols_ = 0;
   mutable bool compiled_ = false;
   std::optional<CaseSystem> derived_;  // the case, when given; derived on first need otherwise

@@ -167,6 +167,7 @@ bool TreeDynamics::applies(const sym::System& system) {
       case JointMotion::prismatic:
       case JointMotion::fixed:
       case JointMotion::rolling:
+      case JointMotion::loop:  // never in the tree
         break;
       case JointMotion::slotted:
         return false;
@@ -219,6 +220,8 @@ TreeDynamics::TreeDynamics(const sym::System& system) : impl_(std::make_unique<I
         }
         case JointMotion::slotted:
           throw std::logic_error("TreeDynamics: a pin-slot joint in the tree (applies() declines it)");
+        case JointMotion::loop:
+          throw std::logic_error("TreeDynamics: a loop-only joint in the tree");
         case JointMotion::prismatic: {
           const sym::Vec2 axis = sym::joint_axis(system, joint);
           n.kind = NodeKind::prismatic;

@@ -52,6 +52,7 @@ GeneralizedRows generalized_rows(const sym::System& system) {
       case JointMotion::revolute:
       case JointMotion::fixed:
       case JointMotion::rolling:
+      case JointMotion::loop:  // never a tree joint
         break;
       case JointMotion::prismatic:
       case JointMotion::slotted: {

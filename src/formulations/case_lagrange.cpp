@@ -137,9 +137,7 @@ std::vector<Application> applications(const sym::System& system) {
     const sym::JointSystem& js = system.joints()[static_cast<std::size_t>(j)];
     const Joint& joint = m.joints[static_cast<std::size_t>(j)];
     const int a = m.body_index(joint.bodies[0]), b = m.body_index(joint.bodies[1]);
-    const sym::Vec2 at_b = system.point_position(b, joint.points[1]);
-    const sym::Vec2 at_a =
-        sym::joint_stages(joint.type).force_at_point_b ? at_b : system.point_position(a, joint.points[0]);
+    const auto [at_a, at_b] = sym::force_points(system, j);
     out.push_back({a, js.force, at_a, js.moment});
     out.push_back({b, ex(-1) * js.force, at_b, -js.moment});
   }

@@ -240,6 +240,8 @@ std::string links_in_line(const sym::System& system, const std::vector<double>& 
           pins.emplace_back(sym::evaluate(p.x, at), sym::evaluate(p.y, at));
           break;
         }
+        case JointMotion::loop:  // no point or axis the link is joined along
+          break;
         case JointMotion::prismatic: {
           // The axis, in the frame of bodies[0], turned into the world.
           const sym::Vec2 a = sym::rotate(

@@ -36,6 +36,20 @@ bool has_own_coordinate(JointMotion motion) {
       return true;
     case JointMotion::fixed:
     case JointMotion::rolling:
+    case JointMotion::loop:
+      return false;
+  }
+  throw std::logic_error("joint motion out of range");
+}
+
+bool carries_body(JointMotion motion) {
+  switch (motion) {
+    case JointMotion::revolute:
+    case JointMotion::prismatic:
+    case JointMotion::fixed:
+    case JointMotion::rolling:
+      return true;
+    case JointMotion::loop:
       return false;
   }
   throw std::logic_error("joint motion out of range");

@@ -16,6 +16,7 @@ enum class JointType {
   weld,
   rolling,
   pin_slot,
+  gear,
 };
 
 /// How the body a tree joint carries moves relative to its parent: which coordinate the
@@ -26,6 +27,7 @@ enum class JointMotion {
   fixed,      // none: the child is placed rigidly on its parent (a weld)
   rolling,    // the child's own absolute angle theta, turning about the contact point
   slotted,    // the joint's own travel s along its axis, then the child's own angle theta (a point mass: s alone)
+  loop,       // none: it never carries a body (the tree does not grow through it), it closes a loop
 };
 
 struct JointTypeInfo {
@@ -44,6 +46,9 @@ struct JointTypeInfo {
   int rows = 2;                    // its position rows, for the count of degrees of freedom
   bool angle = false;              // takes `angle`, the relative angle th_b - th_a it holds
   bool radius = false;             // takes radius (a rolling's: default its rolling body's disc radius)
+  // Takes carrier, radii and internal, and no points: its points are where its bodies are
+  // pinned to the carrier (a gear's mesh).
+  bool mesh = false;
 };
 
 /// One row per JointType, in the enum's order (checked below; symbolic/joints.cpp checks
@@ -57,6 +62,8 @@ inline constexpr std::array kJointTypes{
     JointTypeInfo{JointType::rolling, "rolling", JointMotion::rolling, "axis, radius", false, true, false, "", "", "",
                   2, false, true},
     JointTypeInfo{JointType::pin_slot, "pin-slot", JointMotion::slotted, "axis", false, true, false, "", "", "", 1},
+    JointTypeInfo{JointType::gear, "gear", JointMotion::loop, "carrier, radii, internal", false, false, true, "", "",
+                  "", 1, false, false, true},
 };
 
 static_assert(
@@ -93,5 +100,8 @@ inline constexpr std::array<const char*, kJointTypes.size()> kJointTypeNames = [
 
 /// Whether the motion has a coordinate of the joint's own (keyed "JOINT.s" in [initial]).
 [[nodiscard]] bool has_own_coordinate(JointMotion motion);
+
+/// Whether a joint with the motion may carry a body in the spanning tree (all but `loop`).
+[[nodiscard]] bool carries_body(JointMotion motion);
 
 }  // namespace linkage

@@ -65,6 +65,12 @@ struct Joint {
   std::optional<Vector2Quantity> axis;  // slider, rolling: direction in the frame of bodies[0]
   std::optional<Quantity> radius;       // rolling only: the rolling radius (read: the disc's when not given)
   std::optional<Quantity> angle;        // weld only: the relative angle th_b - th_a it holds (absent: 0)
+  // Gear only: the body both gears are pinned to (`points` are those pins' points on the
+  // gears), the pitch radii of bodies[0] and bodies[1], and whether the mesh is internal.
+  std::string carrier = kGround;
+  SourcePos carrier_pos;
+  std::optional<std::array<Quantity, 2>> radii;
+  bool internal = false;
   SourcePos pos;
 };
 

@@ -37,7 +37,7 @@ constexpr MechanismKey kKeys[] = {
     {"top level", "ground", "table", "none", "the fixed frame's named points"},
     {"top level", "body", "list of tables", "(required)", "the moving bodies, at least one"},
     {"top level", "joint", "list of tables", "none",
-     "pins, sliders, welds, rolling joints and pin-slots between two bodies or a body and the ground"},
+     "pins, sliders, welds, rolling joints, pin-slots and gears between two bodies or a body and the ground"},
     {"top level", "driver", "list of tables", "none", "motors: the prescribed motion of a pin or slider joint"},
     {"top level", "spring", "list of tables", "none", "linear spring-dampers between two points"},
     {"top level", "force", "list of tables", "none", "applied forces at points, world frame"},
@@ -67,9 +67,10 @@ constexpr MechanismKey kKeys[] = {
     {"[[body]]", "points", "table of [x, y]", "none",
      "named points in the body frame (origin at the centre of mass, x along the length), m"},
     {"[[joint]]", "name", "string", "(required)", "the joint's name: letters, digits, '_' or '-'"},
-    {"[[joint]]", "type", "string", "(required)", "pin, slider, weld, rolling or pin-slot"},
+    {"[[joint]]", "type", "string", "(required)", "pin, slider, weld, rolling, pin-slot or gear"},
     {"[[joint]]", "bodies", "list of two strings", "(required)", "two different bodies, or a body and \"ground\""},
-    {"[[joint]]", "points", "list of two strings", "(required)", "a named point of each body, in the order of bodies"},
+    {"[[joint]]", "points", "list of two strings", "(required; none for a gear)",
+     "a named point of each body, in the order of bodies"},
     {"[[joint]]", "stiffness", kQuantity, "none", "pin only: torsional spring stiffness, N m/rad, >= 0"},
     {"[[joint]]", "damping", kQuantity, "none", "pin only: torsional damping, N m s/rad, >= 0"},
     {"[[joint]]", "rest_angle", kQuantity, "0", "pin only: relative angle at which the torsional spring is slack, rad"},
@@ -79,6 +80,13 @@ constexpr MechanismKey kKeys[] = {
     {"[[joint]]", "radius", kQuantity, "the rolling body's disc radius", "rolling only: the rolling radius, m, > 0"},
     {"[[joint]]", "angle", kQuantity, "0",
      "weld only: the relative angle th_b - th_a it holds, rad; neither body may be a point mass"},
+    {"[[joint]]", "carrier", "string", "\"ground\"",
+     "gear only: the body (or \"ground\") both gears are pinned to, each by a pin joint"},
+    {"[[joint]]", "radii", "list of two numbers or expressions", "(required by gear)",
+     "gear only: the pitch radii of bodies[0] and bodies[1], m, > 0"},
+    {"[[joint]]", "internal", "boolean", "false",
+     "gear only: an internal mesh (a ring gear): r1 (th1 - thc) - r2 (th2 - thc) is held, not r1 (th1 - thc) + r2 "
+     "(th2 - thc)"},
     {"[[driver]]", "name", "string", "(required)",
      "the driver's name, naming its column NAME.torque (pin) or NAME.force (slider): letters, digits, '_' or '-'"},
     {"[[driver]]", "joint", "string", "(required)", "the pin or slider joint it drives"},
@@ -572,14 +580,79 @@ class MechanismReader {
       if (bodies[0].first == bodies[1].first)
         fail(bodies[1].second, r.context() + " joins " + q(bodies[0].first) +
                                    " to itself; give two different bodies (or a body and \"ground\")");
-      const auto points = two_strings(r, "points", "[\"O\", \"A\"]");
-      for (std::size_t i = 0; i < 2; ++i) {
-        joint.bodies[i] = bodies[i].first;
-        joint.points[i] = points[i].first;
-        check_point(bodies[i].first, points[i].first, points[i].second, r.context());
+      for (std::size_t i = 0; i < 2; ++i) joint.bodies[i] = bodies[i].first;
+      read_joint_options(r, joint);  // before the points: a key of another type is named first
+      if (joint_type_info(joint.type).mesh) {
+        if (r.has("points"))
+          r.fail("points", std::string("a ") + joint_type_name(joint.type) +
+                               " takes no 'points': its points are where its bodies are pinned to its carrier");
+      } else {
+        const auto points = two_strings(r, "points", "[\"O\", \"A\"]");
+        for (std::size_t i = 0; i < 2; ++i) {
+          joint.points[i] = points[i].first;
+          check_point(bodies[i].first, points[i].first, points[i].second, r.context());
+        }
       }
-      read_joint_options(r, joint);
       m_.joints.push_back(std::move(joint));
+    }
+    for (Joint& joint : m_.joints)
+      if (joint_type_info(joint.type).mesh) find_carrier_pins(joint);
+  }
+
+  // A mesh's keys: its carrier (a body or the ground, not one of its gears), two radii and
+  // whether it is internal.
+  void read_mesh(const TableReader& r, Joint& joint, const std::string& takes) const {
+    if (!joint_type_info(joint.type).mesh) {
+      for (const std::string_view key : {"carrier", "radii", "internal"})
+        if (r.has(key)) r.fail(key, q(key) + " is for " + joint_types_with(&JointTypeInfo::mesh) + " only; " + takes);
+      return;
+    }
+    if (const auto carrier = string_at(r, "carrier", false)) {
+      check_body(carrier->first, carrier->second, r.context() + " (carrier)", true);
+      if (carrier->first == joint.bodies[0] || carrier->first == joint.bodies[1])
+        fail(carrier->second, r.context() + ": 'carrier' " + q(carrier->first) +
+                                  " is one of its gears; valid: the body (or \"ground\") both gears are pinned to");
+      joint.carrier = carrier->first;
+      joint.carrier_pos = carrier->second;
+    } else {
+      joint.carrier_pos = joint.pos;
+    }
+    r.require("radii", "[\"r1\", \"r2\"]");
+    const toml::node& node = *r.node("radii");
+    const toml::array* array = node.as_array();
+    if (array == nullptr || array->size() != 2)
+      r.fail("radii",
+             "'radii' must be [r1, r2], the pitch radii of " + q(joint.bodies[0]) + " and " + q(joint.bodies[1]) +
+                 " (numbers or expressions, m), got " +
+                 (array == nullptr ? type_phrase(node) : "an array of " + std::to_string(array->size()) + " entries"));
+    std::array<Quantity, 2> radii;
+    for (std::size_t i = 0; i < 2; ++i) {
+      const std::string what = "radii[" + std::to_string(i) + "]";
+      const ReadQuantity read = quantity_of(*array->get(i), q(what), r.context());
+      require_bound(read, what, r.context(), true, "m");
+      radii[i] = read.quantity;
+    }
+    joint.radii = radii;
+    if (r.has("internal")) joint.internal = *r.boolean("internal");
+  }
+
+  // Each gear's pin joint to the carrier: its point on the gear is the gear's centre, the
+  // mesh's point on that body.
+  void find_carrier_pins(Joint& joint) const {
+    for (std::size_t i = 0; i < 2; ++i) {
+      const Joint* pin = nullptr;
+      for (const Joint& other : m_.joints) {
+        if (joint_type_info(other.type).motion != JointMotion::revolute) continue;
+        for (std::size_t side = 0; side < 2 && pin == nullptr; ++side)
+          if (other.bodies[side] == joint.bodies[i] && other.bodies[1 - side] == joint.carrier) {
+            pin = &other;
+            joint.points[i] = other.points[side];
+          }
+      }
+      if (pin == nullptr)
+        fail(joint.pos, "joint " + q(joint.name) + ": gear " + q(joint.bodies[i]) + " is not pinned to its carrier " +
+                            q(joint.carrier) + "; valid: a pin joint between " + q(joint.bodies[i]) + " and " +
+                            q(joint.carrier) + " (each gear turns on a pin of the carrier)");
     }
   }
 
@@ -609,6 +682,7 @@ class MechanismReader {
     read_radius(r, joint, takes);
     if (!info.axis && r.has("axis"))
       r.fail("axis", "'axis' is for " + joint_types_with(&JointTypeInfo::axis) + " only; " + takes);
+    read_mesh(r, joint, takes);
     if (!info.axis) return;
     if (!r.has("axis"))
       r.fail("axis", std::string("a ") + joint_type_name(joint.type) +

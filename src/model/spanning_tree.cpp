@@ -1,6 +1,7 @@
 #include "model/spanning_tree.hpp"
 
 #include <deque>
+#include <stdexcept>
 
 #include "model/joint_types.hpp"
 
@@ -36,6 +37,7 @@ SpanningTree spanning_tree(const Mechanism& mechanism) {
       for (std::size_t j = 0; j < mechanism.joints.size(); ++j) {
         if (used[j]) continue;
         const Joint& joint = mechanism.joints[j];
+        if (!carries_body(joint_type_info(joint.type).motion)) continue;  // it closes a loop
         const int a = mechanism.body_index(joint.bodies[0]);
         const int b = mechanism.body_index(joint.bodies[1]);
         int other = -2;
@@ -89,6 +91,8 @@ SpanningTree spanning_tree(const Mechanism& mechanism) {
         tree.coordinates.push_back({CoordinateKind::s, index, node.joint, joint.name + ".s"});
         if (rotates) tree.coordinates.push_back({CoordinateKind::theta, index, -1, body.name + ".theta"});
         break;
+      case JointMotion::loop:  // never in the tree (carries_body)
+        throw std::logic_error("spanning_tree: a loop-only joint carries a body");
     }
   }
   return tree;

@@ -3,8 +3,8 @@
 // mechanisms/README.md): grown breadth first from the ground, taking joints in file
 // order; a body the ground does not reach starts its own tree as a floating base (x, y,
 // theta; a point mass has no theta), the first such body in file order. A body reached through a pin or a rolling joint
-// adds its absolute angle theta, one reached through a slider adds the slider's s. A joint outside the tree closes a
-// loop.
+// adds its absolute angle theta, one reached through a slider adds the slider's s. A joint whose motion is `loop`
+// (a gear's mesh) never carries a body. A joint outside the tree closes a loop.
 #include <string>
 #include <vector>
 

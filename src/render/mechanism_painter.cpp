@@ -51,6 +51,10 @@ void paint_lines(cairo_t* cr, const DrawStyle& style, const Camera& camera, cons
         set_colour(cr, theme.block_edge[0]);
         cairo_set_line_width(cr, style.edge_width());
         break;
+      case List::Line::Kind::teeth:
+        set_colour(cr, theme.text);
+        cairo_set_line_width(cr, style.edge_width());
+        break;
     }
     if (kind == List::Line::Kind::trail && line.fade.size() == line.points.size()) {
       // Segment by segment, fading with age; butt caps so segments do not double up.
@@ -539,6 +543,7 @@ ForceLayout paint_mechanism_frame(const LayerContexts& at, const DrawStyle& styl
   paint_ghosts(scene, style, camera, list, true);
   paint_lines(scene, style, camera, list, List::Line::Kind::slot);
   paint_lines(scene, style, camera, list, List::Line::Kind::spin);
+  paint_lines(scene, style, camera, list, List::Line::Kind::teeth);
   paint_trail_heads(at(PaintLayer::trail_head), style, camera, list);
   paint_markers(scene, style, camera, list, List::Marker::Kind::ground);
   paint_markers(scene, style, camera, list, List::Marker::Kind::guide);

@@ -49,6 +49,7 @@ std::vector<PinInertia> pin_inertias(const sym::System& system) {
         case JointMotion::fixed:
         case JointMotion::rolling:  // it turns about its contact point, not a point of the body
         case JointMotion::slotted:  // its pin slides along the slot
+        case JointMotion::loop:     // it carries no body
           continue;
       }
       for (std::size_t end = 0; end < 2; ++end) {

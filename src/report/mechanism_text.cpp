@@ -171,6 +171,12 @@ class MechanismWriter {
                    joint.bodies[0], ".", joint.points[0], " and ", joint.bodies[1], ".", joint.points[1],
                    js.in_tree ? " (spanning tree)" : " (closes a loop)"}));
       for (const GiNaC::ex& phi : js.constraints) levels(phi);
+      // A row's constant (a gear's c_G): the rest of the row at the initial state.
+      if (const GiNaC::ex& c = system_.joint_constant(static_cast<int>(j)); !c.is_zero()) {
+        line(concat({"    its constant, the rest of the row at the initial state:"}));
+        step(concat({"  ", spelling(GiNaC::ex_to<GiNaC::symbol>(c))}), system_.constants().at(c),
+             system_.table().find(GiNaC::ex_to<GiNaC::symbol>(c))->unit);
+      }
     }
     for (const sym::DriverSystem& d : system_.drivers()) {
       const Driver& driver = m.drivers[static_cast<std::size_t>(d.index)];

@@ -167,6 +167,13 @@ MechanismGeometry mechanism_geometry(const sym::System& system) {
       if (axis.norm() > 0) shape.axis = axis.normalized();
     }
     if (j.radius) shape.radius = number(system, system.quantity(*j.radius, false));
+    if (j.radii) {
+      const std::array<GiNaC::ex, 2> radii = sym::joint_radii(system, j);
+      shape.radii = {number(system, radii[0]), number(system, radii[1])};
+      shape.mesh = j.internal ? -1 : 1;
+      shape.constant = number(system, system.joint_constant(static_cast<int>(g.joints.size())));
+      shape.carrier = m.body_index(j.carrier);
+    }
     g.joints.push_back(std::move(shape));
   }
   for (const Driver& d : m.drivers)
@@ -407,6 +414,7 @@ MechanismScene::MechanismScene(MechanismGeometry geometry, const MechanismMotion
       switch (sym::joint_stages(joint.type).drawing) {  // the drawing's extent: a rail spans the travel
         case sym::JointDrawing::marker:
         case sym::JointDrawing::bracket:
+        case sym::JointDrawing::gear:
           continue;
         case sym::JointDrawing::rail:
         case sym::JointDrawing::rolling:
@@ -785,6 +793,43 @@ void MechanismScene::add_torsion(const MechanismGeometry::JointShape& joint, con
   out.lines.push_back(std::move(spiral));
 }
 
+void MechanismScene::add_gear(const MechanismGeometry::JointShape& joint, const std::vector<double>& pose,
+                              MechanismDrawList& out) const {
+  // Each gear's pitch circle, with tooth marks one pitch apart on both (kGearMarks on the
+  // smaller) turning with it. A mark of gear 1 at the pitch point P sits at its local angle
+  // 2 pi k / N1; the row r1 b1 + s r2 b2 = c_G (b: an angle less the carrier's) then puts
+  // gear 2's material point at P at alpha2 - 2 pi k s / N2, so its marks start at alpha2.
+  constexpr int kGearMarks = 12, kCircleSteps = 120;
+  using Kind = MechanismDrawList::Line::Kind;
+  const auto angle = [&](int body) { return body < 0 ? 0.0 : pose[3 * static_cast<std::size_t>(body) + 2]; };
+  const std::array<Vec2, 2> centre{world_point(pose, joint.points[0]), world_point(pose, joint.points[1])};
+  const double r1 = joint.radii[0], r2 = joint.radii[1], s = joint.mesh;
+  const Vec2 e = (centre[1] - centre[0]) / (r1 + s * r2);  // from C1 towards P
+  const double phi = std::atan2(e.y(), e.x()) - angle(joint.carrier);
+  const double pitch = 2 * std::numbers::pi * std::min(r1, r2) / kGearMarks;
+  const std::array<double, 2> phase{0.0,
+                                    phi + (s > 0 ? std::numbers::pi : 0.0) - (joint.constant - r1 * phi) / (s * r2)};
+  for (std::size_t side = 0; side < 2; ++side) {
+    const int body = joint.points[side].body;
+    const double r = joint.radii[side], theta = angle(body);
+    MechanismDrawList::Line circle{Kind::teeth, {}, {}, body};
+    for (int k = 0; k <= kCircleSteps; ++k) {
+      const double a = 2 * std::numbers::pi * k / kCircleSteps;
+      circle.points.push_back(centre[side] + r * Vec2(std::cos(a), std::sin(a)));
+    }
+    out.lines.push_back(std::move(circle));
+    const int marks = std::max(3, static_cast<int>(std::lround(2 * std::numbers::pi * r / pitch)));
+    for (int k = 0; k < marks; ++k) {
+      const double a = theta + phase[side] + 2 * std::numbers::pi * k / marks;
+      const Vec2 radial(std::cos(a), std::sin(a));
+      out.lines.push_back({Kind::teeth,
+                           {centre[side] + (r - 0.3 * pitch) * radial, centre[side] + (r + 0.3 * pitch) * radial},
+                           {},
+                           body});
+    }
+  }
+}
+
 void MechanismScene::add_spring(const MechanismGeometry::SpringShape& spring, std::size_t index,
                                 const std::vector<double>& pose, MechanismDrawList& out) const {
   using Kind = MechanismDrawList::Line::Kind;
@@ -918,6 +963,7 @@ void MechanismScene::add_motors(std::size_t k, MechanismDrawList& out) const {
       case JointMotion::fixed:  // not drivable
       case JointMotion::rolling:
       case JointMotion::slotted:
+      case JointMotion::loop:
         break;
     }
   }
@@ -1085,6 +1131,13 @@ void MechanismScene::frame(std::size_t k, MechanismDrawList& out) const {
         out.markers.push_back({MechanismDrawList::Marker::Kind::pin, p1});
         if (shown_.has(Element::labels) && !free_body_) out.joint_labels.push_back({p1, joint.name});
         force_at = {p1, p1};
+        break;
+      }
+      case sym::JointDrawing::gear: {  // labelled at the pitch point, where its force acts
+        add_gear(joint, pose, out);
+        const Vec2 pitch = p0 + joint.radii[0] / (joint.radii[0] + joint.mesh * joint.radii[1]) * (p1 - p0);
+        if (shown_.has(Element::labels) && !free_body_) out.joint_labels.push_back({pitch, joint.name});
+        force_at = {pitch, pitch};
         break;
       }
       case sym::JointDrawing::bracket: {

@@ -39,6 +39,10 @@ struct MechanismGeometry {
     std::array<BodyPoint, 2> points;  // the joint's point on bodies[0] and bodies[1]
     Vec2 axis = Vec2::UnitX();        // slider, rolling: unit, in the frame of bodies[0]
     double radius = 0;                // rolling: m
+    std::array<double, 2> radii{};    // gear: the pitch radii, m
+    double mesh = 1;                  // gear: +1 external, -1 internal
+    double constant = 0;              // gear: c_G, m (its row's constant)
+    int carrier = -1;                 // gear: the carrier body (-1: the ground)
     /// The force's own name when the file's [aliases] give `<joint>.force_x` as
     /// `<name>_x` (two-blocks: P.force_x = F_x, so "F on 1", "−F on 2"); else empty.
     std::string force_name{};
@@ -120,8 +124,9 @@ struct MechanismDrawList {
     Shape shape = Shape::point;
   };
   struct Line {
-    // surface: hatched on its right; slot: a closed channel cut out of its body's fill
-    enum class Kind { spin, rail, spring, dashpot, trail, surface, slot } kind = Kind::rail;
+    // surface: hatched on its right; slot: a closed channel cut out of its body's fill;
+    // teeth: a gear's pitch circle or a tooth mark on it
+    enum class Kind { spin, rail, spring, dashpot, trail, surface, slot, teeth } kind = Kind::rail;
     std::vector<Vec2> points;
     std::vector<double> fade{};  // a trail's, per point: 1 now, falling to 0 with age
     int body = -1;               // the body it moves with in the free-body view (-1: the world)
@@ -322,6 +327,8 @@ class MechanismScene {
 
   void add_torsion(const MechanismGeometry::JointShape& joint, const std::vector<double>& pose,
                    MechanismDrawList& out) const;
+  void add_gear(const MechanismGeometry::JointShape& joint, const std::vector<double>& pose,
+                MechanismDrawList& out) const;
   void add_spring(const MechanismGeometry::SpringShape& spring, std::size_t index, const std::vector<double>& pose,
                   MechanismDrawList& out) const;
   void add_loads(std::size_t k, MechanismDrawList& out) const;

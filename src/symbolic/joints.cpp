@@ -13,6 +13,7 @@ extern const JointStages kSliderJoint;
 extern const JointStages kWeldJoint;
 extern const JointStages kRollingJoint;
 extern const JointStages kPinSlotJoint;
+extern const JointStages kGearJoint;
 
 namespace {
 
@@ -30,6 +31,8 @@ constexpr const JointStages* registered(JointType type) {
       return &kRollingJoint;
     case JointType::pin_slot:
       return &kPinSlotJoint;
+    case JointType::gear:
+      return &kGearJoint;
   }
   return nullptr;
 }
@@ -64,9 +67,24 @@ GiNaC::ex joint_angle(const System& system, const Joint& joint) {
   return system.quantity(*joint.angle, false);
 }
 
+std::array<GiNaC::ex, 2> joint_radii(const System& system, const Joint& joint) {
+  if (!joint_type_info(joint.type).mesh || !joint.radii) return {};
+  return {system.quantity((*joint.radii)[0], false), system.quantity((*joint.radii)[1], false)};
+}
+
 GiNaC::ex joint_radius(const System& system, const Joint& joint) {
   if (!joint_type_info(joint.type).radius || !joint.radius) return 0;
   return system.quantity(*joint.radius, false);
+}
+
+std::array<Vec2, 2> force_points(const System& system, int joint) {
+  const Mechanism& m = system.mechanism();
+  const Joint& j = m.joints.at(static_cast<std::size_t>(joint));
+  const JointStages& stages = joint_stages(j.type);
+  const Vec2 own_a = system.point_position(m.body_index(j.bodies[0]), j.points[0]);
+  const Vec2 own_b = system.point_position(m.body_index(j.bodies[1]), j.points[1]);
+  const Vec2 at_a = stages.force_at_point_b ? own_b : own_a;
+  return {at_a, stages.opposite_at_point_a ? at_a : own_b};
 }
 
 JointEnds maximal_ends(const System& system, int joint) {
@@ -88,6 +106,13 @@ JointEnds maximal_ends(const System& system, int joint) {
   ends.axis = joint_axis(system, j);
   ends.angle = joint_angle(system, j);
   ends.radius = joint_radius(system, j);
+  ends.radii = joint_radii(system, j);
+  ends.mesh = j.internal ? -1 : 1;
+  ends.constant = system.joint_constant(joint);
+  if (const int carrier = system.mechanism().body_index(j.carrier); carrier >= 0) {
+    const BodySystem& c = system.bodies()[static_cast<std::size_t>(carrier)];
+    ends.carrier = {{c.x.q, c.y.q}, c.rotates ? GiNaC::ex(c.theta.q) : GiNaC::ex(0)};
+  }
   return ends;
 }
 

@@ -33,10 +33,14 @@ struct Placement {
 /// in generalized coordinates) and its points in each body's frame.
 struct JointEnds {
   Placement a, b;
-  Vec2 point_a, point_b;  // body frames
-  Vec2 axis;              // slider, rolling: direction in the frame of a (any length)
-  GiNaC::ex radius = 0;   // rolling: the rolling radius
-  GiNaC::ex angle = 0;    // weld: the relative angle th_b - th_a it holds
+  Vec2 point_a, point_b;             // body frames
+  Vec2 axis;                         // slider, rolling: direction in the frame of a (any length)
+  GiNaC::ex radius = 0;              // rolling: the rolling radius
+  GiNaC::ex angle = 0;               // weld: the relative angle th_b - th_a it holds
+  Placement carrier;                 // gear: the body both gears are pinned to (zero: the ground)
+  std::array<GiNaC::ex, 2> radii{};  // gear: the pitch radii of bodies[0] and bodies[1]
+  GiNaC::ex mesh = 1;                // gear: +1 an external mesh, -1 an internal one
+  GiNaC::ex constant = 0;            // the constant its row holds, set by the initial state (a gear's c_G)
 };
 
 /// What the spanning tree gives a tree joint to place the body it carries with: the
@@ -73,6 +77,7 @@ enum class JointDrawing {
   rail,     // a rail along the axis through bodies[0]'s point over the travel, a guide at bodies[1]'s
   bracket,  // an L-shaped plate over the point, a leg along each body
   slot,     // a channel of bodies[0] along the axis over the travel, the pin at bodies[1]'s point
+  gear,     // each body's pitch circle about its point, with teeth marks that turn with it
 };
 
 struct JointStages {
@@ -111,10 +116,23 @@ struct JointStages {
   /// columns: whether each force unknown is written as `JOINT.<key>` too (a rolling
   /// joint's normal and friction).
   bool unknown_columns = false;
+  /// force: whether the opposite force and moment on bodies[1] act at the point where they
+  /// act on bodies[0] (a gear's mesh: one wrench at gear 1's centre), not at its own point.
+  bool opposite_at_point_a = false;
+  /// rows: the letter of the constant its row holds ("c": c_JOINT, in `constant_unit`),
+  /// whose value is the rest of its row at the initial state (a gear's mesh keeps its
+  /// initial phase); null when it holds none. JointEnds::constant is its symbol.
+  const char* constant_letter = nullptr;
+  const char* constant_unit = "";
 };
 
 /// Every joint type's stages, from the registration in joints.cpp.
 [[nodiscard]] const JointStages& joint_stages(JointType type);
+
+/// Where the joint's force and moment act, world frame, maximal coordinates: [0] on
+/// bodies[0] (`force_at_point_b`), [1] the opposite on bodies[1] (`opposite_at_point_a`).
+/// Newton-Euler, Lagrange's generalized forces and the ground reaction all read these.
+[[nodiscard]] std::array<Vec2, 2> force_points(const System& system, int joint);
 
 /// The joint's ends in maximal coordinates (the ground's placement is zero), its axis
 /// checked: one that is zero whatever the parameters is an input error.
@@ -125,6 +143,9 @@ struct JointStages {
 
 /// The relative angle a weld holds, as parsed (0 when absent or its type takes none).
 [[nodiscard]] GiNaC::ex joint_angle(const System& system, const Joint& joint);
+
+/// A mesh's pitch radii as parsed (zero when its type takes none).
+[[nodiscard]] std::array<GiNaC::ex, 2> joint_radii(const System& system, const Joint& joint);
 
 /// The joint's radius as parsed (zero when its type takes none).
 [[nodiscard]] GiNaC::ex joint_radius(const System& system, const Joint& joint);

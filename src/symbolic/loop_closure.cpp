@@ -218,6 +218,7 @@ ClosedState checked_initial_state(const System& system) {
   validate_constraints(system, system.initial_state());  // structural redundancy, before closing
   ClosedState closed = close_loops(system, system.initial_state());
   validate_constraints(system, closed.state);
+  validate_meshes(system, closed.state);
   return closed;
 }
 

@@ -15,13 +15,11 @@ GroundReaction ground_reaction(const System& system) {
   for (const JointSystem& js : system.joints()) {
     const Joint& joint = m.joints[static_cast<std::size_t>(js.index)];
     const int a = m.body_index(joint.bodies[0]), b = m.body_index(joint.bodies[1]);
-    if (a < 0) {  // as add_newton_euler applies js.force to bodies[0]
-      const Vec2 at = joint_stages(joint.type).force_at_point_b ? system.point_position(b, joint.points[1])
-                                                                : system.point_position(a, joint.points[0]);
-      add(js.force, at, js.moment);
-    } else if (b < 0) {
-      add(GiNaC::ex(-1) * js.force, system.point_position(b, joint.points[1]), -js.moment);
-    }
+    const auto [at_a, at_b] = force_points(system, js.index);  // as add_newton_euler applies them
+    if (a < 0)
+      add(js.force, at_a, js.moment);
+    else if (b < 0)
+      add(GiNaC::ex(-1) * js.force, at_b, -js.moment);
   }
   for (const DriverSystem& d : system.drivers()) {
     const Joint& joint = m.joints[static_cast<std::size_t>(d.joint)];

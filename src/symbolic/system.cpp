@@ -165,6 +165,7 @@ System::System(const Mechanism& mechanism) : mechanism_(mechanism), tree_(spanni
   add_state_names();
   add_loads();
   add_generalized();
+  set_joint_constants();
   add_newton_euler();
 }
 
@@ -380,6 +381,20 @@ void System::add_drivers() {
 
 void System::add_joints() {
   const bool single = mechanism_.joints.size() == 1;
+  for (const Joint& joint : mechanism_.joints) {
+    const JointStages& stages = joint_stages(joint.type);
+    if (stages.constant_letter == nullptr) {
+      joint_constants_.emplace_back(0);
+      continue;
+    }
+    const Spelling s = spell_indexed(stages.constant_letter, 0, joint.name);
+    const std::string key = joint.name + ".constant";
+    joint_constants_.emplace_back(
+        table_
+            .add({symbol(key), Role::definition, key, s.unicode, s.ascii, s.latex, stages.constant_unit,
+                  "constant of joint " + joint.name + ", its row's value at the start"})
+            .symbol);
+  }
   for (std::size_t j = 0; j < mechanism_.joints.size(); ++j) {
     const Joint& joint = mechanism_.joints[j];
     JointSystem js;
@@ -596,9 +611,7 @@ void System::add_newton_euler() {
     const Joint& joint = mechanism_.joints[static_cast<std::size_t>(js.index)];
     const int a = body_index(mechanism_, joint.bodies[0]);
     const int b = body_index(mechanism_, joint.bodies[1]);
-    const Vec2 at_a = joint_stages(joint.type).force_at_point_b ? point_position(b, joint.points[1])
-                                                                : point_position(a, joint.points[0]);
-    const Vec2 at_b = point_position(b, joint.points[1]);
+    const auto [at_a, at_b] = force_points(*this, js.index);
     apply(a, js.force, at_a, js.moment);
     apply(b, ex(-1) * js.force, at_b, -js.moment);
   }
@@ -612,6 +625,19 @@ void System::add_newton_euler() {
     rows.rows.push_back(GiNaC::expand(b.mass * b.y.q_ddot - sum_force[i].y));
     if (b.rotates) rows.rows.push_back(GiNaC::expand(b.inertia * b.theta.q_ddot - sum_moment[i]));
     newton_euler_.push_back(std::move(rows));
+  }
+}
+
+void System::set_joint_constants() {
+  // Its value: the rest of its row at the file's initial state, in the parameters.
+  const GiNaC::exmap start = initial_state();
+  for (const JointSystem& js : joints_) {
+    const ex& c = joint_constants_[static_cast<std::size_t>(js.index)];
+    if (c.is_zero()) continue;
+    const ex rest = GiNaC::expand(js.constraints.at(0) + c);
+    constants_[c] = GiNaC::expand(rest.subs(to_generalized_, GiNaC::subs_options::no_pattern)
+                                      .subs(start, GiNaC::subs_options::no_pattern)
+                                      .subs(constants_));
   }
 }
 

@@ -132,6 +132,12 @@ class System {
   /// Generalized coordinate and rate symbols -> values from the file's [initial].
   [[nodiscard]] GiNaC::exmap initial_state() const;
 
+  /// The constant joint `joint`'s row holds (a gear's c_G; its value in constants(): the
+  /// rest of the row at the file's initial state), 0 for a type whose row holds none.
+  [[nodiscard]] const GiNaC::ex& joint_constant(int joint) const {
+    return joint_constants_.at(static_cast<std::size_t>(joint));
+  }
+
  private:
   void add_parameters();
   void add_bodies();
@@ -141,6 +147,7 @@ class System {
   void add_loads();
   void add_generalized();
   void add_newton_euler();
+  void set_joint_constants();
 
   Mechanism mechanism_;
   SymbolTable table_;
@@ -158,6 +165,7 @@ class System {
   GiNaC::exmap constants_, parameter_values_, to_generalized_, lengths_;
   std::map<GiNaC::ex, GiNaC::ex, GiNaC::ex_is_less> derivative_;  // q -> q', q' -> q''
   std::map<int, CoordinateSymbols> slider_symbols_;               // by joint index
+  std::vector<GiNaC::ex> joint_constants_;                        // by joint index
 };
 
 [[nodiscard]] Vec2 rotate(const GiNaC::ex& angle, const Vec2& v);

@@ -9,6 +9,7 @@
 #include "core/number_format.hpp"
 #include "model/joint_types.hpp"
 #include "model/mechanism_toml.hpp"
+#include "symbolic/joints.hpp"
 
 namespace linkage::sym {
 
@@ -108,6 +109,9 @@ void validate_quantities(const System& system) {
         throw Error::input(where(j.pos) + type + " joint " + j.name + " rolls the point mass '" + j.bodies[1] +
                            "', which has no angle; valid: a rolling body with a shape or an inertia");
     }
+    if (info.mesh && j.radii)
+      for (std::size_t i = 0; i < 2; ++i)
+        require_positive(system, (*j.radii)[i], "pitch radius of " + j.bodies[i] + " in " + type + " " + j.name);
     if (info.keeps_angle)
       for (const std::string& body : j.bodies) {
         const Body* b = m.find_body(body);
@@ -126,6 +130,40 @@ void validate_quantities(const System& system) {
     (void)checked_value(system, f.value.y, true, "force on " + f.body + " y", true);
   }
   for (const AppliedTorque& t : m.torques) (void)checked_value(system, t.value, true, "torque on " + t.body, true);
+}
+
+void validate_meshes(const System& system, const GiNaC::exmap& state) {
+  const Mechanism& m = system.mechanism();
+  GiNaC::exmap values = system.parameter_values();
+  for (const auto& [symbol, expression] : system.constants()) values[symbol] = expression;
+  for (const auto& [symbol, value] : state) values[symbol] = value;
+  for (std::size_t j = 0; j < m.joints.size(); ++j) {
+    const Joint& joint = m.joints[j];
+    if (!joint_type_info(joint.type).mesh) continue;
+    const std::array<GiNaC::ex, 2> radii = joint_radii(system, joint);
+    const double r1 = evaluate(radii[0], values), r2 = evaluate(radii[1], values);
+    const auto centre = [&](std::size_t i) {
+      const Vec2 p = system.point_position(m.body_index(joint.bodies[i]), joint.points[i]);
+      return std::array<double, 2>{
+          evaluate(p.x.subs(system.to_generalized(), GiNaC::subs_options::no_pattern), values),
+          evaluate(p.y.subs(system.to_generalized(), GiNaC::subs_options::no_pattern), values)};
+    };
+    const auto c1 = centre(0), c2 = centre(1);
+    const double apart = std::hypot(c2[0] - c1[0], c2[1] - c1[1]);
+    const double want = joint.internal ? std::fabs(r1 - r2) : r1 + r2;
+    const std::string what = joint.internal ? "|r1 - r2|" : "r1 + r2";
+    const std::string mesh = joint.internal ? "an internal mesh" : "an external mesh";
+    if (joint.internal && !(want > 1e-9 * std::max(r1, r2)))
+      throw Error::input(where(joint.pos) + "gear " + joint.name +
+                         ": an internal mesh of equal pitch radii r1 = r2 = " + format_significant(r1, 6) +
+                         " m has one centre; valid: r1 != r2 (the ring the larger)");
+    if (!(std::fabs(apart - want) <= 1e-9 * want))
+      throw Error::input(where(joint.pos) + "gear " + joint.name + ": the centres " + joint.bodies[0] + "." +
+                         joint.points[0] + " and " + joint.bodies[1] + "." + joint.points[1] + " are " +
+                         format_significant(apart, 10) + " m apart at the initial state, not " + what + " = " +
+                         format_significant(want, 10) + " m (" + mesh + "); valid: pins on the carrier " + what +
+                         " apart, within a relative 1e-9");
+  }
 }
 
 void validate_constraints(const System& system, const GiNaC::exmap& state) {

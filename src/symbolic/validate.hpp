@@ -14,4 +14,8 @@ void validate_quantities(const System& system);
 /// (generalized coordinates and rates).
 void validate_constraints(const System& system, const GiNaC::exmap& state);
 
+/// Throws Error::input naming the gear when its centres are not r1 + r2 (external) or
+/// |r1 - r2| (internal) apart, within a relative 1e-9, at `state` (the closed initial one).
+void validate_meshes(const System& system, const GiNaC::exmap& state);
+
 }  // namespace linkage::sym

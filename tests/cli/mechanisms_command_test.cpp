@@ -36,6 +36,7 @@ TEST(MechanismsCommand, ListsTheShippedMechanismsAsATable) {
       "four-bar               3      4   1  Four-bar linkage: a Grashof crank-rocker",
       "four-bar-driven        3      4   0  Four-bar driven at constant crank speed: a crank-rocker",
       "four-bar-spring        3      4   1  Four-bar on a spring: the rocker held by a torsional spring",
+      "gear-train             2      3   1  Gear train: a motor's pinion drives a loaded gear",
       "quick-return           4      6   0  Quick-return: a crank driving a slotted lever and a ram",
       "rolling-disc           2      2   2  Rolling disc and hoop: which rolls down the incline faster",
       "slider-crank           3      4   1  Slider-crank: crank, connecting rod and piston on a slider",

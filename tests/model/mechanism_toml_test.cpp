@@ -139,9 +139,9 @@ TEST(MechanismToml, EveryShippedMechanismReads) {
   std::sort(files.begin(), files.end());
   EXPECT_EQ(names, files);
   EXPECT_EQ(names, (std::vector<std::string>{"cart-pendulum", "coupled-pendulums", "double-pendulum", "engine",
-                                             "four-bar", "four-bar-driven", "four-bar-spring", "quick-return",
-                                             "rolling-disc", "slider-crank", "spring-pendulum", "triple-pendulum",
-                                             "two-blocks", "unequal-blocks", "welded-pendulum"}));
+                                             "four-bar", "four-bar-driven", "four-bar-spring", "gear-train",
+                                             "quick-return", "rolling-disc", "slider-crank", "spring-pendulum",
+                                             "triple-pendulum", "two-blocks", "unequal-blocks", "welded-pendulum"}));
   for (const std::string& name : names) {
     SCOPED_TRACE(name);
     const Mechanism built_in = load_mechanism(name);
@@ -180,6 +180,7 @@ TEST(MechanismToml, ShippedMechanismsHaveTheDocumentedStructure) {
                                                  {"coupled-pendulums", 3, 3, 3, 0},
                                                  {"welded-pendulum", 2, 2, 1, 0},
                                                  {"rolling-disc", 2, 2, 2, 0},
+                                                 {"gear-train", 2, 3, 1, 1},
                                                  {"quick-return", 4, 6, 0, 2}}) {
     SCOPED_TRACE(e.name);
     const Mechanism m = load_mechanism(e.name);
@@ -727,12 +728,13 @@ TEST(MechanismToml, LoadByNameOrFile) {
     ADD_FAILURE() << name_or_file;
     return std::string();
   };
-  EXPECT_EQ(invalid("for-bar"),
-            "'for-bar' is not a shipped mechanism (did you mean 'four-bar'?); valid: cart-pendulum, coupled-pendulums, "
-            "double-pendulum, engine, four-bar, four-bar-driven, four-bar-spring, quick-return, rolling-disc, "
-            "slider-crank, spring-pendulum, triple-pendulum, two-blocks, unequal-blocks, welded-pendulum, or a file "
-            "path (with '/' or "
-            "ending in .toml)");
+  EXPECT_EQ(
+      invalid("for-bar"),
+      "'for-bar' is not a shipped mechanism (did you mean 'four-bar'?); valid: cart-pendulum, coupled-pendulums, "
+      "double-pendulum, engine, four-bar, four-bar-driven, four-bar-spring, gear-train, quick-return, rolling-disc, "
+      "slider-crank, spring-pendulum, triple-pendulum, two-blocks, unequal-blocks, welded-pendulum, or a file "
+      "path (with '/' or "
+      "ending in .toml)");
   EXPECT_FALSE(is_mechanism_file("four-bar"));
   EXPECT_TRUE(is_mechanism_file("my.toml"));
   EXPECT_TRUE(is_mechanism_file("sub/four-bar"));
