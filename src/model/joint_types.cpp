@@ -48,6 +48,7 @@ bool carries_body(JointMotion motion) {
     case JointMotion::prismatic:
     case JointMotion::fixed:
     case JointMotion::rolling:
+    case JointMotion::slotted:
       return true;
     case JointMotion::loop:
       return false;

@@ -36,7 +36,7 @@ void force(JointSystem& joint, const JointEnds& ends) {
   joint.moment = ends.radii[0] * F;
 }
 
-Placement place(const JointEnds&, bool, const GiNaC::ex&) {
+Placement place(const JointEnds&, bool, const TreeCoordinates&) {
   throw std::logic_error("a gear's mesh carries no body in the tree");
 }
 

@@ -473,150 +473,153 @@ inline Mechanism pin_slot_loop() {
   m.initial = {{"crank.theta", 1.0, {}}, {"rocker.theta", 1.5, {}},    {"Q.s", -0.0255, {}},
                {"yoke.theta", 0.53, {}}, {"crank.theta_dot", 1.5, {}}, {"rocker.theta_dot", -0.8, {}}};
   m.independent = {"crank.theta", "rocker.theta"};
-  /// A gear mesh between a and b pinned to `carrier` at their points `centres` (the reader
-  /// finds these from the pins; built in code, they are given).
-  inline Joint gear(const std::string& name, const std::string& a, const std::string& b, const std::string& carrier,
-                    std::array<std::string, 2> radii, bool internal, std::array<std::string, 2> centres) {
-    Joint j;
-    j.name = name;
-    j.type = JointType::gear;
-    j.bodies = {a, b};
-    j.points = std::move(centres);
-    j.carrier = carrier;
-    j.radii = std::array<Quantity, 2>{q(radii[0]), q(radii[1])};
-    j.internal = internal;
-    return j;
-  }
+  return m;
+}
 
-  /// Two discs pinned to the ground in external mesh (r1 0.1, r2 0.25), a torque tau on disc
-  /// 1, under gravity: th1'' = tau / (I1 + I2 (r1/r2)^2), th2'' = -(r1/r2) th1''.
-  inline Mechanism gear_pair() {
-    Mechanism m;
-    m.name = "gear-pair";
-    m.gravity = q("g");
-    m.parameters = {{"r1", 0.1, {}}, {"r2", 0.25, {}}, {"m1", 0.4, {}},
-                    {"m2", 1.5, {}}, {"tau", 0.3, {}}, {"g", 9.81, {}}};
-    m.ground_points = {{"O1", {q("0"), q("0")}, {}}, {"O2", {q("r1 + r2"), q("0")}, {}}};
-    m.bodies = {disc("1", "m1", "r1", {{"C", {"0", "0"}}}), disc("2", "m2", "r2", {{"C", {"0", "0"}}})};
-    m.joints = {pin("P1", "ground", "O1", "1", "C"), pin("P2", "ground", "O2", "2", "C"),
-                gear("G", "1", "2", "ground", {"r1", "r2"}, false, {"C", "C"})};
-    m.torques = {{"1", q("tau"), {}}};
-    m.initial = {{"1.theta", 0.2, {}}, {"1.theta_dot", 0.5, {}}, {"2.theta", -0.1, {}}, {"2.theta_dot", -0.2, {}}};
-    return m;
-  }
+/// A gear mesh between a and b pinned to `carrier` at their points `centres` (the reader
+/// finds these from the pins; built in code, they are given).
+inline Joint gear(const std::string& name, const std::string& a, const std::string& b, const std::string& carrier,
+                  std::array<std::string, 2> radii, bool internal, std::array<std::string, 2> centres) {
+  Joint j;
+  j.name = name;
+  j.type = JointType::gear;
+  j.bodies = {a, b};
+  j.points = std::move(centres);
+  j.carrier = carrier;
+  j.radii = std::array<Quantity, 2>{q(radii[0]), q(radii[1])};
+  j.internal = internal;
+  return j;
+}
 
-  /// A pinion (disc 1, r1 0.1) inside a ring gear (ring 2, r2 0.3), both pinned to the
-  /// ground, in internal mesh, a torque tau on the pinion: th2'' = (r1/r2) th1''.
-  inline Mechanism ring_gear() {
-    Mechanism m;
-    m.name = "ring-gear";
-    m.gravity = q("g");
-    m.parameters = {{"r1", 0.1, {}}, {"r2", 0.3, {}},  {"m1", 0.3, {}},
-                    {"m2", 1.0, {}}, {"tau", 0.2, {}}, {"g", 9.81, {}}};
-    m.ground_points = {{"O", {q("0"), q("0")}, {}}, {"Q", {q("(r2 - r1)*cos(0.4)"), q("(r2 - r1)*sin(0.4)")}, {}}};
-    Body ring = body("2", Shape::ring, "m2", {{"C", {"0", "0"}}});
-    ring.radius = q("r2");
-    m.bodies = {disc("1", "m1", "r1", {{"C", {"0", "0"}}}), ring};
-    m.joints = {pin("P1", "ground", "Q", "1", "C"), pin("P2", "ground", "O", "2", "C"),
-                gear("G", "1", "2", "ground", {"r1", "r2"}, true, {"C", "C"})};
-    m.torques = {{"1", q("tau"), {}}};
-    m.initial = {{"1.theta", 0.3, {}}, {"1.theta_dot", 0.9, {}}, {"2.theta", 0.1, {}}};
-    return m;
-  }
+/// Two discs pinned to the ground in external mesh (r1 0.1, r2 0.25), a torque tau on disc
+/// 1, under gravity: th1'' = tau / (I1 + I2 (r1/r2)^2), th2'' = -(r1/r2) th1''.
+inline Mechanism gear_pair() {
+  Mechanism m;
+  m.name = "gear-pair";
+  m.gravity = q("g");
+  m.parameters = {{"r1", 0.1, {}}, {"r2", 0.25, {}}, {"m1", 0.4, {}},
+                  {"m2", 1.5, {}}, {"tau", 0.3, {}}, {"g", 9.81, {}}};
+  m.ground_points = {{"O1", {q("0"), q("0")}, {}}, {"O2", {q("r1 + r2"), q("0")}, {}}};
+  m.bodies = {disc("1", "m1", "r1", {{"C", {"0", "0"}}}), disc("2", "m2", "r2", {{"C", {"0", "0"}}})};
+  m.joints = {pin("P1", "ground", "O1", "1", "C"), pin("P2", "ground", "O2", "2", "C"),
+              gear("G", "1", "2", "ground", {"r1", "r2"}, false, {"C", "C"})};
+  m.torques = {{"1", q("tau"), {}}};
+  m.initial = {{"1.theta", 0.2, {}}, {"1.theta_dot", 0.5, {}}, {"2.theta", -0.1, {}}, {"2.theta_dot", -0.2, {}}};
+  return m;
+}
 
-  /// An epicyclic set: a sun (disc 1) pinned to the ground at O, an arm (rod 3) pinned to the
-  /// ground at O, a planet (disc 2) pinned to the arm's end, in external mesh with the sun,
-  /// the arm the carrier; a torque on the arm, a spring-free 2 degrees of freedom.
-  inline Mechanism planetary_gears() {
-    Mechanism m;
-    m.name = "planetary";
-    m.parameters = {{"rs", 0.12, {}}, {"rp", 0.06, {}}, {"ms", 0.8, {}},  {"mp", 0.2, {}},
-                    {"ma", 0.3, {}},  {"L", 0.18, {}},  {"tau", 0.05, {}}};
-    m.ground_points = {{"O", {q("0"), q("0")}, {}}};
-    m.bodies = {disc("1", "ms", "rs", {{"C", {"0", "0"}}}), disc("2", "mp", "rp", {{"C", {"0", "0"}}}),
-                rod("3", "ma", "L", {{"O", {"-L/2", "0"}}, {"E", {"L/2", "0"}}})};
-    m.joints = {pin("S", "ground", "O", "1", "C"), pin("A", "ground", "O", "3", "O"), pin("E", "3", "E", "2", "C"),
-                gear("G", "1", "2", "3", {"rs", "rp"}, false, {"C", "C"})};
-    m.torques = {{"3", q("tau"), {}}};
-    m.initial = {{"1.theta", 0.1, {}}, {"1.theta_dot", -0.4, {}}, {"3.theta", 0.5, {}}, {"3.theta_dot", 0.7, {}}};
-    return m;
-  }
+/// A pinion (disc 1, r1 0.1) inside a ring gear (ring 2, r2 0.3), both pinned to the
+/// ground, in internal mesh, a torque tau on the pinion: th2'' = (r1/r2) th1''.
+inline Mechanism ring_gear() {
+  Mechanism m;
+  m.name = "ring-gear";
+  m.gravity = q("g");
+  m.parameters = {{"r1", 0.1, {}}, {"r2", 0.3, {}},  {"m1", 0.3, {}},
+                  {"m2", 1.0, {}}, {"tau", 0.2, {}}, {"g", 9.81, {}}};
+  m.ground_points = {{"O", {q("0"), q("0")}, {}}, {"Q", {q("(r2 - r1)*cos(0.4)"), q("(r2 - r1)*sin(0.4)")}, {}}};
+  Body ring = body("2", Shape::ring, "m2", {{"C", {"0", "0"}}});
+  ring.radius = q("r2");
+  m.bodies = {disc("1", "m1", "r1", {{"C", {"0", "0"}}}), ring};
+  m.joints = {pin("P1", "ground", "Q", "1", "C"), pin("P2", "ground", "O", "2", "C"),
+              gear("G", "1", "2", "ground", {"r1", "r2"}, true, {"C", "C"})};
+  m.torques = {{"1", q("tau"), {}}};
+  m.initial = {{"1.theta", 0.3, {}}, {"1.theta_dot", 0.9, {}}, {"2.theta", 0.1, {}}};
+  return m;
+}
 
-  /// A named mechanism for parameterized tests.
-  struct Named {
-    std::string name;
-    std::function<Mechanism()> make;
-  };
+/// An epicyclic set: a sun (disc 1) pinned to the ground at O, an arm (rod 3) pinned to the
+/// ground at O, a planet (disc 2) pinned to the arm's end, in external mesh with the sun,
+/// the arm the carrier; a torque on the arm, a spring-free 2 degrees of freedom.
+inline Mechanism planetary_gears() {
+  Mechanism m;
+  m.name = "planetary";
+  m.parameters = {{"rs", 0.12, {}}, {"rp", 0.06, {}}, {"ms", 0.8, {}},  {"mp", 0.2, {}},
+                  {"ma", 0.3, {}},  {"L", 0.18, {}},  {"tau", 0.05, {}}};
+  m.ground_points = {{"O", {q("0"), q("0")}, {}}};
+  m.bodies = {disc("1", "ms", "rs", {{"C", {"0", "0"}}}), disc("2", "mp", "rp", {{"C", {"0", "0"}}}),
+              rod("3", "ma", "L", {{"O", {"-L/2", "0"}}, {"E", {"L/2", "0"}}})};
+  m.joints = {pin("S", "ground", "O", "1", "C"), pin("A", "ground", "O", "3", "O"), pin("E", "3", "E", "2", "C"),
+              gear("G", "1", "2", "3", {"rs", "rp"}, false, {"C", "C"})};
+  m.torques = {{"3", q("tau"), {}}};
+  m.initial = {{"1.theta", 0.1, {}}, {"1.theta_dot", -0.4, {}}, {"3.theta", 0.5, {}}, {"3.theta_dot", 0.7, {}}};
+  return m;
+}
 
-  /// How GoogleTest prints a Named parameter.
-  inline void PrintTo(const Named& named, std::ostream* out) { *out << named.name; }
+/// A named mechanism for parameterized tests.
+struct Named {
+  std::string name;
+  std::function<Mechanism()> make;
+};
 
-  /// Every mechanism built here: pins, sliders, floating bases, springs, dampers, applied
-  /// loads and closed loops.
-  inline std::vector<Named> all_mechanisms() {
-    return {{"homework", homework},
-            {"double_pendulum", double_pendulum},
-            {"triple_pendulum", triple_pendulum},
-            {"four_bar", four_bar},
-            {"slider_crank", slider_crank},
-            {"arm_collar", arm_collar},
-            {"loaded", double_pendulum_loaded},
-            {"cart_pendulum", cart_pendulum},
-            {"reversed", reversed_joints},
-            {"floating_pair", floating_pair},
-            {"floating_collar", floating_collar},
-            {"four_bar_loaded", four_bar_loaded},
-            {"spring_pendulum", [] { return spring_pendulum(true); }},
-            {"welded_pendulum", welded_pendulum},
-            {"welded_chain", welded_chain},
-            {"welded_floating", welded_floating},
-            {"rolling", rolling_wheel_and_plank},
-            {"pin_slot_tree", pin_slot_tree},
-            {"scotch_yoke", scotch_yoke},
-            {"pin_slot_loop", pin_slot_loop},
-            {"gear_pair", gear_pair},
-            {"ring_gear", ring_gear},
-            {"planetary", planetary_gears}};
-  }
+/// How GoogleTest prints a Named parameter.
+inline void PrintTo(const Named& named, std::ostream* out) { *out << named.name; }
 
-  /// A random state of `system`: with no loop, every generalized coordinate and rate drawn
-  /// (angles in [-pi, pi], x in [0.2, 1], y in [-1, -0.2], s in [0.1, 0.6] m, rates in
-  /// [-2, 2]); with loops, the independent coordinates moved by up to 0.2 from [initial],
-  /// every rate drawn, then the loops closed.
-  inline GiNaC::exmap random_state(const sym::System& system, std::mt19937& rng) {
-    auto draw = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
-    const bool loops = !system.tree().loop_joints.empty();
-    GiNaC::exmap state = system.initial_state();
-    for (const sym::GeneralizedCoordinate& g : system.coordinates()) {
-      double value = 0;
-      switch (g.coordinate.kind) {
-        case CoordinateKind::theta:
-          value = draw(-M_PI, M_PI);
-          break;
-        case CoordinateKind::x:
-          value = draw(0.2, 1);
-          break;
-        case CoordinateKind::y:
-          value = draw(-1, -0.2);
-          break;
-        case CoordinateKind::s:
-          value = draw(0.1, 0.6);
-          break;
-      }
-      const double rate = draw(-2, 2);
-      if (loops) {
-        bool independent = false;
-        for (const std::string& key : system.mechanism().independent)
-          independent = independent || key == g.coordinate.key;
-        if (independent)
-          value = sym::to_double(state[g.symbols.q]) + draw(-0.2, 0.2);
-        else
-          value = sym::to_double(state[g.symbols.q]);
-      }
-      state[g.symbols.q] = GiNaC::numeric(value);
-      state[g.symbols.q_dot] = GiNaC::numeric(rate);
+/// Every mechanism built here: pins, sliders, floating bases, springs, dampers, applied
+/// loads and closed loops.
+inline std::vector<Named> all_mechanisms() {
+  return {{"homework", homework},
+          {"double_pendulum", double_pendulum},
+          {"triple_pendulum", triple_pendulum},
+          {"four_bar", four_bar},
+          {"slider_crank", slider_crank},
+          {"arm_collar", arm_collar},
+          {"loaded", double_pendulum_loaded},
+          {"cart_pendulum", cart_pendulum},
+          {"reversed", reversed_joints},
+          {"floating_pair", floating_pair},
+          {"floating_collar", floating_collar},
+          {"four_bar_loaded", four_bar_loaded},
+          {"spring_pendulum", [] { return spring_pendulum(true); }},
+          {"welded_pendulum", welded_pendulum},
+          {"welded_chain", welded_chain},
+          {"welded_floating", welded_floating},
+          {"rolling", rolling_wheel_and_plank},
+          {"pin_slot_tree", pin_slot_tree},
+          {"scotch_yoke", scotch_yoke},
+          {"pin_slot_loop", pin_slot_loop},
+          {"gear_pair", gear_pair},
+          {"ring_gear", ring_gear},
+          {"planetary", planetary_gears}};
+}
+
+/// A random state of `system`: with no loop, every generalized coordinate and rate drawn
+/// (angles in [-pi, pi], x in [0.2, 1], y in [-1, -0.2], s in [0.1, 0.6] m, rates in
+/// [-2, 2]); with loops, the independent coordinates moved by up to 0.2 from [initial],
+/// every rate drawn, then the loops closed.
+inline GiNaC::exmap random_state(const sym::System& system, std::mt19937& rng) {
+  auto draw = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
+  const bool loops = !system.tree().loop_joints.empty();
+  GiNaC::exmap state = system.initial_state();
+  for (const sym::GeneralizedCoordinate& g : system.coordinates()) {
+    double value = 0;
+    switch (g.coordinate.kind) {
+      case CoordinateKind::theta:
+        value = draw(-M_PI, M_PI);
+        break;
+      case CoordinateKind::x:
+        value = draw(0.2, 1);
+        break;
+      case CoordinateKind::y:
+        value = draw(-1, -0.2);
+        break;
+      case CoordinateKind::s:
+        value = draw(0.1, 0.6);
+        break;
     }
-    return loops ? sym::close_loops(system, state).state : state;
+    const double rate = draw(-2, 2);
+    if (loops) {
+      bool independent = false;
+      for (const std::string& key : system.mechanism().independent)
+        independent = independent || key == g.coordinate.key;
+      if (independent)
+        value = sym::to_double(state[g.symbols.q]) + draw(-0.2, 0.2);
+      else
+        value = sym::to_double(state[g.symbols.q]);
+    }
+    state[g.symbols.q] = GiNaC::numeric(value);
+    state[g.symbols.q_dot] = GiNaC::numeric(rate);
   }
+  return loops ? sym::close_loops(system, state).state : state;
+}
 
 }  // namespace linkage::built
