@@ -57,12 +57,13 @@ void expect_real_file(const fs::path& file) {
 TEST(ShippedLessons, TheCourseIsComplete) {
   std::vector<std::string> names;
   for (const fs::path& file : shipped_lessons()) names.push_back(file.stem().string());
-  EXPECT_EQ(names,
-            (std::vector<std::string>{"01-moments-of-inertia", "02-holonomic-constraints", "03-case1-eight-equations",
-                                      "04-case2-six-equations", "05-case3-four-equations", "06-numerical-example",
-                                      "07-constraint-drift", "08-accuracy-and-cost", "09-beyond-the-equations",
-                                      "10-double-pendulum-chaos", "11-unequal-blocks", "12-slider-crank", "13-four-bar",
-                                      "14-kinematic-analysis", "15-inverse-dynamics", "16-small-vibrations"}));
+  EXPECT_EQ(
+      names,
+      (std::vector<std::string>{
+          "01-moments-of-inertia", "02-holonomic-constraints", "03-case1-eight-equations", "04-case2-six-equations",
+          "05-case3-four-equations", "06-numerical-example", "07-constraint-drift", "08-accuracy-and-cost",
+          "09-beyond-the-equations", "10-double-pendulum-chaos", "11-unequal-blocks", "12-slider-crank", "13-four-bar",
+          "14-kinematic-analysis", "15-inverse-dynamics", "16-small-vibrations", "17-rolling-and-gearing"}));
 }
 
 TEST(ShippedLessons, RunAtDraftQualityAndCache) {
