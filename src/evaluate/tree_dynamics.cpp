@@ -35,7 +35,8 @@ P2 rotate(double c, double s, const P2& v) { return {c * v.x - s * v.y, s * v.x 
 
 enum class NodeKind { floating, revolute, prismatic, fixed, rolling };  // model/joint_types.hpp: JointMotion
 
-/// One body of the tree, in the order the tree reached it (parents first).
+/// One body of the tree, in the order the tree reached it (parents first); a pin-slot's
+/// two dof are two nodes, the first a massless one of no body (body -1).
 struct Node {
   int body = -1;
   int parent = -1;  // node index, -1 for the ground or none
@@ -120,6 +121,7 @@ Mat3 full(const Sym3& m) {
 
 struct TreeDynamics::Impl {
   std::vector<Node> nodes;
+  std::size_t bodies = 0;  // the mechanism's: nodes has one more per pin-slot in the tree
   std::size_t coordinates = 0;
   std::vector<double> parameters;
   bool loads_constant = false;
@@ -140,6 +142,7 @@ struct TreeDynamics::Impl {
   void kinematics(const Eigen::VectorXd& y) const;
   /// The loads on the node's body as a spatial force about O, r = centre - O.
   [[nodiscard]] S3 load_about(const Node& node, const P2& r) const {
+    if (node.body < 0) return {};
     const double* f = &load_outputs[3 * static_cast<std::size_t>(node.body)];
     return {f[2] + r.x * f[1] - r.y * f[0], f[0], f[1]};
   }
@@ -159,19 +162,6 @@ bool TreeDynamics::applies(const sym::System& system) {
   const SpanningTree& tree = system.tree();
   for (std::size_t b = 0; b < tree.bodies.size(); ++b)
     if (!tree.bodies[b].floating && !system.bodies()[b].rotates) return false;
-  // A pin-slot's motion (a travel and a turn: two coordinates in one node) is not
-  // modelled: such a tree runs the structured/LU path.
-  for (int j : tree.tree_joints)
-    switch (joint_type_info(system.mechanism().joints[static_cast<std::size_t>(j)].type).motion) {
-      case JointMotion::revolute:
-      case JointMotion::prismatic:
-      case JointMotion::fixed:
-      case JointMotion::rolling:
-      case JointMotion::loop:  // never in the tree
-        break;
-      case JointMotion::slotted:
-        return false;
-    }
   return true;
 }
 
@@ -188,7 +178,7 @@ TreeDynamics::TreeDynamics(const sym::System& system) : impl_(std::make_unique<I
     return Vec2(number(p.x), number(p.y));
   };
 
-  std::vector<int> node_of(tree.bodies.size(), -1);
+  std::vector<int> node_of(tree.bodies.size(), -1), massless_of(tree.bodies.size(), -1);
   for (int b : tree.order) {
     const TreeBody& t = tree.bodies[static_cast<std::size_t>(b)];
     const sym::BodySystem& body = system.bodies()[static_cast<std::size_t>(b)];
@@ -218,8 +208,25 @@ TreeDynamics::TreeDynamics(const sym::System& system) : impl_(std::make_unique<I
           n.radius = number(sym::joint_radius(system, joint));
           break;
         }
-        case JointMotion::slotted:
-          throw std::logic_error("TreeDynamics: a pin-slot joint in the tree (applies() declines it)");
+        case JointMotion::slotted: {
+          // Two nodes: a massless one of no body takes the first dof, the body the second.
+          // Carrying the pin's body: a slider on the slot to the pin, then a pin there.
+          // Carrying the slot's: a pin at the pin, then a slider along the turned slot.
+          const sym::Vec2 axis = sym::joint_axis(system, joint);
+          Node massless;
+          massless.parent = n.parent;
+          massless.parent_point = n.parent_point;
+          massless.kind = child_is_b ? NodeKind::prismatic : NodeKind::revolute;
+          massless.axis = plain(Vec2(number(axis.x), number(axis.y)).normalized());
+          n.parent = static_cast<int>(m.nodes.size());
+          n.parent_point = {};
+          n.kind = child_is_b ? NodeKind::revolute : NodeKind::prismatic;
+          n.axis = massless.axis;
+          n.sign = -1;  // the slot's point A is the pin less s u
+          massless_of[static_cast<std::size_t>(b)] = n.parent;
+          m.nodes.push_back(massless);
+          break;
+        }
         case JointMotion::loop:
           throw std::logic_error("TreeDynamics: a loop-only joint in the tree");
         case JointMotion::prismatic: {
@@ -244,7 +251,12 @@ TreeDynamics::TreeDynamics(const sym::System& system) : impl_(std::make_unique<I
   }
   for (std::size_t i = 0; i < system.coordinates().size(); ++i) {
     const Coordinate& c = system.coordinates()[i].coordinate;
-    Node& n = m.nodes[static_cast<std::size_t>(node_of[static_cast<std::size_t>(c.body)])];
+    int at = node_of[static_cast<std::size_t>(c.body)];
+    // A pin-slot's travel is the slider node's, its angle the pin node's.
+    if (const int massless = massless_of[static_cast<std::size_t>(c.body)]; massless >= 0)
+      if ((c.kind == CoordinateKind::s) == (m.nodes[static_cast<std::size_t>(massless)].kind == NodeKind::prismatic))
+        at = massless;
+    Node& n = m.nodes[static_cast<std::size_t>(at)];
     const int slot = c.kind == CoordinateKind::x    ? 0
                      : c.kind == CoordinateKind::y  ? 1
                      : n.kind == NodeKind::floating ? 2
@@ -252,6 +264,7 @@ TreeDynamics::TreeDynamics(const sym::System& system) : impl_(std::make_unique<I
     n.coordinate[static_cast<std::size_t>(slot)] = static_cast<int>(i);
   }
   m.coordinates = system.coordinates().size();
+  m.bodies = system.bodies().size();
 
   // The loads, in every body's maximal coordinates.
   std::vector<GiNaC::symbol> inputs;
@@ -351,10 +364,10 @@ void TreeDynamics::Impl::kinematics(const Eigen::VectorXd& y) const {
   const auto n = static_cast<Eigen::Index>(coordinates);
   const double* q = y.data();
   const double* q_dot = q + n;
-  const std::size_t bodies = nodes.size(), first = parameters.size();
+  const std::size_t first = parameters.size();
   // Each angle's cosine and sine first, in a loop of their own: the calls clobber every
   // register, and the recursion below then runs without them.
-  for (std::size_t k = 0; k < bodies; ++k) {
+  for (std::size_t k = 0; k < nodes.size(); ++k) {
     const Node& node = nodes[k];
     Work& w = work[k];
     switch (node.kind) {
@@ -378,7 +391,7 @@ void TreeDynamics::Impl::kinematics(const Eigen::VectorXd& y) const {
     S3 v;
     double angle = 0, cos_angle = 1, sin_angle = 0;
   } previous;
-  for (std::size_t k = 0; k < bodies; ++k) {
+  for (std::size_t k = 0; k < nodes.size(); ++k) {
     const Node& node = nodes[k];
     Work& w = work[k];
     const bool has_parent = node.parent >= 0;
@@ -503,7 +516,7 @@ void TreeDynamics::Impl::kinematics(const Eigen::VectorXd& y) const {
     w.IA = {node.inertia + m * (r.x * r.x + r.y * r.y), -m * r.y, m * r.x, m, 0, m};
     w.pA = pA;
     previous = {centre, point, v, w.angle, w.cos_angle, w.sin_angle};
-    if (loads_constant) continue;
+    if (loads_constant || node.body < 0) continue;
     const auto b = static_cast<std::size_t>(node.body);
     load_inputs[first + 3 * b] = centre.x;
     load_inputs[first + 3 * b + 1] = centre.y;
@@ -697,13 +710,13 @@ bool TreeDynamics::accelerations(double t, const Eigen::VectorXd& y, Eigen::Vect
   const auto n = static_cast<Eigen::Index>(m.coordinates);
   q_ddot.resize(n);
   m.kinematics(y);
-  const std::size_t bodies = m.work.size(), first = m.parameters.size();
+  const std::size_t first = m.parameters.size();
   if (!m.loads_constant) {
-    m.load_inputs[first + 6 * bodies] = t;
+    m.load_inputs[first + 6 * m.bodies] = t;
     m.loads.run(m.load_inputs.data(), m.load_outputs.data(), m.scratch.data());
   }
   if (!m.loads_constant)  // p^A = v x* I v - f
-    for (std::size_t k = 0; k < bodies; ++k) {
+    for (std::size_t k = 0; k < m.work.size(); ++k) {
       Work& w = m.work[k];
       const S3 f = m.load_about(m.nodes[k], P2{w.centre.x - w.point.x, w.centre.y - w.point.y});
       w.pA = {w.pA.n - f.n, w.pA.x - f.x, w.pA.y - f.y};
