@@ -197,6 +197,15 @@ class DerivationWriter : private MathDocument {
       std::vector<std::string> groups;
       for (const GiNaC::ex& phi : js.constraints) groups.push_back(levels(phi));
       aligned(joined(groups, " \\\\[1ex]\n"));
+      // A row's constant (a gear's c_G): the rest of the row at the initial state.
+      if (const GiNaC::ex& c = system_.joint_constant(static_cast<int>(j)); !c.is_zero()) {
+        new_paragraph(text("Its constant, the rest of the row at the initial state:"));
+        const MathStep at_start = step(tex(c), system_.constants().at(c), info(GiNaC::ex_to<GiNaC::symbol>(c)).unit);
+        // c_G = (the rest of the row)|_{t=0} = its parameters' form = value.
+        aligned(step_rows({{at_start.quantity, tex(GiNaC::expand(js.constraints.at(0) + c)) + " \\Big|_{t = 0}",
+                            at_start.formula, at_start.result}},
+                          pad()));
+      }
     }
     for (const sym::DriverSystem& d : system_.drivers()) {
       const Driver& driver = m.drivers[static_cast<std::size_t>(d.index)];

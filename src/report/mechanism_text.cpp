@@ -173,9 +173,15 @@ class MechanismWriter {
       for (const GiNaC::ex& phi : js.constraints) levels(phi);
       // A row's constant (a gear's c_G): the rest of the row at the initial state.
       if (const GiNaC::ex& c = system_.joint_constant(static_cast<int>(j)); !c.is_zero()) {
-        line(concat({"    its constant, the rest of the row at the initial state:"}));
-        step(concat({"  ", spelling(GiNaC::ex_to<GiNaC::symbol>(c))}), system_.constants().at(c),
-             system_.table().find(GiNaC::ex_to<GiNaC::symbol>(c))->unit);
+        const GiNaC::ex rest = GiNaC::expand(js.constraints.at(0) + c);
+        const GiNaC::ex& at_start = system_.constants().at(c);
+        const std::string& unit_ascii = system_.table().find(GiNaC::ex_to<GiNaC::symbol>(c))->unit;
+        line("    its constant, the rest of the row at the initial state:");
+        const std::string lhs = concat({"  ", spelling(GiNaC::ex_to<GiNaC::symbol>(c)), " = ", math(rest), " at t = 0"});
+        if (GiNaC::is_a<GiNaC::numeric>(at_start))  // nothing to substitute: its value
+          line(concat({"  ", lhs, " = ", number(value(at_start)), unit_ascii.empty() ? "" : " ", unit(unit_ascii)}));
+        else
+          step(lhs, at_start, unit_ascii);
       }
     }
     for (const sym::DriverSystem& d : system_.drivers()) {

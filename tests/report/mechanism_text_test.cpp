@@ -50,6 +50,24 @@ TEST(MechanismText, StateValuesPrintAsTheFileWritesThem) {
             std::string::npos);
 }
 
+// A gear's row holds a constant, c_G: each format defines it as the rest of the row at
+// the initial state, with its value (0.3 r1 = 0.015 m with the pinion started at 0.3 rad).
+TEST(MechanismText, AGearsConstantIsDefinedByTheRestOfItsRow) {
+  Mechanism m = load_mechanism(std::string(LINKAGE_SOURCE_DIR) + "/mechanisms/gear-train.toml");
+  for (InitialValue& v : m.initial)
+    if (v.key == "pinion.theta") v.value = 0.3;
+  const MechanismSolution s = work_out_mechanism(m, {CaseId::maximal});
+  EXPECT_NE(mechanism_text(s, ascii())
+                .find("    c_G = r1 th_pinion + r2 th_gear at t = 0 = 0.3 r1 = 0.3 * 0.05 "
+                      "= 0.015 m\n"),
+            std::string::npos)
+      << mechanism_text(s, ascii());
+  const std::string expected = "c_G &= r_1 \\theta_{\\mathrm{pinion}} + r_2 \\theta_{\\mathrm{gear}} \\Big|_{t = 0}";
+  EXPECT_NE(mechanism_latex(s, ascii()).find(expected), std::string::npos);
+  EXPECT_NE(mechanism_markdown(s, ascii()).find(expected), std::string::npos);
+  EXPECT_NE(mechanism_latex(s, ascii()).find("&= 0.3 r_1 = 0.015\\ \\mathrm{m}"), std::string::npos);
+}
+
 TEST(MechanismText, HomeworkCaseEquationsAsTheGolden) {
   const MechanismSolution s =
       work_out_mechanism(built::homework(), {CaseId::maximal, CaseId::generalized, CaseId::reduced});
