@@ -177,7 +177,8 @@ class MechanismWriter {
         const GiNaC::ex& at_start = system_.constants().at(c);
         const std::string& unit_ascii = system_.table().find(GiNaC::ex_to<GiNaC::symbol>(c))->unit;
         line("    its constant, the rest of the row at the initial state:");
-        const std::string lhs = concat({"  ", spelling(GiNaC::ex_to<GiNaC::symbol>(c)), " = ", math(rest), " at t = 0"});
+        const std::string lhs =
+            concat({"  ", spelling(GiNaC::ex_to<GiNaC::symbol>(c)), " = ", math(rest), " at t = 0"});
         if (GiNaC::is_a<GiNaC::numeric>(at_start))  // nothing to substitute: its value
           line(concat({"  ", lhs, " = ", number(value(at_start)), unit_ascii.empty() ? "" : " ", unit(unit_ascii)}));
         else
