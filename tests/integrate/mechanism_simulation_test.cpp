@@ -18,7 +18,8 @@ namespace linkage {
 namespace {
 
 const char* const kShipped[] = {"two-blocks",      "unequal-blocks", "double-pendulum", "triple-pendulum",
-                                "spring-pendulum", "slider-crank",   "four-bar",        "welded-pendulum"};
+                                "spring-pendulum", "slider-crank",   "four-bar",        "welded-pendulum",
+                                "rolling-disc",    "gear-train",     "quick-return"};
 
 struct RunResult {
   MechanismStats stats;
@@ -57,7 +58,9 @@ TEST_P(Shipped, Dop853KeepsTheEnergyBalanceAndTheJoints) {
     const RunResult r = run(GetParam(), tight(c));
     EXPECT_LT(r.stats.max_energy_error, 1e-9) << "Case " << c;
     EXPECT_LT(r.stats.max_constraint_error, 1e-10) << "Case " << c;
-    EXPECT_GT(r.stats.steps_accepted, 10) << "Case " << c;
+    // Stepped through the run, not in one step: gear-train's motion, quadratic in t under
+    // constant torques, takes DOP853 8 steps in 10 s.
+    EXPECT_GE(r.stats.steps_accepted, 5) << "Case " << c;
   }
 }
 
