@@ -1,6 +1,6 @@
 #pragma once
-// Checks of simulate runs shared by the driven and the state-loaded runs' tests: the
-// energy balance with real work, and the three cases agreeing.
+// Checks of simulate runs shared by the simulate tests: a tight run of one case, the energy
+// balance with real work, and the three cases agreeing.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,6 +11,21 @@
 #include "support/test_support.hpp"
 
 namespace linkage::test {
+
+/// One case of `linkage simulate` at rtol = atol = 1e-12 (`more` flags after), sampled
+/// every `every` s over `duration` s, as a table; a run that fails is a test failure.
+inline Table simulate_tight(const std::string& file, int case_id, const std::string& columns, double duration,
+                            double every, const std::vector<std::string>& more = {}) {
+  std::vector<std::string> args{"simulate", "--mechanism", file,     "--case", std::to_string(case_id),
+                                "--rtol",   "1e-12",       "--atol", "1e-12"};
+  args.insert(args.end(), more.begin(), more.end());
+  for (const std::string& a : {std::string("--duration"), std::to_string(duration), std::string("--every"),
+                               std::to_string(every), std::string("--columns"), columns})
+    args.push_back(a);
+  const RunResult r = run_linkage(args);
+  EXPECT_EQ(r.exit_code, 0) << file << " Case " << case_id << ": " << r.err;
+  return parse_csv(r.out);
+}
 
 /// `table` has columns t, work, energy_error_relative: E - E(0) - W within 1e-9 of the
 /// energy scale at every row, while |W| reaches 0.1 J (the work counted is not small).

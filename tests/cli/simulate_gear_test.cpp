@@ -9,6 +9,7 @@
 #include <cmath>
 #include <string>
 
+#include "run_checks.hpp"
 #include "support/test_support.hpp"
 
 namespace linkage::test {
@@ -23,11 +24,7 @@ TEST(SimulateGear, GearTrainMatchesTheReflectedInertiaAndTorque) {
       "t,pinion.theta_ddot,gear.theta_ddot,pinion.theta_dot,gear.theta_dot,G.force,G.force_x,G.force_y,O1.force_x,"
       "O1.force_y,O2.force_x,O2.force_y,G.constraint_error,energy_error_relative";
   for (int case_id : {1, 2, 3}) {
-    const RunResult r =
-        run_linkage({"simulate", "--mechanism", file, "--case", std::to_string(case_id), "--rtol", "1e-12", "--atol",
-                     "1e-12", "--duration", "4", "--every", "0.5", "--columns", columns});
-    ASSERT_EQ(r.exit_code, 0) << "Case " << case_id << ": " << r.err;
-    const Table table = parse_csv(r.out);
+    const Table table = simulate_tight(file, case_id, columns, 4, 0.5);
     ASSERT_EQ(table.rows.size(), 9U) << "Case " << case_id;
     for (const std::vector<double>& row : table.rows) {
       const std::string at = "Case " + std::to_string(case_id) + " t " + std::to_string(row[0]);

@@ -27,12 +27,8 @@ std::string test_file(const std::string& name) {
 }
 
 Table simulate(const std::string& file, int case_id, const std::string& columns, double duration, double every) {
-  const RunResult r =
-      run_linkage({"simulate", "--mechanism", file, "--case", std::to_string(case_id), "--rtol", "1e-12", "--atol",
-                   "1e-12", "--integrator", "dop853", "--stabilize", "projection", "--duration",
-                   std::to_string(duration), "--every", std::to_string(every), "--columns", columns});
-  EXPECT_EQ(r.exit_code, 0) << file << " Case " << case_id << ": " << r.err;
-  return parse_csv(r.out);
+  return simulate_tight(file, case_id, columns, duration, every,
+                        {"--integrator", "dop853", "--stabilize", "projection"});
 }
 
 constexpr double kR = 0.1, kCrankMass = 0.3, kYokeMass = 0.6, kG = 9.81;

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <string>
 
+#include "run_checks.hpp"
 #include "support/test_support.hpp"
 
 namespace linkage::test {
@@ -21,11 +22,7 @@ TEST(SimulateRolling, DiscAndHoopOnAnInclineMatchTheClosedForms) {
       "t,disc.x_ddot,disc.y_ddot,hoop.x_ddot,hoop.y_ddot,R1.normal,R1.friction,R2.normal,R2.friction,"
       "R1.constraint_error,energy_error_relative";
   for (int case_id : {1, 2, 3}) {
-    const RunResult r =
-        run_linkage({"simulate", "--mechanism", file, "--case", std::to_string(case_id), "--rtol", "1e-12", "--atol",
-                     "1e-12", "--duration", "4", "--every", "0.5", "--columns", columns});
-    ASSERT_EQ(r.exit_code, 0) << "Case " << case_id << ": " << r.err;
-    const Table table = parse_csv(r.out);
+    const Table table = simulate_tight(file, case_id, columns, 4, 0.5);
     ASSERT_EQ(table.rows.size(), 9U) << "Case " << case_id;
     for (const std::vector<double>& row : table.rows) {
       // The centres' accelerations down the slope: (cos alpha, -sin alpha) on the right,
