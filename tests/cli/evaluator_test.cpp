@@ -16,6 +16,8 @@
 namespace linkage {
 namespace {
 
+using test::test_mechanism;
+
 using test::run_linkage;
 using test::RunResult;
 using test::ScopedEnv;
@@ -46,7 +48,7 @@ TEST(Evaluator, CompiledAndInterpretedGiveTheSameCsvOnEveryShippedMechanism) {
 TEST(Evaluator, AUsersFileCompilesOnceThenLoadsFromTheCache) {
   TempDir cache;
   const ScopedEnv xdg("XDG_CACHE_HOME", cache.path().string());
-  const std::string file = std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/cart-pendulum.toml";
+  const std::string file = test_mechanism("cart-pendulum.toml");
   const RunResult first = simulate(file, "compiled");
   ASSERT_EQ(first.exit_code, 0) << first.err;
   EXPECT_NE(first.err.find("evaluator: compiled (compiled into " + cache.path().string() + "/linkage/native/"),
@@ -68,7 +70,7 @@ TEST(Evaluator, AUsersFileCompilesOnceThenLoadsFromTheCache) {
 TEST(Evaluator, LoadsThatDependOnTheStateCompileToTheInterpretersNumbers) {
   TempDir cache;
   const ScopedEnv xdg("XDG_CACHE_HOME", cache.path().string());
-  const std::string file = std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/state-loads-cart.toml";
+  const std::string file = test_mechanism("state-loads-cart.toml");
   const RunResult compiled = simulate(file, "compiled");
   const RunResult interpreted = simulate(file, "interpreted");
   ASSERT_EQ(compiled.exit_code, 0) << compiled.err;
@@ -82,7 +84,7 @@ TEST(Evaluator, WithoutACompilerAutoFallsBackAndCompiledIsRefused) {
   TempDir cache, empty;
   const ScopedEnv xdg("XDG_CACHE_HOME", cache.path().string());
   const ScopedEnv path("PATH", empty.path().string());
-  const std::string file = std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/cart-pendulum.toml";
+  const std::string file = test_mechanism("cart-pendulum.toml");
   const RunResult automatic = simulate(file, "auto");
   ASSERT_EQ(automatic.exit_code, 0) << automatic.err;
   EXPECT_NE(automatic.err.find("evaluator: interpreted (no C++ compiler on PATH)"), std::string::npos) << automatic.err;

@@ -14,14 +14,10 @@
 namespace linkage::test {
 namespace {
 
-std::string mechanism_file(const std::string& name) {
-  return std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/" + name;
-}
-
 Table simulate(const std::string& file, int case_id, const std::string& columns, double duration, double every,
                const std::string& integrator = "dop853") {
   const RunResult r =
-      run_linkage({"simulate", "--mechanism", mechanism_file(file), "--case", std::to_string(case_id), "--integrator",
+      run_linkage({"simulate", "--mechanism", test_mechanism(file), "--case", std::to_string(case_id), "--integrator",
                    integrator, "--rtol", "1e-12", "--atol", "1e-12", "--dt", "0.001", "--duration",
                    std::to_string(duration), "--every", std::to_string(every), "--columns", columns});
   EXPECT_EQ(r.exit_code, 0) << file << " Case " << case_id << " " << integrator << ": " << r.err;

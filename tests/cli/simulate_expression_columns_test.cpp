@@ -14,10 +14,6 @@
 namespace linkage::test {
 namespace {
 
-std::string test_mechanism(const std::string& name) {
-  return std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/" + name;
-}
-
 // The four-bar's transmission angle gamma = th4 - th3 in degrees is the difference of the
 // two angles' degree columns (to round-off: each column is converted on its own).
 TEST(SimulateExpressionColumns, AnAngleDifferenceIsWrittenInTheAnglesUnit) {

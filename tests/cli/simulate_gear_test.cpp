@@ -19,7 +19,7 @@ TEST(SimulateGear, GearTrainMatchesTheReflectedInertiaAndTorque) {
   const double r1 = 0.05, r2 = 0.15, m1 = 0.5, m2 = 4.5, tau = 0.02, T = 0.03, g = 9.81;
   const double I1 = m1 * r1 * r1 / 2, I2 = m2 * r2 * r2 / 2, n = r1 / r2;
   const double a1 = (tau - n * T) / (I1 + n * n * I2), a2 = -n * a1, F = (I2 * a2 - T) / r2;
-  const std::string file = std::string(LINKAGE_SOURCE_DIR) + "/mechanisms/gear-train.toml";
+  const std::string file = source_path("mechanisms/gear-train.toml");
   const char* columns =
       "t,pinion.theta_ddot,gear.theta_ddot,pinion.theta_dot,gear.theta_dot,G.force,G.force_x,G.force_y,O1.force_x,"
       "O1.force_y,O2.force_x,O2.force_y,G.constraint_error,energy_error_relative";

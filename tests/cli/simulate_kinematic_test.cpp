@@ -16,14 +16,10 @@
 namespace linkage::test {
 namespace {
 
-std::string mechanism_file(const std::string& name) {
-  return std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/" + name;
-}
-
 // driven-four-bar.toml with the crank's [initial] off its motion 1 + 3 t + 0.5 sin 2t
 // (at t = 0: 1 rad, 4 rad/s): 0.7 rad at 1 rad/s.
 std::string off_the_motion(const TempDir& dir) {
-  std::string text = read_text(mechanism_file("driven-four-bar.toml"));
+  std::string text = read_text(test_mechanism("driven-four-bar.toml"));
   const std::string given = "\"2\" = { theta = 1.0, theta_dot = 4 }";
   const std::size_t at = text.find(given);
   EXPECT_NE(at, std::string::npos);
@@ -81,7 +77,7 @@ TEST(SimulateKinematic, InitialOffTheMotionIsPlacedOnItInSolve) {
 }
 
 TEST(SimulateKinematic, SummarySaysKinematicAnalysisAndNotesTheIntegratorFlags) {
-  const RunResult r = run_linkage({"simulate", "--mechanism", mechanism_file("offset-slider-crank.toml"),
+  const RunResult r = run_linkage({"simulate", "--mechanism", test_mechanism("offset-slider-crank.toml"),
                                    "--integrator", "rk4", "--dt", "0.01", "--duration", "0.1", "--every", "0.05"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("linkage: note: kinematic analysis (0 degrees of freedom): the drivers fix the motion and "
@@ -92,7 +88,7 @@ TEST(SimulateKinematic, SummarySaysKinematicAnalysisAndNotesTheIntegratorFlags) 
       << r.err;
   // Without those flags, no note about them.
   const RunResult plain = run_linkage(
-      {"simulate", "--mechanism", mechanism_file("offset-slider-crank.toml"), "--duration", "0.1", "--every", "0.05"});
+      {"simulate", "--mechanism", test_mechanism("offset-slider-crank.toml"), "--duration", "0.1", "--every", "0.05"});
   ASSERT_EQ(plain.exit_code, 0) << plain.err;
   EXPECT_EQ(plain.err.find("not used"), std::string::npos) << plain.err;
 }
@@ -102,7 +98,7 @@ TEST(SimulateKinematic, SummarySaysKinematicAnalysisAndNotesTheIntegratorFlags) 
 // every row written before is finite and before the limit.
 TEST(SimulateKinematic, TripleRockerDrivenPastItsLimitStopsWithOneLine) {
   for (const std::string case_id : {"1", "2", "3"}) {
-    const RunResult r = run_linkage({"simulate", "--mechanism", mechanism_file("triple-rocker.toml"), "--quiet",
+    const RunResult r = run_linkage({"simulate", "--mechanism", test_mechanism("triple-rocker.toml"), "--quiet",
                                      "--case", case_id, "--duration", "1", "--every", "0.01", "--columns",
                                      "t,2.theta,3.theta,4.theta,3.theta_dot,M.torque"});
     EXPECT_EQ(r.exit_code, 2) << "Case " << case_id;
@@ -126,7 +122,7 @@ TEST(SimulateKinematic, TripleRockerDrivenPastItsLimitStopsWithOneLine) {
 TEST(SimulateKinematic, MixedRunDrivenPastItsLimitStopsWithOneLine) {
   for (const std::string case_id : {"1", "2", "3"}) {
     const RunResult r =
-        run_linkage({"simulate", "--mechanism", mechanism_file("triple-rocker-on-cart.toml"), "--quiet", "--case",
+        run_linkage({"simulate", "--mechanism", test_mechanism("triple-rocker-on-cart.toml"), "--quiet", "--case",
                      case_id, "--duration", "1", "--every", "0.01", "--columns", "t,2.theta,4.theta,cart.x,M.torque"});
     EXPECT_EQ(r.exit_code, 2) << "Case " << case_id;
     EXPECT_TRUE(std::regex_search(
@@ -153,7 +149,7 @@ TEST_P(FixedStepPastItsLimit, StopsWithTheLimitsOneLine) {
   const std::vector<std::string> cases =
       GetParam() == "gauss-legendre" ? std::vector<std::string>{"2", "3"} : std::vector<std::string>{"1", "2", "3"};
   for (const std::string& case_id : cases) {
-    const RunResult r = run_linkage({"simulate", "--mechanism", mechanism_file("triple-rocker-on-cart.toml"), "--quiet",
+    const RunResult r = run_linkage({"simulate", "--mechanism", test_mechanism("triple-rocker-on-cart.toml"), "--quiet",
                                      "--integrator", GetParam(), "--dt", "0.001", "--case", case_id, "--duration", "1",
                                      "--every", "0.01", "--columns", "t,2.theta,4.theta,cart.x,M.torque"});
     EXPECT_EQ(r.exit_code, 2) << GetParam() << " Case " << case_id;
@@ -183,7 +179,7 @@ INSTANTIATE_TEST_SUITE_P(EveryFixedStepIntegrator, FixedStepPastItsLimit,
 // of steps, to round-off. Euler's drift opens the loop there: "the loop opened", not a limit.
 TEST(SimulateKinematic, FixedStepCoarseSamplesOfAFullTurnAreNoLimit) {
   const auto run = [](const std::string& integrator, const std::string& every) {
-    return run_linkage({"simulate", "--mechanism", mechanism_file("crank-rocker-on-cart.toml"), "--quiet",
+    return run_linkage({"simulate", "--mechanism", test_mechanism("crank-rocker-on-cart.toml"), "--quiet",
                         "--integrator", integrator, "--dt", "0.001", "--duration", "3", "--every", every, "--columns",
                         "t,2.theta,4.theta,cart.x,M.torque"});
   };
@@ -208,7 +204,7 @@ TEST(SimulateKinematic, FixedStepCoarseSamplesOfAFullTurnAreNoLimit) {
 TEST(SimulateKinematic, ParallelogramSteppedOverItsChangePointStopsWithOneLine) {
   for (const std::string every : {"0.1", "0.07"})
     for (const std::string case_id : {"1", "2", "3"}) {
-      const RunResult r = run_linkage({"simulate", "--mechanism", mechanism_file("parallelogram-driven.toml"),
+      const RunResult r = run_linkage({"simulate", "--mechanism", test_mechanism("parallelogram-driven.toml"),
                                        "--quiet", "--case", case_id, "--duration", "2.5", "--every", every, "--columns",
                                        "t,crank.theta,coupler.theta,rocker.theta,M.torque"});
       EXPECT_EQ(r.exit_code, 2) << "Case " << case_id << " every " << every;
@@ -228,7 +224,7 @@ TEST(SimulateKinematic, ParallelogramSteppedOverItsChangePointStopsWithOneLine) 
 // piston-driven-slider-crank.toml: the piston driven past its reach sqrt((r + l)^2 - e^2)
 // = 0.448999 m (t = 0.48999 s), where crank and rod lie in line; the rail is not (offset e).
 TEST(SimulateKinematic, PistonDrivenPastItsDeadCentreNamesCrankAndRod) {
-  const RunResult r = run_linkage({"simulate", "--mechanism", mechanism_file("piston-driven-slider-crank.toml"),
+  const RunResult r = run_linkage({"simulate", "--mechanism", test_mechanism("piston-driven-slider-crank.toml"),
                                    "--quiet", "--duration", "1", "--every", "0.01"});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_TRUE(std::regex_search(r.err, std::regex("^linkage: error: at t = 0\\.4899[0-9]* s driver 'P' at "

@@ -22,10 +22,6 @@
 namespace linkage::test {
 namespace {
 
-std::string test_file(const std::string& name) {
-  return std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/" + name;
-}
-
 Table simulate(const std::string& file, int case_id, const std::string& columns, double duration, double every) {
   return simulate_tight(file, case_id, columns, duration, every,
                         {"--integrator", "dop853", "--stabilize", "projection"});
@@ -35,7 +31,7 @@ constexpr double kR = 0.1, kCrankMass = 0.3, kYokeMass = 0.6, kG = 9.81;
 
 TEST(SimulatePinSlot, FreeScotchYokeStaysOnItsClosedFormAndKeepsItsEnergy) {
   for (int case_id : {1, 2, 3}) {
-    const Table table = simulate(test_file("scotch-yoke.toml"), case_id,
+    const Table table = simulate(test_mechanism("scotch-yoke.toml"), case_id,
                                  "t,crank.theta,yoke.x,X.s,Q.s,Q.constraint_error,energy_error_relative", 10, 0.25);
     ASSERT_EQ(table.rows.size(), 41U) << "Case " << case_id;
     double turned = 0;
@@ -56,7 +52,7 @@ TEST(SimulatePinSlot, FreeScotchYokeStaysOnItsClosedFormAndKeepsItsEnergy) {
 TEST(SimulatePinSlot, DrivenScotchYokeMatchesItsClosedForms) {
   const double w = 5;
   for (int case_id : {1, 2, 3}) {
-    const Table table = simulate(test_file("scotch-yoke-driven.toml"), case_id,
+    const Table table = simulate(test_mechanism("scotch-yoke-driven.toml"), case_id,
                                  "t,crank.theta,yoke.x,yoke.x_ddot,Q.normal,M.torque", 10, 0.25);
     ASSERT_EQ(table.rows.size(), 41U) << "Case " << case_id;
     for (const std::vector<double>& row : table.rows) {
@@ -79,7 +75,7 @@ TEST(SimulatePinSlot, DrivenScotchYokeMatchesItsClosedForms) {
 TEST(SimulatePinSlot, BeadInADrivenSlotFollowsItsClosedForm) {
   const double w = 1.5, m = 0.2, s0 = 0.3, v0 = 0.2, a = kG / (2 * w * w), d = (v0 - kG / (2 * w)) / w;
   for (int case_id : {1, 2, 3}) {
-    const Table table = simulate(test_file("slotted-bar-bead.toml"), case_id,
+    const Table table = simulate(test_mechanism("slotted-bar-bead.toml"), case_id,
                                  "t,bar.theta,Q.s,bead.x_dot,bead.y_dot,Q.normal,bead.x,bead.y", 2, 0.1);
     ASSERT_EQ(table.rows.size(), 21U) << "Case " << case_id;
     for (const std::vector<double>& row : table.rows) {
@@ -100,7 +96,7 @@ TEST(SimulatePinSlot, BeadInADrivenSlotFollowsItsClosedForm) {
   }
 }
 
-const std::string kQuickReturn = std::string(LINKAGE_SOURCE_DIR) + "/mechanisms/quick-return.toml";
+const std::string kQuickReturn = source_path("mechanisms/quick-return.toml");
 
 TEST(SimulatePinSlot, QuickReturnCasesAgree) {
   std::vector<Table> tables;

@@ -17,7 +17,7 @@ namespace {
 
 TEST(SimulateRolling, DiscAndHoopOnAnInclineMatchTheClosedForms) {
   const double m = 1, g = 9.81, alpha = 0.03;
-  const std::string file = std::string(LINKAGE_SOURCE_DIR) + "/mechanisms/rolling-disc.toml";
+  const std::string file = source_path("mechanisms/rolling-disc.toml");
   const char* columns =
       "t,disc.x_ddot,disc.y_ddot,hoop.x_ddot,hoop.y_ddot,R1.normal,R1.friction,R2.normal,R2.friction,"
       "R1.constraint_error,energy_error_relative";

@@ -47,9 +47,8 @@ void check(const Case& c) {
   columns += c.extra_columns;
   for (int case_id : {1, 2, 3}) {
     const RunResult r =
-        run_linkage({"simulate", "--mechanism", std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/" + c.file,
-                     "--case", std::to_string(case_id), "--rtol", "1e-12", "--atol", "1e-12", "--duration", "1.5",
-                     "--every", "0.05", "--columns", columns});
+        run_linkage({"simulate", "--mechanism", test_mechanism(c.file), "--case", std::to_string(case_id), "--rtol",
+                     "1e-12", "--atol", "1e-12", "--duration", "1.5", "--every", "0.05", "--columns", columns});
     ASSERT_EQ(r.exit_code, 0) << c.file << " Case " << case_id << ": " << r.err;
     const Table table = parse_csv(r.out);
     ASSERT_EQ(table.rows.size(), 31U);

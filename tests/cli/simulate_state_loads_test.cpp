@@ -16,13 +16,9 @@
 namespace linkage::test {
 namespace {
 
-std::string mechanism_file(const std::string& name) {
-  return std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/" + name;
-}
-
 RunResult simulate_run(const std::string& file, int case_id, const std::string& columns, double duration,
                        double every) {
-  return run_linkage({"simulate", "--mechanism", mechanism_file(file), "--case", std::to_string(case_id), "--rtol",
+  return run_linkage({"simulate", "--mechanism", test_mechanism(file), "--case", std::to_string(case_id), "--rtol",
                       "1e-12", "--atol", "1e-12", "--duration", std::to_string(duration), "--every",
                       std::to_string(every), "--columns", columns});
 }
@@ -101,7 +97,7 @@ TEST(SimulateStateLoads, TheCasesAgreeOnAStateLoadedRun) {
 
 // The derivation shows the torque as written, its rate spelled like every other rate.
 TEST(SimulateStateLoads, SolvePrintsTheLoadAsWrittenInEveryFormat) {
-  const std::string file = mechanism_file("motor-disc.toml");
+  const std::string file = test_mechanism("motor-disc.toml");
   const RunResult text = run_linkage({"solve", "--mechanism", file, "--case", "3", "--unicode"});
   ASSERT_EQ(text.exit_code, 0) << text.err;
   EXPECT_NE(text.out.find("I θ̈_disc = T₀ (1 - θ̇_disc/w₀)"), std::string::npos) << text.out;
@@ -125,7 +121,7 @@ TEST(SimulateStateLoads, AStiffnessThatTurnsNegativeInTheRunStopsIt) {
   const double crossing = 0.2072126;
   for (const std::string integrator : {"dop853", "rk4"})
     for (const std::string case_id : {"1", "3"}) {
-      const RunResult r = run_linkage({"simulate", "--mechanism", mechanism_file("softening-spring-cart.toml"),
+      const RunResult r = run_linkage({"simulate", "--mechanism", test_mechanism("softening-spring-cart.toml"),
                                        "--quiet", "--integrator", integrator, "--case", case_id, "--duration", "1",
                                        "--every", "0.05", "--columns", "t,S.s,energy"});
       EXPECT_EQ(r.exit_code, 2) << integrator << " Case " << case_id;
@@ -156,7 +152,7 @@ TEST(SimulateStateLoads, ALoadThatTurnsNonFiniteInTheRunStopsIt) {
   const double crossing = 0.3188163;
   for (const std::string integrator : {"dop853", "rk4"})
     for (const std::string case_id : {"1", "3"}) {
-      const RunResult r = run_linkage({"simulate", "--mechanism", mechanism_file("root-force-cart.toml"), "--quiet",
+      const RunResult r = run_linkage({"simulate", "--mechanism", test_mechanism("root-force-cart.toml"), "--quiet",
                                        "--integrator", integrator, "--case", case_id, "--duration", "1", "--every",
                                        "0.05", "--columns", "t,S.s,energy,work"});
       EXPECT_EQ(r.exit_code, 2) << integrator << " Case " << case_id;

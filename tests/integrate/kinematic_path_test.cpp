@@ -12,14 +12,13 @@
 #include "integrate/dop853.hpp"
 #include "integrate/mechanism_simulation.hpp"
 #include "model/mechanism_toml.hpp"
+#include "support/test_support.hpp"
 #include "symbolic/loop_closure.hpp"
 
 namespace linkage {
 namespace {
 
-std::string data_file(const std::string& name) {
-  return std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/" + name;
-}
+using test::test_mechanism;
 
 SimulationOptions options(int case_id, double duration) {
   SimulationOptions o;
@@ -42,7 +41,7 @@ std::size_t body_index(const sym::System& system, const std::string& name) {
 // S' = r w cos th, S'' = -r w^2 sin th: to 1e-12 at 201 times over two turns, in every case.
 TEST(KinematicPath, OffsetSliderCrankPistonToRoundOff) {
   const double r = 0.1, l = 0.35, e = 0.03, w = 12, th0 = 0.5;
-  const sym::System system(read_mechanism_file(data_file("offset-slider-crank.toml")));
+  const sym::System system(read_mechanism_file(test_mechanism("offset-slider-crank.toml")));
   const std::size_t piston = body_index(system, "piston");
   for (int case_id : {1, 2, 3}) {
     MechanismSimulation simulation(system, sym::checked_initial_state(system).state, options(case_id, 1.0));
@@ -70,7 +69,7 @@ TEST(KinematicPath, OffsetSliderCrankPistonToRoundOff) {
 TEST(KinematicPath, FourBarOutputAngleMeetsFreudensteinsEquation) {
   const double a = 0.1, b = 0.3, c = 0.25, d = 0.3;
   const double K1 = d / a, K2 = d / c, K3 = (a * a - b * b + c * c + d * d) / (2 * a * c);
-  const sym::System system(read_mechanism_file(data_file("driven-four-bar.toml")));
+  const sym::System system(read_mechanism_file(test_mechanism("driven-four-bar.toml")));
   const std::size_t crank = body_index(system, "2"), rocker = body_index(system, "4");
   for (int case_id : {1, 2, 3}) {
     MechanismSimulation simulation(system, sym::checked_initial_state(system).state, options(case_id, 2.0));
@@ -90,7 +89,7 @@ TEST(KinematicPath, FourBarOutputAngleMeetsFreudensteinsEquation) {
 // (the crank turns up to 2 rad between samples) the rocker is where a run sampled every
 // 0.01 s puts it, to 1e-12, over 4 s (three turns of the crank).
 TEST(KinematicPath, CoarseOutputKeepsTheBranch) {
-  const sym::System system(read_mechanism_file(data_file("driven-four-bar.toml")));
+  const sym::System system(read_mechanism_file(test_mechanism("driven-four-bar.toml")));
   const std::size_t rocker = body_index(system, "4");
   const GiNaC::exmap initial = sym::checked_initial_state(system).state;
   MechanismSimulation coarse(system, initial, options(3, 4.0)), fine(system, initial, options(3, 4.0));
@@ -107,7 +106,7 @@ TEST(KinematicPath, CoarseOutputKeepsTheBranch) {
 // The energy balance E - E(0) - W with W the motor's and the damper's work by quadrature
 // along the exact path: at round-off (1e-12 of the energy scale), with a work that is not small.
 TEST(KinematicPath, TheEnergyBalanceHoldsToRoundOff) {
-  const sym::System system(read_mechanism_file(data_file("driven-four-bar.toml")));
+  const sym::System system(read_mechanism_file(test_mechanism("driven-four-bar.toml")));
   for (int case_id : {1, 2, 3}) {
     MechanismSimulation simulation(system, sym::checked_initial_state(system).state, options(case_id, 2.0));
     eval::MechanismSample s;
@@ -126,7 +125,7 @@ TEST(KinematicPath, TheEnergyBalanceHoldsToRoundOff) {
 // The kinematic path's M.torque against the forward dynamics' at the same times, the
 // latter integrated by DOP853 at rtol = atol = 1e-12 from the same start: to 1e-8 N m.
 TEST(KinematicPath, TheTorqueIsTheIntegratedPathsOwn) {
-  const sym::System system(read_mechanism_file(data_file("offset-slider-crank.toml")));
+  const sym::System system(read_mechanism_file(test_mechanism("offset-slider-crank.toml")));
   const GiNaC::exmap initial = sym::checked_initial_state(system).state;
   for (int case_id : {1, 2, 3}) {
     MechanismSimulation simulation(system, initial, options(case_id, 0.5));
@@ -157,7 +156,7 @@ TEST(KinematicPath, TheTorqueIsTheIntegratedPathsOwn) {
 // a step too short to judge, and the run stopped as at a limit position. Times a few
 // roundings apart are one time.
 TEST(KinematicPath, OutputTimesARoundingApartFromItsStepsAreReached) {
-  const sym::System system(read_mechanism_file(data_file("driven-four-bar.toml")));
+  const sym::System system(read_mechanism_file(test_mechanism("driven-four-bar.toml")));
   MechanismSimulation simulation(system, sym::checked_initial_state(system).state, options(3, 2.0));
   ASSERT_TRUE(simulation.stats().kinematic);
   eval::MechanismSample s;

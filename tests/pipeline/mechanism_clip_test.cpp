@@ -31,6 +31,8 @@
 namespace linkage {
 namespace {
 
+using test::test_mechanism;
+
 MechanismClip small_still(const std::string& out) {
   MechanismClip clip;
   clip.settings.width = 160;
@@ -456,10 +458,6 @@ void for_each_laid_out_frame(const std::vector<std::string>& names, std::size_t 
       }
     }
   }
-}
-
-std::string test_mechanism(const std::string& file) {
-  return std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/" + file;
 }
 
 // --show acceleration in free fall: a ≈ g, so each block's acceleration arrow leaves its
@@ -1321,7 +1319,7 @@ TEST(MechanismClip, ADriversMotorIsDrawnAtItsJointInTheMotorColour) {
     }
     return count;
   };
-  const std::string driven = std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/driven-four-bar.toml";
+  const std::string driven = test_mechanism("driven-four-bar.toml");
   EXPECT_GT(motor_pixels(driven, true, "driven"), 60);
   EXPECT_EQ(motor_pixels(driven, false, "hidden"), 0);
   EXPECT_EQ(motor_pixels("four-bar", true, "undriven"), 0);

@@ -15,17 +15,17 @@
 #include "model/mechanism_toml.hpp"
 #include "pipeline/mechanism_clip.hpp"
 #include "scene/mechanism_scene.hpp"
+#include "support/test_support.hpp"
 #include "symbolic/loop_closure.hpp"
 
 namespace linkage {
 namespace {
 
+using test::test_mechanism;
+
 using Kind = MechanismDrawList::Arrow::Kind;
 
 // A mechanism file of tests/data/mechanisms/.
-std::string test_data(const std::string& file) {
-  return std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/" + file;
-}
 
 MechanismMotion motion_of(const sym::System& system, double duration, double fps, int trail_steps = 1,
                           bool accelerations = false) {
@@ -482,7 +482,7 @@ TEST(MechanismPicture, FreeBodyViewPullsEachBodyApartWithItsForces) {
 // about O2 turning counter-clockwise for M.torque > 0 with the column's value in its label;
 // shown by default, hidden by --hide motor, absent from a file with no driver.
 TEST(MechanismPicture, ADriverIsAMotorAtItsJointWithItsTorque) {
-  const sym::System system(load_mechanism(test_data("driven-four-bar.toml")));
+  const sym::System system(load_mechanism(test_mechanism("driven-four-bar.toml")));
   const MechanismMotion motion = motion_of(system, 2.0, 30);
   const MechanismScene scene(mechanism_geometry(system), motion, {});
   const std::vector<MechanismColumn> columns = mechanism_columns(system);
@@ -541,7 +541,7 @@ TEST(MechanismPicture, ADriverIsAMotorAtItsJointWithItsTorque) {
 // A slider's driver: driven-cart-pendulum.toml's D moves the cart along slider S: the
 // motor at the guide along the rail, its force an arrow along the axis with D.force's value.
 TEST(MechanismPicture, ASliderDriverIsAMotorAlongItsAxisWithItsForce) {
-  const sym::System system(load_mechanism(test_data("driven-cart-pendulum.toml")));
+  const sym::System system(load_mechanism(test_mechanism("driven-cart-pendulum.toml")));
   const MechanismMotion motion = motion_of(system, 1.0, 10);
   const MechanismScene scene(mechanism_geometry(system), motion, {});
   MechanismDrawList list;
@@ -569,7 +569,7 @@ TEST(MechanismPicture, ASliderDriverIsAMotorAlongItsAxisWithItsForce) {
 // r w^2 dt^2/8 = 0.1 x 144/120^2/8 = 1.25e-4 m for A at r = 0.1 m (without it, up to
 // r w dt = 1 cm), far below a pixel of the picture (0.7 m over 1280 px).
 TEST(MechanismPicture, ATrailOverADriversCycleCloses) {
-  const sym::System system(load_mechanism(test_data("offset-slider-crank.toml")));
+  const sym::System system(load_mechanism(test_mechanism("offset-slider-crank.toml")));
   const double period = driver_cycle_seconds(system);
   EXPECT_NEAR(period, 2 * std::numbers::pi / 12, 1e-12);
   EXPECT_NEAR(trail_seconds_of(system, "cycle"), period, 0);
@@ -605,8 +605,9 @@ TEST(MechanismPicture, ATrailOverADriversCycleCloses) {
     return std::string("no error");
   };
   EXPECT_NE(refusal("four-bar").find("cycle needs a [[driver]], and four-bar has none"), std::string::npos);
-  EXPECT_NE(refusal(test_data("driven-four-bar.toml")).find("does not turn at a constant rate"), std::string::npos);
-  EXPECT_NE(refusal(test_data("driven-cart-pendulum.toml")).find("moves slider S"), std::string::npos);
+  EXPECT_NE(refusal(test_mechanism("driven-four-bar.toml")).find("does not turn at a constant rate"),
+            std::string::npos);
+  EXPECT_NE(refusal(test_mechanism("driven-cart-pendulum.toml")).find("moves slider S"), std::string::npos);
 }
 
 // Issue 25, Deliver 8: --show velocity,acceleration --points 3.P,4.B: at each named point
@@ -614,7 +615,7 @@ TEST(MechanismPicture, ATrailOverADriversCycleCloses) {
 // magnitude; the values are the sample's kinematics of those points (MechanismSample::points,
 // the 3.P.x_dot ... columns), independent of the scene's own derivative of the position.
 TEST(MechanismPicture, NamedPointsCarryTheirVelocityAndAcceleration) {
-  const sym::System system(load_mechanism(test_data("driven-four-bar.toml")));
+  const sym::System system(load_mechanism(test_mechanism("driven-four-bar.toml")));
   const MechanismMotion motion = motion_of(system, 1.0, 30, 1, true);
   const MechanismGeometry geometry = mechanism_geometry(system);
   const std::vector<BodyPoint> points{geometry.resolve("3.P", "points"), geometry.resolve("4.B", "points")};

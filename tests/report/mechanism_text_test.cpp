@@ -14,6 +14,9 @@
 namespace linkage {
 namespace {
 
+using test::source_path;
+using test::test_mechanism;
+
 // The lines of `text` from the line equal to `first` up to (not including) the first line
 // that starts with `until`.
 std::string section(const std::string& text, const std::string& first, const std::string& until) {
@@ -33,7 +36,7 @@ ReportOptions ascii() {
 // (S.s, rod.theta), and how Case 1, which has no slider coordinate, writes the slider's
 // names; in text, LaTeX and Markdown alike.
 TEST(MechanismText, StateValuesPrintAsTheFileWritesThem) {
-  const Mechanism m = load_mechanism(std::string(LINKAGE_SOURCE_DIR) + "/tests/data/mechanisms/state-loads-cart.toml");
+  const Mechanism m = load_mechanism(test_mechanism("state-loads-cart.toml"));
   const MechanismSolution s = work_out_mechanism(m, {CaseId::maximal});
   const std::string text = mechanism_text(s, ascii());
   for (const char* piece :
@@ -53,7 +56,7 @@ TEST(MechanismText, StateValuesPrintAsTheFileWritesThem) {
 // A gear's row holds a constant, c_G: each format defines it as the rest of the row at
 // the initial state, with its value (0.3 r1 = 0.015 m with the pinion started at 0.3 rad).
 TEST(MechanismText, AGearsConstantIsDefinedByTheRestOfItsRow) {
-  Mechanism m = load_mechanism(std::string(LINKAGE_SOURCE_DIR) + "/mechanisms/gear-train.toml");
+  Mechanism m = load_mechanism(source_path("mechanisms/gear-train.toml"));
   for (InitialValue& v : m.initial)
     if (v.key == "pinion.theta") v.value = 0.3;
   const MechanismSolution s = work_out_mechanism(m, {CaseId::maximal});

@@ -33,6 +33,15 @@ const std::string& linkage_binary() {
   return binary;
 }
 
+std::string source_path(std::string_view relative) {
+  std::string path = LINKAGE_SOURCE_DIR;
+  path += '/';
+  path += relative;
+  return path;
+}
+
+std::string test_mechanism(std::string_view name) { return source_path("tests/data/mechanisms/" + std::string(name)); }
+
 namespace {
 
 /// A pseudo-terminal pair: the child writes to `slave`, we drain `master`. The slave

@@ -24,6 +24,11 @@ struct RunResult {
 /// build to the same tests), else the one this build made.
 const std::string& linkage_binary();
 
+/// A file of the source tree: source_path("mechanisms/four-bar.toml").
+std::string source_path(std::string_view relative);
+/// One of the tests' own mechanisms: tests/data/mechanisms/NAME.
+std::string test_mechanism(std::string_view name);
+
 /// What a run of the program sees.
 struct RunOptions {
   std::vector<std::string> args;
