@@ -267,6 +267,7 @@ void produce_clip_page(MechanismClipFrames& frames, const MechanismClip& clip, c
                                {"frames", frame_layers}, {"arrows", arrows}};
   PageText text;
   text.title = s.title;
+  text.equations = clip.equations_html;
   write_html_page(text, data.dump(), out, "out");
   result.stats.draw_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }

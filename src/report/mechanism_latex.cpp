@@ -8,6 +8,7 @@
 
 #include "report/expression_print.hpp"
 #include "report/latex_math.hpp"
+#include "report/markdown.hpp"
 #include "report/math_document.hpp"
 #include "report/mechanism_parts.hpp"
 #include "report/notation.hpp"
@@ -477,6 +478,10 @@ std::string mechanism_latex(const MechanismSolution& solution, const ReportOptio
 
 std::string mechanism_markdown(const MechanismSolution& solution, const ReportOptions& options) {
   return DerivationWriter(solution, options, MathDocument::Format::markdown).run();
+}
+
+std::string mechanism_html(const MechanismSolution& solution, const ReportOptions& options) {
+  return markdown_to_html(mechanism_markdown(solution, options));
 }
 
 }  // namespace linkage

@@ -24,4 +24,7 @@ namespace linkage {
 /// Markdown for a Git forge: a heading per section, tables, math in $$ blocks.
 [[nodiscard]] std::string mechanism_markdown(const MechanismSolution& solution, const ReportOptions& options);
 
+/// That Markdown as HTML with MathML (markdown_to_html): a clip's page shows it beside the clip.
+[[nodiscard]] std::string mechanism_html(const MechanismSolution& solution, const ReportOptions& options);
+
 }  // namespace linkage
