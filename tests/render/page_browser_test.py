@@ -9,7 +9,7 @@ pixels of their layers; the keys step and play; the title shows as text and runs
 nothing; the panel of the case's worked equations is well-formed XML with MathML the
 browser draws, sits beside the canvas on a wide window without changing its size, and
 hides. With --stills DIR, also writes the screenshots
-docs/stills/page-four-bar-t0.png and -t3.png.
+docs/stills/page-four-bar-t0.png and -t3.png (on a window 1900 px wide).
 
     page_browser_test.py LINKAGE SOURCE_DIR WORK_DIR [--stills DIR]
 """
@@ -175,6 +175,20 @@ return {open: panel.open, maths: maths.length, drawn: drawn.length, merror: pane
 """
 
 
+def save_still(driver, name):
+    """A screenshot for docs/stills on a window wide enough for the equations beside the clip,
+    the panel scrolled to the clip's case."""
+    driver.set_window_size(1900, 1150)
+    driver.execute_script("""
+        const body = document.getElementById('equations-body');
+        const heading = [...body.querySelectorAll('h2')].find((h) => h.textContent.startsWith('Case'));
+        if (heading) body.scrollTop = heading.offsetTop - body.offsetTop;""")
+    time.sleep(0.2)
+    driver.save_screenshot(str(STILLS / name))
+    driver.set_window_size(1400, 1100)
+    time.sleep(0.2)
+
+
 def png_url(path):
     return "data:image/png;base64," + base64.b64encode(path.read_bytes()).decode()
 
@@ -235,7 +249,7 @@ def main():
         check(page["count"] == 300, f"300 frames for 10 s at 30 fps ({page['count']})")
         if STILLS:
             STILLS.mkdir(parents=True, exist_ok=True)
-            driver.save_screenshot(str(STILLS / "page-four-bar-t0.png"))
+            save_still(driver, "page-four-bar-t0.png")
 
         # Scrubbing: the slider moved to frame 90 (t = 3 s) as a hand would.
         slider = driver.find_element(By.ID, "slider")
@@ -329,7 +343,7 @@ def main():
         if STILLS:
             driver.execute_script("window.linkagePage.show(90)")
             settle(driver)
-            driver.save_screenshot(str(STILLS / "page-four-bar-t3.png"))
+            save_still(driver, "page-four-bar-t3.png")
 
         check(open_page(driver, homework), "the homework's page opens")
         check(errors(driver) == [], "no console errors on the homework's page")
