@@ -193,11 +193,50 @@ constexpr std::string_view kScript = R"js(
     }
     return best && (best.kind + (best.label ? " " + best.label : "") + ": " + best.value);
   }
+  // The panel's curve under the cursor: the sample nearest the cursor's time, the curve
+  // nearest its height.
+  const panel = data.panel;
+  function fromPixel(m, p) {
+    const f = (p - m.from) / (m.to - m.from);
+    return m.log ? m.min * Math.pow(m.max / m.min, f) : m.min + f * (m.max - m.min);
+  }
+  function toPixel(m, v) {
+    const f = m.log ? Math.log(v / m.min) / Math.log(m.max / m.min) : (v - m.min) / (m.max - m.min);
+    return m.from + f * (m.to - m.from);
+  }
+  function nearestSample(t) {
+    let lo = 0, hi = panel.t.length - 1;
+    while (hi - lo > 1) {
+      const mid = (lo + hi) >> 1;
+      if (panel.t[mid] <= t) lo = mid; else hi = mid;
+    }
+    return Math.abs(panel.t[hi] - t) < Math.abs(t - panel.t[lo]) ? hi : lo;
+  }
+  function plotAt(x, y) {
+    if (!panel) return null;
+    for (const plot of panel.plots) {
+      const [left, top, width, height] = plot.area;
+      if (x < left || x > left + width || y < top || y > top + height) continue;
+      const i = nearestSample(fromPixel(plot.time, x));
+      let best = null, nearest = 0;
+      for (const c of plot.curves) {
+        const v = panel.curves[c].values[i];
+        if (v === null) continue;
+        const d = Math.abs(toPixel(plot.value, v) - y);
+        if (!best || d < nearest) { nearest = d; best = panel.curves[c]; }
+      }
+      if (!best) return null;
+      return best.label + " = " + String(Number(best.values[i].toPrecision(4))) + (best.unit ? " " + best.unit : "") +
+        " at t = " + panel.t[i].toFixed(3) + " s";
+    }
+    return null;
+  }
   canvas.addEventListener("mousemove", (event) => {
+    // The canvas's own pixels: inside its border, scaled as the window shows it.
     const box = canvas.getBoundingClientRect();
-    const x = (event.clientX - box.left) * canvas.width / box.width;
-    const y = (event.clientY - box.top) * canvas.height / box.height;
-    const text = arrowAt(x, y);
+    const x = (event.clientX - box.left - canvas.clientLeft) * canvas.width / canvas.clientWidth;
+    const y = (event.clientY - box.top - canvas.clientTop) * canvas.height / canvas.clientHeight;
+    const text = arrowAt(x, y) || plotAt(x, y);
     hover.hidden = !text;
     if (!text) return;
     hover.textContent = text;
@@ -218,6 +257,21 @@ constexpr std::string_view kScript = R"js(
     c.drawImage(await decoded(svgs), 0, 0);
     return c.getImageData(0, 0, data.width, data.height).data;
   };
+  // The motion's table (t and each body's pose, as `linkage simulate` writes it), saved by
+  // the browser from the page's own data.
+  $("csv").addEventListener("click", () => {
+    const url = URL.createObjectURL(new Blob([data.csv], { type: "text/csv" }));
+    const link = document.createElement("a");
+    link.href = url;
+    link.download = data.csvName;
+    document.body.append(link);
+    link.click();
+    link.remove();
+    setTimeout(() => URL.revokeObjectURL(url), 10000);
+  });
+  page.csv = () => data.csv;
+  page.plotAt = plotAt;
+  page.plots = () => (panel ? panel.plots : []);
   page.count = count;
   page.times = data.times;
   page.arrows = (k) => data.arrows[k];
@@ -225,7 +279,8 @@ constexpr std::string_view kScript = R"js(
   page.show = show;
   page.toggles = data.toggles;
   status.textContent = count + " frames at " + data.fps + " fps. Keys: \u2190 \u2192 step a frame, space plays " +
-    "or pauses; the cursor on an arrow shows its value.";
+    "or pauses; the cursor on an arrow" +
+    (panel ? " or a plot" : "") + " shows its value.";
   await show(0);
   page.ready = true;
 })();
@@ -288,7 +343,10 @@ std::string html_page(const PageText& text, const std::string& data) {
   for (const char* rate : {"0.25", "0.5", "1", "2", "4"})
     page += std::string("<option value=\"") + rate + "\"" + (std::string_view(rate) == "1" ? " selected" : "") + ">" +
             rate + "x</option>";
-  page += "</select></label>\n</div>\n<fieldset id=\"layers\"><legend>Show</legend></fieldset>\n";
+  page += "</select></label>\n";
+  page +=
+      "<button id=\"csv\" type=\"button\" title=\"The motion's table: t and each body's x, y, theta\">"
+      "Download CSV</button>\n</div>\n<fieldset id=\"layers\"><legend>Show</legend></fieldset>\n";
   page += "<p id=\"status\">Opening the clip&hellip;</p>\n";
   // Base64 holds no markup: the data cannot end the element early.
   page += "<script id=\"linkage-data\" type=\"application/octet-stream\">\n";
