@@ -30,7 +30,8 @@ constexpr std::string_view kScript = R"js(
 (async function () {
   const $ = (id) => document.getElementById(id);
   const status = $("status");
-  const page = { ready: false, frame: 0, time: 0, drawn: -1, requested: 0, completed: 0, playing: false, rate: 1 };
+  const page = { ready: false, frame: 0, time: 0, drawn: -1, requested: 0, completed: 0, playing: false, rate: 1,
+                 paints: 0, readyAt: 0 };
   window.linkagePage = page;
   let data;
   try {
@@ -72,32 +73,49 @@ constexpr std::string_view kScript = R"js(
     img.src = url;
     return img.decode().then(() => { URL.revokeObjectURL(url); return img; });
   }
-  const pictures = new Map();
-  function picture(svgs) {
-    const key = svgs.join(",");
-    let entry = pictures.get(key);
-    if (entry) pictures.delete(key);  // kept as the newest
-    else entry = decoded(svgs);
-    pictures.set(key, entry);
-    while (pictures.size > 12) pictures.delete(pictures.keys().next().value);
+  // A layer the same in several frames (a fixed grid, the title, the legend) is painted
+  // once, into a bitmap, with the lasting layers next to it; each frame decodes only its
+  // own. A frame is drawn as its runs of lasting and of own layers, in the painter's order.
+  const uses = new Map();
+  for (const row of data.frames) for (const svg of row) if (svg >= 0) uses.set(svg, (uses.get(svg) || 0) + 1);
+  const lasting = (svg) => uses.get(svg) > 1;
+  const pictures = new Map(), bitmaps = new Map();
+  function cached(cache, size, key, make) {
+    let entry = cache.get(key);
+    if (entry) cache.delete(key);  // kept as the newest
+    else entry = make();
+    cache.set(key, entry);
+    while (cache.size > size) cache.delete(cache.keys().next().value);
     return entry;
   }
+  function picture(run) {
+    const key = run.svgs.join(",");
+    if (!run.lasting) return cached(pictures, 12, key, () => decoded(run.svgs));
+    return cached(bitmaps, 24, key, () => decoded(run.svgs).then((img) => createImageBitmap(img)));
+  }
   const visible = (layer) => data.layers[layer].needs.every((e) => shown.has(e));
-  function layersOf(k) {
-    const out = [];
-    data.frames[k].forEach((svg, layer) => { if (svg >= 0 && visible(layer)) out.push(svg); });
-    return out;
+  function runsOf(k) {
+    const runs = [];
+    data.frames[k].forEach((svg, layer) => {
+      if (svg < 0 || !visible(layer)) return;
+      const last = runs[runs.length - 1];
+      if (last && last.lasting === lasting(svg)) last.svgs.push(svg);
+      else runs.push({ lasting: lasting(svg), svgs: [svg] });
+    });
+    return runs;
   }
   async function draw(k) {
     const request = ++page.requested;
-    const img = await picture(layersOf(k));
+    const images = await Promise.all(runsOf(k).map(picture));
     if (request !== page.requested) return;  // a later frame was asked for meanwhile
     ctx.clearRect(0, 0, canvas.width, canvas.height);
-    ctx.drawImage(img, 0, 0);
+    for (const image of images) ctx.drawImage(image, 0, 0);
     page.drawn = k;
     page.completed = request;
-    // The next frames decoded ahead, so playing does not wait for them.
-    for (let j = k + 1; j < Math.min(count, k + 3); ++j) picture(layersOf(j));
+    ++page.paints;
+    // Stepping: the next frame decoded ahead. Not while playing: which frame comes next
+    // depends on how long this one took, and a frame decoded for nothing is a frame late.
+    if (!page.playing && k + 1 < count) runsOf(k + 1).forEach(picture);
   }
   function show(k) {
     k = Math.max(0, Math.min(count - 1, Math.round(k)));
@@ -121,7 +139,9 @@ constexpr std::string_view kScript = R"js(
       pause();
       return;
     }
-    if (k !== page.frame) show(k);
+    // A frame still being decoded is let finish: asking for the next one would cancel it,
+    // and a machine slower than the clip would then show hardly any.
+    if (k !== page.frame && page.completed === page.requested) show(k);
     requestAnimationFrame(tick);
   }
   function play() {
@@ -273,6 +293,7 @@ constexpr std::string_view kScript = R"js(
   page.plotAt = plotAt;
   page.plots = () => (panel ? panel.plots : []);
   page.count = count;
+  page.fps = data.fps;
   page.times = data.times;
   page.arrows = (k) => data.arrows[k];
   page.arrowAt = arrowAt;
@@ -282,6 +303,7 @@ constexpr std::string_view kScript = R"js(
     "or pauses; the cursor on an arrow" +
     (panel ? " or a plot" : "") + " shows its value.";
   await show(0);
+  page.readyAt = performance.now();  // ms from the start of the page's navigation: its first frame
   page.ready = true;
 })();
 )js";
