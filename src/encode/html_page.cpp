@@ -53,7 +53,8 @@ constexpr std::string_view kScript = R"js(
 (async function () {
   const $ = (id) => document.getElementById(id);
   const status = $("status");
-  const page = { ready: false, frame: 0, time: 0, drawn: -1, requested: 0, completed: 0, playing: false, rate: 1 };
+  const page = { ready: false, frame: 0, time: 0, drawn: -1, requested: 0, completed: 0, playing: false, rate: 1,
+                 paints: 0, readyAt: 0 };
   window.linkagePage = page;
   let data;
   try {
@@ -95,32 +96,49 @@ constexpr std::string_view kScript = R"js(
     img.src = url;
     return img.decode().then(() => { URL.revokeObjectURL(url); return img; });
   }
-  const pictures = new Map();
-  function picture(svgs) {
-    const key = svgs.join(",");
-    let entry = pictures.get(key);
-    if (entry) pictures.delete(key);  // kept as the newest
-    else entry = decoded(svgs);
-    pictures.set(key, entry);
-    while (pictures.size > 12) pictures.delete(pictures.keys().next().value);
+  // A layer the same in several frames (a fixed grid, the title, the legend) is painted
+  // once, into a bitmap, with the lasting layers next to it; each frame decodes only its
+  // own. A frame is drawn as its runs of lasting and of own layers, in the painter's order.
+  const uses = new Map();
+  for (const row of data.frames) for (const svg of row) if (svg >= 0) uses.set(svg, (uses.get(svg) || 0) + 1);
+  const lasting = (svg) => uses.get(svg) > 1;
+  const pictures = new Map(), bitmaps = new Map();
+  function cached(cache, size, key, make) {
+    let entry = cache.get(key);
+    if (entry) cache.delete(key);  // kept as the newest
+    else entry = make();
+    cache.set(key, entry);
+    while (cache.size > size) cache.delete(cache.keys().next().value);
     return entry;
   }
+  function picture(run) {
+    const key = run.svgs.join(",");
+    if (!run.lasting) return cached(pictures, 12, key, () => decoded(run.svgs));
+    return cached(bitmaps, 24, key, () => decoded(run.svgs).then((img) => createImageBitmap(img)));
+  }
   const visible = (layer) => data.layers[layer].needs.every((e) => shown.has(e));
-  function layersOf(k) {
-    const out = [];
-    data.frames[k].forEach((svg, layer) => { if (svg >= 0 && visible(layer)) out.push(svg); });
-    return out;
+  function runsOf(k) {
+    const runs = [];
+    data.frames[k].forEach((svg, layer) => {
+      if (svg < 0 || !visible(layer)) return;
+      const last = runs[runs.length - 1];
+      if (last && last.lasting === lasting(svg)) last.svgs.push(svg);
+      else runs.push({ lasting: lasting(svg), svgs: [svg] });
+    });
+    return runs;
   }
   async function draw(k) {
     const request = ++page.requested;
-    const img = await picture(layersOf(k));
+    const images = await Promise.all(runsOf(k).map(picture));
     if (request !== page.requested) return;  // a later frame was asked for meanwhile
     ctx.clearRect(0, 0, canvas.width, canvas.height);
-    ctx.drawImage(img, 0, 0);
+    for (const image of images) ctx.drawImage(image, 0, 0);
     page.drawn = k;
     page.completed = request;
-    // The next frames decoded ahead, so playing does not wait for them.
-    for (let j = k + 1; j < Math.min(count, k + 3); ++j) picture(layersOf(j));
+    ++page.paints;
+    // Stepping: the next frame decoded ahead. Not while playing: which frame comes next
+    // depends on how long this one took, and a frame decoded for nothing is a frame late.
+    if (!page.playing && k + 1 < count) runsOf(k + 1).forEach(picture);
   }
   function show(k) {
     k = Math.max(0, Math.min(count - 1, Math.round(k)));
@@ -144,7 +162,9 @@ constexpr std::string_view kScript = R"js(
       pause();
       return;
     }
-    if (k !== page.frame) show(k);
+    // A frame still being decoded is let finish: asking for the next one would cancel it,
+    // and a machine slower than the clip would then show hardly any.
+    if (k !== page.frame && page.completed === page.requested) show(k);
     requestAnimationFrame(tick);
   }
   function play() {
@@ -216,11 +236,50 @@ constexpr std::string_view kScript = R"js(
     }
     return best && (best.kind + (best.label ? " " + best.label : "") + ": " + best.value);
   }
+  // The panel's curve under the cursor: the sample nearest the cursor's time, the curve
+  // nearest its height.
+  const panel = data.panel;
+  function fromPixel(m, p) {
+    const f = (p - m.from) / (m.to - m.from);
+    return m.log ? m.min * Math.pow(m.max / m.min, f) : m.min + f * (m.max - m.min);
+  }
+  function toPixel(m, v) {
+    const f = m.log ? Math.log(v / m.min) / Math.log(m.max / m.min) : (v - m.min) / (m.max - m.min);
+    return m.from + f * (m.to - m.from);
+  }
+  function nearestSample(t) {
+    let lo = 0, hi = panel.t.length - 1;
+    while (hi - lo > 1) {
+      const mid = (lo + hi) >> 1;
+      if (panel.t[mid] <= t) lo = mid; else hi = mid;
+    }
+    return Math.abs(panel.t[hi] - t) < Math.abs(t - panel.t[lo]) ? hi : lo;
+  }
+  function plotAt(x, y) {
+    if (!panel) return null;
+    for (const plot of panel.plots) {
+      const [left, top, width, height] = plot.area;
+      if (x < left || x > left + width || y < top || y > top + height) continue;
+      const i = nearestSample(fromPixel(plot.time, x));
+      let best = null, nearest = 0;
+      for (const c of plot.curves) {
+        const v = panel.curves[c].values[i];
+        if (v === null) continue;
+        const d = Math.abs(toPixel(plot.value, v) - y);
+        if (!best || d < nearest) { nearest = d; best = panel.curves[c]; }
+      }
+      if (!best) return null;
+      return best.label + " = " + String(Number(best.values[i].toPrecision(4))) + (best.unit ? " " + best.unit : "") +
+        " at t = " + panel.t[i].toFixed(3) + " s";
+    }
+    return null;
+  }
   canvas.addEventListener("mousemove", (event) => {
+    // The canvas's own pixels: inside its border, scaled as the window shows it.
     const box = canvas.getBoundingClientRect();
-    const x = (event.clientX - box.left) * canvas.width / box.width;
-    const y = (event.clientY - box.top) * canvas.height / box.height;
-    const text = arrowAt(x, y);
+    const x = (event.clientX - box.left - canvas.clientLeft) * canvas.width / canvas.clientWidth;
+    const y = (event.clientY - box.top - canvas.clientTop) * canvas.height / canvas.clientHeight;
+    const text = arrowAt(x, y) || plotAt(x, y);
     hover.hidden = !text;
     if (!text) return;
     hover.textContent = text;
@@ -241,15 +300,33 @@ constexpr std::string_view kScript = R"js(
     c.drawImage(await decoded(svgs), 0, 0);
     return c.getImageData(0, 0, data.width, data.height).data;
   };
+  // The motion's table (t and each body's pose, as `linkage simulate` writes it), saved by
+  // the browser from the page's own data.
+  $("csv").addEventListener("click", () => {
+    const url = URL.createObjectURL(new Blob([data.csv], { type: "text/csv" }));
+    const link = document.createElement("a");
+    link.href = url;
+    link.download = data.csvName;
+    document.body.append(link);
+    link.click();
+    link.remove();
+    setTimeout(() => URL.revokeObjectURL(url), 10000);
+  });
+  page.csv = () => data.csv;
+  page.plotAt = plotAt;
+  page.plots = () => (panel ? panel.plots : []);
   page.count = count;
+  page.fps = data.fps;
   page.times = data.times;
   page.arrows = (k) => data.arrows[k];
   page.arrowAt = arrowAt;
   page.show = show;
   page.toggles = data.toggles;
   status.textContent = count + " frames at " + data.fps + " fps. Keys: \u2190 \u2192 step a frame, space plays " +
-    "or pauses; the cursor on an arrow shows its value.";
+    "or pauses; the cursor on an arrow" +
+    (panel ? " or a plot" : "") + " shows its value.";
   await show(0);
+  page.readyAt = performance.now();  // ms from the start of the page's navigation: its first frame
   page.ready = true;
 })();
 )js";
@@ -314,7 +391,10 @@ std::string html_page(const PageText& text, const std::string& data) {
   for (const char* rate : {"0.25", "0.5", "1", "2", "4"})
     page += std::string("<option value=\"") + rate + "\"" + (std::string_view(rate) == "1" ? " selected" : "") + ">" +
             rate + "x</option>";
-  page += "</select></label>\n</div>\n<fieldset id=\"layers\"><legend>Show</legend></fieldset>\n";
+  page += "</select></label>\n";
+  page +=
+      "<button id=\"csv\" type=\"button\" title=\"The motion's table: t and each body's x, y, theta\">"
+      "Download CSV</button>\n</div>\n<fieldset id=\"layers\"><legend>Show</legend></fieldset>\n";
   page += "<p id=\"status\">Opening the clip&hellip;</p>\n";
   page += "</div>\n";
   if (!text.equations.empty())  // the report's HTML, escaped by its renderer

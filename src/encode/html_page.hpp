@@ -6,9 +6,10 @@
 // values) is gzip-compressed and base64-encoded inside the page; the browser's own
 // DecompressionStream('gzip') opens it. The page's script paints the frames' layers onto
 // a canvas and gives play/pause, a time slider, speed, frame steps (keys <- -> and space),
-// layer toggles and the value of the arrow under the cursor; it exposes window.linkagePage
-// for tests. Beside the player (below it on a narrow window), a panel that can be hidden
-// shows the worked equations of the clip's case, its math as MathML.
+// layer toggles, the value of the arrow or the panel's curve under the cursor, and the
+// motion's table to download as CSV; it exposes window.linkagePage for tests. Beside the
+// player (below it on a narrow window), a panel that can be hidden shows the worked
+// equations of the clip's case, its math as MathML.
 #include <filesystem>
 #include <string>
 
@@ -23,7 +24,7 @@ struct PageText {
 };
 
 /// The page's HTML for `data` (JSON: width, height, fps, speed, times, layers, toggles,
-/// svgs, frames, arrows; see pipeline/clip_page.cpp).
+/// svgs, paths, frames, arrows, panel, csv, csvName; see pipeline/clip_page.cpp).
 [[nodiscard]] std::string html_page(const PageText& text, const std::string& data);
 
 /// Writes html_page(text, data) to `target` atomically; `setting` names the output in errors.

@@ -18,6 +18,7 @@
 #include "encode/html_page.hpp"
 #include "render/cairo_util.hpp"
 #include "render/paint_layer.hpp"
+#include "render/plot_text.hpp"
 
 namespace linkage {
 namespace {
@@ -193,10 +194,62 @@ std::string layer_body(std::string svg, std::size_t layer) {
   return svg.substr(begin, end == std::string::npos || end < begin ? std::string::npos : end - begin);
 }
 
+/// A value to six significant digits: what a reader reads under the cursor, in fewer bytes.
+double six_digits(double v) {
+  if (!std::isfinite(v) || v == 0) return v;
+  const double scale = std::pow(10.0, 5 - static_cast<int>(std::floor(std::log10(std::abs(v)))));
+  return std::round(v * scale) / scale;
+}
+
+/// Plot markup as plain text: subscripts run on ("θ1"), superscript digits raised ("m/s²").
+std::string plain_text(const std::string& markup) {
+  static constexpr std::array<std::string_view, 10> kRaised{"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
+  std::string out;
+  for (const plot::TextRun& run : plot::parse_markup(markup)) {
+    if (run.shift != plot::TextRun::Shift::superscript) {
+      out += run.text;
+      continue;
+    }
+    for (const char c : run.text) {
+      if (c >= '0' && c <= '9')
+        out += kRaised[static_cast<std::size_t>(c - '0')];
+      else if (c == '-')
+        out += "⁻";
+      else
+        out += c;
+    }
+  }
+  return out;
+}
+
+nlohmann::json axis(const plot::AxisMap& map) {
+  return {
+      {"log", map.scale == plot::Scale::log}, {"min", map.min}, {"max", map.max}, {"from", map.from}, {"to", map.to}};
+}
+
+/// The panel's curves and where each plot put them, for reading values under the cursor.
+nlohmann::json panel_json(const MechanismClipFrames& frames) {
+  const PanelData& panel = frames.panel();
+  nlohmann::json curves = nlohmann::json::array(), plots = nlohmann::json::array(), t = nlohmann::json::array();
+  if (panel.empty()) return nullptr;
+  for (const double time : panel.t) t.push_back(six_digits(time));
+  for (const PanelCurve& curve : panel.curves) {
+    nlohmann::json values = nlohmann::json::array();
+    for (const double v : curve.values) values.push_back(six_digits(v));  // NaN: null
+    curves.push_back({{"label", plain_text(curve.label)}, {"unit", plain_text(curve.unit)}, {"values", values}});
+  }
+  for (const PanelPart& part : frames.panel_parts())
+    plots.push_back({{"area", {part.area.x, part.area.y, part.area.width, part.area.height}},
+                     {"time", axis(part.time)},
+                     {"value", axis(part.value)},
+                     {"curves", part.curves}});
+  return {{"t", t}, {"curves", curves}, {"plots", plots}};
+}
+
 }  // namespace
 
-void produce_clip_page(MechanismClipFrames& frames, const MechanismClip& clip, const std::filesystem::path& out,
-                       const ClipProgress& progress, ClipResult& result) {
+void produce_clip_page(const sym::System& system, MechanismClipFrames& frames, const MechanismClip& clip,
+                       const std::filesystem::path& out, const ClipProgress& progress, ClipResult& result) {
   const RenderSettings& s = clip.settings;
   const auto start = std::chrono::steady_clock::now();
   PathBook paths;
@@ -261,10 +314,20 @@ void produce_clip_page(MechanismClipFrames& frames, const MechanismClip& clip, c
   std::vector<std::string> ordered;  // in the order --show lists the elements
   for (const ElementInfo& info : kElements)
     if (std::find(toggles.begin(), toggles.end(), info.name) != toggles.end()) ordered.emplace_back(info.name);
-  const nlohmann::json data = {{"width", s.width},       {"height", s.height}, {"fps", s.fps},
-                               {"speed", s.speed},       {"times", times},     {"layers", layer_list},
-                               {"toggles", ordered},     {"svgs", svgs},       {"paths", paths.entries()},
-                               {"frames", frame_layers}, {"arrows", arrows}};
+  const nlohmann::json data = {{"width", s.width},
+                               {"height", s.height},
+                               {"fps", s.fps},
+                               {"speed", s.speed},
+                               {"times", times},
+                               {"layers", layer_list},
+                               {"toggles", ordered},
+                               {"svgs", svgs},
+                               {"paths", paths.entries()},
+                               {"frames", frame_layers},
+                               {"arrows", arrows},
+                               {"panel", panel_json(frames)},
+                               {"csv", motion_csv(system, frames.motion())},
+                               {"csvName", out.stem().string() + ".csv"}};
   PageText text;
   text.title = s.title;
   text.equations = clip.equations_html;

@@ -3,7 +3,8 @@
 // by the mechanism painter, each of its steps (render/paint_layer.hpp) onto its own
 // Cairo SVG surface, so the browser draws Cairo's own paths and a viewer can hide a kind
 // of arrow; a layer that is the same in every frame (a fixed camera's grid, the title) is
-// kept once. With each frame, its arrows' pixels and values for reading under the cursor.
+// kept once. With each frame, its arrows' pixels and values for reading under the cursor;
+// with the clip, the panel's curves and the motion's table.
 #include <filesystem>
 
 #include "pipeline/clip_result.hpp"
@@ -11,8 +12,10 @@
 
 namespace linkage {
 
-/// Writes the page of `frames` (the clip `clip`'s) to `out` atomically (encode/html_page).
-void produce_clip_page(MechanismClipFrames& frames, const MechanismClip& clip, const std::filesystem::path& out,
-                       const ClipProgress& progress, ClipResult& result);
+/// Writes the page of `frames` (the clip `clip`'s, of `system`) to `out` atomically
+/// (encode/html_page), with the motion's table to download (motion_csv) and the panel's
+/// curves to read under the cursor.
+void produce_clip_page(const sym::System& system, MechanismClipFrames& frames, const MechanismClip& clip,
+                       const std::filesystem::path& out, const ClipProgress& progress, ClipResult& result);
 
 }  // namespace linkage

@@ -19,6 +19,7 @@
 #include "pipeline/clip_page.hpp"
 #include "pipeline/encode_frames.hpp"
 #include "pipeline/panel_data.hpp"
+#include "pipeline/simulate_rows.hpp"
 #include "render/cairo_util.hpp"
 #include "render/frame_layout.hpp"
 #include "render/mechanism_forces.hpp"
@@ -680,6 +681,25 @@ std::vector<std::string> mechanism_pose_columns(const MechanismGeometry& geometr
   return names;
 }
 
+std::string motion_csv(const sym::System& system, const MechanismMotion& motion) {
+  const MechanismGeometry geometry = mechanism_geometry(system);
+  const Mechanism& mechanism = system.mechanism();
+  std::string csv = joined_names(mechanism_pose_columns(geometry, mechanism.speaks_aliases ? &mechanism : nullptr));
+  csv += '\n';
+  std::vector<double> row;
+  for (std::size_t k = 0; k < motion.samples.size() && k < motion.times.size(); ++k) {
+    const std::vector<double>& pose = motion.samples[k].pose;
+    row.assign(1, motion.times[k]);
+    for (std::size_t b = 0; b < geometry.bodies.size() && 3 * b + 2 < pose.size(); ++b) {
+      row.push_back(pose[3 * b]);
+      row.push_back(pose[3 * b + 1]);
+      if (geometry.bodies[b].shape != Shape::point) row.push_back(pose[3 * b + 2]);
+    }
+    csv.append(joined_values(row, ",")).append("\n");
+  }
+  return csv;
+}
+
 std::vector<std::string> mechanism_coordinate_columns(const sym::System& system, const Mechanism* aliases) {
   std::vector<std::string> names{"t"};
   for (const sym::GeneralizedCoordinate& c : system.coordinates())
@@ -856,6 +876,12 @@ const MechanismDrawList& MechanismClipFrames::list() const { return drawn_->fram
 
 const ForceLayout& MechanismClipFrames::layout() const { return drawn_->frames.layout(); }
 
+const MechanismMotion& MechanismClipFrames::motion() const { return drawn_->motion; }
+
+const PanelData& MechanismClipFrames::panel() const { return drawn_->layout.panel(); }
+
+std::vector<PanelPart> MechanismClipFrames::panel_parts() const { return drawn_->layout.panel_parts(); }
+
 ClipResult produce_mechanism_clip(const sym::System& system, const GiNaC::exmap& initial, const MechanismClip& clip,
                                   const ClipProgress& progress) {
   clip.validate(system);
@@ -863,7 +889,7 @@ ClipResult produce_mechanism_clip(const sym::System& system, const GiNaC::exmap&
   if (clip.frames || (clip.out && !clip.is_still())) {
     MechanismClipFrames frames(system, initial, clip, result, progress);
     const bool page = clip.out && output_kind(*clip.out, "out") == OutputKind::html;
-    if (page) produce_clip_page(frames, clip, *clip.out, progress, result);
+    if (page) produce_clip_page(system, frames, clip, *clip.out, progress, result);
     if (clip.frames || !page)
       encode_frames(
           clip.out && is_video(output_kind(*clip.out, "out")) ? clip.out : std::nullopt, clip.frames, clip.settings,

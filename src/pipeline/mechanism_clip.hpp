@@ -111,6 +111,11 @@ void show_mode(MechanismClip& clip, const ModeMotion& motion);
 /// (a clip keeps a strip beside it for the legend when some frame has no clear corner).
 [[nodiscard]] Camera mechanism_camera(const MechanismScene& scene, const RenderSettings& settings, CameraMode mode);
 
+/// `motion`'s poses as `linkage simulate` writes them by default: t, then each body's x, y
+/// and theta (mechanism_pose_columns, by the names the mechanism's tables use), rad, one
+/// row per sample. What a page offers for download, and what `render --compare` reads back.
+[[nodiscard]] std::string motion_csv(const sym::System& system, const MechanismMotion& motion);
+
 /// The motion at `frame_times` (increasing) from one run; with `trail_steps` > 1 also the
 /// poses at that many steps per frame interval or more (trail_times, the frame times among
 /// them), more where the bodies turn fast (no body more than 3 degrees between two at the
@@ -171,6 +176,11 @@ class MechanismClipFrames {
   [[nodiscard]] const MechanismDrawList& list() const;
   /// Where the frame drawn last put its legend, scale bar and labels.
   [[nodiscard]] const ForceLayout& layout() const;
+  /// The motion drawn: one sample per frame.
+  [[nodiscard]] const MechanismMotion& motion() const;
+  /// The panel's data as plotted, and where its plots put it in a frame (empty without one).
+  [[nodiscard]] const PanelData& panel() const;
+  [[nodiscard]] std::vector<PanelPart> panel_parts() const;
 
  private:
   struct Drawn;

@@ -99,6 +99,16 @@ std::vector<std::string> FrameLayout::equation_lines() const {
   return equations_.empty() ? std::vector<std::string>{} : equation_lines_drawn(settings_.equations);
 }
 
+std::vector<PanelPart> FrameLayout::panel_parts() const {
+  std::vector<PanelPart> parts;
+  if (layout_.panel.empty()) return parts;
+  // Laid out as a frame lays it out, onto a surface that keeps nothing.
+  const cairo::SurfacePtr scratch(cairo_recording_surface_create(CAIRO_CONTENT_COLOR_ALPHA, nullptr));
+  const cairo::ContextPtr cr = cairo::context(scratch.get());
+  (void)paint_panel(cr.get(), style_, panel_, 0, layout_.panel, &parts);
+  return parts;
+}
+
 void FrameLayout::paint_around(double t, cairo_t* cr) const {
   if (!layout_.panel.empty()) (void)paint_panel(cr, style_, panel_, panel_index(panel_, t), layout_.panel);
   if (!equations_.empty()) paint_equations(cr, style_, settings_.equations, bands_.equations, equations_);

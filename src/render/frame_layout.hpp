@@ -45,6 +45,9 @@ class FrameLayout {
   [[nodiscard]] const Rect& equations_rect() const { return equations_; }
   /// The panel's data as plotted (angles in the settings' unit).
   [[nodiscard]] const PanelData& panel() const { return panel_; }
+  /// Where the panel's plots put their data (the same in every frame: their limits are
+  /// the whole data's); empty without a panel.
+  [[nodiscard]] std::vector<PanelPart> panel_parts() const;
   [[nodiscard]] const EquationsFit& equations_fit() const { return bands_.equations; }
   /// The equation lines drawn (the report's, their shared indentation removed).
   [[nodiscard]] std::vector<std::string> equation_lines() const;

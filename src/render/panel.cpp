@@ -195,7 +195,7 @@ std::size_t panel_index(const PanelData& data, double t) {
 }
 
 plot::Report paint_panel(cairo_t* cr, const DrawStyle& style, const PanelData& data, std::size_t index,
-                         const Rect& rect) {
+                         const Rect& rect, std::vector<PanelPart>* parts) {
   const Rgba& bg = style.theme->background;
   const bool dark = 0.2126 * bg.r + 0.7152 * bg.g + 0.0722 * bg.b < 0.5;
   // Quantities of different units never share an axis: one plot per unit, stacked, the
@@ -219,6 +219,16 @@ plot::Report paint_panel(cairo_t* cr, const DrawStyle& style, const PanelData& d
     cairo_clip(cr);
     cairo_translate(cr, part.x, part.y);
     report = plot::draw(cr, p, canvas, "panel");
+    if (parts != nullptr) {
+      const plot::Geometry& at = report.geometry;
+      PanelPart drawn{
+          {part.x + at.left, part.y + at.top, at.right - at.left, at.bottom - at.top}, at.x, at.y, groups[g]};
+      drawn.time.from += part.x;
+      drawn.time.to += part.x;
+      drawn.value.from += part.y;
+      drawn.value.to += part.y;
+      parts->push_back(std::move(drawn));
+    }
     // The cursor: a line at the frame's time and a dot on each curve there.
     if (!data.t.empty()) {
       const std::size_t now = std::min(index, data.t.size() - 1);

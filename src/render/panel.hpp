@@ -64,11 +64,20 @@ struct PanelLayout {
 /// finely than the frames).
 [[nodiscard]] std::size_t panel_index(const PanelData& data, double t);
 
+/// Where one of the panel's stacked plots put its data, in the frame's pixels (the
+/// page's hover reads values there), and which curves it shows.
+struct PanelPart {
+  Rect area;            // the data area
+  plot::AxisMap time;   // t onto x
+  plot::AxisMap value;  // the curves' values onto y
+  std::vector<std::size_t> curves;
+};
+
 /// Paints the panel for sample `index` into `rect`, one plot per unit stacked (each axis
 /// its quantity and unit), with a cursor line at its time and a dot on each curve;
-/// returns where the lowest plot put its data.
+/// returns where the lowest plot put its data. `parts`: every plot's, top to bottom.
 plot::Report paint_panel(cairo_t* cr, const DrawStyle& style, const PanelData& data, std::size_t index,
-                         const Rect& rect);
+                         const Rect& rect, std::vector<PanelPart>* parts = nullptr);
 
 /// The caption shown at time t: the last one that starts at or before t ("" if none).
 [[nodiscard]] const std::string& caption_at(const std::vector<Caption>& captions, double t);

@@ -67,6 +67,28 @@ TEST(MechanismCompare, AnotherMechanismsBodiesAreWhereThatMechanismPutsThem) {
   EXPECT_NE(motions[0].samples[2].pose, own.samples[2].pose);
 }
 
+// What a page offers to download (motion_csv) is a trajectory file of the same motion: a
+// point mass has no theta column, and the numbers read back exactly.
+TEST(TrajectoryCsv, AMotionsTableReadsBackAsTheSameMotion) {
+  test::TempDir dir;
+  const sym::System system(load_mechanism(test::test_mechanism("slotted-bar-bead.toml")));
+  const MechanismGeometry geometry = mechanism_geometry(system);
+  SimulationOptions options;
+  options.duration = 1;
+  const std::vector<double> times{0.0, 0.4, 1.0};
+  ClipResult result;
+  const MechanismMotion motion =
+      sample_mechanism_motion(system, sym::checked_initial_state(system).state, options, times, 1, result);
+  const std::string csv = motion_csv(system, motion);
+  EXPECT_EQ(test::lines_of(csv).at(0), "t,bar.x,bar.y,bar.theta,bead.x,bead.y");
+  EXPECT_EQ(test::lines_of(csv).size(), 4U);
+  test::write_text(dir / "motion.csv", csv);
+  const TrajectoryTable table = read_trajectory_csv(dir / "motion.csv", mechanism_pose_columns(geometry), "test", 0, 1);
+  const MechanismMotion read = table_motion(table, geometry, times);
+  for (std::size_t k = 0; k < times.size(); ++k) EXPECT_EQ(read.samples[k].pose, motion.samples[k].pose) << k;
+  EXPECT_NE(motion.samples[2].pose, motion.samples[0].pose);  // it moved
+}
+
 TEST(TrajectoryCsv, BadRowsNameTheFileAndLine) {
   test::TempDir dir;
   // The homework's columns: two-blocks' poses by its [aliases], as `linkage simulate` writes them.

@@ -5,10 +5,11 @@ Makes pages of the four-bar, the homework (two-blocks), every shipped mechanism 
 and a mechanism titled with a script tag, opens each from file:// in one browser, and
 checks: no console errors; the canvas scrubbed to t = 3 s is the clip's frame at 3 s as
 Cairo draws it, to the tolerance below; hiding the joint forces changes exactly the
-pixels of their layers; the keys step and play; the title shows as text and runs
-nothing; the panel of the case's worked equations is well-formed XML with MathML the
-browser draws, sits beside the canvas on a wide window without changing its size, and
-hides. With --stills DIR, also writes the screenshots
+pixels of their layers; the keys step and play; the pointer on a panel's curve reads
+`linkage simulate`'s value there; the CSV download is simulate's table at the frame
+times; the title shows as text and runs nothing; the panel of the case's worked equations
+is well-formed XML with MathML the browser draws, sits beside the canvas on a wide window
+without changing its size, and hides. With --stills DIR, also writes the screenshots
 docs/stills/page-four-bar-t0.png and -t3.png (on a window 1900 px wide).
 
     page_browser_test.py LINKAGE SOURCE_DIR WORK_DIR [--stills DIR]
@@ -29,6 +30,7 @@ try:
     from selenium.common.exceptions import NoAlertPresentException
     from selenium.webdriver.chrome.options import Options
     from selenium.webdriver.chrome.service import Service
+    from selenium.webdriver.common.action_chains import ActionChains
     from selenium.webdriver.common.by import By
     from selenium.webdriver.common.keys import Keys
 except ImportError:
@@ -189,6 +191,65 @@ def save_still(driver, name):
     time.sleep(0.2)
 
 
+def simulated(*args):
+    """`linkage simulate`'s table: its header's names and rows of numbers."""
+    out = subprocess.run([LINKAGE, "simulate", *args], check=True, capture_output=True, text=True).stdout
+    lines = out.strip().split("\n")
+    return lines[0].split(","), [[float(v) for v in line.split(",")] for line in lines[1:]]
+
+
+def check_panel_and_csv(driver, page, downloads):
+    """The panel's values under the cursor and the CSV download, against `linkage simulate`."""
+    check(open_page(driver, page), "the four-bar's page with a panel opens")
+    names, rows = simulated("--mechanism", str(SOURCE / "mechanisms/four-bar.toml"), "--duration", "4", "--every",
+                            "1", "--columns", "t,2.theta,B.force_x")
+    at3 = rows[3]
+    plots = driver.execute_script("return window.linkagePage.plots()")
+    check(len(plots) == 2, f"two plots, one per unit (rad, N): {len(plots)}")
+    for plot, value, unit in zip(plots, at3[1:], ("rad", "N")):
+        m = plot["time"]
+        x = m["from"] + (3.0 - m["min"]) / (m["max"] - m["min"]) * (m["to"] - m["from"])
+        v = plot["value"]
+        y = v["from"] + (value - v["min"]) / (v["max"] - v["min"]) * (v["to"] - v["from"])
+        text = driver.execute_script("return window.linkagePage.plotAt(arguments[0], arguments[1])", x, y) or ""
+        expected = f"{float(f'{value:.4g}'):g}"
+        check(text.endswith(f" = {expected} {unit} at t = 3.000 s"),
+              f"the cursor on the {unit} plot at t = 3 s reads simulate's value {value:.6g} {unit}: '{text}'")
+    # A real pointer on the first plot: the box under it says what plotAt says of that pixel
+    # (offsets from the canvas's centre, border included; it is drawn at its own size here).
+    canvas = driver.find_element(By.ID, "clip")
+    left, top, width, height = plots[0]["area"]
+    px, py = round(left + width / 2), round(top + height / 2)
+    border = driver.execute_script("return arguments[0].clientLeft", canvas)
+    ActionChains(driver).move_to_element_with_offset(canvas, px + border - canvas.size["width"] // 2,
+                                                     py + border - canvas.size["height"] // 2).perform()
+    shown = driver.find_element(By.ID, "hover")
+    # (The pointer lands within a pixel of where it was sent: the browser rounds.)
+    said = [driver.execute_script("return window.linkagePage.plotAt(arguments[0], arguments[1])", px + d, py)
+            for d in (-1, -0.5, 0, 0.5, 1)]
+    check(shown.is_displayed() and shown.text in said,
+          f"the pointer on a plot shows its value: '{shown.text}' (at that pixel: {said[2]})")
+    # The CSV the page offers: the motion's poses at the frame times, as simulate writes them.
+    driver.execute_cdp_cmd("Page.setDownloadBehavior", {"behavior": "allow", "downloadPath": str(downloads)})
+    driver.find_element(By.ID, "csv").click()
+    saved = downloads / "four-bar-panel.csv"
+    for _ in range(500):
+        if saved.exists() and saved.stat().st_size > 0:
+            break
+        time.sleep(0.02)
+    check(saved.exists(), "Download CSV saves four-bar-panel.csv")
+    if saved.exists():
+        lines = saved.read_text().strip().split("\n")
+        header, table = lines[0].split(","), [[float(v) for v in line.split(",")] for line in lines[1:]]
+        poses = simulated("--mechanism", str(SOURCE / "mechanisms/four-bar.toml"), "--duration", "4", "--every", "1")
+        check(header == poses[0], f"the CSV's columns are simulate's: {header}")
+        check(len(table) == 120, f"a row per frame: 120 for 4 s at 30 fps ({len(table)})")
+        # Frames 0, 30, ..., 90 are t = 0, 1, 2, 3 s: simulate's rows there, to the integrator's tolerance.
+        worst = max(abs(a - b) for k in range(4) for a, b in zip(table[30 * k], poses[1][k]))
+        check(worst < 1e-7, f"the CSV's rows at t = 0, 1, 2, 3 s are simulate's (largest difference {worst:.2g})")
+    check(errors(driver) == [], "no console errors on the page with a panel")
+
+
 def png_url(path):
     return "data:image/png;base64," + base64.b64encode(path.read_bytes()).decode()
 
@@ -223,6 +284,9 @@ def main():
         shipped.append(WORK / ("shipped-" + toml.stem + ".html"))
         linkage("render", "--mechanism", str(toml), "--duration", "0.2", "--size", "320x180", "--out",
                 str(shipped[-1]))
+    with_panel = WORK / "four-bar-panel.html"
+    linkage("render", "--mechanism", str(SOURCE / "mechanisms/four-bar.toml"), "--duration", "4", "--panel",
+            "2.theta,B.force_x", "--out", str(with_panel))
     size = four_bar.stat().st_size
     check(size < 2_000_000, f"the four-bar's 10 s page, equations included, is under 2 MB ({size} bytes)")
     # The equations as the page holds them: well-formed XML, MathML and no unknown command.
@@ -344,6 +408,10 @@ def main():
             driver.execute_script("window.linkagePage.show(90)")
             settle(driver)
             save_still(driver, "page-four-bar-t3.png")
+
+        downloads = WORK / "downloads"
+        downloads.mkdir()
+        check_panel_and_csv(driver, with_panel, downloads)
 
         check(open_page(driver, homework), "the homework's page opens")
         check(errors(driver) == [], "no console errors on the homework's page")

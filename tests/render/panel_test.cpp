@@ -176,6 +176,40 @@ TEST(PanelPaint, QuantitiesOfDifferentUnitsGetTheirOwnAxes) {
             40);
 }
 
+// Where each stacked plot put its data, in the frame (what a page reads values from): the
+// curve of each part is drawn where its maps put it.
+TEST(PanelPaint, EachPartsMapsAreWhereItsCurvesAreDrawn) {
+  PanelData data = ramp();
+  data.curves.push_back({"force F", "N", {}});
+  for (const double t : data.t) data.curves[1].values.push_back(-3 * std::cos(t));
+  const Rect rect{100, 40, 500, 700};
+  const Theme theme = load_theme("light", {}, "theme");
+  DrawStyle style;
+  style.theme = &theme;
+  style.u = 1;
+  Frame frame(700, 800);
+  const cairo::SurfacePtr surface = cairo::surface_for(frame);
+  const cairo::ContextPtr cr = cairo::context(surface.get());
+  std::vector<PanelPart> parts;
+  (void)paint_panel(cr.get(), style, data, 50, rect, &parts);
+  cairo_surface_flush(surface.get());
+  ASSERT_EQ(parts.size(), 2U);
+  EXPECT_EQ(parts[0].curves, std::vector<std::size_t>{0});
+  EXPECT_EQ(parts[1].curves, std::vector<std::size_t>{1});
+  EXPECT_LT(parts[0].area.y + parts[0].area.height, parts[1].area.y);  // stacked, top first
+  for (const PanelPart& part : parts) {
+    EXPECT_GE(part.area.x, rect.x);
+    EXPECT_LE(part.area.x + part.area.width, rect.x + rect.width);
+    EXPECT_NEAR(part.time(0), part.area.x, 1e-9);
+    EXPECT_NEAR(part.time(10), part.area.x + part.area.width, 1e-9);
+    // The dot on the curve at the cursor, t = 5 s, in the curve's colour.
+    const std::size_t c = part.curves[0];
+    const double x = part.time(5.0), y = part.value(data.curves[c].values[50]);
+    EXPECT_LE(test::colour_distance(test::rgb_at(frame, static_cast<int>(x), static_cast<int>(y)), slot_colour(c)), 40)
+        << "part of curve " << c;
+  }
+}
+
 TEST(Captions, EachShownFromItsTimeUntilTheNext) {
   const std::vector<Caption> captions{{0.0, "first"}, {2.0, "second"}};
   EXPECT_EQ(caption_at(captions, 0.0), "first");
