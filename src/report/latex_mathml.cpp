@@ -301,6 +301,8 @@ class Converter {
         return operator_element(std::string_view(&c, 1), false);  // TeX's plain delimiters keep their size
       case '\'':
         return operator_element("′");
+      case '/':  // TeX's slash is a plain symbol (m/s), not an operator spaced apart
+        return element("mo", "/", "lspace=\"0\" rspace=\"0\"");
       case '~':
         return space("0.3333em");
       default:
@@ -396,13 +398,14 @@ class Converter {
     return "?";
   }
 
-  // \left D ... \right D: a row whose delimiters stretch to its height.
+  // \left D ... \right D: a row whose delimiters stretch to its height when it holds a
+  // fraction, a root or a table. (Chromium spaces a stretchy delimiter apart from what it
+  // holds; around one line a plain one is TeX's size anyway.)
   std::string delimited() {
     const NestingLevel level(depth_);
     descend(level);
     const std::string open = delimiter();
     std::vector<std::string> elements;
-    if (!open.empty()) elements.push_back(element("mo", open));
     while (true) {
       for (std::string& e : row()) elements.push_back(std::move(e));
       if (pos_ >= s_.size()) {
@@ -411,17 +414,18 @@ class Converter {
       }
       if (at_command("right")) {
         pos_ += 6;
-        const std::string close = delimiter();
-        if (!close.empty()) elements.push_back(element("mo", close));
         break;
       }
       elements.push_back(stray());
     }
-    return element("mrow", [&] {
-      std::string row;
-      for (const std::string& e : elements) row += e;
-      return row;
-    }());
+    const std::string close = delimiter();
+    std::string content;
+    for (const std::string& e : elements) content += e;
+    const bool tall = content.find("<mfrac") != std::string::npos || content.find("<mtable") != std::string::npos ||
+                      content.find("<msqrt") != std::string::npos || content.find("<mroot") != std::string::npos;
+    const std::string_view stretch = tall ? "" : "stretchy=\"false\"";
+    return element("mrow", concat({open.empty() ? "" : element("mo", open, stretch), content,
+                                   close.empty() ? "" : element("mo", close, stretch)}));
   }
 
   // \begin{NAME} rows of & cells ... \end{NAME}.

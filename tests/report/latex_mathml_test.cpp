@@ -46,6 +46,9 @@ TEST(LatexMathml, DotsScriptsAndUprightNames) {
   EXPECT_EQ(inline_math("0.006\\ \\mathrm{kg\\,m^2}"),
             "<math><mn>0.006</mn><mspace width=\"0.3333em\"/><mrow><mi>kg</mi><mspace width=\"0.1667em\"/>"
             "<msup><mi mathvariant=\"normal\">m</mi><mn>2</mn></msup></mrow></math>");
+  EXPECT_EQ(inline_math("\\mathrm{m/s}"),
+            "<math><mrow><mi mathvariant=\"normal\">m</mi><mo lspace=\"0\" rspace=\"0\">/</mo>"
+            "<mi mathvariant=\"normal\">s</mi></mrow></math>");
   EXPECT_EQ(inline_math("-\\Delta"), "<math><mo>−</mo><mi mathvariant=\"normal\">Δ</mi></math>");
 }
 
@@ -74,6 +77,11 @@ TEST(LatexMathml, DelimitersStretchOnlyWhenAskedTo) {
   EXPECT_EQ(inline_math("\\left(\\frac{a}{b}\\right)^2 (x)"),
             "<math><msup><mrow><mo>(</mo><mfrac><mi>a</mi><mi>b</mi></mfrac><mo>)</mo></mrow><mn>2</mn></msup>"
             "<mo stretchy=\"false\">(</mo><mi>x</mi><mo stretchy=\"false\">)</mo></math>");
+  // Around one line \left ( is a plain parenthesis (TeX's size there; Chromium would space
+  // a stretchy one apart).
+  EXPECT_EQ(inline_math("\\left(\\dot{x}^2\\right)"),
+            "<math><mrow><mo stretchy=\"false\">(</mo><msup><mover accent=\"true\"><mi>x</mi><mo>˙</mo></mover>"
+            "<mn>2</mn></msup><mo stretchy=\"false\">)</mo></mrow></math>");
   EXPECT_EQ(inline_math("\\lVert r \\rVert_2 \\Big|_{t = 0}"),
             "<math><mo stretchy=\"false\">‖</mo><mi>r</mi><msub><mo stretchy=\"false\">‖</mo><mn>2</mn></msub>"
             "<msub><mo minsize=\"1.623em\" maxsize=\"1.623em\" symmetric=\"true\">|</mo>"
