@@ -190,5 +190,22 @@ TEST(LatexMathml, EveryShippedReportConvertsWhole) {
   EXPECT_GE(reports, 16);
 }
 
+// A page takes the worked solution whole up to its limit, and beyond it a paragraph saying
+// which `linkage solve` prints it (a long chain's runs to megabytes).
+TEST(LatexMathml, APageTakesTheEquationsUpToItsLimit) {
+  const MechanismSolution solution =
+      work_out_mechanism(read_mechanism_file(test::source_path("mechanisms/two-blocks.toml")), {CaseId::reduced});
+  const std::string whole = markdown_to_html(mechanism_markdown(solution, ReportOptions{}));
+  EXPECT_EQ(mechanism_html(solution, ReportOptions{}), whole);
+  EXPECT_LT(whole.size(), kPageEquationsLimit);
+  const std::string expected =
+      "<p>The worked solution is longer than a page holds (more than 0.001 MB of HTML): <code>linkage solve --case 3 "
+      "--format markdown</code> prints it, with this clip&#39;s mechanism and settings.</p>\n";
+  EXPECT_EQ(mechanism_html(solution, ReportOptions{}, 1000), expected);  // its Markdown is over the limit
+  const std::string at_limit = mechanism_html(solution, ReportOptions{}, whole.size() - 1);  // only its HTML is
+  EXPECT_NE(at_limit.find("longer than a page holds"), std::string::npos);
+  EXPECT_EQ(mechanism_html(solution, ReportOptions{}, whole.size()), whole);
+}
+
 }  // namespace
 }  // namespace linkage
