@@ -358,9 +358,16 @@ def main():
         body.send_keys(Keys.ARROW_LEFT)
         settle(driver)
         check(driver.execute_script("return window.linkagePage.drawn") == 89, "<- <- steps back to frame 89")
+        # At a quarter speed, so a busy machine's slow keys cannot let it play to the end
+        # (where it stops, and space would start it again from the beginning).
+        driver.execute_script("const s = document.getElementById('speed'); s.value = '0.25';"
+                              "s.dispatchEvent(new Event('change'))")
         body.send_keys(Keys.SPACE)
         check(driver.execute_script("return window.linkagePage.playing"), "space plays")
-        time.sleep(0.3)
+        for _ in range(500):
+            if driver.execute_script("return window.linkagePage.frame") > 89:
+                break
+            time.sleep(0.02)
         body.send_keys(Keys.SPACE)
         settle(driver)
         frame = driver.execute_script("return window.linkagePage.frame")
