@@ -1,6 +1,7 @@
 // `linkage render`: the flags turned into a Clip (src/pipeline), produced with progress
 // on stderr: an MP4 (H.264), GIF or WebM (VP9) through the FFmpeg libraries, an interactive
-// HTML page (pipeline/clip_page), a numbered PNG sequence, or one still (PNG, SVG, PDF). Everything is checked before
+// HTML page (pipeline/clip_page; with the case's worked equations, report/mechanism_latex), a
+// numbered PNG sequence, or one still (PNG, SVG, PDF). Everything is checked before
 // any work starts; outputs appear whole or not at all.
 #include <algorithm>
 #include <array>
@@ -30,6 +31,7 @@
 #include "pipeline/render_options.hpp"
 #include "render/settings.hpp"
 #include "render/theme.hpp"
+#include "report/mechanism_latex.hpp"
 #include "report/mechanism_solution.hpp"
 #include "report/mechanism_text.hpp"
 #include "symbolic/loop_closure.hpp"
@@ -234,6 +236,9 @@ ClipResult render_mechanism(const RenderFlags& f, const ClipProgress& progress) 
   CheckedMechanismClip made = mechanism_clip(request, system, initial, simulation, plan);
   made.clip.derived = checked.cases.front().system;
   if (shown) show_mode(made.clip, *shown);
+  // A page shows the case's worked equations beside the clip: `solve --case N --format markdown`'s.
+  if (made.clip.out && output_kind(*made.clip.out, "out") == OutputKind::html)
+    made.clip.equations_html = mechanism_html(checked, ReportOptions{});
   const MechanismClip& clip = made.clip;
   deriving.done();
   note_duration(f, clip.is_still(), clip.frames.has_value());

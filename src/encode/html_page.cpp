@@ -23,6 +23,29 @@ h1 { font-size: 1.3em; margin: 0 0 0.5em; }
 #status { color: #555; font-size: 0.9em; }
 )";
 
+// The worked equations beside the player, below it when the window is too narrow for both;
+// the player keeps its size, the panel scrolls on its own. MathML Core draws the math: the
+// classes of latex_mathml align the columns of aligned (right, left, ...) and space rows
+// (Chromium aligns a cell by -webkit-right/-webkit-left or justify-items, not by right/left).
+constexpr std::string_view kEquationsStyle = R"(
+#view { display: flex; flex-wrap: wrap; align-items: flex-start; gap: 0 1em; }
+#player { flex: 0 1 auto; max-width: 100%; min-width: 0; }
+#equations { flex: 1 1 26em; min-width: 0; max-width: 100%; border: 1px solid #ccc; background: #fff; }
+#equations > summary { cursor: pointer; padding: 0.3em 0.6em; font-weight: bold; }
+#equations-body { max-height: calc(100vh - 4em); overflow: auto; padding: 0 0.8em; font-size: 0.9em; }
+#equations-body h1 { font-size: 1.15em; }
+#equations-body h2 { font-size: 1.05em; margin-top: 1.2em; }
+#equations-body table { border-collapse: collapse; }
+#equations-body th, #equations-body td { padding: 0.1em 0.5em; border-bottom: 1px solid #eee; }
+math { font-family: "Latin Modern Math", "STIX Two Math", "Cambria Math", math; font-size: 1.1em; }
+math[display="block"] { margin: 0.6em 0; }
+mtable.aligned > mtr > mtd { padding: 0.15em 0; }
+mtable.aligned > mtr > mtd:nth-child(odd) { text-align: right; text-align: -webkit-right; justify-items: end; }
+mtable.aligned > mtr > mtd:nth-child(even) { text-align: left; text-align: -webkit-left; justify-items: start; }
+mtable.aligned > mtr > mtd:nth-child(2n+3) { padding-left: 2em; }
+mtable > mtr.gap > mtd { padding-top: 1.2ex; }
+)";
+
 // The player: opens the data, paints frame k's shown layers (Cairo's SVG) onto the canvas
 // in the painter's order, and drives the controls. Nothing here reaches the network.
 constexpr std::string_view kScript = R"js(
@@ -346,6 +369,7 @@ std::string html_page(const PageText& text, const std::string& data) {
   // Nothing from the network: only this page's own script and style (by their hashes), and
   // the frames' images, made in the page from its data.
   const std::string policy = "default-src 'none'; script-src " + csp_hash(kScript) + "; style-src " + csp_hash(kStyle) +
+                             " " + csp_hash(kEquationsStyle) +
                              "; img-src blob: data:; base-uri 'none'; form-action 'none'";
   const std::string title = escape_html(text.title.empty() ? std::string("linkage clip") : text.title);
   std::string page;
@@ -353,8 +377,10 @@ std::string html_page(const PageText& text, const std::string& data) {
   page.append("<meta http-equiv=\"Content-Security-Policy\" content=\"").append(policy).append("\">\n");
   page += "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n";
   page += "<link rel=\"icon\" href=\"data:,\">\n";
-  page.append("<title>").append(title).append("</title>\n<style>").append(kStyle).append("</style>\n</head>\n<body>\n");
+  page.append("<title>").append(title).append("</title>\n<style>").append(kStyle).append("</style>\n");
+  page.append("<style>").append(kEquationsStyle).append("</style>\n</head>\n<body>\n");
   page.append("<h1 id=\"title\">").append(title).append("</h1>\n");
+  page += "<div id=\"view\">\n<div id=\"player\">\n";
   page +=
       "<div id=\"stage\"><canvas id=\"clip\" width=\"1\" height=\"1\"></canvas><div id=\"hover\" hidden></div></div>\n";
   page += "<div id=\"controls\">\n<button id=\"play\" type=\"button\">Play</button>\n";
@@ -370,6 +396,12 @@ std::string html_page(const PageText& text, const std::string& data) {
       "<button id=\"csv\" type=\"button\" title=\"The motion's table: t and each body's x, y, theta\">"
       "Download CSV</button>\n</div>\n<fieldset id=\"layers\"><legend>Show</legend></fieldset>\n";
   page += "<p id=\"status\">Opening the clip&hellip;</p>\n";
+  page += "</div>\n";
+  if (!text.equations.empty())  // the report's HTML, escaped by its renderer
+    page.append("<details id=\"equations\" open><summary>Equations</summary><div id=\"equations-body\">\n")
+        .append(text.equations)
+        .append("</div></details>\n");
+  page += "</div>\n";
   // Base64 holds no markup: the data cannot end the element early.
   page += "<script id=\"linkage-data\" type=\"application/octet-stream\">\n";
   const std::string packed = base64(gzip(data));

@@ -7,7 +7,9 @@
 // DecompressionStream('gzip') opens it. The page's script paints the frames' layers onto
 // a canvas and gives play/pause, a time slider, speed, frame steps (keys <- -> and space),
 // layer toggles, the value of the arrow or the panel's curve under the cursor, and the
-// motion's table to download as CSV; it exposes window.linkagePage for tests.
+// motion's table to download as CSV; it exposes window.linkagePage for tests. Beside the
+// player (below it on a narrow window), a panel that can be hidden shows the worked
+// equations of the clip's case, its math as MathML.
 #include <filesystem>
 #include <string>
 
@@ -16,6 +18,9 @@ namespace linkage {
 /// The words the page shows around the clip; each is escaped where the page puts it.
 struct PageText {
   std::string title;
+  /// The worked equations of the clip's case as HTML, escaped already (report's
+  /// markdown_to_html); shown in a panel beside the clip, none when empty.
+  std::string equations{};
 };
 
 /// The page's HTML for `data` (JSON: width, height, fps, speed, times, layers, toggles,

@@ -9,6 +9,7 @@
 #include "pipeline/clip_request.hpp"
 #include "pipeline/mode_motion.hpp"
 #include "pipeline/modes_sheet.hpp"
+#include "report/mechanism_latex.hpp"
 #include "report/mechanism_text.hpp"
 
 namespace linkage::lesson {
@@ -83,8 +84,11 @@ void run_render(RunContext& c, const Step& step, const RenderStep& s) {
       const Linearization linear = linearize(system);
       mode = mode_motion(system, linear, modal_analysis(linear), s.mode, s.amplitude, s.nonlinear);
     }
-    const CheckedMechanismClip clip =
+    CheckedMechanismClip clip =
         render_clip(s, c.options.quality, c.options.out_dir, c.options.assets, mode ? &*mode : nullptr);
+    if (s.kind == OutputKind::html)  // the page's worked equations of the run's case, as render's
+      clip.clip.equations_html = mechanism_html(
+          work_out_mechanism(s.run.built->system, {static_cast<CaseId>(s.run.options.case_id)}), ReportOptions{});
     ClipResult made;
     if (s.modes_sheet)
       produce_modes_sheet(system, clip.clip, s.amplitude, c.options.out_dir / s.out, "modes_sheet");

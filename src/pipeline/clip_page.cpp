@@ -330,6 +330,7 @@ void produce_clip_page(const sym::System& system, MechanismClipFrames& frames, c
                                {"csvName", out.stem().string() + ".csv"}};
   PageText text;
   text.title = s.title;
+  text.equations = clip.equations_html;
   write_html_page(text, data.dump(), out, "out");
   result.stats.draw_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }

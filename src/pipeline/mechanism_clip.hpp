@@ -82,6 +82,8 @@ struct MechanismClip {
   /// samples, trails, arrows and the panel come from it; the HUD shows no energy balance.
   PrescribedState prescribed{};
   std::string hud_run;  // the HUD's run row instead of the case and integrator ("mode 1 · linear, 0.819 Hz")
+  /// A page's worked equations of the case as HTML (encode's PageText::equations), made by the caller.
+  std::string equations_html;
 
   [[nodiscard]] bool is_still() const;
   /// Checks the outputs, settings, simulation and trails before any work: Error::invalid

@@ -13,6 +13,7 @@
 #include "core/error.hpp"
 #include "core/limits.hpp"
 #include "report/latex_math.hpp"
+#include "report/latex_mathml.hpp"
 #include "report/notation.hpp"
 #include "report/text_layout.hpp"
 #include "report/unicode_tex.hpp"
@@ -137,6 +138,18 @@ class Renderer {
     return {a.text, a.size};
   }
   void start_math(MD_SPANTYPE type) { math_ = Math{"", {}, type == MD_SPAN_LATEXMATH_DISPLAY, markdown_.data()}; }
+  // The math span just read, converted by `convert`; math nested too deep is refused
+  // naming where in the Markdown.
+  template <class Convert>
+  std::string converted_math(const Convert& convert) const {
+    const std::string latex = math_.trimmed();
+    try {
+      return convert(latex);
+    } catch (const LatexNestingError& e) {
+      const char* at = math_.source_of(latex, e.at());
+      throw Error::input((at != nullptr ? text_position(markdown_, at) : "line 1, column 1") + ": " + e.what());
+    }
+  }
 
   std::string_view markdown_;
   std::string out_, inline_, code_;
@@ -373,9 +386,9 @@ class TextRenderer final : public Renderer {
       if (inline_.compare(start, std::string::npos, url) != 0) inline_ += concat({" (", url, ")"});  // <url> once
       links_.pop_back();
     } else if (type == MD_SPAN_LATEXMATH) {
-      inline_ += unicode(math_);
+      inline_ += unicode();
     } else if (type == MD_SPAN_LATEXMATH_DISPLAY) {
-      emit(display_math(unicode(math_)));
+      emit(display_math(unicode()));
     } else if (type == MD_SPAN_DEL) {
       inline_ += "~~";
     }
@@ -405,14 +418,8 @@ class TextRenderer final : public Renderer {
     bool used = false;
   };
 
-  std::string unicode(const Math& math) {
-    const std::string latex = math.trimmed();
-    try {
-      return latex_to_unicode(latex);
-    } catch (const LatexNestingError& e) {
-      const char* at = math.source_of(latex, e.at());
-      throw Error::input((at != nullptr ? text_position(markdown_, at) : "line 1, column 1") + ": " + e.what());
-    }
+  std::string unicode() const {
+    return converted_math([](const std::string& latex) { return latex_to_unicode(latex); });
   }
 
   // Display math indented, continuation lines of an aligned equation ("= ...") under
@@ -729,6 +736,227 @@ class LatexRenderer final : public Renderer {
   std::vector<int> item_paragraphs_;
 };
 
+// --- HTML -------------------------------------------------------------------------
+
+// A link's target kept only when it cannot run anything: http(s), mailto, or relative.
+bool safe_url(std::string_view url) {
+  const std::size_t colon = url.find(':');
+  if (colon == std::string_view::npos || url.find_first_of("/?#") < colon) return true;
+  std::string scheme(url.substr(0, colon));
+  for (char& c : scheme) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return scheme == "http" || scheme == "https" || scheme == "mailto";
+}
+
+class HtmlRenderer final : public Renderer {
+ public:
+  HtmlRenderer(std::string_view markdown, std::vector<std::string>* unknown) : Renderer(markdown), unknown_(unknown) {}
+
+  void enter_block(MD_BLOCKTYPE type, void* detail) override {
+    switch (type) {
+      case MD_BLOCK_QUOTE:
+        out_ += "<blockquote>\n";
+        break;
+      case MD_BLOCK_UL:
+        out_ += "<ul>\n";
+        break;
+      case MD_BLOCK_OL: {
+        const unsigned start = static_cast<MD_BLOCK_OL_DETAIL*>(detail)->start;
+        out_ += start == 1 ? "<ol>\n" : concat({"<ol start=\"", std::to_string(start), "\">\n"});
+        break;
+      }
+      case MD_BLOCK_LI:
+        out_ += "<li>";
+        break;
+      case MD_BLOCK_HR:
+        out_ += "<hr>\n";
+        break;
+      case MD_BLOCK_H:
+        heading_ = static_cast<int>(static_cast<MD_BLOCK_H_DETAIL*>(detail)->level);
+        out_ += concat({"<h", std::to_string(heading_), ">"});
+        break;
+      case MD_BLOCK_CODE:
+        out_ += "<pre><code>";
+        break;
+      case MD_BLOCK_P:
+        out_ += "<p>";
+        break;
+      case MD_BLOCK_TABLE:
+        out_ += "<table>\n";
+        break;
+      case MD_BLOCK_THEAD:
+        out_ += "<thead>\n";
+        break;
+      case MD_BLOCK_TBODY:
+        out_ += "<tbody>\n";
+        break;
+      case MD_BLOCK_TR:
+        out_ += "<tr>";
+        break;
+      case MD_BLOCK_TH:
+      case MD_BLOCK_TD: {
+        const char a = alignment(detail);
+        out_ += concat({type == MD_BLOCK_TH ? "<th" : "<td",
+                        a == 'r'   ? " align=\"right\""
+                        : a == 'c' ? " align=\"center\""
+                                   : "",
+                        ">"});
+        break;
+      }
+      case MD_BLOCK_DOC:
+      case MD_BLOCK_HTML:
+        break;
+    }
+  }
+
+  void leave_block(MD_BLOCKTYPE type) override {
+    switch (type) {
+      case MD_BLOCK_QUOTE:
+        out_ += "</blockquote>\n";
+        break;
+      case MD_BLOCK_UL:
+        out_ += "</ul>\n";
+        break;
+      case MD_BLOCK_OL:
+        out_ += "</ol>\n";
+        break;
+      case MD_BLOCK_LI:
+        out_ += "</li>\n";
+        break;
+      case MD_BLOCK_H:
+        out_ += concat({"</h", std::to_string(heading_), ">\n"});
+        break;
+      case MD_BLOCK_CODE:
+        out_ += "</code></pre>\n";
+        break;
+      case MD_BLOCK_P:
+        out_ += "</p>\n";
+        break;
+      case MD_BLOCK_TABLE:
+        out_ += "</table>\n";
+        break;
+      case MD_BLOCK_THEAD:
+        out_ += "</thead>\n";
+        break;
+      case MD_BLOCK_TBODY:
+        out_ += "</tbody>\n";
+        break;
+      case MD_BLOCK_TR:
+        out_ += "</tr>\n";
+        break;
+      case MD_BLOCK_TH:
+        out_ += "</th>";
+        break;
+      case MD_BLOCK_TD:
+        out_ += "</td>";
+        break;
+      case MD_BLOCK_DOC:
+      case MD_BLOCK_HR:
+      case MD_BLOCK_HTML:
+        break;
+    }
+  }
+
+  void enter_span(MD_SPANTYPE type, void* detail) override {
+    switch (type) {
+      case MD_SPAN_EM:
+        out_ += "<em>";
+        break;
+      case MD_SPAN_STRONG:
+        out_ += "<strong>";
+        break;
+      case MD_SPAN_CODE:
+        out_ += "<code>";
+        break;
+      case MD_SPAN_DEL:
+        out_ += "<del>";
+        break;
+      case MD_SPAN_U:
+        out_ += "<u>";
+        break;
+      case MD_SPAN_A: {  // an unsafe target is dropped, its text kept
+        const std::string target = url(type, detail);
+        links_.push_back(safe_url(target));
+        out_ += links_.back() ? concat({"<a href=\"", xml_escape(target), "\">"}) : "<span>";
+        break;
+      }
+      case MD_SPAN_IMG:  // nothing is fetched: the image's text stands for it
+        out_ += "<span>";
+        break;
+      case MD_SPAN_LATEXMATH:
+      case MD_SPAN_LATEXMATH_DISPLAY:
+        start_math(type);
+        break;
+      case MD_SPAN_WIKILINK:
+        break;
+    }
+  }
+
+  void leave_span(MD_SPANTYPE type) override {
+    switch (type) {
+      case MD_SPAN_EM:
+        out_ += "</em>";
+        break;
+      case MD_SPAN_STRONG:
+        out_ += "</strong>";
+        break;
+      case MD_SPAN_CODE:
+        out_ += "</code>";
+        break;
+      case MD_SPAN_DEL:
+        out_ += "</del>";
+        break;
+      case MD_SPAN_U:
+        out_ += "</u>";
+        break;
+      case MD_SPAN_A:
+        out_ += links_.back() ? "</a>" : "</span>";
+        links_.pop_back();
+        break;
+      case MD_SPAN_IMG:
+        out_ += "</span>";
+        break;
+      case MD_SPAN_LATEXMATH:
+      case MD_SPAN_LATEXMATH_DISPLAY: {
+        const bool display = type == MD_SPAN_LATEXMATH_DISPLAY;
+        out_ += converted_math([&](const std::string& latex) { return latex_to_mathml(latex, display, unknown_); });
+        break;
+      }
+      case MD_SPAN_WIKILINK:
+        break;
+    }
+  }
+
+  void text(MD_TEXTTYPE type, std::string_view text, bool source) override {
+    switch (type) {
+      case MD_TEXT_LATEXMATH:
+        math_.add(text, source);
+        break;
+      case MD_TEXT_BR:
+        out_ += "<br>\n";
+        break;
+      case MD_TEXT_SOFTBR:
+        out_ += "\n";
+        break;
+      case MD_TEXT_ENTITY:
+        out_ += xml_escape(entity(text));
+        break;
+      case MD_TEXT_NULLCHAR:
+        out_ += "\uFFFD";
+        break;
+      case MD_TEXT_NORMAL:
+      case MD_TEXT_CODE:
+      case MD_TEXT_HTML:
+        out_ += xml_escape(text);
+        break;
+    }
+  }
+
+ private:
+  std::vector<std::string>* unknown_;
+  int heading_ = 1;
+  std::vector<bool> links_;  // per open link: its target was kept
+};
+
 // `text` as one paragraph: on one line, and a start that would open a block (a
 // heading's #, a quote's >, a list's marker, a fence) escaped.
 std::string one_paragraph(std::string_view text) {
@@ -758,6 +986,12 @@ std::string markdown_to_text(std::string_view markdown, std::size_t width) {
 
 std::string markdown_to_latex(std::string_view markdown) {
   LatexRenderer renderer(markdown);
+  parse(markdown, renderer);
+  return renderer.take();
+}
+
+std::string markdown_to_html(std::string_view markdown, std::vector<std::string>* unknown) {
+  HtmlRenderer renderer(markdown, unknown);
   parse(markdown, renderer);
   return renderer.take();
 }

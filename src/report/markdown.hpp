@@ -1,9 +1,10 @@
 #pragma once
-// The lesson's Markdown (say text, questions, explanations) for a terminal and for
-// LaTeX. The text is CommonMark with GitHub's pipe tables and strikethrough, and $...$
-// and $$...$$ LaTeX math, parsed by md4c; raw HTML is not interpreted.
+// The lesson's Markdown (say text, questions, explanations) and the reports' for a
+// terminal, for LaTeX and for HTML (a clip's page). The text is CommonMark with GitHub's pipe tables and strikethrough,
+// and $...$ and $$...$$ LaTeX math, parsed by md4c; raw HTML is not interpreted.
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace linkage {
 
@@ -19,6 +20,12 @@ namespace linkage {
 /// letters, sub/superscript digits, dotted symbols (θ̇₁) and operators (× − ≤) in math,
 /// so it compiles with pdflatex.
 [[nodiscard]] std::string markdown_to_latex(std::string_view markdown);
+
+/// An HTML fragment: headings, paragraphs, lists, quotes, code, tables (columns aligned by
+/// align attributes), emphasis and links (kept only to http, https, mailto or relative
+/// targets); $...$ and $$...$$ as MathML (latex_mathml.hpp), whose unknown commands are
+/// appended to `unknown` if given. Every text is escaped: raw HTML in the Markdown is text.
+[[nodiscard]] std::string markdown_to_html(std::string_view markdown, std::vector<std::string>* unknown = nullptr);
 
 /// Text-mode LaTeX of one line of inline Markdown (used for titles and captions); a
 /// start that would open a block ("1. ", "# ") is kept as text.

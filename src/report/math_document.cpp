@@ -36,7 +36,21 @@ void MathDocument::new_paragraph(std::string_view formatted) {
   paragraph(latex() ? concat({"\\par\\noindent ", formatted}) : std::string(formatted));
 }
 
-void MathDocument::math(std::string_view body) { out_ += concat({"\n$$\n", body, "$$\n"}); }
+void MathDocument::math(std::string_view body) {
+  // A line of "=" alone would underline the lines before it as a heading (CommonMark's
+  // setext heading), ending the $$ block's paragraph: written "{}=", the same in TeX.
+  std::string text;
+  for (std::size_t start = 0; start < body.size();) {
+    const std::size_t end = std::min(body.find('\n', start), body.size());
+    const std::string_view line = body.substr(start, end - start);
+    const std::size_t first = line.find_first_not_of(' ');
+    text += first != std::string_view::npos && line.substr(first) == "=" ? concat({line.substr(0, first), "{}="})
+                                                                         : std::string(line);
+    if (end < body.size()) text += '\n';
+    start = end + 1;
+  }
+  out_ += concat({"\n$$\n", text, "$$\n"});
+}
 
 void MathDocument::display(std::string_view body) {
   if (latex())

@@ -8,6 +8,7 @@
 
 #include "report/expression_print.hpp"
 #include "report/latex_math.hpp"
+#include "report/markdown.hpp"
 #include "report/math_document.hpp"
 #include "report/mechanism_parts.hpp"
 #include "report/notation.hpp"
@@ -477,6 +478,22 @@ std::string mechanism_latex(const MechanismSolution& solution, const ReportOptio
 
 std::string mechanism_markdown(const MechanismSolution& solution, const ReportOptions& options) {
   return DerivationWriter(solution, options, MathDocument::Format::markdown).run();
+}
+
+std::string mechanism_html(const MechanismSolution& solution, const ReportOptions& options, std::size_t limit) {
+  // The HTML is longer than its Markdown: a Markdown over the limit is not converted at all.
+  const std::string markdown = mechanism_markdown(solution, options);
+  std::string html = markdown.size() <= limit ? markdown_to_html(markdown) : std::string();
+  if (!html.empty() && html.size() <= limit) return html;
+  std::string cases;
+  for (const SolvedCase& c : solution.cases) {
+    if (!cases.empty()) cases += ',';
+    cases += std::to_string(case_number(c.system.id));
+  }
+  return concat({"<p>The worked solution is longer than a page holds (more than ",
+                 format_number(static_cast<double>(limit) / 1e6, Style::unicode, 3),
+                 " MB of HTML): <code>linkage solve --case ", solution.cases.size() == 1 ? cases : "all",
+                 " --format markdown</code> prints it, with this clip&#39;s mechanism and settings.</p>\n"});
 }
 
 }  // namespace linkage

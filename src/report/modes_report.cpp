@@ -1,6 +1,7 @@
 #include "report/modes_report.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <numbers>
@@ -429,7 +430,12 @@ class MathOut final : public ModesOut, private MathDocument {
   // The column of coordinate changes, \delta\theta_2 ...: `coordinates`' symbols.
   [[nodiscard]] std::string deltas(const Pieces& coordinates) const {
     std::vector<std::string> entries;
-    for (const Piece& c : coordinates) entries.push_back(concat({"\\delta", c.tex.substr(1, c.tex.size() - 2)}));
+    for (const Piece& c : coordinates) {
+      const std::string symbol = c.tex.substr(1, c.tex.size() - 2);
+      // A space before a letter: \delta s_S, not the unknown command \deltas.
+      const bool letter = !symbol.empty() && std::isalpha(static_cast<unsigned char>(symbol.front())) != 0;
+      entries.push_back(concat({"\\delta", letter ? " " : "", symbol}));
+    }
     return inline_column(entries, pad());
   }
 

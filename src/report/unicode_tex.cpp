@@ -13,7 +13,7 @@ namespace {
 
 // How a symbol reads in prose: a letter takes dots and scripts (θ̇₁), an operator stands
 // alone (×); `from_tex` symbols are only read from TeX (prose keeps · and … as they are).
-enum class Kind { letter, op, from_tex };
+using Kind = TexSymbolKind;
 
 struct Symbol {
   std::string_view text;  // UTF-8
@@ -60,9 +60,8 @@ const Symbol* prose_symbol(char32_t cp) {
 
 // The Unicode text of the TeX command \name.
 std::string_view from_tex(std::string_view name) {
-  for (const Symbol& s : kSymbols)
-    if (s.tex.starts_with('\\') && s.tex.substr(1) == name) return s.text;
-  return {};
+  const std::optional<TexCommand> c = tex_command(name);
+  return c ? c->text : std::string_view{};
 }
 
 // Sub- and superscript forms; digits and signs have both, letters only a few.
@@ -294,6 +293,12 @@ class Converter {
 };
 
 }  // namespace
+
+std::optional<TexCommand> tex_command(std::string_view name) {
+  for (const Symbol& s : kSymbols)
+    if (s.tex.starts_with('\\') && s.tex.substr(1) == name) return TexCommand{s.text, s.kind};
+  return std::nullopt;
+}
 
 std::optional<ScriptChar> script_char(char32_t cp) {
   for (const Script& s : kScripts)

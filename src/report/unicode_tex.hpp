@@ -25,6 +25,18 @@ namespace linkage {
 /// ("\dot{x}"), or an operator ("\times", "-"); empty for any other character.
 [[nodiscard]] std::string_view tex_symbol(char32_t cp);
 
+/// How a TeX command of the table of symbols reads: a letter (θ, takes dots and scripts in
+/// prose), an operator (×, stands alone), or read only from TeX (sin, ·, …, \quad's spaces,
+/// the accents' combining marks).
+enum class TexSymbolKind { letter, op, from_tex };
+struct TexCommand {
+  std::string_view text;  // UTF-8
+  TexSymbolKind kind = TexSymbolKind::letter;
+};
+/// The command \name (`name` without its backslash) as the table reads it; nullopt for one
+/// not in it.
+[[nodiscard]] std::optional<TexCommand> tex_command(std::string_view name);
+
 /// A Unicode sub- or superscript character (₂, ⁻, ₐ) as the ASCII character it stands for.
 struct ScriptChar {
   char ascii = 0;

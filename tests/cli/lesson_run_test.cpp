@@ -314,6 +314,31 @@ text = "now I is {{I_zz_C}} and m is {{m}} kg"
 }
 
 // A solve step prints only the parts it shows, in every format.
+// A render step's page (.html) shows the worked equations of its run's case, as
+// `linkage render --out clip.html` does.
+TEST(LessonRender, APageShowsTheRunsCaseEquations) {
+  TempDir dir;
+  const std::string file = (dir / "p.toml").string(), out = (dir / "out").string();
+  write_text(file, R"(title = "Page"
+mechanism = "four-bar"
+[[step]]
+kind = "render"
+out = "four-bar.html"
+duration = 0.2
+case = 2
+)");
+  const RunResult r = run_linkage({"lesson", file, "--out", out});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string page = read_text(dir / "out" / "four-bar.html");
+  const std::size_t panel = page.find("<details id=\"equations\" open>");
+  ASSERT_NE(panel, std::string::npos);
+  EXPECT_NE(page.find("<h2>Case 2: eleven equations in generalized coordinates with the joint forces</h2>", panel),
+            std::string::npos);
+  EXPECT_EQ(page.find("<h2>Case 3", panel), std::string::npos);
+  EXPECT_GT(count(page.substr(panel), "<math display=\"block\">"), 10);
+  EXPECT_EQ(page.find("<merror>"), std::string::npos);
+}
+
 TEST(LessonSolve, ShowsOnlyTheChosenParts) {
   TempDir dir;
   const std::string file = (dir / "s.toml").string(), out = (dir / "out").string();

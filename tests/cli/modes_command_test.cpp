@@ -181,9 +181,10 @@ std::size_t check_markdown_against_json(const std::vector<std::string>& args) {
   std::vector<std::vector<double>> R;
   for (std::size_t i = 0; i < lines.size(); ++i) {
     const std::string& line = lines[i];
-    // "NAME =" and its rows, or R's "dq = R dz" with the rows of the tree coordinates.
+    // "NAME =" and its rows, or R's "dq = R dz" with the rows of the tree coordinates (its
+    // "=" written "{}=", not a Markdown heading's underline).
     const bool named = line == "$$" && i + 2 < lines.size() && lines[i + 2] == "\\begin{bmatrix}";
-    const bool reduction = line == "$$" && i + 3 < lines.size() && lines[i + 2] == "=";
+    const bool reduction = line == "$$" && i + 3 < lines.size() && lines[i + 2] == "{}=";
     if (named || reduction) {
       const std::string name = reduction ? "R" : lines[i + 1].substr(0, lines[i + 1].find(' '));
       std::vector<std::vector<double>> rows;

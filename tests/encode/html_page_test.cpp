@@ -35,11 +35,15 @@ TEST(HtmlPage, PolicyAllowsOnlyItsOwnScriptAndStyle) {
   ASSERT_FALSE(policy.empty());
   EXPECT_EQ(policy.rfind("default-src 'none'; ", 0), 0u) << policy;
   const std::string script = between(page, "\n<script>", "</script>");
+  // Two style elements: the player's and the equations panel's.
   const std::string style = between(page, "<style>", "</style>");
+  const std::string panel_style = between(page, "</style>\n<style>", "</style>");
   ASSERT_FALSE(script.empty());
   ASSERT_FALSE(style.empty());
+  ASSERT_FALSE(panel_style.empty());
   EXPECT_NE(policy.find("script-src " + csp_source(script) + ";"), std::string::npos) << policy;
-  EXPECT_NE(policy.find("style-src " + csp_source(style) + ";"), std::string::npos) << policy;
+  EXPECT_NE(policy.find("style-src " + csp_source(style) + " " + csp_source(panel_style) + ";"), std::string::npos)
+      << policy;
   EXPECT_NE(policy.find("img-src blob: data:;"), std::string::npos) << policy;
   EXPECT_EQ(policy.find("http"), std::string::npos) << policy;
   EXPECT_EQ(policy.find("unsafe"), std::string::npos) << policy;
@@ -47,6 +51,21 @@ TEST(HtmlPage, PolicyAllowsOnlyItsOwnScriptAndStyle) {
   EXPECT_EQ(page.find("<b>"), std::string::npos);
   EXPECT_NE(page.find("<title>A &lt;b&gt;title&lt;/b&gt;</title>"), std::string::npos);
   EXPECT_NE(page.find("<h1 id=\"title\">A &lt;b&gt;title&lt;/b&gt;</h1>"), std::string::npos);
+}
+
+// The equations (HTML the report's renderer escaped) go into a panel that can be hidden,
+// as they are; without them there is no panel.
+TEST(HtmlPage, EquationsInTheirOwnPanel) {
+  PageText text{"Four-bar", "<h1>Worked solution</h1>\n<p><math><mi>x</mi></math></p>\n"};
+  const std::string page = html_page(text, "{}");
+  EXPECT_NE(page.find("<details id=\"equations\" open><summary>Equations</summary><div id=\"equations-body\">\n"
+                      "<h1>Worked solution</h1>\n<p><math><mi>x</mi></math></p>\n</div></details>"),
+            std::string::npos);
+  // After the player (its canvas), inside the view that lays them out side by side.
+  EXPECT_LT(page.find("<div id=\"view\">"), page.find("<canvas"));
+  EXPECT_LT(page.find("<canvas"), page.find("<details"));
+  text.equations.clear();
+  EXPECT_EQ(html_page(text, "{}").find("<details"), std::string::npos);
 }
 
 }  // namespace

@@ -7,8 +7,10 @@ checks: no console errors; the canvas scrubbed to t = 3 s is the clip's frame at
 Cairo draws it, to the tolerance below; hiding the joint forces changes exactly the
 pixels of their layers; the keys step and play; the pointer on a panel's curve reads
 `linkage simulate`'s value there; the CSV download is simulate's table at the frame
-times; the title shows as text and runs nothing. With --stills DIR, also writes the screenshots
-docs/stills/page-four-bar-t0.png and -t3.png.
+times; the title shows as text and runs nothing; the panel of the case's worked equations
+is well-formed XML with MathML the browser draws, sits beside the canvas on a wide window
+without changing its size, and hides. With --stills DIR, also writes the screenshots
+docs/stills/page-four-bar-t0.png and -t3.png (on a window 1900 px wide).
 
     page_browser_test.py LINKAGE SOURCE_DIR WORK_DIR [--stills DIR]
 """
@@ -21,6 +23,7 @@ import subprocess
 import sys
 import tempfile
 import time
+import xml.etree.ElementTree as ElementTree
 
 try:
     from selenium import webdriver
@@ -155,6 +158,39 @@ const settle = async () => { while (page.completed !== page.requested) await new
 """
 
 
+def equations_html(page):
+    """The equations panel's HTML as the page file holds it: <div id="equations-body">...</div>."""
+    text = page.read_text()
+    start = text.find('<div id="equations-body">')
+    return text[start:text.find("</details>", start)] if start >= 0 else None
+
+
+# The panel's figures: its math, whether it is open, and where it and the canvas are.
+PANEL = """
+const rect = (e) => { const r = e.getBoundingClientRect(); return [r.left, r.top, r.width, r.height]; };
+const panel = document.getElementById('equations'), maths = [...panel.querySelectorAll('math')];
+const drawn = maths.filter((m) => { const r = m.getBoundingClientRect(); return m.checkVisibility() && r.width > 0 && r.height > 0; });
+const body = document.getElementById('equations-body'), display = panel.querySelector('math[display=block]');
+return {open: panel.open, maths: maths.length, drawn: drawn.length, merror: panel.querySelectorAll('merror').length,
+        panel: rect(panel), body: rect(body), body_visible: body.checkVisibility(),
+        canvas: rect(document.getElementById('clip')), display: display ? rect(display) : null};
+"""
+
+
+def save_still(driver, name):
+    """A screenshot for docs/stills on a window wide enough for the equations beside the clip,
+    the panel scrolled to the clip's case."""
+    driver.set_window_size(1900, 1150)
+    driver.execute_script("""
+        const body = document.getElementById('equations-body');
+        const heading = [...body.querySelectorAll('h2')].find((h) => h.textContent.startsWith('Case'));
+        if (heading) body.scrollTop = heading.offsetTop - body.offsetTop;""")
+    time.sleep(0.2)
+    driver.save_screenshot(str(STILLS / name))
+    driver.set_window_size(1400, 1100)
+    time.sleep(0.2)
+
+
 def simulated(*args):
     """`linkage simulate`'s table: its header's names and rows of numbers."""
     out = subprocess.run([LINKAGE, "simulate", *args], check=True, capture_output=True, text=True).stdout
@@ -252,7 +288,20 @@ def main():
     linkage("render", "--mechanism", str(SOURCE / "mechanisms/four-bar.toml"), "--duration", "4", "--panel",
             "2.theta,B.force_x", "--out", str(with_panel))
     size = four_bar.stat().st_size
-    check(size < 2_000_000, f"the four-bar's 10 s page is under 2 MB ({size} bytes)")
+    check(size < 2_000_000, f"the four-bar's 10 s page, equations included, is under 2 MB ({size} bytes)")
+    # The equations as the page holds them: well-formed XML, MathML and no unknown command.
+    panel = equations_html(four_bar)
+    try:
+        tree = ElementTree.fromstring(panel) if panel else None
+    except ElementTree.ParseError as e:
+        tree = None
+        print("     ", e)
+    check(tree is not None, "the four-bar's equations panel is well-formed XML")
+    if tree is not None:
+        maths = tree.findall(".//math")
+        check(len(maths) > 10 and not tree.findall(".//merror"),
+              f"its math is MathML, no command left unknown ({len(maths)} <math> elements)")
+        check("Case 3" in "".join(tree.itertext()), "they are the worked solution of the clip's case (3)")
 
     driver = browser()
     try:
@@ -264,7 +313,7 @@ def main():
         check(page["count"] == 300, f"300 frames for 10 s at 30 fps ({page['count']})")
         if STILLS:
             STILLS.mkdir(parents=True, exist_ok=True)
-            driver.save_screenshot(str(STILLS / "page-four-bar-t0.png"))
+            save_still(driver, "page-four-bar-t0.png")
 
         # Scrubbing: the slider moved to frame 90 (t = 3 s) as a hand would.
         slider = driver.find_element(By.ID, "slider")
@@ -332,10 +381,40 @@ def main():
         check(hover[0] is not None and hover[0].endswith(hover[1]) and hover[1].endswith(" N"),
               f"an arrow's value with its unit under the cursor ({hover[0]})")
         check(errors(driver) == [], "no console errors using the four-bar's page")
+
+        # The equations: below the canvas in this window, drawn, hidden and shown by their summary.
+        shown = driver.execute_script(PANEL)
+        print("     equations panel:", shown)
+        check(shown["open"] and shown["maths"] > 10 and shown["drawn"] == shown["maths"] and shown["merror"] == 0,
+              "the equations panel starts open and the browser draws each <math> with a size")
+        check(shown["display"] is not None and shown["display"][3] > 40,
+              "a display equation (the first: the moments of inertia) is taller than a few lines")
+        check(shown["panel"][1] >= shown["canvas"][1] + shown["canvas"][3], "on a narrow window it is below the canvas")
+        check(shown["body"][3] <= driver.execute_script("return window.innerHeight"),
+              "it scrolls on its own (no taller than the window)")
+        driver.find_element(By.CSS_SELECTOR, "#equations > summary").click()
+        hidden = driver.execute_script(PANEL)
+        print("     hidden:", hidden)
+        check(not hidden["open"] and hidden["drawn"] == 0 and not hidden["body_visible"],
+              "clicking its summary hides the equations")
+        check(hidden["canvas"] == shown["canvas"], "the canvas keeps its place and size")
+        driver.find_element(By.CSS_SELECTOR, "#equations > summary").click()
+        check(driver.execute_script(PANEL)["open"], "a second click shows them again")
+        # A window wide enough for both: the panel beside the canvas, the canvas its own size.
+        driver.set_window_size(1900, 1100)
+        time.sleep(0.2)
+        wide = driver.execute_script(PANEL)
+        print("     on a wide window:", wide)
+        check(wide["panel"][0] >= wide["canvas"][0] + wide["canvas"][2] and wide["panel"][1] < wide["canvas"][1] + 50,
+              "on a wide window the panel is beside the canvas")
+        check(wide["canvas"][2] == shown["canvas"][2] == 1282, "the canvas is its own size (1280 px and its border)")
+        driver.set_window_size(1400, 1100)
+        time.sleep(0.2)
+        check(errors(driver) == [], "no console errors (nor styles refused) with the equations panel")
         if STILLS:
             driver.execute_script("window.linkagePage.show(90)")
             settle(driver)
-            driver.save_screenshot(str(STILLS / "page-four-bar-t3.png"))
+            save_still(driver, "page-four-bar-t3.png")
 
         downloads = WORK / "downloads"
         downloads.mkdir()
@@ -352,6 +431,9 @@ def main():
                 settle(driver)
             check(opened and driver.execute_script("return window.linkagePage.drawn") == 5 and errors(driver) == [],
                   f"{page.name}: opens, draws its last frame (the 6th: 0.2 s at 30 fps), no console errors")
+            figures = driver.execute_script(PANEL) if opened else {}
+            check(figures.get("maths", 0) > 5 and figures.get("drawn") == figures.get("maths") and
+                  figures.get("merror") == 0, f"{page.name}: its equations drawn, no command unknown")
 
         check(open_page(driver, hostile_page), "the page of a mechanism titled with a script opens")
         try:
@@ -361,6 +443,8 @@ def main():
             check(True, "no alert from a title")
         check(driver.find_element(By.ID, "title").text == XSS_TITLE, "the title shows as text")
         check(driver.title == XSS_TITLE, "the document's title is the text")
+        check(XSS_TITLE in driver.find_element(By.CSS_SELECTOR, "#equations-body h1").text,
+              "the worked solution's heading shows the title as text too")
         check(errors(driver) == [], "no console errors (nor refused scripts) on that page")
     finally:
         driver.quit()

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "core/error.hpp"
 #include "report/text_layout.hpp"
 #include "support/commonmark_sample.hpp"
 #include "support/test_support.hpp"
@@ -156,6 +157,35 @@ TEST(CommonMark, NumbersLinksAndLooseLists) {
 TEST(LatexToUnicode, MathInTerminalText) {
   EXPECT_EQ(markdown_to_text("The angle $\\theta_1$ grows.\n\n$$\n\\ddot{y}_1 = -g\n$$\n", 80),
             "The angle θ₁ grows.\n\n    y\u0308₁ = -g\n");
+}
+
+TEST(MarkdownHtml, BlocksSpansAndMath) {
+  EXPECT_EQ(markdown_to_html("# Worked *solution*\n\nA $\\theta_2$ and `code`.\n\n$$\nx = 1\n$$\n\n"
+                             "| symbol | value |\n| :-- | --: |\n| $a$ | 0.1 |\n\n- one\n- two\n"),
+            "<h1>Worked <em>solution</em></h1>\n"
+            "<p>A <math><msub><mi>θ</mi><mn>2</mn></msub></math> and <code>code</code>.</p>\n"
+            "<p><math display=\"block\"><mi>x</mi><mo>=</mo><mn>1</mn></math></p>\n"
+            "<table>\n<thead>\n<tr><th>symbol</th><th align=\"right\">value</th></tr>\n</thead>\n"
+            "<tbody>\n<tr><td><math><mi>a</mi></math></td><td align=\"right\">0.1</td></tr>\n</tbody>\n</table>\n"
+            "<ul>\n<li>one</li>\n<li>two</li>\n</ul>\n");
+}
+
+TEST(MarkdownHtml, NothingInTheTextBecomesMarkupOrRuns) {
+  // Raw HTML is text (md4c's NOHTML), entities stay characters, a script link loses its target.
+  EXPECT_EQ(markdown_to_html("<script>alert(1)</script> &amp; &lt;b&gt; \"q\"\n\n[x](javascript:alert(1)) "
+                             "[y](https://example.org/?a=1&b=2) [z](notes.md)"),
+            "<p>&lt;script&gt;alert(1)&lt;/script&gt; &amp; &lt;b&gt; &quot;q&quot;</p>\n"
+            "<p><span>x</span> <a href=\"https://example.org/?a=1&amp;b=2\">y</a> <a href=\"notes.md\">z</a></p>\n");
+  std::vector<std::string> unknown;
+  EXPECT_NE(markdown_to_html("$\\nope x$", &unknown).find("<merror>"), std::string::npos);
+  EXPECT_EQ(unknown, std::vector<std::string>{"\\nope"});
+  // Math nested too deep is refused naming where (its 65th brace), as for the other renderers.
+  try {
+    (void)markdown_to_html("text\n\n$" + std::string(100, '{') + "$");
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("line 3, column 66"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
