@@ -3,6 +3,7 @@
 #include <string_view>
 
 #include "core/atomic_file.hpp"
+#include "core/markup_escape.hpp"
 #include "core/sha256.hpp"
 #include "encode/gzip.hpp"
 
@@ -338,40 +339,13 @@ std::string csp_hash(std::string_view text) {
 
 }  // namespace
 
-std::string escape_html(const std::string& text) {
-  std::string out;
-  out.reserve(text.size());
-  for (const char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&#39;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
 std::string html_page(const PageText& text, const std::string& data) {
   // Nothing from the network: only this page's own script and style (by their hashes), and
   // the frames' images, made in the page from its data.
   const std::string policy = "default-src 'none'; script-src " + csp_hash(kScript) + "; style-src " + csp_hash(kStyle) +
                              " " + csp_hash(kEquationsStyle) +
                              "; img-src blob: data:; base-uri 'none'; form-action 'none'";
-  const std::string title = escape_html(text.title.empty() ? std::string("linkage clip") : text.title);
+  const std::string title = escape_markup(text.title.empty() ? std::string("linkage clip") : text.title);
   std::string page;
   page += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
   page.append("<meta http-equiv=\"Content-Security-Policy\" content=\"").append(policy).append("\">\n");

@@ -31,7 +31,4 @@ struct PageText {
 void write_html_page(const PageText& text, const std::string& data, const std::filesystem::path& target,
                      const std::string& setting);
 
-/// `text` with &, <, >, " and ' as character references: safe in an element or an attribute.
-[[nodiscard]] std::string escape_html(const std::string& text);
-
 }  // namespace linkage

@@ -6,29 +6,12 @@
 #include <utility>
 
 #include "core/limits.hpp"
+#include "core/markup_escape.hpp"
 #include "report/notation.hpp"
 #include "report/text_layout.hpp"
 #include "report/unicode_tex.hpp"
 
 namespace linkage {
-
-std::string xml_escape(std::string_view text) {
-  std::string out;
-  out.reserve(text.size());
-  for (const char c : text) {
-    if (c == '&')
-      out += "&amp;";
-    else if (c == '<')
-      out += "&lt;";
-    else if (c == '>')
-      out += "&gt;";
-    else if (c == '"')
-      out += "&quot;";
-    else
-      out += c;
-  }
-  return out;
-}
 
 namespace {
 
@@ -138,7 +121,7 @@ class Converter {
 
   std::string unknown(std::string_view what) {
     if (unknown_ != nullptr) unknown_->emplace_back(what);
-    return element("merror", element("mtext", xml_escape(what)));
+    return element("merror", element("mtext", escape_markup(what)));
   }
 
   // A stop that nothing open owns, consumed and kept as unknown.
@@ -261,12 +244,12 @@ class Converter {
   std::string identifier(std::string_view text) {
     const bool single = decode_utf8(text, 0).size == text.size();
     // One letter is italic unless upright (\mathrm, capital Greek); several are upright.
-    return element("mi", xml_escape(text),
+    return element("mi", escape_markup(text),
                    single && (upright_ || uppercase_greek(text)) ? "mathvariant=\"normal\"" : "");
   }
 
   static std::string operator_element(std::string_view text, bool stretchy = true) {
-    return element("mo", xml_escape(text == "-" ? "−" : text), stretchy ? "" : "stretchy=\"false\"");
+    return element("mo", escape_markup(text == "-" ? "−" : text), stretchy ? "" : "stretchy=\"false\"");
   }
 
   // One element at pos_ (none for a command that draws nothing); `function`: a function's name.
@@ -344,7 +327,7 @@ class Converter {
       return e;
     }
     if (name == "text" || name == "mbox" || name == "textit" || name == "textbf")
-      return element("mtext", xml_escape(braced_text()));
+      return element("mtext", escape_markup(braced_text()));
     if (name == "left") return delimited();
     if (name == "begin") return environment();
     if (const auto size = big_size(name)) {
@@ -385,14 +368,14 @@ class Converter {
       const std::size_t start = pos_++;
       std::string_view name = letters();
       if (name.empty() && pos_ < s_.size()) name = s_.substr(pos_++, 1);
-      if (const auto d = delimiter_command(name)) return xml_escape(*d);
-      if (const std::optional<TexCommand> symbol = tex_command(name)) return xml_escape(symbol->text);
+      if (const auto d = delimiter_command(name)) return escape_markup(*d);
+      if (const std::optional<TexCommand> symbol = tex_command(name)) return escape_markup(symbol->text);
       (void)unknown(s_.substr(start, pos_ - start));
       return "?";
     }
     if (std::string_view("()[]|/<>").find(c) != std::string_view::npos) {
       ++pos_;
-      return xml_escape(std::string_view(&c, 1));
+      return escape_markup(std::string_view(&c, 1));
     }
     (void)unknown(s_.substr(pos_, 1));
     return "?";

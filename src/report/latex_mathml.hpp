@@ -19,7 +19,4 @@ namespace linkage {
 [[nodiscard]] std::string latex_to_mathml(std::string_view latex, bool display,
                                           std::vector<std::string>* unknown = nullptr);
 
-/// `text` with & < > " as character references: safe in XML or HTML text and attributes.
-[[nodiscard]] std::string xml_escape(std::string_view text);
-
 }  // namespace linkage

@@ -12,6 +12,7 @@
 
 #include "core/error.hpp"
 #include "core/limits.hpp"
+#include "core/markup_escape.hpp"
 #include "report/latex_math.hpp"
 #include "report/latex_mathml.hpp"
 #include "report/notation.hpp"
@@ -876,7 +877,7 @@ class HtmlRenderer final : public Renderer {
       case MD_SPAN_A: {  // an unsafe target is dropped, its text kept
         const std::string target = url(type, detail);
         links_.push_back(safe_url(target));
-        out_ += links_.back() ? concat({"<a href=\"", xml_escape(target), "\">"}) : "<span>";
+        out_ += links_.back() ? concat({"<a href=\"", escape_markup(target), "\">"}) : "<span>";
         break;
       }
       case MD_SPAN_IMG:  // nothing is fetched: the image's text stands for it
@@ -938,7 +939,7 @@ class HtmlRenderer final : public Renderer {
         out_ += "\n";
         break;
       case MD_TEXT_ENTITY:
-        out_ += xml_escape(entity(text));
+        out_ += escape_markup(entity(text));
         break;
       case MD_TEXT_NULLCHAR:
         out_ += "\uFFFD";
@@ -946,7 +947,7 @@ class HtmlRenderer final : public Renderer {
       case MD_TEXT_NORMAL:
       case MD_TEXT_CODE:
       case MD_TEXT_HTML:
-        out_ += xml_escape(text);
+        out_ += escape_markup(text);
         break;
     }
   }

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "core/markup_escape.hpp"
 #include "core/sha256.hpp"
 
 namespace linkage {
@@ -22,9 +23,10 @@ std::string csp_source(const std::string& content) {
 }
 
 TEST(HtmlPage, EscapesMarkupCharacters) {
-  EXPECT_EQ(escape_html("</script><script>alert(1)</script>"), "&lt;/script&gt;&lt;script&gt;alert(1)&lt;/script&gt;");
-  EXPECT_EQ(escape_html("a & \"b\" 'c'"), "a &amp; &quot;b&quot; &#39;c&#39;");
-  EXPECT_EQ(escape_html("θ₁ = 0.1 rad"), "θ₁ = 0.1 rad");
+  EXPECT_EQ(escape_markup("</script><script>alert(1)</script>"),
+            "&lt;/script&gt;&lt;script&gt;alert(1)&lt;/script&gt;");
+  EXPECT_EQ(escape_markup("a & \"b\" 'c'"), "a &amp; &quot;b&quot; &#39;c&#39;");
+  EXPECT_EQ(escape_markup("θ₁ = 0.1 rad"), "θ₁ = 0.1 rad");
 }
 
 // The policy allows exactly the page's own script and style (by their hashes), images it

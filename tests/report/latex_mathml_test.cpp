@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/markup_escape.hpp"
 #include "model/mechanism_toml.hpp"
 #include "report/markdown.hpp"
 #include "report/mechanism_latex.hpp"
@@ -92,7 +93,7 @@ TEST(LatexMathml, MarkupCharactersAreEscaped) {
   EXPECT_EQ(inline_math("s + l < p \\text{ & } q > 0"),
             "<math><mi>s</mi><mo>+</mo><mi>l</mi><mo>&lt;</mo><mi>p</mi><mtext> &amp; </mtext><mi>q</mi>"
             "<mo>&gt;</mo><mn>0</mn></math>");
-  EXPECT_EQ(xml_escape("a<b & \"c\">"), "a&lt;b &amp; &quot;c&quot;&gt;");
+  EXPECT_EQ(escape_markup("a<b & \"c\">"), "a&lt;b &amp; &quot;c&quot;&gt;");
 }
 
 TEST(LatexMathml, UnknownInputStaysVisibleAndIsReported) {
