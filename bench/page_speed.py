@@ -9,7 +9,9 @@ browser and reports, per run and as the median:
     performance.now()) until its first frame is on the canvas (issue 28's goal: under 1 s);
   - playing: frames painted per second while it plays the whole clip at speed 1, as a
     fraction of the clip's own rate (the goal: 1, every frame on time).
-Both are measured inside the page, so Selenium's own overhead is not in them. The machine's
+  - painting: ms to paint one frame (show(k), then one pixel read back, which makes the
+    browser rasterize it), median and largest over every frame of the clip in turn.
+All are measured inside the page, so Selenium's own overhead is not in them. The machine's
 load average is printed with them: the machines are shared, and a figure means little
 without it. Needs Debian's chromium, chromium-driver and python3-selenium.
 """
@@ -38,6 +40,20 @@ const wait = () => {
 setTimeout(wait, 50);
 """
 
+PAINT = """
+const page = window.linkagePage, ctx = document.getElementById('clip').getContext('2d');
+page.show(0);
+const times = [];
+for (let k = 1; k < page.count; ++k) {
+  const started = performance.now();
+  page.show(k);
+  ctx.getImageData(0, 0, 1, 1);
+  times.push(performance.now() - started);
+}
+times.sort((a, b) => a - b);
+return [times[times.length >> 1], times[times.length - 1]];
+"""
+
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
@@ -58,7 +74,7 @@ def main():
     options.add_argument("--user-data-dir=" + tempfile.mkdtemp(dir=work))
     options.binary_location = shutil.which("chromium")
     driver = webdriver.Chrome(service=Service(shutil.which("chromedriver")), options=options)
-    first, rates = [], []
+    first, rates, paints_ms = [], [], []
     try:
         for run in range(args.runs):
             driver.get(page.as_uri())
@@ -73,15 +89,18 @@ def main():
             driver.set_script_timeout(120)
             paints, seconds = driver.execute_async_script(PLAY)
             rate = paints / seconds / fps
+            median, largest = driver.execute_script(PAINT)
             first.append(ready)
             rates.append(rate)
+            paints_ms.append(median)
             print(f"run {run + 1}: first frame {ready:.0f} ms; played {paints} of {count} frames in {seconds:.2f} s: "
-                  f"{paints / seconds:.1f} frames/s, {rate:.2f} of the clip's {fps:g} fps "
-                  f"(load average {os.getloadavg()[0]:.1f})")
+                  f"{paints / seconds:.1f} frames/s, {rate:.2f} of the clip's {fps:g} fps; a frame painted in "
+                  f"{median:.1f} ms (median; largest {largest:.1f}) (load average {os.getloadavg()[0]:.1f})")
     finally:
         driver.quit()
     print(f"{args.mechanism}, {page.stat().st_size} bytes: median first frame {statistics.median(first):.0f} ms; "
-          f"median playing rate {statistics.median(rates):.2f} of the clip's")
+          f"median playing rate {statistics.median(rates):.2f} of the clip's; median paint "
+          f"{statistics.median(paints_ms):.1f} ms a frame")
 
 
 if __name__ == "__main__":

@@ -47,8 +47,9 @@ mtable.aligned > mtr > mtd:nth-child(2n+3) { padding-left: 2em; }
 mtable > mtr.gap > mtd { padding-top: 1.2ex; }
 )";
 
-// The player: opens the data, paints frame k's shown layers (Cairo's SVG) onto the canvas
-// in the painter's order, and drives the controls. Nothing here reaches the network.
+// The player: opens the data, paints frame k's shown layers (Cairo's drawing operations)
+// onto the canvas in the painter's order, and drives the controls. Nothing here reaches
+// the network.
 constexpr std::string_view kScript = R"js(
 "use strict";
 (async function () {
@@ -76,34 +77,64 @@ constexpr std::string_view kScript = R"js(
   const shown = new Set(data.toggles);
   slider.max = String(count - 1);
 
-  // A frame is one SVG document of its shown layers' contents, in the painter's order:
-  // the browser draws it at once. The last few are kept decoded.
-  const bodies = new Map();
-  function body(svg) {  // each subpath's commands are an entry of the page's book of paths: put back
-    let text = bodies.get(svg);
-    if (text === undefined) {
-      text = data.svgs[svg].replace(/ d="([^"]*)"/g, (_, d) =>
-        ' d="' + d.replace(/@(\d+)/g, (__, i) => data.paths[Number(i)]) + '"');
-      bodies.set(svg, text);
+  // The painter of Cairo's drawing operations (encode/canvas_ops.hpp): paths and glyphs
+  // as Path2D, styles as the canvas's state. Each distinct drawing of a layer is made into
+  // Path2Ds once, when first drawn; the last few are kept.
+  const expand = (d) => d.replace(/@(\d+)/g, (_, i) => data.paths[Number(i)]);
+  const glyphs = [];
+  const glyph = (i) => glyphs[i] || (glyphs[i] = new Path2D(expand(data.glyphs[i])));
+  const styles = data.styles.map((s) => {
+    if (s.gradient === undefined) return s;
+    const g = data.gradients[s.gradient], fill = ctx.createLinearGradient(...g.line);
+    for (const [offset, colour] of g.stops) fill.addColorStop(offset, colour);
+    return Object.assign({}, s, { fill });
+  });
+  const solid = [];
+  function made(ops) {
+    return ops.map((op) => {
+      switch (op[0]) {
+        case "p": return ["p", styles[op[1]], new Path2D(expand(op[2])), op[3]];
+        case "g": return ["g", styles[op[1]], op[2]];
+        default: return ["c", new Path2D(expand(op[1])), op[2], made(op[3])];
+      }
+    });
+  }
+  function paint(c, ops) {  // onto a context whose transform is the identity
+    for (const op of ops) {
+      const s = op[1];
+      if (op[0] === "g") {
+        c.fillStyle = s.fill;
+        const run = op[2];
+        for (let i = 0; i < run.length; i += 3) {
+          c.setTransform(1, 0, 0, 1, run[i + 1], run[i + 2]);
+          c.fill(glyph(run[i]), s.rule || "nonzero");
+        }
+        c.setTransform(1, 0, 0, 1, 0, 0);
+      } else if (op[0] === "c") {
+        c.save();
+        c.clip(op[1], op[2]);
+        paint(c, op[3]);
+        c.restore();
+      } else {
+        if (op[3]) c.setTransform(...op[3]);
+        if (s.fill) {
+          c.fillStyle = s.fill;
+          c.fill(op[2], s.rule || "nonzero");
+        }
+        if (s.stroke) {
+          c.strokeStyle = s.stroke;
+          c.lineWidth = s.width;
+          c.lineCap = s.cap;
+          c.lineJoin = s.join;
+          c.miterLimit = s.miter;
+          c.setLineDash(s.dash || solid);
+          c.lineDashOffset = s.offset || 0;
+          c.stroke(op[2]);
+        }
+        if (op[3]) c.setTransform(1, 0, 0, 1, 0, 0);
+      }
     }
-    return text;
   }
-  function decoded(svgs) {
-    const text = '<svg xmlns="http://www.w3.org/2000/svg" xmlns:xlink="http://www.w3.org/1999/xlink" width="' +
-      data.width + '" height="' + data.height + '" viewBox="0 0 ' + data.width + " " + data.height + '">' +
-      svgs.map(body).join("") + "</svg>";
-    const url = URL.createObjectURL(new Blob([text], { type: "image/svg+xml" }));
-    const img = new Image();
-    img.src = url;
-    return img.decode().then(() => { URL.revokeObjectURL(url); return img; });
-  }
-  // A layer the same in several frames (a fixed grid, the title, the legend) is painted
-  // once, into a bitmap, with the lasting layers next to it; each frame decodes only its
-  // own. A frame is drawn as its runs of lasting and of own layers, in the painter's order.
-  const uses = new Map();
-  for (const row of data.frames) for (const svg of row) if (svg >= 0) uses.set(svg, (uses.get(svg) || 0) + 1);
-  const lasting = (svg) => uses.get(svg) > 1;
-  const pictures = new Map(), bitmaps = new Map();
   function cached(cache, size, key, make) {
     let entry = cache.get(key);
     if (entry) cache.delete(key);  // kept as the newest
@@ -112,34 +143,47 @@ constexpr std::string_view kScript = R"js(
     while (cache.size > size) cache.delete(cache.keys().next().value);
     return entry;
   }
-  function picture(run) {
-    const key = run.svgs.join(",");
-    if (!run.lasting) return cached(pictures, 12, key, () => decoded(run.svgs));
-    return cached(bitmaps, 24, key, () => decoded(run.svgs).then((img) => createImageBitmap(img)));
+  const drawings = new Map();
+  const drawing = (i) => cached(drawings, 64, i, () => made(data.drawings[i]));
+  // A layer the same in several frames (a fixed grid, the title, the legend) is painted
+  // once, into a bitmap, with the lasting layers next to it; each frame paints only its
+  // own. A frame is drawn as its runs of lasting and of own layers, in the painter's order.
+  const uses = new Map();
+  for (const row of data.frames) for (const i of row) if (i >= 0) uses.set(i, (uses.get(i) || 0) + 1);
+  const lasting = (i) => uses.get(i) > 1;
+  const bitmaps = new Map();
+  function bitmap(run) {
+    return cached(bitmaps, 8, run.drawings.join(","), () => {
+      const b = document.createElement("canvas");
+      b.width = data.width;
+      b.height = data.height;
+      const c = b.getContext("2d");
+      for (const i of run.drawings) paint(c, drawing(i));
+      return b;
+    });
   }
   const visible = (layer) => data.layers[layer].needs.every((e) => shown.has(e));
   function runsOf(k) {
     const runs = [];
-    data.frames[k].forEach((svg, layer) => {
-      if (svg < 0 || !visible(layer)) return;
+    data.frames[k].forEach((i, layer) => {
+      if (i < 0 || !visible(layer)) return;
       const last = runs[runs.length - 1];
-      if (last && last.lasting === lasting(svg)) last.svgs.push(svg);
-      else runs.push({ lasting: lasting(svg), svgs: [svg] });
+      if (last && last.lasting === lasting(i)) last.drawings.push(i);
+      else runs.push({ lasting: lasting(i), drawings: [i] });
     });
     return runs;
   }
-  async function draw(k) {
-    const request = ++page.requested;
-    const images = await Promise.all(runsOf(k).map(picture));
-    if (request !== page.requested) return;  // a later frame was asked for meanwhile
+  function draw(k) {
+    ++page.requested;
     ctx.clearRect(0, 0, canvas.width, canvas.height);
-    for (const image of images) ctx.drawImage(image, 0, 0);
+    for (const run of runsOf(k)) {
+      if (run.lasting) ctx.drawImage(bitmap(run), 0, 0);
+      else for (const i of run.drawings) paint(ctx, drawing(i));
+    }
     page.drawn = k;
-    page.completed = request;
+    page.completed = page.requested;
     ++page.paints;
-    // Stepping: the next frame decoded ahead. Not while playing: which frame comes next
-    // depends on how long this one took, and a frame decoded for nothing is a frame late.
-    if (!page.playing && k + 1 < count) runsOf(k + 1).forEach(picture);
+    return Promise.resolve();
   }
   function show(k) {
     k = Math.max(0, Math.min(count - 1, Math.round(k)));
@@ -163,9 +207,7 @@ constexpr std::string_view kScript = R"js(
       pause();
       return;
     }
-    // A frame still being decoded is let finish: asking for the next one would cancel it,
-    // and a machine slower than the clip would then show hardly any.
-    if (k !== page.frame && page.completed === page.requested) show(k);
+    if (k !== page.frame) show(k);
     requestAnimationFrame(tick);
   }
   function play() {
@@ -292,13 +334,14 @@ constexpr std::string_view kScript = R"js(
   // For tests: the pixels of frame k's layers that need `element`, drawn alone.
   page.layersAlone = async (k, element) => {
     const needs = (layer) => data.layers[layer].needs;
-    const svgs = data.frames[k].filter((svg, layer) => svg >= 0 && needs(layer).includes(element) &&
-                                       needs(layer).every((e) => e === element || shown.has(e)));
     const alone = document.createElement("canvas");
     alone.width = data.width;
     alone.height = data.height;
     const c = alone.getContext("2d");
-    c.drawImage(await decoded(svgs), 0, 0);
+    data.frames[k].forEach((i, layer) => {
+      if (i >= 0 && needs(layer).includes(element) && needs(layer).every((e) => e === element || shown.has(e)))
+        paint(c, drawing(i));
+    });
     return c.getImageData(0, 0, data.width, data.height).data;
   };
   // The motion's table (t and each body's pose, as `linkage simulate` writes it), saved by
@@ -341,10 +384,9 @@ std::string csp_hash(std::string_view text) {
 
 std::string html_page(const PageText& text, const std::string& data) {
   // Nothing from the network: only this page's own script and style (by their hashes), and
-  // the frames' images, made in the page from its data.
+  // its empty icon (data:), which keeps the browser from asking a server for one.
   const std::string policy = "default-src 'none'; script-src " + csp_hash(kScript) + "; style-src " + csp_hash(kStyle) +
-                             " " + csp_hash(kEquationsStyle) +
-                             "; img-src blob: data:; base-uri 'none'; form-action 'none'";
+                             " " + csp_hash(kEquationsStyle) + "; img-src data:; base-uri 'none'; form-action 'none'";
   const std::string title = escape_markup(text.title.empty() ? std::string("linkage clip") : text.title);
   std::string page;
   page += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";

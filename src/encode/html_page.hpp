@@ -1,15 +1,13 @@
 #pragma once
 // One self-contained HTML page that plays a clip (`linkage render --out clip.html`): no
-// network at all (a Content-Security-Policy allowing only its own inline script and style,
-// and images from blob: and data:), so it works from file://, inside a learning-management
-// system or offline. The clip's data (its frames' layers as SVG, their times, the arrows'
-// values) is gzip-compressed and base64-encoded inside the page; the browser's own
-// DecompressionStream('gzip') opens it. The page's script paints the frames' layers onto
-// a canvas and gives play/pause, a time slider, speed, frame steps (keys <- -> and space),
-// layer toggles, the value of the arrow or the panel's curve under the cursor, and the
-// motion's table to download as CSV; it exposes window.linkagePage for tests. Beside the
-// player (below it on a narrow window), a panel that can be hidden shows the worked
-// equations of the clip's case, its math as MathML.
+// network at all (a Content-Security-Policy allowing only its own inline script and style),
+// so it works from file://, inside a learning-management system or offline. The clip's data
+// (its frames' layers as Cairo's drawing operations, their times, the arrows' values) is gzip-compressed and
+// base64-encoded inside the page; the browser's own DecompressionStream('gzip') opens it. The page's script paints the
+// frames' layers onto a canvas and gives play/pause, a time slider, speed, frame steps (keys <- -> and space), layer
+// toggles, the value of the arrow or the panel's curve under the cursor, and the motion's table to download as CSV; it
+// exposes window.linkagePage for tests. Beside the player (below it on a narrow window), a panel that can be hidden
+// shows the worked equations of the clip's case, its math as MathML.
 #include <filesystem>
 #include <string>
 
@@ -24,7 +22,8 @@ struct PageText {
 };
 
 /// The page's HTML for `data` (JSON: width, height, fps, speed, times, layers, toggles,
-/// svgs, paths, frames, arrows, panel, csv, csvName; see pipeline/clip_page.cpp).
+/// drawings, styles, gradients, glyphs, paths, frames, arrows, panel, csv, csvName; see
+/// pipeline/clip_page.cpp and encode/canvas_ops.hpp).
 [[nodiscard]] std::string html_page(const PageText& text, const std::string& data);
 
 /// Writes html_page(text, data) to `target` atomically; `setting` names the output in errors.
