@@ -427,8 +427,9 @@ def main():
         driver.set_window_size(1400, 1100)
         time.sleep(0.2)
         check(errors(driver) == [], "no console errors (nor styles refused) with the equations panel")
-        if STILLS:
-            driver.execute_script("window.linkagePage.show(90)")
+        if STILLS:  # at the speed a page opens with, as a reader first sees it
+            driver.execute_script("const s = document.getElementById('speed'); s.value = '1';"
+                                  "s.dispatchEvent(new Event('change')); window.linkagePage.show(90)")
             settle(driver)
             save_still(driver, "page-four-bar-t3.png")
 
