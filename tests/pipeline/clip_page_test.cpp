@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "model/mechanism_toml.hpp"
+#include "pipeline/clip_support.hpp"
 #include "render/cairo_util.hpp"
 #include "render/paint_layer.hpp"
 #include "render/theme.hpp"
@@ -242,15 +243,7 @@ Seen expect_same_frame(const std::string& mechanism, MechanismClip clip, std::si
 }
 
 MechanismClip small_clip(const std::string& mechanism) {
-  MechanismClip clip;
-  clip.settings.width = 640;
-  clip.settings.height = 360;
-  clip.settings.duration = 1.0;
-  clip.settings.title = "A title with a halo";
-  clip.simulation.duration = 1.0;
-  clip.theme = load_theme("light", {}, "theme");
-  clip.trails = sym::System(load_mechanism(mechanism)).mechanism().picture.trails;
-  return clip;
+  return test::small_clip(sym::System(load_mechanism(mechanism)));
 }
 
 TEST(ClipPage, TheFourBarsOperationsPaintItsFrameWithItsPanel) {

@@ -17,6 +17,7 @@
 #include "encode/encode_test_support.hpp"
 #include "integrate/mechanism_simulation.hpp"
 #include "model/mechanism_toml.hpp"
+#include "pipeline/clip_support.hpp"
 #include "render/cairo_util.hpp"
 #include "render/mechanism_forces.hpp"
 #include "render/mechanism_painter.hpp"
@@ -127,14 +128,7 @@ TEST(MechanismClip, FramesDrawnAfterOthersAreTheFramesDrawnAlone) {
     SCOPED_TRACE(name);
     const sym::System system(load_mechanism(name));
     const GiNaC::exmap initial = sym::checked_initial_state(system).state;
-    MechanismClip clip;
-    clip.settings.width = 640;
-    clip.settings.height = 360;
-    clip.settings.duration = 1.0;
-    clip.settings.title = "A title with a halo";
-    clip.simulation.duration = 1.0;
-    clip.theme = load_theme("light", {}, "theme");
-    clip.trails = system.mechanism().picture.trails;
+    const MechanismClip clip = test::small_clip(system);
     ClipResult result;
     MechanismClipFrames frames(system, initial, clip, result);
     ASSERT_EQ(frames.count(), 30);
