@@ -39,7 +39,7 @@ constexpr std::string_view kEquationsStyle = R"(
 #equations-body table { border-collapse: collapse; }
 #equations-body th, #equations-body td { padding: 0.1em 0.5em; border-bottom: 1px solid #eee; }
 math { font-family: "Latin Modern Math", "STIX Two Math", "Cambria Math", math; font-size: 1.1em; }
-math[display="block"] { margin: 0.6em 0; }
+math[display="block"] { margin: 0.6em 0; overflow-x: auto; overflow-y: hidden; padding-bottom: 2px; }
 mtable.aligned > mtr > mtd { padding: 0.15em 0; }
 mtable.aligned > mtr > mtd:nth-child(odd) { text-align: right; text-align: -webkit-right; justify-items: end; }
 mtable.aligned > mtr > mtd:nth-child(even) { text-align: left; text-align: -webkit-left; justify-items: start; }
