@@ -4,7 +4,6 @@
 #include <array>
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <map>
 #include <stdexcept>
 #include <utility>
@@ -23,14 +22,18 @@ double number(std::string_view text) {
 
 double hundredths_rounded(double v) { return std::round(v * 100) / 100 + 0.0; }  // + 0.0: no -0
 
-// A number in hundredths, its trailing zeros dropped: "12.5", "-3".
-std::string hundredths(double v) {
-  std::array<char, 32> text{};
-  const int n = std::snprintf(text.data(), text.size(), "%.2f", hundredths_rounded(v));
-  std::size_t length = n > 0 ? static_cast<std::size_t>(n) : 0;
-  while (length > 0 && text[length - 1] == '0') --length;
-  if (length > 0 && text[length - 1] == '.') --length;
-  return {text.data(), length};
+// n hundredths as a decimal number, its trailing zeros dropped: 1250 "12.5", -300 "-3".
+std::string hundredths(long n) {
+  std::string out = n < 0 ? "-" : "";
+  const unsigned long magnitude = n < 0 ? 0UL - static_cast<unsigned long>(n) : static_cast<unsigned long>(n);
+  out += std::to_string(magnitude / 100);
+  const unsigned long fraction = magnitude % 100;
+  if (fraction != 0) {
+    out += '.';
+    out += static_cast<char>('0' + fraction / 10);
+    if (fraction % 10 != 0) out += static_cast<char>('0' + fraction % 10);
+  }
+  return out;
 }
 
 std::vector<std::string_view> split(std::string_view text, char separator) {
@@ -152,8 +155,8 @@ std::string PathBook::compact(std::string_view data) {
   };
   const auto pair = [&](std::size_t i, std::string& to) {
     const long x = std::lround((value(i) - start[0]) * 100), y = std::lround((value(i + 1) - start[1]) * 100);
-    to.append(" ").append(hundredths(static_cast<double>(x - current[0]) / 100));
-    to.append(" ").append(hundredths(static_cast<double>(y - current[1]) / 100));
+    to.append(" ").append(hundredths(x - current[0]));
+    to.append(" ").append(hundredths(y - current[1]));
     return std::array<long, 2>{x, y};
   };
   bool open = false;
@@ -165,7 +168,8 @@ std::string PathBook::compact(std::string_view data) {
       start[1] = value(i + 2);
       current[0] = current[1] = 0;
       if (!out.empty()) out += ' ';
-      out.append("M ").append(hundredths(start[0])).append(" ").append(hundredths(start[1]));
+      out.append("M ").append(hundredths(std::lround(start[0] * 100)));
+      out.append(" ").append(hundredths(std::lround(start[1] * 100)));
       open = true;
       i += 3;
     } else if (command == "L" && open) {
