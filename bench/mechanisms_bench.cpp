@@ -38,7 +38,7 @@ constexpr double kNotMeasured = std::numeric_limits<double>::quiet_NaN();
 
 std::string sig(double v, int digits = 3) { return format_significant(v, digits); }
 
-/// Wall nanoseconds per f'(y) of one case at y, its last coordinate (an angle for most)
+/// Nanoseconds of this thread's CPU time per f'(y) of one case at y, its last coordinate (an angle for most)
 /// nudged by round-off each call so no call can be folded into the last.
 double ns_per_rhs(const eval::MechanismDynamics& d, Eigen::VectorXd y, double min_batch, int batches) {
   Eigen::VectorXd dydt(y.size());
@@ -54,7 +54,7 @@ double ns_per_rhs(const eval::MechanismDynamics& d, Eigen::VectorXd y, double mi
       min_batch, batches);
   if (!std::isfinite(sink) || !dydt.allFinite())
     throw Error::failure("bench mechanisms: a right-hand side was not finite");
-  return per.wall_ns;
+  return per.cpu_ns;
 }
 
 struct Loaded {
@@ -101,7 +101,7 @@ void closed_form_rows(const sym::System& system, const GiNaC::exmap& state, doub
         min_batch, batches);
     if (!std::isfinite(sink) || !out.allFinite())
       throw Error::failure("bench mechanisms: a closed-form right-hand side was not finite");
-    return per.wall_ns;
+    return per.cpu_ns;
   };
   const GeneralizedRhs<Case3> case3(p);
   const GeneralizedRhs<Case2> case2(p);
@@ -144,7 +144,7 @@ Pendulum pendulum_values(const Mechanism& m) {
   return p;
 }
 
-/// Our run to t = 10 s: the angles at the end and the time of state_at() alone, the
+/// Our run to t = 10 s: the angles at the end and the CPU time of state_at() alone, the
 /// median of `repeats`.
 struct OurRun {
   double theta1 = 0, theta2 = 0, seconds = 0;
@@ -156,9 +156,9 @@ OurRun run_ours(const sym::System& system, const GiNaC::exmap& state, Simulation
   OurRun out;
   for (int r = 0; r < repeats; ++r) {
     MechanismSimulation simulation(system, state, o);
-    const auto start = std::chrono::steady_clock::now();
+    const double start = thread_cpu_seconds();
     const Eigen::VectorXd& y = simulation.state_at(kEnd);
-    times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    times.push_back(thread_cpu_seconds() - start);
     out.theta1 = y[0];
     out.theta2 = y[1];
   }
@@ -260,7 +260,9 @@ void write_report(const MechanismsBenchOptions& o, MechanismsBenchResult& r) {
   md << "# Mechanisms: the cost of any mechanism's motion\n\n"
      << "Reproduce: `linkage bench mechanisms" << (o.quick ? " --quick" : "") << " --out " << o.out.string()
      << "`. Every figure comes from this one run on this machine; compare ratios, not "
-        "absolute times (shared machines are noisy). Times are wall clock, the median of batches.\n\n";
+        "absolute times (shared machines are noisy). Times are this thread's CPU time "
+        "(CLOCK_THREAD_CPUTIME_ID: the wall clock also counts other processes' turns on the cores), "
+        "the median of batches.\n\n";
   if (!r.lines.empty()) {
     md << "## Notes\n\n";
     for (const std::string& line : r.lines) md << "- " << line << "\n";

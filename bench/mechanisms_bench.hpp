@@ -40,14 +40,14 @@ struct RhsRow {
   int case_id = 3;
   std::string path;
   int bodies = 0;
-  double ns_per_rhs = 0;  // wall clock, median of batches
+  double ns_per_rhs = 0;  // this thread's CPU time, median of batches
 };
 
 /// One run of the work-precision study.
 struct WorkPoint {
   std::string method;  // "ours dop853", "odeint rkf78", "mujoco rk4"
   double setting = 0;  // tolerance, or step in s
-  double seconds = 0;  // the integration alone
+  double seconds = 0;  // the integration alone, this thread's CPU time
   double error = 0;    // max |delta theta| at t = 10 s, rad
 };
 

@@ -6,7 +6,6 @@
 
 #include <array>
 #include <charconv>
-#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <numbers>
@@ -152,11 +151,10 @@ double mujoco_forward_ns(int links, double seconds_budget) {
   // nanoseconds_per_call doubles the batch size up to min_batch: about
   // (batches + 2) min_batch in all, plus the warm-up.
   const double min_batch = seconds_budget / (batches + 3);
-  using clock = std::chrono::steady_clock;
-  const auto warm_start = clock::now();
-  while (std::chrono::duration<double>(clock::now() - warm_start).count() < min_batch)
+  const double warm_start = thread_cpu_seconds();
+  while (thread_cpu_seconds() - warm_start < min_batch)
     for (int i = 0; i < 64; ++i) mj_forward(m, d);
-  return nanoseconds_per_call([&](std::size_t) { mj_forward(m, d); }, min_batch, batches).wall_ns;
+  return nanoseconds_per_call([&](std::size_t) { mj_forward(m, d); }, min_batch, batches).cpu_ns;
 }
 
 MujocoRun mujoco_double_pendulum(const DoublePendulumSpec& spec, int integrator, double dt, double t_end) {
@@ -178,9 +176,9 @@ MujocoRun mujoco_double_pendulum(const DoublePendulumSpec& spec, int integrator,
   run.steps = std::lround(t_end / dt);
   mjModel* m = model.get();
   mjData* d = data.get();
-  const auto start = std::chrono::steady_clock::now();
+  const double start = thread_cpu_seconds();
   for (long i = 0; i < run.steps; ++i) mj_step(m, d);
-  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  run.seconds = thread_cpu_seconds() - start;
   // MuJoCo resets a state that left the finite numbers and only counts a warning.
   for (const int warning : {mjWARN_BADQPOS, mjWARN_BADQVEL, mjWARN_BADQACC})
     if (d->warning[warning].number > 0)

@@ -50,7 +50,7 @@ using MujocoData = std::unique_ptr<mjData_, MujocoDataDeleter>;
 
 /// Nanoseconds per mj_forward on the `links`-link chain at a fixed pseudo-random state
 /// (a fixed seed): the median of 7 batches after a warm-up, about `seconds_budget` s
-/// in all, by the steady clock.
+/// in all, by this thread's CPU time (the wall clock swings with the machine's load).
 [[nodiscard]] double mujoco_forward_ns(int links, double seconds_budget);
 
 /// Two rods hinged in series from a ground pin, and their initial state in ABSOLUTE
@@ -70,7 +70,7 @@ struct DoublePendulumSpec {
 struct MujocoRun {
   double theta1 = 0, theta2 = 0;  // rad
   double omega1 = 0, omega2 = 0;  // rad/s
-  double seconds = 0;             // wall time of the mj_step loop alone (steady clock)
+  double seconds = 0;             // the mj_step loop alone, this thread's CPU time
   long steps = 0;                 // round(t_end / dt)
 };
 

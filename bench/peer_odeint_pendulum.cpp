@@ -1,7 +1,6 @@
 #include "bench/peer_odeint_pendulum.hpp"
 
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <functional>
 
@@ -14,6 +13,7 @@
 #include <boost/numeric/odeint/stepper/runge_kutta_dopri5.hpp>
 #include <boost/numeric/odeint/stepper/runge_kutta_fehlberg78.hpp>
 
+#include "bench/timing.hpp"
 #include "core/error.hpp"
 
 namespace linkage::bench {
@@ -29,7 +29,7 @@ PendulumRun odeint_double_pendulum(const DoublePendulumUser& f, const std::strin
     f(x, dxdt, t);
   };
   State4 x{theta1, theta2, 0, 0};
-  const auto start = std::chrono::steady_clock::now();
+  const double start = thread_cpu_seconds();
   if (stepper == "rk4") {
     const auto n = static_cast<std::size_t>(std::llround(t_end / setting));
     odeint::integrate_n_steps(odeint::runge_kutta4<State4>(), std::ref(system), x, 0.0, setting, n);
@@ -43,7 +43,7 @@ PendulumRun odeint_double_pendulum(const DoublePendulumUser& f, const std::strin
     throw Error::failure("odeint_double_pendulum: unknown stepper " + stepper);
   }
   PendulumRun out;
-  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out.seconds = thread_cpu_seconds() - start;
   out.theta1 = x[0];
   out.theta2 = x[1];
   out.evaluations = count;

@@ -9,7 +9,7 @@ namespace linkage::bench {
 
 struct PendulumRun {
   double theta1 = 0, theta2 = 0;  // rad, at the end
-  double seconds = 0;             // the integration alone
+  double seconds = 0;             // the integration alone, this thread's CPU time
   long evaluations = 0;
 };
 

@@ -69,10 +69,12 @@ std::string emit_cpp(const Program& program, std::string_view function_name) {
   out.reserve(64 * (program.instruction_count() + program.output_count() + inputs) + 256);
   out += "extern \"C\" void ";
   out += function_name;
-  out += "(const double* in, double* out) {\n";
+  out += "(const double* in, const double* state, double* out) {\n";
   for (std::size_t k = 0; k < inputs; ++k) {
     value[k] = local('i', k);
-    out += "  const double " + value[k] + " = in[" + std::to_string(k) + "];\n";
+    const bool from_state = k >= program.state_first() && k - program.state_first() < program.state_count();
+    out += "  const double " + value[k] + " = " + (from_state ? "state[" : "in[") +
+           std::to_string(from_state ? k - program.state_first() : k) + "];\n";
   }
   for (std::size_t k = 0; k < program.constant_count(); ++k) value[inputs + k] = cpp_literal(program.constants()[k]);
   std::size_t n = 0;

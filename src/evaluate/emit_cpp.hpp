@@ -11,9 +11,9 @@
 
 namespace linkage::eval {
 
-/// `extern "C" void FUNCTION(const double* in, double* out)` computing `program`'s
-/// outputs from its inputs. Needs no header (GCC and Clang builtins); the same program
-/// and name give the same text.
+/// `extern "C" void FUNCTION(const double* in, const double* state, double* out)`
+/// computing `program`'s outputs from its inputs, its state inputs read from `state`.
+/// Needs no header (GCC and Clang builtins); the same program and name give the same text.
 [[nodiscard]] std::string emit_cpp(const Program& program, std::string_view function_name);
 
 /// A double as a C++ literal of exactly its value: "0x1.8p+1", "(-0x1p-3)", or a builtin

@@ -57,14 +57,21 @@ double pivot_spread(const Lu& lu) {
   return pivots.minCoeff() / pivots.maxCoeff();
 }
 
-/// x from the upper triangle of a (row major at `Stride`) and b of N rows.
+/// x from the upper triangle of a (row major at `Stride`) and b of N rows. Unrolled into
+/// registers and stored once at the end: the loop as written was vectorized into 16-byte
+/// loads of two x just stored one at a time, which wait for the stores to retire (store
+/// forwarding fails); perf put a quarter of the four-bar's Case 1 on that one load.
 template <int N, int Stride>
 void back_substitute(const double* a, const double* b, double* x) {
+  std::array<double, N> v;
+#pragma GCC unroll 8
   for (int k = N - 1; k >= 0; --k) {
-    double v = b[k];
-    for (int j = k + 1; j < N; ++j) v -= a[k * Stride + j] * x[j];
-    x[k] = v / a[k * Stride + k];
+    double sum = b[k];
+#pragma GCC unroll 8
+    for (int j = k + 1; j < N; ++j) sum -= a[k * Stride + j] * v[j];
+    v[k] = sum / a[k * Stride + k];
   }
+  std::copy(v.begin(), v.end(), x);
 }
 
 /// A u = B for A (row major) and B of N rows at `values`; the pivots' spread. The same
@@ -408,6 +415,7 @@ void MechanismDynamics::compile_case() const {
         solve_inputs_.push_back(value);
       }
       solve_ = compile(plan->outputs, inputs, plan->definitions);
+      solve_.read_state_from(parameters_, 2 * n_);  // q and q' read from y itself
       // The pivots that are constants of the run (numbers, parameters' factors) checked now.
       std::vector<std::optional<double>> pivots;
       for (std::size_t k = cols_; k < plan->outputs.size(); ++k) {
@@ -677,9 +685,8 @@ bool MechanismDynamics::static_unknowns(double t, const Eigen::VectorXd& y) cons
   // compiled LU (a chain of 8: 827 instructions against 593): both evaluators then run the
   // same arithmetic, so a run's numbers do not depend on whether a compiler was found.
   if (solve_.output_count() == 0) return false;
-  copy_state_in(y.data(), solve_inputs_.data() + parameters_, 2 * n_);
   solve_inputs_[parameters_ + 2 * n_] = t;
-  solve_.run(solve_inputs_.data(), solve_values_.data(), scratch_.data());
+  solve_.run(solve_inputs_.data(), y.data(), solve_values_.data(), scratch_.data());
   return pivot_check_.accepts(solve_values_.data() + cols_);
 }
 
@@ -731,14 +738,12 @@ bool MechanismDynamics::derivative(double t, const Eigen::VectorXd& y, Eigen::Ve
   const bool baumgarte = constraint_rows_ > 0 && (two_alpha_ != 0 || beta_squared_ != 0);
   const bool plain = static_plain_ && structured_ && !baumgarte;
   if (plain) {
-    // The common case with nothing else to decide: the static solve's one program and no
-    // power to add. Raw pointers: the copies are a handful of values.
+    // The common case with nothing else to decide: the static solve's one program, reading
+    // q and q' from y itself, and no power to add. Raw pointers: the copies are a handful.
     const std::size_t n = n_;
     const double* in = y.data();
-    double* inputs = solve_inputs_.data() + parameters_;
-    copy_state_in(in, inputs, 2 * n);
-    inputs[2 * n] = t;
-    solve_.run(solve_inputs_.data(), solve_values_.data(), scratch_.data());
+    solve_inputs_[parameters_ + 2 * n] = t;
+    solve_.run(solve_inputs_.data(), in, solve_values_.data(), scratch_.data());
     if (pivot_check_.accepts(solve_values_.data() + cols_)) {
       double* out = dydt.data();
       const double* u = solve_values_.data();

@@ -6,7 +6,9 @@
 namespace linkage::eval {
 
 /// Compiled code for one Program (evaluate/emit_cpp.hpp): outputs from inputs, no scratch.
-using NativeFunction = void (*)(const double* in, double* out);
+/// The program's state inputs (Program::read_state_from) are read from `state`, the others
+/// from `in`, so a right-hand side reads y where it is, with no copy into `in`.
+using NativeFunction = void (*)(const double* in, const double* state, double* out);
 
 /// One row of a table of native code: the function computing the Program of `fingerprint`.
 struct NativeEntry {

@@ -4,12 +4,15 @@
 #include <bit>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
+#include <string>
 
 namespace linkage::eval {
 
-void Program::interpret(const double* inputs, double* outputs, double* scratch) const {
+void Program::interpret(const double* inputs, const double* state, double* outputs, double* scratch) const {
   double* r = scratch;
   std::copy_n(inputs, input_names_.size(), r);
+  std::copy_n(state, state_count_, r + state_first_);
   std::copy(constants_.begin(), constants_.end(), r + input_names_.size());
   for (const Instruction& i : code_) {
     switch (i.op) {
@@ -80,10 +83,21 @@ struct Fnv {
 
 }  // namespace
 
+void Program::read_state_from(std::size_t first, std::size_t count) {
+  if (first > input_names_.size() || count > input_names_.size() - first)
+    throw std::invalid_argument("Program::read_state_from: inputs " + std::to_string(first) + " .. " +
+                                std::to_string(first + count) + " are beyond its " +
+                                std::to_string(input_names_.size()) + " inputs");
+  state_first_ = first;
+  state_count_ = count;
+}
+
 std::uint64_t Program::fingerprint() const {
   Fnv f;
   f.add(kNativeGeneratorVersion);
   f.add(input_names_.size());
+  f.add(state_first_);
+  f.add(state_count_);
   f.add(constants_.size());
   for (const double c : constants_) f.add(std::bit_cast<std::uint64_t>(c));
   f.add(code_.size());

@@ -21,7 +21,7 @@ namespace linkage::eval {
 
 /// Bumped when emit_cpp's output or the native library's layout changes: part of every
 /// fingerprint, so code from another generator is never attached.
-inline constexpr std::uint64_t kNativeGeneratorVersion = 1;
+inline constexpr std::uint64_t kNativeGeneratorVersion = 2;
 
 enum class Op : std::uint8_t { add, sub, mul, div, neg, sqrt, pow, sin, cos, sincos, tan, exp, log, abs };
 
@@ -43,20 +43,35 @@ class Program {
   /// Evaluates every output. `scratch` holds scratch_size() doubles; nothing is allocated.
   /// With native code attached, that code runs instead (and `scratch` is not touched).
   void run(const double* inputs, double* outputs, double* scratch) const {
+    run(inputs, inputs + state_first_, outputs, scratch);
+  }
+  /// As run(inputs, ...), with the state inputs (read_state_from) read from `state`
+  /// instead: their entries of `inputs` are not read.
+  void run(const double* inputs, const double* state, double* outputs, double* scratch) const {
     if (native_ != nullptr)
-      native_(inputs, outputs);
+      native_(inputs, state, outputs);
     else
-      interpret(inputs, outputs, scratch);
+      interpret(inputs, state, outputs, scratch);
   }
   /// The interpreter alone, whether or not native code is attached: the reference.
-  void interpret(const double* inputs, double* outputs, double* scratch) const;
+  void interpret(const double* inputs, double* outputs, double* scratch) const {
+    interpret(inputs, inputs + state_first_, outputs, scratch);
+  }
+  void interpret(const double* inputs, const double* state, double* outputs, double* scratch) const;
+
+  /// Inputs first .. first + count - 1 are the state: run(inputs, state, ...) reads them
+  /// from `state`. Set before fingerprint() and attach(): native code is made for it.
+  /// Throws std::invalid_argument for a range beyond the inputs.
+  void read_state_from(std::size_t first, std::size_t count);
+  [[nodiscard]] std::size_t state_first() const { return state_first_; }
+  [[nodiscard]] std::size_t state_count() const { return state_count_; }
 
   /// Runs `f` instead of the interpreter from now on (nullptr: the interpreter again). `f`
   /// must compute this program (its fingerprint's): native_library.hpp checks that.
   void attach(NativeFunction f) { native_ = f; }
   [[nodiscard]] bool native() const { return native_ != nullptr; }
-  /// A 64-bit hash of everything run() computes from (inputs, constants' bits, code,
-  /// output registers, register count) and kNativeGeneratorVersion: equal programs, equal
+  /// A 64-bit hash of everything run() computes from (inputs, the state's range, constants'
+  /// bits, code, output registers, register count) and kNativeGeneratorVersion: equal programs, equal
   /// fingerprints, on every run and machine.
   [[nodiscard]] std::uint64_t fingerprint() const;
 
@@ -87,6 +102,8 @@ class Program {
   std::vector<Instruction> code_;                // in evaluation order
   std::vector<std::uint32_t> output_registers_;  // where each output ends
   std::size_t register_count_ = 0;
+  std::size_t state_first_ = 0;  // read_state_from(): none by default
+  std::size_t state_count_ = 0;
   NativeFunction native_ = nullptr;
 };
 

@@ -340,6 +340,7 @@ TreeDynamics::TreeDynamics(const sym::System& system) : impl_(std::make_unique<I
     }
   jacobian.insert(jacobian.end(), bias.begin(), bias.end());
   m.loops = compile(jacobian, loop_inputs);
+  m.loops.read_state_from(parameter_count, 2 * system.coordinates().size());  // q and q' read from y itself
   m.loop_inputs.assign(loop_inputs.size(), 0.0);
   for (std::size_t i = 0; i < parameter_count; ++i) m.loop_inputs[i] = m.parameters[i];
   m.loop_outputs.resize(jacobian.size());
@@ -724,9 +725,8 @@ bool TreeDynamics::accelerations(double t, const Eigen::VectorXd& y, Eigen::Vect
   m.articulate(q_ddot);
   if (m.loop_rows == 0) return true;
 
-  for (Eigen::Index i = 0; i < 2 * n; ++i) m.loop_inputs[first + static_cast<std::size_t>(i)] = y[i];
   m.loop_inputs[first + static_cast<std::size_t>(2 * n)] = t;
-  m.loops.run(m.loop_inputs.data(), m.loop_outputs.data(), m.scratch.data());
+  m.loops.run(m.loop_inputs.data(), y.data(), m.loop_outputs.data(), m.scratch.data());
   std::size_t k = 0;
   for (Eigen::Index r = 0; r < m.loop_rows; ++r)
     for (Eigen::Index c = 0; c < n; ++c) m.J(r, c) = m.loop_outputs[k++];

@@ -42,7 +42,8 @@ TEST(EmitCpp, EachResultHasItsOwnNameAndSinCosIsOneCall) {
   const Program p = compile(
       {GiNaC::sin(x) * GiNaC::cos(x) + GiNaC::pow(x + y, 3) - GiNaC::exp(y) / (x * x + 1), GiNaC::cos(x)}, {x, y});
   const std::string code = emit_cpp(p, "f");
-  EXPECT_NE(code.find("extern \"C\" void f(const double* in, double* out) {"), std::string::npos) << code;
+  EXPECT_NE(code.find("extern \"C\" void f(const double* in, const double* state, double* out) {"), std::string::npos)
+      << code;
   const std::regex local("const double (t[0-9]+) =");
   std::set<std::string> names;
   std::size_t locals = 0;
@@ -57,6 +58,12 @@ TEST(EmitCpp, EachResultHasItsOwnNameAndSinCosIsOneCall) {
   EXPECT_EQ(sincos, 1U) << code;
   EXPECT_EQ(code.find("__builtin_sin("), std::string::npos) << code;
   EXPECT_EQ(emit_cpp(p, "f"), code);  // deterministic
+  EXPECT_NE(code.find("const double i1 = in[1];"), std::string::npos) << code;
+  Program apart = p;
+  apart.read_state_from(1, 1);
+  const std::string reading = emit_cpp(apart, "f");
+  EXPECT_NE(reading.find("const double i0 = in[0];"), std::string::npos) << reading;
+  EXPECT_NE(reading.find("const double i1 = state[0];"), std::string::npos) << reading;
 }
 
 }  // namespace

@@ -116,6 +116,25 @@ TEST(NativeLibrary, EveryOpAgreesWithTheInterpreter) {
   EXPECT_EQ(b.rebuilt, "");
 }
 
+// A right-hand side reads q and q' where y keeps them: native code reads the state inputs
+// from its second pointer, none of them from the inputs' array.
+TEST(NativeLibrary, StateInputsAreReadFromTheState) {
+  Cache cache;
+  Program p = every_op();
+  p.read_state_from(1, 2);  // y and z
+  const NativeAttachment a = attach_native({&p});
+  ASSERT_TRUE(a.attached) << a.reason;
+  for (const std::vector<double>& in : every_op_inputs()) {
+    const std::vector<double> state{in[1], in[2]};
+    const std::vector<double> elsewhere{in[0], std::nan(""), std::nan("")};  // never read
+    std::vector<double> out(p.output_count()), scratch(p.scratch_size());
+    p.run(elsewhere.data(), state.data(), out.data(), scratch.data());
+    const std::vector<double> reference = interpreted(p, in);
+    for (std::size_t k = 0; k < out.size(); ++k)
+      EXPECT_EQ(std::bit_cast<std::uint64_t>(out[k]), std::bit_cast<std::uint64_t>(reference[k])) << "output " << k;
+  }
+}
+
 TEST(NativeLibrary, SourceIsTheSameForTheSamePrograms) {
   const Program a = every_op(), b = every_op();
   const symbol x("x");

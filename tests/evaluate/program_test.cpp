@@ -392,6 +392,23 @@ TEST(Program, SameInputsGiveTheSameBits) {
   EXPECT_EQ(std::memcmp(first.data(), other.data(), first.size() * sizeof(double)), 0);
 }
 
+TEST(Program, StateInputsComeFromTheStateWhenGivenApart) {
+  const symbol p("p"), q("q"), v("v"), t("t");
+  Program program = compile_in({p * GiNaC::sin(q) + v * t, q - v}, {p, q, v, t});
+  const std::uint64_t before = program.fingerprint();
+  program.read_state_from(1, 2);
+  EXPECT_NE(program.fingerprint(), before);  // native code made for the one is not the other's
+  const std::vector<double> inputs{2.0, 0.5, -1.5, 3.0};
+  const std::vector<double> apart{2.0, std::nan(""), std::nan(""), 3.0}, state{0.5, -1.5};
+  std::vector<double> out(program.output_count()), scratch(program.scratch_size());
+  program.run(apart.data(), state.data(), out.data(), scratch.data());
+  EXPECT_EQ(out, run(program, inputs));
+  EXPECT_DOUBLE_EQ(out[0], 2.0 * std::sin(0.5) - 4.5);
+  EXPECT_DOUBLE_EQ(out[1], 2.0);
+  EXPECT_THROW(program.read_state_from(3, 2), std::invalid_argument);
+  EXPECT_THROW(program.read_state_from(5, 0), std::invalid_argument);
+}
+
 TEST(Program, RunAllocatesNothing) {
   const symbol x("x"), y("y");
   RandomExpressions random(90, {x, y});
