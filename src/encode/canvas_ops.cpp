@@ -306,10 +306,10 @@ class SvgLayerReader {
   void drawing(const Tag& tag) {
     if (tag.name == "defs") {
       defs_ += tag.closing ? -1 : 1;
-    } else if (tag.name == "svg") {
+    } else if (tag.name == "svg") {  // the document: what it holds is drawn
     } else if (tag.name == "g") {
       tag.closing ? close_group() : open_group(tag);
-    } else if (tag.closing) {
+    } else if (tag.closing) {  // the end of a path, rect or use: drawn at its start
     } else if (tag.name == "path" || tag.name == "rect") {
       Properties p = groups_.back().inherited;
       add_style(p, tag.get("style"));
