@@ -15,7 +15,6 @@ struct GeneralCase3Rhs::Shared {
   std::unique_ptr<sym::System> system;
   std::unique_ptr<eval::MechanismDynamics> dynamics;
   std::string evaluator;
-  mutable Eigen::VectorXd y, dydt;
 };
 
 GeneralCase3Rhs::GeneralCase3Rhs(const Params& p) {
@@ -41,16 +40,17 @@ GeneralCase3Rhs::GeneralCase3Rhs(const Params& p) {
   if (shared_->dynamics->coordinate_names() != std::vector<std::string>{"1.x", "1.y", "1.theta", "2.theta"})
     throw std::logic_error("two-blocks.toml's Case 3 coordinates are not the closed form's");
   shared_->evaluator = choose_evaluator(*shared_->dynamics, SimulationOptions{});
-  shared_->y = Eigen::VectorXd::Zero(shared_->dynamics->state_size());
-  shared_->dydt.resize(shared_->y.size());
   built.push_back(shared_);
 }
 
-void GeneralCase3Rhs::operator()(double t, const Vec<8>& y, Vec<8>& dydt) const {
-  const Shared& s = *shared_;
-  s.y.head<8>() = y;
-  (void)s.dynamics->derivative(t, s.y, s.dydt);  // a singular A gives NaN, which the study reports as a failure
-  dydt = s.dydt.head<8>();
+void GeneralCase3Rhs::operator()(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) const {
+  (void)shared_->dynamics->derivative(t, y, dydt);  // a singular A gives NaN, which the study reports as a failure
+}
+
+Eigen::VectorXd GeneralCase3Rhs::state(const Vec<8>& y) const {
+  Eigen::VectorXd out = Eigen::VectorXd::Zero(shared_->dynamics->state_size());
+  out.head<8>() = y;
+  return out;
 }
 
 const std::string& GeneralCase3Rhs::evaluator() const { return shared_->evaluator; }

@@ -1,9 +1,11 @@
 #pragma once
 // The homework on the general path: two-blocks.toml's Case 3 through the MechanismDynamics
 // that simulate runs, native code attached as simulate's `auto` does (built in, so no
-// compiler), as an integrator's f(t, y, dydt) on the closed form's eight values: the same
-// coordinates (x1, y1, theta1, theta2, then their rates); the ninth, the work W of
-// dampers and loads, is 0 here and not integrated.
+// compiler), as an integrator's f(t, y, dydt) on the mechanism's own state, as simulate
+// integrates it: a dynamic-size column of the closed form's eight values (x1, y1, theta1,
+// theta2, then their rates) and a ninth, the work W of dampers and loads (0 here). No
+// adapter copies the state in and out: what a run costs here is what simulate pays.
+#include <Eigen/Core>
 #include <memory>
 #include <string>
 
@@ -17,7 +19,9 @@ class GeneralCase3Rhs {
   /// The mechanism at `p`: derived and compiled once per distinct Params in the process,
   /// so a run's time holds its integration alone (after a first, untimed construction).
   explicit GeneralCase3Rhs(const Params& p);
-  void operator()(double t, const Vec<8>& y, Vec<8>& dydt) const;
+  void operator()(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) const;
+  /// The mechanism's state at the closed form's eight values (W = 0).
+  [[nodiscard]] Eigen::VectorXd state(const Vec<8>& y) const;
   /// What computes the equations, as simulate's summary says it: "compiled (built in)",
   /// or "interpreted (why)" when this program has no native code for it.
   [[nodiscard]] const std::string& evaluator() const;

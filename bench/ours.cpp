@@ -6,7 +6,8 @@
 // without stabilization, so its drift shows). DOP853 also runs Case 3 on the
 // definition's right-hand side, to show what the closed form buys; every integrator also
 // runs Case 3 on the general path (two-blocks.toml through MechanismDynamics with native
-// code, general_rhs.hpp), the path the homework takes in simulate.
+// code, general_rhs.hpp), the path the homework takes in simulate, on simulate's
+// dynamic-size state.
 #include <string>
 
 #include "bench/closed_form/kinematics.hpp"
@@ -25,20 +26,24 @@ namespace {
 
 constexpr std::int64_t kMaxAdaptiveSteps = 100'000'000;
 
+// A run's state: Case 1's 12 values, Case 3's 8, or (Eigen::Dynamic) the general path's
+// mechanism state, those 8 and W, as simulate integrates it.
 template <int N>
 BodyState to_body(const Params& p, const Vec<N>& y) {
-  if constexpr (N == 8)
-    return body_state(p, State::from_vector(y));
-  else
+  if constexpr (N == 12)
     return BodyState::from_vector(y);
+  else
+    return body_state(p, State::from_vector(y.template head<8>()));
 }
 
-template <int N>
-Vec<N> initial_vector(const Scenario& s) {
+template <int N, class F>
+Vec<N> initial_vector(const F& f, const Scenario& s) {
   if constexpr (N == 8)
     return s.initial.vector();
-  else
+  else if constexpr (N == 12)
     return body_state(s.params, s.initial).vector();
+  else
+    return f.state(s.initial.vector());
 }
 
 void fill_counters(const ode::Counters& c, Outcome& out) {
@@ -52,7 +57,7 @@ Outcome run_fixed(F f, const Scenario& s, double knob) {
   const auto n = static_cast<std::int64_t>(knob);
   const double h = s.duration / static_cast<double>(n);
   Integrator integrator;
-  Vec<N> y = initial_vector<N>(s);
+  Vec<N> y = initial_vector<N>(f, s);
   Outcome out;
   for (std::int64_t k = 0; k < n; ++k) {
     const ode::StepStatus status = integrator.step(f, static_cast<double>(k) * h, h, y);
@@ -71,7 +76,7 @@ Outcome run_adaptive(F f, const Scenario& s, double tol) {
   typename Integrator::Settings settings;
   settings.tolerances = {tol, tol};
   Integrator integrator(settings);
-  integrator.start(f, 0.0, initial_vector<N>(s));
+  integrator.start(f, 0.0, initial_vector<N>(f, s));
   Outcome out;
   while (integrator.t() < s.duration && out.failure.empty()) {
     const ode::StepStatus status = integrator.step(f);
@@ -147,7 +152,7 @@ std::vector<Method> linkage_methods(int case_id) {
       for (Method& m : methods_on<8>(
                3, RhsKind::definition, [](const Params& p) { return DefinitionCase3Rhs{p}; }, false))
         out.push_back(std::move(m));
-      for (Method& m : methods_on<8>(
+      for (Method& m : methods_on<Eigen::Dynamic>(
                3, RhsKind::general, [](const Params& p) { return GeneralCase3Rhs(p); }, true))
         out.push_back(std::move(m));
       return out;
