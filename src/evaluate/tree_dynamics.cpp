@@ -50,6 +50,7 @@ struct Node {
   double sign = 1;  // slider: +1 when the body is bodies[1] of its joint; rolling: +1 for the disc, -1 the line's body
   double radius = 0;                            // rolling: the rolling radius
   double held = 0, cos_held = 1, sin_held = 0;  // weld: the angle it holds, child less parent
+  bool side_children = false;                   // a child that is not the next node: it adds its I^A and p^A in work[]
 };
 
 /// A symmetric 3 x 3 matrix by its upper triangle.
@@ -345,6 +346,9 @@ TreeDynamics::TreeDynamics(const sym::System& system) : impl_(std::make_unique<I
   for (std::size_t i = 0; i < parameter_count; ++i) m.loop_inputs[i] = m.parameters[i];
   m.loop_outputs.resize(jacobian.size());
   m.scratch.resize(std::max(m.loads.scratch_size(), m.loops.scratch_size()));
+  for (std::size_t k = 0; k < m.nodes.size(); ++k)
+    if (const int p = m.nodes[k].parent; p >= 0 && static_cast<std::size_t>(p) + 1 != k)
+      m.nodes[static_cast<std::size_t>(p)].side_children = true;
   m.work.resize(m.nodes.size());
   m.roots.resize(m.nodes.size());
   m.angle_force.resize(m.nodes.size());
@@ -424,26 +428,22 @@ void TreeDynamics::Impl::kinematics(const Eigen::VectorXd& y) const {
     const auto finish = [&](const P2& point, const P2& centre, P2 t, const S3& v, const S3& c)
         __attribute__((always_inline)) {
       if (!has_parent) t = {};  // the ground does not move: nothing to pass on
-      // The body's inertia about O, and v x* (I v) written through the centre's velocity
-      // v_c: the momentum changes at m (omega x v_c), its moment about O at r x that.
-      const P2 r{centre.x - point.x, centre.y - point.y};
-      const double m = node.mass, omega = v.n;
-      const P2 vc{v.x - omega * r.y, v.y + omega * r.x};
-      const P2 turn{-m * omega * vc.y, m * omega * vc.x};
-      S3 pA{r.x * turn.y - r.y * turn.x, turn.x, turn.y};
-      if (loads_constant) {
-        const S3 f = load_about(node, r);
-        pA = {pA.n - f.n, pA.x - f.x, pA.y - f.y};
-      }
       w.centre = centre;
       w.point = point;
       w.t = t;
       w.v = v;
       w.c = c;
-      w.IA = {node.inertia + m * (r.x * r.x + r.y * r.y), -m * r.y, m * r.x, m, 0, m};
-      w.pA = pA;
+      // The body's own I^A and p^A are formed in articulate(); here only what its other
+      // children add in is zeroed.
+      if (node.side_children) {
+        w.IA = {};
+        w.pA = {};
+      }
       previous = {centre, point, v};
       if (loads_constant || node.body < 0) return;
+      const P2 r{centre.x - point.x, centre.y - point.y};
+      const double omega = v.n;
+      const P2 vc{v.x - omega * r.y, v.y + omega * r.x};
       const auto b = static_cast<std::size_t>(node.body);
       load_inputs[first + 3 * b] = centre.x;
       load_inputs[first + 3 * b + 1] = centre.y;
@@ -553,8 +553,21 @@ void TreeDynamics::Impl::articulate(Eigen::VectorXd& out) const {
   for (std::size_t k = nodes.size(); k-- > 0;) {
     const Node& node = nodes[k];
     Work& w = work[k];
-    Sym3 A = w.IA;
-    S3 pA = w.pA;
+    // The body's inertia about O, and v x* (I v) - f written through the centre's
+    // velocity v_c: the momentum changes at m (omega x v_c), its moment about O at r x
+    // that. Formed here, not in kinematics(): this pass waits on each link's division
+    // and has room for them.
+    const P2 r{w.centre.x - w.point.x, w.centre.y - w.point.y};
+    const double m = node.mass, omega = w.v.n;
+    const P2 vc{w.v.x - omega * r.y, w.v.y + omega * r.x};
+    const P2 turn{-m * omega * vc.y, m * omega * vc.x};
+    const S3 f = load_about(node, r);
+    Sym3 A{node.inertia + m * (r.x * r.x + r.y * r.y), -m * r.y, m * r.x, m, 0, m};
+    S3 pA{(r.x * turn.y - r.y * turn.x) - f.n, turn.x - f.x, turn.y - f.y};
+    if (node.side_children) {
+      add(A, w.IA);
+      pA = {pA.n + w.pA.n, pA.x + w.pA.x, pA.y + w.pA.y};
+    }
     add(A, carry_IA);
     pA = {pA.n + carry_pA.n, pA.x + carry_pA.x, pA.y + carry_pA.y};
     const P2 t = w.t;
@@ -743,12 +756,6 @@ bool TreeDynamics::accelerations(double t, const Eigen::VectorXd& y, Eigen::Vect
     m.load_inputs[first + 6 * m.bodies] = t;
     m.loads.run(m.load_inputs.data(), m.load_outputs.data(), m.scratch.data());
   }
-  if (!m.loads_constant)  // p^A = v x* I v - f
-    for (std::size_t k = 0; k < m.work.size(); ++k) {
-      Work& w = m.work[k];
-      const S3 f = m.load_about(m.nodes[k], P2{w.centre.x - w.point.x, w.centre.y - w.point.y});
-      w.pA = {w.pA.n - f.n, w.pA.x - f.x, w.pA.y - f.y};
-    }
   m.articulate(q_ddot);
   if (m.loop_rows == 0) return true;
 
