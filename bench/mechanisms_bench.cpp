@@ -144,6 +144,10 @@ Pendulum pendulum_values(const Mechanism& m) {
   return p;
 }
 
+/// How many runs of each setting of the work-precision study (ours and Odeint's) the
+/// median is taken of.
+int work_repeats(const MechanismsBenchOptions& o) { return o.quick ? 1 : 3; }
+
 /// Our run to t = 10 s: the angles at the end and the CPU time of state_at() alone, the
 /// median of `repeats`.
 struct OurRun {
@@ -289,7 +293,9 @@ void write_report(const MechanismsBenchOptions& o, MechanismsBenchResult& r) {
      << sig(r.reference_check, 2)
      << " rad, so errors down to about 1e-13 are real. Odeint runs the right-hand side a user writes "
         "by hand (bench/double_pendulum_user.hpp); MuJoCo its own model of the same rods (bench/peer_mujoco.cpp). "
-        "MuJoCo's Euler is semi-implicit in the velocity.\n\n"
+        "MuJoCo's Euler is semi-implicit in the velocity. Run time: this thread's CPU time, the median of "
+     << work_repeats(o)
+     << " runs for ours and Odeint's, one run for MuJoCo's.\n\n"
         "| method | setting | run time (s) | error (rad) |\n|---|---|---|---|\n";
   for (const WorkPoint& w : r.work)
     md << "| " << w.method << " | " << sig(w.setting, 2) << " | " << sig(w.seconds) << " | " << sig(w.error, 2)
@@ -483,7 +489,7 @@ MechanismsBenchResult run_mechanisms_bench(const MechanismsBenchOptions& o) {
   auto error = [&](double t1, double t2) {
     return std::max(std::fabs(t1 - exact.theta1), std::fabs(t2 - exact.theta2));
   };
-  const int repeats = o.quick ? 1 : 3;
+  const int repeats = work_repeats(o);
   const std::vector<double> tolerances =
       o.quick ? std::vector<double>{1e-6, 1e-9}
               : std::vector<double>{1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12, 1e-13};
@@ -506,13 +512,25 @@ MechanismsBenchResult run_mechanisms_bench(const MechanismsBenchOptions& o) {
   }
 #if LINKAGE_PEER_ODEINT
   const DoublePendulumUser user{p.l1, p.m1, p.l2, p.m2, p.g};
+  // As ours: the median of `repeats` runs (a single run had moved Odeint / ours by 0.88x
+  // to 1.4x between runs of the same code).
+  auto odeint_run = [&](const std::string& stepper, double setting) {
+    std::vector<double> times;
+    PendulumRun run;
+    for (int k = 0; k < repeats; ++k) {
+      run = odeint_double_pendulum(user, stepper, setting, p.theta1, p.theta2, kEnd);
+      times.push_back(run.seconds);
+    }
+    run.seconds = median(times);
+    return run;
+  };
   for (const std::string stepper : {"rkf78", "dopri5"})
     for (double tol : tolerances) {
-      const PendulumRun run = odeint_double_pendulum(user, stepper, tol, p.theta1, p.theta2, kEnd);
+      const PendulumRun run = odeint_run(stepper, tol);
       r.work.push_back({"odeint " + stepper, tol, run.seconds, error(run.theta1, run.theta2)});
     }
   for (double dt : steps) {
-    const PendulumRun run = odeint_double_pendulum(user, "rk4", dt, p.theta1, p.theta2, kEnd);
+    const PendulumRun run = odeint_run("rk4", dt);
     r.work.push_back({"odeint rk4", dt, run.seconds, error(run.theta1, run.theta2)});
   }
 #endif

@@ -7,11 +7,14 @@
 #include <benchmark/benchmark.h>
 
 #include <Eigen/Core>
+#include <array>
 #include <map>
 #include <memory>
 #include <random>
+#include <string>
 #include <vector>
 
+#include "bench/double_pendulum_user.hpp"
 #include "bench/mechanisms_bench.hpp"
 #include "bench/rhs.hpp"
 #include "bench/timing.hpp"
@@ -75,29 +78,51 @@ void chain_rhs_derivative(benchmark::State& state, int links) {
   general_rhs_of(state, chain(links), CaseId::reduced, true, true);
 }
 
-// At the homework's initial state, as `linkage bench mechanisms` times its rows: one state,
-// theta2 nudged by round-off each call, one entry of y' kept. Its angles (0.1, 0.2 rad) take
-// sincos's short path, so what the path spends besides the arithmetic weighs more than at
-// the random states above.
-void general_case3_at_start(benchmark::State& state) {
-  static const sym::System system(load_mechanism("two-blocks"));
-  eval::MechanismDynamics dynamics(system, CaseId::reduced);
+// At a shipped mechanism's initial state, as `linkage bench mechanisms` times its rows: one
+// state, an angle nudged by round-off each call, one entry of y' kept. The homework's angles
+// (0.1, 0.2 rad) take sincos's short path, so what the path spends besides the arithmetic
+// weighs more than at the random states above; the double pendulum's (-0.8, -1.2 rad) do not.
+void case3_at_start(benchmark::State& state, const char* mechanism, Eigen::Index nudged) {
+  static std::map<std::string, std::unique_ptr<sym::System>> systems;
+  std::unique_ptr<sym::System>& system = systems[mechanism];
+  if (!system) system = std::make_unique<sym::System>(load_mechanism(mechanism));
+  eval::MechanismDynamics dynamics(*system, CaseId::reduced);
   if (const eval::NativeAttachment a = dynamics.attach_native(); !a.attached) {
     state.SkipWithError(("no native code: " + a.reason).c_str());
     return;
   }
-  Eigen::VectorXd y = dynamics.initial_state(sym::checked_initial_state(system).state), dy(y.size());
-  const double base = y[3];
+  Eigen::VectorXd y = dynamics.initial_state(sym::checked_initial_state(*system).state), dy(y.size());
+  const double base = y[nudged];
   double sink = 0;
   std::size_t i = 0;
   for (auto _ : state) {
-    y[3] = base + 1e-15 * static_cast<double>(i++ & 7U);
+    y[nudged] = base + 1e-15 * static_cast<double>(i++ & 7U);
     dynamics.derivative(0.0, y, dy);
     sink += dy[dy.size() - 1];
   }
   benchmark::DoNotOptimize(sink);
 }
-BENCHMARK(general_case3_at_start)->Name("rhs/general_case3_native_at_start");
+BENCHMARK_CAPTURE(case3_at_start, homework, "two-blocks", 3)->Name("rhs/general_case3_native_at_start");
+BENCHMARK_CAPTURE(case3_at_start, double_pendulum, "double-pendulum", 1)
+    ->Name("rhs/double_pendulum_case3_native_at_start");
+
+/// The double pendulum's right-hand side as a user writes it for Odeint
+/// (bench/double_pendulum_user.hpp), at the same state: what `bench mechanisms` holds ours to.
+void double_pendulum_user_at_start(benchmark::State& state) {
+  const DoublePendulumUser f{0.3, 0.2, 0.25, 0.15, 9.81};  // mechanisms/double-pendulum.toml's
+  std::array<double, 4> x{-0.8, -1.2, 0, 0}, dx{};
+  double sink = 0;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    x[1] = -1.2 + 1e-15 * static_cast<double>(i++ & 7U);
+    forget(x);
+    f(x, dx, 0.0);
+    forget(dx);
+    sink += dx[3];
+  }
+  benchmark::DoNotOptimize(sink);
+}
+BENCHMARK(double_pendulum_user_at_start)->Name("rhs/double_pendulum_user_at_start");
 
 void case3_fast_at_start(benchmark::State& state) {
   static const sym::System system(load_mechanism("two-blocks"));

@@ -50,6 +50,7 @@ struct Node {
   double sign = 1;  // slider: +1 when the body is bodies[1] of its joint; rolling: +1 for the disc, -1 the line's body
   double radius = 0;                            // rolling: the rolling radius
   double held = 0, cos_held = 1, sin_held = 0;  // weld: the angle it holds, child less parent
+  bool side_children = false;                   // a child that is not the next node: it adds its I^A and p^A in work[]
 };
 
 /// A symmetric 3 x 3 matrix by its upper triangle.
@@ -67,7 +68,7 @@ struct Work {
   Sym3 IA;
   S3 pA, U, u;  // U = I^A s; u: the dof's force less S^T p^A (a floating root's: tau, in x, y, theta)
   double Dinv = 0;
-  S3 W;  // pins: q''_relative = h - W . a_parent
+  S3 W;  // pins: q''_absolute = h - W . a_parent (W.n = bt D^-1: the parent's turn cancels)
   double h = 0;
 };
 
@@ -345,6 +346,9 @@ TreeDynamics::TreeDynamics(const sym::System& system) : impl_(std::make_unique<I
   for (std::size_t i = 0; i < parameter_count; ++i) m.loop_inputs[i] = m.parameters[i];
   m.loop_outputs.resize(jacobian.size());
   m.scratch.resize(std::max(m.loads.scratch_size(), m.loops.scratch_size()));
+  for (std::size_t k = 0; k < m.nodes.size(); ++k)
+    if (const int p = m.nodes[k].parent; p >= 0 && static_cast<std::size_t>(p) + 1 != k)
+      m.nodes[static_cast<std::size_t>(p)].side_children = true;
   m.work.resize(m.nodes.size());
   m.roots.resize(m.nodes.size());
   m.angle_force.resize(m.nodes.size());
@@ -386,24 +390,30 @@ void TreeDynamics::Impl::kinematics(const Eigen::VectorXd& y) const {
     w.cos_angle = std::cos(w.angle);
     w.sin_angle = std::sin(w.angle);
   }
-  // A chain's parent is the node before: taken from the registers, not read back.
+  // A chain's parent is the node before: its position and velocity, on the dependent
+  // chain, are taken from the registers, not read back; its angle's cosine and sine were
+  // stored before (the loop above, or a slider's or weld's turn a node earlier) and are
+  // read back, which keeps three registers free for the rest.
   struct Parent {
     P2 centre, point;
     S3 v;
-    double angle = 0, cos_angle = 1, sin_angle = 0;
   } previous;
   for (std::size_t k = 0; k < nodes.size(); ++k) {
     const Node& node = nodes[k];
     Work& w = work[k];
     const bool has_parent = node.parent >= 0;
     Parent parent;
-    if (has_parent && static_cast<std::size_t>(node.parent) + 1 == k) {
-      parent = previous;
-    } else if (has_parent) {
+    double parent_angle = 0, pc = 1, ps = 0;  // the ground's
+    if (has_parent) {
       const Work& p = work[static_cast<std::size_t>(node.parent)];
-      parent = {p.centre, p.point, p.v, p.angle, p.cos_angle, p.sin_angle};
+      if (static_cast<std::size_t>(node.parent) + 1 == k)
+        parent = previous;
+      else
+        parent = {p.centre, p.point, p.v};
+      parent_angle = p.angle;
+      pc = p.cos_angle;
+      ps = p.sin_angle;
     }
-    const double pc = parent.cos_angle, ps = parent.sin_angle;
     const S3 pv = parent.v;
     const P2 pp = parent.point;
     // The joint's point on the parent, world.
@@ -412,6 +422,36 @@ void TreeDynamics::Impl::kinematics(const Eigen::VectorXd& y) const {
       const P2 r = rotate(pc, ps, node.parent_point);
       joint = {parent.centre.x + r.x, parent.centre.y + r.y};
     }
+    // What follows a node's kind, called at the end of each case rather than after the
+    // switch: GCC then keeps each case's results in registers, where merging the cases
+    // put them on the stack (a store and a reload on the chain of positions).
+    const auto finish = [&](const P2& point, const P2& centre, P2 t, const S3& v, const S3& c)
+        __attribute__((always_inline)) {
+      if (!has_parent) t = {};  // the ground does not move: nothing to pass on
+      w.centre = centre;
+      w.point = point;
+      w.t = t;
+      w.v = v;
+      w.c = c;
+      // The body's own I^A and p^A are formed in articulate(); here only what its other
+      // children add in is zeroed.
+      if (node.side_children) {
+        w.IA = {};
+        w.pA = {};
+      }
+      previous = {centre, point, v};
+      if (loads_constant || node.body < 0) return;
+      const P2 r{centre.x - point.x, centre.y - point.y};
+      const double omega = v.n;
+      const P2 vc{v.x - omega * r.y, v.y + omega * r.x};
+      const auto b = static_cast<std::size_t>(node.body);
+      load_inputs[first + 3 * b] = centre.x;
+      load_inputs[first + 3 * b + 1] = centre.y;
+      load_inputs[first + 3 * b + 2] = w.angle;
+      load_inputs[first + 3 * bodies + 3 * b] = vc.x;
+      load_inputs[first + 3 * bodies + 3 * b + 1] = vc.y;
+      load_inputs[first + 3 * bodies + 3 * b + 2] = omega;
+    };
     P2 point, centre, t;
     S3 v, c;
     switch (node.kind) {
@@ -423,6 +463,7 @@ void TreeDynamics::Impl::kinematics(const Eigen::VectorXd& y) const {
         v = {omega, vx, vy};
         // About the point where the centre is now: S' q' = (0, w y', -w x').
         c = {0, omega * vy, -omega * vx};
+        finish(point, centre, t, v, c);
         break;
       }
       case NodeKind::revolute: {
@@ -436,11 +477,12 @@ void TreeDynamics::Impl::kinematics(const Eigen::VectorXd& y) const {
         v = {omega, vx, vy};
         c = {0, relative * vy, -relative * vx};
         w.s = {1, 0, 0};
+        finish(point, centre, t, v, c);
         break;
       }
       case NodeKind::prismatic: {
         const P2 u = rotate(pc, ps, node.axis), r = rotate(pc, ps, node.child_point);
-        w.angle = parent.angle;
+        w.angle = parent_angle;
         w.cos_angle = pc;
         w.sin_angle = ps;
         const double along = node.sign * q[node.coordinate[0]], rate = q_dot[node.coordinate[0]];
@@ -451,11 +493,12 @@ void TreeDynamics::Impl::kinematics(const Eigen::VectorXd& y) const {
         t = {pp.y - point.y, point.x - pp.x};
         v = {pv.n, pv.x + pv.n * t.x + s.x * rate, pv.y + pv.n * t.y + s.y * rate};
         c = {0, -pv.n * s.y * rate, pv.n * s.x * rate};
+        finish(point, centre, t, v, c);
         break;
       }
       case NodeKind::fixed: {
         // Its parent's motion carried to the joint, turned by the angle it holds.
-        w.angle = parent.angle + node.held;
+        w.angle = parent_angle + node.held;
         w.cos_angle = pc * node.cos_held - ps * node.sin_held;
         w.sin_angle = ps * node.cos_held + pc * node.sin_held;
         const P2 r = rotate(w.cos_angle, w.sin_angle, node.child_point);
@@ -464,6 +507,7 @@ void TreeDynamics::Impl::kinematics(const Eigen::VectorXd& y) const {
         t = {pp.y - joint.y, joint.x - pp.x};
         v = {pv.n, pv.x + pv.n * t.x, pv.y + pv.n * t.y};
         w.s = {};
+        finish(point, centre, t, v, c);
         break;
       }
       case NodeKind::rolling: {
@@ -474,7 +518,7 @@ void TreeDynamics::Impl::kinematics(const Eigen::VectorXd& y) const {
         const bool disc = node.sign > 0;
         const double line_cos = disc ? pc : w.cos_angle, line_sin = disc ? ps : w.sin_angle;
         const P2 u = rotate(line_cos, line_sin, node.axis), normal{-u.y, u.x};
-        const double turned = disc ? w.angle - parent.angle : parent.angle - w.angle;  // th_disc - th_line
+        const double turned = disc ? w.angle - parent_angle : parent_angle - w.angle;  // th_disc - th_line
         P2 away;                                                                       // O - K
         if (disc) {  // O = C = O_line + R n - R turned u, on the line's parent
           point = {joint.x + radius * (normal.x - turned * u.x), joint.y + radius * (normal.y - turned * u.y)};
@@ -494,37 +538,10 @@ void TreeDynamics::Impl::kinematics(const Eigen::VectorXd& y) const {
         const double line_rate = disc ? pv.n : omega;
         const P2 contact_rate{centre_rate.x + radius * line_rate * u.x, centre_rate.y + radius * line_rate * u.y};
         c = {0, relative * contact_rate.y, -relative * contact_rate.x};
+        finish(point, centre, t, v, c);
         break;
       }
     }
-    if (!has_parent) t = {};  // the ground does not move: nothing to pass on
-    // The body's inertia about O, and v x* (I v) written through the centre's velocity
-    // v_c: the momentum changes at m (omega x v_c), its moment about O at r x that.
-    const P2 r{centre.x - point.x, centre.y - point.y};
-    const double m = node.mass, omega = v.n;
-    const P2 vc{v.x - omega * r.y, v.y + omega * r.x};
-    const P2 turn{-m * omega * vc.y, m * omega * vc.x};
-    S3 pA{r.x * turn.y - r.y * turn.x, turn.x, turn.y};
-    if (loads_constant) {
-      const S3 f = load_about(node, r);
-      pA = {pA.n - f.n, pA.x - f.x, pA.y - f.y};
-    }
-    w.centre = centre;
-    w.point = point;
-    w.t = t;
-    w.v = v;
-    w.c = c;
-    w.IA = {node.inertia + m * (r.x * r.x + r.y * r.y), -m * r.y, m * r.x, m, 0, m};
-    w.pA = pA;
-    previous = {centre, point, v, w.angle, w.cos_angle, w.sin_angle};
-    if (loads_constant || node.body < 0) continue;
-    const auto b = static_cast<std::size_t>(node.body);
-    load_inputs[first + 3 * b] = centre.x;
-    load_inputs[first + 3 * b + 1] = centre.y;
-    load_inputs[first + 3 * b + 2] = w.angle;
-    load_inputs[first + 3 * bodies + 3 * b] = vc.x;
-    load_inputs[first + 3 * bodies + 3 * b + 1] = vc.y;
-    load_inputs[first + 3 * bodies + 3 * b + 2] = omega;
   }
 }
 
@@ -536,8 +553,21 @@ void TreeDynamics::Impl::articulate(Eigen::VectorXd& out) const {
   for (std::size_t k = nodes.size(); k-- > 0;) {
     const Node& node = nodes[k];
     Work& w = work[k];
-    Sym3 A = w.IA;
-    S3 pA = w.pA;
+    // The body's inertia about O, and v x* (I v) - f written through the centre's
+    // velocity v_c: the momentum changes at m (omega x v_c), its moment about O at r x
+    // that. Formed here, not in kinematics(): this pass waits on each link's division
+    // and has room for them.
+    const P2 r{w.centre.x - w.point.x, w.centre.y - w.point.y};
+    const double m = node.mass, omega = w.v.n;
+    const P2 vc{w.v.x - omega * r.y, w.v.y + omega * r.x};
+    const P2 turn{-m * omega * vc.y, m * omega * vc.x};
+    const S3 f = load_about(node, r);
+    Sym3 A{node.inertia + m * (r.x * r.x + r.y * r.y), -m * r.y, m * r.x, m, 0, m};
+    S3 pA{(r.x * turn.y - r.y * turn.x) - f.n, turn.x - f.x, turn.y - f.y};
+    if (node.side_children) {
+      add(A, w.IA);
+      pA = {pA.n + w.pA.n, pA.x + w.pA.x, pA.y + w.pA.y};
+    }
     add(A, carry_IA);
     pA = {pA.n + carry_pA.n, pA.x + carry_pA.x, pA.y + carry_pA.y};
     const P2 t = w.t;
@@ -545,6 +575,20 @@ void TreeDynamics::Impl::articulate(Eigen::VectorXd& out) const {
     const bool to_next = node.parent >= 0 && static_cast<std::size_t>(node.parent) + 1 == k;
     Sym3 to_IA;  // what the parent gets
     S3 to_pA;
+    // Called at the end of each case, not after the switch: merging the cases had GCC
+    // carry p^A through the stack, a store and a reload on a chain's dependent path.
+    const auto pass_on = [&]() __attribute__((always_inline)) {
+      carry_IA = {};
+      carry_pA = {};
+      if (to_next) {
+        carry_IA = to_IA;
+        carry_pA = to_pA;
+      } else if (node.parent >= 0) {
+        Work& p = work[static_cast<std::size_t>(node.parent)];
+        add(p.IA, to_IA);
+        add_shifted(p.pA, to_pA, P2{});
+      }
+    };
     switch (node.kind) {
       case NodeKind::revolute: {
         // S = (1, 0, 0) about the joint: U is I^A's first column (a00, b), D = a00, and
@@ -557,7 +601,7 @@ void TreeDynamics::Impl::articulate(Eigen::VectorXd& out) const {
         w.U = {A.a00, A.a01, A.a02};
         w.u.n = u;
         w.h = h;
-        w.W = {1 + bt * Dinv, A.a01 * Dinv, A.a02 * Dinv};
+        w.W = {bt * Dinv, A.a01 * Dinv, A.a02 * Dinv};
         const double at0 = A.a11 * t.x + A.a12 * t.y, at1 = A.a12 * t.x + A.a22 * t.y;
         const double ac0 = A.a11 * c.x + A.a12 * c.y, ac1 = A.a12 * c.x + A.a22 * c.y;
         const double f1 = pA.x + ac0 + A.a01 * h, f2 = pA.y + ac1 + A.a02 * h;
@@ -568,6 +612,7 @@ void TreeDynamics::Impl::articulate(Eigen::VectorXd& out) const {
                  A.a12 - A.a01 * A.a02 * Dinv,
                  A.a22 - A.a02 * A.a02 * Dinv};
         to_pA = {t.x * f1 + t.y * f2, f1, f2};
+        pass_on();
         break;
       }
       case NodeKind::prismatic:
@@ -583,6 +628,7 @@ void TreeDynamics::Impl::articulate(Eigen::VectorXd& out) const {
         const S3 Iac = times(Ia, c);
         add_shifted(to_IA, Ia, t);
         add_shifted(to_pA, S3{pA.n + Iac.n + g.n * u, pA.x + Iac.x + g.x * u, pA.y + Iac.y + g.y * u}, t);
+        pass_on();
         break;
       }
       case NodeKind::fixed:
@@ -592,6 +638,7 @@ void TreeDynamics::Impl::articulate(Eigen::VectorXd& out) const {
         w.u = {};
         add_shifted(to_IA, A, t);
         add_shifted(to_pA, pA, t);
+        pass_on();
         break;
       case NodeKind::floating:
         // A root: its I^A a + p^A = S^-T tau solved in accelerate().
@@ -601,17 +648,8 @@ void TreeDynamics::Impl::articulate(Eigen::VectorXd& out) const {
           roots[k].full.compute(full(A));
         else
           roots[k].translation_inverse = (Eigen::Matrix2d() << A.a11, A.a12, A.a12, A.a22).finished().inverse();
+        pass_on();
         break;
-    }
-    carry_IA = {};
-    carry_pA = {};
-    if (to_next) {
-      carry_IA = to_IA;
-      carry_pA = to_pA;
-    } else if (node.parent >= 0) {
-      Work& p = work[static_cast<std::size_t>(node.parent)];
-      add(p.IA, to_IA);
-      add_shifted(p.pA, to_pA, P2{});
     }
   }
   accelerate(true, out);
@@ -681,8 +719,10 @@ void TreeDynamics::Impl::accelerate(bool loaded, Eigen::VectorXd& out) const {
         out[node.coordinate[1]] = a.y - a_in.y;
         break;
       case NodeKind::revolute:
-        // q''_relative = D^-1 (u - U^T a_in), its parts without the parent's a in h.
-        a = {ap.n + (w.h - (w.W.n * ap.n + w.W.x * ap.x + w.W.y * ap.y)), a_in.x, a_in.y};
+        // q''_relative = D^-1 (u - U^T a_in), its parts without the parent's a in h; the
+        // absolute angle's h - W . a_parent. In a chain ap.n is the last link's result and
+        // ap.x, ap.y came a link earlier: one product and one difference wait for it.
+        a = {(w.h - (w.W.x * ap.x + w.W.y * ap.y)) - w.W.n * ap.n, a_in.x, a_in.y};
         out[node.coordinate[0]] = a.n;  // the absolute angle's
         break;
       case NodeKind::prismatic: {
@@ -716,12 +756,6 @@ bool TreeDynamics::accelerations(double t, const Eigen::VectorXd& y, Eigen::Vect
     m.load_inputs[first + 6 * m.bodies] = t;
     m.loads.run(m.load_inputs.data(), m.load_outputs.data(), m.scratch.data());
   }
-  if (!m.loads_constant)  // p^A = v x* I v - f
-    for (std::size_t k = 0; k < m.work.size(); ++k) {
-      Work& w = m.work[k];
-      const S3 f = m.load_about(m.nodes[k], P2{w.centre.x - w.point.x, w.centre.y - w.point.y});
-      w.pA = {w.pA.n - f.n, w.pA.x - f.x, w.pA.y - f.y};
-    }
   m.articulate(q_ddot);
   if (m.loop_rows == 0) return true;
 
