@@ -153,11 +153,20 @@ std::string PathBook::compact(std::string_view data) {
     out.append(" @").append(std::to_string(entry->second));
     body.clear();
   };
-  const auto pair = [&](std::size_t i, std::string& to) {
-    const long x = std::lround((value(i) - start[0]) * 100), y = std::lround((value(i + 1) - start[1]) * 100);
-    to.append(" ").append(hundredths(x - current[0]));
-    to.append(" ").append(hundredths(y - current[1]));
-    return std::array<long, 2>{x, y};
+  // A line (1 point) or a curve (3) from token i on: each point relative to where the
+  // segment starts (SVG's l and c); the segment's end becomes the current point.
+  const auto segment = [&](char letter, std::size_t i, int points) {
+    if (!body.empty()) body += ' ';
+    body += letter;
+    std::array<long, 2> end{};
+    for (int p = 0; p < points; ++p, i += 2) {
+      end = {std::lround((value(i) - start[0]) * 100), std::lround((value(i + 1) - start[1]) * 100)};
+      body.append(" ").append(hundredths(end[0] - current[0]));
+      body.append(" ").append(hundredths(end[1] - current[1]));
+    }
+    current[0] = end[0];
+    current[1] = end[1];
+    return static_cast<std::size_t>(1 + 2 * points);
   };
   bool open = false;
   for (std::size_t i = 0; i < tokens.size();) {
@@ -173,19 +182,9 @@ std::string PathBook::compact(std::string_view data) {
       open = true;
       i += 3;
     } else if (command == "L" && open) {
-      body.append(body.empty() ? "l" : " l");
-      const std::array<long, 2> to = pair(i + 1, body);
-      current[0] = to[0];
-      current[1] = to[1];
-      i += 3;
+      i += segment('l', i + 1, 1);
     } else if (command == "C" && open) {
-      body.append(body.empty() ? "c" : " c");
-      (void)pair(i + 1, body);
-      (void)pair(i + 3, body);
-      const std::array<long, 2> to = pair(i + 5, body);
-      current[0] = to[0];
-      current[1] = to[1];
-      i += 7;
+      i += segment('c', i + 1, 3);
     } else if (command == "Z" && open) {
       body.append(body.empty() ? "z" : " z");
       current[0] = current[1] = 0;
