@@ -11,6 +11,7 @@
 
 #include "bench/closed_form/kinematics.hpp"
 #include "bench/closed_form/linkage_rhs.hpp"
+#include "bench/general_rhs.hpp"
 #include "bench/overhead.hpp"
 #include "bench/rhs.hpp"
 #include "bench/scenarios.hpp"
@@ -69,8 +70,8 @@ BENCHMARK(BM_FixedStep<ode::SymplecticEuler<double, 8>, OscillatorsRhs>)->Name("
 BENCHMARK(BM_FixedStep<ode::Rk4<double, 8>, OscillatorsRhs>)->Name("overhead/rk4");
 BENCHMARK(BM_FixedStep<ode::GaussLegendre2<double, 8>, OscillatorsRhs>)->Name("overhead/gauss_legendre");
 
-template <class Integrator, class F, int N>
-void adaptive_steps(benchmark::State& state, F f, const Vec<N>& y0) {
+template <class Integrator, class F, class V>
+void adaptive_steps(benchmark::State& state, F f, const V& y0) {
   typename Integrator::Settings settings;
   settings.tolerances = {1e-10, 1e-10};
   Integrator integrator(settings);
@@ -90,7 +91,8 @@ void adaptive_steps(benchmark::State& state, F f, const Vec<N>& y0) {
   }
   // rejected attempts included
   state.counters["rhs_per_step"] = static_cast<double>(evaluations) / static_cast<double>(state.iterations());
-  if constexpr (std::is_same_v<F, OscillatorsRhs> || std::is_same_v<F, OutOfLineOscillators>)
+  if constexpr (std::is_same_v<F, OscillatorsRhs> || std::is_same_v<F, OutOfLineOscillators> ||
+                std::is_same_v<F, GeneralCase3Rhs>)
     state.counters["time_per_rhs"] = per_evaluation(evaluations);
 }
 
@@ -109,6 +111,14 @@ void BM_Dop853Case1(benchmark::State& state) {
                                           body_state(fast().params, fast().initial).vector());
 }
 BENCHMARK(BM_Dop853Case1)->Name("step/dop853_case1");
+
+// The homework on the general path, as simulate runs it (dynamic-size state, the
+// built-in native code): time_per_rhs is all of a step's cost per evaluation.
+void BM_Dop853General(benchmark::State& state) {
+  const GeneralCase3Rhs f(fast().params);
+  adaptive_steps<ode::Dop853<double, Eigen::Dynamic>>(state, f, f.state(fast().initial.vector()));
+}
+BENCHMARK(BM_Dop853General)->Name("step/dop853_general");
 
 void BM_Dopri5Oscillators(benchmark::State& state) {
   adaptive_steps<ode::Dopri5<double, 8>>(state, OscillatorsRhs{}, oscillators_start());

@@ -311,7 +311,7 @@ double norm_of(const std::vector<double>& parts) {
 
 double column_value(const MechanismColumn& c, double t, const Eigen::VectorXd& y, const eval::MechanismSample& s,
                     const ColumnOrigin& o) {
-  const double work = y[y.size() - 1];
+  const double work = eval::work_of(y);
   const double energy0 = o.energy0;
   switch (c.quantity) {
     case MechanismQuantity::time:

@@ -749,7 +749,7 @@ bool MechanismDynamics::derivative(double t, const Eigen::VectorXd& y, Eigen::Ve
       const double* u = solve_values_.data();
       for (std::size_t i = 0; i < n; ++i) out[i] = in[n + i];
       for (std::size_t i = 0; i < n; ++i) out[n + i] = u[i];
-      out[2 * n] = 0;
+      if (y.size() > idx(2 * n)) out[2 * n] = 0;
       return true;
     }
     // Pivots that do not vouch for u: the pivoting LU below decides.
@@ -780,6 +780,7 @@ bool MechanismDynamics::derivative(double t, const Eigen::VectorXd& y, Eigen::Ve
     dydt[idx(i)] = y[idx(n_ + i)];
     dydt[idx(n_ + i)] = u[i];
   }
+  if (y.size() == idx(2 * n_)) return true;  // no W
   if (power_zero_) {
     dydt[idx(2 * n_)] = 0;
   } else {

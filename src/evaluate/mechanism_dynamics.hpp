@@ -4,7 +4,9 @@
 //   state y = (q, q', W): the case's coordinates (Case 1: x, y, theta of every body;
 //   Cases 2 and 3: the tree's generalized coordinates), their rates, and W, the work done
 //   so far by dampers, applied loads and drivers, so that E(t) - E(0) - W(t) = 0 is a
-//   check even when the energy is not conserved;
+//   check even when the energy is not conserved. A mechanism with none of them has no W
+//   (it would stay 0): its state is (q, q'), an even number of values, and the
+//   integrators do not carry a constant along;
 //   y' = (q', q'', P) with A(q, q', t) u = B(q, q', t) solved for u, whose first entries are
 //   q'' (the remaining ones joint forces), and P the power of dampers, applied loads and drivers.
 // Constraints C(q) = 0 that the case keeps (Case 1: every joint; Cases 2 and 3: the joints
@@ -65,6 +67,9 @@ struct NamedPoint {
 };
 [[nodiscard]] std::vector<NamedPoint> named_points(const sym::System& system);
 
+/// W of a state (q, q', W); 0 for a state (q, q') that carries none (an even size).
+[[nodiscard]] inline double work_of(const Eigen::VectorXd& y) { return y.size() % 2 == 1 ? y[y.size() - 1] : 0.0; }
+
 class MechanismDynamics {
  public:
   /// `system` must outlive this. `derived`: the case as derive_case(system, id) gives it,
@@ -76,9 +81,12 @@ class MechanismDynamics {
   MechanismDynamics& operator=(MechanismDynamics&&) noexcept;
 
   [[nodiscard]] CaseId case_id() const { return id_; }
-  /// Coordinates n; the state has 2 n + 1 values.
+  /// Coordinates n; the state has 2 n values, and 2 n + 1 when it carries W.
   [[nodiscard]] int coordinates() const { return static_cast<int>(coordinate_names_.size()); }
-  [[nodiscard]] int state_size() const { return 2 * coordinates() + 1; }
+  [[nodiscard]] int state_size() const { return 2 * coordinates() + (carries_work() ? 1 : 0); }
+  /// Whether anything does work besides gravity and springs' potential: dampers, applied
+  /// loads, drivers. Only then does the state carry W.
+  [[nodiscard]] bool carries_work() const { return !power_zero_ || drivers_ > 0; }
   /// "1.x", "2.theta", "slider.s": the state's coordinates in order.
   [[nodiscard]] const std::vector<std::string>& coordinate_names() const { return coordinate_names_; }
   /// Constraint rows kept by the case (met at the acceleration level).
@@ -92,7 +100,8 @@ class MechanismDynamics {
   /// Baumgarte gains in 1/s (both 0: the plain equations).
   void set_baumgarte(double alpha, double beta);
 
-  /// y' at (t, y). False when A is singular there (rcond below round-off): dydt is then NaN.
+  /// y' at (t, y), y of 2 n values or 2 n + 1 with W (W' then the power, else not
+  /// computed). False when A is singular there (rcond below round-off): dydt is then NaN.
   bool derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) const;
   /// The case's unknowns u at (t, y) and the ratio of A's smallest to largest LU pivot, a
   /// cheap stand-in for its reciprocal condition (0: singular, u not to be used).

@@ -472,7 +472,7 @@ const Eigen::VectorXd& MechanismSimulation::state_at(double t) {
 void MechanismSimulation::sample(double t, const Eigen::VectorXd& y, eval::MechanismSample& out, bool kinematics) {
   Impl& run = *impl_;
   run.dynamics.sample(t, y, out, kinematics);
-  const double work = y[y.size() - 1];
+  const double work = eval::work_of(y);
   const double balance = std::fabs(out.kinetic + out.potential - run.energy0 - work) / run.stats.energy_scale;
   run.stats.max_energy_error = std::max(run.stats.max_energy_error, balance);
   for (std::size_t j = 0; j < out.constraint.size(); ++j)

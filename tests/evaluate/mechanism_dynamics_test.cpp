@@ -240,6 +240,43 @@ TEST(MechanismDynamics, CasesAgreeOnEveryBodyAndJoint) {
   }
 }
 
+// The state carries W only where something does work: the two blocks have (q, q'), the
+// spring-damper pendulum (q, q', W). A 2 n + 1 state still runs where W is not carried (W'
+// = 0) and gives the same q' and q''; a damper's power is W' only where W is carried.
+TEST(MechanismDynamics, StateCarriesWorkOnlyWhereSomethingDoesWork) {
+  const sym::System blocks(load_mechanism("two-blocks"));
+  const sym::System damped(load_mechanism("spring-pendulum"));
+  for (CaseId id : kAllCases) {
+    const eval::MechanismDynamics free(blocks, id);
+    EXPECT_FALSE(free.carries_work());
+    const Eigen::VectorXd y = free.initial_state(sym::checked_initial_state(blocks).state);
+    ASSERT_EQ(y.size(), 2 * free.coordinates());
+    Eigen::Vector<double, Eigen::Dynamic> with_w(y.size() + 1);
+    with_w << y, 0.25;
+    Eigen::VectorXd dy, dy_w;
+    ASSERT_TRUE(free.derivative(0.1, y, dy));
+    ASSERT_TRUE(free.derivative(0.1, with_w, dy_w));
+    ASSERT_EQ(dy.size(), y.size());
+    ASSERT_EQ(dy_w.size(), with_w.size());
+    EXPECT_EQ(dy_w.head(y.size()), dy);
+    EXPECT_EQ(dy_w[y.size()], 0);
+    EXPECT_EQ(eval::work_of(y), 0);
+    EXPECT_EQ(eval::work_of(with_w), 0.25);
+
+    const eval::MechanismDynamics spring(damped, id);
+    EXPECT_TRUE(spring.carries_work());
+    Eigen::VectorXd z = spring.initial_state(sym::checked_initial_state(damped).state);
+    ASSERT_EQ(z.size(), 2 * spring.coordinates() + 1);
+    z.segment(spring.coordinates(), spring.coordinates()).setConstant(0.3);  // moving: the damper takes power
+    Eigen::VectorXd dz;
+    ASSERT_TRUE(spring.derivative(0.1, z, dz));
+    eval::MechanismSample s;
+    spring.sample(0.1, z, s);
+    EXPECT_LT(s.power, 0);
+    EXPECT_NEAR(dz[z.size() - 1], s.power, 1e-12 * (1 + std::fabs(s.power)));
+  }
+}
+
 // Case 1 integrates every body's x, y, theta; its angular accelerations equal those of
 // Case 3, which integrates the angles alone.
 TEST(MechanismDynamics, MaximalAccelerationsAreTheGeneralizedOnes) {
