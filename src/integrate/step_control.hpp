@@ -5,6 +5,8 @@
 //   sk_i = atol + rtol max(|y_i|, |y1_i|)          scale of component i
 //   err  = sqrt(1/N sum_i (e_i / sk_i)^2)          a step is accepted when err <= 1
 //   h_new = h / clamp(err^(1/(q+1) - 0.75 beta) / err_prev^beta / safety, 1/fac_max, 1/fac_min)
+//         = h clamp(safety err_prev^beta / err^(1/(q+1) - 0.75 beta), fac_min, fac_max)
+// (the first form with beta = 0, as DOP853; the second with a PI term, as DOPRI5)
 //
 // q is the order of the error estimator's lower method; beta > 0 adds the PI
 // ("Lund stabilization") term that damps oscillating step sequences (DOPRI5 uses 0.04,
@@ -51,6 +53,8 @@ class StepController {
       : exponent_(Scalar(1) / static_cast<Scalar>(order + 1) - Scalar(0.75) * beta),
         beta_(beta),
         safety_(safety),
+        fac_min_(fac_min),
+        fac_max_(fac_max),
         inv_fac_min_(Scalar(1) / fac_min),
         inv_fac_max_(Scalar(1) / fac_max),
         square_roots_(beta == 0 ? square_roots_for(order + 1) : -1) {}
@@ -64,17 +68,17 @@ class StepController {
       rejected_last_ = true;
       return false;
     }
-    // err^exponent / err_prev^beta, with err_prev's log kept from the last accepted step
-    Scalar fac;
     if (beta_ == 0) {
-      fac = power(err) / safety_;
+      const Scalar fac = std::clamp(power(err) / safety_, inv_fac_max_, inv_fac_min_);
+      h_next = h / fac;
     } else {
+      // The growth h_next / h = safety err_prev^beta / err^exponent, with err_prev's log
+      // kept from the last accepted step: multiplied, so no division waits on the exp.
       const Scalar log_err = std::log(err);
-      fac = std::exp(exponent_ * log_err - beta_ * log_err_prev_) / safety_;
+      const Scalar growth = safety_ * std::exp(beta_ * log_err_prev_ - exponent_ * log_err);
+      h_next = h * std::clamp(growth, fac_min_, fac_max_);
       log_err_prev_ = std::max(log_err, kLogErrFloor);
     }
-    fac = std::clamp(fac, inv_fac_max_, inv_fac_min_);
-    h_next = h / fac;
     if (rejected_last_) h_next = std::min(h_next, h);
     rejected_last_ = false;
     return true;
@@ -101,6 +105,7 @@ class StepController {
   }
 
   Scalar exponent_, beta_, safety_;
+  Scalar fac_min_, fac_max_;          // the bounds of h_next / h
   Scalar inv_fac_min_, inv_fac_max_;  // 1 / fac_min, 1 / fac_max: divided once, not per step
   int square_roots_;                  // > 0: power() is that many square roots
   static constexpr Scalar kLogErrFloor = Scalar(-9.21034037197618273607196581873745L);  // log(1e-4): err_prev >= 1e-4
