@@ -94,7 +94,7 @@ class MechanismDynamics {
   /// The joint each kept constraint row belongs to (index into Mechanism::joints).
   [[nodiscard]] const std::vector<int>& constraint_joints() const { return constraint_joint_; }
 
-  /// The state at the mechanism's (closed) initial generalized state `values`, W = 0.
+  /// The state at the mechanism's (closed) initial generalized state `values` (W = 0 where carried).
   [[nodiscard]] Eigen::VectorXd initial_state(const GiNaC::exmap& values) const;
 
   /// Baumgarte gains in 1/s (both 0: the plain equations).

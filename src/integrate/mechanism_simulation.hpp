@@ -49,7 +49,7 @@ class MechanismSimulation {
   MechanismSimulation(MechanismSimulation&&) noexcept;
   MechanismSimulation& operator=(MechanismSimulation&&) noexcept;
 
-  /// The state y = (q, q', W) at t, for t non-decreasing and within [0, duration]. Throws
+  /// The state y = (q, q'[, W]) at t, for t non-decreasing and within [0, duration]. Throws
   /// Error::diverged naming the time, the case and what to try when the run cannot go on:
   /// a state that stops being finite, a matrix that turns singular (a dead point, a
   /// change point), a loop that opens.
