@@ -120,39 +120,21 @@ void BM_Dop853General(benchmark::State& state) {
 }
 BENCHMARK(BM_Dop853General)->Name("step/dop853_general");
 
-void BM_Dopri5Oscillators(benchmark::State& state) {
-  adaptive_steps<ode::Dopri5<double, 8>>(state, OscillatorsRhs{}, oscillators_start());
+// An integrator on the oscillators (bench/overhead.hpp): time_per_rhs is its own cost.
+template <class Integrator, class F>
+void BM_Oscillators(benchmark::State& state) {
+  adaptive_steps<Integrator>(state, F{}, oscillators_start());
 }
-BENCHMARK(BM_Dopri5Oscillators)->Name("overhead/dopri5");
-
-void BM_Dop853Oscillators(benchmark::State& state) {
-  adaptive_steps<ode::Dop853<double, 8>>(state, OscillatorsRhs{}, oscillators_start());
-}
-BENCHMARK(BM_Dop853Oscillators)->Name("overhead/dop853");
-
+BENCHMARK(BM_Oscillators<ode::Dopri5<double, 8>, OscillatorsRhs>)->Name("overhead/dopri5");
+BENCHMARK(BM_Oscillators<ode::Dop853<double, 8>, OscillatorsRhs>)->Name("overhead/dop853");
 // The same with dynamic-size states, as a mechanism read from a file runs.
-void BM_Dopri5OscillatorsDynamic(benchmark::State& state) {
-  adaptive_steps<ode::Dopri5<double, Eigen::Dynamic>>(state, OscillatorsRhs{}, oscillators_start());
-}
-BENCHMARK(BM_Dopri5OscillatorsDynamic)->Name("overhead/dopri5_dynamic");
-
-void BM_Dop853OscillatorsDynamic(benchmark::State& state) {
-  adaptive_steps<ode::Dop853<double, Eigen::Dynamic>>(state, OscillatorsRhs{}, oscillators_start());
-}
-BENCHMARK(BM_Dop853OscillatorsDynamic)->Name("overhead/dop853_dynamic");
-
+BENCHMARK(BM_Oscillators<ode::Dopri5<double, Eigen::Dynamic>, OscillatorsRhs>)->Name("overhead/dopri5_dynamic");
+BENCHMARK(BM_Oscillators<ode::Dop853<double, Eigen::Dynamic>, OscillatorsRhs>)->Name("overhead/dop853_dynamic");
 // The fixed-size runs with the oscillators out of line: beside the dynamic-size rows they
 // show that what the dynamic-size state costs is the call, not Eigen's dynamic vectors
 // (session 19: Dopri5 24.2 ns fixed-size out of line, 23.1 dynamic-size, 16.0 inlined).
-void BM_Dopri5OscillatorsOutOfLine(benchmark::State& state) {
-  adaptive_steps<ode::Dopri5<double, 8>>(state, OutOfLineOscillators{}, oscillators_start());
-}
-BENCHMARK(BM_Dopri5OscillatorsOutOfLine)->Name("overhead/dopri5_out_of_line");
-
-void BM_Dop853OscillatorsOutOfLine(benchmark::State& state) {
-  adaptive_steps<ode::Dop853<double, 8>>(state, OutOfLineOscillators{}, oscillators_start());
-}
-BENCHMARK(BM_Dop853OscillatorsOutOfLine)->Name("overhead/dop853_out_of_line");
+BENCHMARK(BM_Oscillators<ode::Dopri5<double, 8>, OutOfLineOscillators>)->Name("overhead/dopri5_out_of_line");
+BENCHMARK(BM_Oscillators<ode::Dop853<double, 8>, OutOfLineOscillators>)->Name("overhead/dop853_out_of_line");
 
 // The oscillators alone, each input waiting for the previous output as stages do.
 void BM_OscillatorsRhs(benchmark::State& state) {
