@@ -495,7 +495,7 @@ MechanismsBenchResult run_mechanisms_bench(const MechanismsBenchOptions& o) {
               : std::vector<double>{1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12, 1e-13};
   const std::vector<double> steps =
       o.quick ? std::vector<double>{1e-2, 1e-3} : std::vector<double>{2e-2, 1e-2, 5e-3, 2e-3, 1e-3, 5e-4, 2e-4, 1e-4};
-  for (const IntegratorKind kind : {IntegratorKind::dop853, IntegratorKind::dopri5})
+  for (const IntegratorKind kind : {IntegratorKind::dop853, IntegratorKind::vern7, IntegratorKind::dopri5})
     for (double tol : tolerances) {
       SimulationOptions s = reference;
       s.integrator = kind;

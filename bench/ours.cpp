@@ -20,6 +20,7 @@
 #include "integrate/explicit_rk.hpp"
 #include "integrate/gauss_legendre.hpp"
 #include "integrate/symplectic_euler.hpp"
+#include "integrate/vern7.hpp"
 
 namespace linkage::bench {
 namespace {
@@ -103,6 +104,7 @@ constexpr Info kSymplecticEuler{"symplectic-euler", "symplectic Euler", false, 1
 constexpr Info kRk4{"rk4", "RK4", false, 4};
 constexpr Info kDopri5{"dopri5", "Dopri5", true, 5};
 constexpr Info kDop853{"dop853", "DOP853", true, 8};
+constexpr Info kVern7{"vern7", "Vern7", true, 7};
 constexpr Info kGauss2{"gauss-legendre", "Gauss-Legendre 2", false, 4};
 
 // One method of ours on right-hand side F (a callable built per run from the params).
@@ -130,6 +132,7 @@ std::vector<Method> methods_on(int case_id, RhsKind rhs, MakeF make_f, bool all)
     add(kDopri5, [](F f, const Scenario& s, double tol) { return run_adaptive<ode::Dopri5<double, N>, N>(f, s, tol); });
   }
   add(kDop853, [](F f, const Scenario& s, double tol) { return run_adaptive<ode::Dop853<double, N>, N>(f, s, tol); });
+  add(kVern7, [](F f, const Scenario& s, double tol) { return run_adaptive<ode::Vern7<double, N>, N>(f, s, tol); });
   if (all)
     add(kGauss2,
         [](F f, const Scenario& s, double n) { return run_fixed<ode::GaussLegendre2<double, N>, N>(f, s, n); });

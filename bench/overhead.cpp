@@ -10,6 +10,7 @@
 #include "integrate/explicit_rk.hpp"
 #include "integrate/gauss_legendre.hpp"
 #include "integrate/symplectic_euler.hpp"
+#include "integrate/vern7.hpp"
 
 namespace linkage::bench {
 namespace {
@@ -48,12 +49,15 @@ Vec<8> oscillators_start() {
   return y;
 }
 
-bool has_dynamic_run(const std::string& method) { return method == "dopri5" || method == "dop853"; }
+bool has_dynamic_run(const std::string& method) {
+  return method == "dopri5" || method == "dop853" || method == "vern7";
+}
 
 std::int64_t run_on_oscillators(const std::string& method, double knob, double duration, std::int64_t evaluations,
                                 double& sink, bool dynamic) {
   if (dynamic && method == "dopri5") return adaptive<ode::Dopri5<double, Eigen::Dynamic>>(knob, evaluations, sink);
   if (dynamic && method == "dop853") return adaptive<ode::Dop853<double, Eigen::Dynamic>>(knob, evaluations, sink);
+  if (dynamic && method == "vern7") return adaptive<ode::Vern7<double, Eigen::Dynamic>>(knob, evaluations, sink);
   if (dynamic) throw Error::failure("run_on_oscillators: no dynamic-size run of '" + method + "'");
   if (method == "euler") return fixed<ode::ExplicitEuler<double, 8>>(knob, duration, sink);
   if (method == "symplectic-euler") return fixed<ode::SymplecticEuler<double, 8>>(knob, duration, sink);
@@ -61,6 +65,7 @@ std::int64_t run_on_oscillators(const std::string& method, double knob, double d
   if (method == "gauss-legendre") return fixed<ode::GaussLegendre2<double, 8>>(knob, duration, sink);
   if (method == "dopri5") return adaptive<ode::Dopri5<double, 8>>(knob, evaluations, sink);
   if (method == "dop853") return adaptive<ode::Dop853<double, 8>>(knob, evaluations, sink);
+  if (method == "vern7") return adaptive<ode::Vern7<double, 8>>(knob, evaluations, sink);
   throw Error::failure("run_on_oscillators: no integrator '" + method + "'");
 }
 

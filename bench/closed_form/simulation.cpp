@@ -19,6 +19,7 @@
 #include "integrate/gauss_legendre.hpp"
 #include "integrate/step_budget.hpp"
 #include "integrate/symplectic_euler.hpp"
+#include "integrate/vern7.hpp"
 
 namespace linkage {
 
@@ -284,6 +285,8 @@ std::unique_ptr<Run> make_run(const Params& p, const State& initial, const Simul
       return std::make_unique<AdaptiveRun<Case, ode::Dopri5<double, n>>>(p, initial, o);
     case IntegratorKind::dop853:
       return std::make_unique<AdaptiveRun<Case, ode::Dop853<double, n>>>(p, initial, o);
+    case IntegratorKind::vern7:
+      return std::make_unique<AdaptiveRun<Case, ode::Vern7<double, n>>>(p, initial, o);
   }
   throw Error::failure("unknown integrator kind");
 }

@@ -114,8 +114,8 @@ void note_ignored_simulation_flags(const SimulationFlags& o, const SimulationOpt
   if (s.stabilization != Stabilization::baumgarte && (o.alpha_option->count() > 0 || o.beta_option->count() > 0))
     note("--baumgarte-alpha/--baumgarte-beta apply only with --stabilize baumgarte");
   if (!info(s.integrator).adaptive && (o.rtol_option->count() > 0 || o.atol_option->count() > 0))
-    note("--rtol/--atol apply only to adaptive integrators (dopri5, dop853); " + std::string(info(s.integrator).name) +
-         " takes fixed steps of --dt");
+    note("--rtol/--atol apply only to adaptive integrators (dopri5, dop853, vern7); " +
+         std::string(info(s.integrator).name) + " takes fixed steps of --dt");
 }
 
 }  // namespace linkage::cli

@@ -20,6 +20,7 @@
 #include "integrate/load_guard.hpp"
 #include "integrate/step_budget.hpp"
 #include "integrate/symplectic_euler.hpp"
+#include "integrate/vern7.hpp"
 
 namespace linkage {
 
@@ -248,6 +249,7 @@ struct MechanismSimulation::Impl {
   std::unique_ptr<ode::GaussLegendre2<double, kDynamic>> gauss;
   std::unique_ptr<ode::Dopri5<double, kDynamic>> dopri5;
   std::unique_ptr<ode::Dop853<double, kDynamic>> dop853;
+  std::unique_ptr<ode::Vern7<double, kDynamic>> vern7;
   std::int64_t k = 0;                        // fixed steps taken
   Vector anchor;                             // fixed steps: the state at the last sample's grid time,
   double anchor_t = 0;                       // and that time
@@ -274,6 +276,9 @@ double expected_evaluations(const SimulationOptions& o) {
       break;
     case IntegratorKind::dop853:
       stages = 12;
+      break;
+    case IntegratorKind::vern7:
+      stages = 10;
       break;
   }
   return o.duration / o.dt * stages;
@@ -316,7 +321,8 @@ void MechanismSimulation::Impl::start_stepper() {
       gauss = std::make_unique<ode::GaussLegendre2<double, kDynamic>>();
       break;
     case IntegratorKind::dopri5:
-    case IntegratorKind::dop853: {
+    case IntegratorKind::dop853:
+    case IntegratorKind::vern7: {
       auto settings = [&](auto& stepper) {
         typename std::remove_reference_t<decltype(*stepper)>::Settings s;
         s.tolerances = {options.rtol, options.atol};
@@ -326,9 +332,12 @@ void MechanismSimulation::Impl::start_stepper() {
       if (options.integrator == IntegratorKind::dopri5) {
         dopri5 = std::make_unique<ode::Dopri5<double, kDynamic>>(settings(dopri5));
         dopri5->start(rhs, 0.0, y);
-      } else {
+      } else if (options.integrator == IntegratorKind::dop853) {
         dop853 = std::make_unique<ode::Dop853<double, kDynamic>>(settings(dop853));
         dop853->start(rhs, 0.0, y);
+      } else {
+        vern7 = std::make_unique<ode::Vern7<double, kDynamic>>(settings(vern7));
+        vern7->start(rhs, 0.0, y);
       }
       break;
     }
@@ -342,7 +351,7 @@ void MechanismSimulation::Impl::advance(double t) {
     sample_y = y;
     return;
   }
-  if (dopri5 || dop853) {
+  if (dopri5 || dop853 || vern7) {
     auto run = [&](auto& stepper) {
       while (stepper.t() < t) {
         const double from = stepper.t();
@@ -379,8 +388,10 @@ void MechanismSimulation::Impl::advance(double t) {
     };
     if (dopri5)
       run(*dopri5);
-    else
+    else if (dop853)
       run(*dop853);
+    else
+      run(*vern7);
     return;
   }
   // Fixed steps on the grid t_k = k dt; a sample between grid points is a short step
@@ -457,6 +468,7 @@ const Eigen::VectorXd& MechanismSimulation::state_at(double t) {
       if (run.gauss) c = run.gauss->counters();
       if (run.dopri5) c = run.dopri5->counters();
       if (run.dop853) c = run.dop853->counters();
+      if (run.vern7) c = run.vern7->counters();
       if (run.kinematic) c = {run.kinematic->accepted(), run.kinematic->rejected(), run.kinematic->solves()};
       run.stats.steps_accepted = c.steps_accepted;
       run.stats.steps_rejected = c.steps_rejected;

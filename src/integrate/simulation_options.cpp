@@ -14,13 +14,14 @@ namespace linkage {
 
 namespace {
 
-constexpr std::array<IntegratorInfo, 6> kIntegrators{{
+constexpr std::array<IntegratorInfo, 7> kIntegrators{{
     {IntegratorKind::euler, "euler", "explicit Euler, fixed step, order 1", false, 1},
     {IntegratorKind::symplectic_euler, "symplectic-euler", "semi-implicit (symplectic) Euler, fixed step, order 1",
      false, 1},
     {IntegratorKind::rk4, "rk4", "classical Runge-Kutta, fixed step, order 4", false, 4},
     {IntegratorKind::dopri5, "dopri5", "Dormand-Prince 5(4), adaptive, dense output of order 4", true, 5},
     {IntegratorKind::dop853, "dop853", "Dormand-Prince 8(5,3), adaptive, dense output of order 7", true, 8},
+    {IntegratorKind::vern7, "vern7", "Verner 7(6), adaptive, dense output of order 6", true, 7},
     {IntegratorKind::gauss2, "gauss-legendre",
      "2-stage Gauss-Legendre, implicit (Newton), symmetric, fixed step, order 4", false, 4},
 }};
@@ -46,7 +47,7 @@ void require(bool ok, const std::string& setting, double value, const std::strin
 
 }  // namespace
 
-const std::array<IntegratorInfo, 6>& integrators() { return kIntegrators; }
+const std::array<IntegratorInfo, 7>& integrators() { return kIntegrators; }
 
 const IntegratorInfo& info(IntegratorKind kind) {
   for (const IntegratorInfo& i : kIntegrators)

@@ -7,7 +7,7 @@
 
 namespace linkage {
 
-enum class IntegratorKind { euler, symplectic_euler, rk4, dopri5, dop853, gauss2 };
+enum class IntegratorKind { euler, symplectic_euler, rk4, dopri5, dop853, vern7, gauss2 };
 enum class Stabilization { none, baumgarte, projection };
 /// What computes the equations: native code (built in, else compiled at run time) or the
 /// interpreter of evaluate/program.hpp; automatic picks (mechanism_simulation.cpp).
@@ -21,7 +21,7 @@ struct IntegratorInfo {
   int order;
 };
 /// Every integrator, in the order the help lists them.
-[[nodiscard]] const std::array<IntegratorInfo, 6>& integrators();
+[[nodiscard]] const std::array<IntegratorInfo, 7>& integrators();
 [[nodiscard]] const IntegratorInfo& info(IntegratorKind kind);
 /// Parses a CLI spelling; throws Error::input naming `origin` and the valid names.
 [[nodiscard]] IntegratorKind parse_integrator(std::string_view name, const std::string& origin);

@@ -49,7 +49,7 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{{"--atol", "-1e-10"}, "--atol: -1e-10 is out of range; valid: 1e-20 <= atol <= 1"},
                       BadInput{{"--integrator", "rk45"},
                                "--integrator: 'rk45' is not an integrator (did you mean 'rk4'?); valid: euler, "
-                               "symplectic-euler, rk4, dopri5, dop853, "
+                               "symplectic-euler, rk4, dopri5, dop853, vern7, "
                                "gauss-legendre"},
                       BadInput{{"--stabilize", "yes"},
                                "--stabilize: 'yes' is not a stabilization; valid: none, baumgarte, projection"},

@@ -1,4 +1,4 @@
-// The adaptive methods: tolerances met against the exact Kepler orbit, dense output of
+// The adaptive methods (Dopri5, DOP853, Vern7): tolerances met against the exact Kepler orbit, dense output of
 // the right order and consistent with stepping, long double, and failure reports.
 #include <gtest/gtest.h>
 
@@ -8,6 +8,7 @@
 #include "integrate/dop853.hpp"
 #include "integrate/dopri5.hpp"
 #include "integrate/kepler.hpp"
+#include "integrate/vern7.hpp"
 
 namespace linkage {
 namespace {
@@ -44,6 +45,7 @@ void expect_tolerances_met() {
 
 TEST(Adaptive, Dopri5MeetsItsTolerance) { expect_tolerances_met<ode::Dopri5<double, 4>>(); }
 TEST(Adaptive, Dop853MeetsItsTolerance) { expect_tolerances_met<ode::Dop853<double, 4>>(); }
+TEST(Adaptive, Vern7MeetsItsTolerance) { expect_tolerances_met<ode::Vern7<double, 4>>(); }
 
 /// One step of size h from (0, y0) of y' = A y (a rotation with decay, exact solution
 /// known), then dense output at the middle of the step: its error against exp(A t).
@@ -70,6 +72,9 @@ double dense_order() {
 
 TEST(Adaptive, Dopri5DenseOutputIsFourthOrder) { EXPECT_NEAR((dense_order<ode::Dopri5<double, 2>>()), 5.0, 0.3); }
 TEST(Adaptive, Dop853DenseOutputIsSeventhOrder) { EXPECT_NEAR((dense_order<ode::Dop853<double, 2>>()), 8.0, 0.3); }
+// Order 6 with a seventh-order defect of 2e-7 (tableau_order_test.cpp): at these steps the
+// local error still falls as h^7 or faster.
+TEST(Adaptive, Vern7DenseOutputIsSixthOrder) { EXPECT_GT((dense_order<ode::Vern7<double, 2>>()), 6.7); }
 
 /// Dense output at a sample time against the same method stepping exactly to it (the
 /// last step shortened with t_stop): both are accurate to the tolerance.
@@ -100,6 +105,9 @@ TEST(Adaptive, Dopri5DenseOutputMatchesSteppingToTheSample) {
 }
 TEST(Adaptive, Dop853DenseOutputMatchesSteppingToTheSample) {
   expect_dense_matches_stepping<ode::Dop853<double, 4>>(1e-10);
+}
+TEST(Adaptive, Vern7DenseOutputMatchesSteppingToTheSample) {
+  expect_dense_matches_stepping<ode::Vern7<double, 4>>(1e-10);
 }
 
 // The benchmark's reference runs DOP853 in long double: it must reach accuracies a
@@ -136,6 +144,22 @@ TEST(Adaptive, CountsStepsRejectionsAndEvaluations) {
   EXPECT_EQ(integrator.counters().rhs_evaluations, c.rhs_evaluations + 3) << "dense output's three extra stages";
   integrator.dense(f, integrator.t_previous(), y);
   EXPECT_EQ(integrator.counters().rhs_evaluations, c.rhs_evaluations + 3) << "computed once per step";
+}
+
+TEST(Adaptive, Vern7CountsTenEvaluationsAStepAndFiveForDenseOutput) {
+  const test::Kepler f{0.5};
+  typename ode::Vern7<double, 4>::Settings s = settings<ode::Vern7<double, 4>>(1e-10);
+  s.first_step = 5.0;
+  ode::Vern7<double, 4> integrator(s);
+  integrator.start(f, 0.0, f.initial());
+  while (integrator.t() < 1.0) ASSERT_EQ(integrator.step(f), ode::StepStatus::ok);
+  const ode::Counters c = integrator.counters();
+  EXPECT_GT(c.steps_rejected, 0);
+  // 10 stages an attempt: the eleventh, f(t + h, y1), is the next step's first.
+  EXPECT_EQ(c.rhs_evaluations, 1 + 10 * (c.steps_accepted + c.steps_rejected));
+  Vec<4> y;
+  integrator.dense(f, 0.5 * (integrator.t_previous() + integrator.t()), y);
+  EXPECT_EQ(integrator.counters().rhs_evaluations, c.rhs_evaluations + 5) << "dense output's five extra stages";
 }
 
 TEST(Adaptive, FindsItsOwnFirstStep) {

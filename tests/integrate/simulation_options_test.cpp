@@ -65,7 +65,7 @@ TEST(SimulationOptions, ParsesNamesAndListsTheValidOnes) {
   } catch (const Error& e) {
     EXPECT_EQ(std::string(e.what()),
               "--integrator: 'rk45' is not an integrator (did you mean 'rk4'?); valid: euler, symplectic-euler, rk4, "
-              "dopri5, dop853, gauss-legendre");
+              "dopri5, dop853, vern7, gauss-legendre");
   }
   const auto message = [](auto parse) {
     try {
@@ -82,7 +82,7 @@ TEST(SimulationOptions, ParsesNamesAndListsTheValidOnes) {
             std::string::npos);
   EXPECT_EQ(message([] { return parse_integrator("leapfrog", "integrator"); }),
             "integrator: 'leapfrog' is not an integrator; valid: euler, symplectic-euler, rk4, dopri5, dop853, "
-            "gauss-legendre");
+            "vern7, gauss-legendre");
   EXPECT_EQ(message([] { return parse_stabilization("baumgärte", "--stabilize"); }),
             "--stabilize: 'baumgärte' is not a stabilization (did you mean 'baumgarte'?); valid: none, baumgarte, "
             "projection");
