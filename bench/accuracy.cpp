@@ -214,6 +214,8 @@ std::vector<OverheadTiming> measure_overhead(const ScenarioResult& sr, double mi
       std::int64_t made = 0;
       o.dynamic_per_evaluation = time_on_oscillators(c.method, p->knob, sr.scenario.duration,
                                                      p->outcome.rhs_evaluations, min_time, made, true);
+      o.closed_form_fixed = time_on_closed_form(c.method, sr.scenario, p->knob, min_time, false, made);
+      o.closed_form_dynamic = time_on_closed_form(c.method, sr.scenario, p->knob, min_time, true, made);
     }
     out.push_back(o);
   }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "bench/closed_form/case3_fast.hpp"
 #include "core/error.hpp"
 #include "integrate/dop853.hpp"
 #include "integrate/dopri5.hpp"
@@ -75,6 +76,64 @@ PerCall time_on_oscillators(const std::string& method, double knob, double durat
   made = 0;
   const Timing t =
       time_repeated([&] { made = run_on_oscillators(method, knob, duration, evaluations, sink, dynamic); }, min_time);
+  if (sink == 0.123456789) throw Error::failure("unreachable");  // keeps the runs alive
+  const double per = 1e9 / static_cast<double>(std::max<std::int64_t>(made, 1));
+  return {t.median_seconds * per, t.cpu_median_seconds * per};
+}
+
+namespace {
+
+/// Case 3's closed form on a dynamic-size state, never inlined: the call simulate's
+/// integrators make to a mechanism's right-hand side.
+struct OutOfLineClosedForm {
+  Case3Fast<double> f;
+  __attribute__((noinline)) void operator()(double /*t*/, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) const {
+    dydt.resize(y.size());
+    f.rhs(y, dydt);
+  }
+};
+
+struct InlineClosedForm {
+  Case3Fast<double> f;
+  void operator()(double /*t*/, const Vec<8>& y, Vec<8>& dydt) const { f.rhs(y, dydt); }
+};
+
+template <class Integrator, class F, class V>
+std::int64_t closed_form_run(const F& f, const V& y0, double tol, double duration, double& sink) {
+  typename Integrator::Settings settings;
+  settings.tolerances = {tol, tol};
+  settings.t_stop = duration;
+  Integrator integrator(settings);
+  integrator.start(f, 0.0, y0);
+  while (integrator.t() < duration)
+    if (integrator.step(f) != ode::StepStatus::ok) break;
+  sink += integrator.y().sum();
+  return integrator.counters().rhs_evaluations;
+}
+
+template <template <class, int> class Integrator>
+std::int64_t closed_form_run(const Scenario& s, double tol, bool dynamic, double& sink) {
+  const Case3Fast<double> f(s.params);
+  const Vec<8> y0 = s.initial.vector();
+  if (dynamic)
+    return closed_form_run<Integrator<double, Eigen::Dynamic>>(OutOfLineClosedForm{f}, Eigen::VectorXd(y0), tol,
+                                                               s.duration, sink);
+  return closed_form_run<Integrator<double, 8>>(InlineClosedForm{f}, y0, tol, s.duration, sink);
+}
+
+}  // namespace
+
+PerCall time_on_closed_form(const std::string& method, const Scenario& scenario, double tol, double min_time,
+                            bool dynamic, std::int64_t& made) {
+  double sink = 0;
+  made = 0;
+  auto run = [&] {
+    if (method == "dopri5") return closed_form_run<ode::Dopri5>(scenario, tol, dynamic, sink);
+    if (method == "dop853") return closed_form_run<ode::Dop853>(scenario, tol, dynamic, sink);
+    if (method == "vern7") return closed_form_run<ode::Vern7>(scenario, tol, dynamic, sink);
+    throw Error::failure("time_on_closed_form: no adaptive integrator '" + method + "'");
+  };
+  const Timing t = time_repeated([&] { made = run(); }, min_time);
   if (sink == 0.123456789) throw Error::failure("unreachable");  // keeps the runs alive
   const double per = 1e9 / static_cast<double>(std::max<std::int64_t>(made, 1));
   return {t.median_seconds * per, t.cpu_median_seconds * per};

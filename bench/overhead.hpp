@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "bench/scenarios.hpp"
 #include "bench/timing.hpp"
 #include "core/types.hpp"
 
@@ -55,13 +56,25 @@ struct OverheadTiming {
   double homework_error = 0;                      // that run's error, m or rad
   std::int64_t evaluations = 0;                   // per timed run (the homework run's, or just above it)
   PerCall per_evaluation;                         // run time / evaluations, the oscillators' own cost included
-  std::optional<PerCall> dynamic_per_evaluation;  // the same on a dynamic-size state (dopri5, dop853)
+  std::optional<PerCall> dynamic_per_evaluation;  // the same on a dynamic-size state (dopri5, dop853, vern7)
+  // The homework run itself (Case 3's closed form, real work per evaluation) with a
+  // fixed-size state and the right-hand side inline, and with a dynamic-size state and
+  // the right-hand side out of line as simulate's: run time per evaluation (adaptive only).
+  std::optional<PerCall> closed_form_fixed, closed_form_dynamic;
 };
 
 /// Times run_on_oscillators (repeated until `min_time` s, the median run).
 [[nodiscard]] PerCall time_on_oscillators(const std::string& method, double knob, double duration,
                                           std::int64_t evaluations, double min_time, std::int64_t& made,
                                           bool dynamic = false);
+
+/// `method` (dopri5, dop853, vern7) on Case 3's closed form over `scenario` at rtol = atol
+/// = `tol`: run time per evaluation (the median run, repeated until `min_time` s), with a
+/// fixed-size state and the right-hand side inline, or (`dynamic`) a dynamic-size state
+/// and the right-hand side called out of line, as simulate runs a mechanism's. `made`:
+/// the evaluations of one run.
+[[nodiscard]] PerCall time_on_closed_form(const std::string& method, const Scenario& scenario, double tol,
+                                          double min_time, bool dynamic, std::int64_t& made);
 
 /// The oscillators' own cost per evaluation, on states along their motion.
 [[nodiscard]] PerCall oscillators_rhs_ns(double min_batch);

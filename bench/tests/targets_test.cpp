@@ -125,9 +125,50 @@ TEST(Overhead, TheAdaptiveMethodsHaveADynamicSizeRow) {
   EXPECT_EQ(rows[1].met, std::optional<bool>(false));  // goal < 15 ns
 }
 
+// The dynamic-size row says what the state costs a real right-hand side, when timed.
+TEST(Overhead, TheDynamicSizeRowComparesTheClosedFormRuns) {
+  ScenarioResult r;
+  r.points = {point(1e-3, 1e-9, 100000)};
+  OverheadTiming o;
+  o.method = "dop853";
+  o.label = "DOP853";
+  o.knob = 1e-10;
+  o.evaluations = 100000;
+  o.per_evaluation = {10.0, 10.0};
+  o.dynamic_per_evaluation = PerCall{16.0, 15.5};
+  o.closed_form_fixed = PerCall{50.0, 50.0};
+  o.closed_form_dynamic = PerCall{53.0, 53.0};
+  r.overhead = {o};
+  RhsTimings rhs;
+  rhs.case3_fast = {40.0, 40.0};
+  int found = 0;
+  for (const TargetRow& row : evaluate_targets(r, rhs, Clock::wall, {}))
+    if (row.target.find("dynamic-size state") != std::string::npos) {
+      ++found;
+      EXPECT_NE(row.note.find("takes 53 ns an evaluation against 50 ns fixed-size and inline (1.06x)"),
+                std::string::npos)
+          << row.note;
+    }
+  EXPECT_EQ(found, 1);
+}
+
+// Both closed-form runs integrate the same scenario at the same tolerance: the same steps.
+TEST(Overhead, TheClosedFormRunsTakeTheSameSteps) {
+  const Scenario& s = find_scenario("fast", "test");
+  for (const std::string method : {"dopri5", "dop853", "vern7"}) {
+    std::int64_t fixed = 0, dynamic = 0;
+    (void)time_on_closed_form(method, s, 1e-8, 0.0, false, fixed);
+    (void)time_on_closed_form(method, s, 1e-8, 0.0, true, dynamic);
+    EXPECT_GT(fixed, 1000) << method;
+    EXPECT_EQ(dynamic, fixed) << method;
+  }
+  std::int64_t made = 0;
+  EXPECT_THROW((void)time_on_closed_form("rk4", s, 1e-8, 0.0, false, made), Error);
+}
+
 TEST(Overhead, TheDynamicSizeRunsMakeTheSameEvaluations) {
   double sink = 0;
-  for (const std::string method : {"dop853", "dopri5"}) {
+  for (const std::string method : {"dop853", "dopri5", "vern7"}) {
     ASSERT_TRUE(has_dynamic_run(method));
     EXPECT_EQ(run_on_oscillators(method, 1e-10, 10.0, 20000, sink, true),
               run_on_oscillators(method, 1e-10, 10.0, 20000, sink, false))
