@@ -23,6 +23,15 @@
 
 namespace linkage::ode {
 
+/// |h| rms((W . k) / sk): the scaled error of a step whose embedded solution differs from
+/// the propagated one by the weights W (Dopri5, Vern7).
+template <auto W, class Scalar, int N, std::size_t K>
+[[nodiscard]] inline Scalar embedded_error_norm(const std::array<State<Scalar, N>, K>& k, Scalar h,
+                                                const State<Scalar, N>& sk, State<Scalar, N>& e) {
+  weighted_sum<W>(k, e);
+  return std::fabs(h) * rms_norm(e, sk);
+}
+
 template <class Method, class Scalar, int N>
 class AdaptiveRk {
  public:

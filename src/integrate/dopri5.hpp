@@ -54,8 +54,7 @@ struct Dopri5Method {
   template <class Scalar, int N, std::size_t K>
   [[nodiscard]] static Scalar error_norm(const std::array<State<Scalar, N>, K>& k, Scalar h, const State<Scalar, N>& sk,
                                          State<Scalar, N>& e) {
-    weighted_sum<error_weights>(k, e);
-    return std::fabs(h) * rms_norm(e, sk);
+    return embedded_error_norm<error_weights>(k, h, sk, e);
   }
 
   /// Fills r1..r4; needs no new evaluations of f (returns 0).

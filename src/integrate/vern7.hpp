@@ -143,8 +143,7 @@ struct Vern7Method {
   template <class Scalar, int N, std::size_t K>
   [[nodiscard]] static Scalar error_norm(const std::array<State<Scalar, N>, K>& k, Scalar h, const State<Scalar, N>& sk,
                                          State<Scalar, N>& e) {
-    weighted_sum<error_weights>(k, e);
-    return std::fabs(h) * rms_norm(e, sk);
+    return embedded_error_norm<error_weights>(k, h, sk, e);
   }
 
   /// Evaluates stages 12..16 and fills r_m = h sum_i r_im k_i; returns the 5 evaluations it made.
